@@ -1,0 +1,12 @@
+"""bearinglab: ball-bearing mechanics, correct to the digit against the published methods.
+
+Submodules
+----------
+units       SI constants, converters and parsing of quantities with units (boundary only)
+errors      InputError, CatalogError, ConvergenceError, ValidityWarning
+"""
+
+from . import errors, units
+
+__version__ = "0.1.0"
+__all__ = ["errors", "units", "__version__"]

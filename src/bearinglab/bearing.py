@@ -1,0 +1,277 @@
+"""Dataclasses bundling the inputs of the models.
+
+Materials
+---------
+Material          elastic modulus, Poisson's ratio, density
+STEEL             AISI 52100 bearing steel (default for balls and rings)
+SILICON_NITRIDE   Si3N4 ceramic balls
+MATERIALS         name -> Material, for input files and the command line
+
+Bearings
+--------
+BallBearing       validated, frozen internal geometry, envelope and materials of a ball bearing
+
+The dataclasses only check and pass fields on; the physics is in :mod:`bearinglab.geometry`,
+:mod:`bearinglab.hertz` and the model modules.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import geometry, hertz
+from .errors import InputError
+
+__all__ = ["Material", "STEEL", "SILICON_NITRIDE", "MATERIALS", "BallBearing"]
+
+
+@dataclass(frozen=True)
+class Material:
+    """An isotropic elastic material.
+
+    Parameters
+    ----------
+    name : str
+        Display name.
+    elastic_modulus : float
+        Young's modulus. [Pa]
+    poisson_ratio : float
+        Poisson's ratio. [-]
+    density : float
+        Mass density. [kg/m^3]
+    """
+
+    name: str
+    elastic_modulus: float
+    poisson_ratio: float
+    density: float
+
+    def __post_init__(self):
+        if not self.elastic_modulus > 0:
+            raise InputError(f"elastic_modulus must be > 0 [Pa], got {self.elastic_modulus!r}")
+        if not -1.0 < self.poisson_ratio < 0.5:
+            raise InputError(f"poisson_ratio must be in (-1, 0.5) [-], got {self.poisson_ratio!r}")
+        if not self.density > 0:
+            raise InputError(f"density must be > 0 [kg/m^3], got {self.density!r}")
+
+
+# Harris & Kotzalas, Essential Concepts of Bearing Technology, 5th ed., Table 6.? (52100: E = 2.075e5 MPa,
+# nu = 0.3) and the usual density 7.85 g/cm^3 of the source papers; Si3N4: E = 3.1e5 MPa, nu = 0.26,
+# 3.2 g/cm^3 (same reference, ceramic hybrid bearings).
+STEEL = Material("steel", 2.075e11, 0.3, 7850.0)
+SILICON_NITRIDE = Material("silicon nitride", 3.10e11, 0.26, 3200.0)
+MATERIALS = {"steel": STEEL, "silicon_nitride": SILICON_NITRIDE, "si3n4": SILICON_NITRIDE}
+
+_TYPES = ("radial", "angular")
+
+
+def _positive(name, value, unit, *, optional=True):
+    if value is None and optional:
+        return
+    if not (isinstance(value, (int, float, np.floating, np.integer)) and value > 0 and math.isfinite(value)):
+        raise InputError(f"{name} must be > 0 [{unit}], got {value!r}")
+
+
+@dataclass(frozen=True)
+class BallBearing:
+    """Internal geometry, envelope and materials of a single-row ball bearing (SI units).
+
+    Give the groove conformities directly or through :meth:`from_groove_radii`, and the free contact
+    angle or the diametral clearance (the other one is derived when the conformities are known).
+    Fields that a catalog does not know (for the friction-rig bearings, the ball set) may be ``None``;
+    a method that needs them raises :class:`~bearinglab.errors.InputError` naming the field.
+
+    Parameters
+    ----------
+    n_balls : int
+        Number of balls Z. [-]
+    ball_diameter : float
+        Ball diameter D. [m]
+    pitch_diameter : float
+        Pitch diameter d_m, > D. [m]
+    inner_conformity, outer_conformity : float
+        f_i = r_i / D and f_o = r_o / D, each > 0.5. [-]
+    contact_angle : float
+        Nominal (free) contact angle alpha0, in [0, 90 deg). [rad]
+    radial_clearance : float
+        Diametral clearance e. [m]
+    designation : str
+        Name of the bearing.
+    bore, outside_diameter, width : float
+        Envelope. [m]
+    type : {"radial", "angular"}
+        Deep-groove (radial) or angular-contact bearing.
+    static_load_rating : float
+        Basic static load rating C0. [N]
+    ball_material, ring_material : Material
+        Steel by default.
+    hertz_table : dict
+        Tabulated Hertz coefficients the source used, ``{"inner": delta*, "outer": delta*}``.
+    source : str
+        Where the numbers come from.
+
+    Examples
+    --------
+    >>> b = BallBearing.from_groove_radii(7, 2e-3, 8.7355e-3, 1.05e-3, 1.16e-3, contact_angle=math.radians(12))
+    >>> print(round(b.total_curvature, 6), f"{b.radial_clearance * 1e6:.3f} um")
+    0.105 9.178 um
+    """
+
+    n_balls: int | None = None
+    ball_diameter: float | None = None
+    pitch_diameter: float | None = None
+    inner_conformity: float | None = None
+    outer_conformity: float | None = None
+    contact_angle: float | None = None
+    radial_clearance: float | None = None
+    designation: str = ""
+    bore: float | None = None
+    outside_diameter: float | None = None
+    width: float | None = None
+    type: str = "angular"
+    static_load_rating: float | None = None
+    ball_material: Material = STEEL
+    ring_material: Material = STEEL
+    hertz_table: dict = field(default_factory=dict, compare=False)
+    source: str = ""
+
+    def __post_init__(self):
+        if self.n_balls is not None:
+            if not (isinstance(self.n_balls, (int, np.integer)) and not isinstance(self.n_balls, bool)) or self.n_balls < 1:
+                raise InputError(f"n_balls must be an integer >= 1 [-], got {self.n_balls!r}")
+        for name, unit in (("ball_diameter", "m"), ("pitch_diameter", "m"), ("bore", "m"),
+                           ("outside_diameter", "m"), ("width", "m"), ("static_load_rating", "N")):
+            _positive(name, getattr(self, name), unit)
+        for name in ("inner_conformity", "outer_conformity"):
+            f = getattr(self, name)
+            if f is not None and not (isinstance(f, (int, float, np.floating)) and 0.5 < f < 10.0):
+                raise InputError(f"{name} must be in (0.5, 10) [-], got {f!r}")
+        if self.ball_diameter is not None and self.pitch_diameter is not None:
+            if not self.pitch_diameter > self.ball_diameter:
+                raise InputError(
+                    f"pitch_diameter must be > ball_diameter [mm], got {self.pitch_diameter * 1e3:g} mm "
+                    f"with ball_diameter = {self.ball_diameter * 1e3:g} mm"
+                )
+        if self.bore is not None and self.outside_diameter is not None and not self.outside_diameter > self.bore:
+            raise InputError(
+                f"outside_diameter must be > bore [mm], got {self.outside_diameter * 1e3:g} mm "
+                f"with bore = {self.bore * 1e3:g} mm"
+            )
+        if self.type not in _TYPES:
+            raise InputError(f"type must be one of {list(_TYPES)}, got {self.type!r}")
+        if self.contact_angle is not None:
+            a = self.contact_angle
+            if not (isinstance(a, (int, float, np.floating)) and 0.0 <= a < math.pi / 2):
+                raise InputError(f"contact_angle must be in [0, 90) [deg], got {math.degrees(a) if isinstance(a, (int, float)) else a!r}")
+        if self.radial_clearance is not None:
+            _positive("radial_clearance", self.radial_clearance, "m", optional=False)
+        has_f = self.inner_conformity is not None and self.outer_conformity is not None and self.ball_diameter is not None
+        if self.contact_angle is None and self.radial_clearance is not None:
+            if not has_f:
+                raise InputError("radial_clearance needs both groove conformities and the ball diameter to give a contact angle")
+            angle = float(geometry.free_contact_angle(self.radial_clearance, self.ball_diameter,
+                                                      self.inner_conformity, self.outer_conformity))
+            object.__setattr__(self, "contact_angle", angle)
+        elif self.contact_angle is not None and self.radial_clearance is None and has_f and self.contact_angle > 0:
+            e = float(geometry.radial_clearance(self.contact_angle, self.ball_diameter,
+                                                self.inner_conformity, self.outer_conformity))
+            object.__setattr__(self, "radial_clearance", e)
+
+    # ------------------------------------------------------------------ constructors
+    @classmethod
+    def from_groove_radii(cls, n_balls, ball_diameter, pitch_diameter, inner_groove_radius, outer_groove_radius, **kw):
+        """Build from groove radii r_i, r_o [m] instead of conformities."""
+        _positive("ball_diameter", ball_diameter, "m", optional=False)
+        _positive("inner_groove_radius", inner_groove_radius, "m", optional=False)
+        _positive("outer_groove_radius", outer_groove_radius, "m", optional=False)
+        return cls(n_balls=n_balls, ball_diameter=ball_diameter, pitch_diameter=pitch_diameter,
+                   inner_conformity=inner_groove_radius / ball_diameter,
+                   outer_conformity=outer_groove_radius / ball_diameter, **kw)
+
+    def replace(self, **changes):
+        """A copy with some fields changed (validated again)."""
+        if "contact_angle" in changes and "radial_clearance" not in changes:
+            changes["radial_clearance"] = None
+        if "radial_clearance" in changes and "contact_angle" not in changes:
+            changes["contact_angle"] = None
+        return dataclasses.replace(self, **changes)
+
+    def require(self, *names):
+        """Return the named fields, raising InputError naming the first one that is unknown."""
+        out = []
+        for name in names:
+            value = getattr(self, name)
+            if value is None:
+                label = self.designation or "this bearing"
+                raise InputError(f"{name} of {label!r} is not known; give it (catalog entry, file or option)")
+            out.append(value)
+        return out[0] if len(out) == 1 else tuple(out)
+
+    # ------------------------------------------------------------------ derived quantities
+    @property
+    def inner_groove_radius(self):
+        """r_i = f_i D. [m]"""
+        f, d = self.require("inner_conformity", "ball_diameter")
+        return f * d
+
+    @property
+    def outer_groove_radius(self):
+        """r_o = f_o D. [m]"""
+        f, d = self.require("outer_conformity", "ball_diameter")
+        return f * d
+
+    @property
+    def total_curvature(self):
+        """B = f_i + f_o - 1. [-]"""
+        return float(geometry.total_curvature(*self.require("inner_conformity", "outer_conformity")))
+
+    @property
+    def groove_distance(self):
+        """A = B D, the distance between the groove-curvature centres. [m]"""
+        return self.total_curvature * self.require("ball_diameter")
+
+    @property
+    def gamma(self):
+        """gamma = D cos(alpha0) / d_m at the nominal angle. [-]"""
+        d, dm, a = self.require("ball_diameter", "pitch_diameter", "contact_angle")
+        return float(geometry.pitch_ratio(d, dm, a))
+
+    @property
+    def mean_diameter(self):
+        """(bore + outside diameter) / 2, the d_m of the friction handbook. [m]"""
+        d, big = self.require("bore", "outside_diameter")
+        return 0.5 * (d + big)
+
+    @property
+    def ball_mass(self):
+        """Mass of one ball. [kg]"""
+        return self.ball_material.density * math.pi * self.require("ball_diameter") ** 3 / 6.0
+
+    @property
+    def reduced_modulus(self):
+        """E' of the ball-ring pair. [Pa]"""
+        b, r = self.ball_material, self.ring_material
+        return float(hertz.reduced_modulus(b.elastic_modulus, b.poisson_ratio, r.elastic_modulus, r.poisson_ratio))
+
+    def free_contact_angle_052(self):
+        """Free angle from the clearance with both groove radii 0.52 D (spec 000 section 4). [rad]"""
+        return float(geometry.free_contact_angle_052(*self.require("radial_clearance", "ball_diameter")))
+
+    def axial_play(self):
+        """Total axial play 2 B D sin(alpha0). [m]"""
+        return float(geometry.axial_play(self.require("contact_angle"), *self.require("ball_diameter", "inner_conformity", "outer_conformity")))
+
+    def curvature(self, race, contact_angle=None):
+        """Curvature sum and F(rho) of the ``race`` contact, at ``contact_angle`` (default nominal)."""
+        conf = self.require("inner_conformity" if race == "inner" else "outer_conformity")
+        angle = self.require("contact_angle") if contact_angle is None else contact_angle
+        return geometry.raceway_curvature(*self.require("ball_diameter", "pitch_diameter"), conf, angle, race=race)
+
+    def groove_centres(self):
+        """Groove-centre circles T_v, T_n and the paper's m_v, m_n (spec 000 section 5.1)."""
+        return geometry.groove_centre_diameters(
+            *self.require("ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity", "contact_angle"))

@@ -1,0 +1,266 @@
+"""Bearing catalogs: the built-in entries and user TOML files.
+
+Functions
+---------
+load_catalog        read a catalog file into ``{name: BallBearing}``
+bearing_from_table  one ``[bearings."NAME"]`` table (or a single-bearing file) -> BallBearing
+load_bearing_file   a single-bearing TOML file -> BallBearing
+builtin             the built-in catalog
+get                 look a bearing up by name or alias (built-ins, then user catalogs)
+names               the names of all bearings visible
+
+File format (quantities are strings with units)::
+
+    [bearings."B218"]
+    aliases = ["7218B"]                       # optional
+    balls = 16
+    ball_diameter = "22.23 mm"
+    pitch_diameter = "125.3 mm"
+    inner_groove_radius = "11.63 mm"          # or inner_conformity = 0.5232
+    outer_groove_radius = "11.63 mm"          # or outer_conformity = 0.5232
+    contact_angle = "40 deg"                  # or radial_clearance = "10 um"
+    bore = "90 mm"                            # optional: bore, outside_diameter, width,
+    type = "angular"                          # type (radial|angular), static_load_rating,
+    ball_material = "steel"                   # ball_material (steel|silicon_nitride), source
+
+A user catalog is given by ``--catalog FILE`` or the environment variable ``BEARINGLAB_CATALOG``
+(several files separated by ``os.pathsep``); its entries take precedence over the built-ins.
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+import tomllib
+from importlib import resources
+from pathlib import Path
+
+from .bearing import MATERIALS, BallBearing
+from .errors import CatalogError, InputError
+from .units import parse_quantity
+
+__all__ = ["load_catalog", "bearing_from_table", "load_bearing_file", "builtin", "get", "names", "ENV_VAR"]
+
+ENV_VAR = "BEARINGLAB_CATALOG"
+
+_LENGTHS = ("ball_diameter", "pitch_diameter", "bore", "outside_diameter", "width", "radial_clearance")
+_KNOWN = {
+    "balls", "ball_diameter", "pitch_diameter", "inner_groove_radius", "outer_groove_radius",
+    "inner_conformity", "outer_conformity", "contact_angle", "radial_clearance", "bore",
+    "outside_diameter", "width", "type", "static_load_rating", "ball_material", "ring_material",
+    "source", "aliases", "hertz_table", "designation",
+}
+
+
+def _where(file, entry):
+    loc = f"{file}" if file else "<table>"
+    return f"{loc}, entry {entry!r}" if entry else loc
+
+
+def bearing_from_table(table, *, name="", file=None):
+    """Build a :class:`~bearinglab.bearing.BallBearing` from one catalog table.
+
+    Parameters
+    ----------
+    table : dict
+        The keys of the file format (see the module docstring); quantities as strings with units.
+    name : str
+        Designation of the entry.
+    file : str or Path, optional
+        The file it came from, for error messages.
+
+    Returns
+    -------
+    BallBearing
+
+    Raises
+    ------
+    CatalogError
+        Naming the file, the entry and the field.
+
+    Examples
+    --------
+    >>> b = bearing_from_table({"balls": 9, "ball_diameter": "7.94 mm", "pitch_diameter": "39.04 mm",
+    ...                         "contact_angle": "0 deg"}, name="6205")
+    >>> b.n_balls, round(b.ball_diameter * 1e3, 2)
+    (9, 7.94)
+    """
+    where = _where(file, name)
+    if not isinstance(table, dict):
+        raise CatalogError(f"{where}: expected a table of fields, got {type(table).__name__}")
+    unknown = sorted(set(table) - _KNOWN)
+    if unknown:
+        raise CatalogError(f"{where}, field {unknown[0]!r}: unknown field (known: {', '.join(sorted(_KNOWN))})")
+    kw = {}
+
+    def q(key, kind):
+        try:
+            return parse_quantity(table[key], kind, key)
+        except InputError as exc:
+            raise CatalogError(f"{where}, field {key!r}: {exc}") from None
+
+    try:
+        if "balls" in table:
+            z = table["balls"]
+            if isinstance(z, bool) or not isinstance(z, int):
+                raise CatalogError(f"{where}, field 'balls': must be a whole number, got {z!r}")
+            kw["n_balls"] = z
+        for key in _LENGTHS:
+            if key in table:
+                kw[key] = q(key, "length")
+        for race in ("inner", "outer"):
+            r_key, f_key = f"{race}_groove_radius", f"{race}_conformity"
+            if r_key in table and f_key in table:
+                raise CatalogError(f"{where}, field {r_key!r}: give {r_key} or {f_key}, not both")
+            if r_key in table:
+                if "ball_diameter" not in kw:
+                    raise CatalogError(f"{where}, field {r_key!r}: needs ball_diameter")
+                kw[f_key] = q(r_key, "length") / kw["ball_diameter"]
+            elif f_key in table:
+                kw[f_key] = q(f_key, "dimensionless")
+        if "contact_angle" in table:
+            kw["contact_angle"] = q("contact_angle", "angle")
+        if "static_load_rating" in table:
+            kw["static_load_rating"] = q("static_load_rating", "force")
+        for key in ("ball_material", "ring_material"):
+            if key in table:
+                mat = str(table[key]).lower().replace(" ", "_").replace("-", "_")
+                if mat not in MATERIALS:
+                    raise CatalogError(f"{where}, field {key!r}: unknown material {table[key]!r} (known: {', '.join(MATERIALS)})")
+                kw[key] = MATERIALS[mat]
+        for key in ("type", "source"):
+            if key in table:
+                kw[key] = str(table[key])
+        if "hertz_table" in table:
+            ht = table["hertz_table"]
+            if not (isinstance(ht, dict) and set(ht) <= {"inner", "outer"} and all(isinstance(v, (int, float)) for v in ht.values())):
+                raise CatalogError(f"{where}, field 'hertz_table': expected {{ inner = 0.63, outer = 0.852 }}, got {ht!r}")
+            kw["hertz_table"] = {k: float(v) for k, v in ht.items()}
+        designation = str(table.get("designation", name))
+        return BallBearing(designation=designation, **kw)
+    except CatalogError:
+        raise
+    except InputError as exc:
+        msg = str(exc)
+        field = msg.split(" ", 1)[0]
+        raise CatalogError(f"{where}, field {field!r}: {msg}") from None
+
+
+def _read_toml(path):
+    path = Path(path)
+    try:
+        with open(path, "rb") as fh:
+            return tomllib.load(fh)
+    except FileNotFoundError:
+        raise CatalogError(f"{path}: no such file") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise CatalogError(f"{path}: not valid TOML: {exc}") from None
+    except OSError as exc:
+        raise CatalogError(f"{path}: cannot read: {exc.strerror}") from None
+
+
+def _entries(doc, file):
+    bearings = doc.get("bearings")
+    if not isinstance(bearings, dict) or not bearings:
+        raise CatalogError(f"{file}: no [bearings.\"NAME\"] tables")
+    out, aliases = {}, {}
+    for name, table in bearings.items():
+        out[name] = bearing_from_table(table, name=name, file=file)
+        for alias in table.get("aliases", []) if isinstance(table, dict) else []:
+            aliases[str(alias)] = name
+    return out, aliases
+
+
+def load_catalog(path):
+    """Read a catalog file.
+
+    Parameters
+    ----------
+    path : str or Path
+        TOML file with ``[bearings."NAME"]`` tables.
+
+    Returns
+    -------
+    dict
+        ``{name: BallBearing}``, aliases included as extra keys.
+    """
+    entries, aliases = _entries(_read_toml(path), path)
+    entries.update({alias: entries[name] for alias, name in aliases.items()})
+    return entries
+
+
+def load_bearing_file(path):
+    """Read a single-bearing file: the keys of one catalog table at the top level, or one ``[bearings."NAME"]``."""
+    doc = _read_toml(path)
+    if "bearings" in doc:
+        entries, _ = _entries(doc, path)
+        if len(entries) != 1:
+            raise CatalogError(f"{path}: a bearing file holds one bearing, found {len(entries)}")
+        return next(iter(entries.values()))
+    name = str(doc.get("designation", Path(path).stem))
+    return bearing_from_table(doc, name=name, file=path)
+
+
+@functools.cache
+def builtin():
+    """The built-in catalog, ``{name: BallBearing}`` with aliases."""
+    ref = resources.files("bearinglab") / "data" / "catalog.toml"
+    with resources.as_file(ref) as p:
+        return load_catalog(p)
+
+
+def _user_files(catalog):
+    files = []
+    env = os.environ.get(ENV_VAR, "")
+    files += [f for f in env.split(os.pathsep) if f]
+    if catalog:
+        files += [catalog] if isinstance(catalog, (str, Path)) else list(catalog)
+    return files
+
+
+def _all(catalog=None):
+    entries = dict(builtin())
+    for f in _user_files(catalog):
+        entries.update(load_catalog(f))
+    return entries
+
+
+def get(name, *, catalog=None):
+    """Look a bearing up by name or alias.
+
+    Parameters
+    ----------
+    name : str
+        Designation or alias, e.g. ``"B218"`` or ``"7218B"``.
+    catalog : str, Path or list, optional
+        User catalog file(s), searched before the built-ins (after ``BEARINGLAB_CATALOG``).
+
+    Returns
+    -------
+    BallBearing
+
+    Raises
+    ------
+    CatalogError
+        Unknown name (the message lists the known ones) or a malformed catalog file.
+
+    Examples
+    --------
+    >>> get("7218B").n_balls
+    16
+    """
+    entries = _all(catalog)
+    if name in entries:
+        return entries[name]
+    folded = {k.lower(): k for k in entries}
+    if str(name).lower() in folded:
+        return entries[folded[str(name).lower()]]
+    raise CatalogError(f"bearing: unknown name {name!r}; known: {', '.join(sorted(entries))}")
+
+
+def names(*, catalog=None):
+    """Names of all bearings visible (built-ins and user catalogs), aliases excluded."""
+    seen = {}
+    for name, b in _all(catalog).items():
+        seen.setdefault(id(b), name)
+    return sorted(seen.values())

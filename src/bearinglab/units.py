@@ -1,0 +1,290 @@
+"""Units at the boundary: SI conversion constants, converters, and parsing of quantities with units.
+
+The physics modules work in coherent SI (m, N, Pa, rad, rad/s). Only this module (and the command
+line, input files and reports that call it) knows about other units.
+
+Constants
+---------
+MM, CM, UM              metres per millimetre, centimetre, micrometre
+KGF                     newtons per kilogram-force (standard gravity)
+RPM                     rad/s per rev/min
+DEG                     radians per degree
+
+Converters
+----------
+from_rpm, to_rpm        shaft speed rev/min <-> rad/s
+from_kgf, to_kgf        force kgf <-> N
+to_dms                  angle in radians -> (degrees, minutes, seconds)
+format_dms              angle in radians -> ``14°28'03.38"``
+
+Parsing (pint is imported on first use, so ``import bearinglab`` stays light)
+-------
+parse_quantity          ``"2 kgf"`` -> 19.6133 (N), checking the dimension
+parse_values            ``"2.5kN:45kN:2.5kN"`` or ``"0,3000,6000rpm"`` -> array in SI
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+
+from .errors import InputError
+
+__all__ = [
+    "MM",
+    "CM",
+    "UM",
+    "KGF",
+    "RPM",
+    "DEG",
+    "STANDARD_GRAVITY",
+    "from_rpm",
+    "to_rpm",
+    "from_kgf",
+    "to_kgf",
+    "to_dms",
+    "format_dms",
+    "parse_quantity",
+    "parse_values",
+    "KINDS",
+]
+
+MM = 1e-3
+CM = 1e-2
+UM = 1e-6
+STANDARD_GRAVITY = 9.80665  # m/s^2, CGPM 1901; defines the kilogram-force
+KGF = STANDARD_GRAVITY
+RPM = 2.0 * math.pi / 60.0
+DEG = math.pi / 180.0
+
+
+def from_rpm(speed_rpm):
+    """Shaft speed in rev/min -> rad/s.
+
+    >>> round(float(from_rpm(3000.0)), 4)
+    314.1593
+    """
+    return np.asarray(speed_rpm, dtype=float) * RPM
+
+
+def to_rpm(speed):
+    """Shaft speed in rad/s -> rev/min."""
+    return np.asarray(speed, dtype=float) / RPM
+
+
+def from_kgf(force_kgf):
+    """Force in kilogram-force -> N."""
+    return np.asarray(force_kgf, dtype=float) * KGF
+
+
+def to_kgf(force):
+    """Force in N -> kilogram-force."""
+    return np.asarray(force, dtype=float) / KGF
+
+
+def to_dms(angle, *, pi=math.pi, truncate=False):
+    """Angle in radians -> (degrees, minutes, seconds).
+
+    ``pi`` and ``truncate`` exist for the legacy reproduction of printed tables (spec 000 section 8,
+    which converts with pi = 3.14 and truncates the seconds).
+
+    >>> to_dms(math.radians(14.5))
+    (14, 30, 0.0)
+    """
+    deg = float(angle) * 180.0 / pi
+    sign = -1 if deg < 0 else 1
+    deg = abs(deg)
+    d = int(deg)
+    m = int((deg - d) * 60.0)
+    s = (deg - d - m / 60.0) * 3600.0
+    if truncate:
+        s = float(math.floor(s + 1e-9))
+    elif s >= 59.995:  # keep "60.00" out of a rounded display
+        s, m = 0.0, m + 1
+        if m == 60:
+            m, d = 0, d + 1
+    return sign * d, m, s
+
+
+def format_dms(angle, *, digits=2):
+    """Angle in radians -> ``14°28'03.38"``.
+
+    >>> format_dms(math.radians(12.0))
+    '12°00\\'00.00"'
+    """
+    d, m, s = to_dms(angle)
+    width = 3 + digits if digits else 2
+    return f"{d}°{m:02d}'{s:0{width}.{digits}f}\""
+
+
+# --------------------------------------------------------------------------- parsing with pint
+
+# kind -> (pint dimensionality, SI unit to convert to, examples for messages)
+KINDS = {
+    "length": ("[length]", "m", "'2 mm', '0.2 cm'"),
+    "force": ("[force]", "N", "'19.6 N', '2 kgf', '20 kN'"),
+    "mass": ("[mass]", "kg", "'2 kg', '500 g'"),
+    "angle": ("", "rad", "'12 deg', '0.21 rad', '20 urad'"),
+    "speed": ("1/[time]", "rad/s", "'3000 rpm', '50 Hz', '314 rad/s'"),
+    "pressure": ("[pressure]", "Pa", "'208 GPa', '2.1e5 MPa'"),
+    "density": ("[mass]/[length]**3", "kg/m**3", "'7850 kg/m^3', '3.2 g/cm^3'"),
+    "torque": ("[force]*[length]", "N*m", "'0.07 N*mm'"),
+    "kinematic_viscosity": ("[length]**2/[time]", "m**2/s", "'20 cSt', '2e-5 m^2/s'"),
+    "dimensionless": ("", "", "'0.52'"),
+}
+
+_ANGLE_UNITS = ("radian", "degree", "arcminute", "arcsecond", "revolution", "turn")
+_registry = None
+
+
+def _ureg():
+    global _registry
+    if _registry is None:
+        import pint
+
+        _registry = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+        _registry.formatter.default_format = "~P"
+    return _registry
+
+
+def _normalise(text: str) -> str:
+    t = text.strip().replace("µ", "u").replace("μ", "u").replace("·", "*").replace("°", " deg ")
+    t = t.replace("′", " arcmin ").replace("″", " arcsec ")
+    # a rotation frequency in Hz means revolutions per second, not radians per second
+    t = re.sub(r"(?<![A-Za-z])(k?)Hz\b", lambda m: " revolution/s" if not m.group(1) else " kilorevolution/s", t)
+    t = re.sub(r"\brps\b", "revolution/s", t)
+    t = re.sub(r"\bcSt\b", "centistokes", t)
+    return t
+
+
+def parse_quantity(value, kind, name, *, default_unit=None):
+    """Parse a quantity written by a user and return it in coherent SI.
+
+    Parameters
+    ----------
+    value : str or float
+        ``"2 kgf"``, ``"3000 rpm"``, ``"12 deg"``; a bare number only when ``default_unit`` is given
+        (or for ``kind="dimensionless"``).
+    kind : str
+        One of :data:`KINDS`.
+    name : str
+        The parameter's name, used in error messages.
+    default_unit : str, optional
+        Unit of a bare number.
+
+    Returns
+    -------
+    float
+        The value in SI (m, N, kg, rad, rad/s, Pa, kg/m³, N·m, m²/s).
+
+    Raises
+    ------
+    InputError
+        The text does not parse, has no unit where one is needed, or has the wrong dimension.
+
+    Examples
+    --------
+    >>> round(parse_quantity("2 kgf", "force", "axial-load"), 5)
+    19.6133
+    >>> round(parse_quantity("3000 rpm", "speed", "speed"), 4)
+    314.1593
+    >>> parse_quantity("2 m", "force", "axial-load")
+    Traceback (most recent call last):
+    ...
+    bearinglab.errors.InputError: axial-load: '2 m' is a length, expected a force (e.g. '19.6 N', '2 kgf', '20 kN')
+    """
+    if kind not in KINDS:
+        raise InputError(f"kind must be one of {sorted(KINDS)}, got {kind!r}")
+    dim, si, examples = KINDS[kind]
+    ureg = _ureg()
+    if isinstance(value, bool):
+        raise InputError(f"{name}: expected a quantity, got {value!r}")
+    if isinstance(value, (int, float, np.integer, np.floating)):
+        if kind == "dimensionless":
+            return float(value)
+        if default_unit is None:
+            raise InputError(f"{name}: {value!r} has no unit; write it with one, e.g. {examples}")
+        text = f"{value} {default_unit}"
+    elif isinstance(value, str):
+        text = value
+    else:
+        raise InputError(f"{name}: expected a quantity such as {examples}, got {value!r}")
+    try:
+        q = ureg.Quantity(_normalise(text))
+    except Exception as exc:  # pint raises several unrelated exception types
+        raise InputError(f"{name}: cannot read {text!r} as a quantity (e.g. {examples})") from exc
+    if not isinstance(q, ureg.Quantity):  # a bare number
+        q = ureg.Quantity(float(q))
+    if q.dimensionless and not q.unit_items() and kind != "dimensionless":
+        if default_unit is None:
+            raise InputError(f"{name}: {text!r} has no unit; write it with one, e.g. {examples}")
+        q = ureg.Quantity(q.magnitude, default_unit)
+    if kind in ("angle", "dimensionless"):
+        is_angle = any(a in u for u, _exp in q.unit_items() for a in _ANGLE_UNITS)
+        if not q.dimensionless:
+            raise InputError(
+                f"{name}: {text!r} is a {_describe(q)}, expected {'an angle' if kind == 'angle' else 'a plain number'} (e.g. {examples})"
+            )
+        if kind == "angle" and not is_angle:
+            raise InputError(f"{name}: {text!r} is not an angle; write e.g. {examples}")
+        return float(q.to("radian").magnitude) if kind == "angle" else float(q.to("").magnitude)
+    if not q.check(dim):
+        raise InputError(f"{name}: {text!r} is a {_describe(q)}, expected a {kind.replace('_', ' ')} (e.g. {examples})")
+    return float(q.to(si).magnitude)
+
+
+def _describe(q):
+    for kind, (dim, _si, _ex) in KINDS.items():
+        if dim and q.check(dim):
+            return kind.replace("_", " ")
+    return f"quantity of dimension {q.dimensionality}"
+
+
+_NUMBER_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*)$")
+
+
+def _split_unit(item: str):
+    m = _NUMBER_UNIT.match(item)
+    if not m:
+        return None, None
+    return float(m.group(1)), m.group(2).strip()
+
+
+def parse_values(text, kind, name):
+    """Parse one value, a list ``a,b,cUNIT`` or a range ``start:stop:step`` into an SI array.
+
+    A unit written only on the last item applies to all items without one. A range includes its end
+    point when the steps land on it.
+
+    Examples
+    --------
+    >>> parse_values("2.5kN:10kN:2.5kN", "force", "axial-load")
+    array([ 2500.,  5000.,  7500., 10000.])
+    >>> parse_values("0,3000,6000rpm", "speed", "speed").round(3)
+    array([  0.   , 314.159, 628.319])
+    """
+    text = str(text).strip()
+    sep = ":" if ":" in text else ","
+    items = [s.strip() for s in text.split(sep) if s.strip()]
+    if not items:
+        raise InputError(f"{name}: no values in {text!r}")
+    parsed = [_split_unit(s) for s in items]
+    last_unit = parsed[-1][1] or None
+    values = []
+    for item, (num, unit) in zip(items, parsed):
+        if num is not None and not unit and last_unit:
+            item = f"{num} {last_unit}"
+        values.append(parse_quantity(item, kind, name))
+    if sep == ":":
+        if len(values) != 3:
+            raise InputError(f"{name}: a range is start:stop:step, got {text!r}")
+        start, stop, step = values
+        if not step > 0 or stop < start:
+            raise InputError(f"{name}: range {text!r} needs step > 0 and stop >= start")
+        count = int(math.floor((stop - start) / step * (1 + 1e-12) + 1e-9)) + 1
+        if count > 10_000_000:
+            raise InputError(f"{name}: range {text!r} has {count} values, more than 10^7")
+        return start + step * np.arange(count)
+    return np.array(values, dtype=float)
