@@ -444,7 +444,7 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
         new = np.where(new <= a0, 0.5 * (alpha + a0), new)
         new = np.where(new >= np.pi / 2, 0.5 * (alpha + np.pi / 2), new)
         done = (np.abs(dx) < xtol) | (np.abs(thrust - fa) / fa * 100.0 < ftol_percent)
-        alpha = np.where(done, alpha, new)
+        alpha = new
         if done.all():
             break
     else:
@@ -535,6 +535,7 @@ def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, re
     x = float(first_approximation(fa / cs, a0)) if x0 is None else float(x0)
     rows = []
     limit = max_iter if max_rows is None else max_rows
+    settled = False  # the previous step was below xtol: this row is the converged one
     for k in range(limit):
         alpha = _legacy_angle(a0, x) if reproduce_print else a0 + x
         if not a0 < alpha < math.pi / 2:
@@ -545,9 +546,10 @@ def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, re
         step_thrust = math.floor(thrust / KGF * 1000.0) / 1000.0 * KGF if reproduce_print else thrust
         error = (step_thrust - fa) / fa * 100.0
         rows.append(IterationRow(k, x, alpha, float(axial_displacement_ratio(alpha, a0)), thrust, error))
-        dx = float(_newton_step(fa, step_thrust, alpha, a0))
-        if max_rows is None and (abs(dx) < xtol or abs(error) < ftol_percent):
+        if max_rows is None and (settled or abs(error) < ftol_percent):
             return rows
+        dx = float(_newton_step(fa, step_thrust, alpha, a0))
+        settled = abs(dx) < xtol
         x += dx
     if max_rows is None:
         raise ConvergenceError("static.iteration_table", iterations=limit, residual=rows[-1].error_percent / 100,
@@ -723,7 +725,7 @@ def stand_analysis(bearing, axial_load, *, hertz="exact", elastic_constant=PAPER
     >>> from bearinglab import catalog
     >>> r = stand_analysis(catalog.get("4-1006095"), 2 * 9.80665, hertz="table")
     >>> import math; print(f"{math.degrees(r.contact_angle):.5f} deg in {len(r.iterations)} rows")
-    14.46761 deg in 3 rows
+    14.46761 deg in 4 rows
     """
     z, d, dm, fi, fo, a0 = bearing.require("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity",
                                            "outer_conformity", "contact_angle")

@@ -1,0 +1,154 @@
+"""Command line of the test-stand method (spec 000): ``axial-angle`` and ``stand-load``."""
+
+from __future__ import annotations
+
+import math
+from typing import Annotated, Optional
+
+import numpy as np
+import typer
+
+from . import static
+from .cli import (BallDiameter, BallMaterial, Balls, BearingFile, BearingName, CatalogFile, Clearance,
+                  ContactAngle, InnerConformity, InnerRadius, JsonFlag, OuterConformity, OuterRadius,
+                  PitchDiameter, console, emit_json, resolve_bearing, table)
+from .errors import InputError
+from .units import KGF, format_dms, parse_values, to_dms, to_rpm
+
+__all__ = ["register"]
+
+
+def _angle_row(row, legacy):
+    d, m, s = to_dms(row.contact_angle, truncate=legacy)
+    dms = f"{d}°{m:02d}'{s:02.0f}\"" if legacy else format_dms(row.contact_angle)
+    return dms
+
+
+def axial_angle(
+    axial_load: Annotated[str, typer.Option("--axial-load", "-F", help="Axial load: '2 kgf', '19.6 N', or a list/range '1kgf:5kgf:1kgf'.")],
+    bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
+    balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
+    inner_groove_radius: InnerRadius = None, outer_groove_radius: OuterRadius = None,
+    inner_conformity: InnerConformity = None, outer_conformity: OuterConformity = None,
+    contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
+    hertz: Annotated[str, typer.Option("--hertz", help="exact (default) | table (the bearing's tabulated 2K/(πμ)).")] = "exact",
+    legacy: Annotated[bool, typer.Option("--legacy", help="Reproduce the paper's printed rounding (π = 3.14, F cut to 3 decimals).")] = False,
+    x0: Annotated[Optional[float], typer.Option("--x0", help="Start of the iteration table [rad] (the paper printed 0.0433985).")] = None,
+    rows: Annotated[Optional[int], typer.Option("--rows", help="Rows of the iteration table (default: to convergence).")] = None,
+    json_out: JsonFlag = False,
+):
+    """Operating contact angle under axial load (spec 000): C*, x0, Newton iterations, displacement."""
+    b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
+                        outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
+                        ball_material)
+    if hertz not in ("exact", "table"):
+        raise InputError(f"hertz must be one of ['exact', 'table'], got {hertz!r}")
+    loads = parse_values(axial_load, "force", "axial-load")
+    if np.any(~(loads > 0)):
+        raise InputError(f"axial-load must be > 0 [N], got {float(loads[~(loads > 0)][0])!r} N")
+    scalar = loads.size == 1
+    # the paper prints two rows; legacy mode reproduces exactly those unless --rows says otherwise
+    max_rows = rows if rows is not None else (2 if legacy else None)
+    r = static.stand_analysis(b, loads[0] if scalar else loads, hertz=hertz, reproduce_print=legacy, x0=x0,
+                              max_rows=max_rows)
+    c = r.constants
+    base = {
+        "bearing": b.designation,
+        "hertz": hertz,
+        "contact_angle_initial_deg": math.degrees(r.free_angle),
+        "gamma": c.gamma,
+        "curvature_sum_inner_per_mm": c.curvature_sum_inner * 1e-3,
+        "curvature_sum_outer_per_mm": c.curvature_sum_outer * 1e-3,
+        "cos_tau_inner": c.curvature_difference_inner,
+        "cos_tau_outer": c.curvature_difference_outer,
+        "delta_star_inner": c.hertz_inner.delta_star,
+        "delta_star_outer": c.hertz_outer.delta_star,
+        "c_inner_cm2_per_kgf_2_3": c.approach_inner_paper,
+        "c_outer_cm2_per_kgf_2_3": c.approach_outer_paper,
+        "load_deflection_constant_kgf": c.force_characteristic_kgf,
+        "load_deflection_constant_N": c.force_characteristic,
+    }
+    if scalar:
+        out = dict(base)
+        out.update({
+            "axial_load_N": float(r.axial_load), "axial_load_kgf": float(r.axial_load) / KGF,
+            "series_coefficients": list(np.asarray(r.series).ravel()),
+            "first_approximation_rad": float(r.first_approximation),
+            "operating_contact_angle_deg": math.degrees(r.contact_angle),
+            "operating_contact_angle_dms": format_dms(r.contact_angle),
+            "contact_angle_increment_deg": math.degrees(r.contact_angle - r.free_angle),
+            "axial_displacement_ratio": float(r.axial_displacement_ratio),
+            "axial_displacement_mm": float(r.axial_displacement) * 1e3,
+            "ball_load_N": float(r.ball_load), "ball_load_kgf": float(r.ball_load) / KGF,
+            "converged": True,
+            "legacy": legacy,
+            "iterations": [{"k": row.k, "x_rad": row.x, "contact_angle_deg": math.degrees(row.contact_angle),
+                            "contact_angle_dms": _angle_row(row, legacy),
+                            "axial_displacement_ratio": row.axial_displacement_ratio,
+                            "axial_load_kgf": row.axial_load / KGF, "axial_load_N": row.axial_load,
+                            "error_percent": row.error_percent} for row in r.iterations],
+        })
+        if json_out:
+            emit_json(out)
+            return
+        table(f"Bearing {b.designation}: contact constants ({hertz} Hertz)", ["quantity", "inner (в)", "outer (н)"], [
+            ["Σρ [1/mm]", f"{out['curvature_sum_inner_per_mm']:.7f}", f"{out['curvature_sum_outer_per_mm']:.7f}"],
+            ["cos τ", f"{out['cos_tau_inner']:.7f}", f"{out['cos_tau_outer']:.7f}"],
+            ["2K/(πμ)", f"{out['delta_star_inner']:.5f}", f"{out['delta_star_outer']:.5f}"],
+            ["c [(cm²/kgf)^(2/3)]", f"{out['c_inner_cm2_per_kgf_2_3']:.6e}", f"{out['c_outer_cm2_per_kgf_2_3']:.6e}"],
+        ], caption=f"α0 = {out['contact_angle_initial_deg']:g}°, γ = {c.gamma:.6f}, C* = {c.force_characteristic_kgf:.2f} kgf = {c.force_characteristic:.1f} N")
+        table(f"Iterations at F_a = {out['axial_load_kgf']:.4g} kgf ({out['axial_load_N']:.4g} N)" + (" — legacy rounding" if legacy else ""),
+              ["k", "x_k [rad]", "α [deg]", "α [D°M′S″]", "ξ_a", "F_a,k [kgf]", "Δ [%]"],
+              [[i["k"], f"{i['x_rad']:.7f}", f"{i['contact_angle_deg']:.6f}", i["contact_angle_dms"],
+                f"{i['axial_displacement_ratio']:.7f}", f"{i['axial_load_kgf']:.5f}", f"{i['error_percent']:.3g}"]
+               for i in out["iterations"]])
+        console.print(f"operating contact angle {out['operating_contact_angle_deg']:.6f}° ({out['operating_contact_angle_dms']}), "
+                      f"+{out['contact_angle_increment_deg']:.4f}° over α0; axial displacement {out['axial_displacement_mm'] * 1e3:.3f} µm; "
+                      f"ball load {out['ball_load_N']:.4g} N ({out['ball_load_kgf']:.4g} kgf)", highlight=False)
+        return
+    cases = [{"axial_load_N": float(f), "axial_load_kgf": float(f) / KGF, "operating_contact_angle_deg": math.degrees(a),
+              "axial_displacement_ratio": float(xa), "axial_displacement_mm": float(da) * 1e3, "ball_load_N": float(q),
+              "converged": True}
+             for f, a, xa, da, q in zip(r.axial_load, r.contact_angle, r.axial_displacement_ratio, r.axial_displacement, r.ball_load)]
+    if json_out:
+        emit_json(dict(base, cases=cases))
+        return
+    table(f"Bearing {b.designation}: operating contact angle ({hertz} Hertz, C* = {c.force_characteristic_kgf:.2f} kgf)",
+          ["F_a [kgf]", "F_a [N]", "α [deg]", "ξ_a", "δ_a [µm]", "ball load [N]"],
+          [[f"{x['axial_load_kgf']:.4g}", f"{x['axial_load_N']:.4g}", f"{x['operating_contact_angle_deg']:.5f}",
+            f"{x['axial_displacement_ratio']:.6f}", f"{x['axial_displacement_mm'] * 1e3:.3f}", f"{x['ball_load_N']:.4g}"] for x in cases])
+
+
+def stand_load(
+    speed: Annotated[str, typer.Option("--speed", "-n", help="Inner-ring speed: '3000 rpm', or a list '1000,3000,10000rpm'.")],
+    bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
+    balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
+    inner_groove_radius: InnerRadius = None, outer_groove_radius: OuterRadius = None,
+    inner_conformity: InnerConformity = None, outer_conformity: OuterConformity = None,
+    contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
+    json_out: JsonFlag = False,
+):
+    """Minimum axial load against gyroscopic slip on a test stand, and the +20 % maximum (spec 000 §3)."""
+    b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
+                        outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
+                        ball_material)
+    speeds = parse_values(speed, "speed", "speed")
+    if np.any(speeds < 0):
+        raise InputError(f"speed must be >= 0 [rpm], got {float(to_rpm(speeds[speeds < 0][0]))!r} rpm")
+    z, d, dm, a = b.require("n_balls", "ball_diameter", "pitch_diameter", "contact_angle")
+    res = static.min_axial_load(speeds, z, d, dm, a)
+    rows = [{"speed_rpm": float(to_rpm(n)), "min_axial_load_kgf": float(lo) / KGF, "min_axial_load_N": float(lo),
+             "max_axial_load_kgf": float(hi) / KGF, "max_axial_load_N": float(hi)}
+            for n, lo, hi in zip(speeds, np.atleast_1d(res.minimum), np.atleast_1d(res.maximum))]
+    if json_out:
+        emit_json(dict(rows[0], bearing=b.designation, contact_angle_deg=math.degrees(a)) if len(rows) == 1 else rows)
+        return
+    table(f"Bearing {b.designation}: axial load on the stand (α = {math.degrees(a):g}°)",
+          ["speed [rpm]", "min [kgf]", "min [N]", "max +20 % [kgf]", "max [N]"],
+          [[f"{r['speed_rpm']:g}", f"{r['min_axial_load_kgf']:.4g}", f"{r['min_axial_load_N']:.4g}",
+            f"{r['max_axial_load_kgf']:.4g}", f"{r['max_axial_load_N']:.4g}"] for r in rows])
+
+
+def register(app):
+    app.command("axial-angle")(axial_angle)
+    app.command("stand-load")(stand_load)
