@@ -433,23 +433,32 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
     fa = check_positive("axial_load", axial_load, "N")
     cs = check_positive("force_characteristic", force_characteristic, "N")
     a0 = _angle("free_angle", free_angle)
-    fa, cs, a0 = np.broadcast_arrays(fa, cs, a0)
-    alpha = a0 + first_approximation(fa / cs, a0)
-    alpha = np.minimum(alpha, 0.5 * (a0 + np.pi / 2))  # x0 can overshoot 90 deg at absurd loads
+    cos_a0 = np.cos(a0)  # before broadcasting: one cosine per bearing, not per case
+    x0 = first_approximation(fa / cs, a0)
+    alpha = np.minimum(a0 + x0, 0.5 * (a0 + np.pi / 2))  # x0 can overshoot 90 deg at absurd loads
+    alpha = np.array(np.broadcast_to(alpha, np.broadcast_shapes(fa.shape, cs.shape, a0.shape)), dtype=float)
     for it in range(1, max_iter + 1):
-        thrust = thrust_from_angle(alpha, cs, a0)
-        dx = _newton_step(fa, thrust, alpha, a0)
-        new = alpha + dx
+        ca, sa = np.cos(alpha), np.sin(alpha)
+        gap = cos_a0 - ca
+        c = gap / ca
+        thrust = cs * c * np.sqrt(c) * sa  # eq. (1)
+        ratio = fa / thrust
+        tan = sa / ca
+        dx = (np.cbrt(ratio * ratio) - 1.0) / (tan + (2.0 / 3.0) / tan + sa / gap)
+        alpha += dx
         # stay inside (alpha0, 90 deg): a step out of the domain is halved toward the boundary
-        new = np.where(new <= a0, 0.5 * (alpha + a0), new)
-        new = np.where(new >= np.pi / 2, 0.5 * (alpha + np.pi / 2), new)
-        done = (np.abs(dx) < xtol) | (np.abs(thrust - fa) / fa * 100.0 < ftol_percent)
-        alpha = new
+        low, high = alpha <= a0, alpha >= np.pi / 2
+        if low.any() or high.any():
+            alpha = np.where(low, 0.5 * (alpha - dx + a0), alpha)
+            alpha = np.where(high, 0.5 * (alpha - dx + np.pi / 2), alpha)
+        if np.max(np.abs(dx), initial=0.0) < xtol:
+            break
+        done = (np.abs(dx) < xtol) | (np.abs(ratio - 1.0) * 100.0 < ftol_percent)
         if done.all():
             break
     else:
         raise ConvergenceError("static.operating_contact_angle", iterations=max_iter,
-                               residual=(thrust - fa) / fa, estimate=alpha,
+                               residual=1.0 / ratio - 1.0, estimate=alpha,
                                reason="the angle did not settle in (alpha0, 90 deg)")
     return alpha[()]
 
