@@ -236,7 +236,7 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name or alias
 
 # ----------------------------------------------------------------------------- capability modules
 # Each module defines register(app). Listed here so that the command line is complete on import.
-_COMMAND_MODULES: tuple[str, ...] = ("_cli_stand",)
+_COMMAND_MODULES: tuple[str, ...] = ("_cli_stand", "_cli_frequencies")
 
 
 def _register_all():
