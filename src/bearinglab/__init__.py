@@ -4,9 +4,10 @@ Submodules
 ----------
 units       SI constants, converters and parsing of quantities with units (boundary only)
 errors      InputError, CatalogError, ConvergenceError, ValidityWarning
+kinematics  cage and ball speeds, characteristic (defect) frequencies, spectral masks
 """
 
-from . import errors, units
+from . import errors, kinematics, units
 
 __version__ = "0.1.0"
-__all__ = ["errors", "units", "__version__"]
+__all__ = ["errors", "kinematics", "units", "__version__"]
