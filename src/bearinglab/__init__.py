@@ -4,10 +4,16 @@ Submodules
 ----------
 units       SI constants, converters and parsing of quantities with units (boundary only)
 errors      InputError, CatalogError, ConvergenceError, ValidityWarning
+geometry    conformity, curvature sums, clearance and free contact angle
+hertz       Hertz point contact: exact coefficients, semi-axes, pressure, approach, stiffness
+bearing     Material, BallBearing: validated inputs of the models
+catalog     built-in bearings and user TOML catalogs
+static      test-stand method (spec 000) and the static contact angle under thrust
+parallel    chunked batch execution, serial or on dask
 kinematics  cage and ball speeds, characteristic (defect) frequencies, spectral masks
 """
 
-from . import errors, kinematics, units
+from . import bearing, catalog, errors, geometry, hertz, kinematics, parallel, static, units
 
 __version__ = "0.1.0"
-__all__ = ["errors", "kinematics", "units", "__version__"]
+__all__ = ["bearing", "catalog", "errors", "geometry", "hertz", "kinematics", "parallel", "static", "units", "__version__"]
