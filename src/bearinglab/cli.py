@@ -40,6 +40,14 @@ from .bearing import MATERIALS, BallBearing
 from .errors import ConvergenceError, InputError
 from .units import parse_quantity
 
+try:  # typer >= 0.20 vendors click as typer._click and raises its own exception classes, not click's
+    from typer._click import exceptions as _typer_click_exceptions
+except ImportError:  # older typer uses click itself
+    _typer_click_exceptions = click.exceptions
+_USAGE_ERRORS = (click.exceptions.UsageError, _typer_click_exceptions.UsageError)
+_EXITS = (click.exceptions.Exit, typer.Exit)
+_ABORTS = (click.exceptions.Abort, typer.Abort)
+
 __all__ = ["app", "main", "run"]
 
 app = typer.Typer(
@@ -251,12 +259,13 @@ def main(argv=None) -> int:
     """Run the command line; return the exit code instead of raising (tests call this)."""
     try:
         rv = app(args=argv, prog_name="bearinglab", standalone_mode=False)
-    except click.exceptions.UsageError as exc:
-        print(f"bearinglab: error: {exc.format_message()}", file=sys.stderr)
+    except _USAGE_ERRORS as exc:
+        if exc.format_message():  # empty after no_args_is_help has printed the help
+            print(f"bearinglab: error: {exc.format_message()}", file=sys.stderr)
         return 2
-    except click.exceptions.Exit as exc:
+    except _EXITS as exc:
         return exc.exit_code
-    except click.exceptions.Abort:
+    except _ABORTS:
         print("bearinglab: aborted", file=sys.stderr)
         return 1
     except ConvergenceError as exc:
