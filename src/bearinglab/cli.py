@@ -21,6 +21,7 @@ entry point, which this module remains).
 
 from __future__ import annotations
 
+import contextlib
 import importlib
 import json
 import math
@@ -77,6 +78,10 @@ ContactAngle = Annotated[Optional[str], typer.Option("--contact-angle", help="No
 Clearance = Annotated[Optional[str], typer.Option("--radial-clearance", help="Diametral clearance, e.g. '9 um'.", rich_help_panel="Inline geometry")]
 BallMaterial = Annotated[Optional[str], typer.Option("--ball-material", help="steel | silicon_nitride.", rich_help_panel="Inline geometry")]
 JsonFlag = Annotated[bool, typer.Option("--json", help="Print one JSON document on stdout.")]
+# Batch execution (bearinglab.parallel): every batch command takes these three.
+ExecutorOpt = Annotated[Optional[str], typer.Option("--executor", help="serial | local | tcp://host:8786 (a running dask scheduler).", rich_help_panel="Execution")]
+WorkersOpt = Annotated[Optional[int], typer.Option("--workers", help="Workers of the local dask cluster.", rich_help_panel="Execution")]
+ChunkSizeOpt = Annotated[Optional[int], typer.Option("--chunk-size", help="Cases per chunk (task).", rich_help_panel="Execution")]
 
 
 def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, ball_diameter=None,
@@ -131,6 +136,25 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
     import dataclasses
 
     return dataclasses.replace(base, **changes)
+
+
+@contextlib.contextmanager
+def progress_bar(description, executor="serial"):
+    """The ``progress`` argument of :mod:`bearinglab.parallel` for a command: a rich bar (serial) or dask's
+    progress bar (distributed) on an interactive terminal, nothing otherwise (pipes, tests, CI)."""
+    err = Console(stderr=True)
+    if not err.is_terminal:
+        yield None
+        return
+    if executor not in (None, "serial"):
+        yield "dask"
+        return
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeRemainingColumn
+
+    with Progress("[progress.description]{task.description}", BarColumn(), MofNCompleteColumn(),
+                  TimeRemainingColumn(), console=err, transient=True) as bar:
+        task = bar.add_task(description, total=None)
+        yield lambda done, total: bar.update(task, completed=done, total=total)
 
 
 def quantity(text, kind, name, *, default_unit=None):
@@ -244,7 +268,7 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name or alias
 
 # ----------------------------------------------------------------------------- capability modules
 # Each module defines register(app). Listed here so that the command line is complete on import.
-_COMMAND_MODULES: tuple[str, ...] = ("_cli_stand", "_cli_frequencies")
+_COMMAND_MODULES: tuple[str, ...] = ("_cli_stand", "_cli_frequencies", "_cli_sweep")
 
 
 def _register_all():

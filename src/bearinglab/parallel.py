@@ -78,7 +78,7 @@ def _validate_executor(executor):
 
 @contextlib.contextmanager
 def executor_client(executor="serial", *, workers=None, memory_limit=None, processes=True,
-                    timeout=_CONNECT_TIMEOUT_S):
+                    timeout=None):
     """A dask client for ``executor`` (``None`` for serial), closed (and the local cluster stopped) on exit.
 
     Parameters
@@ -92,13 +92,14 @@ def executor_client(executor="serial", *, workers=None, memory_limit=None, proce
     processes : bool, optional
         Local workers as processes (default) or as threads of this process.
     timeout : float, optional
-        Seconds to wait for a scheduler before giving up. [s]
+        Seconds to wait for a scheduler before giving up (default 10). [s]
 
     Yields
     ------
     distributed.Client or None
     """
     executor = _validate_executor(executor)
+    timeout = _CONNECT_TIMEOUT_S if timeout is None else float(timeout)
     if executor == "serial":
         yield None
         return
@@ -183,7 +184,7 @@ def _run(tasks, sizes, *, executor, workers, memory_limit, processes, progress, 
 
 def run_cases(func: Callable[..., Mapping[str, np.ndarray]], cases: Mapping[str, np.ndarray], *, constants=None,
               chunk_size=DEFAULT_CHUNK_SIZE, executor="serial", workers=None, memory_limit=None, processes=True,
-              progress=None, timeout=_CONNECT_TIMEOUT_S):
+              progress=None, timeout=None):
     """Evaluate a batched model over many cases, chunk by chunk.
 
     Parameters
@@ -208,7 +209,7 @@ def run_cases(func: Callable[..., Mapping[str, np.ndarray]], cases: Mapping[str,
     progress : callable or "dask", optional
         ``progress(done_cases, total_cases)`` after each chunk, or ``"dask"`` for dask's progress bar.
     timeout : float, optional
-        Seconds to wait for a remote scheduler. [s]
+        Seconds to wait for a remote scheduler (default 10). [s]
 
     Returns
     -------
@@ -240,7 +241,7 @@ def run_cases(func: Callable[..., Mapping[str, np.ndarray]], cases: Mapping[str,
 
 def run_seeded(func: Callable[..., Mapping[str, np.ndarray]], n_samples, seed, *, constants=None,
                block_size=DEFAULT_BLOCK_SIZE, chunk_size=DEFAULT_CHUNK_SIZE, executor="serial", workers=None,
-               memory_limit=None, processes=True, progress=None, timeout=_CONNECT_TIMEOUT_S):
+               memory_limit=None, processes=True, progress=None, timeout=None):
     """Monte Carlo over ``n_samples``, reproducible from one seed whatever the chunking or executor.
 
     Parameters
@@ -269,7 +270,7 @@ def run_seeded(func: Callable[..., Mapping[str, np.ndarray]], n_samples, seed, *
     progress : callable or "dask", optional
         As in :func:`run_cases`.
     timeout : float, optional
-        Seconds to wait for a remote scheduler. [s]
+        Seconds to wait for a remote scheduler (default 10). [s]
 
     Returns
     -------

@@ -1,0 +1,54 @@
+"""Command line of parameter sweeps: ``bearinglab sweep FILE.toml`` (see :mod:`bearinglab.sweep`)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated, Optional
+
+import numpy as np
+import typer
+
+from . import sweep as _sweep
+from .cli import ChunkSizeOpt, ExecutorOpt, JsonFlag, WorkersOpt, console, emit_json, progress_bar, table
+from .errors import InputError
+
+__all__ = ["register"]
+
+
+def sweep(
+    file: Annotated[Path, typer.Argument(help="Sweep file (TOML): model, bearing, parameters, output, execution.")],
+    out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Result table, .csv or .parquet (overrides the file).")] = None,
+    executor: ExecutorOpt = None, workers: WorkersOpt = None, chunk_size: ChunkSizeOpt = None,
+    memory_limit: Annotated[Optional[str], typer.Option("--memory-limit", help="Per local worker, e.g. '4GiB'.", rich_help_panel="Execution")] = None,
+    json_out: JsonFlag = False,
+):
+    """Evaluate a model over the Cartesian product of parameter values; write the cases as CSV or Parquet."""
+    spec = _sweep.load_sweep(file)
+    target = out or spec.output
+    if target is not None and Path(target).suffix not in (".csv", ".parquet"):
+        raise InputError(f"out must end in .csv or .parquet, got {str(target)!r}")
+    ex = executor or spec.executor
+    with progress_bar(f"sweep {spec.model.name}", ex) as progress:
+        cols = _sweep.run_sweep(spec, executor=ex, workers=workers, chunk_size=chunk_size, memory_limit=memory_limit,
+                                progress=progress)
+    n = len(cols["converged"])
+    failed = int(n - np.count_nonzero(cols["converged"]))
+    if target is not None:
+        _sweep.write_table(cols, target)
+    summary = {"model": spec.model.name, "bearing": spec.bearing.designation, "cases": n, "failed": failed,
+               "executor": ex, "output": None if target is None else str(target)}
+    if json_out:
+        emit_json(dict(summary, results=[dict(zip(cols, row)) for row in zip(*[np.asarray(v).tolist() for v in cols.values()])]))
+        return
+    reasons = {}
+    for r in np.asarray(cols["failure"])[~np.asarray(cols["converged"], dtype=bool)]:
+        reasons[r] = reasons.get(r, 0) + 1
+    table(f"Sweep of {spec.model.name} on {spec.bearing.designation}", ["quantity", "value"],
+          [["cases", n], ["failed", failed]] + [[f"  {k}", v] for k, v in reasons.items()] +
+          [["executor", ex], ["output", summary["output"] or "(none: give --out or [output] file)"]])
+    if target is not None:
+        console.print(f"wrote {target}", highlight=False)
+
+
+def register(app):
+    app.command("sweep")(sweep)

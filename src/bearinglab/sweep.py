@@ -1,0 +1,393 @@
+"""Parameter sweeps: a model evaluated over the Cartesian product of parameter values, in chunks.
+
+A sweep file (TOML) names a model, a bearing, parameter lists or ranges, the output and the executor::
+
+    model = "axial-angle"                 # see MODELS
+    bearing = "4-1006095"                 # or a [bearing] table in the catalog format
+    [parameters]                          # each: a value, a list, or "start:stop:step" with units
+    axial_load = "0.5kgf:20kgf:0.5kgf"
+    contact_angle = ["10 deg", "12 deg", "15 deg"]
+    [output]
+    file = "sweep.parquet"                # .parquet or .csv, relative to the sweep file
+    [execution]                           # all optional; the command line overrides them
+    executor = "serial"                   # serial | local | tcp://host:8786
+    workers = 2
+    chunk_size = 10000
+
+Functions
+---------
+MODELS          name -> SweepModel (parameters with their kinds, the chunk function, outputs)
+load_sweep      read and check a sweep file -> SweepSpec
+case_grid       the Cartesian product of the parameter values, flattened to per-case arrays
+run_sweep       evaluate a SweepSpec through :mod:`bearinglab.parallel`; inputs and outputs as columns
+write_table     write columns to CSV or Parquet, whole or not at all
+
+Every chunk function is pure and flags failed cases (``converged`` False and a ``failure`` reason)
+instead of raising, so one bad case does not stop a sweep.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import tempfile
+import tomllib
+from collections.abc import Callable
+from pathlib import Path
+from typing import NamedTuple
+
+import numpy as np
+
+from . import catalog, kinematics, parallel, static
+from .bearing import BallBearing
+from .errors import CatalogError, ConvergenceError, InputError
+from .units import KGF, parse_quantity, parse_values
+
+__all__ = ["SweepModel", "SweepSpec", "MODELS", "GEOMETRY_PARAMETERS", "load_sweep", "case_grid", "run_sweep",
+           "write_table", "register_model"]
+
+#: Bearing fields a sweep may vary, with their kinds (geometry variants).
+GEOMETRY_PARAMETERS = {
+    "n_balls": "dimensionless",
+    "ball_diameter": "length",
+    "pitch_diameter": "length",
+    "inner_conformity": "dimensionless",
+    "outer_conformity": "dimensionless",
+    "contact_angle": "angle",
+}
+
+
+class SweepModel(NamedTuple):
+    """A model a sweep can evaluate."""
+
+    name: str
+    parameters: dict  # case parameter -> kind (besides the geometry parameters)
+    evaluate: Callable  # pure chunk function(**per-case arrays, **constants) -> dict of arrays
+    description: str
+    optional: tuple = ()  # parameters that may be left out
+    geometry: bool = True  # accepts GEOMETRY_PARAMETERS variants
+
+
+class SweepSpec(NamedTuple):
+    """A checked sweep file."""
+
+    model: SweepModel
+    bearing: BallBearing
+    parameters: dict  # name -> SI array of values
+    output: Path | None
+    executor: str
+    workers: int | None
+    chunk_size: int
+    constants: dict
+
+
+def _geometry_arrays(n, bearing, cases):
+    out = {}
+    for name in GEOMETRY_PARAMETERS:
+        if name in cases:
+            out[name] = np.asarray(cases[name], dtype=float)
+        else:
+            value = getattr(bearing, name) if bearing is not None else None
+            out[name] = np.full(n, np.nan if value is None else float(value))
+    return out
+
+
+def _valid_geometry(g):
+    """Per-case validity of the geometry, with the reason of the first failed rule."""
+    rules = [
+        ("n_balls must be an integer >= 1", (g["n_balls"] >= 1) & (g["n_balls"] == np.round(g["n_balls"]))),
+        ("ball_diameter must be > 0", g["ball_diameter"] > 0),
+        ("pitch_diameter must be > ball_diameter", g["pitch_diameter"] > g["ball_diameter"]),
+        ("inner_conformity must be > 0.5", g["inner_conformity"] > 0.5),
+        ("outer_conformity must be > 0.5", g["outer_conformity"] > 0.5),
+        ("contact_angle must be in (0, 90) deg", (g["contact_angle"] > 0) & (g["contact_angle"] < np.pi / 2)),
+    ]
+    return rules
+
+
+def _flags(n, rules):
+    ok = np.ones(n, dtype=bool)
+    reason = np.full(n, "", dtype=object)
+    for text, good in rules:
+        bad = ok & ~np.asarray(good, dtype=bool)
+        reason[bad] = text
+        ok &= ~bad
+    return ok, reason
+
+
+def _nan(n):
+    return np.full(n, np.nan)
+
+
+def _evaluate_axial_angle(axial_load, **cases):
+    """Chunk function of the ``axial-angle`` model (spec 000, exact Hertz, the paper's elastic constant)."""
+    fa = np.asarray(axial_load, dtype=float)
+    n = fa.size
+    g = _geometry_arrays(n, cases.pop("bearing", None), cases)
+    ok, reason = _flags(n, [("axial_load must be > 0", fa > 0)] + _valid_geometry(g))
+    angle, cstar, q, da = _nan(n), _nan(n), _nan(n), _nan(n)
+    idx = np.flatnonzero(ok)
+    if idx.size:
+        s = {k: v[idx] for k, v in g.items()}
+        c = static.stand_constants(s["n_balls"].astype(int), s["ball_diameter"], s["pitch_diameter"],
+                                   s["inner_conformity"], s["outer_conformity"], s["contact_angle"])
+        try:
+            a = static.operating_contact_angle(fa[idx], c.force_characteristic, s["contact_angle"])
+        except ConvergenceError as exc:  # flag the cases that did not settle, keep the others
+            good = np.abs(np.asarray(exc.residual)) < 1e-10
+            a = np.where(good, np.asarray(exc.estimate, dtype=float), np.nan)
+            reason[idx[~good]] = "no convergence"
+            ok[idx[~good]] = False
+        bd = (s["inner_conformity"] + s["outer_conformity"] - 1.0) * s["ball_diameter"]
+        angle[idx] = a
+        cstar[idx] = c.force_characteristic
+        q[idx] = fa[idx] / (s["n_balls"] * np.sin(a))
+        da[idx] = static.axial_displacement_ratio(a, s["contact_angle"]) * bd
+    return {"operating_contact_angle_deg": np.degrees(angle), "load_deflection_constant_kgf": cstar / KGF,
+            "axial_displacement_mm": da * 1e3, "ball_load_N": q, "converged": ok, "failure": reason}
+
+
+def _evaluate_stand_load(speed, **cases):
+    """Chunk function of the ``stand-load`` model (spec 000 section 3)."""
+    w = np.asarray(speed, dtype=float)
+    n = w.size
+    g = _geometry_arrays(n, cases.pop("bearing", None), cases)
+    rules = [("speed must be >= 0", w >= 0)] + [r for r in _valid_geometry(g) if "conformity" not in r[0]]
+    ok, reason = _flags(n, rules)
+    lo = _nan(n)
+    if ok.any():
+        lo[ok] = static.min_axial_load(w[ok], g["n_balls"][ok].astype(int), g["ball_diameter"][ok],
+                                       g["pitch_diameter"][ok], g["contact_angle"][ok]).minimum
+    return {"min_axial_load_N": lo, "max_axial_load_N": 1.2 * lo, "min_axial_load_kgf": lo / KGF,
+            "max_axial_load_kgf": 1.2 * lo / KGF, "converged": ok, "failure": reason}
+
+
+def _evaluate_frequencies(speed, axial_load=None, **cases):
+    """Chunk function of the ``frequencies`` model: orders and Hz at the nominal or the operating angle."""
+    w = np.asarray(speed, dtype=float)
+    n = w.size
+    bearing = cases.pop("bearing", None)
+    angle = dict(_geometry_arrays(n, bearing, cases))["contact_angle"]
+    out = {}
+    if axial_load is not None:
+        res = _evaluate_axial_angle(axial_load, bearing=bearing, **cases)
+        angle = np.radians(res["operating_contact_angle_deg"])
+        ok, reason = res["converged"], res["failure"]
+        out["operating_contact_angle_deg"] = res["operating_contact_angle_deg"]
+    else:
+        g = _geometry_arrays(n, bearing, cases)
+        ok, reason = _flags(n, [r for r in _valid_geometry(g) if "conformity" not in r[0] and "(0, 90)" not in r[0]])
+    g = _geometry_arrays(n, bearing, cases)
+    ok = ok & (w >= 0)
+    reason = np.where((w < 0) & (reason == ""), "speed must be >= 0", reason)
+    freqs = {k: _nan(n) for k in ("shaft", "ftf", "bpfo", "bpfi", "bsf", "two_bsf")}
+    if ok.any():
+        f = kinematics.characteristic_frequencies(w[ok], g["ball_diameter"][ok], g["pitch_diameter"][ok],
+                                                  g["n_balls"][ok].astype(int), angle[ok])
+        for k in freqs:
+            freqs[k][ok] = getattr(f, k)
+    for k, v in freqs.items():
+        out[f"{k}_hz"] = v / (2 * math.pi)
+        if k != "shaft":
+            with np.errstate(invalid="ignore", divide="ignore"):
+                out[f"{k}_order"] = v / freqs["shaft"]
+    out.update(converged=ok, failure=reason)
+    return out
+
+
+MODELS: dict[str, SweepModel] = {}
+
+# kind -> (column suffix, factor from SI) for the input columns of a sweep table
+_DISPLAY = {"force": ("_N", 1.0), "angle": ("_deg", 180.0 / math.pi), "speed": ("_rpm", 30.0 / math.pi),
+            "length": ("_mm", 1e3), "dimensionless": ("", 1.0), "mass": ("_kg", 1.0)}
+
+
+def register_model(model: SweepModel):
+    """Make a model available to sweep files (the capability modules register theirs)."""
+    MODELS[model.name] = model
+    return model
+
+
+register_model(SweepModel("axial-angle", {"axial_load": "force"}, _evaluate_axial_angle,
+                          "operating contact angle under axial load (spec 000)"))
+register_model(SweepModel("stand-load", {"speed": "speed"}, _evaluate_stand_load,
+                          "minimum axial load on a test stand (spec 000 section 3)"))
+register_model(SweepModel("frequencies", {"speed": "speed", "axial_load": "force"}, _evaluate_frequencies,
+                          "characteristic frequencies at the nominal or operating angle", optional=("axial_load",)))
+
+
+def _fail(path, where, msg):
+    raise CatalogError(f"{path}: {where}: {msg}")
+
+
+def _values(path, name, value, kind):
+    if isinstance(value, list):
+        if not value:
+            _fail(path, f"parameters.{name}", "empty list")
+        parts = [_values(path, name, v, kind) for v in value]
+        return np.concatenate(parts)
+    try:
+        if kind == "dimensionless" and isinstance(value, (int, float)) and not isinstance(value, bool):
+            return np.array([float(value)])
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            return np.array([parse_quantity(value, kind, name)])
+        return np.atleast_1d(parse_values(str(value), kind, name))
+    except InputError as exc:
+        _fail(path, f"parameters.{name}", str(exc))
+
+
+def load_sweep(path):
+    """Read and check a sweep file.
+
+    Parameters
+    ----------
+    path : str or Path
+        The TOML sweep file (format in the module docstring).
+
+    Returns
+    -------
+    SweepSpec
+
+    Raises
+    ------
+    CatalogError
+        Naming the file, the table and the field.
+    """
+    path = Path(path)
+    try:
+        doc = tomllib.loads(path.read_text())
+    except FileNotFoundError:
+        raise CatalogError(f"{path}: no such file") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise CatalogError(f"{path}: not valid TOML: {exc}") from None
+    name = doc.get("model")
+    if name not in MODELS:
+        _fail(path, "model", f"must be one of {sorted(MODELS)}, got {name!r}")
+    model = MODELS[name]
+    if "bearing" not in doc:
+        _fail(path, "bearing", "missing: give a catalog name or a [bearing] table")
+    b = doc["bearing"]
+    bearing = (catalog.bearing_from_table(b, name=str(b.get("designation", "sweep")), file=path)
+               if isinstance(b, dict) else catalog.get(str(b)))
+    params = doc.get("parameters")
+    if not isinstance(params, dict) or not params:
+        _fail(path, "parameters", "missing: give at least one parameter list or range")
+    kinds = dict(model.parameters)
+    if model.geometry:
+        kinds.update(GEOMETRY_PARAMETERS)
+    values = {}
+    for key, value in params.items():
+        if key not in kinds:
+            _fail(path, f"parameters.{key}", f"unknown parameter of model {name!r} (known: {', '.join(sorted(kinds))})")
+        values[key] = _values(path, key, value, kinds[key])
+    required = [k for k in model.parameters if k not in values and k not in model.optional]
+    if required:
+        _fail(path, "parameters", f"model {name!r} needs {', '.join(required)}")
+    out = doc.get("output", {}).get("file")
+    output = (path.parent / out) if out else None
+    if output is not None and output.suffix not in (".csv", ".parquet"):
+        _fail(path, "output.file", f"must end in .csv or .parquet, got {out!r}")
+    ex = doc.get("execution", {})
+    chunk = ex.get("chunk_size", parallel.DEFAULT_CHUNK_SIZE)
+    return SweepSpec(model, bearing, values, output, str(ex.get("executor", "serial")), ex.get("workers"),
+                     int(chunk), dict(doc.get("constants", {})))
+
+
+def case_grid(parameters):
+    """Flatten the Cartesian product of parameter values to per-case arrays (last parameter fastest).
+
+    Parameters
+    ----------
+    parameters : dict
+        name -> 1-D array of values.
+
+    Returns
+    -------
+    dict
+        name -> array of length prod(len(values)).
+
+    Examples
+    --------
+    >>> g = case_grid({"a": np.array([1.0, 2.0]), "b": np.array([10.0, 20.0, 30.0])})
+    >>> g["a"].tolist(), g["b"].tolist()
+    ([1.0, 1.0, 1.0, 2.0, 2.0, 2.0], [10.0, 20.0, 30.0, 10.0, 20.0, 30.0])
+    """
+    names = list(parameters)
+    mesh = np.meshgrid(*[np.asarray(parameters[k], dtype=float) for k in names], indexing="ij")
+    return {k: m.ravel() for k, m in zip(names, mesh)}
+
+
+def run_sweep(spec, *, executor=None, workers=None, chunk_size=None, memory_limit=None, processes=True, progress=None):
+    """Evaluate a sweep; returns the input columns (SI) and the model's output columns, case by case.
+
+    Parameters
+    ----------
+    spec : SweepSpec
+        From :func:`load_sweep`.
+    executor : str, optional
+        Overrides the file's executor.
+    workers : int, optional
+        Overrides the file's worker count. [-]
+    chunk_size : int, optional
+        Overrides the file's chunk size. [-]
+    memory_limit : str, optional
+        Memory limit per local worker.
+    processes : bool, optional
+        Local workers as processes (default) or threads.
+    progress : callable or "dask", optional
+        See :func:`bearinglab.parallel.run_cases`.
+
+    Returns
+    -------
+    dict of str to ndarray
+    """
+    cases = case_grid(spec.parameters)
+    out = parallel.run_cases(spec.model.evaluate, cases, constants=dict(spec.constants, bearing=spec.bearing),
+                             chunk_size=chunk_size or spec.chunk_size, executor=executor or spec.executor,
+                             workers=workers if workers is not None else spec.workers, memory_limit=memory_limit,
+                             processes=processes, progress=progress)
+    kinds = dict(GEOMETRY_PARAMETERS, **spec.model.parameters)
+    columns = {}
+    for k, v in cases.items():  # inputs in the units engineers read, the unit in the column name
+        suffix, scale = _DISPLAY[kinds[k]]
+        columns[f"{k}{suffix}"] = v * scale
+    columns.update(out)
+    return columns
+
+
+def write_table(columns, path):
+    """Write columns to ``path`` (.csv or .parquet), whole or not at all (temporary file, then rename).
+
+    Parameters
+    ----------
+    columns : dict of str to ndarray
+        Equal-length columns.
+    path : str or Path
+        Target file; its suffix chooses the format.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    os.close(fd)
+    try:
+        if path.suffix == ".parquet":
+            import pyarrow as pa
+            import pyarrow.parquet as pq
+
+            table = pa.table({k: (v.astype(str) if v.dtype == object else v) for k, v in columns.items()})
+            pq.write_table(table, tmp)
+        elif path.suffix == ".csv":
+            import csv
+
+            with open(tmp, "w", newline="") as fh:
+                w = csv.writer(fh)
+                w.writerow(list(columns))
+                for row in zip(*[np.asarray(v).tolist() for v in columns.values()]):
+                    w.writerow(row)
+        else:
+            raise InputError(f"output must end in .csv or .parquet, got {path.name!r}")
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+
