@@ -271,16 +271,22 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name or alias
 _COMMAND_MODULES: tuple[str, ...] = ("_cli_stand", "_cli_frequencies", "_cli_sweep")
 
 
+_registered = False
+
+
 def _register_all():
-    for name in _COMMAND_MODULES:
-        importlib.import_module(f"{__package__}.{name}").register(app)
-
-
-_register_all()
+    """Add the capability commands to :data:`app` once. Called by :func:`main`, not at import: the
+    command modules import this module for the shared options, so importing them here would be circular."""
+    global _registered
+    if not _registered:
+        for name in _COMMAND_MODULES:
+            importlib.import_module(f"{__package__}.{name}").register(app)
+        _registered = True
 
 
 def main(argv=None) -> int:
     """Run the command line; return the exit code instead of raising (tests call this)."""
+    _register_all()
     try:
         rv = app(args=argv, prog_name="bearinglab", standalone_mode=False)
     except _USAGE_ERRORS as exc:
