@@ -143,7 +143,11 @@ def bearing_from_table(table, *, name="", file=None):
     except InputError as exc:
         msg = str(exc)
         field = msg.split(" ", 1)[0]
-        raise CatalogError(f"{where}, field {field!r}: {msg}") from None
+        # name the key as written in the file (balls, inner_groove_radius), not the dataclass field
+        file_key = {"n_balls": "balls"}.get(field, field)
+        if field.endswith("_conformity") and field.replace("_conformity", "_groove_radius") in table:
+            file_key = field.replace("_conformity", "_groove_radius")
+        raise CatalogError(f"{where}, field {file_key!r}: {msg}") from None
 
 
 def _read_toml(path):
@@ -166,8 +170,12 @@ def _entries(doc, file):
     out, aliases = {}, {}
     for name, table in bearings.items():
         out[name] = bearing_from_table(table, name=name, file=file)
-        for alias in table.get("aliases", []) if isinstance(table, dict) else []:
-            aliases[str(alias)] = name
+        names = table.get("aliases", [])
+        if not (isinstance(names, list) and all(isinstance(a, str) for a in names)):
+            raise CatalogError(f"{_where(file, name)}, field 'aliases': expected a list of names such as "
+                               f"[\"7218B\"], got {names!r}")
+        for alias in names:
+            aliases[alias] = name
     return out, aliases
 
 

@@ -21,7 +21,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._validate import check_greater, check_open_interval, check_positive
+from ._validate import as_float, check_greater, check_open_interval, check_positive
 from .errors import InputError
 
 __all__ = [
@@ -40,6 +40,15 @@ __all__ = [
 
 def _conformity(name, value):
     return check_open_interval(name, value, 0.5, np.inf, "-")
+
+
+def _free_angle(value):
+    a0 = as_float("free_angle", value)
+    bad = ~((a0 >= 0.0) & (a0 < np.pi / 2))
+    if bad.any():
+        first = a0[bad].flat[0] if a0.ndim else a0
+        raise InputError(f"free_angle must be in [0, 90) [deg], got {float(np.degrees(first))!r}")
+    return a0
 
 
 def total_curvature(inner_conformity, outer_conformity):
@@ -192,7 +201,7 @@ def radial_clearance(free_angle, ball_diameter, inner_conformity, outer_conformi
     9.178 um
     """
     d = check_positive("ball_diameter", ball_diameter, "m")
-    a0 = check_open_interval("free_angle", free_angle, -1e-300, np.pi / 2, "deg", scale=180 / np.pi)
+    a0 = _free_angle(free_angle)
     return (2.0 * total_curvature(inner_conformity, outer_conformity) * d * (1.0 - np.cos(a0)))[()]
 
 
@@ -214,7 +223,7 @@ def axial_play(free_angle, ball_diameter, inner_conformity, outer_conformity):
         Axial play, from one contact position to the other. [m]
     """
     d = check_positive("ball_diameter", ball_diameter, "m")
-    a0 = check_open_interval("free_angle", free_angle, -1e-300, np.pi / 2, "deg", scale=180 / np.pi)
+    a0 = _free_angle(free_angle)
     return (2.0 * total_curvature(inner_conformity, outer_conformity) * d * np.sin(a0))[()]
 
 

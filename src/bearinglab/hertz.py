@@ -238,8 +238,10 @@ def reduced_modulus(elastic_modulus_1, poisson_ratio_1, elastic_modulus_2, poiss
     n1 = as_float("poisson_ratio_1", poisson_ratio_1)
     n2 = as_float("poisson_ratio_2", poisson_ratio_2)
     for name, nu in (("poisson_ratio_1", n1), ("poisson_ratio_2", n2)):
-        if np.any(~((nu > -1.0) & (nu < 0.5))):
-            raise InputError(f"{name} must be in (-1, 0.5) [-], got {float(np.min(nu))!r}")
+        bad = ~((nu > -1.0) & (nu < 0.5))
+        if np.any(bad):
+            first = nu[bad].flat[0] if nu.ndim else nu
+            raise InputError(f"{name} must be in (-1, 0.5) [-], got {float(first)!r}")
     return (2.0 / ((1.0 - n1**2) / e1 + (1.0 - n2**2) / e2))[()]
 
 

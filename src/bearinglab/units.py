@@ -88,10 +88,13 @@ def to_dms(angle, *, pi=math.pi, truncate=False):
     """Angle in radians -> (degrees, minutes, seconds).
 
     ``pi`` and ``truncate`` exist for the legacy reproduction of printed tables (spec 000 section 8,
-    which converts with pi = 3.14 and truncates the seconds).
+    which converts with pi = 3.14 and truncates the seconds). A negative angle gives three
+    non-positive parts, so that degrees + minutes / 60 + seconds / 3600 is the angle.
 
     >>> to_dms(math.radians(14.5))
     (14, 30, 0.0)
+    >>> to_dms(math.radians(-0.5))
+    (0, -30, -0.0)
     """
     deg = float(angle) * 180.0 / pi
     sign = -1 if deg < 0 else 1
@@ -105,18 +108,26 @@ def to_dms(angle, *, pi=math.pi, truncate=False):
         s, m = 0.0, m + 1
         if m == 60:
             m, d = 0, d + 1
-    return sign * d, m, s
+    return sign * d, sign * m, sign * s
 
 
 def format_dms(angle, *, digits=2):
-    """Angle in radians -> ``14°28'03.38"``.
+    """Angle in radians -> ``14°28'03.38"``, the seconds rounded to ``digits`` decimals.
 
     >>> format_dms(math.radians(12.0))
     '12°00\\'00.00"'
+    >>> format_dms(math.radians(-0.5)), format_dms(math.radians(14.99999), digits=0)
+    ('-0°30\\'00.00"', '15°00\\'00"')
     """
-    d, m, s = to_dms(angle)
+    sign = "-" if float(angle) < 0 else ""
+    d, m, s = to_dms(abs(float(angle)))
+    s = round(s, digits)
+    if s >= 60.0:  # rounding to fewer digits can reach 60: carry
+        s, m = s - 60.0, m + 1
+    if m >= 60:
+        m, d = m - 60, d + 1
     width = 3 + digits if digits else 2
-    return f"{d}°{m:02d}'{s:0{width}.{digits}f}\""
+    return f"{sign}{d}°{m:02d}'{s:0{width}.{digits}f}\""
 
 
 # --------------------------------------------------------------------------- parsing with pint
