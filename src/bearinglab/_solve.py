@@ -16,6 +16,16 @@ QUASISTATIC_TOL = 1e-12  # scaled residual norm
 QUASISTATIC_MAX_ITER = 60
 QUASISTATIC_SPEED_STEP_RPM = 1500.0  # continuation step in speed
 
-# spec 003 section 9: refinement passes
-RUNOUT_REFINE_TOL = 1e-9  # m
-RUNOUT_REFINE_MAX_ITER = 20
+# spec 003 section 9: refinement passes (tolerance 1e-9 um on the pose, at most 30 passes)
+RUNOUT_REFINE_TOL = 1e-15  # m
+RUNOUT_REFINE_MAX_ITER = 30
+QUASISTATIC_STAGE_MAX_ITER = 10  # Newton iterations per continuation step before the speed step is cut
+QUASISTATIC_MAX_LOOPS = 1000  # batched iterations (all cases together) before the remaining cases are failed
+# spec 003 sections 7-8: contact problem tolerances, in um and scaled by max(1, max|dk| / 1 um)
+RUNOUT_TIE_TOL_UM = 1e-9  # eps of section 8: feasibility of a triple, ties between dual vertices
+RUNOUT_CONTACT_TOL_UM = 1e-7  # section 7.6: slack below which a ball touches; shortest degenerate face
+RUNOUT_FACE_TOL_UM = 1e-7  # section 8.2 step 4: feasibility of a face candidate
+RUNOUT_STRICT_WEIGHT = 1e-9  # a dual weight above this makes a triangle strict (origin inside it)
+# exact-geometry check of spec 003 example 4: Newton on the ball-centre position
+RUNOUT_EXACT_XTOL = 1e-14  # m
+RUNOUT_EXACT_MAX_ITER = 50
