@@ -147,6 +147,11 @@ KINDS = {
 }
 
 _ANGLE_UNITS = ("radian", "degree", "arcminute", "arcsecond", "revolution", "turn")
+# an angle written in degrees, minutes and seconds: 14°28'03.38", 14° 28′ 3.38″, 12 deg 30 arcmin
+_DMS = re.compile(r"^\s*([-+]?)\s*(\d+(?:\.\d*)?)\s*(?:°|deg\b)\s*(?:(\d+(?:\.\d*)?)\s*(?:′|'|arcmin\b)\s*)?"
+                  r"(?:(\d+(?:\.\d*)?)\s*(?:″|\"|''|arcsec\b)\s*)?$")
+# a number that is not an exponent (m^3, m**3) nor part of a name
+_STANDALONE_NUMBER = re.compile(r"(?<![\w.^*])(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 _registry = None
 
 
@@ -213,6 +218,8 @@ def parse_quantity(value, kind, name, *, default_unit=None):
     if isinstance(value, bool):
         raise InputError(f"{name}: expected a quantity, got {value!r}")
     if isinstance(value, (int, float, np.integer, np.floating)):
+        if not np.isfinite(value):
+            raise InputError(f"{name}: {value!r} is not a finite quantity")
         if kind == "dimensionless":
             return float(value)
         if default_unit is None:
@@ -222,10 +229,18 @@ def parse_quantity(value, kind, name, *, default_unit=None):
         text = value
     else:
         raise InputError(f"{name}: expected a quantity such as {examples}, got {value!r}")
+    dms = _DMS.match(text) if kind == "angle" else None
+    if dms and (dms.group(3) or dms.group(4)):  # 14°28'03.38": pint would multiply the three parts
+        deg = float(dms.group(2)) + float(dms.group(3) or 0.0) / 60.0 + float(dms.group(4) or 0.0) / 3600.0
+        return math.radians(-deg if dms.group(1) == "-" else deg)
+    if len(_STANDALONE_NUMBER.findall(text)) > 1:  # pint reads "1 000 N" as 1 * 0 N and "2 3 kgf" as 6 kgf
+        raise InputError(f"{name}: {text!r} holds more than one number; write one number and its unit, e.g. {examples}")
     try:
         q = ureg.Quantity(_normalise(text))
     except Exception as exc:  # pint raises several unrelated exception types
         raise InputError(f"{name}: cannot read {text!r} as a quantity (e.g. {examples})") from exc
+    if not np.isfinite(getattr(q, "magnitude", q)):
+        raise InputError(f"{name}: {text!r} is not a finite quantity")
     if not isinstance(q, ureg.Quantity):  # a bare number
         q = ureg.Quantity(float(q))
     if q.dimensionless and not q.unit_items() and kind != "dimensionless":
