@@ -198,7 +198,23 @@ def load_catalog(path):
 
 
 def load_bearing_file(path):
-    """Read a single-bearing file: the keys of one catalog table at the top level, or one ``[bearings."NAME"]``."""
+    """Read a single-bearing file: the keys of one catalog table at the top level, or one ``[bearings."NAME"]``.
+
+    Parameters
+    ----------
+    path : str or Path
+        The TOML file; it is only read.
+
+    Returns
+    -------
+    BallBearing
+        Named by its ``designation`` key, else by the file's stem.
+
+    Raises
+    ------
+    CatalogError
+        Naming the file, the entry and the field.
+    """
     doc = _read_toml(path)
     if "bearings" in doc:
         entries, _ = _entries(doc, path)
@@ -267,7 +283,23 @@ def get(name, *, catalog=None):
 
 
 def names(*, catalog=None):
-    """Names of all bearings visible (built-ins and user catalogs), aliases excluded."""
+    """Names of all bearings visible (built-ins and user catalogs), aliases excluded.
+
+    Parameters
+    ----------
+    catalog : str, Path or list, optional
+        User catalog file(s), in addition to ``BEARINGLAB_CATALOG`` and the built-ins.
+
+    Returns
+    -------
+    list of str
+        Sorted names.
+
+    Examples
+    --------
+    >>> "B218" in names() and "7218B" not in names()
+    True
+    """
     seen = {}
     for name, b in _all(catalog).items():
         seen.setdefault(id(b), name)

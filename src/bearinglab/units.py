@@ -63,6 +63,18 @@ DEG = math.pi / 180.0
 def from_rpm(speed_rpm):
     """Shaft speed in rev/min -> rad/s.
 
+    Parameters
+    ----------
+    speed_rpm : array_like
+        Speed. [rev/min]
+
+    Returns
+    -------
+    ndarray
+        Speed. [rad/s]
+
+    Examples
+    --------
     >>> round(float(from_rpm(3000.0)), 4)
     314.1593
     """
@@ -70,27 +82,78 @@ def from_rpm(speed_rpm):
 
 
 def to_rpm(speed):
-    """Shaft speed in rad/s -> rev/min."""
+    """Shaft speed in rad/s -> rev/min.
+
+    Parameters
+    ----------
+    speed : array_like
+        Speed. [rad/s]
+
+    Returns
+    -------
+    ndarray
+        Speed. [rev/min]
+    """
     return np.asarray(speed, dtype=float) / RPM
 
 
 def from_kgf(force_kgf):
-    """Force in kilogram-force -> N."""
+    """Force in kilogram-force -> N.
+
+    Parameters
+    ----------
+    force_kgf : array_like
+        Force. [kgf]
+
+    Returns
+    -------
+    ndarray
+        Force. [N]
+    """
     return np.asarray(force_kgf, dtype=float) * KGF
 
 
 def to_kgf(force):
-    """Force in N -> kilogram-force."""
+    """Force in N -> kilogram-force.
+
+    Parameters
+    ----------
+    force : array_like
+        Force. [N]
+
+    Returns
+    -------
+    ndarray
+        Force. [kgf]
+    """
     return np.asarray(force, dtype=float) / KGF
 
 
 def to_dms(angle, *, pi=math.pi, truncate=False):
     """Angle in radians -> (degrees, minutes, seconds).
 
+    Parameters
+    ----------
+    angle : float
+        Angle. [rad]
+    pi : float, optional
+        Value of pi used to convert to degrees. [-]
+    truncate : bool, optional
+        Truncate the seconds to whole seconds instead of keeping the fraction.
+
+    Returns
+    -------
+    tuple
+        Degrees (int), minutes (int), seconds (float).
+
+    Notes
+    -----
     ``pi`` and ``truncate`` exist for the legacy reproduction of printed tables (spec 000 section 8,
     which converts with pi = 3.14 and truncates the seconds). A negative angle gives three
     non-positive parts, so that degrees + minutes / 60 + seconds / 3600 is the angle.
 
+    Examples
+    --------
     >>> to_dms(math.radians(14.5))
     (14, 30, 0.0)
     >>> to_dms(math.radians(-0.5))
@@ -114,6 +177,20 @@ def to_dms(angle, *, pi=math.pi, truncate=False):
 def format_dms(angle, *, digits=2):
     """Angle in radians -> ``14°28'03.38"``, the seconds rounded to ``digits`` decimals.
 
+    Parameters
+    ----------
+    angle : float
+        Angle. [rad]
+    digits : int, optional
+        Decimals of the seconds.
+
+    Returns
+    -------
+    str
+        The angle as degrees, minutes and seconds; :func:`parse_quantity` reads it back.
+
+    Examples
+    --------
     >>> format_dms(math.radians(12.0))
     '12°00\\'00.00"'
     >>> format_dms(math.radians(-0.5)), format_dms(math.radians(14.99999), digits=0)
@@ -281,8 +358,24 @@ def _split_unit(item: str):
 def parse_values(text, kind, name):
     """Parse one value, a list ``a,b,cUNIT`` or a range ``start:stop:step`` into an SI array.
 
+    Parameters
+    ----------
+    text : str
+        ``"2 kgf"``, ``"1 kN, 500 N"``, ``"0,3000,6000rpm"`` or ``"2.5kN:45kN:2.5kN"``.
+    kind : str
+        One of :data:`KINDS`.
+    name : str
+        The parameter's name, used in error messages.
+
+    Returns
+    -------
+    ndarray
+        The values in SI (see :func:`parse_quantity`).
+
+    Notes
+    -----
     A unit written only on the last item applies to all items without one. A range includes its end
-    point when the steps land on it.
+    point when the steps land on it; it may hold at most 10^7 values.
 
     Examples
     --------
