@@ -306,9 +306,9 @@ def test_bad_input_in_every_public_function():
         kinematics.ball_spin_frequency(1.0, 0.01, 0.005, 0.1)
     with pytest.raises(InputError, match="outer_speed_ratio must be finite"):
         kinematics.characteristic_orders(0.01, 0.05, 9, 0.1, outer_speed_ratio=float("nan"))
-    with pytest.raises(InputError, match=r"operating_angle must be in \[0, 90\)"):
+    with pytest.raises(InputError, match=r"contact_angle must be in \[0, 90\) \[deg\], got 91.67"):
         kinematics.frequency_shift(1.0, 0.01, 0.05, 9, 0.1, 1.6)
-    with pytest.raises(InputError, match=r"contact_angle must be in \[0, 90\)"):
+    with pytest.raises(InputError, match=r"free_angle must be in \[0, 90\) \[deg\], got 91.67"):
         kinematics.frequency_shift(1.0, 0.01, 0.05, 9, 1.6, 0.1)
     with pytest.raises(InputError, match=r"ball_diameter must be a number"):
         kinematics.characteristic_frequencies(1.0, "ten", 0.05, 9, 0.1)

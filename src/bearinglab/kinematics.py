@@ -104,12 +104,12 @@ class SpectralMask(NamedTuple):
     high: np.ndarray  # frequency (1 + band / 2)
 
 
-def _contact_angle(value):
-    a = as_float("contact_angle", value)
+def _contact_angle(value, name="contact_angle"):
+    a = as_float(name, value)
     bad = ~((a >= 0.0) & (a < np.pi / 2))
     if bad.any():
         first = float(np.degrees(a[bad].flat[0] if a.ndim else a))
-        raise InputError(f"contact_angle must be in [0, 90) [deg], got {first!r} deg")
+        raise InputError(f"{name} must be in [0, 90) [deg], got {first!r} deg")
     return a
 
 
@@ -337,7 +337,7 @@ def characteristic_orders(ball_diameter, pitch_diameter, n_balls, contact_angle,
                                       outer_speed=ratio)
 
 
-def frequency_shift(shaft_speed, ball_diameter, pitch_diameter, n_balls, nominal_angle, operating_angle, *,
+def frequency_shift(shaft_speed, ball_diameter, pitch_diameter, n_balls, free_angle, contact_angle, *,
                     outer_speed=0.0):
     r"""Characteristic frequencies at the nominal and at the operating contact angle, and their shift.
 
@@ -351,9 +351,9 @@ def frequency_shift(shaft_speed, ball_diameter, pitch_diameter, n_balls, nominal
         Pitch diameter d_m, > D. [m]
     n_balls : array_like
         Number of balls Z, an integer >= 1. [-]
-    nominal_angle : array_like
+    free_angle : array_like
         Nominal (free) contact angle alpha0, in [0, 90 deg). [rad]
-    operating_angle : array_like
+    contact_angle : array_like
         Operating contact angle, e.g. under the stand load (:func:`bearinglab.static.stand_analysis`),
         in [0, 90 deg). [rad]
     outer_speed : array_like, optional
@@ -377,13 +377,11 @@ def frequency_shift(shaft_speed, ball_diameter, pitch_diameter, n_balls, nominal
     >>> print(f"BPFI {s.shift.bpfi:+.5f} ({s.shift_percent.bpfi:+.3f} %)")
     BPFI -0.00790 (-0.184 %)
     """
-    nominal = characteristic_frequencies(shaft_speed, ball_diameter, pitch_diameter, n_balls, nominal_angle,
+    free_angle = _contact_angle(free_angle, "free_angle")
+    nominal = characteristic_frequencies(shaft_speed, ball_diameter, pitch_diameter, n_balls, free_angle,
                                          outer_speed=outer_speed)
-    try:
-        operating = characteristic_frequencies(shaft_speed, ball_diameter, pitch_diameter, n_balls,
-                                               operating_angle, outer_speed=outer_speed)
-    except InputError as exc:
-        raise InputError(str(exc).replace("contact_angle", "operating_angle", 1)) from None
+    operating = characteristic_frequencies(shaft_speed, ball_diameter, pitch_diameter, n_balls, contact_angle,
+                                           outer_speed=outer_speed)
     shift = [np.asarray(o - n) for o, n in zip(operating, nominal)]
     with np.errstate(invalid="ignore", divide="ignore"):
         percent = [np.where(np.asarray(n) != 0, 100.0 * s / np.where(np.asarray(n) != 0, n, 1.0), np.nan)
