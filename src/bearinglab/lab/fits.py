@@ -1,0 +1,450 @@
+r"""The three data-reduction tasks of the friction-rig lab (spec 001 section 6), for any number of points.
+
+Generic least squares (grouped, vectorized over any number of groups)
+---------------------------------------------------------------------
+through_origin            y = k x through the origin, with standard error and residual RMS
+straight_line             y = a + b x, with standard errors and residual RMS
+
+Tasks
+-----
+friction_coefficient      task 1: mu of T = mu P0 d / 2 through the origin, eq. (6.1)
+speed_dependence          task 2: f0 and T_F of T = f0 d_m^3 n^(2/3) + T_F, eq. (6.2)
+load_dependence           task 3: f and T0 of T = T0 + f P0 (P0/C0)^e d_m, eqs. (6.2)-(6.3)
+
+Every function takes an optional ``groups`` array that labels the points; one fit is made per
+distinct label (outputs ordered like ``numpy.unique(groups)``), all groups at once with
+``numpy.bincount`` sums and no Python loop over groups. The sums are centred on the group means
+(two passes), which is the numerically stable form of the closed forms (6.1)-(6.2): the results are
+the same to rounding.
+
+Statistics reported for each fit: the residual RMS sqrt(mean(r_i^2)) over the m points of the group
+(spec 001 section 6.2), and the standard errors of the coefficients from the usual OLS covariance,
+s^2 = sum(r_i^2)/(m - p) with p = 1 (through the origin) or 2 (line). With m = p points there is no
+redundancy and the standard errors are NaN ("not available"), never 0.
+
+Units: torque, loads and lengths are SI. The speed-term factor f0 is returned in its published unit
+N*mm^-2*min^(2/3) (spec 001 section 8.10); the conversion to N*mm, mm and rpm is done once, in
+:func:`speed_dependence`.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+
+from .._validate import check_finite, check_nonnegative, check_positive
+from ..errors import InputError
+
+__all__ = [
+    "ThroughOriginFit",
+    "LineFit",
+    "FrictionCoefficientFit",
+    "SpeedDependenceFit",
+    "LoadDependenceFit",
+    "through_origin",
+    "straight_line",
+    "friction_coefficient",
+    "speed_dependence",
+    "load_dependence",
+]
+
+_MM, _RPM = 1e-3, 2.0 * math.pi / 60.0  # m per mm, rad/s per rpm
+
+
+class ThroughOriginFit(NamedTuple):
+    """Least-squares line through the origin, y = k x, per group."""
+
+    slope: float | np.ndarray
+    """k = sum(x y) / sum(x^2)."""
+    slope_standard_error: float | np.ndarray
+    """Standard error of k; NaN for a single point."""
+    residual_rms: float | np.ndarray
+    """sqrt(mean((y - k x)^2)), in the unit of y."""
+    count: int | np.ndarray
+    """Number of points m."""
+    residuals: np.ndarray
+    """y - k x at every point (input order)."""
+
+
+class LineFit(NamedTuple):
+    """Ordinary least-squares straight line, y = a + b x, per group."""
+
+    slope: float | np.ndarray
+    """b."""
+    intercept: float | np.ndarray
+    """a."""
+    slope_standard_error: float | np.ndarray
+    """Standard error of b; NaN for two points."""
+    intercept_standard_error: float | np.ndarray
+    """Standard error of a; NaN for two points."""
+    residual_rms: float | np.ndarray
+    """sqrt(mean((y - a - b x)^2)), in the unit of y."""
+    count: int | np.ndarray
+    """Number of points m."""
+    residuals: np.ndarray
+    """y - a - b x at every point (input order)."""
+
+
+class FrictionCoefficientFit(NamedTuple):
+    """Task 1: reduced friction coefficient of the one-term model, per group."""
+
+    friction_coefficient: float | np.ndarray
+    """mu of (6.1). [-]"""
+    standard_error: float | np.ndarray
+    """Standard error of mu; NaN for a single point. [-]"""
+    residual_rms: float | np.ndarray
+    """sqrt(mean((T_i - mu P0_i d/2)^2)). [N*m]"""
+    count: int | np.ndarray
+    """Number of points m. [-]"""
+    residuals: np.ndarray
+    """T_i - mu P0_i d/2 at every point (input order). [N*m]"""
+
+
+class SpeedDependenceFit(NamedTuple):
+    """Task 2: speed-term factor and load term, per group."""
+
+    speed_term_factor: float | np.ndarray
+    """f0 = b / d_m^3 of (6.2). [N*mm^-2*min^(2/3)]"""
+    load_term: float | np.ndarray
+    """T_F, the intercept at n -> 0 (an extrapolation; may come out negative). [N*m]"""
+    speed_term_factor_standard_error: float | np.ndarray
+    """Standard error of f0; NaN for two points. [N*mm^-2*min^(2/3)]"""
+    load_term_standard_error: float | np.ndarray
+    """Standard error of T_F; NaN for two points. [N*m]"""
+    residual_rms: float | np.ndarray
+    """RMS of the residuals. [N*m]"""
+    count: int | np.ndarray
+    """Number of points m. [-]"""
+    residuals: np.ndarray
+    """Residual torque at every point (input order). [N*m]"""
+
+
+class LoadDependenceFit(NamedTuple):
+    """Task 3: load-term factor and speed term, per group."""
+
+    load_term_factor: float | np.ndarray
+    """f = b C0^e / d_m of (6.3). [-]"""
+    speed_term: float | np.ndarray
+    """T0, the intercept at P0 -> 0 (an extrapolation; may come out negative). [N*m]"""
+    load_term_factor_standard_error: float | np.ndarray
+    """Standard error of f; NaN for two points. [-]"""
+    speed_term_standard_error: float | np.ndarray
+    """Standard error of T0; NaN for two points. [N*m]"""
+    residual_rms: float | np.ndarray
+    """RMS of the residuals. [N*m]"""
+    count: int | np.ndarray
+    """Number of points m. [-]"""
+    residuals: np.ndarray
+    """Residual torque at every point (input order). [N*m]"""
+
+
+# ----------------------------------------------------------------------------- grouping
+def _prepare(x, y, groups, x_name, y_name):
+    x = check_finite(x_name, x, "-")
+    y = check_finite(y_name, y, "-")
+    x, y = np.broadcast_arrays(np.atleast_1d(x), np.atleast_1d(y))
+    x, y = x.ravel(), y.ravel()
+    if groups is None:
+        index = np.zeros(x.size, dtype=np.intp)
+        labels = None
+    else:
+        g = np.asarray(groups).ravel()
+        if g.size != x.size:
+            raise InputError(f"groups must label every point: {g.size} labels for {x.size} points")
+        labels, index = np.unique(g, return_inverse=True)
+        index = index.ravel()
+    n_groups = 1 if labels is None else labels.size
+    return x, y, index, n_groups, labels
+
+
+def _degenerate(message, labels, k):
+    lab = None if labels is None else labels[k]
+    lab = lab.item() if isinstance(lab, np.generic) else lab
+    label = "the data" if labels is None else f"group {lab!r}"
+    exc = InputError(message.format(group=label))
+    exc.group = lab  # the offending label, for file-level messages
+    return exc
+
+
+def _out(value, labels):
+    value = np.asarray(value)
+    return value[0] if labels is None else value
+
+
+def _stats(x, y, index, n_groups, labels, *, intercept, what, x_name, shown=None, shown_unit=""):
+    """Centred least-squares sums per group -> (slope, intercept, se_slope, se_intercept, rms, m, r)."""
+    m = np.bincount(index, minlength=n_groups).astype(float)
+    if np.any(m == 0):
+        raise InputError("groups: every label must have at least one point")
+    if intercept:
+        xmin = np.full(n_groups, np.inf)
+        xmax = np.full(n_groups, -np.inf)
+        np.minimum.at(xmin, index, x)
+        np.maximum.at(xmax, index, x)
+        flat = ~(xmax > xmin)
+        if flat.any():
+            k = int(np.argmax(flat))
+            at = xmin[k] if shown is None else np.ravel(shown)[np.argmax(index == k)]
+            raise _degenerate(f"{what}: {{group}} needs at least two distinct values of {x_name}, got "
+                              f"{int(m[k])} point(s) all at {at:.10g}{shown_unit}", labels, k)
+        xbar = np.bincount(index, weights=x, minlength=n_groups) / m
+        ybar = np.bincount(index, weights=y, minlength=n_groups) / m
+        dx = x - xbar[index]
+        dy = y - ybar[index]
+        sxx = np.bincount(index, weights=dx * dx, minlength=n_groups)
+        sxy = np.bincount(index, weights=dx * dy, minlength=n_groups)
+        slope = sxy / sxx
+        icpt = ybar - slope * xbar
+        r = y - (icpt[index] + slope[index] * x)
+        dof = m - 2.0
+    else:
+        sxx = np.bincount(index, weights=x * x, minlength=n_groups)
+        zero = ~(sxx > 0)
+        if zero.any():
+            k = int(np.argmax(zero))
+            raise _degenerate(f"{what}: {{group}} has all {x_name} = 0; a line through the origin needs "
+                              f"a non-zero abscissa", labels, k)
+        sxy = np.bincount(index, weights=x * y, minlength=n_groups)
+        slope = sxy / sxx
+        icpt = np.zeros(n_groups)
+        r = y - slope[index] * x
+        dof = m - 1.0
+        xbar = None
+    ssr = np.bincount(index, weights=r * r, minlength=n_groups)
+    rms = np.sqrt(ssr / m)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s2 = np.where(dof > 0, ssr / np.where(dof > 0, dof, 1.0), np.nan)
+        se_slope = np.sqrt(s2 / sxx)
+        se_icpt = np.sqrt(s2 * (1.0 / m + xbar**2 / sxx)) if intercept else np.full(n_groups, np.nan)
+    return slope, icpt, se_slope, se_icpt, rms, m.astype(int), r
+
+
+# ----------------------------------------------------------------------------- generic fits
+def through_origin(x, y, *, groups=None):
+    """Least-squares line through the origin, y = k x, for one or many groups of points.
+
+    Parameters
+    ----------
+    x : array_like
+        Abscissae. [any]
+    y : array_like
+        Ordinates. [any]
+    groups : array_like, optional
+        Group label of every point; one fit per distinct label. [-]
+
+    Returns
+    -------
+    ThroughOriginFit
+        Scalars without ``groups``, arrays ordered like ``numpy.unique(groups)`` with it.
+
+    Raises
+    ------
+    InputError
+        A group whose abscissae are all 0. The exception carries ``group``, the offending label.
+
+    Examples
+    --------
+    >>> fit = through_origin([1.0, 2.0, 3.0], [2.0, 4.0, 6.0])
+    >>> float(fit.slope), float(fit.residual_rms)
+    (2.0, 0.0)
+    """
+    x, y, index, n, labels = _prepare(x, y, groups, "x", "y")
+    k, _a, se, _sa, rms, m, r = _stats(x, y, index, n, labels, intercept=False, what="fit through the origin",
+                                       x_name="x")
+    return ThroughOriginFit(_out(k, labels), _out(se, labels), _out(rms, labels), _out(m, labels), r)
+
+
+def straight_line(x, y, *, groups=None):
+    """Ordinary least-squares straight line, y = a + b x, for one or many groups of points.
+
+    Parameters
+    ----------
+    x : array_like
+        Abscissae. [any]
+    y : array_like
+        Ordinates. [any]
+    groups : array_like, optional
+        Group label of every point; one fit per distinct label. [-]
+
+    Returns
+    -------
+    LineFit
+        Scalars without ``groups``, arrays ordered like ``numpy.unique(groups)`` with it.
+
+    Raises
+    ------
+    InputError
+        A group with fewer than two distinct abscissae (spec 001 section 8.6). The exception carries
+        ``group``, the offending label.
+
+    Examples
+    --------
+    >>> fit = straight_line([0.0, 1.0, 2.0, 3.0], [1.0, 3.0, 5.0, 7.0])
+    >>> float(fit.slope), float(fit.intercept)
+    (2.0, 1.0)
+    """
+    x, y, index, n, labels = _prepare(x, y, groups, "x", "y")
+    b, a, sb, sa, rms, m, r = _stats(x, y, index, n, labels, intercept=True, what="straight line", x_name="x")
+    return LineFit(_out(b, labels), _out(a, labels), _out(sb, labels), _out(sa, labels), _out(rms, labels),
+                   _out(m, labels), r)
+
+
+# ----------------------------------------------------------------------------- the three tasks
+def friction_coefficient(torque, equivalent_load, bore, *, groups=None):
+    """Task 1: reduced friction coefficient mu by least squares through the origin, eq. (6.1).
+
+    Parameters
+    ----------
+    torque : array_like
+        Measured friction torque T_i. [N*m]
+    equivalent_load : array_like
+        Static equivalent load P0_i of each point. [N]
+    bore : array_like
+        Bore diameter d of the test bearing. [m]
+    groups : array_like, optional
+        Group label of every point (in the lab: one group per tilt and speed column of Table 4). [-]
+
+    Returns
+    -------
+    FrictionCoefficientFit
+        mu, its standard error, the residual RMS [N*m], the count and the residuals.
+
+    Raises
+    ------
+    InputError
+        A group whose P0 are all zero (spec 001 section 9).
+
+    Notes
+    -----
+    mu = 2 sum(T_i P0_i) / (d sum(P0_i^2)), eq. (6.1): the least-squares estimate of the one-term
+    model (3.2), not an average of T_i/P0_i (spec 001 section 8.9). Any m >= 1 is accepted.
+
+    Examples
+    --------
+    Spec 001 section 10.1, n = 1500 rpm (T in N*m):
+
+    >>> t = np.array([0.025055204, 0.036527822, 0.070121614]) * 1e-3
+    >>> print(f"{friction_coefficient(t, [4.905, 9.81, 19.62], 5e-3).friction_coefficient:.6e}")
+    1.470209e-03
+    """
+    d = check_positive("bore", bore, "m")
+    p0 = check_nonnegative("equivalent_load", equivalent_load, "N")
+    x, y, index, n, labels = _prepare(p0 * d / 2.0, torque, groups, "equivalent_load", "torque")
+    mu, _a, se, _sa, rms, m, r = _stats(x, y, index, n, labels, intercept=False, what="task 1",
+                                        x_name="equivalent_load")  # (6.1) with abscissa P0 d/2
+    return FrictionCoefficientFit(_out(mu, labels), _out(se, labels), _out(rms, labels), _out(m, labels), r)
+
+
+def speed_dependence(torque, shaft_speed, mean_diameter, *, groups=None):
+    """Task 2: speed-term factor f0 and load term T_F by least squares in N = n^(2/3), eq. (6.2).
+
+    Parameters
+    ----------
+    torque : array_like
+        Measured friction torque T_i. [N*m]
+    shaft_speed : array_like
+        Spindle speed n_i. [rad/s]
+    mean_diameter : array_like
+        Mean diameter d_m of the test bearing. [m]
+    groups : array_like, optional
+        Group label of every point (in the lab: one group per tilt of Table 5). [-]
+
+    Returns
+    -------
+    SpeedDependenceFit
+        f0 [N*mm^-2*min^(2/3)] and T_F [N*m] with standard errors, residual RMS [N*m], count and
+        residuals.
+
+    Raises
+    ------
+    InputError
+        A group with fewer than two distinct speeds (spec 001 sections 8.6 and 9).
+
+    Notes
+    -----
+    With N_i = n_i^(2/3) (n in rpm) the model T = b N + T_F is fitted by ordinary least squares and
+    f0 = b / d_m^3 (d_m in mm, T in N*mm), eq. (6.2); the conversion to those published units is done
+    here, once. T_F is the value at n -> 0, an extrapolation (spec 001 section 8.14).
+
+    Examples
+    --------
+    Spec 001 section 10.1, Table 5, beta = 0:
+
+    >>> n = np.array([500, 1000, 1500, 2000, 2500, 3000]) * 2 * np.pi / 60
+    >>> t = np.array([0.026607442, 0.032002617, 0.036527822, 0.040566924, 0.044279207, 0.047750239]) * 1e-3
+    >>> fit = speed_dependence(t, n, 9e-3)
+    >>> print(f"{fit.speed_term_factor:.6e} {fit.load_term * 1e3:.6e}")
+    2.000000e-07 1.742262e-02
+    """
+    dm = check_positive("mean_diameter", mean_diameter, "m")
+    n = check_finite("shaft_speed", shaft_speed, "rad/s")
+    t_nmm = check_finite("torque", torque, "N*m") / _MM  # N*mm
+    n_rpm = np.abs(n) / _RPM
+    x = (dm / _MM) ** 3 * n_rpm ** (2.0 / 3.0)  # d_m^3 N, mm^3 min^(-2/3): slope is f0 directly
+    shown = np.broadcast_arrays(n_rpm, x, t_nmm)[0].ravel()
+    x, y, index, k, labels = _prepare(x, t_nmm, groups, "shaft_speed", "torque")
+    f0, tf, se_f0, se_tf, rms, m, r = _stats(x, y, index, k, labels, intercept=True, what="task 2",
+                                             x_name="shaft_speed", shown=shown, shown_unit=" rpm")  # (6.2)
+    return SpeedDependenceFit(_out(f0, labels), _out(tf * _MM, labels), _out(se_f0, labels),
+                              _out(se_tf * _MM, labels), _out(rms * _MM, labels), _out(m, labels), r * _MM)
+
+
+def load_dependence(torque, equivalent_load, mean_diameter, static_load_rating, *, load_term_exponent=0.55,
+                    groups=None):
+    """Task 3: load-term factor f and speed term T0 by least squares in N = P0^(1+e), eqs. (6.2)-(6.3).
+
+    Parameters
+    ----------
+    torque : array_like
+        Measured friction torque T_i. [N*m]
+    equivalent_load : array_like
+        Static equivalent load P0_i. [N]
+    mean_diameter : array_like
+        Mean diameter d_m of the test bearing. [m]
+    static_load_rating : array_like
+        Basic static load rating C0. [N]
+    load_term_exponent : array_like, optional
+        e = c of Table 2 (0.55 for radial bearings, spec 001 section 8.1). [-]
+    groups : array_like, optional
+        Group label of every point (in the lab: one group per tilt and speed column of Table 4). [-]
+
+    Returns
+    -------
+    LoadDependenceFit
+        f [-] and T0 [N*m] with standard errors, residual RMS [N*m], count and residuals.
+
+    Raises
+    ------
+    InputError
+        A group with fewer than two distinct P0 (spec 001 sections 8.6 and 9).
+
+    Notes
+    -----
+    With N_i = P0_i^(1+e) the model T = T0 + b N is fitted by ordinary least squares and
+    f = b C0^e / d_m, eq. (6.3). The model is dimensionally homogeneous, so it is fitted in SI. T0 is
+    the value at P0 -> 0, an extrapolation (spec 001 section 8.14).
+
+    Examples
+    --------
+    Spec 001 section 10.1, n = 3000 rpm:
+
+    >>> t = np.array([0.036277621, 0.047750239, 0.081344031]) * 1e-3
+    >>> fit = load_dependence(t, [4.905, 9.81, 19.62], 9e-3, 392.0)
+    >>> print(f"{fit.load_term_factor:.6e} {fit.speed_term * 1e3:.6e}")
+    1.500000e-03 3.032762e-02
+    """
+    dm = check_positive("mean_diameter", mean_diameter, "m")
+    c0 = check_positive("static_load_rating", static_load_rating, "N")
+    e = check_finite("load_term_exponent", load_term_exponent, "-")
+    p0 = check_nonnegative("equivalent_load", equivalent_load, "N")
+    x = dm / c0**e * p0 ** (1.0 + e)  # (d_m / C0^e) N: slope is f directly, (6.3)
+    shown = np.broadcast_arrays(p0, x, np.asarray(torque, dtype=float))[0].ravel()
+    x, y, index, k, labels = _prepare(x, torque, groups, "equivalent_load", "torque")
+    f, t0, se_f, se_t0, rms, m, r = _stats(x, y, index, k, labels, intercept=True, what="task 3",
+                                           x_name="equivalent_load", shown=shown, shown_unit=" N")  # (6.2)
+    return LoadDependenceFit(_out(f, labels), _out(t0, labels), _out(se_f, labels), _out(se_t0, labels),
+                             _out(rms, labels), _out(m, labels), r)
+
+
