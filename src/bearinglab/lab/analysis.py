@@ -440,9 +440,9 @@ def table4(result):
                 if i is None:
                     row += [None] * 5
                 else:
-                    row += [_nan_none(s.rows.speed_reading[i]), float(rv.shaft_speed[i] / _RPM),
+                    row += [_nan_none(s.rows.speed_reading[i]), _sig(rv.shaft_speed[i] / _RPM),
                             _nan_none(s.rows.torque_reading[i]), int(s.rows.switch[i]) or None,
-                            float(rv.torque[i] / _MM)]
+                            _sig(rv.torque[i] / _MM)]
             rows.append(row)
         out.append(TableData(f"table4_tilt{_deg(tilt)}", f"Table 4. Friction torque at tilt β = {_deg(tilt)}°",
                              columns, rows, formats))
@@ -485,11 +485,11 @@ def table5(result):
         rows = []
         for (key, _occ), by_col in sorted(cells.items(), key=lambda kv: (rv.shaft_speed[next(iter(kv[1].values()))], kv[0])):
             any_i = next(iter(by_col.values()))
-            row = [_nan_none(s.rows.speed_reading[any_i]), float(rv.shaft_speed[any_i] / _RPM)]
+            row = [_nan_none(s.rows.speed_reading[any_i]), _sig(rv.shaft_speed[any_i] / _RPM)]
             for k in ks:
                 i = by_col.get(k)
                 row += [None] * 3 if i is None else [_nan_none(s.rows.torque_reading[i]), int(s.rows.switch[i]) or None,
-                                                     float(rv.torque[i] / _MM)]
+                                                     _sig(rv.torque[i] / _MM)]
             rows.append(row)
         out.append(TableData(f"table5_Q{q:g}kg", f"Table 5. Friction torque at Q = {q:g} kg", columns, rows, formats))
     return out
@@ -518,9 +518,9 @@ def rows_table(result):
     formats = ["d", "", "g", "g", "", "g", ".6g", "g", "d", ".9g", ".6f", ".6f", ".6f", ""]
     rows = []
     for i in range(s.rows.line.size):
-        rows.append([int(s.rows.line[i]), s.rows.series[i], math.degrees(s.rows.tilt[i]), float(s.rows.mass[i]),
-                     s.rows.column[i], _nan_none(s.rows.speed_reading[i]), float(rv.shaft_speed[i] / _RPM),
-                     _nan_none(s.rows.torque_reading[i]), int(s.rows.switch[i]) or None, float(rv.torque[i] / _MM),
+        rows.append([int(s.rows.line[i]), s.rows.series[i], _sig(math.degrees(s.rows.tilt[i])), float(s.rows.mass[i]),
+                     s.rows.column[i], _nan_none(s.rows.speed_reading[i]), _sig(rv.shaft_speed[i] / _RPM),
+                     _nan_none(s.rows.torque_reading[i]), int(s.rows.switch[i]) or None, _sig(rv.torque[i] / _MM),
                      float(rv.axial_load[i]), float(rv.radial_load[i]), float(rv.equivalent_load[i]),
                      "x0·Fr + y0·Fa" if rv.combined[i] else "Fr"])
     return TableData("rows", "Measurement rows and converted values", columns, rows, formats)
@@ -613,7 +613,8 @@ def plots(result):
 
 
 def _pct(x):
-    return f"{x * 100:+.1f} %"
+    v = x * 100
+    return f"{0.0 if abs(v) < 0.05 else v:+.1f} %"
 
 
 def _rpm(w):
@@ -714,6 +715,11 @@ def _f(x):
     return None if math.isnan(x) else x
 
 
+def _sig(x):
+    """A converted input without round-trip noise: 1500.0000000000002 rpm -> 1500.0, 59.99999999999999 deg -> 60.0."""
+    return float(f"{float(x):.12g}")
+
+
 def to_dict(result):
     """Every number of the analysis as a JSON-ready dict (N*mm, rpm, deg, N, kg; NaN -> None).
 
@@ -733,21 +739,21 @@ def to_dict(result):
     rows = []
     for i in range(s.rows.line.size):
         rows.append({
-            "line": int(s.rows.line[i]), "series": s.rows.series[i], "tilt_deg": math.degrees(s.rows.tilt[i]),
+            "line": int(s.rows.line[i]), "series": s.rows.series[i], "tilt_deg": _sig(math.degrees(s.rows.tilt[i])),
             "mass_kg": float(s.rows.mass[i]), "column": s.rows.column[i] or None,
-            "speed_reading": _f(s.rows.speed_reading[i]), "speed_rpm": float(rv.shaft_speed[i] / _RPM),
+            "speed_reading": _f(s.rows.speed_reading[i]), "speed_rpm": _sig(rv.shaft_speed[i] / _RPM),
             "torque_reading": _f(s.rows.torque_reading[i]), "switch": int(s.rows.switch[i]) or None,
-            "torque_Nmm": float(rv.torque[i] / _MM), "axial_load_N": float(rv.axial_load[i]),
+            "torque_Nmm": _sig(rv.torque[i] / _MM), "axial_load_N": float(rv.axial_load[i]),
             "radial_load_N": float(rv.radial_load[i]), "equivalent_static_load_N": float(rv.equivalent_load[i]),
             "branch": "x0*Fr+y0*Fa" if rv.combined[i] else "Fr", "note": s.rows.note[i] or None})
-    task1 = [{"tilt_deg": math.degrees(t1.tilt[k]), "column": t1.column[k], "speed_rpm": float(t1.shaft_speed[k] / _RPM),
+    task1 = [{"tilt_deg": _sig(math.degrees(t1.tilt[k])), "column": t1.column[k], "speed_rpm": _sig(t1.shaft_speed[k] / _RPM),
               "mu": float(t1.friction_coefficient[k]), "mu_standard_error": _f(t1.standard_error[k]),
               "residual_rms_Nmm": float(t1.residual_rms[k] / _MM), "n_points": int(t1.count[k]),
               "mean_torque_Nmm": float(t1.mean_torque[k] / _MM), "mu_handbook": hb.friction_coefficient,
               "mu_relative_to_handbook": float(t1.relative_to_handbook[k]),
               "residual_rms_relative_to_mean_torque": float(t1.relative_rms[k]),
               "lines": [int(x) for x in s.rows.line[t1.rows[k]]]} for k in range(t1.tilt.size)]
-    task2 = [{"tilt_deg": math.degrees(t2.tilt[k]), "mass_kg": float(t2.mass[k]),
+    task2 = [{"tilt_deg": _sig(math.degrees(t2.tilt[k])), "mass_kg": float(t2.mass[k]),
               "equivalent_static_load_N": float(t2.equivalent_load[k]), "f0": float(t2.speed_term_factor[k]),
               "f0_standard_error": _f(t2.speed_term_factor_standard_error[k]),
               "torque_load_term_Nmm": float(t2.load_term[k] / _MM),
@@ -757,7 +763,7 @@ def to_dict(result):
               "torque_load_term_with_task3_f_Nmm": _f(t2.load_term_with_task3_factor[k] / _MM),
               "negative_intercept": bool(t2.load_term[k] < 0),
               "lines": [int(x) for x in s.rows.line[t2.rows[k]]]} for k in range(t2.tilt.size)]
-    task3 = [{"tilt_deg": math.degrees(t3.tilt[k]), "column": t3.column[k], "speed_rpm": float(t3.shaft_speed[k] / _RPM),
+    task3 = [{"tilt_deg": _sig(math.degrees(t3.tilt[k])), "column": t3.column[k], "speed_rpm": _sig(t3.shaft_speed[k] / _RPM),
               "f": float(t3.load_term_factor[k]), "f_standard_error": _f(t3.load_term_factor_standard_error[k]),
               "torque_speed_term_Nmm": float(t3.speed_term[k] / _MM),
               "torque_speed_term_standard_error_Nmm": _f(t3.speed_term_standard_error[k] / _MM),
@@ -767,18 +773,18 @@ def to_dict(result):
               "negative_intercept": bool(t3.speed_term[k] < 0),
               "lines": [int(x) for x in s.rows.line[t3.rows[k]]]} for k in range(t3.tilt.size)]
     indicators = {
-        "I1": [{"tilt_deg": math.degrees(t), "speed_min_rpm": lo / _RPM, "speed_max_rpm": hi / _RPM, "value": v}
+        "I1": [{"tilt_deg": _sig(math.degrees(t)), "speed_min_rpm": _sig(lo / _RPM), "speed_max_rpm": _sig(hi / _RPM), "value": v}
                for t, lo, hi, v in ind.speed_effect_on_mu],
         "I2": [{"tilt_deg": r["tilt_deg"], "speed_rpm": r["speed_rpm"], "value": r["mu_relative_to_handbook"]} for r in task1],
         "I3": [{"tilt_deg": r["tilt_deg"], "speed_rpm": r["speed_rpm"], "value": r["residual_rms_relative_to_mean_torque"]}
                for r in task1],
         "I4": {"value": _f(ind.f0_spread), "mean_f0": _f(ind.mean_speed_term_factor)},
-        "I5": [{"tilt_a_deg": math.degrees(t2.tilt[a]), "mass_a_kg": float(t2.mass[a]), "tilt_b_deg": math.degrees(t2.tilt[bb]),
+        "I5": [{"tilt_a_deg": _sig(math.degrees(t2.tilt[a])), "mass_a_kg": float(t2.mass[a]), "tilt_b_deg": _sig(math.degrees(t2.tilt[bb])),
                 "mass_b_kg": float(t2.mass[bb]), "measured": m, "predicted": p} for a, bb, m, p in ind.load_term_ratio],
-        "I6": [{"tilt_deg": math.degrees(t), "value": v} for t, v in ind.f_spread],
+        "I6": [{"tilt_deg": _sig(math.degrees(t)), "value": v} for t, v in ind.f_spread],
         "I6_f_relative_to_handbook": [{"tilt_deg": r["tilt_deg"], "speed_rpm": r["speed_rpm"],
                                        "value": r["f_relative_to_handbook"]} for r in task3],
-        "I7": [{"tilt_deg": math.degrees(t), "speed_a_rpm": na / _RPM, "speed_b_rpm": nb / _RPM, "measured": m,
+        "I7": [{"tilt_deg": _sig(math.degrees(t)), "speed_a_rpm": _sig(na / _RPM), "speed_b_rpm": _sig(nb / _RPM), "measured": m,
                 "predicted": p} for t, na, nb, m, p in ind.speed_term_ratio],
         "I7_torque_speed_term_vs_task2": [{"tilt_deg": r["tilt_deg"], "speed_rpm": r["speed_rpm"],
                                            "task3_Nmm": r["torque_speed_term_Nmm"],
