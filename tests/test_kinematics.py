@@ -60,7 +60,7 @@ def test_cwru_bsf_and_shaft_order():
 
 
 def test_frequencies_at_cwru_speed_in_hz():
-    # 1797 rpm, the CWRU 0 hp speed: BPFI = 5.4152 x 29.95 Hz = 162.19 Hz (Smith & Randall 2015, Table 2)
+    # 1797 rpm, the CWRU 0 hp speed: BPFI = 5.4152 x 29.95 Hz = 162.19 Hz
     f = kinematics.characteristic_frequencies(1797 * 2 * math.pi / 60, 7.94e-3, 39.04e-3, 9, 0.0)
     assert f.bpfi / (2 * math.pi) == pytest.approx(5.4152 * 29.95, abs=0.5 * 0.0001 * 29.95)
     assert f.bpfo / (2 * math.pi) == pytest.approx(3.5848 * 29.95, abs=0.5 * 0.0001 * 29.95)

@@ -1,7 +1,7 @@
 r"""Hertz point contact: the one Hertz module of the library.
 
 Dimensionless coefficients (exact, from complete elliptic integrals)
--------------------------------------------------------------------
+--------------------------------------------------------------------
 ellipticity              kappa = a/b from the curvature difference F(rho) = cos(tau), vectorized
 coefficients             kappa, a* (= mu), b* (= nu), delta* (= 2K/(pi mu)) from F(rho)
 tabulated                the same tuple from tabulated values (the handbook mode of spec 000 section 8)
@@ -14,6 +14,8 @@ load_deflection_constant K in Q = K delta^1.5
 approach_coefficient     c in delta / D = c (Q / D^2)^(2/3) (spec 000 section 5.3)
 
 Curvature sums and F(rho) of the two raceway contacts are in :func:`bearinglab.geometry.raceway_curvature`.
+The exact relations are those of Harris and Kotzalas [1]_; the start of the ellipticity solve is the fit
+of Hamrock and Brewe [2]_.
 
 References
 ----------
@@ -105,8 +107,8 @@ def ellipticity(curvature_difference, *, rtol=_solve.ELLIPTICITY_RTOL, max_iter=
     Notes
     -----
     Solves :math:`F = [(\kappa^2+1)E(e) - 2K(e)] / [(\kappa^2-1)E(e)]`, :math:`e^2 = 1 - 1/\kappa^2`
-    (spec 000 section 5.2; Harris [1]_ eq. 6.26), for all elements at once: Newton in the parameter
-    m = e^2 with a bisection bracket, started from the Hamrock-Brewe fit [2]_. For F < 1e-5 the
+    (spec 000 section 5.2; Harris and Kotzalas 2006, eq. 6.26), for all elements at once: Newton in the parameter
+    m = e^2 with a bisection bracket, started from the Hamrock-Brewe (1983) fit. For F < 1e-5 the
     limit m = 8F/3 is used (the closed form is 0/0 at F = 0, where kappa = 1).
 
     Examples
@@ -272,7 +274,7 @@ def point_contact(load, curvature_sum, curvature_difference, reduced_modulus, *,
 
     Notes
     -----
-    Harris [1]_ eqs. 6.38-6.43 with :math:`\eta = 2/E'`:
+    Harris and Kotzalas (2006) eqs. 6.38-6.43 with :math:`\eta = 2/E'`:
     :math:`a = a^* [3Q/(E'\Sigma\rho)]^{1/3}`, :math:`b = b^*[\ldots]^{1/3}`,
     :math:`\delta = \delta^* [3Q/(E'\Sigma\rho)]^{2/3}\,\Sigma\rho/2`, :math:`p_{max} = 3Q/(2\pi a b)`.
     Linear-elastic, frictionless, small contact.

@@ -18,14 +18,18 @@ frequency_shift            nominal vs operating contact angle: both sets, the sh
 
 Spectral mask
 -------------
-spectral_mask              harmonics 1..N of each frequency, FTF sidebands around BPFI and BSF, shaft
-                           sidebands around BPFI, each line with a band of given relative width
+spectral_mask              harmonics 1..N with FTF and shaft sidebands, each line with a band
 FAMILIES                   the names of the frequency families, in mask order
+
+Pure rolling at both contacts at one contact angle (Harris and Kotzalas [1]_): spec 004 eqs. (9) and
+(13) with alpha_i = alpha_e = beta = alpha (no spin-axis tilt). Defect frequencies and their sidebands
+in spectra: Randall and Antoni [2]_; the CWRU benchmark bearing: Smith and Randall [3]_. Speed effects on the angle are in
+:mod:`bearinglab.quasistatic`; the angle under an axial stand load is in :mod:`bearinglab.static`.
 
 References
 ----------
 .. [1] T. A. Harris and M. N. Kotzalas, *Essential Concepts of Bearing Technology*, 5th ed., CRC Press,
-   2006, ch. 7 ("Bearing kinematics"), doi:10.1201/9781420006599.
+   2006, doi:10.1201/9781420006599.
 .. [2] R. B. Randall and J. Antoni, "Rolling element bearing diagnostics -- a tutorial," Mech. Syst.
    Signal Process., vol. 25, no. 2, pp. 485-520, 2011, doi:10.1016/j.ymssp.2010.07.017.
 .. [3] W. A. Smith and R. B. Randall, "Rolling element bearing diagnostics using the Case Western
@@ -148,7 +152,8 @@ def cage_speed(shaft_speed, ball_diameter, pitch_diameter, contact_angle, *, out
 
     Notes
     -----
-    Pure rolling at both contacts, no gyroscopic or centrifugal effects (Harris [1]_ eq. 7.12):
+    Pure rolling at both contacts, no gyroscopic or centrifugal effects; spec 004 eq. (9) with
+    alpha_i = alpha_e = beta = alpha (Harris and Kotzalas 2006, see the module references):
 
     .. math:: \omega_c = \tfrac12\left[\omega_i (1 - \gamma) + \omega_o (1 + \gamma)\right],
               \qquad \gamma = D\cos\alpha / d_m .
@@ -188,7 +193,9 @@ def ball_pass_frequencies(shaft_speed, ball_diameter, pitch_diameter, n_balls, c
 
     Notes
     -----
-    Harris [1]_ eqs. 7.15-7.16, with the relative speed of the rings :math:`\omega_i - \omega_o`:
+    The balls pass a point of the outer ring at Z times the speed of the cage relative to that ring,
+    and a point of the inner ring at Z times the speed of the inner ring relative to the cage; with
+    :func:`cage_speed` and the relative speed of the rings :math:`\omega_i - \omega_o`:
 
     .. math:: f_{BPFO} = \tfrac{Z}{2}\,|\omega_i - \omega_o|\,(1 - \gamma), \qquad
               f_{BPFI} = \tfrac{Z}{2}\,|\omega_i - \omega_o|\,(1 + \gamma),
@@ -231,7 +238,8 @@ def ball_spin_frequency(shaft_speed, ball_diameter, pitch_diameter, contact_angl
 
     Notes
     -----
-    Harris [1]_ eq. 7.18: :math:`f_{BSF} = \frac{d_m}{2D}\,|\omega_i - \omega_o|\,(1 - \gamma^2)`.
+    Spec 004 eq. (13) with alpha_i = alpha_e = beta = alpha:
+    :math:`f_{BSF} = \frac{d_m}{2D}\,|\omega_i - \omega_o|\,(1 - \gamma^2)`.
 
     Examples
     --------
@@ -290,10 +298,10 @@ def characteristic_frequencies(shaft_speed, ball_diameter, pitch_diameter, n_bal
     g = _gamma(d, pitch_diameter, contact_angle)
     dm = np.asarray(pitch_diameter, dtype=float)
     rel = np.abs(wi - wo)
-    ftf = np.abs(0.5 * (wi * (1.0 - g) + wo * (1.0 + g)))  # [1] eq. 7.12
-    bpfo = 0.5 * z * rel * (1.0 - g)  # [1] eq. 7.15
-    bpfi = 0.5 * z * rel * (1.0 + g)  # [1] eq. 7.16
-    bsf = dm / (2.0 * d) * rel * (1.0 - g * g)  # [1] eq. 7.18
+    ftf = np.abs(0.5 * (wi * (1.0 - g) + wo * (1.0 + g)))  # spec 004 eq. (9), one angle
+    bpfo = 0.5 * z * rel * (1.0 - g)  # Z |w_c - w_o|
+    bpfi = 0.5 * z * rel * (1.0 + g)  # Z |w_i - w_c|
+    bsf = dm / (2.0 * d) * rel * (1.0 - g * g)  # spec 004 eq. (13), one angle
     shape = np.broadcast_shapes(np.shape(wi), np.shape(wo), np.shape(z), np.shape(g))
     out = [np.broadcast_to(x, shape).copy()[()] for x in (np.abs(wi), ftf, bpfo, bpfi, bsf, 2.0 * bsf)]
     return CharacteristicFrequencies(*out)
@@ -324,7 +332,9 @@ def characteristic_orders(ball_diameter, pitch_diameter, n_balls, contact_angle,
     -----
     The frequencies of :func:`characteristic_frequencies` at a unit shaft speed. For the CWRU
     drive-end bearing (6205-2RS, Z = 9, D = 7.94 mm, d_m = 39.04 mm, alpha = 0) they are the published
-    multipliers BPFI 5.4152, BPFO 3.5848 and 2 BSF 4.7135 [3]_.
+    multipliers BPFI 5.4152, BPFO 3.5848 and 2 BSF 4.7135 (Case Western Reserve University Bearing
+    Data Center; Smith and Randall 2015, see the module references). The published FTF, 0.39828, is
+    not consistent with the published BPFO (FTF = BPFO / Z exactly); this gives 0.39831.
 
     Examples
     --------
@@ -427,8 +437,8 @@ def spectral_mask(shaft_speed, ball_diameter, pitch_diameter, n_balls, contact_a
     Notes
     -----
     Carrier lines :math:`h f` for every family (h = 1..N). Sidebands, which show the modulation of a
-    defect signal by the rotation of the load zone relative to the defect (Randall and Antoni [2]_,
-    section 2):
+    defect signal by the rotation of the load zone relative to the defect (Randall and Antoni 2011,
+    see the module references):
 
     * around every BPFI harmonic, :math:`h f_{BPFI} \pm k f_{shaft}` (the inner-race defect turns with
       the shaft) and :math:`h f_{BPFI} \pm k f_{FTF}`;

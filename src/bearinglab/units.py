@@ -18,7 +18,7 @@ to_dms                  angle in radians -> (degrees, minutes, seconds)
 format_dms              angle in radians -> ``14°28'03.38"``
 
 Parsing (pint is imported on first use, so ``import bearinglab`` stays light)
--------
+-----------------------------------------------------------------------------
 parse_quantity          ``"2 kgf"`` -> 19.6133 (N), checking the dimension
 parse_values            ``"2.5kN:45kN:2.5kN"`` or ``"0,3000,6000rpm"`` -> array in SI
 """
