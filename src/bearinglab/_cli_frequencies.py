@@ -140,14 +140,14 @@ def frequencies(
         emit_json(out)
         return
     loaded = axial_load is not None
-    caption = f"shaft {out['speed_rpm']:g} rpm = {shaft_hz:.4g} Hz"
+    speeds = f"shaft {out['speed_rpm']:g} rpm = {shaft_hz:.6g} Hz"
     if w_out:
-        caption += f", outer ring {out['outer_speed_rpm']:g} rpm"
-    caption += f"; α0 = {math.degrees(a0):.4f}°"
+        speeds += f", outer ring {out['outer_speed_rpm']:g} rpm = {w_out / _HZ:.6g} Hz"
+    console.print(f"Bearing {b.designation}: {speeds}; nominal contact angle {math.degrees(a0):.4f}°", highlight=False)
     if loaded:
-        caption += (f"; at {out['axial_load_kgf']:.4g} kgf ({fa:.4g} N) the operating angle is "
-                    f"{math.degrees(angle):.4f}° ({format_dms(angle)}, {hertz} Hertz)")
-    columns = ["frequency", "nominal [Hz]", "order"]
+        console.print(f"operating contact angle at {out['axial_load_kgf']:.4g} kgf ({fa:.4g} N): "
+                      f"{math.degrees(angle):.4f}° = {format_dms(angle)} ({hertz} Hertz)", highlight=False)
+    columns = ["frequency", "nominal [Hz]" if loaded else "f [Hz]", "order"]
     if loaded:
         columns += ["operating [Hz]", "order", "shift [Hz]", "shift [%]"]
     rows = []
@@ -158,9 +158,9 @@ def frequencies(
             row += [f"{out[n + '_hz']:.4f}", _order(out[n + "_order"]), f"{out['shift_hz'][n]:+.4f}",
                     f"{out['shift_percent'][n]:+.3f}"]
         rows.append(row)
-    table(f"Bearing {b.designation}: characteristic frequencies", columns, rows, caption=caption)
+    table("Characteristic frequencies", columns, rows)
     if mask:
-        table(f"Spectral mask ({harmonics} harmonics, ±{sidebands} sidebands, band {band_fraction * 100:g} %)",
+        table(f"Spectral mask: harmonics 1..{harmonics}, sidebands ±1..{sidebands}, band {band_fraction * 100:g} %",
               ["line", "h", "sideband", "f [Hz]", "low [Hz]", "high [Hz]", "order"],
               [[_LABELS[r["name"]], r["harmonic"], _sideband(r), f"{r['frequency_hz']:.3f}", f"{r['low_hz']:.3f}",
                 f"{r['high_hz']:.3f}", _order(r["order"])] for r in mask_rows])
