@@ -1094,11 +1094,23 @@ def _cut(a, status, last_bad, iters, max_iter, v, v_ok, w_ok, w_cur, w_target, h
         _advance(go, v, v_ok, w_ok, w_cur, w_target, h, tangent, k_stage, norm_prev, t)
 
 
-def _refine_angles(model, idx, ai, ae, w2, lo_i, hi_i, lo_e, hi_e, max_iter=60):
-    """Bounded damped Newton (least squares) on E3, E7 in (alpha_i, alpha_e), all cases at once."""
+def _refine_angles(model, idx, ai, ae, w2, lo_i, hi_i, lo_e, hi_e, line=None, max_iter=60):
+    """Bounded damped Newton (least squares) on E3, E7 in (alpha_i, alpha_e), all cases at once.
+
+    Iterates stay in the box [lo, hi] and, if ``line`` is given, below alpha_i + alpha_e = line (the
+    triangle of section 5.2: a point above the line is projected onto it).
+    """
     x = np.stack([ai, ae], axis=1)
     lo = np.stack([lo_i, lo_e], axis=1)
     hi = np.stack([hi_i, hi_e], axis=1)
+
+    def project(xx, sel):
+        xx = np.clip(xx, lo[sel], hi[sel])
+        if line is not None:
+            excess = np.maximum(xx[:, 0] + xx[:, 1] - line[sel], 0.0)
+            xx = np.clip(xx - 0.5 * excess[:, None], lo[sel], hi[sel])
+        return xx
+
     iters = np.zeros(len(idx), dtype=int)
 
     def obj(sel, xx):
@@ -1136,7 +1148,7 @@ def _refine_angles(model, idx, ai, ae, w2, lo_i, hi_i, lo_e, hi_e, max_iter=60):
         for _ls in range(30):  # step halving until the sum of squares decreases
             if pending.size == 0:
                 break
-            xt = np.clip(xa[pending] + tt[pending, None] * step[pending], lo[active[pending]], hi[active[pending]])
+            xt = project(xa[pending] + tt[pending, None] * step[pending], active[pending])
             et, ft = obj(active[pending], xt)
             better = ft < f[active[pending]]
             good = pending[better]
@@ -1182,7 +1194,7 @@ def _angle_iteration(model, idx, w_target, alpha_s):
     lo_i, hi_i = alpha_s, alpha_s + span
     lo_e, hi_e = alpha_s - span, alpha_s
     ai, ae = _grid_search(model, idx, w2, lo_i, hi_i, lo_e, hi_e, 2.0 * alpha_s)
-    ai, ae, f, iters = _refine_angles(model, idx, ai, ae, w2, lo_i, hi_i, lo_e, hi_e)
+    ai, ae, f, iters = _refine_angles(model, idx, ai, ae, w2, lo_i, hi_i, lo_e, hi_e, line=2.0 * alpha_s)
     method = np.full(len(idx), "search-triangle", dtype=object)
     miss = np.flatnonzero(~(f < _ROOT_TOL))
     if miss.size:  # the triangle heuristic failed: search the whole quadrant (and say so)
