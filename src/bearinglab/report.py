@@ -111,7 +111,7 @@ def render_figure(plot):
     from matplotlib.figure import Figure
 
     with matplotlib.rc_context({"svg.fonttype": "path", "svg.hashsalt": plot.name, "font.size": 9.5}):
-        fig = Figure(figsize=(6.4, 4.2), dpi=150, layout="constrained")
+        fig = Figure(figsize=(6.4, 4.2), dpi=150)
         FigureCanvasAgg(fig)
         ax = fig.add_subplot()
         ymin = 0.0
@@ -128,6 +128,9 @@ def render_figure(plot):
         ax.set_title(plot.title, fontsize=10.5)
         ax.grid(True, color="0.88", lw=0.6)
         ax.legend(fontsize=8, loc="upper left", frameon=False)
+        fig.set_layout_engine("constrained")  # lay out once, then keep that layout for both formats
+        fig.draw_without_rendering()
+        fig.set_layout_engine("none")
         png = io.BytesIO()
         fig.savefig(png, format="png", metadata={"Software": None})
         svg = io.StringIO()
