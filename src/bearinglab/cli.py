@@ -268,7 +268,7 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name or alias
 
 # ----------------------------------------------------------------------------- capability modules
 # Each module defines register(app). Listed here so that the command line is complete on import.
-_COMMAND_MODULES: tuple[str, ...] = ("_cli_stand", "_cli_frequencies", "_cli_sweep", "_cli_highspeed", "_cli_friction")
+_COMMAND_MODULES: tuple[str, ...] = ("_cli_stand", "_cli_frequencies", "_cli_sweep", "_cli_highspeed", "_cli_friction", "_cli_runout")
 
 
 _registered = False
@@ -285,7 +285,18 @@ def _register_all():
 
 
 def main(argv=None) -> int:
-    """Run the command line; return the exit code instead of raising (tests call this)."""
+    """Run the command line; return the exit code instead of raising (tests call this).
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments after the program name; ``None`` reads ``sys.argv``.
+
+    Returns
+    -------
+    int
+        0 on success, 2 for invalid input (one line on stderr), 3 for a solve that did not converge.
+    """
     _register_all()
     try:
         rv = app(args=argv, prog_name="bearinglab", standalone_mode=False)
