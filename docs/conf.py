@@ -6,7 +6,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "src"))
 
-import bearinglab  # noqa: E402
+import bearinglab
 
 project = "bearinglab"
 author = "bearinglab developers"

@@ -43,27 +43,60 @@ def main(out):
     out.mkdir(parents=True, exist_ok=True)
 
     cwru = catalog.get("6205-2RS")
-    orders = kinematics.characteristic_orders(cwru.ball_diameter, cwru.pitch_diameter, cwru.n_balls,
-                                              cwru.contact_angle)
-    write_csv(out / "cwru_orders.csv", ["name", "order", "published", "difference"],
-              [[n, getattr(orders, n), p, getattr(orders, n) - p] for n, p in CWRU_PUBLISHED.items()])
+    orders = kinematics.characteristic_orders(
+        cwru.ball_diameter, cwru.pitch_diameter, cwru.n_balls, cwru.contact_angle
+    )
+    write_csv(
+        out / "cwru_orders.csv",
+        ["name", "order", "published", "difference"],
+        [[n, getattr(orders, n), p, getattr(orders, n) - p] for n, p in CWRU_PUBLISHED.items()],
+    )
 
     b = catalog.get("4-1006095")
     speed, load = 3000 * RPM, 2 * KGF
     alpha = float(static.stand_analysis(b, load).contact_angle)
-    shift = kinematics.frequency_shift(speed, b.ball_diameter, b.pitch_diameter, b.n_balls, b.contact_angle, alpha)
+    shift = kinematics.frequency_shift(
+        speed, b.ball_diameter, b.pitch_diameter, b.n_balls, b.contact_angle, alpha
+    )
     names = kinematics.FAMILIES[1:]
-    write_csv(out / "stand_frequencies.csv", ["name", "nominal_hz", "operating_hz", "shift_hz", "shift_percent"],
-              [[n, getattr(shift.nominal, n) / HZ, getattr(shift.operating, n) / HZ, getattr(shift.shift, n) / HZ,
-                getattr(shift.shift_percent, n)] for n in names])
-    masks = {label: kinematics.spectral_mask(speed, b.ball_diameter, b.pitch_diameter, b.n_balls, a, harmonics=3,
-                                             sidebands=1, band=0.02)
-             for label, a in (("nominal", b.contact_angle), ("operating", alpha))}
+    write_csv(
+        out / "stand_frequencies.csv",
+        ["name", "nominal_hz", "operating_hz", "shift_hz", "shift_percent"],
+        [
+            [
+                n,
+                getattr(shift.nominal, n) / HZ,
+                getattr(shift.operating, n) / HZ,
+                getattr(shift.shift, n) / HZ,
+                getattr(shift.shift_percent, n),
+            ]
+            for n in names
+        ],
+    )
+    masks = {
+        label: kinematics.spectral_mask(
+            speed,
+            b.ball_diameter,
+            b.pitch_diameter,
+            b.n_balls,
+            a,
+            harmonics=3,
+            sidebands=1,
+            band=0.02,
+        )
+        for label, a in (("nominal", b.contact_angle), ("operating", alpha))
+    }
     m = masks["operating"]
-    write_csv(out / "stand_mask.csv", ["name", "harmonic", "modulation", "sideband", "frequency_hz", "low_hz",
-                                       "high_hz"],
-              [[n, h, mod, k, f / HZ, lo / HZ, hi / HZ] for n, h, mod, k, f, lo, hi in
-               zip(m.name, m.harmonic, m.modulation, m.sideband, m.frequency, m.low, m.high)])
+    write_csv(
+        out / "stand_mask.csv",
+        ["name", "harmonic", "modulation", "sideband", "frequency_hz", "low_hz", "high_hz"],
+        [
+            [n, h, mod, k, f / HZ, lo / HZ, hi / HZ]
+            for n, h, mod, k, f, lo, hi in zip(
+                m.name, m.harmonic, m.modulation, m.sideband, m.frequency, m.low, m.high
+            )
+        ],
+    )
     # lines of the operating mask that fall outside their band of the nominal-angle mask
     nominal = masks["nominal"]
     outside = int(np.sum((m.frequency < nominal.low) | (m.frequency > nominal.high)))
@@ -74,15 +107,26 @@ def main(out):
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(2, 1, figsize=(12, 7), constrained_layout=True)
-    carriers = {"bpfo": "C0", "bpfi": "C3", "bsf": "C2", "two_bsf": "C4", "ftf": "C1", "shaft": "0.4"}
+    carriers = {
+        "bpfo": "C0",
+        "bpfi": "C3",
+        "bsf": "C2",
+        "two_bsf": "C4",
+        "ftf": "C1",
+        "shaft": "0.4",
+    }
     for name, colour in carriers.items():
         sel = m.name == name
         for lo, hi, mod in zip(m.low[sel] / HZ, m.high[sel] / HZ, m.modulation[sel]):
             ax[0].axvspan(lo, hi, color=colour, alpha=0.25 if mod else 0.6, lw=0)
         ax[0].plot([], [], color=colour, lw=6, label=name)
-    ax[0].set(xlim=(0, 700), yticks=[], xlabel="frequency [Hz]",
-              title=f"Spectral mask of 4-1006095 at 3000 rpm, 2 kgf (operating angle {format_dms(alpha)}): "
-                    "carriers dark, sidebands light, 2 % bands")
+    ax[0].set(
+        xlim=(0, 700),
+        yticks=[],
+        xlabel="frequency [Hz]",
+        title=f"Spectral mask of 4-1006095 at 3000 rpm, 2 kgf (operating angle {format_dms(alpha)}): "
+        "carriers dark, sidebands light, 2 % bands",
+    )
     ax[0].legend(ncol=6, loc="upper right", fontsize=8)
     angles = np.radians(np.linspace(0.0, 45.0, 181))
     sweep = kinematics.characteristic_orders(b.ball_diameter, b.pitch_diameter, b.n_balls, angles)
@@ -90,18 +134,29 @@ def main(out):
         ax[1].plot(np.degrees(angles), getattr(sweep, name), color=carriers[name], label=name)
     ax[1].axvline(math.degrees(b.contact_angle), color="0.5", ls="--", lw=1, label="nominal 12°")
     ax[1].axvline(math.degrees(alpha), color="k", ls=":", lw=1, label="operating at 2 kgf")
-    ax[1].set(xlabel="contact angle [deg]", ylabel="order (multiple of shaft speed)",
-              title="Orders of 4-1006095 against the contact angle")
+    ax[1].set(
+        xlabel="contact angle [deg]",
+        ylabel="order (multiple of shaft speed)",
+        title="Orders of 4-1006095 against the contact angle",
+    )
     ax[1].legend(ncol=3, fontsize=8)
     fig.savefig(out / "frequencies.png", dpi=120)
     plt.close(fig)
 
-    print("CWRU 6205-2RS orders: " + ", ".join(f"{n} {getattr(orders, n):.5f} (published {p})"
-                                               for n, p in CWRU_PUBLISHED.items()))
-    print(f"4-1006095 at 3000 rpm, 2 kgf: contact angle {format_dms(b.contact_angle)} -> {format_dms(alpha)}; "
-          f"BPFI {shift.nominal.bpfi / HZ:.3f} -> {shift.operating.bpfi / HZ:.3f} Hz "
-          f"({shift.shift_percent.bpfi:+.3f} %), BPFO {shift.shift_percent.bpfo:+.3f} %")
-    print(f"spectral mask: {len(m.name)} lines; {outside} of them leave the 2 % band of the nominal-angle mask")
+    print(
+        "CWRU 6205-2RS orders: "
+        + ", ".join(
+            f"{n} {getattr(orders, n):.5f} (published {p})" for n, p in CWRU_PUBLISHED.items()
+        )
+    )
+    print(
+        f"4-1006095 at 3000 rpm, 2 kgf: contact angle {format_dms(b.contact_angle)} -> {format_dms(alpha)}; "
+        f"BPFI {shift.nominal.bpfi / HZ:.3f} -> {shift.operating.bpfi / HZ:.3f} Hz "
+        f"({shift.shift_percent.bpfi:+.3f} %), BPFO {shift.shift_percent.bpfo:+.3f} %"
+    )
+    print(
+        f"spectral mask: {len(m.name)} lines; {outside} of them leave the 2 % band of the nominal-angle mask"
+    )
     print(f"wrote {', '.join(sorted(p.name for p in out.iterdir()))} in {out}")
 
 

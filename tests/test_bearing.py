@@ -13,8 +13,18 @@ from bearinglab.errors import InputError
 @pytest.fixture
 def example():
     """Bearing 4-1006095 of spec 000 section 7, from its groove radii."""
-    return BallBearing.from_groove_radii(7, 2e-3, 8.7355e-3, 1.05e-3, 1.16e-3, contact_angle=math.radians(12),
-                                         designation="4-1006095", bore=5e-3, outside_diameter=13e-3, width=4e-3)
+    return BallBearing.from_groove_radii(
+        7,
+        2e-3,
+        8.7355e-3,
+        1.05e-3,
+        1.16e-3,
+        contact_angle=math.radians(12),
+        designation="4-1006095",
+        bore=5e-3,
+        outside_diameter=13e-3,
+        width=4e-3,
+    )
 
 
 def test_derived_quantities_of_the_example(example):
@@ -36,11 +46,18 @@ def test_derived_quantities_of_the_example(example):
 def test_methods_pass_fields_to_the_functions(example):
     b = example
     for race, f in (("inner", b.inner_conformity), ("outer", b.outer_conformity)):
-        assert b.curvature(race) == geometry.raceway_curvature(2e-3, 8.7355e-3, f, math.radians(12), race=race)
-        assert b.curvature(race, 0.3) == geometry.raceway_curvature(2e-3, 8.7355e-3, f, 0.3, race=race)
-    assert b.groove_centres() == geometry.groove_centre_diameters(2e-3, 8.7355e-3, b.inner_conformity,
-                                                                  b.outer_conformity, math.radians(12))
-    assert b.reduced_modulus == pytest.approx(float(hertz.reduced_modulus(2.075e11, 0.3, 2.075e11, 0.3)))
+        assert b.curvature(race) == geometry.raceway_curvature(
+            2e-3, 8.7355e-3, f, math.radians(12), race=race
+        )
+        assert b.curvature(race, 0.3) == geometry.raceway_curvature(
+            2e-3, 8.7355e-3, f, 0.3, race=race
+        )
+    assert b.groove_centres() == geometry.groove_centre_diameters(
+        2e-3, 8.7355e-3, b.inner_conformity, b.outer_conformity, math.radians(12)
+    )
+    assert b.reduced_modulus == pytest.approx(
+        float(hertz.reduced_modulus(2.075e11, 0.3, 2.075e11, 0.3))
+    )
 
 
 def test_clearance_gives_the_angle_and_back(example):
@@ -48,7 +65,9 @@ def test_clearance_gives_the_angle_and_back(example):
     assert b.contact_angle == pytest.approx(math.radians(12), rel=1e-12)
     # replace re-derives the other one
     c = example.replace(contact_angle=math.radians(20))
-    assert c.radial_clearance == pytest.approx(geometry.radial_clearance(math.radians(20), 2e-3, 0.525, 0.58))
+    assert c.radial_clearance == pytest.approx(
+        geometry.radial_clearance(math.radians(20), 2e-3, 0.525, 0.58)
+    )
     d = example.replace(radial_clearance=20e-6)
     assert d.contact_angle == pytest.approx(geometry.free_contact_angle(20e-6, 2e-3, 0.525, 0.58))
     assert example.contact_angle == pytest.approx(math.radians(12))  # the original is unchanged
@@ -57,8 +76,18 @@ def test_clearance_gives_the_angle_and_back(example):
 def test_frozen_and_comparable(example):
     with pytest.raises(dataclasses.FrozenInstanceError):
         example.n_balls = 8
-    twin = BallBearing.from_groove_radii(7, 2e-3, 8.7355e-3, 1.05e-3, 1.16e-3, contact_angle=math.radians(12),
-                                         designation="4-1006095", bore=5e-3, outside_diameter=13e-3, width=4e-3)
+    twin = BallBearing.from_groove_radii(
+        7,
+        2e-3,
+        8.7355e-3,
+        1.05e-3,
+        1.16e-3,
+        contact_angle=math.radians(12),
+        designation="4-1006095",
+        bore=5e-3,
+        outside_diameter=13e-3,
+        width=4e-3,
+    )
     assert twin == example
 
 
@@ -68,7 +97,9 @@ def test_zero_angle_keeps_clearance_unknown():
 
 
 def test_partial_bearing_and_require():
-    b = BallBearing(pitch_diameter=9e-3, bore=5e-3, outside_diameter=13e-3, designation="1000095", type="radial")
+    b = BallBearing(
+        pitch_diameter=9e-3, bore=5e-3, outside_diameter=13e-3, designation="1000095", type="radial"
+    )
     assert b.require("pitch_diameter") == 9e-3
     assert b.require("bore", "outside_diameter") == (5e-3, 13e-3)
     with pytest.raises(InputError, match=r"n_balls of '1000095' is not known; give it"):
@@ -80,51 +111,89 @@ def test_partial_bearing_and_require():
 
 
 def test_materials():
-    assert MATERIALS["steel"] is STEEL and MATERIALS["silicon_nitride"] is MATERIALS["si3n4"] is SILICON_NITRIDE
+    assert (
+        MATERIALS["steel"] is STEEL
+        and MATERIALS["silicon_nitride"] is MATERIALS["si3n4"] is SILICON_NITRIDE
+    )
     assert (STEEL.elastic_modulus, STEEL.poisson_ratio, STEEL.density) == (2.075e11, 0.3, 7850.0)
-    hybrid = BallBearing(9, 7.94e-3, 39.04e-3, 0.52, 0.52, contact_angle=0.0, ball_material=SILICON_NITRIDE)
+    hybrid = BallBearing(
+        9, 7.94e-3, 39.04e-3, 0.52, 0.52, contact_angle=0.0, ball_material=SILICON_NITRIDE
+    )
     assert hybrid.ball_mass == pytest.approx(3200 * math.pi * 7.94e-3**3 / 6, rel=1e-15)
-    assert hybrid.reduced_modulus == pytest.approx(2 / ((1 - 0.26**2) / 3.1e11 + 0.91 / 2.075e11), rel=1e-14)
-    assert hybrid.reduced_modulus > BallBearing(9, 7.94e-3, 39.04e-3, 0.52, 0.52, contact_angle=0.0).reduced_modulus
+    assert hybrid.reduced_modulus == pytest.approx(
+        2 / ((1 - 0.26**2) / 3.1e11 + 0.91 / 2.075e11), rel=1e-14
+    )
+    assert (
+        hybrid.reduced_modulus
+        > BallBearing(9, 7.94e-3, 39.04e-3, 0.52, 0.52, contact_angle=0.0).reduced_modulus
+    )
 
 
-@pytest.mark.parametrize("kw, match", [
-    ({"elastic_modulus": 0.0}, r"elastic_modulus must be > 0 \[Pa\], got 0.0"),
-    ({"poisson_ratio": 0.5}, r"poisson_ratio must be in \(-1, 0.5\) \[-\], got 0.5"),
-    ({"density": -1.0}, r"density must be > 0 \[kg/m\^3\], got -1.0"),
-])
+@pytest.mark.parametrize(
+    "kw, match",
+    [
+        ({"elastic_modulus": 0.0}, r"elastic_modulus must be > 0 \[Pa\], got 0.0"),
+        ({"poisson_ratio": 0.5}, r"poisson_ratio must be in \(-1, 0.5\) \[-\], got 0.5"),
+        ({"density": -1.0}, r"density must be > 0 \[kg/m\^3\], got -1.0"),
+    ],
+)
 def test_bad_material(kw, match):
     args = dict(name="x", elastic_modulus=2e11, poisson_ratio=0.3, density=7800.0) | kw
     with pytest.raises(InputError, match=match):
         Material(**args)
 
 
-GOOD = dict(n_balls=7, ball_diameter=2e-3, pitch_diameter=8.7355e-3, inner_conformity=0.525, outer_conformity=0.58,
-            contact_angle=math.radians(12))
+GOOD = dict(
+    n_balls=7,
+    ball_diameter=2e-3,
+    pitch_diameter=8.7355e-3,
+    inner_conformity=0.525,
+    outer_conformity=0.58,
+    contact_angle=math.radians(12),
+)
 
 
-@pytest.mark.parametrize("kw, match", [
-    ({"n_balls": 0}, r"n_balls must be an integer >= 1 \[-\], got 0"),
-    ({"n_balls": 7.5}, r"n_balls must be an integer >= 1 \[-\], got 7.5"),
-    ({"n_balls": True}, r"n_balls must be an integer >= 1"),
-    ({"ball_diameter": -2e-3}, r"ball_diameter must be > 0 \[m\], got -0.002"),
-    ({"ball_diameter": float("nan")}, r"ball_diameter must be > 0 \[m\], got nan"),
-    ({"pitch_diameter": float("inf")}, r"pitch_diameter must be > 0 \[m\], got inf"),
-    ({"width": 0.0}, r"width must be > 0 \[m\], got 0.0"),
-    ({"static_load_rating": -5.0}, r"static_load_rating must be > 0 \[N\]"),
-    ({"inner_conformity": 0.5}, r"inner_conformity must be in \(0.5, 10\) \[-\], got 0.5"),
-    ({"outer_conformity": 0.45}, r"outer_conformity must be in \(0.5, 10\) \[-\], got 0.45"),
-    ({"pitch_diameter": 2e-3}, r"pitch_diameter must be > ball_diameter \[mm\], got 2 mm with ball_diameter = 2 mm"),
-    ({"bore": 13e-3, "outside_diameter": 5e-3}, r"outside_diameter must be > bore \[mm\], got 5 mm with bore = 13 mm"),
-    ({"type": "thrust"}, r"type must be one of \['radial', 'angular'\], got 'thrust'"),
-    ({"contact_angle": math.radians(90)}, r"contact_angle must be in \[0, 90\) \[deg\], got 90.0"),
-    ({"contact_angle": -0.1}, r"contact_angle must be in \[0, 90\) \[deg\], got -5.7"),
-    ({"contact_angle": None, "radial_clearance": 1e-3},
-     r"radial_clearance must be in \(0, 0.84\) \[mm\] to give a real contact angle, got 1 mm"),
-    ({"contact_angle": None, "radial_clearance": -1e-6}, r"radial_clearance must be > 0 \[m\], got -1e-06"),
-    ({"contact_angle": None, "radial_clearance": 9e-6, "inner_conformity": None},
-     r"radial_clearance needs both groove conformities and the ball diameter"),
-])
+@pytest.mark.parametrize(
+    "kw, match",
+    [
+        ({"n_balls": 0}, r"n_balls must be an integer >= 1 \[-\], got 0"),
+        ({"n_balls": 7.5}, r"n_balls must be an integer >= 1 \[-\], got 7.5"),
+        ({"n_balls": True}, r"n_balls must be an integer >= 1"),
+        ({"ball_diameter": -2e-3}, r"ball_diameter must be > 0 \[m\], got -0.002"),
+        ({"ball_diameter": float("nan")}, r"ball_diameter must be > 0 \[m\], got nan"),
+        ({"pitch_diameter": float("inf")}, r"pitch_diameter must be > 0 \[m\], got inf"),
+        ({"width": 0.0}, r"width must be > 0 \[m\], got 0.0"),
+        ({"static_load_rating": -5.0}, r"static_load_rating must be > 0 \[N\]"),
+        ({"inner_conformity": 0.5}, r"inner_conformity must be in \(0.5, 10\) \[-\], got 0.5"),
+        ({"outer_conformity": 0.45}, r"outer_conformity must be in \(0.5, 10\) \[-\], got 0.45"),
+        (
+            {"pitch_diameter": 2e-3},
+            r"pitch_diameter must be > ball_diameter \[mm\], got 2 mm with ball_diameter = 2 mm",
+        ),
+        (
+            {"bore": 13e-3, "outside_diameter": 5e-3},
+            r"outside_diameter must be > bore \[mm\], got 5 mm with bore = 13 mm",
+        ),
+        ({"type": "thrust"}, r"type must be one of \['radial', 'angular'\], got 'thrust'"),
+        (
+            {"contact_angle": math.radians(90)},
+            r"contact_angle must be in \[0, 90\) \[deg\], got 90.0",
+        ),
+        ({"contact_angle": -0.1}, r"contact_angle must be in \[0, 90\) \[deg\], got -5.7"),
+        (
+            {"contact_angle": None, "radial_clearance": 1e-3},
+            r"radial_clearance must be in \(0, 0.84\) \[mm\] to give a real contact angle, got 1 mm",
+        ),
+        (
+            {"contact_angle": None, "radial_clearance": -1e-6},
+            r"radial_clearance must be > 0 \[m\], got -1e-06",
+        ),
+        (
+            {"contact_angle": None, "radial_clearance": 9e-6, "inner_conformity": None},
+            r"radial_clearance needs both groove conformities and the ball diameter",
+        ),
+    ],
+)
 def test_bad_bearing(kw, match):
     with pytest.raises(InputError, match=match):
         BallBearing(**(GOOD | kw))
@@ -133,5 +202,7 @@ def test_bad_bearing(kw, match):
 def test_from_groove_radii_validates_radii():
     with pytest.raises(InputError, match=r"inner_groove_radius must be > 0 \[m\], got -1.0"):
         BallBearing.from_groove_radii(7, 2e-3, 8.7355e-3, -1.0, 1.16e-3, contact_angle=0.2)
-    with pytest.raises(InputError, match=r"inner_conformity must be in \(0.5, 10\) \[-\], got 0.4[45]"):
+    with pytest.raises(
+        InputError, match=r"inner_conformity must be in \(0.5, 10\) \[-\], got 0.4[45]"
+    ):
         BallBearing.from_groove_radii(7, 2e-3, 8.7355e-3, 0.9e-3, 1.16e-3, contact_angle=0.2)

@@ -17,22 +17,61 @@ MM = 1e-3
 # expected values written from the sources cited in the catalog (not read from the catalog file)
 BUILTIN = {
     # spec 000 section 7: 5 x 13 x 4 mm, z = 7, d = 2 mm, dm = 8.7355 mm, r_v = 1.05, r_n = 1.16 mm, 12 deg
-    "4-1006095": dict(n_balls=7, ball_diameter=2 * MM, pitch_diameter=8.7355 * MM, inner_conformity=0.525,
-                      outer_conformity=0.58, contact_angle=math.radians(12), bore=5 * MM,
-                      outside_diameter=13 * MM, width=4 * MM, type="angular"),
+    "4-1006095": dict(
+        n_balls=7,
+        ball_diameter=2 * MM,
+        pitch_diameter=8.7355 * MM,
+        inner_conformity=0.525,
+        outer_conformity=0.58,
+        contact_angle=math.radians(12),
+        bore=5 * MM,
+        outside_diameter=13 * MM,
+        width=4 * MM,
+        type="angular",
+    ),
     # spec 001 section 3.4, Table 3: d, d_m, (D), C0; radial
-    "1000095": dict(bore=5 * MM, pitch_diameter=9 * MM, outside_diameter=13 * MM, static_load_rating=392.0,
-                    type="radial"),
-    "18": dict(bore=8 * MM, pitch_diameter=13.5 * MM, outside_diameter=19 * MM, static_load_rating=1354.0,
-               type="radial"),
-    "101": dict(bore=12 * MM, pitch_diameter=20 * MM, outside_diameter=28 * MM, static_load_rating=2227.0,
-                type="radial"),
+    "1000095": dict(
+        bore=5 * MM,
+        pitch_diameter=9 * MM,
+        outside_diameter=13 * MM,
+        static_load_rating=392.0,
+        type="radial",
+    ),
+    "18": dict(
+        bore=8 * MM,
+        pitch_diameter=13.5 * MM,
+        outside_diameter=19 * MM,
+        static_load_rating=1354.0,
+        type="radial",
+    ),
+    "101": dict(
+        bore=12 * MM,
+        pitch_diameter=20 * MM,
+        outside_diameter=28 * MM,
+        static_load_rating=2227.0,
+        type="radial",
+    ),
     # spec 004 section 6: Z = 16, D = 22.23 mm, d_m = 125.3 mm, f = 0.5232, 40 deg
-    "B218": dict(n_balls=16, ball_diameter=22.23 * MM, pitch_diameter=125.3 * MM, inner_conformity=0.5232,
-                 outer_conformity=0.5232, contact_angle=math.radians(40), type="angular"),
+    "B218": dict(
+        n_balls=16,
+        ball_diameter=22.23 * MM,
+        pitch_diameter=125.3 * MM,
+        inner_conformity=0.5232,
+        outer_conformity=0.5232,
+        contact_angle=math.radians(40),
+        type="angular",
+    ),
     # CWRU drive-end bearing: 9 balls, 7.94 mm, pitch 39.04 mm, 0 deg; 25 x 52 x 15 mm
-    "6205-2RS": dict(n_balls=9, ball_diameter=7.94 * MM, pitch_diameter=39.04 * MM, contact_angle=0.0,
-                     bore=25 * MM, outside_diameter=52 * MM, width=15 * MM, type="radial"),
+    "6205-2RS": dict(
+        n_balls=9,
+        ball_diameter=7.94 * MM,
+        pitch_diameter=39.04 * MM,
+        contact_angle=0.0,
+        bore=25 * MM,
+        outside_diameter=52 * MM,
+        width=15 * MM,
+        type="radial",
+    ),
 }
 
 
@@ -54,12 +93,18 @@ def test_builtin_names_and_aliases():
     assert catalog.names() == sorted(BUILTIN)  # aliases are not listed as separate bearings
     assert catalog.get("7218B") is catalog.get("B218")
     assert catalog.get("b218") is catalog.get("B218")  # case-insensitive fallback
-    assert catalog.get("4-1006095").hertz_table == {"inner": 0.63, "outer": 0.852}  # spec 000 section 5.2
+    assert catalog.get("4-1006095").hertz_table == {
+        "inner": 0.63,
+        "outer": 0.852,
+    }  # spec 000 section 5.2
 
 
 def test_unknown_name_lists_known_names():
-    with pytest.raises(CatalogError, match=r"bearing: unknown name 'X999'; known: 1000095, 101, 18, 4-1006095, "
-                                           r"6205-2RS, 7218B, B218") as info:
+    with pytest.raises(
+        CatalogError,
+        match=r"bearing: unknown name 'X999'; known: 1000095, 101, 18, 4-1006095, "
+        r"6205-2RS, 7218B, B218",
+    ) as info:
         catalog.get("X999")
     assert isinstance(info.value, InputError) and isinstance(info.value, ValueError)
 
@@ -103,8 +148,12 @@ def _check_user_bearing(b):
     assert b.radial_clearance == pytest.approx(12e-6)
     # the angle follows from the clearance (spec 000 section 4)
     b_total = 2.5 / 4.762 + 0.53 - 1
-    assert math.cos(b.contact_angle) == pytest.approx(1 - 12e-6 / (2 * b_total * 4.762e-3), rel=1e-12)
-    assert b.static_load_rating == pytest.approx(1520.0) and b.ball_material.name == "silicon nitride"
+    assert math.cos(b.contact_angle) == pytest.approx(
+        1 - 12e-6 / (2 * b_total * 4.762e-3), rel=1e-12
+    )
+    assert (
+        b.static_load_rating == pytest.approx(1520.0) and b.ball_material.name == "silicon nitride"
+    )
 
 
 def test_user_catalog_argument(user_file):
@@ -119,8 +168,10 @@ def test_user_catalog_argument(user_file):
 
 def test_user_catalog_from_environment(user_file, tmp_path, monkeypatch):
     other = tmp_path / "other.toml"
-    other.write_text('[bearings."ONE"]\nballs = 3\nball_diameter = "1 mm"\npitch_diameter = "3 mm"\n'
-                     'contact_angle = "0 deg"\n')
+    other.write_text(
+        '[bearings."ONE"]\nballs = 3\nball_diameter = "1 mm"\npitch_diameter = "3 mm"\n'
+        'contact_angle = "0 deg"\n'
+    )
     monkeypatch.setenv(catalog.ENV_VAR, os.pathsep.join([str(user_file), str(other)]))
     _check_user_bearing(catalog.get("MY-7001"))
     assert catalog.get("ONE").n_balls == 3
@@ -137,14 +188,21 @@ def test_user_catalog_through_the_command_line(user_file, capsys, monkeypatch):
     assert doc["bearing"] == "MY-7001" and doc["shaft_hz"] == pytest.approx(100.0)
 
 
-@pytest.mark.parametrize("text", [
-    # top-level keys
-    'designation = "SINGLE"\nballs = 7\nball_diameter = "2 mm"\npitch_diameter = "8.7355 mm"\n'
-    'inner_groove_radius = "1.05 mm"\nouter_groove_radius = "1.16 mm"\ncontact_angle = "12 deg"\n',
-    # or one [bearings."NAME"] table
-    '[bearings."SINGLE"]\nballs = 7\nball_diameter = "0.2 cm"\npitch_diameter = "8.7355 mm"\n'
-    'inner_conformity = 0.525\nouter_conformity = 0.58\nradial_clearance = "9.178 um"\n',
-])
+@pytest.mark.parametrize(
+    "text",
+    [
+        # top-level keys
+        (
+            'designation = "SINGLE"\nballs = 7\nball_diameter = "2 mm"\npitch_diameter = "8.7355 mm"\n'
+            'inner_groove_radius = "1.05 mm"\nouter_groove_radius = "1.16 mm"\ncontact_angle = "12 deg"\n'
+        ),
+        # or one [bearings."NAME"] table
+        (
+            '[bearings."SINGLE"]\nballs = 7\nball_diameter = "0.2 cm"\npitch_diameter = "8.7355 mm"\n'
+            'inner_conformity = 0.525\nouter_conformity = 0.58\nradial_clearance = "9.178 um"\n'
+        ),
+    ],
+)
 def test_bearing_file(tmp_path, text, capsys):
     path = tmp_path / "one.toml"
     path.write_text(text)
@@ -155,38 +213,66 @@ def test_bearing_file(tmp_path, text, capsys):
     assert math.degrees(b.contact_angle) == pytest.approx(12.0, abs=3.3e-4)  # 9.178 um is rounded
     assert main(["frequencies", "--bearing-file", str(path), "--speed", "3000 rpm", "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)
-    assert doc["bearing"] == "SINGLE" and doc["nominal_contact_angle_deg"] == pytest.approx(12.0, abs=3.3e-4)
+    assert doc["bearing"] == "SINGLE" and doc["nominal_contact_angle_deg"] == pytest.approx(
+        12.0, abs=3.3e-4
+    )
     assert path.read_bytes() == before  # input files are never modified
 
 
 def test_bearing_file_name_defaults_to_the_file_stem(tmp_path):
     path = tmp_path / "my-bearing.toml"
-    path.write_text('balls = 7\nball_diameter = "2 mm"\npitch_diameter = "9 mm"\ncontact_angle = "0 deg"\n')
+    path.write_text(
+        'balls = 7\nball_diameter = "2 mm"\npitch_diameter = "9 mm"\ncontact_angle = "0 deg"\n'
+    )
     assert catalog.load_bearing_file(path).designation == "my-bearing"
 
 
 ENTRY = '[bearings."BAD-1"]\nballs = 7\nball_diameter = "2 mm"\npitch_diameter = "8.7355 mm"\n'
 
 
-@pytest.mark.parametrize("body, field, detail", [
-    ('ball_diameter = "2 kg"\n', "ball_diameter", r"'2 kg' is a mass, expected a length"),
-    ('bore = "5"\n', "bore", r"'5' has no unit"),
-    ('colour = "blue"\n', "colour", r"unknown field"),
-    ('inner_conformity = 0.45\nouter_conformity = 0.52\ncontact_angle = "10 deg"\n', "inner_conformity",
-     r"inner_conformity must be in \(0.5, 10\)"),
-    ('inner_groove_radius = "0.9 mm"\nouter_conformity = 0.52\ncontact_angle = "10 deg"\n', "inner_groove_radius",
-     r"must be in \(0.5, 10\)"),
-    ('inner_groove_radius = "1.05 mm"\ninner_conformity = 0.525\n', "inner_groove_radius", r"not both"),
-    ('contact_angle = "95 deg"\n', "contact_angle", r"contact_angle must be in \[0, 90\) \[deg\]"),
-    ('contact_angle = "12 mm"\n', "contact_angle", r"'12 mm' is a length, expected an angle"),
-    ('inner_conformity = 0.52\nouter_conformity = 0.52\nradial_clearance = "1 mm"\n', "radial_clearance",
-     r"radial_clearance must be in \(0, 0.32\) \[mm\] to give a real contact angle"),
-    ('ball_material = "wood"\n', "ball_material", r"unknown material 'wood'"),
-    ('type = "thrust"\n', "type", r"type must be one of \['radial', 'angular'\]"),
-    ('static_load_rating = "392 mm"\n', "static_load_rating", r"expected a force"),
-    ('hertz_table = { inner = "x" }\n', "hertz_table", r"expected \{ inner = 0.63, outer = 0.852 \}"),
-    ('aliases = "BAD"\n', "aliases", r"expected a list of names"),
-])
+@pytest.mark.parametrize(
+    "body, field, detail",
+    [
+        ('ball_diameter = "2 kg"\n', "ball_diameter", r"'2 kg' is a mass, expected a length"),
+        ('bore = "5"\n', "bore", r"'5' has no unit"),
+        ('colour = "blue"\n', "colour", r"unknown field"),
+        (
+            'inner_conformity = 0.45\nouter_conformity = 0.52\ncontact_angle = "10 deg"\n',
+            "inner_conformity",
+            r"inner_conformity must be in \(0.5, 10\)",
+        ),
+        (
+            'inner_groove_radius = "0.9 mm"\nouter_conformity = 0.52\ncontact_angle = "10 deg"\n',
+            "inner_groove_radius",
+            r"must be in \(0.5, 10\)",
+        ),
+        (
+            'inner_groove_radius = "1.05 mm"\ninner_conformity = 0.525\n',
+            "inner_groove_radius",
+            r"not both",
+        ),
+        (
+            'contact_angle = "95 deg"\n',
+            "contact_angle",
+            r"contact_angle must be in \[0, 90\) \[deg\]",
+        ),
+        ('contact_angle = "12 mm"\n', "contact_angle", r"'12 mm' is a length, expected an angle"),
+        (
+            'inner_conformity = 0.52\nouter_conformity = 0.52\nradial_clearance = "1 mm"\n',
+            "radial_clearance",
+            r"radial_clearance must be in \(0, 0.32\) \[mm\] to give a real contact angle",
+        ),
+        ('ball_material = "wood"\n', "ball_material", r"unknown material 'wood'"),
+        ('type = "thrust"\n', "type", r"type must be one of \['radial', 'angular'\]"),
+        ('static_load_rating = "392 mm"\n', "static_load_rating", r"expected a force"),
+        (
+            'hertz_table = { inner = "x" }\n',
+            "hertz_table",
+            r"expected \{ inner = 0.63, outer = 0.852 \}",
+        ),
+        ('aliases = "BAD"\n', "aliases", r"expected a list of names"),
+    ],
+)
 def test_malformed_entry_names_file_entry_and_field(tmp_path, body, field, detail):
     path = tmp_path / "cat.toml"
     text = ENTRY + body
@@ -200,27 +286,46 @@ def test_malformed_entry_names_file_entry_and_field(tmp_path, body, field, detai
     assert re.search(detail, msg), msg
 
 
-@pytest.mark.parametrize("text, field, detail", [
-    ('[bearings."B"]\nballs = 7.5\n', "balls", r"must be a whole number, got 7.5"),
-    ('[bearings."B"]\nballs = 0\n', "balls", r"n_balls must be an integer >= 1"),
-    ('[bearings."B"]\nballs = "seven"\n', "balls", r"must be a whole number, got 'seven'"),
-    ('[bearings."B"]\nballs = 7\nball_diameter = "9 mm"\npitch_diameter = "9 mm"\n', "pitch_diameter",
-     r"pitch_diameter must be > ball_diameter \[mm\], got 9 mm"),
-    ('[bearings."B"]\nballs = 7\nball_diameter = "-2 mm"\n', "ball_diameter", r"ball_diameter must be > 0"),
-    ('[bearings."B"]\nballs = 7\ninner_groove_radius = "1 mm"\n', "inner_groove_radius", r"needs ball_diameter"),
-])
+@pytest.mark.parametrize(
+    "text, field, detail",
+    [
+        ('[bearings."B"]\nballs = 7.5\n', "balls", r"must be a whole number, got 7.5"),
+        ('[bearings."B"]\nballs = 0\n', "balls", r"n_balls must be an integer >= 1"),
+        ('[bearings."B"]\nballs = "seven"\n', "balls", r"must be a whole number, got 'seven'"),
+        (
+            '[bearings."B"]\nballs = 7\nball_diameter = "9 mm"\npitch_diameter = "9 mm"\n',
+            "pitch_diameter",
+            r"pitch_diameter must be > ball_diameter \[mm\], got 9 mm",
+        ),
+        (
+            '[bearings."B"]\nballs = 7\nball_diameter = "-2 mm"\n',
+            "ball_diameter",
+            r"ball_diameter must be > 0",
+        ),
+        (
+            '[bearings."B"]\nballs = 7\ninner_groove_radius = "1 mm"\n',
+            "inner_groove_radius",
+            r"needs ball_diameter",
+        ),
+    ],
+)
 def test_malformed_numbers(tmp_path, text, field, detail):
     path = tmp_path / "cat.toml"
     path.write_text(text)
-    with pytest.raises(CatalogError, match=rf"^{re.escape(str(path))}, entry 'B', field '{field}': .*{detail}"):
+    with pytest.raises(
+        CatalogError, match=rf"^{re.escape(str(path))}, entry 'B', field '{field}': .*{detail}"
+    ):
         catalog.load_catalog(path)
 
 
-@pytest.mark.parametrize("text, detail", [
-    ("[bearings\nballs = 7\n", r"not valid TOML"),
-    ("title = 'no bearings'\n", r'no \[bearings."NAME"\] tables'),
-    ('[bearings]\nX = 3\n', r"entry 'X': expected a table of fields, got int"),
-])
+@pytest.mark.parametrize(
+    "text, detail",
+    [
+        ("[bearings\nballs = 7\n", r"not valid TOML"),
+        ("title = 'no bearings'\n", r'no \[bearings."NAME"\] tables'),
+        ("[bearings]\nX = 3\n", r"entry 'X': expected a table of fields, got int"),
+    ],
+)
 def test_malformed_file(tmp_path, text, detail):
     path = tmp_path / "cat.toml"
     path.write_text(text)
@@ -249,5 +354,7 @@ def test_bad_catalog_in_environment_is_reported(tmp_path, monkeypatch, capsys):
     code = main(["catalog", "list"])
     out, err = capsys.readouterr()
     assert code == 2 and out == "" and "Traceback" not in err
-    assert err.strip() == (f"bearinglab: error: {path}, entry 'E', field 'ball_diameter': ball_diameter: '2 kg' is a "
-                           "mass, expected a length (e.g. '2 mm', '0.2 cm')")
+    assert err.strip() == (
+        f"bearinglab: error: {path}, entry 'E', field 'ball_diameter': ball_diameter: '2 kg' is a "
+        "mass, expected a length (e.g. '2 mm', '0.2 cm')"
+    )

@@ -21,9 +21,13 @@ def test_list_json(capsys):
     rows = json.loads(out)
     assert [r["name"] for r in rows] == catalog.names()
     by_name = {r["name"]: r for r in rows}
-    assert by_name["B218"]["balls"] == 16 and by_name["B218"]["contact_angle_deg"] == pytest.approx(40.0)
+    assert by_name["B218"]["balls"] == 16 and by_name["B218"]["contact_angle_deg"] == pytest.approx(
+        40.0
+    )
     assert by_name["6205-2RS"]["ball_diameter_mm"] == pytest.approx(7.94)
-    assert by_name["18"]["balls"] is None and by_name["18"]["pitch_diameter_mm"] == pytest.approx(13.5)
+    assert by_name["18"]["balls"] is None and by_name["18"]["pitch_diameter_mm"] == pytest.approx(
+        13.5
+    )
 
 
 def test_list_table(capsys):
@@ -39,7 +43,9 @@ def test_show_json_example_bearing(capsys):
     assert code == 0 and err == ""
     doc = json.loads(out)
     assert doc["designation"] == "4-1006095" and doc["balls"] == 7
-    assert doc["inner_groove_radius_mm"] == pytest.approx(1.05) and doc["outer_groove_radius_mm"] == pytest.approx(1.16)
+    assert doc["inner_groove_radius_mm"] == pytest.approx(1.05) and doc[
+        "outer_groove_radius_mm"
+    ] == pytest.approx(1.16)
     assert doc["total_curvature_B"] == pytest.approx(0.105)
     assert f"{doc['radial_clearance_um']:.3f}" == "9.178"  # spec 000 section 4
     assert doc["gamma"] == pytest.approx(2 * math.cos(math.radians(12)) / 8.7355, rel=1e-12)
@@ -54,7 +60,7 @@ def test_show_alias_and_table(capsys):
 
 
 def test_show_partial_entry(capsys):
-    code, out, err = run(capsys, "catalog", "show", "1000095", "--json")
+    code, out, _err = run(capsys, "catalog", "show", "1000095", "--json")
     assert code == 0
     doc = json.loads(out)
     assert doc["balls"] is None and doc["static_load_rating_N"] == pytest.approx(392.0)
@@ -85,7 +91,9 @@ def test_malformed_catalog_file(capsys, tmp_path):
     path.write_text('[bearings."Q"]\nballs = 7\nball_diameter = "2 mm"\npitch_diameter = "1 mm"\n')
     code, out, err = run(capsys, "catalog", "show", "Q", "--catalog", str(path))
     _one_line_exit_2(code, out, err)
-    assert f"{path}, entry 'Q', field 'pitch_diameter': pitch_diameter must be > ball_diameter" in err
+    assert (
+        f"{path}, entry 'Q', field 'pitch_diameter': pitch_diameter must be > ball_diameter" in err
+    )
 
 
 def test_invalid_toml(capsys, tmp_path):
@@ -96,11 +104,14 @@ def test_invalid_toml(capsys, tmp_path):
     assert f"{path}: not valid TOML" in err
 
 
-@pytest.mark.parametrize("argv, text", [
-    (["catalog", "show"], "Missing argument"),
-    (["catalog", "remove", "B218"], "No such command 'remove'"),
-    (["catalog", "list", "--colour"], "No such option"),
-])
+@pytest.mark.parametrize(
+    "argv, text",
+    [
+        (["catalog", "show"], "Missing argument"),
+        (["catalog", "remove", "B218"], "No such command 'remove'"),
+        (["catalog", "list", "--colour"], "No such option"),
+    ],
+)
 def test_usage_errors(capsys, argv, text):
     code, out, err = run(capsys, *argv)
     _one_line_exit_2(code, out, err)
@@ -108,5 +119,5 @@ def test_usage_errors(capsys, argv, text):
 
 
 def test_help(capsys):
-    code, out, err = run(capsys, "catalog", "--help")
+    code, out, _err = run(capsys, "catalog", "--help")
     assert code == 0 and "list" in out and "show" in out

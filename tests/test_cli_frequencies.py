@@ -42,45 +42,86 @@ def test_json_cwru_bearing(capsys):
 
 
 def test_json_at_operating_angle_under_axial_load(capsys):
-    doc = run_json(capsys, "frequencies", "-b", "4-1006095", "--speed", "3000 rpm", "--axial-load", "2 kgf")
+    doc = run_json(
+        capsys, "frequencies", "-b", "4-1006095", "--speed", "3000 rpm", "--axial-load", "2 kgf"
+    )
     b = catalog.get("4-1006095")
     alpha = float(static.stand_analysis(b, 2 * 9.80665).contact_angle)
     assert doc["contact_angle_deg"] == pytest.approx(math.degrees(alpha), rel=1e-14)
     assert doc["contact_angle_dms"] == "14°27'56.81\""  # spec 000 section 8, exact Hertz
     assert doc["nominal"]["contact_angle_deg"] == pytest.approx(12.0, rel=1e-14)
-    op = kinematics.characteristic_frequencies(2 * math.pi * 50, b.ball_diameter, b.pitch_diameter, b.n_balls, alpha)
-    nom = kinematics.characteristic_frequencies(2 * math.pi * 50, b.ball_diameter, b.pitch_diameter, b.n_balls,
-                                                b.contact_angle)
+    op = kinematics.characteristic_frequencies(
+        2 * math.pi * 50, b.ball_diameter, b.pitch_diameter, b.n_balls, alpha
+    )
+    nom = kinematics.characteristic_frequencies(
+        2 * math.pi * 50, b.ball_diameter, b.pitch_diameter, b.n_balls, b.contact_angle
+    )
     for name in KEYS:
         assert doc[f"{name}_hz"] == pytest.approx(getattr(op, name) / (2 * math.pi), rel=1e-14)
-        assert doc["nominal"][f"{name}_hz"] == pytest.approx(getattr(nom, name) / (2 * math.pi), rel=1e-14)
+        assert doc["nominal"][f"{name}_hz"] == pytest.approx(
+            getattr(nom, name) / (2 * math.pi), rel=1e-14
+        )
         assert doc[f"{name}_order"] == pytest.approx(doc[f"{name}_hz"] / 50.0, rel=1e-14)
-        assert doc["shift_hz"][name] == pytest.approx(doc[f"{name}_hz"] - doc["nominal"][f"{name}_hz"], rel=1e-9)
+        assert doc["shift_hz"][name] == pytest.approx(
+            doc[f"{name}_hz"] - doc["nominal"][f"{name}_hz"], rel=1e-9
+        )
     assert doc["shift_percent"]["bpfi"] < 0 < doc["shift_percent"]["bpfo"]
     assert doc["axial_load_kgf"] == pytest.approx(2.0, rel=1e-15)
 
 
 def test_table_hertz_gives_the_printed_operating_angle(capsys):
-    doc = run_json(capsys, "frequencies", "-b", "4-1006095", "--speed", "3000 rpm", "-F", "2 kgf", "--hertz", "table")
+    doc = run_json(
+        capsys,
+        "frequencies",
+        "-b",
+        "4-1006095",
+        "--speed",
+        "3000 rpm",
+        "-F",
+        "2 kgf",
+        "--hertz",
+        "table",
+    )
     assert doc["contact_angle_dms"] == "14°28'03.38\""  # spec 000 section 8, table coefficients
 
 
 def test_outer_ring_rotating(capsys):
-    doc = run_json(capsys, "frequencies", "-b", "6205-2RS", "--speed", "0 rpm", "--outer-speed", "1800 rpm")
+    doc = run_json(
+        capsys, "frequencies", "-b", "6205-2RS", "--speed", "0 rpm", "--outer-speed", "1800 rpm"
+    )
     o = kinematics.characteristic_orders(7.94e-3, 39.04e-3, 9, 0.0)
     assert doc["bpfo_hz"] == pytest.approx(30.0 * o.bpfo, rel=1e-12)
     assert doc["bpfi_hz"] == pytest.approx(30.0 * o.bpfi, rel=1e-12)
-    assert doc["ftf_hz"] == pytest.approx(30.0 * (1 - o.ftf), rel=1e-12)  # cage follows the outer ring
+    assert doc["ftf_hz"] == pytest.approx(
+        30.0 * (1 - o.ftf), rel=1e-12
+    )  # cage follows the outer ring
     assert doc["bpfo_order"] is None  # orders are multiples of the (zero) shaft speed
 
 
 def test_mask_json_and_csv(capsys, tmp_path):
     path = tmp_path / "mask.csv"
-    doc = run_json(capsys, "frequencies", "-b", "6205-2RS", "--speed", "50 Hz", "--mask", "--harmonics", "2",
-                   "--sidebands", "1", "--band", "4 %", "--csv", str(path))
+    doc = run_json(
+        capsys,
+        "frequencies",
+        "-b",
+        "6205-2RS",
+        "--speed",
+        "50 Hz",
+        "--mask",
+        "--harmonics",
+        "2",
+        "--sidebands",
+        "1",
+        "--band",
+        "4 %",
+        "--csv",
+        str(path),
+    )
     lines = doc["mask"]["lines"]
     assert doc["mask"]["band_percent"] == pytest.approx(4.0)
-    m = kinematics.spectral_mask(2 * math.pi * 50, 7.94e-3, 39.04e-3, 9, 0.0, harmonics=2, sidebands=1, band=0.04)
+    m = kinematics.spectral_mask(
+        2 * math.pi * 50, 7.94e-3, 39.04e-3, 9, 0.0, harmonics=2, sidebands=1, band=0.04
+    )
     assert len(lines) == len(m.name)
     for line, f, lo, hi, name in zip(lines, m.frequency, m.low, m.high, m.name):
         assert line["name"] == name
@@ -97,8 +138,21 @@ def test_mask_json_and_csv(capsys, tmp_path):
 
 
 def test_human_output(capsys, tmp_path):
-    code, out, err = run(capsys, "frequencies", "-b", "4-1006095", "--speed", "3000 rpm", "-F", "2 kgf", "--mask",
-                         "--harmonics", "1", "--csv", str(tmp_path / "m.csv"))
+    code, out, err = run(
+        capsys,
+        "frequencies",
+        "-b",
+        "4-1006095",
+        "--speed",
+        "3000 rpm",
+        "-F",
+        "2 kgf",
+        "--mask",
+        "--harmonics",
+        "1",
+        "--csv",
+        str(tmp_path / "m.csv"),
+    )
     assert code == 0, err
     assert "BPFI" in out and "2·BSF" in out and "Spectral mask" in out and "shift" in out
     assert "214.1908" in out  # nominal BPFI [Hz] at 3000 rpm, 12 deg
@@ -107,47 +161,183 @@ def test_human_output(capsys, tmp_path):
 
 
 def test_inline_geometry(capsys):
-    doc = run_json(capsys, "frequencies", "--balls", "9", "--ball-diameter", "7.94 mm", "--pitch-diameter",
-                   "39.04 mm", "--contact-angle", "0 deg", "--speed", "1797 rpm")
+    doc = run_json(
+        capsys,
+        "frequencies",
+        "--balls",
+        "9",
+        "--ball-diameter",
+        "7.94 mm",
+        "--pitch-diameter",
+        "39.04 mm",
+        "--contact-angle",
+        "0 deg",
+        "--speed",
+        "1797 rpm",
+    )
     assert f"{doc['bpfi_order']:.4f}" == "5.4152"
 
 
-@pytest.mark.parametrize("argv, match", [
-    (["-b", "nope", "--speed", "3000 rpm"], r"unknown name 'nope'; known: .*6205-2RS"),
-    (["-b", "6205-2RS", "--speed", "3000 m"], r"speed: '3000 m' is a length, expected a speed"),
-    (["-b", "6205-2RS", "--speed", "3000"], r"speed: '3000' has no unit"),
-    (["-b", "6205-2RS", "--speed", "3000 rpm", "--outer-speed", "3000 rpm"], r"rings must turn relative"),
-    (["-b", "6205-2RS", "--speed", "3000 rpm", "--band", "0 %"], r"band must be in \(0, 200\) \[%\], got 0 %"),
-    (["-b", "6205-2RS", "--speed", "3000 rpm", "--band", "wide"], r"band: cannot read 'wide'"),
-    (["-b", "6205-2RS", "--speed", "3000 rpm", "--harmonics", "0"], r"harmonics must be an integer >= 1"),
-    (["-b", "6205-2RS", "--speed", "3000 rpm", "--sidebands", "-1"], r"sidebands must be an integer >= 0"),
-    (["-b", "4-1006095", "--speed", "3000 rpm", "-F", "2 m"], r"axial-load: '2 m' is a length, expected a force"),
-    (["-b", "4-1006095", "--speed", "3000 rpm", "-F", "0 kgf"], r"axial-load must be > 0 \[N\], got 0.0"),
-    (["-b", "4-1006095", "--speed", "3000 rpm", "-F", "-1 N"], r"axial-load must be > 0 \[N\]"),
-    (["-b", "4-1006095", "--speed", "3000 rpm", "-F", "2 kgf", "--hertz", "rough"], r"hertz must be one of"),
-    # the axial-load method needs the groove conformities (not in the CWRU data) ...
-    (["-b", "6205-2RS", "--speed", "3000 rpm", "-F", "2 kgf"], r"inner_conformity of '6205-2RS' is not known"),
-    # ... and a nominal angle in (0, 90 deg)
-    (["-b", "6205-2RS", "--inner-conformity", "0.52", "--outer-conformity", "0.53", "--speed", "3000 rpm",
-      "-F", "2 kgf"], r"contact_angle must be in \(0, 90\) \[deg\] for the axial-load method, got 0"),
-    # the friction-rig bearings have no ball set in the catalog
-    (["-b", "18", "--speed", "3000 rpm"], r"n_balls of '18' is not known"),
-    (["--balls", "0", "--ball-diameter", "2 mm", "--pitch-diameter", "9 mm", "--contact-angle", "0 deg",
-      "--speed", "3000 rpm"], r"n_balls must be an integer >= 1"),
-    (["--balls", "7", "--ball-diameter", "9 mm", "--pitch-diameter", "9 mm", "--contact-angle", "0 deg",
-      "--speed", "3000 rpm"], r"pitch_diameter must be > ball_diameter"),
-    (["--balls", "7", "--ball-diameter", "-2 mm", "--pitch-diameter", "9 mm", "--contact-angle", "0 deg",
-      "--speed", "3000 rpm"], r"ball_diameter must be > 0"),
-    (["--balls", "7", "--ball-diameter", "2 mm", "--pitch-diameter", "9 mm", "--contact-angle", "95 deg",
-      "--speed", "3000 rpm"], r"contact_angle must be in \[0, 90\)"),
-    (["--balls", "7", "--ball-diameter", "2 mm", "--pitch-diameter", "9 mm", "--inner-conformity", "0.5",
-      "--outer-conformity", "0.52", "--contact-angle", "10 deg", "--speed", "3000 rpm"],
-     r"inner_conformity must be in \(0.5, 10\)"),
-    (["--balls", "7", "--ball-diameter", "2 mm", "--pitch-diameter", "9 mm", "--inner-conformity", "0.52",
-      "--outer-conformity", "0.52", "--radial-clearance", "0.5 mm", "--speed", "3000 rpm"],
-     r"radial_clearance must be in \(0, 0.32\) \[mm\] to give a real contact angle, got 0.5 mm"),
-    (["--speed", "3000 rpm"], r"bearing: give --bearing NAME"),
-])
+@pytest.mark.parametrize(
+    "argv, match",
+    [
+        (["-b", "nope", "--speed", "3000 rpm"], r"unknown name 'nope'; known: .*6205-2RS"),
+        (["-b", "6205-2RS", "--speed", "3000 m"], r"speed: '3000 m' is a length, expected a speed"),
+        (["-b", "6205-2RS", "--speed", "3000"], r"speed: '3000' has no unit"),
+        (
+            ["-b", "6205-2RS", "--speed", "3000 rpm", "--outer-speed", "3000 rpm"],
+            r"rings must turn relative",
+        ),
+        (
+            ["-b", "6205-2RS", "--speed", "3000 rpm", "--band", "0 %"],
+            r"band must be in \(0, 200\) \[%\], got 0 %",
+        ),
+        (["-b", "6205-2RS", "--speed", "3000 rpm", "--band", "wide"], r"band: cannot read 'wide'"),
+        (
+            ["-b", "6205-2RS", "--speed", "3000 rpm", "--harmonics", "0"],
+            r"harmonics must be an integer >= 1",
+        ),
+        (
+            ["-b", "6205-2RS", "--speed", "3000 rpm", "--sidebands", "-1"],
+            r"sidebands must be an integer >= 0",
+        ),
+        (
+            ["-b", "4-1006095", "--speed", "3000 rpm", "-F", "2 m"],
+            r"axial-load: '2 m' is a length, expected a force",
+        ),
+        (
+            ["-b", "4-1006095", "--speed", "3000 rpm", "-F", "0 kgf"],
+            r"axial-load must be > 0 \[N\], got 0.0",
+        ),
+        (["-b", "4-1006095", "--speed", "3000 rpm", "-F", "-1 N"], r"axial-load must be > 0 \[N\]"),
+        (
+            ["-b", "4-1006095", "--speed", "3000 rpm", "-F", "2 kgf", "--hertz", "rough"],
+            r"hertz must be one of",
+        ),
+        # the axial-load method needs the groove conformities (not in the CWRU data) ...
+        (
+            ["-b", "6205-2RS", "--speed", "3000 rpm", "-F", "2 kgf"],
+            r"inner_conformity of '6205-2RS' is not known",
+        ),
+        # ... and a nominal angle in (0, 90 deg)
+        (
+            [
+                "-b",
+                "6205-2RS",
+                "--inner-conformity",
+                "0.52",
+                "--outer-conformity",
+                "0.53",
+                "--speed",
+                "3000 rpm",
+                "-F",
+                "2 kgf",
+            ],
+            r"contact_angle must be in \(0, 90\) \[deg\] for the axial-load method, got 0",
+        ),
+        # the friction-rig bearings have no ball set in the catalog
+        (["-b", "18", "--speed", "3000 rpm"], r"n_balls of '18' is not known"),
+        (
+            [
+                "--balls",
+                "0",
+                "--ball-diameter",
+                "2 mm",
+                "--pitch-diameter",
+                "9 mm",
+                "--contact-angle",
+                "0 deg",
+                "--speed",
+                "3000 rpm",
+            ],
+            r"n_balls must be an integer >= 1",
+        ),
+        (
+            [
+                "--balls",
+                "7",
+                "--ball-diameter",
+                "9 mm",
+                "--pitch-diameter",
+                "9 mm",
+                "--contact-angle",
+                "0 deg",
+                "--speed",
+                "3000 rpm",
+            ],
+            r"pitch_diameter must be > ball_diameter",
+        ),
+        (
+            [
+                "--balls",
+                "7",
+                "--ball-diameter",
+                "-2 mm",
+                "--pitch-diameter",
+                "9 mm",
+                "--contact-angle",
+                "0 deg",
+                "--speed",
+                "3000 rpm",
+            ],
+            r"ball_diameter must be > 0",
+        ),
+        (
+            [
+                "--balls",
+                "7",
+                "--ball-diameter",
+                "2 mm",
+                "--pitch-diameter",
+                "9 mm",
+                "--contact-angle",
+                "95 deg",
+                "--speed",
+                "3000 rpm",
+            ],
+            r"contact_angle must be in \[0, 90\)",
+        ),
+        (
+            [
+                "--balls",
+                "7",
+                "--ball-diameter",
+                "2 mm",
+                "--pitch-diameter",
+                "9 mm",
+                "--inner-conformity",
+                "0.5",
+                "--outer-conformity",
+                "0.52",
+                "--contact-angle",
+                "10 deg",
+                "--speed",
+                "3000 rpm",
+            ],
+            r"inner_conformity must be in \(0.5, 10\)",
+        ),
+        (
+            [
+                "--balls",
+                "7",
+                "--ball-diameter",
+                "2 mm",
+                "--pitch-diameter",
+                "9 mm",
+                "--inner-conformity",
+                "0.52",
+                "--outer-conformity",
+                "0.52",
+                "--radial-clearance",
+                "0.5 mm",
+                "--speed",
+                "3000 rpm",
+            ],
+            r"radial_clearance must be in \(0, 0.32\) \[mm\] to give a real contact angle, got 0.5 mm",
+        ),
+        (["--speed", "3000 rpm"], r"bearing: give --bearing NAME"),
+    ],
+)
 def test_bad_input_one_line_exit_2(capsys, argv, match):
     code, out, err = run(capsys, "frequencies", *argv)
     assert code == 2
@@ -158,20 +348,24 @@ def test_bad_input_one_line_exit_2(capsys, argv, match):
 
 
 def test_missing_speed_is_a_usage_error(capsys):
-    code, out, err = run(capsys, "frequencies", "-b", "6205-2RS")
+    code, _out, err = run(capsys, "frequencies", "-b", "6205-2RS")
     assert code == 2 and "Traceback" not in err and "--speed" in err
     assert len(err.strip().splitlines()) == 1
 
 
 def test_bad_option_type_is_a_usage_error(capsys):
-    code, out, err = run(capsys, "frequencies", "-b", "6205-2RS", "--speed", "1 rpm", "--harmonics", "many")
+    code, _out, err = run(
+        capsys, "frequencies", "-b", "6205-2RS", "--speed", "1 rpm", "--harmonics", "many"
+    )
     assert code == 2 and "Traceback" not in err and "--harmonics" in err
     assert len(err.strip().splitlines()) == 1
 
 
 def test_csv_to_missing_directory_writes_nothing(capsys, tmp_path):
     target = tmp_path / "no" / "mask.csv"
-    code, out, err = run(capsys, "frequencies", "-b", "6205-2RS", "--speed", "3000 rpm", "--csv", str(target))
+    code, _out, err = run(
+        capsys, "frequencies", "-b", "6205-2RS", "--speed", "3000 rpm", "--csv", str(target)
+    )
     assert code == 2 and "does not exist" in err and len(err.strip().splitlines()) == 1
     assert not target.exists()
 
@@ -186,7 +380,9 @@ def test_csv_failure_keeps_the_old_file(capsys, tmp_path, monkeypatch):
     import bearinglab._cli_frequencies as mod
 
     monkeypatch.setattr(mod.os, "replace", broken)
-    code, out, err = run(capsys, "frequencies", "-b", "6205-2RS", "--speed", "3000 rpm", "--csv", str(target))
+    code, _out, err = run(
+        capsys, "frequencies", "-b", "6205-2RS", "--speed", "3000 rpm", "--csv", str(target)
+    )
     assert code == 2 and "No space left" in err
     assert target.read_text() == "old contents\n"
     assert [p.name for p in tmp_path.iterdir()] == ["mask.csv"]

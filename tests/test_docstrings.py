@@ -28,7 +28,7 @@ def documented_parameters(doc):
             continue
         end = headers[i + 1].start() if i + 1 < len(headers) else len(doc)
         names = []
-        for line in doc[h.end():end].splitlines():
+        for line in doc[h.end() : end].splitlines():
             if not line.strip() or line[:1].isspace():  # descriptions are indented
                 continue
             m = _PARAM_LINE.match(line.strip())
@@ -43,8 +43,11 @@ def signature_parameters(obj):
         sig = inspect.signature(obj)
     except (TypeError, ValueError):
         return None
-    return [p.name for p in sig.parameters.values()
-            if p.name not in ("self", "cls") and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)]
+    return [
+        p.name
+        for p in sig.parameters.values()
+        if p.name not in ("self", "cls") and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)
+    ]
 
 
 def _public_modules():
@@ -60,14 +63,16 @@ def _cases():
     for name in _public_modules():
         try:
             module = importlib.import_module(name)
-        except Exception as exc:  # a module mid-work must not hide the others
+        except Exception as exc:  # noqa: BLE001 - a module mid-work must not hide the others
             cases.append(pytest.param(name, None, exc, id=f"{name}:<import>"))
             continue
         for attr in getattr(module, "__all__", []):
             obj = getattr(module, attr, None)
             if getattr(obj, "__module__", None) != name:
                 continue  # re-exported or a constant: checked where it is defined
-            if inspect.isfunction(obj) or (inspect.isclass(obj) and documented_parameters(obj.__doc__) is not None):
+            if inspect.isfunction(obj) or (
+                inspect.isclass(obj) and documented_parameters(obj.__doc__) is not None
+            ):
                 cases.append(pytest.param(name, attr, None, id=f"{name}.{attr}"))
     return cases
 
@@ -90,11 +95,17 @@ def test_docstring_documents_exactly_the_signature(module_name, attr, import_err
     assert obj.__doc__, f"{module_name}.{attr} has no docstring"
     if not expected and documented is None:
         return  # no parameters, none documented
-    assert documented is not None, f"{module_name}.{attr}: no Parameters section; signature has {expected}"
+    assert documented is not None, (
+        f"{module_name}.{attr}: no Parameters section; signature has {expected}"
+    )
     missing = [n for n in expected if n not in documented]
     extra = [n for n in documented if n not in expected]
-    assert not missing and not extra, f"{module_name}.{attr}: undocumented {missing}, documented but absent {extra}"
-    assert len(documented) == len(set(documented)), f"{module_name}.{attr}: a parameter is documented twice"
+    assert not missing and not extra, (
+        f"{module_name}.{attr}: undocumented {missing}, documented but absent {extra}"
+    )
+    assert len(documented) == len(set(documented)), (
+        f"{module_name}.{attr}: a parameter is documented twice"
+    )
 
 
 # --------------------------------------------------------------------------- the parser itself

@@ -20,10 +20,14 @@ SETTINGS = settings(max_examples=40, deadline=None)
 # ------------------------------------------------------------------------------- spec 000 section 4
 def test_clearance_of_the_example_is_9_178_um():
     e = geometry.radial_clearance(A0, D, FI, FO)
-    assert f"{e * 1e6:.3f}" == "9.178"  # printed to the micrometre's thousandth (spec 000 section 4)
+    assert (
+        f"{e * 1e6:.3f}" == "9.178"
+    )  # printed to the micrometre's thousandth (spec 000 section 4)
     # and back: 9.178 um gives 12 deg to the precision of the printed clearance; de/dalpha = 2 B D sin(alpha0)
     # = 87.3 um/rad, so +-0.5 nm is +-5.7e-6 rad = +-3.3e-4 deg
-    assert math.degrees(geometry.free_contact_angle(9.178e-6, D, FI, FO)) == pytest.approx(12.0, abs=3.3e-4)
+    assert math.degrees(geometry.free_contact_angle(9.178e-6, D, FI, FO)) == pytest.approx(
+        12.0, abs=3.3e-4
+    )
 
 
 def test_052_shortcut_gives_19_50_deg():
@@ -31,18 +35,26 @@ def test_052_shortcut_gives_19_50_deg():
     e = geometry.radial_clearance(A0, D, FI, FO)
     assert f"{math.degrees(geometry.free_contact_angle_052(e, D)):.2f}" == "19.50"
     # the shortcut is the exact formula with both radii 0.52 D
-    assert geometry.free_contact_angle_052(e, D) == pytest.approx(geometry.free_contact_angle(e, D, 0.52, 0.52),
-                                                                  rel=1e-14)
+    assert geometry.free_contact_angle_052(e, D) == pytest.approx(
+        geometry.free_contact_angle(e, D, 0.52, 0.52), rel=1e-14
+    )
 
 
 @SETTINGS
-@given(a0=st.floats(1e-3, 1.55), fi=st.floats(0.501, 0.6), fo=st.floats(0.501, 0.6), d=st.floats(1e-4, 0.1))
+@given(
+    a0=st.floats(1e-3, 1.55),
+    fi=st.floats(0.501, 0.6),
+    fo=st.floats(0.501, 0.6),
+    d=st.floats(1e-4, 0.1),
+)
 def test_clearance_angle_round_trip(a0, fi, fo, d):
     e = geometry.radial_clearance(a0, d, fi, fo)
     assert geometry.free_contact_angle(e, d, fi, fo) == pytest.approx(a0, rel=1e-9)
     # axial play, Harris eq. 2.13 written with the clearance: P_e = (4 A P_d - P_d^2)^(1/2), A = B D
     a = (fi + fo - 1.0) * d
-    assert geometry.axial_play(a0, d, fi, fo) == pytest.approx(math.sqrt(4 * a * e - e * e), rel=1e-9)
+    assert geometry.axial_play(a0, d, fi, fo) == pytest.approx(
+        math.sqrt(4 * a * e - e * e), rel=1e-9
+    )
 
 
 def test_total_curvature_and_pitch_ratio():
@@ -52,10 +64,13 @@ def test_total_curvature_and_pitch_ratio():
 
 
 # ----------------------------------------------------------------------------- spec 000 section 5.1
-@pytest.mark.parametrize("race, cos_tau, sum_rho", [
-    ("inner", 0.9287242, 1.3361919),  # printed; Sigma rho in 1/mm
-    ("outer", 0.7111268, 0.9549594),
-])
+@pytest.mark.parametrize(
+    "race, cos_tau, sum_rho",
+    [
+        ("inner", 0.9287242, 1.3361919),  # printed; Sigma rho in 1/mm
+        ("outer", 0.7111268, 0.9549594),
+    ],
+)
 def test_curvature_of_the_example_matches_print(race, cos_tau, sum_rho):
     c = geometry.raceway_curvature(D, DM, FI if race == "inner" else FO, A0, race=race)
     # tolerance 2e-7 abs: spec 000 section 8 (the print is off by one unit in the 7th decimal twice, 9.11)
@@ -76,8 +91,13 @@ def _principal(d, dm, f, alpha, race):
 
 
 @SETTINGS
-@given(d=st.floats(1e-3, 0.05), ratio=st.floats(1.2, 15), f=st.floats(0.505, 0.6), alpha=st.floats(0, 1.5),
-       race=st.sampled_from(["inner", "outer"]))
+@given(
+    d=st.floats(1e-3, 0.05),
+    ratio=st.floats(1.2, 15),
+    f=st.floats(0.505, 0.6),
+    alpha=st.floats(0, 1.5),
+    race=st.sampled_from(["inner", "outer"]),
+)
 def test_curvature_from_principal_radii(d, ratio, f, alpha, race):
     c = geometry.raceway_curvature(d, d * ratio, f, alpha, race=race)
     total, diff = _principal(d, d * ratio, f, alpha, race)
@@ -124,8 +144,10 @@ def test_groove_centre_circles_and_the_catalogue_m():
 
 def test_catalogue_m_give_the_unprinted_curvatures():
     # spec 000 section 5.1: with the catalogue m the paper's formulas give these (not the print)
-    for race, m, xi, want_cos, want_sum in (("inner", 8.831 / (2 * math.cos(A0)), FI, 0.9287295, 1.3362906),
-                                            ("outer", 8.42 / (2 * math.cos(A0)), FO, 0.7111140, 0.9549167)):
+    for race, m, xi, want_cos, want_sum in (
+        ("inner", 8.831 / (2 * math.cos(A0)), FI, 0.9287295, 1.3362906),
+        ("outer", 8.42 / (2 * math.cos(A0)), FO, 0.7111140, 0.9549167),
+    ):
         cos_tau, sum_rho_d = _paper_m_form(m, xi, race)
         assert cos_tau == pytest.approx(want_cos, abs=1e-7)
         assert sum_rho_d / 2.0 == pytest.approx(want_sum, abs=1e-7)  # d = 2 mm
@@ -136,30 +158,68 @@ def test_vectorized_curvature():
     c = geometry.raceway_curvature(D, DM, FI, angles, race="inner")
     for i, a in enumerate(angles):
         one = geometry.raceway_curvature(D, DM, FI, a, race="inner")
-        assert c.curvature_sum[i] == one.curvature_sum and c.curvature_difference[i] == one.curvature_difference
+        assert (
+            c.curvature_sum[i] == one.curvature_sum
+            and c.curvature_difference[i] == one.curvature_difference
+        )
 
 
 # ------------------------------------------------------------------------------------------ bad input
-@pytest.mark.parametrize("call, match", [
-    (lambda: geometry.total_curvature(0.5, 0.52), r"inner_conformity must be in \(0.5, inf\) \[-\], got 0.5"),
-    (lambda: geometry.total_curvature(0.52, 0.3), r"outer_conformity must be in \(0.5, inf\) \[-\], got 0.3"),
-    (lambda: geometry.raceway_curvature(D, D, FI, A0, race="inner"),
-     r"pitch_diameter must be > ball_diameter \[m\], got 0.002 with ball_diameter = 0.002"),
-    (lambda: geometry.pitch_ratio(D, 1e-3, A0), r"pitch_diameter must be > ball_diameter"),
-    (lambda: geometry.raceway_curvature(D, DM, 0.49, A0, race="outer"), r"conformity must be in \(0.5, inf\)"),
-    (lambda: geometry.raceway_curvature(D, DM, FI, A0, race="middle"),
-     r"race must be one of \['inner', 'outer'\], got 'middle'"),
-    (lambda: geometry.raceway_curvature(-D, DM, FI, A0, race="inner"), r"ball_diameter must be > 0 \[m\], got -0.002"),
-    # clearance with no real contact angle: e must be < 4 B D = 0.84 mm (spec 000 section 4)
-    (lambda: geometry.free_contact_angle(0.9e-3, D, FI, FO),
-     r"radial_clearance must be in \(0, 0.84\) \[mm\] to give a real contact angle, got 0.9 mm"),
-    (lambda: geometry.free_contact_angle(0.0, D, FI, FO), r"radial_clearance must be > 0 \[m\], got 0.0"),
-    (lambda: geometry.free_contact_angle_052(0.33e-3, D),
-     r"radial_clearance must be in \(0, 0.32\) \[mm\] to give a real contact angle, got 0.33 mm"),
-    (lambda: geometry.radial_clearance(math.radians(90), D, FI, FO), r"free_angle must be in \[0, 90\) \[deg\], got 90.0"),
-    (lambda: geometry.axial_play(-0.01, D, FI, FO), r"free_angle must be in \[0, 90\) \[deg\], got -0.57"),
-    (lambda: geometry.groove_centre_diameters(D, DM, 0.5, FO, A0), r"inner_conformity must be in \(0.5, inf\)"),
-])
+@pytest.mark.parametrize(
+    "call, match",
+    [
+        (
+            lambda: geometry.total_curvature(0.5, 0.52),
+            r"inner_conformity must be in \(0.5, inf\) \[-\], got 0.5",
+        ),
+        (
+            lambda: geometry.total_curvature(0.52, 0.3),
+            r"outer_conformity must be in \(0.5, inf\) \[-\], got 0.3",
+        ),
+        (
+            lambda: geometry.raceway_curvature(D, D, FI, A0, race="inner"),
+            r"pitch_diameter must be > ball_diameter \[m\], got 0.002 with ball_diameter = 0.002",
+        ),
+        (lambda: geometry.pitch_ratio(D, 1e-3, A0), r"pitch_diameter must be > ball_diameter"),
+        (
+            lambda: geometry.raceway_curvature(D, DM, 0.49, A0, race="outer"),
+            r"conformity must be in \(0.5, inf\)",
+        ),
+        (
+            lambda: geometry.raceway_curvature(D, DM, FI, A0, race="middle"),
+            r"race must be one of \['inner', 'outer'\], got 'middle'",
+        ),
+        (
+            lambda: geometry.raceway_curvature(-D, DM, FI, A0, race="inner"),
+            r"ball_diameter must be > 0 \[m\], got -0.002",
+        ),
+        # clearance with no real contact angle: e must be < 4 B D = 0.84 mm (spec 000 section 4)
+        (
+            lambda: geometry.free_contact_angle(0.9e-3, D, FI, FO),
+            r"radial_clearance must be in \(0, 0.84\) \[mm\] to give a real contact angle, got 0.9 mm",
+        ),
+        (
+            lambda: geometry.free_contact_angle(0.0, D, FI, FO),
+            r"radial_clearance must be > 0 \[m\], got 0.0",
+        ),
+        (
+            lambda: geometry.free_contact_angle_052(0.33e-3, D),
+            r"radial_clearance must be in \(0, 0.32\) \[mm\] to give a real contact angle, got 0.33 mm",
+        ),
+        (
+            lambda: geometry.radial_clearance(math.radians(90), D, FI, FO),
+            r"free_angle must be in \[0, 90\) \[deg\], got 90.0",
+        ),
+        (
+            lambda: geometry.axial_play(-0.01, D, FI, FO),
+            r"free_angle must be in \[0, 90\) \[deg\], got -0.57",
+        ),
+        (
+            lambda: geometry.groove_centre_diameters(D, DM, 0.5, FO, A0),
+            r"inner_conformity must be in \(0.5, inf\)",
+        ),
+    ],
+)
 def test_bad_input(call, match):
     with pytest.raises(InputError, match=match):
         call()

@@ -8,7 +8,7 @@ classical sphere-on-flat solution, round trips and properties.
 
 import csv
 import math
-from functools import lru_cache
+from functools import cache
 from pathlib import Path
 
 import numpy as np
@@ -29,13 +29,25 @@ SETTINGS = settings(max_examples=40, deadline=None)
 
 # ------------------------------------------------------------------------- independent evaluation
 def _k(m):
-    return quad(lambda t: 1.0 / math.sqrt(1.0 - m * math.sin(t) ** 2), 0.0, math.pi / 2, epsabs=0, epsrel=1e-13,
-                limit=200)[0]
+    return quad(
+        lambda t: 1.0 / math.sqrt(1.0 - m * math.sin(t) ** 2),
+        0.0,
+        math.pi / 2,
+        epsabs=0,
+        epsrel=1e-13,
+        limit=200,
+    )[0]
 
 
 def _e(m):
-    return quad(lambda t: math.sqrt(1.0 - m * math.sin(t) ** 2), 0.0, math.pi / 2, epsabs=0, epsrel=1e-13,
-                limit=200)[0]
+    return quad(
+        lambda t: math.sqrt(1.0 - m * math.sin(t) ** 2),
+        0.0,
+        math.pi / 2,
+        epsabs=0,
+        epsrel=1e-13,
+        limit=200,
+    )[0]
 
 
 def _f_of_kappa(kappa):
@@ -44,10 +56,12 @@ def _f_of_kappa(kappa):
     return ((kappa**2 + 1.0) * e - 2.0 * k) / ((kappa**2 - 1.0) * e)
 
 
-@lru_cache(maxsize=None)
+@cache
 def independent(f):
     """kappa, a*, b*, delta* from F(rho) by quadrature and brentq (spec 000 section 5.2)."""
-    kappa = brentq(lambda x: _f_of_kappa(x) - f, 1.0 + 1e-6, 1e3, xtol=1e-15, rtol=1e-15, maxiter=500)
+    kappa = brentq(
+        lambda x: _f_of_kappa(x) - f, 1.0 + 1e-6, 1e3, xtol=1e-15, rtol=1e-15, maxiter=500
+    )
     m = 1.0 - 1.0 / kappa**2
     k, e = _k(m), _e(m)
     a_star = (2.0 * kappa**2 * e / math.pi) ** (1 / 3)
@@ -77,14 +91,22 @@ def test_vectorized_inversion_matches_elementwise():
             # the Newton stop is on m to 1e-14 for the whole array at once; kappa = (1 - m)^-1/2
             # amplifies that by 1 / (2 (1 - m)): ~2e-13 at F = 0.9, ~5e-11 at F = 0.999 (kappa = 100)
             rtol = 1e-14 / (2.0 / one.ellipticity**2) * 2
-            assert getattr(got, name)[0, j] == pytest.approx(getattr(one, name), rel=rtol), (name, fj)
+            assert getattr(got, name)[0, j] == pytest.approx(getattr(one, name), rel=rtol), (
+                name,
+                fj,
+            )
 
 
 @pytest.mark.parametrize("row", SPEC_TABLE, ids=[r["contact"] for r in SPEC_TABLE])
 def test_spec000_table_of_section_5_2(row):
     c = hertz.coefficients(float(row["cos_tau"]))
-    got = {"kappa": c.ellipticity, "mu": c.a_star, "nu": c.b_star, "mu_nu": c.a_star * c.b_star,
-           "delta_star": c.delta_star}
+    got = {
+        "kappa": c.ellipticity,
+        "mu": c.a_star,
+        "nu": c.b_star,
+        "mu_nu": c.a_star * c.b_star,
+        "delta_star": c.delta_star,
+    }
     for name, value in got.items():
         printed = row[name]
         half_unit = 0.5 * 10.0 ** -len(printed.split(".")[1])  # tolerance: the printed digits
@@ -107,7 +129,9 @@ def test_zero_curvature_difference_is_a_circle():
 
 
 def test_ellipticity_reports_non_convergence():
-    with pytest.raises(ConvergenceError, match="hertz.ellipticity: no convergence after 1 iterations") as info:
+    with pytest.raises(
+        ConvergenceError, match="hertz.ellipticity: no convergence after 1 iterations"
+    ) as info:
         hertz.ellipticity(np.array([0.5, 0.9]), max_iter=1)
     assert info.value.iterations == 1
     assert np.shape(info.value.estimate) == (2,) and np.all(info.value.estimate > 1)
@@ -121,7 +145,9 @@ def test_sphere_on_flat_is_classical_hertz():
     e_star = e_red / 2
     c = hertz.point_contact(q, 2.0 / r, 0.0, e_red)
     a = (3 * q * r / (4 * e_star)) ** (1 / 3)
-    assert_allclose([c.a, c.b, c.delta, c.p_max], [a, a, a * a / r, 3 * q / (2 * math.pi * a * a)], rtol=1e-13)
+    assert_allclose(
+        [c.a, c.b, c.delta, c.p_max], [a, a, a * a / r, 3 * q / (2 * math.pi * a * a)], rtol=1e-13
+    )
 
 
 def test_point_contact_with_the_independent_coefficients():
@@ -129,7 +155,11 @@ def test_point_contact_with_the_independent_coefficients():
     kappa, a_star, b_star, delta_star = independent(f)
     base = (3 * q / (e_red * s)) ** (1 / 3)  # Harris eqs. 6.38-6.43
     c = hertz.point_contact(q, s, f, e_red)
-    assert_allclose([c.a, c.b, c.delta], [a_star * base, b_star * base, delta_star * base**2 * s / 2], rtol=1e-11)
+    assert_allclose(
+        [c.a, c.b, c.delta],
+        [a_star * base, b_star * base, delta_star * base**2 * s / 2],
+        rtol=1e-11,
+    )
     assert c.a / c.b == pytest.approx(kappa, rel=1e-11)
     assert c.p_max == pytest.approx(3 * q / (2 * math.pi * c.a * c.b), rel=1e-14)
 
@@ -150,8 +180,12 @@ def test_tabulated_override():
 
 
 @SETTINGS
-@given(q=st.floats(1e-3, 1e5), s=st.floats(10.0, 1e4), f=st.floats(0.0, 0.995),
-       e_red=st.floats(5e10, 5e11))
+@given(
+    q=st.floats(1e-3, 1e5),
+    s=st.floats(10.0, 1e4),
+    f=st.floats(0.0, 0.995),
+    e_red=st.floats(5e10, 5e11),
+)
 def test_load_deflection_round_trip(q, s, f, e_red):
     c = hertz.point_contact(q, s, f, e_red)
     k = hertz.load_deflection_constant(s, f, e_red)
@@ -194,7 +228,9 @@ def test_load_scaling(q, factor):
 
 
 def test_reduced_modulus():
-    assert hertz.reduced_modulus(2.075e11, 0.3, 2.075e11, 0.3) == pytest.approx(2.075e11 / 0.91, rel=1e-15)
+    assert hertz.reduced_modulus(2.075e11, 0.3, 2.075e11, 0.3) == pytest.approx(
+        2.075e11 / 0.91, rel=1e-15
+    )
     hybrid = hertz.reduced_modulus(3.1e11, 0.26, 2.075e11, 0.3)
     assert hybrid == pytest.approx(2 / ((1 - 0.26**2) / 3.1e11 + 0.91 / 2.075e11), rel=1e-15)
     assert hybrid == hertz.reduced_modulus(2.075e11, 0.3, 3.1e11, 0.26)
@@ -209,7 +245,9 @@ def test_steel_constants_of_the_handbooks():
     k = hertz.load_deflection_constant(1e3, 0.0, e_red)  # N/m^1.5 with Sigma rho = 1 /mm
     assert k * 1e-3**1.5 == pytest.approx(2.15e5, abs=0.005e5)
     # spec 000 section 5.3: 0.592e-4 (cm^2/kgf)^(2/3) is (3/E')^(2/3)/2 for steel, E = 2.078e5 MPa
-    c = hertz.approach_coefficient(1.0, 1.0, 0.0, hertz.reduced_modulus(2.078e11, 0.3, 2.078e11, 0.3))
+    c = hertz.approach_coefficient(
+        1.0, 1.0, 0.0, hertz.reduced_modulus(2.078e11, 0.3, 2.078e11, 0.3)
+    )
     cm_kgf = (1e-2) ** (4 / 3) / 9.80665 ** (2 / 3)  # (m^2/N)^(2/3) per (cm^2/kgf)^(2/3)
     assert c / cm_kgf == pytest.approx(0.592e-4, abs=0.0005e-4)
 
@@ -218,25 +256,56 @@ def test_approach_coefficient_definition():
     # delta / D = c (Q / D^2)^(2/3), the same approach as point_contact
     d, s, f, e_red, q = 2e-3, 1336.19, 0.9287242, 2.28e11, 20.0
     c = hertz.approach_coefficient(d, s, f, e_red)
-    assert d * c * (q / d**2) ** (2 / 3) == pytest.approx(hertz.point_contact(q, s, f, e_red).delta, rel=1e-13)
+    assert d * c * (q / d**2) ** (2 / 3) == pytest.approx(
+        hertz.point_contact(q, s, f, e_red).delta, rel=1e-13
+    )
 
 
 # ------------------------------------------------------------------------------------------ bad input
-@pytest.mark.parametrize("call, match", [
-    (lambda: hertz.ellipticity(1.0), r"curvature_difference must be in \[0, 1\) \[-\], got 1.0"),
-    (lambda: hertz.ellipticity([0.5, -0.1]), r"curvature_difference must be >= 0 \[-\], got -0.1"),
-    (lambda: hertz.coefficients(float("nan")), r"curvature_difference must be >= 0 \[-\], got nan"),
-    (lambda: hertz.point_contact(-1.0, 100.0, 0.5, 2e11), r"load must be >= 0 \[N\], got -1.0"),
-    (lambda: hertz.point_contact(1.0, 0.0, 0.5, 2e11), r"curvature_sum must be > 0 \[1/m\], got 0.0"),
-    (lambda: hertz.point_contact(1.0, 100.0, 0.5, -2e11), r"reduced_modulus must be > 0 \[Pa\]"),
-    (lambda: hertz.load_deflection_constant(-5.0, 0.5, 2e11), r"curvature_sum must be > 0"),
-    (lambda: hertz.approach_coefficient(0.0, 100.0, 0.5, 2e11), r"ball_diameter must be > 0 \[m\]"),
-    (lambda: hertz.tabulated(0.0), r"delta_star must be > 0 \[-\], got 0.0"),
-    (lambda: hertz.reduced_modulus(0.0, 0.3, 2e11, 0.3), r"elastic_modulus_1 must be > 0 \[Pa\]"),
-    (lambda: hertz.reduced_modulus([2e11, 2e11], [0.3, 0.6], 2e11, 0.3),
-     r"poisson_ratio_1 must be in \(-1, 0.5\) \[-\], got 0.6"),
-    (lambda: hertz.reduced_modulus(2e11, 0.3, 2e11, -1.0), r"poisson_ratio_2 must be in \(-1, 0.5\)"),
-])
+@pytest.mark.parametrize(
+    "call, match",
+    [
+        (
+            lambda: hertz.ellipticity(1.0),
+            r"curvature_difference must be in \[0, 1\) \[-\], got 1.0",
+        ),
+        (
+            lambda: hertz.ellipticity([0.5, -0.1]),
+            r"curvature_difference must be >= 0 \[-\], got -0.1",
+        ),
+        (
+            lambda: hertz.coefficients(float("nan")),
+            r"curvature_difference must be >= 0 \[-\], got nan",
+        ),
+        (lambda: hertz.point_contact(-1.0, 100.0, 0.5, 2e11), r"load must be >= 0 \[N\], got -1.0"),
+        (
+            lambda: hertz.point_contact(1.0, 0.0, 0.5, 2e11),
+            r"curvature_sum must be > 0 \[1/m\], got 0.0",
+        ),
+        (
+            lambda: hertz.point_contact(1.0, 100.0, 0.5, -2e11),
+            r"reduced_modulus must be > 0 \[Pa\]",
+        ),
+        (lambda: hertz.load_deflection_constant(-5.0, 0.5, 2e11), r"curvature_sum must be > 0"),
+        (
+            lambda: hertz.approach_coefficient(0.0, 100.0, 0.5, 2e11),
+            r"ball_diameter must be > 0 \[m\]",
+        ),
+        (lambda: hertz.tabulated(0.0), r"delta_star must be > 0 \[-\], got 0.0"),
+        (
+            lambda: hertz.reduced_modulus(0.0, 0.3, 2e11, 0.3),
+            r"elastic_modulus_1 must be > 0 \[Pa\]",
+        ),
+        (
+            lambda: hertz.reduced_modulus([2e11, 2e11], [0.3, 0.6], 2e11, 0.3),
+            r"poisson_ratio_1 must be in \(-1, 0.5\) \[-\], got 0.6",
+        ),
+        (
+            lambda: hertz.reduced_modulus(2e11, 0.3, 2e11, -1.0),
+            r"poisson_ratio_2 must be in \(-1, 0.5\)",
+        ),
+    ],
+)
 def test_bad_input(call, match):
     with pytest.raises(InputError, match=match):
         call()

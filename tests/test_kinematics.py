@@ -15,13 +15,17 @@ from bearinglab import catalog, kinematics
 from bearinglab.errors import InputError
 
 DATA = Path(__file__).parent / "data" / "cwru_6205_multipliers.csv"
-CWRU = {r["name"]: r for r in csv.DictReader(line for line in DATA.open() if not line.startswith("#"))}
+CWRU = {
+    r["name"]: r for r in csv.DictReader(line for line in DATA.open() if not line.startswith("#"))
+}
 SETTINGS = settings(max_examples=40, deadline=None)
 
 
 def _cwru_orders():
     b = catalog.get("6205-2RS")
-    return kinematics.characteristic_orders(b.ball_diameter, b.pitch_diameter, b.n_balls, b.contact_angle)
+    return kinematics.characteristic_orders(
+        b.ball_diameter, b.pitch_diameter, b.n_balls, b.contact_angle
+    )
 
 
 # ----------------------------------------------------------------------------------------- validation
@@ -47,7 +51,9 @@ def test_cwru_6205_ftf_as_close_as_the_published_numbers_allow():
     lo, hi = (bpfo - 5e-5) / z, (bpfo + 5e-5) / z
     assert not (lo <= ftf + 5e-6 and ftf - 5e-6 <= hi)  # the evidence: the two prints disagree
     assert orders.ftf == pytest.approx(orders.bpfo / z, rel=1e-15)
-    assert abs(orders.ftf - ftf) <= hi - ftf  # 3.67e-5; the library's value is 2.94e-5 from the print
+    assert (
+        abs(orders.ftf - ftf) <= hi - ftf
+    )  # 3.67e-5; the library's value is 2.94e-5 from the print
     assert lo <= orders.ftf <= hi
 
 
@@ -81,14 +87,22 @@ def _from_contact_velocities(wi, wo, d, dm, alpha):
 
 
 @SETTINGS
-@given(wi=st.floats(-2000, 2000), wo=st.floats(-2000, 2000), d=st.floats(1e-3, 0.05),
-       ratio=st.floats(1.05, 20), alpha=st.floats(0, 1.5), z=st.integers(3, 40))
+@given(
+    wi=st.floats(-2000, 2000),
+    wo=st.floats(-2000, 2000),
+    d=st.floats(1e-3, 0.05),
+    ratio=st.floats(1.05, 20),
+    alpha=st.floats(0, 1.5),
+    z=st.integers(3, 40),
+)
 def test_agrees_with_contact_velocity_derivation(wi, wo, d, ratio, alpha, z):
     dm = d * ratio
     wc, rel_o, rel_i, spin = _from_contact_velocities(wi, wo, d, dm, alpha)
     f = kinematics.characteristic_frequencies(wi, d, dm, z, alpha, outer_speed=wo)
     scale = abs(wi) + abs(wo) + 1e-300
-    assert kinematics.cage_speed(wi, d, dm, alpha, outer_speed=wo) == pytest.approx(wc, rel=1e-12, abs=1e-12 * scale)
+    assert kinematics.cage_speed(wi, d, dm, alpha, outer_speed=wo) == pytest.approx(
+        wc, rel=1e-12, abs=1e-12 * scale
+    )
     assert f.ftf == pytest.approx(abs(wc), rel=1e-12, abs=1e-12 * scale)
     assert f.bpfo == pytest.approx(z * rel_o, rel=1e-12, abs=1e-12 * z * scale)
     assert f.bpfi == pytest.approx(z * rel_i, rel=1e-12, abs=1e-12 * z * scale)
@@ -99,13 +113,19 @@ def test_agrees_with_contact_velocity_derivation(wi, wo, d, ratio, alpha, z):
 @SETTINGS
 @given(speed=st.floats(1e-3, 1e4), angle=st.floats(0.0, 0.8))
 def test_ball_pass_frequencies_sum_to_ball_count(speed, angle):
-    bpfo, bpfi = kinematics.ball_pass_frequencies(speed, 0.0127, 0.0635, 9, angle)  # STYLE.md section 7
+    bpfo, bpfi = kinematics.ball_pass_frequencies(
+        speed, 0.0127, 0.0635, 9, angle
+    )  # STYLE.md section 7
     assert bpfo + bpfi == pytest.approx(9 * speed, rel=1e-12)
 
 
 @SETTINGS
-@given(wi=st.floats(-1e4, 1e4), wo=st.floats(-1e4, 1e4), common=st.floats(-1e4, 1e4),
-       alpha=st.floats(0, 1.5))
+@given(
+    wi=st.floats(-1e4, 1e4),
+    wo=st.floats(-1e4, 1e4),
+    common=st.floats(-1e4, 1e4),
+    alpha=st.floats(0, 1.5),
+)
 def test_common_rotation_changes_only_the_cage_speed(wi, wo, common, alpha):
     # adding the same rotation to both rings (a rotating frame) leaves every relative frequency alone
     args = (0.01, 0.05, 8, alpha)
@@ -152,7 +172,9 @@ def test_limits():
     assert_allclose([f.ftf, f.bpfo, f.bpfi, f.bsf], [0.5, 5.0, 5.0, 2.5], rtol=1e-10)
     # outer ring only: the cage follows the outer ring at (1 + gamma)/2 of its speed
     g = 0.01 / 0.05
-    assert kinematics.cage_speed(0.0, 0.01, 0.05, 0.0, outer_speed=2.0) == pytest.approx(1 + g, rel=1e-15)
+    assert kinematics.cage_speed(0.0, 0.01, 0.05, 0.0, outer_speed=2.0) == pytest.approx(
+        1 + g, rel=1e-15
+    )
     # equal ring speeds: no relative motion, every defect frequency vanishes
     f = kinematics.characteristic_frequencies(5.0, 0.01, 0.05, 9, 0.2, outer_speed=5.0)
     assert (f.bpfo, f.bpfi, f.bsf) == (0.0, 0.0, 0.0) and f.ftf == pytest.approx(5.0, rel=1e-15)
@@ -187,8 +209,9 @@ def test_frequency_shift_of_the_stand_example():
 
     b = catalog.get("4-1006095")
     alpha = float(static.stand_analysis(b, 2 * 9.80665).contact_angle)
-    s = kinematics.frequency_shift(2 * math.pi * 50, b.ball_diameter, b.pitch_diameter, b.n_balls,
-                                   b.contact_angle, alpha)
+    s = kinematics.frequency_shift(
+        2 * math.pi * 50, b.ball_diameter, b.pitch_diameter, b.n_balls, b.contact_angle, alpha
+    )
     g0 = 2.0 * math.cos(math.radians(12)) / 8.7355
     g1 = 2.0 * math.cos(alpha) / 8.7355
     assert s.shift_percent.bpfi == pytest.approx(100 * ((1 + g1) / (1 + g0) - 1), rel=1e-10)
@@ -226,7 +249,14 @@ def test_mask_layout_and_values():
     f = kinematics.characteristic_frequencies(*MASK_ARGS)
     # modulated families: BPFI (FTF and shaft), BSF and 2 BSF (FTF); every carrier has 2S per modulation
     expected = len(kinematics.FAMILIES) * n + n * 2 * s * (2 + 1 + 1)
-    assert len(m.name) == len(m.harmonic) == len(m.sideband) == len(m.modulation) == m.frequency.shape[-1] == expected
+    assert (
+        len(m.name)
+        == len(m.harmonic)
+        == len(m.sideband)
+        == len(m.modulation)
+        == m.frequency.shape[-1]
+        == expected
+    )
     carriers = m.modulation == ""
     assert np.all(m.sideband[carriers] == 0)
     for fam in kinematics.FAMILIES:
@@ -262,36 +292,57 @@ def test_mask_vectorized_over_speeds():
     assert m.frequency.shape == (50, len(m.name))
     one = kinematics.spectral_mask(speeds[17], 7.94e-3, 39.04e-3, 9, 0.0, harmonics=2)
     assert_allclose(m.frequency[17], one.frequency, rtol=1e-15)
-    assert_allclose(m.frequency / speeds[:, None], np.broadcast_to(m.frequency[0] / speeds[0], m.frequency.shape),
-                    rtol=1e-12)
+    assert_allclose(
+        m.frequency / speeds[:, None],
+        np.broadcast_to(m.frequency[0] / speeds[0], m.frequency.shape),
+        rtol=1e-12,
+    )
 
 
-@pytest.mark.parametrize("kw, match", [
-    ({"harmonics": 0}, r"harmonics must be an integer >= 1"),
-    ({"harmonics": 2.5}, r"harmonics must be an integer >= 1"),
-    ({"sidebands": -1}, r"sidebands must be an integer >= 0"),
-    ({"band": 0.0}, r"band must be a number in \(0, 2\)"),
-    ({"band": 2.0}, r"band must be a number in \(0, 2\)"),
-    ({"band": [0.01, 0.02]}, r"band must be a number"),
-    ({"families": ("bpfo", "cage")}, r"families must be a non-empty subset of .*'ftf'"),
-    ({"families": ()}, r"families must be a non-empty subset"),
-])
+@pytest.mark.parametrize(
+    "kw, match",
+    [
+        ({"harmonics": 0}, r"harmonics must be an integer >= 1"),
+        ({"harmonics": 2.5}, r"harmonics must be an integer >= 1"),
+        ({"sidebands": -1}, r"sidebands must be an integer >= 0"),
+        ({"band": 0.0}, r"band must be a number in \(0, 2\)"),
+        ({"band": 2.0}, r"band must be a number in \(0, 2\)"),
+        ({"band": [0.01, 0.02]}, r"band must be a number"),
+        ({"families": ("bpfo", "cage")}, r"families must be a non-empty subset of .*'ftf'"),
+        ({"families": ()}, r"families must be a non-empty subset"),
+    ],
+)
 def test_mask_bad_options(kw, match):
     with pytest.raises(InputError, match=match):
         kinematics.spectral_mask(*MASK_ARGS, **kw)
 
 
 # ----------------------------------------------------------------------------------------- bad input
-@pytest.mark.parametrize("args, kw, match", [
-    ((100.0, 0.01, 0.05, 9, math.radians(90)), {}, r"contact_angle must be in \[0, 90\) \[deg\], got 90"),
-    ((100.0, 0.01, 0.05, 9, -0.1), {}, r"contact_angle must be in \[0, 90\) \[deg\], got -5.72"),
-    ((100.0, 0.01, 0.05, 0, 0.1), {}, r"n_balls must be an integer >= 1 \[-\], got 0.0"),
-    ((100.0, 0.01, 0.05, 8.5, 0.1), {}, r"n_balls must be an integer >= 1"),
-    ((100.0, 0.0, 0.05, 9, 0.1), {}, r"ball_diameter must be > 0 \[m\], got 0.0"),
-    ((100.0, 0.01, 0.01, 9, 0.1), {}, r"pitch_diameter must be > ball_diameter \[m\], got 0.01"),
-    ((float("nan"), 0.01, 0.05, 9, 0.1), {}, r"shaft_speed must be finite \[rad/s\], got nan"),
-    ((100.0, 0.01, 0.05, 9, 0.1), {"outer_speed": float("inf")}, r"outer_speed must be finite"),
-])
+@pytest.mark.parametrize(
+    "args, kw, match",
+    [
+        (
+            (100.0, 0.01, 0.05, 9, math.radians(90)),
+            {},
+            r"contact_angle must be in \[0, 90\) \[deg\], got 90",
+        ),
+        (
+            (100.0, 0.01, 0.05, 9, -0.1),
+            {},
+            r"contact_angle must be in \[0, 90\) \[deg\], got -5.72",
+        ),
+        ((100.0, 0.01, 0.05, 0, 0.1), {}, r"n_balls must be an integer >= 1 \[-\], got 0.0"),
+        ((100.0, 0.01, 0.05, 8.5, 0.1), {}, r"n_balls must be an integer >= 1"),
+        ((100.0, 0.0, 0.05, 9, 0.1), {}, r"ball_diameter must be > 0 \[m\], got 0.0"),
+        (
+            (100.0, 0.01, 0.01, 9, 0.1),
+            {},
+            r"pitch_diameter must be > ball_diameter \[m\], got 0.01",
+        ),
+        ((float("nan"), 0.01, 0.05, 9, 0.1), {}, r"shaft_speed must be finite \[rad/s\], got nan"),
+        ((100.0, 0.01, 0.05, 9, 0.1), {"outer_speed": float("inf")}, r"outer_speed must be finite"),
+    ],
+)
 def test_bad_input_names_parameter_and_value(args, kw, match):
     with pytest.raises(InputError, match=match):
         kinematics.characteristic_frequencies(*args, **kw)

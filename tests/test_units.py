@@ -31,42 +31,48 @@ def test_converters_vectorized():
     assert_allclose(units.from_kgf(np.array([1.0, 2.0])), [9.80665, 19.6133], rtol=1e-15)
 
 
-@pytest.mark.parametrize("text, kind, want", [
-    ("2 kgf", "force", 2 * 9.80665),
-    ("19.6 N", "force", 19.6),
-    ("20 kN", "force", 20e3),
-    ("3000 rpm", "speed", 3000 * 2 * math.pi / 60),
-    ("50 Hz", "speed", 50 * 2 * math.pi),  # a rotation frequency: rev/s
-    ("50Hz", "speed", 50 * 2 * math.pi),
-    ("314.159 rad/s", "speed", 314.159),
-    ("0.2 cm", "length", 2e-3),
-    ("2 mm", "length", 2e-3),
-    ("9.178 um", "length", 9.178e-6),
-    ("9.178 µm", "length", 9.178e-6),
-    ("0.3126 in", "length", 0.3126 * 0.0254),
-    ("12 deg", "angle", math.radians(12)),
-    ("12°", "angle", math.radians(12)),
-    ("0.21 rad", "angle", 0.21),
-    ("20 urad", "angle", 20e-6),
-    ("208 GPa", "pressure", 208e9),
-    ("7.85 g/cm^3", "density", 7850.0),
-    ("0.07 N*mm", "torque", 7e-5),
-    ("0.07 N·mm", "torque", 7e-5),
-    ("20 cSt", "kinematic_viscosity", 20e-6),
-    ("0.52", "dimensionless", 0.52),
-    ("2 kg", "mass", 2.0),
-])
+@pytest.mark.parametrize(
+    "text, kind, want",
+    [
+        ("2 kgf", "force", 2 * 9.80665),
+        ("19.6 N", "force", 19.6),
+        ("20 kN", "force", 20e3),
+        ("3000 rpm", "speed", 3000 * 2 * math.pi / 60),
+        ("50 Hz", "speed", 50 * 2 * math.pi),  # a rotation frequency: rev/s
+        ("50Hz", "speed", 50 * 2 * math.pi),
+        ("314.159 rad/s", "speed", 314.159),
+        ("0.2 cm", "length", 2e-3),
+        ("2 mm", "length", 2e-3),
+        ("9.178 um", "length", 9.178e-6),
+        ("9.178 µm", "length", 9.178e-6),
+        ("0.3126 in", "length", 0.3126 * 0.0254),
+        ("12 deg", "angle", math.radians(12)),
+        ("12°", "angle", math.radians(12)),
+        ("0.21 rad", "angle", 0.21),
+        ("20 urad", "angle", 20e-6),
+        ("208 GPa", "pressure", 208e9),
+        ("7.85 g/cm^3", "density", 7850.0),
+        ("0.07 N*mm", "torque", 7e-5),
+        ("0.07 N·mm", "torque", 7e-5),
+        ("20 cSt", "kinematic_viscosity", 20e-6),
+        ("0.52", "dimensionless", 0.52),
+        ("2 kg", "mass", 2.0),
+    ],
+)
 def test_parse_quantity(text, kind, want):
     assert units.parse_quantity(text, kind, "x") == pytest.approx(want, rel=1e-12)
 
 
-@pytest.mark.parametrize("text, deg", [
-    ("14°28'03.38\"", 14 + 28 / 60 + 3.38 / 3600),  # the form format_dms prints
-    ("14° 28′ 3.38″", 14 + 28 / 60 + 3.38 / 3600),
-    ("12 deg 30 arcmin", 12.5),
-    ("-0° 30′", -0.5),
-    ("14°28'", 14 + 28 / 60),
-])
+@pytest.mark.parametrize(
+    "text, deg",
+    [
+        ("14°28'03.38\"", 14 + 28 / 60 + 3.38 / 3600),  # the form format_dms prints
+        ("14° 28′ 3.38″", 14 + 28 / 60 + 3.38 / 3600),
+        ("12 deg 30 arcmin", 12.5),
+        ("-0° 30′", -0.5),
+        ("14°28'", 14 + 28 / 60),
+    ],
+)
 def test_angle_in_dms(text, deg):
     # pint alone reads juxtaposed parts as a product (14 deg x 28 arcmin x 3.38 arcsec): a silent wrong number
     assert units.parse_quantity(text, "angle", "x") == pytest.approx(math.radians(deg), rel=1e-13)
@@ -74,38 +80,61 @@ def test_angle_in_dms(text, deg):
 
 def test_format_dms_parses_back():
     a = 0.2525073518
-    assert units.parse_quantity(units.format_dms(a, digits=6), "angle", "x") == pytest.approx(a, abs=1e-11)
+    assert units.parse_quantity(units.format_dms(a, digits=6), "angle", "x") == pytest.approx(
+        a, abs=1e-11
+    )
 
 
 def test_bare_numbers_need_a_unit_or_a_default():
-    with pytest.raises(InputError, match=r"axial-load: '2' has no unit; write it with one, e.g. '19.6 N', '2 kgf'"):
+    with pytest.raises(
+        InputError, match=r"axial-load: '2' has no unit; write it with one, e.g. '19.6 N', '2 kgf'"
+    ):
         units.parse_quantity("2", "force", "axial-load")
     with pytest.raises(InputError, match=r"axial-load: 2.0 has no unit"):
         units.parse_quantity(2.0, "force", "axial-load")
-    assert units.parse_quantity(2.0, "force", "axial-load", default_unit="kgf") == pytest.approx(19.6133)
-    assert units.parse_quantity("2", "force", "axial-load", default_unit="kgf") == pytest.approx(19.6133)
+    assert units.parse_quantity(2.0, "force", "axial-load", default_unit="kgf") == pytest.approx(
+        19.6133
+    )
+    assert units.parse_quantity("2", "force", "axial-load", default_unit="kgf") == pytest.approx(
+        19.6133
+    )
     assert units.parse_quantity(3, "dimensionless", "f") == 3.0
     with pytest.raises(InputError, match=r"f: nan is not a finite quantity"):
         units.parse_quantity(float("nan"), "dimensionless", "f")
 
 
-@pytest.mark.parametrize("text, kind, match", [
-    ("2 m", "force", r"axial-load: '2 m' is a length, expected a force \(e.g. '19.6 N', '2 kgf', '20 kN'\)"),
-    ("2 kgf", "length", r"axial-load: '2 kgf' is a force, expected a length"),
-    ("3000 N", "speed", r"axial-load: '3000 N' is a force, expected a speed"),
-    ("12 mm", "angle", r"axial-load: '12 mm' is a length, expected an angle"),
-    ("12", "angle", r"'12' has no unit"),
-    ("2 furlongs per fortnight", "force", r"axial-load: '2 furlongs per fortnight' is a quantity of dimension"),
-    ("two kgf", "force", r"axial-load: cannot read 'two kgf' as a quantity"),
-    ("", "force", r"axial-load: '' has no unit|cannot read"),
-    ("0.5 mm", "dimensionless", r"'0.5 mm' is a length, expected a plain number"),
-    # juxtaposed numbers would be multiplied by pint: refused
-    ("1 000 N", "force", r"axial-load: '1 000 N' holds more than one number; write one number and its unit"),
-    ("2 3 kgf", "force", r"holds more than one number"),
-    ("2 kgf 3", "force", r"holds more than one number"),
-    ("nan N", "force", r"axial-load: 'nan N' is not a finite quantity"),
-    ("inf kgf", "force", r"is not a finite quantity"),
-])
+@pytest.mark.parametrize(
+    "text, kind, match",
+    [
+        (
+            "2 m",
+            "force",
+            r"axial-load: '2 m' is a length, expected a force \(e.g. '19.6 N', '2 kgf', '20 kN'\)",
+        ),
+        ("2 kgf", "length", r"axial-load: '2 kgf' is a force, expected a length"),
+        ("3000 N", "speed", r"axial-load: '3000 N' is a force, expected a speed"),
+        ("12 mm", "angle", r"axial-load: '12 mm' is a length, expected an angle"),
+        ("12", "angle", r"'12' has no unit"),
+        (
+            "2 furlongs per fortnight",
+            "force",
+            r"axial-load: '2 furlongs per fortnight' is a quantity of dimension",
+        ),
+        ("two kgf", "force", r"axial-load: cannot read 'two kgf' as a quantity"),
+        ("", "force", r"axial-load: '' has no unit|cannot read"),
+        ("0.5 mm", "dimensionless", r"'0.5 mm' is a length, expected a plain number"),
+        # juxtaposed numbers would be multiplied by pint: refused
+        (
+            "1 000 N",
+            "force",
+            r"axial-load: '1 000 N' holds more than one number; write one number and its unit",
+        ),
+        ("2 3 kgf", "force", r"holds more than one number"),
+        ("2 kgf 3", "force", r"holds more than one number"),
+        ("nan N", "force", r"axial-load: 'nan N' is not a finite quantity"),
+        ("inf kgf", "force", r"is not a finite quantity"),
+    ],
+)
 def test_wrong_dimension_or_unreadable(text, kind, match):
     with pytest.raises(InputError, match=match):
         units.parse_quantity(text, kind, "axial-load")
@@ -120,28 +149,38 @@ def test_bad_kind_and_types():
         units.parse_quantity([1, 2], "force", "x")
 
 
-@pytest.mark.parametrize("text, kind, want", [
-    ("2.5kN:10kN:2.5kN", "force", [2500, 5000, 7500, 10000]),
-    ("2.5 kN : 10 kN : 2.5 kN", "force", [2500, 5000, 7500, 10000]),
-    ("1:5:2kgf", "force", [9.80665, 29.41995, 49.03325]),
-    ("0,3000,6000rpm", "speed", [0, 100 * math.pi, 200 * math.pi]),
-    ("1 kN, 500 N", "force", [1000, 500]),
-    ("2 kgf", "force", [19.6133]),
-    ("0.1:0.3:0.1 mm", "length", [1e-4, 2e-4, 3e-4]),  # end point kept despite 0.1 + 0.1 + 0.1 != 0.3
-])
+@pytest.mark.parametrize(
+    "text, kind, want",
+    [
+        ("2.5kN:10kN:2.5kN", "force", [2500, 5000, 7500, 10000]),
+        ("2.5 kN : 10 kN : 2.5 kN", "force", [2500, 5000, 7500, 10000]),
+        ("1:5:2kgf", "force", [9.80665, 29.41995, 49.03325]),
+        ("0,3000,6000rpm", "speed", [0, 100 * math.pi, 200 * math.pi]),
+        ("1 kN, 500 N", "force", [1000, 500]),
+        ("2 kgf", "force", [19.6133]),
+        (
+            "0.1:0.3:0.1 mm",
+            "length",
+            [1e-4, 2e-4, 3e-4],
+        ),  # end point kept despite 0.1 + 0.1 + 0.1 != 0.3
+    ],
+)
 def test_parse_values(text, kind, want):
     assert_allclose(units.parse_values(text, kind, "x"), want, rtol=1e-12, atol=1e-12)
 
 
-@pytest.mark.parametrize("text, match", [
-    ("1:5kgf", r"x: a range is start:stop:step, got '1:5kgf'"),
-    ("5:1:1kgf", r"x: range '5:1:1kgf' needs step > 0 and stop >= start"),
-    ("1:5:0kgf", r"needs step > 0"),
-    ("1:5:-1kgf", r"needs step > 0"),
-    (",", r"x: no values in ','"),
-    ("1,2 m", r"'1.0 m' is a length, expected a force"),  # the last unit applies to all items
-    ("0:1e9:1 N", r"has 1000000001 values, more than 10\^7"),
-])
+@pytest.mark.parametrize(
+    "text, match",
+    [
+        ("1:5kgf", r"x: a range is start:stop:step, got '1:5kgf'"),
+        ("5:1:1kgf", r"x: range '5:1:1kgf' needs step > 0 and stop >= start"),
+        ("1:5:0kgf", r"needs step > 0"),
+        ("1:5:-1kgf", r"needs step > 0"),
+        (",", r"x: no values in ','"),
+        ("1,2 m", r"'1.0 m' is a length, expected a force"),  # the last unit applies to all items
+        ("0:1e9:1 N", r"has 1000000001 values, more than 10\^7"),
+    ],
+)
 def test_parse_values_errors(text, match):
     with pytest.raises(InputError, match=match):
         units.parse_values(text, "force", "x")

@@ -10,20 +10,43 @@ import tempfile
 from pathlib import Path
 from typing import Annotated, Optional
 
-import numpy as np
 import typer
 
 from . import kinematics, static
-from .cli import (BallDiameter, BallMaterial, Balls, BearingFile, BearingName, CatalogFile, Clearance,
-                  ContactAngle, InnerConformity, InnerRadius, JsonFlag, OuterConformity, OuterRadius,
-                  PitchDiameter, console, emit_json, resolve_bearing, table)
+from .cli import (
+    BallDiameter,
+    BallMaterial,
+    Balls,
+    BearingFile,
+    BearingName,
+    CatalogFile,
+    Clearance,
+    ContactAngle,
+    InnerConformity,
+    InnerRadius,
+    JsonFlag,
+    OuterConformity,
+    OuterRadius,
+    PitchDiameter,
+    console,
+    emit_json,
+    resolve_bearing,
+    table,
+)
 from .errors import InputError
 from .units import KGF, format_dms, parse_quantity
 
 __all__ = ["register"]
 
 _HZ = 2.0 * math.pi  # rad/s per Hz (rev/s)
-_LABELS = {"shaft": "shaft", "ftf": "FTF", "bpfo": "BPFO", "bpfi": "BPFI", "bsf": "BSF", "two_bsf": "2·BSF"}
+_LABELS = {
+    "shaft": "shaft",
+    "ftf": "FTF",
+    "bpfo": "BPFO",
+    "bpfi": "BPFI",
+    "bsf": "BSF",
+    "two_bsf": "2·BSF",
+}
 _PERCENT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(%|percent)?\s*$")
 
 
@@ -67,20 +90,55 @@ def _write_csv(path: Path, header, rows):
 
 
 def frequencies(
-    speed: Annotated[str, typer.Option("--speed", "-n", help="Inner-ring (shaft) speed: '3000 rpm', '50 Hz'.")],
-    outer_speed: Annotated[str, typer.Option("--outer-speed", help="Outer-ring speed, same sense as --speed.")] = "0 rpm",
-    axial_load: Annotated[Optional[str], typer.Option("--axial-load", "-F", help="Axial stand load, e.g. '2 kgf': frequencies at the operating contact angle (spec 000).")] = None,
-    hertz: Annotated[str, typer.Option("--hertz", help="Hertz coefficients for the operating angle: exact (default) | table.")] = "exact",
-    bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
-    balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
-    inner_groove_radius: InnerRadius = None, outer_groove_radius: OuterRadius = None,
-    inner_conformity: InnerConformity = None, outer_conformity: OuterConformity = None,
-    contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
-    harmonics: Annotated[int, typer.Option("--harmonics", help="Harmonics 1..N in the spectral mask.")] = 3,
-    sidebands: Annotated[int, typer.Option("--sidebands", help="Sideband orders ±1..S around BPFI and BSF.")] = 1,
-    band: Annotated[str, typer.Option("--band", help="Full width of each mask line, in % of its frequency: '2 %'.")] = "2 %",
-    mask: Annotated[bool, typer.Option("--mask", help="Print (or add to the JSON) the spectral-mask table.")] = False,
-    csv_file: Annotated[Optional[Path], typer.Option("--csv", help="Write the spectral mask to this CSV file.")] = None,
+    speed: Annotated[
+        str, typer.Option("--speed", "-n", help="Inner-ring (shaft) speed: '3000 rpm', '50 Hz'.")
+    ],
+    outer_speed: Annotated[
+        str, typer.Option("--outer-speed", help="Outer-ring speed, same sense as --speed.")
+    ] = "0 rpm",
+    axial_load: Annotated[
+        Optional[str],
+        typer.Option(
+            "--axial-load",
+            "-F",
+            help="Axial stand load, e.g. '2 kgf': frequencies at the operating contact angle (spec 000).",
+        ),
+    ] = None,
+    hertz: Annotated[
+        str,
+        typer.Option(
+            "--hertz", help="Hertz coefficients for the operating angle: exact (default) | table."
+        ),
+    ] = "exact",
+    bearing: BearingName = None,
+    bearing_file: BearingFile = None,
+    catalog: CatalogFile = None,
+    balls: Balls = None,
+    ball_diameter: BallDiameter = None,
+    pitch_diameter: PitchDiameter = None,
+    inner_groove_radius: InnerRadius = None,
+    outer_groove_radius: OuterRadius = None,
+    inner_conformity: InnerConformity = None,
+    outer_conformity: OuterConformity = None,
+    contact_angle: ContactAngle = None,
+    radial_clearance: Clearance = None,
+    ball_material: BallMaterial = None,
+    harmonics: Annotated[
+        int, typer.Option("--harmonics", help="Harmonics 1..N in the spectral mask.")
+    ] = 3,
+    sidebands: Annotated[
+        int, typer.Option("--sidebands", help="Sideband orders ±1..S around BPFI and BSF.")
+    ] = 1,
+    band: Annotated[
+        str,
+        typer.Option("--band", help="Full width of each mask line, in % of its frequency: '2 %'."),
+    ] = "2 %",
+    mask: Annotated[
+        bool, typer.Option("--mask", help="Print (or add to the JSON) the spectral-mask table.")
+    ] = False,
+    csv_file: Annotated[
+        Optional[Path], typer.Option("--csv", help="Write the spectral mask to this CSV file.")
+    ] = None,
     json_out: JsonFlag = False,
 ):
     """Characteristic frequencies (FTF, BPFO, BPFI, BSF, 2·BSF) and the spectral mask.
@@ -88,23 +146,41 @@ def frequencies(
     With --axial-load the frequencies are at the operating contact angle under that load, and the
     nominal ones and the shift are shown too.
     """
-    b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
-                        outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
-                        ball_material)
+    b = resolve_bearing(
+        bearing,
+        bearing_file,
+        catalog,
+        balls,
+        ball_diameter,
+        pitch_diameter,
+        inner_groove_radius,
+        outer_groove_radius,
+        inner_conformity,
+        outer_conformity,
+        contact_angle,
+        radial_clearance,
+        ball_material,
+    )
     if hertz not in ("exact", "table"):
         raise InputError(f"hertz must be one of ['exact', 'table'], got {hertz!r}")
     w_in = parse_quantity(speed, "speed", "speed")
     w_out = parse_quantity(outer_speed, "speed", "outer-speed")
     if w_in == w_out:
-        raise InputError(f"speed: the rings must turn relative to each other, got speed = outer-speed = "
-                         f"{w_in / _HZ * 60:g} rpm")
+        raise InputError(
+            f"speed: the rings must turn relative to each other, got speed = outer-speed = "
+            f"{w_in / _HZ * 60:g} rpm"
+        )
     band_fraction = _band(band)
     if harmonics < 1:
         raise InputError(f"harmonics must be an integer >= 1 [-], got {harmonics}")
     if sidebands < 0:
         raise InputError(f"sidebands must be an integer >= 0 [-], got {sidebands}")
     z, d, dm, a0 = b.require("n_balls", "ball_diameter", "pitch_diameter", "contact_angle")
-    out = {"bearing": b.designation, "speed_rpm": w_in / _HZ * 60.0, "outer_speed_rpm": w_out / _HZ * 60.0}
+    out = {
+        "bearing": b.designation,
+        "speed_rpm": w_in / _HZ * 60.0,
+        "outer_speed_rpm": w_out / _HZ * 60.0,
+    }
     shaft_hz = w_in / _HZ
     if axial_load is not None:
         fa = parse_quantity(axial_load, "force", "axial-load")
@@ -115,27 +191,69 @@ def frequencies(
     else:
         angle = a0
     shift = kinematics.frequency_shift(w_in, d, dm, z, a0, angle, outer_speed=w_out)
-    out.update(contact_angle_deg=math.degrees(angle), contact_angle_dms=format_dms(angle),
-               nominal_contact_angle_deg=math.degrees(a0), shaft_hz=shaft_hz, outer_hz=w_out / _HZ)
+    out.update(
+        contact_angle_deg=math.degrees(angle),
+        contact_angle_dms=format_dms(angle),
+        nominal_contact_angle_deg=math.degrees(a0),
+        shaft_hz=shaft_hz,
+        outer_hz=w_out / _HZ,
+    )
     out.update(_keys(shift.operating, shaft_hz))
-    out["nominal"] = dict(contact_angle_deg=math.degrees(a0), shaft_hz=shaft_hz, **_keys(shift.nominal, shaft_hz))
+    out["nominal"] = dict(
+        contact_angle_deg=math.degrees(a0), shaft_hz=shaft_hz, **_keys(shift.nominal, shaft_hz)
+    )
     out["shift_hz"] = {n: float(getattr(shift.shift, n)) / _HZ for n in kinematics.FAMILIES[1:]}
-    out["shift_percent"] = {n: float(getattr(shift.shift_percent, n)) for n in kinematics.FAMILIES[1:]}
+    out["shift_percent"] = {
+        n: float(getattr(shift.shift_percent, n)) for n in kinematics.FAMILIES[1:]
+    }
     mask_rows = []
     if mask or csv_file is not None:
-        m = kinematics.spectral_mask(w_in, d, dm, z, angle, outer_speed=w_out, harmonics=harmonics,
-                                     sidebands=sidebands, band=band_fraction)
-        for name, h, mod, k, f, lo, hi in zip(m.name, m.harmonic, m.modulation, m.sideband, m.frequency / _HZ,
-                                              m.low / _HZ, m.high / _HZ):
-            mask_rows.append({"name": str(name), "harmonic": int(h), "modulation": str(mod), "sideband": int(k),
-                              "frequency_hz": float(f), "low_hz": float(lo), "high_hz": float(hi),
-                              "order": float(f) / abs(shaft_hz) if shaft_hz else None})
+        m = kinematics.spectral_mask(
+            w_in,
+            d,
+            dm,
+            z,
+            angle,
+            outer_speed=w_out,
+            harmonics=harmonics,
+            sidebands=sidebands,
+            band=band_fraction,
+        )
+        for name, h, mod, k, f, lo, hi in zip(
+            m.name,
+            m.harmonic,
+            m.modulation,
+            m.sideband,
+            m.frequency / _HZ,
+            m.low / _HZ,
+            m.high / _HZ,
+        ):
+            mask_rows.append(
+                {
+                    "name": str(name),
+                    "harmonic": int(h),
+                    "modulation": str(mod),
+                    "sideband": int(k),
+                    "frequency_hz": float(f),
+                    "low_hz": float(lo),
+                    "high_hz": float(hi),
+                    "order": float(f) / abs(shaft_hz) if shaft_hz else None,
+                }
+            )
         if csv_file is not None:
             header = list(mask_rows[0])
-            _write_csv(csv_file, header, [["" if r[c] is None else r[c] for c in header] for r in mask_rows])
+            _write_csv(
+                csv_file,
+                header,
+                [["" if r[c] is None else r[c] for c in header] for r in mask_rows],
+            )
     if mask:
-        out["mask"] = {"harmonics": harmonics, "sidebands": sidebands, "band_percent": band_fraction * 100.0,
-                       "lines": mask_rows}
+        out["mask"] = {
+            "harmonics": harmonics,
+            "sidebands": sidebands,
+            "band_percent": band_fraction * 100.0,
+            "lines": mask_rows,
+        }
     if json_out:
         emit_json(out)
         return
@@ -143,10 +261,16 @@ def frequencies(
     speeds = f"shaft {out['speed_rpm']:g} rpm = {shaft_hz:.6g} Hz"
     if w_out:
         speeds += f", outer ring {out['outer_speed_rpm']:g} rpm = {w_out / _HZ:.6g} Hz"
-    console.print(f"Bearing {b.designation}: {speeds}; nominal contact angle {math.degrees(a0):.4f}°", highlight=False)
+    console.print(
+        f"Bearing {b.designation}: {speeds}; nominal contact angle {math.degrees(a0):.4f}°",
+        highlight=False,
+    )
     if loaded:
-        console.print(f"operating contact angle at {out['axial_load_kgf']:.4g} kgf ({fa:.4g} N): "
-                      f"{math.degrees(angle):.4f}° = {format_dms(angle)} ({hertz} Hertz)", highlight=False)
+        console.print(
+            f"operating contact angle at {out['axial_load_kgf']:.4g} kgf ({fa:.4g} N): "
+            f"{math.degrees(angle):.4f}° = {format_dms(angle)} ({hertz} Hertz)",
+            highlight=False,
+        )
     columns = ["frequency", "nominal [Hz]" if loaded else "f [Hz]", "order"]
     if loaded:
         columns += ["operating [Hz]", "order", "shift [Hz]", "shift [%]"]
@@ -155,17 +279,35 @@ def frequencies(
         nom = out["nominal"]
         row = [_LABELS[n], f"{nom[n + '_hz']:.4f}", _order(nom[n + "_order"])]
         if loaded:
-            row += [f"{out[n + '_hz']:.4f}", _order(out[n + "_order"]), f"{out['shift_hz'][n]:+.4f}",
-                    f"{out['shift_percent'][n]:+.3f}"]
+            row += [
+                f"{out[n + '_hz']:.4f}",
+                _order(out[n + "_order"]),
+                f"{out['shift_hz'][n]:+.4f}",
+                f"{out['shift_percent'][n]:+.3f}",
+            ]
         rows.append(row)
     table("Characteristic frequencies", columns, rows)
     if mask:
-        table(f"Spectral mask: harmonics 1..{harmonics}, sidebands ±1..{sidebands}, band {band_fraction * 100:g} %",
-              ["line", "h", "sideband", "f [Hz]", "low [Hz]", "high [Hz]", "order"],
-              [[_LABELS[r["name"]], r["harmonic"], _sideband(r), f"{r['frequency_hz']:.3f}", f"{r['low_hz']:.3f}",
-                f"{r['high_hz']:.3f}", _order(r["order"])] for r in mask_rows])
+        table(
+            f"Spectral mask: harmonics 1..{harmonics}, sidebands ±1..{sidebands}, band {band_fraction * 100:g} %",
+            ["line", "h", "sideband", "f [Hz]", "low [Hz]", "high [Hz]", "order"],
+            [
+                [
+                    _LABELS[r["name"]],
+                    r["harmonic"],
+                    _sideband(r),
+                    f"{r['frequency_hz']:.3f}",
+                    f"{r['low_hz']:.3f}",
+                    f"{r['high_hz']:.3f}",
+                    _order(r["order"]),
+                ]
+                for r in mask_rows
+            ],
+        )
     if csv_file is not None:
-        console.print(f"spectral mask ({len(mask_rows)} lines) written to {csv_file}", highlight=False)
+        console.print(
+            f"spectral mask ({len(mask_rows)} lines) written to {csv_file}", highlight=False
+        )
 
 
 def _order(x):

@@ -89,7 +89,9 @@ class FrequencyShift(NamedTuple):
     nominal: CharacteristicFrequencies
     operating: CharacteristicFrequencies
     shift: CharacteristicFrequencies  # operating - nominal, unit of the speeds
-    shift_percent: CharacteristicFrequencies  # 100 (operating - nominal) / nominal [%]; NaN where nominal = 0
+    shift_percent: (
+        CharacteristicFrequencies  # 100 (operating - nominal) / nominal [%]; NaN where nominal = 0
+    )
 
 
 class SpectralMask(NamedTuple):
@@ -101,7 +103,9 @@ class SpectralMask(NamedTuple):
 
     name: np.ndarray  # family of the carrier line, one of FAMILIES
     harmonic: np.ndarray  # h = 1..N of the carrier
-    modulation: np.ndarray  # "" for a carrier line, else the family of the sideband spacing ("ftf", "shaft")
+    modulation: (
+        np.ndarray
+    )  # "" for a carrier line, else the family of the sideband spacing ("ftf", "shaft")
     sideband: np.ndarray  # k = -S..S, order of the sideband (0 for the carrier)
     frequency: np.ndarray  # |h f_carrier + k f_modulation|
     low: np.ndarray  # frequency (1 - band / 2)
@@ -168,7 +172,9 @@ def cage_speed(shaft_speed, ball_diameter, pitch_diameter, contact_angle, *, out
     return (0.5 * (wi * (1.0 - g) + wo * (1.0 + g)))[()]
 
 
-def ball_pass_frequencies(shaft_speed, ball_diameter, pitch_diameter, n_balls, contact_angle, *, outer_speed=0.0):
+def ball_pass_frequencies(
+    shaft_speed, ball_diameter, pitch_diameter, n_balls, contact_angle, *, outer_speed=0.0
+):
     r"""Ball-pass frequencies over the outer (BPFO) and inner (BPFI) raceway.
 
     Parameters
@@ -215,7 +221,9 @@ def ball_pass_frequencies(shaft_speed, ball_diameter, pitch_diameter, n_balls, c
     return BallPass((0.5 * z * rel * (1.0 - g))[()], (0.5 * z * rel * (1.0 + g))[()])
 
 
-def ball_spin_frequency(shaft_speed, ball_diameter, pitch_diameter, contact_angle, *, outer_speed=0.0):
+def ball_spin_frequency(
+    shaft_speed, ball_diameter, pitch_diameter, contact_angle, *, outer_speed=0.0
+):
     r"""Ball spin frequency (BSF): rotation of a ball about its own axis, relative to the cage.
 
     Parameters
@@ -253,8 +261,9 @@ def ball_spin_frequency(shaft_speed, ball_diameter, pitch_diameter, contact_angl
     return (dm / (2.0 * d) * np.abs(wi - wo) * (1.0 - g * g))[()]
 
 
-def characteristic_frequencies(shaft_speed, ball_diameter, pitch_diameter, n_balls, contact_angle, *,
-                               outer_speed=0.0):
+def characteristic_frequencies(
+    shaft_speed, ball_diameter, pitch_diameter, n_balls, contact_angle, *, outer_speed=0.0
+):
     r"""All characteristic frequencies at once: shaft, FTF, BPFO, BPFI, BSF and 2 BSF.
 
     Parameters
@@ -303,11 +312,15 @@ def characteristic_frequencies(shaft_speed, ball_diameter, pitch_diameter, n_bal
     bpfi = 0.5 * z * rel * (1.0 + g)  # Z |w_i - w_c|
     bsf = dm / (2.0 * d) * rel * (1.0 - g * g)  # spec 004 eq. (13), one angle
     shape = np.broadcast_shapes(np.shape(wi), np.shape(wo), np.shape(z), np.shape(g))
-    out = [np.broadcast_to(x, shape).copy()[()] for x in (np.abs(wi), ftf, bpfo, bpfi, bsf, 2.0 * bsf)]
+    out = [
+        np.broadcast_to(x, shape).copy()[()] for x in (np.abs(wi), ftf, bpfo, bpfi, bsf, 2.0 * bsf)
+    ]
     return CharacteristicFrequencies(*out)
 
 
-def characteristic_orders(ball_diameter, pitch_diameter, n_balls, contact_angle, *, outer_speed_ratio=0.0):
+def characteristic_orders(
+    ball_diameter, pitch_diameter, n_balls, contact_angle, *, outer_speed_ratio=0.0
+):
     r"""Characteristic frequencies as multiples (orders) of the shaft speed.
 
     Parameters
@@ -343,12 +356,21 @@ def characteristic_orders(ball_diameter, pitch_diameter, n_balls, contact_angle,
     5.4152 3.5848 0.39831 4.7135
     """
     ratio = check_finite("outer_speed_ratio", outer_speed_ratio, "-")
-    return characteristic_frequencies(1.0, ball_diameter, pitch_diameter, n_balls, contact_angle,
-                                      outer_speed=ratio)
+    return characteristic_frequencies(
+        1.0, ball_diameter, pitch_diameter, n_balls, contact_angle, outer_speed=ratio
+    )
 
 
-def frequency_shift(shaft_speed, ball_diameter, pitch_diameter, n_balls, free_angle, contact_angle, *,
-                    outer_speed=0.0):
+def frequency_shift(
+    shaft_speed,
+    ball_diameter,
+    pitch_diameter,
+    n_balls,
+    free_angle,
+    contact_angle,
+    *,
+    outer_speed=0.0,
+):
     r"""Characteristic frequencies at the nominal and at the operating contact angle, and their shift.
 
     Parameters
@@ -388,20 +410,39 @@ def frequency_shift(shaft_speed, ball_diameter, pitch_diameter, n_balls, free_an
     BPFI -0.00790 (-0.184 %)
     """
     free_angle = _contact_angle(free_angle, "free_angle")
-    nominal = characteristic_frequencies(shaft_speed, ball_diameter, pitch_diameter, n_balls, free_angle,
-                                         outer_speed=outer_speed)
-    operating = characteristic_frequencies(shaft_speed, ball_diameter, pitch_diameter, n_balls, contact_angle,
-                                           outer_speed=outer_speed)
+    nominal = characteristic_frequencies(
+        shaft_speed, ball_diameter, pitch_diameter, n_balls, free_angle, outer_speed=outer_speed
+    )
+    operating = characteristic_frequencies(
+        shaft_speed, ball_diameter, pitch_diameter, n_balls, contact_angle, outer_speed=outer_speed
+    )
     shift = [np.asarray(o - n) for o, n in zip(operating, nominal)]
     with np.errstate(invalid="ignore", divide="ignore"):
-        percent = [np.where(np.asarray(n) != 0, 100.0 * s / np.where(np.asarray(n) != 0, n, 1.0), np.nan)
-                   for s, n in zip(shift, nominal)]
-    return FrequencyShift(nominal, operating, CharacteristicFrequencies(*[s[()] for s in shift]),
-                          CharacteristicFrequencies(*[p[()] for p in percent]))
+        percent = [
+            np.where(np.asarray(n) != 0, 100.0 * s / np.where(np.asarray(n) != 0, n, 1.0), np.nan)
+            for s, n in zip(shift, nominal)
+        ]
+    return FrequencyShift(
+        nominal,
+        operating,
+        CharacteristicFrequencies(*[s[()] for s in shift]),
+        CharacteristicFrequencies(*[p[()] for p in percent]),
+    )
 
 
-def spectral_mask(shaft_speed, ball_diameter, pitch_diameter, n_balls, contact_angle, *, outer_speed=0.0,
-                  harmonics=3, sidebands=1, band=0.02, families=FAMILIES):
+def spectral_mask(
+    shaft_speed,
+    ball_diameter,
+    pitch_diameter,
+    n_balls,
+    contact_angle,
+    *,
+    outer_speed=0.0,
+    harmonics=3,
+    sidebands=1,
+    band=0.02,
+    families=FAMILIES,
+):
     r"""Spectral mask: the lines where bearing defects show, each with a frequency band.
 
     Parameters
@@ -466,9 +507,12 @@ def spectral_mask(shaft_speed, ball_diameter, pitch_diameter, n_balls, contact_a
     families = tuple(families)
     unknown = [f for f in families if f not in FAMILIES]
     if unknown or not families:
-        raise InputError(f"families must be a non-empty subset of {list(FAMILIES)}, got {list(families)!r}")
-    f = characteristic_frequencies(shaft_speed, ball_diameter, pitch_diameter, n_balls, contact_angle,
-                                   outer_speed=outer_speed)
+        raise InputError(
+            f"families must be a non-empty subset of {list(FAMILIES)}, got {list(families)!r}"
+        )
+    f = characteristic_frequencies(
+        shaft_speed, ball_diameter, pitch_diameter, n_balls, contact_angle, outer_speed=outer_speed
+    )
     base = {name: np.asarray(getattr(f, name))[..., None] for name in FAMILIES}
     h = np.arange(1, n_harm + 1, dtype=float)
     k = np.concatenate([np.arange(-n_side, 0), np.arange(1, n_side + 1)]).astype(float)

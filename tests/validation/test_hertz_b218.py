@@ -23,12 +23,18 @@ def test_b218_contact_data(row):
     b = catalog.get("B218")
     c = b.curvature(row["race"])
     h = hertz.coefficients(c.curvature_difference)
-    got = {"curvature_sum": c.curvature_sum * 1e-3, "curvature_difference": c.curvature_difference,
-           "delta_star": h.delta_star,
-           # spec 004 eq. (16) with its rounded prefactor 2.15e5 N/mm^1.5 (Sigma rho in 1/mm)
-           "load_deflection_constant": 2.15e5 * (c.curvature_sum * 1e-3) ** -0.5 * h.delta_star ** -1.5}
+    got = {
+        "curvature_sum": c.curvature_sum * 1e-3,
+        "curvature_difference": c.curvature_difference,
+        "delta_star": h.delta_star,
+        # spec 004 eq. (16) with its rounded prefactor 2.15e5 N/mm^1.5 (Sigma rho in 1/mm)
+        "load_deflection_constant": 2.15e5 * (c.curvature_sum * 1e-3) ** -0.5 * h.delta_star**-1.5,
+    }
     for name, value in got.items():
         assert abs(value - float(row[name])) <= _half_unit(row[name]), (name, value, row[name])
     # the library's K uses E' of steel exactly: 2 sqrt(2)/3 E' = 2.14981e5, so it sits 8.7e-5 below the print
-    k = hertz.load_deflection_constant(c.curvature_sum, c.curvature_difference, b.reduced_modulus) * 1e-3**1.5
+    k = (
+        hertz.load_deflection_constant(c.curvature_sum, c.curvature_difference, b.reduced_modulus)
+        * 1e-3**1.5
+    )
     assert k / float(row["load_deflection_constant"]) == pytest.approx(2.14981e5 / 2.15e5, rel=2e-6)
