@@ -19,4 +19,5 @@ report      self-contained HTML reports of the friction lab, with PNG/SVG plots,
 from . import bearing, catalog, errors, friction, geometry, hertz, kinematics, lab, parallel, report, static, units
 
 __version__ = "0.1.0"
-__all__ = ["bearing", "catalog", "errors", "friction", "geometry", "hertz", "kinematics", "lab", "parallel", "report", "static", "units", "__version__"]
+__all__ = ["bearing", "catalog", "errors", "friction", "geometry", "hertz", "kinematics", "lab", "parallel", "report",
+           "static", "units", "__version__"]
