@@ -154,15 +154,15 @@ def convert(reading, table):
     return np.interp(r, table.readings, table.values)[()]
 
 
-def convert_torque(reading, position, calibration):
+def convert_torque(reading, switch, calibration):
     """Convert torque-mode readings taken at sensitivity-switch positions 1 or 2.
 
     Parameters
     ----------
     reading : array_like
         Torque-mode readings. [-]
-    position : array_like of int
-        Switch position of each reading, 1 or 2. [-]
+    switch : array_like of int
+        Sensitivity-switch position of each reading, 1 or 2. [-]
     calibration : Calibration
         The session's tables; the torque table of every position used must be present.
 
@@ -185,7 +185,7 @@ def convert_torque(reading, position, calibration):
     [0.06, 0.25]
     """
     r = check_finite("torque reading", reading, "-")
-    p = as_float("switch position", position)
+    p = as_float("switch position", switch)
     r, p = np.broadcast_arrays(r, p)
     bad = ~np.isin(p, SWITCH_POSITIONS)
     if bad.any():
