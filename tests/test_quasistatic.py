@@ -262,8 +262,8 @@ def test_axial_stiffness_is_the_slope_of_the_displacement(n):
 def test_characteristic_frequencies_at_speed():
     s = _solve(20e3, 10000.0)
     z = GEO[0]
-    assert s.ball_pass_outer == pytest.approx(z * s.cage_speed, rel=1e-14)
-    assert s.ball_pass_inner == pytest.approx(z * (10000 * RPM - s.cage_speed), rel=1e-14)
+    assert s.bpfo == pytest.approx(z * s.cage_speed, rel=1e-14)
+    assert s.bpfi == pytest.approx(z * (10000 * RPM - s.cage_speed), rel=1e-14)
     # the operating angles move the cage speed away from the pure-rolling value at the static angle
     nominal = kinematics.cage_speed(10000 * RPM, GEO[1], GEO[2], s.static_contact_angle)
     assert abs(s.cage_speed / nominal - 1) > 1e-3
@@ -445,7 +445,7 @@ def test_one_failed_case_does_not_stop_a_sweep():
     (dict(free_angle=0.0), r"free_angle must be in \(0, 90\) \[deg\]"),
     (dict(free_angle=math.pi / 2), r"free_angle must be in \(0, 90\) \[deg\]"),
     (dict(pitch_diameter=10e-3), r"pitch_diameter must be > ball_diameter"),
-    (dict(ball_density=-1.0), r"ball_density must be > 0"),
+    (dict(density=-1.0), r"density must be > 0"),
     (dict(method="brent"), r"method must be one of \['newton', 'angle-iteration'\]"),
     (dict(raceway_control="cage"), r"raceway_control must be one of \['outer', 'inner'\]"),
     (dict(gyroscopic_sign=0), r"gyroscopic_sign must be \+1"),
@@ -457,7 +457,7 @@ def test_one_failed_case_does_not_stop_a_sweep():
 def test_bad_input_names_parameter_rule_and_value(kwargs, match):
     z, d, dm, fi, fo, a0, ep, rho = GEO
     args = dict(axial_load=1e4, shaft_speed=1000.0, n_balls=z, ball_diameter=d, pitch_diameter=dm,
-                inner_conformity=fi, outer_conformity=fo, free_angle=a0, reduced_modulus=ep, ball_density=rho)
+                inner_conformity=fi, outer_conformity=fo, free_angle=a0, reduced_modulus=ep, density=rho)
     args.update(kwargs)
     with pytest.raises(InputError, match=match):
         quasistatic.contact_angles(**args)

@@ -258,7 +258,7 @@ def _print_single(b, r, options):
         ["ball load Q [N]", _f(r["ball_load_inner_N"], ".1f"), _f(r["ball_load_outer_N"], ".1f")],
         ["deflection δ [µm]", _f(r["deflection_inner_um"], ".3f"), _f(r["deflection_outer_um"], ".3f")],
         ["max contact pressure [MPa]", _f(r["max_pressure_inner_MPa"], ".0f"), _f(r["max_pressure_outer_MPa"], ".0f")],
-        ["ball-pass frequency [Hz]", _f(r["ball_pass_inner_Hz"], ".2f"), _f(r["ball_pass_outer_Hz"], ".2f")],
+        ["ball-pass frequency [Hz]", _f(r["bpfi_Hz"], ".2f"), _f(r["bpfo_Hz"], ".2f")],
     ], caption=caption)
     table("Ball and ring", ["quantity", "value"], [
         ["axial displacement δ_a [mm]", _f(r["axial_displacement_mm"], ".5f")],

@@ -183,12 +183,12 @@ def printed_constants(density):
     return PrintedConstants(fc[()], mg[()])
 
 
-def centrifugal_force(orbital_speed, ball_mass, pitch_diameter):
+def centrifugal_force(cage_speed, ball_mass, pitch_diameter):
     r"""Centrifugal force of a ball orbiting on the pitch circle, eq. (8).
 
     Parameters
     ----------
-    orbital_speed : array_like
+    cage_speed : array_like
         Ball orbital (cage) speed omega_m. [rad/s]
     ball_mass : array_like
         Mass of one ball m. [kg]
@@ -211,20 +211,20 @@ def centrifugal_force(orbital_speed, ball_mass, pitch_diameter):
     >>> print(f"{centrifugal_force(4518.0 * RPM, m, 125.3e-3):.1f} N")
     633.2 N
     """
-    w = as_float("orbital_speed", orbital_speed)
+    w = as_float("cage_speed", cage_speed)
     m = check_nonnegative("ball_mass", ball_mass, "kg")
     dm = check_positive("pitch_diameter", pitch_diameter, "m")
     return (m * dm / 2.0 * w**2)[()]
 
 
-def gyroscopic_moment(ball_spin_speed, orbital_speed, attitude_angle, ball_mass, ball_diameter):
+def gyroscopic_moment(ball_spin_speed, cage_speed, attitude_angle, ball_mass, ball_diameter):
     r"""Gyroscopic moment on a ball, eq. (12), as a magnitude.
 
     Parameters
     ----------
     ball_spin_speed : array_like
         Ball speed about its own axis omega_R (magnitude). [rad/s]
-    orbital_speed : array_like
+    cage_speed : array_like
         Orbital (cage) speed omega_m. [rad/s]
     attitude_angle : array_like
         Ball attitude angle beta. [rad]
@@ -252,7 +252,7 @@ def gyroscopic_moment(ball_spin_speed, orbital_speed, attitude_angle, ball_mass,
     1513.2 N mm
     """
     wr = as_float("ball_spin_speed", ball_spin_speed)
-    wm = as_float("orbital_speed", orbital_speed)
+    wm = as_float("cage_speed", cage_speed)
     beta = as_float("attitude_angle", attitude_angle)
     m = check_nonnegative("ball_mass", ball_mass, "kg")
     d = check_positive("ball_diameter", ball_diameter, "m")
@@ -569,7 +569,7 @@ def _constants(constants):
 
 
 def _prepare(axial_load, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
-             reduced_modulus, ball_density, raceway_control, gyroscopic_sign, constants, shape=None):
+             reduced_modulus, density, raceway_control, gyroscopic_sign, constants, shape=None):
     """Check inputs and broadcast them to flat per-case arrays."""
     fa = check_positive("axial_load", axial_load, "N")
     z = check_integer("n_balls", n_balls, 1)
@@ -580,7 +580,7 @@ def _prepare(axial_load, n_balls, ball_diameter, pitch_diameter, inner_conformit
     fo = check_open_interval("outer_conformity", outer_conformity, 0.5, np.inf, "-")
     a0 = _angle("free_angle", free_angle)
     ep = check_positive("reduced_modulus", reduced_modulus, "Pa")
-    rho = check_positive("ball_density", ball_density, "kg/m^3")
+    rho = check_positive("density", density, "kg/m^3")
     lam_i, lam_e = _control(raceway_control)
     if gyroscopic_sign not in (1, -1):
         raise InputError(f"gyroscopic_sign must be +1 (physical, spec 004 section 4) or -1 (reversed), "
@@ -728,7 +728,7 @@ def _equations(model, idx, v, w2, deriv):
 
 
 def residual(unknowns, axial_load, shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity,
-             outer_conformity, free_angle, reduced_modulus, ball_density, *, raceway_control="outer",
+             outer_conformity, free_angle, reduced_modulus, density, *, raceway_control="outer",
              gyroscopic_sign=1, constants="mass"):
     r"""Scaled residuals and Jacobian of the equilibrium equations of spec 004 section 5.1.
 
@@ -753,7 +753,7 @@ def residual(unknowns, axial_load, shaft_speed, n_balls, ball_diameter, pitch_di
         alpha0. [rad]
     reduced_modulus : array_like
         E'. [Pa]
-    ball_density : array_like
+    density : array_like
         Density of the balls. [kg/m^3]
     raceway_control : {"outer", "inner"}, optional
         lambda_i, lambda_e = (0, 2) or (2, 0).
@@ -780,7 +780,7 @@ def residual(unknowns, axial_load, shaft_speed, n_balls, ball_diameter, pitch_di
     if v.shape[-1:] != (5,):
         raise InputError(f"unknowns must have a last axis of length 5 (X1, X2, delta_i, delta_e, delta_a), got shape {v.shape}")
     model, shape = _prepare(axial_load, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
-                            free_angle, reduced_modulus, ball_density, raceway_control, gyroscopic_sign, constants,
+                            free_angle, reduced_modulus, density, raceway_control, gyroscopic_sign, constants,
                             shape=np.broadcast_shapes(v.shape[:-1], np.shape(w)))
     n = model.fa.size
     vv = np.broadcast_to(v, shape + (5,)).reshape(n, 5)
@@ -833,7 +833,7 @@ def _angle_sequence(model, idx, ai, ae, w2):
 
 
 def angle_residual(contact_angle_inner, contact_angle_outer, axial_load, shaft_speed, n_balls, ball_diameter,
-                   pitch_diameter, inner_conformity, outer_conformity, free_angle, reduced_modulus, ball_density, *,
+                   pitch_diameter, inner_conformity, outer_conformity, free_angle, reduced_modulus, density, *,
                    raceway_control="outer", gyroscopic_sign=1, constants="mass"):
     r"""The paper's sequence for trial contact angles: loads, deflections, delta_a and residuals E3, E7.
 
@@ -857,7 +857,7 @@ def angle_residual(contact_angle_inner, contact_angle_outer, axial_load, shaft_s
         alpha0. [rad]
     reduced_modulus : array_like
         E'. [Pa]
-    ball_density : array_like
+    density : array_like
         Density of the balls. [kg/m^3]
     raceway_control : {"outer", "inner"}, optional
         See :func:`residual`.
@@ -882,7 +882,7 @@ def angle_residual(contact_angle_inner, contact_angle_outer, axial_load, shaft_s
     ae = _angle("contact_angle_outer", contact_angle_outer)
     w = _speed("shaft_speed", shaft_speed)
     model, shape = _prepare(axial_load, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
-                            free_angle, reduced_modulus, ball_density, raceway_control, gyroscopic_sign, constants,
+                            free_angle, reduced_modulus, density, raceway_control, gyroscopic_sign, constants,
                             shape=np.broadcast_shapes(np.shape(ai), np.shape(ae), np.shape(w)))
     n = model.fa.size
     flat = [np.broadcast_to(a, shape).ravel() for a in (ai, ae, w)]
@@ -912,8 +912,8 @@ class HighSpeedState(NamedTuple):
     attitude_angle: np.ndarray  # beta [rad]
     cage_speed: np.ndarray  # omega_m [rad/s]
     ball_spin_speed: np.ndarray  # omega_R [rad/s]
-    ball_pass_outer: np.ndarray  # Z omega_m, ball-pass frequency of the fixed outer ring [rad/s]
-    ball_pass_inner: np.ndarray  # Z (omega_i - omega_m) [rad/s]
+    bpfo: np.ndarray  # Z omega_m, ball-pass frequency of the fixed outer ring [rad/s]
+    bpfi: np.ndarray  # Z (omega_i - omega_m) [rad/s]
     max_pressure_inner: np.ndarray  # p_max at the inner contact [Pa]
     max_pressure_outer: np.ndarray  # p_max at the outer contact [Pa]
     axial_stiffness: np.ndarray  # dF_a / d delta_a [N/m]
@@ -1242,7 +1242,7 @@ def _assemble(model, idx, v, w, alpha_s, ok):
         "ball_load_inner": fr["qi"], "ball_load_outer": fr["qe"], "deflection_inner": ex["di"],
         "deflection_outer": ex["de"], "centrifugal_force": fc, "gyroscopic_moment": mg, "attitude_angle": beta,
         "cage_speed": speeds.cage_speed, "ball_spin_speed": speeds.ball_spin_speed,
-        "ball_pass_outer": p["z"] * speeds.cage_speed, "ball_pass_inner": p["z"] * (w[sel] - speeds.cage_speed),
+        "bpfo": p["z"] * speeds.cage_speed, "bpfi": p["z"] * (w[sel] - speeds.cage_speed),
         "max_pressure_inner": pc_i.p_max, "max_pressure_outer": pc_o.p_max, "axial_stiffness": 1.0 / (dv[:, 4] * d),
         "friction_coefficient": friction_coefficient(mg, fr["qe"], d) if model.lam_e > 0 else
         friction_coefficient(mg, fr["qi"], d),
@@ -1254,7 +1254,7 @@ def _assemble(model, idx, v, w, alpha_s, ok):
 
 
 def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity,
-                   outer_conformity, free_angle, reduced_modulus, ball_density, *, method="newton",
+                   outer_conformity, free_angle, reduced_modulus, density, *, method="newton",
                    raceway_control="outer", gyroscopic_sign=1, constants="mass", on_failure="raise",
                    tol=_solve.QUASISTATIC_TOL, max_iter=_solve.QUASISTATIC_MAX_ITER,
                    speed_step=None, friction_limit=FRICTION_WARNING_LIMIT):
@@ -1278,7 +1278,7 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
         Free contact angle alpha0, in (0, 90 deg). [rad]
     reduced_modulus : array_like
         E' of the ball-ring pair (:func:`bearinglab.hertz.reduced_modulus`). [Pa]
-    ball_density : array_like
+    density : array_like
         Density of the balls (steel 7850, silicon nitride 3200). [kg/m^3]
     method : {"newton", "angle-iteration"}, optional
         Batched Newton-Raphson on the full set (spec 004 section 5.1, default) or the paper's
@@ -1363,7 +1363,7 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
     if speed_step is not None:
         speed_step = float(check_positive("speed_step", speed_step, "rad/s"))
     model, shape = _prepare(axial_load, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
-                            free_angle, reduced_modulus, ball_density, raceway_control, gyroscopic_sign, constants,
+                            free_angle, reduced_modulus, density, raceway_control, gyroscopic_sign, constants,
                             shape=np.shape(w))
     n = model.fa.size
     wf = np.broadcast_to(w, shape).ravel().astype(float)
@@ -1416,7 +1416,7 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
 
 
 def zero_displacement_thrust(shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
-                             free_angle, reduced_modulus, ball_density, *, rtol=1e-10, max_iter=60, **options):
+                             free_angle, reduced_modulus, density, *, rtol=1e-10, max_iter=60, **options):
     r"""Thrust at which the axial displacement delta_a changes sign, for each speed (spec 004 section 7.2).
 
     Parameters
@@ -1435,12 +1435,15 @@ def zero_displacement_thrust(shaft_speed, n_balls, ball_diameter, pitch_diameter
         alpha0. [rad]
     reduced_modulus : array_like
         E'. [Pa]
-    ball_density : array_like
+    density : array_like
         Density of the balls. [kg/m^3]
     rtol : float, optional
         Relative tolerance on the thrust. [-]
     max_iter : int, optional
         Iterations of the outer (thrust) solve.
+
+    Other Parameters
+    ----------------
     **options
         ``raceway_control``, ``gyroscopic_sign``, ``constants`` as in :func:`contact_angles`.
 
@@ -1460,7 +1463,7 @@ def zero_displacement_thrust(shaft_speed, n_balls, ball_diameter, pitch_diameter
     shape = np.shape(w)
     wf = np.ravel(w).astype(float)
     geo = (n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle, reduced_modulus,
-           ball_density)
+           density)
     out = np.zeros(wf.size)
     moving = np.flatnonzero(wf > 0)
     if moving.size == 0:
@@ -1533,6 +1536,9 @@ def high_speed_analysis(bearing, axial_load, shaft_speed, *, reduced_modulus=Non
     reduced_modulus : float, optional
         E' to use instead of the one of the bearing's materials (e.g. 2.15e5 * 3 / 2**1.5 MPa, the
         rounded constant of spec 004 eq. (16)). [Pa]
+
+    Other Parameters
+    ----------------
     **options
         Passed to :func:`contact_angles` (``method``, ``raceway_control``, ``gyroscopic_sign``,
         ``constants``, ``on_failure``, ...).
@@ -1570,6 +1576,9 @@ def sweep(bearing, axial_loads, shaft_speeds, *, progress=None, chunk_size=20_00
         Cases solved per batched call (all cases of a chunk are updated together).
     reduced_modulus : float, optional
         See :func:`high_speed_analysis`. [Pa]
+
+    Other Parameters
+    ----------------
     **options
         Passed to :func:`contact_angles`; ``on_failure`` defaults to "flag".
 
@@ -1630,8 +1639,8 @@ _COLUMNS = (
     ("attitude_angle_deg", "attitude_angle", 180.0 / math.pi),
     ("cage_speed_rpm", "cage_speed", 1.0 / RPM),
     ("ball_spin_speed_rpm", "ball_spin_speed", 1.0 / RPM),
-    ("ball_pass_outer_Hz", "ball_pass_outer", 1.0 / (2.0 * math.pi)),
-    ("ball_pass_inner_Hz", "ball_pass_inner", 1.0 / (2.0 * math.pi)),
+    ("bpfo_Hz", "bpfo", 1.0 / (2.0 * math.pi)),
+    ("bpfi_Hz", "bpfi", 1.0 / (2.0 * math.pi)),
     ("max_pressure_inner_MPa", "max_pressure_inner", 1e-6),
     ("max_pressure_outer_MPa", "max_pressure_outer", 1e-6),
     ("axial_stiffness_N_per_um", "axial_stiffness", 1e-6),
