@@ -11,13 +11,14 @@ catalog     built-in bearings and user TOML catalogs
 static      test-stand method (spec 000) and the static contact angle under thrust
 parallel    chunked batch execution, serial or on dask
 kinematics  cage and ball speeds, characteristic (defect) frequencies, spectral masks
+runout      spindle-bearing manufacturing errors -> initial inner-ring displacement, runout (spec 003)
 friction    friction torque: P0 max rule, one-term, two-term, Palmgren (spec 001 section 3)
 lab         the friction-rig lab: rig loads, calibration, measurement files, the three fits (spec 001)
 report      self-contained HTML reports of the friction lab, with PNG/SVG plots, CSV and JSON
 """
 
-from . import bearing, catalog, errors, friction, geometry, hertz, kinematics, lab, parallel, report, static, units
+from . import bearing, catalog, errors, friction, geometry, hertz, kinematics, lab, parallel, report, runout, static, units
 
 __version__ = "0.1.0"
-__all__ = ["bearing", "catalog", "errors", "friction", "geometry", "hertz", "kinematics", "lab", "parallel", "report",
+__all__ = ["bearing", "catalog", "errors", "friction", "geometry", "hertz", "kinematics", "lab", "parallel", "report", "runout",
            "static", "units", "__version__"]

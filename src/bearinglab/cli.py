@@ -268,7 +268,7 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name or alias
 
 # ----------------------------------------------------------------------------- capability modules
 # Each module defines register(app). Listed here so that the command line is complete on import.
-_COMMAND_MODULES: tuple[str, ...] = ("_cli_stand", "_cli_frequencies", "_cli_sweep", "_cli_highspeed", "_cli_friction")
+_COMMAND_MODULES: tuple[str, ...] = ("_cli_stand", "_cli_frequencies", "_cli_sweep", "_cli_highspeed", "_cli_friction", "_cli_runout")
 
 
 _registered = False

@@ -1,0 +1,652 @@
+"""Command line of spec 003: ``runout`` (one angle or a rotation sequence) and ``runout monte-carlo``.
+
+``runout`` is a sub-application whose callback does the single-angle / sequence computation when no
+subcommand is given; ``monte-carlo`` is its subcommand. Options of the callback written before the
+subcommand are rejected rather than silently ignored.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import os
+import sys
+import tempfile
+from pathlib import Path
+from typing import Annotated
+
+import numpy as np
+import typer
+
+from . import catalog as _catalog
+from . import runout
+from .cli import BearingName, CatalogFile, JsonFlag, console, emit_json, table
+from .errors import CatalogError, ConvergenceError, InputError
+from .units import parse_quantity
+
+__all__ = ["register"]
+
+UM = 1e-6
+
+GeometryFile = Annotated[
+    Path | None,
+    typer.Option(
+        "--geometry",
+        "-g",
+        help="TOML file with a 'geometry' table (or a bearing file); default: the 'geometry' "
+        "table of the errors file.",
+        rich_help_panel="Bearing",
+    ),
+]
+FirstBall = Annotated[
+    str | None,
+    typer.Option(
+        "--first-ball-angle",
+        help="Azimuth of ball 1 at psi = 0, e.g. '0 deg' (overrides the geometry).",
+        rich_help_panel="Bearing",
+    ),
+]
+CageRatio = Annotated[
+    float | None,
+    typer.Option(
+        "--cage-ratio",
+        help="Cage speed / inner-ring speed kappa (default (1 - gamma)/2).",
+        rich_help_panel="Rotation",
+    ),
+]
+PlotDir = Annotated[
+    Path | None, typer.Option("--plot", help="Write the figures (PNG) into this directory.")
+]
+
+
+# ----------------------------------------------------------------------------- helpers
+def _geometry(geometry_file, bearing, catalog_file, first_ball_angle):
+    """The geometry given by --geometry or --bearing (None when neither is given)."""
+    from . import _runout_io
+
+    if geometry_file and bearing:
+        raise InputError("geometry: give --geometry FILE or --bearing NAME, not both")
+    theta1 = (
+        None
+        if first_ball_angle is None
+        else parse_quantity(first_ball_angle, "angle", "first-ball-angle", default_unit="deg")
+    )
+    g = None
+    if bearing:
+        g = runout.geometry_from_bearing(_catalog.get(bearing, catalog=catalog_file))
+    elif geometry_file:
+        try:
+            g = _runout_io.read_geometry_file(geometry_file)
+        except CatalogError as exc:
+            if "no [geometry] table" not in str(exc):
+                raise
+            g = runout.geometry_from_bearing(_catalog.load_bearing_file(geometry_file))
+    if g is not None and theta1 is not None:
+        g = g._replace(first_ball_angle=theta1)
+    return g, theta1
+
+
+def _atomic_write(path, text):
+    """Write a whole file or nothing: a temporary file in the same directory, then os.replace."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
+            fh.write(text)
+        os.chmod(tmp, 0o644)  # mkstemp creates 0600; an output table is an ordinary file
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def _csv_text(header, rows, comments=()):
+    buf = io.StringIO()
+    for line in comments:
+        buf.write(f"# {line}\n")
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(header)
+    w.writerows(rows)
+    return buf.getvalue()
+
+
+def _um(v):
+    return float(v) / UM
+
+
+def _metrics_dict(m):
+    return {f"{name}_um": _um(getattr(m, name)) for name in runout.METRICS}
+
+
+def _geometry_dict(g):
+    return {
+        "balls": g.n_balls,
+        "ball_diameter_mm": 2e3 * g.ball_radius,
+        "pitch_diameter_mm": 2e3 * g.ball_centre_radius,
+        "outer_groove_radius_mm": 1e3 * g.outer_groove_radius,
+        "inner_groove_radius_mm": 1e3 * g.inner_groove_radius,
+        "outer_bottom_radius_mm": 1e3 * g.outer_bottom_radius,
+        "inner_bottom_radius_mm": 1e3 * g.inner_bottom_radius,
+        "contact_angle_deg": math.degrees(g.contact_angle),
+        "first_ball_angle_deg": math.degrees(g.first_ball_angle),
+        "groove_distance_mm": 1e3 * g.groove_distance,
+        "axial_offset_mm": 1e3 * g.axial_offset,
+        "inner_centre_radius_mm": 1e3 * g.inner_centre_radius,
+        "gamma": g.pitch_ratio,
+        "cage_ratio": g.cage_ratio,
+    }
+
+
+def _single_dict(d, g):
+    c = d.contact
+    st = d.shifts
+    balls = []
+    for i in range(g.n_balls):
+        s_i = float(
+            c.constant + c.sine * np.sin(d.ball_angle[i]) + c.cosine * np.cos(d.ball_angle[i])
+        )
+        row = {
+            "ball": i + 1,
+            "theta_deg": math.degrees(d.ball_angle[i]) % 360.0,
+            "dk_um": _um(d.generalized_error[i]),
+            "s_um": _um(s_i),
+            "slack_um": _um(c.slack[i]),
+            "contact": bool(c.contact[i]),
+            "load_share": float(c.load_share[i]),
+        }
+        if int(d.passes):
+            row.update(
+                {
+                    "dtau1_rad": float(st.outer_contact_angle[i]),
+                    "dtau2_rad": float(st.inner_contact_angle[i]),
+                    "dtheta2_rad": float(st.inner_azimuth[i]),
+                }
+            )
+        balls.append(row)
+    out = {
+        "mode": "single",
+        "psi_deg": math.degrees(d.rotation_angle),
+        "a0_um": _um(c.constant),
+        "B_um": _um(c.sine),
+        "D_um": _um(c.cosine),
+        "A_um": _um(c.amplitude),
+        "phi_deg": math.degrees(c.phase),
+        "dx_um": _um(d.x),
+        "dy_um": _um(d.y),
+        "dz_um": _um(d.z),
+        "contact_balls": [int(i) + 1 for i in np.flatnonzero(c.contact)],
+        "degenerate": bool(c.degenerate),
+        "free_play_um": _um(d.free_play),
+        "face_diameter_um": _um(c.face_diameter),
+        "tilt_alpha_urad": float(d.tilt_x) / UM,
+        "tilt_beta_urad": float(d.tilt_y) / UM,
+        "refined": bool(int(d.passes) > 0),
+        "passes": int(d.passes),
+        "converged": bool(d.converged),
+        "first_approximation": {
+            "dx_um": _um(d.first_approximation.x),
+            "dy_um": _um(d.first_approximation.y),
+            "dz_um": _um(d.first_approximation.z),
+        },
+        "balls": balls,
+    }
+    return out
+
+
+def _sequence_dict(t, lines):
+    d = t.displacement
+    out = {
+        "mode": "sequence",
+        "revolutions": t.revolutions,
+        "steps_per_rev": t.steps_per_revolution,
+        "positions": int(t.rotation_angle.size),
+        "cage_ratio": t.cage_ratio,
+    }
+    out.update(_metrics_dict(t.metrics))
+    out["synchronous"] = _metrics_dict(t.synchronous)
+    out["asynchronous"] = _metrics_dict(t.asynchronous)
+    out["degenerate_fraction"] = t.degenerate_fraction
+    out["refined"] = bool(np.any(d.passes > 0))
+    out["passes_max"] = int(np.max(d.passes))
+    out["all_converged"] = bool(np.all(d.converged))
+    out["spectrum_lines"] = [
+        {
+            "component": ln.component,
+            "order": ln.order,
+            "amplitude_um": _um(ln.amplitude),
+            "label": ln.label,
+            "source": ln.source,
+            "cage_harmonic": ln.cage_harmonic,
+            "shaft_harmonic": ln.shaft_harmonic,
+        }
+        for ln in lines
+    ]
+    out["trajectory"] = {
+        "psi_deg": np.degrees(t.rotation_angle),
+        "dx_um": d.x / UM,
+        "dy_um": d.y / UM,
+        "dz_um": d.z / UM,
+        "contact_balls": [[int(i) + 1 for i in np.flatnonzero(row)] for row in d.contact.contact],
+        "degenerate": d.contact.degenerate,
+        "free_play_um": d.free_play / UM,
+    }
+    return out
+
+
+def _trajectory_csv(t):
+    d = t.displacement
+    rows = [
+        [
+            f"{math.degrees(p):.6f}",
+            f"{x / UM:.9f}",
+            f"{y / UM:.9f}",
+            f"{z / UM:.9f}",
+            " ".join(str(int(i) + 1) for i in np.flatnonzero(c)),
+            int(dg),
+            f"{fp / UM:.9f}",
+        ]
+        for p, x, y, z, c, dg, fp in zip(
+            t.rotation_angle, d.x, d.y, d.z, d.contact.contact, d.contact.degenerate, d.free_play
+        )
+    ]
+    return _csv_text(
+        ["psi_deg", "dx_um", "dy_um", "dz_um", "contact_balls", "degenerate", "free_play_um"],
+        rows,
+        [
+            "bearinglab runout: inner-ring centre trajectory (spec 003 section 10)",
+            "units: psi in deg, displacements in um; contact_balls 1-based",
+        ],
+    )
+
+
+def _print_single(info):
+    table(
+        f"Inner-ring displacement at psi = {info['psi_deg']:g} deg",
+        ["quantity", "value"],
+        [
+            ["a0 [µm]", f"{info['a0_um']:.6f}"],
+            ["B [µm]", f"{info['B_um']:.6f}"],
+            ["D [µm]", f"{info['D_um']:.6f}"],
+            ["A [µm], φ [deg]", f"{info['A_um']:.6f}, {info['phi_deg']:.4f}"],
+            ["Δx [µm]", f"{info['dx_um']:.6f}"],
+            ["Δy [µm]", f"{info['dy_um']:.6f}"],
+            ["Δz [µm]", f"{info['dz_um']:.6f}"],
+            ["contact balls", ", ".join(map(str, info["contact_balls"]))],
+            ["degenerate (free play [µm])", f"{info['degenerate']} ({info['free_play_um']:.6f})"],
+            ["refinement passes (converged)", f"{info['passes']} ({info['converged']})"],
+        ],
+    )
+    table(
+        "Balls",
+        ["ball", "θ [deg]", "Δk [µm]", "s(θ) [µm]", "slack [µm]", "contact", "λ"],
+        [
+            [
+                b["ball"],
+                f"{b['theta_deg']:.4f}",
+                f"{b['dk_um']:.6f}",
+                f"{b['s_um']:.6f}",
+                f"{b['slack_um']:.6f}",
+                "●" if b["contact"] else "",
+                f"{b['load_share']:.6f}" if b["load_share"] else "",
+            ]
+            for b in info["balls"]
+        ],
+    )
+
+
+def _print_metrics(title, rows):
+    table(
+        title,
+        ["metric", *[r[0] for r in rows]],
+        [
+            [name.replace("_", " ") + " [µm]", *[f"{r[1][f'{name}_um']:.6f}" for r in rows]]
+            for name in runout.METRICS
+        ],
+    )
+
+
+# ----------------------------------------------------------------------------- runout
+runout_app = typer.Typer(
+    help="Initial inner-ring displacement and runout from manufacturing errors (spec 003).",
+    invoke_without_command=True,
+    no_args_is_help=False,
+    context_settings={"help_option_names": ["-h", "--help"]},
+)
+
+
+@runout_app.callback(invoke_without_command=True)
+def runout_command(
+    ctx: typer.Context,
+    errors: Annotated[
+        Path | None,
+        typer.Option("--errors", "-e", help="TOML error file (examples/runout/README.md)."),
+    ] = None,
+    geometry: GeometryFile = None,
+    bearing: BearingName = None,
+    catalog: CatalogFile = None,
+    first_ball_angle: FirstBall = None,
+    angle: Annotated[
+        str | None,
+        typer.Option(
+            "--angle",
+            help="One rotation angle psi, e.g. '90' or '90 deg' (default 0).",
+            rich_help_panel="Rotation",
+        ),
+    ] = None,
+    revolutions: Annotated[
+        int | None,
+        typer.Option(
+            "--revolutions",
+            help="Rotation sequence over N inner-ring revolutions.",
+            rich_help_panel="Rotation",
+        ),
+    ] = None,
+    steps_per_rev: Annotated[
+        int | None,
+        typer.Option(
+            "--steps-per-rev",
+            help="Positions per revolution of the sequence (default 360).",
+            rich_help_panel="Rotation",
+        ),
+    ] = None,
+    start_angle: Annotated[
+        str,
+        typer.Option(
+            "--start-angle",
+            help="psi of the first position of the sequence.",
+            rich_help_panel="Rotation",
+        ),
+    ] = "0 deg",
+    cage_ratio: CageRatio = None,
+    refine: Annotated[
+        bool, typer.Option("--refine", help="Refine the contact points (spec 003 section 9).")
+    ] = False,
+    json_out: JsonFlag = False,
+    plot: PlotDir = None,
+    csv_out: Annotated[
+        Path | None, typer.Option("--csv", help="Write the trajectory (sequence) as CSV.")
+    ] = None,
+):
+    """Inner-ring displacement at one angle, or the trajectory and runout over revolutions.
+
+    Give the errors with --errors FILE and the geometry in that file's [geometry] table, with --geometry
+    FILE or with --bearing NAME. `runout monte-carlo --help` for the tolerance-class study.
+    """
+    if ctx.invoked_subcommand is not None:
+        given = [
+            f"--{k.replace('_', '-')}"
+            for k, v in ctx.params.items()
+            if v not in (None, False) and not (k == "start_angle" and v == "0 deg")
+        ]
+        if given:
+            raise InputError(
+                f"runout: {', '.join(given)} given before '{ctx.invoked_subcommand}'; write the "
+                f"options after the subcommand"
+            )
+        return
+    from . import _runout_io
+
+    if errors is None:
+        raise InputError(
+            "errors: give the error file with --errors FILE (see examples/runout/README.md)"
+        )
+    g, theta1 = _geometry(geometry, bearing, catalog, first_ball_angle)
+    g, e = _runout_io.read_error_file(errors, g)
+    if theta1 is not None:
+        g = g._replace(first_ball_angle=theta1)
+    sequence = revolutions is not None or steps_per_rev is not None
+    if sequence and angle is not None:
+        raise InputError(
+            "angle: give --angle for one position or --revolutions/--steps-per-rev for a sequence, not both"
+        )
+    if csv_out is not None and not sequence:
+        raise InputError(
+            "csv: --csv writes a trajectory; give --revolutions N (and --steps-per-rev M)"
+        )
+    if not sequence:
+        psi = 0.0 if angle is None else parse_quantity(angle, "angle", "angle", default_unit="deg")
+        d = runout.initial_displacement(psi, g, e, refine=refine, cage_ratio=cage_ratio)
+        info = _single_dict(d, g)
+        info["geometry"] = _geometry_dict(g)
+        if plot is not None:
+            from . import _runout_plots
+
+            info["figures"] = [str(p) for p in _runout_plots.save_single(d, plot)]
+        if json_out:
+            emit_json(info)
+        else:
+            _print_single(info)
+            if plot is not None:
+                console.print(f"figures: {', '.join(info['figures'])}")
+        return
+    revs = 3 if revolutions is None else revolutions
+    steps = 360 if steps_per_rev is None else steps_per_rev
+    if revs < 1 or steps < 2:
+        raise InputError(f"revolutions must be >= 1 and steps-per-rev >= 2, got {revs} and {steps}")
+    t = runout.rotation_sequence(
+        g,
+        e,
+        revolutions=revs,
+        steps_per_revolution=steps,
+        start_angle=parse_quantity(start_angle, "angle", "start-angle", default_unit="deg"),
+        cage_ratio=cage_ratio,
+        refine=refine,
+    )
+    if not np.all(t.displacement.converged):
+        bad = np.flatnonzero(~t.displacement.converged)
+        raise ConvergenceError(
+            "runout --refine",
+            iterations=int(t.displacement.passes.max()),
+            residual=np.full(bad.size, np.nan),
+            estimate=t.displacement.z[bad],
+            reason=f"{bad.size} of {t.rotation_angle.size} positions did not converge",
+        )
+    d = t.displacement
+    spec = runout.runout_spectrum(d.x, d.y, d.z, steps)
+    lines = runout.spectrum_lines(spec, t.cage_ratio)
+    info = _sequence_dict(t, lines)
+    info["geometry"] = _geometry_dict(g)
+    if csv_out is not None:
+        _atomic_write(csv_out, _trajectory_csv(t))
+        info["csv"] = str(csv_out)
+    if plot is not None:
+        from . import _runout_plots
+
+        info["figures"] = [str(p) for p in _runout_plots.save_sequence(t, spec, lines, plot)]
+    if json_out:
+        emit_json(info)
+        return
+    _print_metrics(
+        f"Runout over {revs} revolutions, {steps} steps per revolution (µm)",
+        [
+            ("whole", info),
+            ("synchronous", info["synchronous"]),
+            ("asynchronous", info["asynchronous"]),
+        ],
+    )
+    console.print(
+        f"degenerate positions: {100 * t.degenerate_fraction:.1f} %   cage ratio κ = {t.cage_ratio:.6f}"
+        + (f"   refined, at most {info['passes_max']} passes" if refine else "")
+    )
+    if lines:
+        table(
+            "Spectral lines",
+            ["component", "order", "amplitude [µm]", "line", "source"],
+            [
+                [ln.component, f"{ln.order:.4f}", f"{_um(ln.amplitude):.6f}", ln.label, ln.source]
+                for ln in lines
+            ],
+        )
+    for key in ("csv", "figures"):
+        if key in info:
+            console.print(f"{key}: {info[key] if key == 'csv' else ', '.join(info[key])}")
+
+
+@runout_app.command("monte-carlo")
+def monte_carlo_command(
+    geometry: GeometryFile = None,
+    bearing: BearingName = None,
+    catalog: CatalogFile = None,
+    ball_grade: Annotated[
+        str,
+        typer.Option("--ball-grade", help="ISO 3290 grade: G3, G5, G10, G16, G20, G24, G28, G40."),
+    ] = "G5",
+    ring_class: Annotated[
+        str, typer.Option("--ring-class", help="Ring-class preset: P5, P4, P2.")
+    ] = "P4",
+    samples: Annotated[int, typer.Option("--samples", help="Number of random bearings.")] = 200,
+    seed: Annotated[
+        int, typer.Option("--seed", help="Root seed (results do not depend on chunking).")
+    ] = 0,
+    steps_per_rev: Annotated[
+        int, typer.Option("--steps-per-rev", help="Positions per revolution.")
+    ] = 180,
+    revolutions: Annotated[int, typer.Option("--revolutions", help="Revolutions per sample.")] = 2,
+    max_order: Annotated[
+        int, typer.Option("--max-order", help="Highest waviness order K_max.")
+    ] = 15,
+    cage_ratio: CageRatio = None,
+    chunk_size: Annotated[int, typer.Option("--chunk-size", help="Samples per batch.")] = 100,
+    samples_csv: Annotated[
+        Path | None, typer.Option("--samples-csv", help="Write the per-sample metrics as CSV.")
+    ] = None,
+    progress: Annotated[
+        bool,
+        typer.Option("--progress/--no-progress", help="Progress bar on stderr (terminals only)."),
+    ] = True,
+    json_out: JsonFlag = False,
+    plot: PlotDir = None,
+):
+    """Runout statistics over random bearings of a ball grade and a ring class (spec 003 section 11)."""
+    g, _ = _geometry(geometry, bearing, catalog, None)
+    if g is None:
+        raise InputError("geometry: give --geometry FILE or --bearing NAME")
+    if samples < 2:
+        raise InputError(f"samples must be >= 2 [-], got {samples}")
+    grade = runout.ball_grade(ball_grade)
+    rings = runout.ring_class(ring_class)
+    show = progress and sys.stderr.isatty()
+    if show:
+        from rich.console import Console
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeRemainingColumn
+
+        bar = Progress(
+            "[progress.description]{task.description}",
+            BarColumn(),
+            MofNCompleteColumn(),
+            TimeRemainingColumn(),
+            console=Console(stderr=True),
+            transient=True,
+        )
+        with bar:
+            task = bar.add_task("Monte Carlo", total=samples)
+            r = runout.monte_carlo(
+                g,
+                grade,
+                rings,
+                samples,
+                seed,
+                steps_per_revolution=steps_per_rev,
+                revolutions=revolutions,
+                max_order=max_order,
+                cage_ratio=cage_ratio,
+                chunk_size=chunk_size,
+                progress=lambda done, total: bar.update(task, completed=done),
+            )
+    else:
+        r = runout.monte_carlo(
+            g,
+            grade,
+            rings,
+            samples,
+            seed,
+            steps_per_revolution=steps_per_rev,
+            revolutions=revolutions,
+            max_order=max_order,
+            cage_ratio=cage_ratio,
+            chunk_size=chunk_size,
+        )
+    info = {
+        "samples": samples,
+        "seed": seed,
+        "ball_grade": grade.name,
+        "ring_class": rings.name,
+        "steps_per_rev": steps_per_rev,
+        "revolutions": revolutions,
+        "max_order": max_order,
+        "ball_grade_source": grade.source,
+        "ring_class_source": rings.source,
+        "ball_grade_um": {
+            "V_DWS": grade.single_diameter_variation / UM,
+            "V_DWL": grade.lot_diameter_variation / UM,
+        },
+        "ring_class_um": {
+            "K_ia": rings.radial_runout / UM,
+            "S_ia": rings.axial_runout / UM,
+            "w_rms": rings.waviness_rms / UM,
+        },
+        "geometry": _geometry_dict(g),
+    }
+    for name in runout.METRICS:
+        info[f"{name}_um"] = {k: v / UM for k, v in r.summary[name]._asdict().items()}
+    info["degenerate_fraction_mean"] = float(np.mean(r.samples.degenerate_fraction))
+    if samples_csv is not None:
+        s = r.samples
+        rows = [
+            [
+                int(i),
+                f"{math.degrees(t1):.6f}",
+                *[f"{getattr(s, m)[k] / UM:.9f}" for m in runout.METRICS],
+                f"{s.degenerate_fraction[k]:.6f}",
+            ]
+            for k, (i, t1) in enumerate(zip(s.sample_index, s.first_ball_angle))
+        ]
+        _atomic_write(
+            samples_csv,
+            _csv_text(
+                [
+                    "sample",
+                    "first_ball_angle_deg",
+                    *[f"{m}_um" for m in runout.METRICS],
+                    "degenerate_fraction",
+                ],
+                rows,
+                [
+                    (
+                        f"bearinglab runout monte-carlo: {grade.name} / {rings.name}, seed {seed}, {samples} samples, "
+                        f"{revolutions} rev x {steps_per_rev} steps, K_max {max_order}"
+                    ),
+                    "units: um",
+                ],
+            ),
+        )
+        info["samples_csv"] = str(samples_csv)
+    if plot is not None:
+        from . import _runout_plots
+
+        info["figures"] = [str(p) for p in _runout_plots.save_monte_carlo(r, plot)]
+    if json_out:
+        emit_json(info)
+        return
+    table(
+        f"Monte Carlo {grade.name} / {rings.name}: {samples} samples, seed {seed} (µm)",
+        ["metric", "mean", "std", "median", "p95", "max"],
+        [
+            [
+                name.replace("_", " "),
+                *[f"{info[f'{name}_um'][k]:.3f}" for k in ("mean", "std", "median", "p95", "max")],
+            ]
+            for name in runout.METRICS
+        ],
+    )
+    for key in ("samples_csv", "figures"):
+        if key in info:
+            console.print(f"{key}: {info[key] if key == 'samples_csv' else ', '.join(info[key])}")
+
+
+def register(app):
+    """Add ``runout`` (with its ``monte-carlo`` subcommand) to the command line."""
+    app.add_typer(runout_app, name="runout")
