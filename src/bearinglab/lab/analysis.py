@@ -617,6 +617,10 @@ def _pct(x):
     return f"{0.0 if abs(v) < 0.05 else v:+.1f} %"
 
 
+def _share(x, digits=1):
+    return f"{x * 100:.{digits}f} %"
+
+
 def _rpm(w):
     return f"{w / _RPM:.6g} rpm"
 
@@ -649,11 +653,11 @@ def conclusions(result):
         parts = ", ".join(f"{_pct(v)} at {_rpm(n)} (β = {_deg(t)}°)" for v, n, t in
                           zip(ind.mu_vs_handbook, t1.shaft_speed, t1.tilt))
         ok = np.all(np.abs(ind.mu_vs_handbook) <= th)
-        verdict = (f"admissible within ±{th:.0%} at every speed" if ok else
-                   f"not admissible within ±{th:.0%} everywhere")
+        verdict = (f"admissible within ±{_share(th, 0)} at every speed" if ok else
+                   f"not admissible within ±{_share(th, 0)} everywhere")
         out.append(f"I2, admissibility of the one-term formula: μ/μ_hb − 1 = {parts} (μ_hb = {hb.friction_coefficient:g}); "
                    f"the handbook value is {verdict}.")
-        parts = ", ".join(f"{v:.1%} at {_rpm(n)}" for v, n in zip(ind.one_term_adequacy, t1.shaft_speed))
+        parts = ", ".join(f"{_share(v)} at {_rpm(n)}" for v, n in zip(ind.one_term_adequacy, t1.shaft_speed))
         bad = np.any(ind.one_term_adequacy > th)
         verdict = ("the line through the origin misses a load-independent part of the torque (T0): the two-term "
                    "model is needed" if bad else "the one-term model describes the data adequately")
@@ -669,7 +673,7 @@ def conclusions(result):
             verdict = "f0 does not depend on β, as the model assumes" if ind.f0_spread <= th else \
                 "f0 varies with β, contrary to the model"
             out.append(f"I4, dependence of f0 on β: f0 = {parts} N·mm⁻²·min^(2/3), mean {ind.mean_speed_term_factor:.6e}; "
-                       f"(max − min)/mean = {ind.f0_spread:.2%}: {verdict}.")
+                       f"(max − min)/mean = {_share(ind.f0_spread, 2)}: {verdict}.")
         for a, bb, measured, predicted in ind.load_term_ratio:
             out.append(f"I5, load term against (3.4): T_F = {t2.load_term[a] / _MM:.6g} N·mm at β = {_deg(t2.tilt[a])}° "
                        f"and {t2.load_term[bb] / _MM:.6g} N·mm at β = {_deg(t2.tilt[bb])}° (Q = {t2.mass[bb]:g} kg): "
@@ -690,7 +694,7 @@ def conclusions(result):
             parts = ", ".join(f"{t3.load_term_factor[k]:.4e} at {_rpm(t3.shaft_speed[k])}" for k in ks)
             verdict = "f is practically independent of speed" if i6 <= th else "f depends on speed"
             rel = ", ".join(_pct(ind.f_vs_handbook[k]) for k in ks)
-            out.append(f"I6, dependence of f on speed (β = {_deg(tilt)}°): f = {parts}; (max − min)/mean = {i6:.2%}: "
+            out.append(f"I6, dependence of f on speed (β = {_deg(tilt)}°): f = {parts}; (max − min)/mean = {_share(i6, 2)}: "
                        f"{verdict}. Against f_hb = {hb.load_term_factor:g}: f/f_hb − 1 = {rel}.")
         if not ind.f_spread:
             rel = ", ".join(f"{_pct(v)} at {_rpm(n)}" for v, n in zip(ind.f_vs_handbook, t3.shaft_speed))
