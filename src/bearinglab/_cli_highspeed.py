@@ -278,11 +278,11 @@ def _print_sweep(b, rows, options):
     caption = (f"{len(rows)} cases, {failed} failed; {options['raceway_control']}-raceway control, constants "
                f"{options['constants']}, solver {options['method']}; --json or --csv for every output")
     table(f"Bearing {b.designation}: high-speed contact angles under thrust",
-          ["F_a kN", "n rpm", "α_i °", "α_e °", "δ_a µm", "Q_i N", "Q_e N", "F_c N", "M_g N·mm", "status"],
+          ["F_a kN", "n rpm", "α_i °", "α_e °", "δ_a µm", "Q_i N", "Q_e N", "M_g N·mm", "status"],
           [[f"{r['axial_load_kN']:g}", f"{r['speed_rpm']:g}", _f(r["contact_angle_inner_deg"], ".3f"),
             _f(r["contact_angle_outer_deg"], ".3f"),
             _f(None if r["axial_displacement_mm"] is None else r["axial_displacement_mm"] * 1e3, ".2f"),
-            _f(r["ball_load_inner_N"], ".0f"), _f(r["ball_load_outer_N"], ".0f"), _f(r["centrifugal_force_N"], ".0f"),
+            _f(r["ball_load_inner_N"], ".0f"), _f(r["ball_load_outer_N"], ".0f"),
             _f(r["gyroscopic_moment_Nmm"], ".0f"), r["status"]] for r in rows], caption=caption)
 
 

@@ -29,6 +29,7 @@ zero_displacement_thrust  the thrust at which the axial displacement changes sig
 Analyses on a :class:`~bearinglab.bearing.BallBearing`
 ------------------------------------------------------
 high_speed_analysis       one bearing, loads and speeds broadcast against each other
+sign_change_thrust        the thrust at which delta_a changes sign, for one bearing and its speeds
 sweep                     a loads x speeds grid in one batched call; failures flagged per case
 result_table              the result as columns in engineering units (CSV, JSON)
 
@@ -90,6 +91,7 @@ __all__ = [
     "contact_angles",
     "zero_displacement_thrust",
     "high_speed_analysis",
+    "sign_change_thrust",
     "sweep",
     "result_table",
 ]
@@ -1557,6 +1559,40 @@ def high_speed_analysis(bearing, axial_load, shaft_speed, *, reduced_modulus=Non
     56.099 / 21.121 deg, mu = 0.086
     """
     return contact_angles(axial_load, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
+
+
+def sign_change_thrust(bearing, shaft_speed, *, reduced_modulus=None, **options):
+    """The thrust at which the axial displacement of a bearing changes sign, per speed (spec 004 section 7.2).
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        See :func:`high_speed_analysis`.
+    shaft_speed : array_like
+        Inner-ring speeds >= 0. [rad/s]
+    reduced_modulus : float, optional
+        See :func:`high_speed_analysis`. [Pa]
+
+    Other Parameters
+    ----------------
+    **options
+        Passed to :func:`zero_displacement_thrust` (``constants``, ``raceway_control``, ...).
+
+    Returns
+    -------
+    ndarray
+        F_a with delta_a = 0 (0 at zero speed). [N]
+
+    Examples
+    --------
+    >>> from bearinglab import catalog
+    >>> from bearinglab.units import RPM
+    >>> f = sign_change_thrust(catalog.get("B218"), [3000 * RPM, 15000 * RPM], constants="harris",
+    ...                        reduced_modulus=2.15e11 * 3 / 2**1.5)
+    >>> print(np.round(f / 1e3, 2))
+    [ 2.31 26.81]
+    """
+    return zero_displacement_thrust(shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
 
 
 def sweep(bearing, axial_loads, shaft_speeds, *, progress=None, chunk_size=20_000, reduced_modulus=None, **options):
