@@ -15,10 +15,12 @@ runout      spindle-bearing manufacturing errors -> initial inner-ring displacem
 friction    friction torque: P0 max rule, one-term, two-term, Palmgren (spec 001 section 3)
 lab         the friction-rig lab: rig loads, calibration, measurement files, the three fits (spec 001)
 report      self-contained HTML reports of the friction lab, with PNG/SVG plots, CSV and JSON
+quasistatic high-speed angular-contact bearing under thrust: centrifugal force, gyroscopic moment (spec 004)
 """
 
-from . import bearing, catalog, errors, friction, geometry, hertz, kinematics, lab, parallel, report, runout, static, units
+from . import (bearing, catalog, errors, friction, geometry, hertz, kinematics, lab, parallel, quasistatic, report, runout,
+               static, units)
 
 __version__ = "0.1.0"
-__all__ = ["bearing", "catalog", "errors", "friction", "geometry", "hertz", "kinematics", "lab", "parallel", "report", "runout",
+__all__ = ["bearing", "catalog", "errors", "friction", "geometry", "hertz", "kinematics", "lab", "parallel", "quasistatic", "report", "runout",
            "static", "units", "__version__"]
