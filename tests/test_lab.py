@@ -481,3 +481,17 @@ def test_results_dict_is_json_clean():
     assert json.loads(text)["format"] == analysis.RESULTS_FORMAT
     assert {"task1", "task2", "task3", "indicators", "conclusions", "tables", "plots", "rows"} <= set(d)
     assert d["rows"][0]["tilt_deg"] == 45.0 and d["task2"][1]["tilt_deg"] == 60.0  # no 59.99999999999999
+
+
+def test_benchmark_paths_agree_on_a_small_input():
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("friction_fits_bench", Path(__file__).resolve().parent.parent
+                                                  / "bench" / "friction_fits.py")
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    t, speed, groups = bench.cases(20, seed=3)
+    f0, tf = bench.batched(t, speed, groups)
+    f0_ref, tf_ref = bench.baseline(t, speed, 20)
+    assert_allclose(f0, f0_ref, rtol=1e-10)
+    assert_allclose(tf, tf_ref, rtol=1e-9)
