@@ -203,7 +203,18 @@ _DISPLAY = {"force": ("_N", 1.0), "angle": ("_deg", 180.0 / math.pi), "speed": (
 
 
 def register_model(model: SweepModel):
-    """Make a model available to sweep files (the capability modules register theirs)."""
+    """Make a model available to sweep files (the capability modules register theirs).
+
+    Parameters
+    ----------
+    model : SweepModel
+        Name, case parameters with their kinds, the pure chunk function and a description.
+
+    Returns
+    -------
+    SweepModel
+        The model, now in :data:`MODELS`.
+    """
     MODELS[model.name] = model
     return model
 
