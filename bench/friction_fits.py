@@ -63,11 +63,19 @@ def main():
     t_batch, (f0, tf) = best_of(lambda: batched(t, speed, groups), 3)
     t_base, (f0_ref, tf_ref) = best_of(lambda: baseline(t, speed, N_BASELINE), 1)
     rate, base_rate = N_GROUPS / t_batch, N_BASELINE / t_base
-    diff = max(np.max(np.abs(f0[:N_BASELINE] / f0_ref - 1)), np.max(np.abs(tf[:N_BASELINE] / tf_ref - 1)))
-    print(f"grouped bincount fit : {N_GROUPS:>8d} groups of {POINTS} in {t_batch:8.3f} s = {rate:12.4g} groups/s")
-    print(f"per-group linregress : {N_BASELINE:>8d} groups of {POINTS} in {t_base:8.3f} s = {base_rate:12.4g} groups/s")
+    diff = max(
+        np.max(np.abs(f0[:N_BASELINE] / f0_ref - 1)), np.max(np.abs(tf[:N_BASELINE] / tf_ref - 1))
+    )
+    print(
+        f"grouped bincount fit : {N_GROUPS:>8d} groups of {POINTS} in {t_batch:8.3f} s = {rate:12.4g} groups/s"
+    )
+    print(
+        f"per-group linregress : {N_BASELINE:>8d} groups of {POINTS} in {t_base:8.3f} s = {base_rate:12.4g} groups/s"
+    )
     print(f"max relative difference in f0 and T_F: {diff:.2e}")
-    print(f"RESULT friction_fits cases_per_s={rate:.4g} baseline_cases_per_s={base_rate:.4g} ratio={rate / base_rate:.4g}")
+    print(
+        f"RESULT friction_fits cases_per_s={rate:.4g} baseline_cases_per_s={base_rate:.4g} ratio={rate / base_rate:.4g}"
+    )
     return 0 if diff < 1e-9 else 1
 
 

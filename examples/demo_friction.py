@@ -36,17 +36,41 @@ def handbook_table(out):
         b = catalog.get(name)
         loads = rig.rig_equivalent_load(2.0, np.radians(tilts))
         one = friction.one_term(loads.equivalent_load, b.bore)
-        two = friction.two_term(loads.equivalent_load, 3000 * RPM, b.mean_diameter, b.static_load_rating, 1.5e-7)
+        two = friction.two_term(
+            loads.equivalent_load, 3000 * RPM, b.mean_diameter, b.static_load_rating, 1.5e-7
+        )
         for k, beta in enumerate(tilts):
-            rows.append([name, beta, float(loads.axial_load[k]), float(loads.radial_load[k]),
-                         float(loads.equivalent_load[k]), "x0*Fr+y0*Fa" if loads.combined[k] else "Fr",
-                         float(one[k]) * 1e3, float(two.speed_term[k]) * 1e3, float(two.load_term[k]) * 1e3,
-                         float(two.torque[k]) * 1e3])
+            rows.append(
+                [
+                    name,
+                    beta,
+                    float(loads.axial_load[k]),
+                    float(loads.radial_load[k]),
+                    float(loads.equivalent_load[k]),
+                    "x0*Fr+y0*Fa" if loads.combined[k] else "Fr",
+                    float(one[k]) * 1e3,
+                    float(two.speed_term[k]) * 1e3,
+                    float(two.load_term[k]) * 1e3,
+                    float(two.torque[k]) * 1e3,
+                ]
+            )
     path = out / "handbook_torque.csv"
     with open(path, "w", newline="", encoding="utf-8") as fh:
         w = csv.writer(fh)
-        w.writerow(["bearing", "tilt [deg]", "F_a [N]", "F_r [N]", "P0 [N]", "P0 branch", "T one-term [N*mm]",
-                    "T0 (3000 rpm, f0 = 1.5e-7) [N*mm]", "T_F handbook [N*mm]", "T two-term [N*mm]"])
+        w.writerow(
+            [
+                "bearing",
+                "tilt [deg]",
+                "F_a [N]",
+                "F_r [N]",
+                "P0 [N]",
+                "P0 branch",
+                "T one-term [N*mm]",
+                "T0 (3000 rpm, f0 = 1.5e-7) [N*mm]",
+                "T_F handbook [N*mm]",
+                "T two-term [N*mm]",
+            ]
+        )
         w.writerows(rows)
 
     from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -57,8 +81,21 @@ def handbook_table(out):
     ax = fig.add_subplot()
     for colour, name in zip(("#1f5fa8", "#c0392b", "#2e8b57"), ("1000095", "18", "101")):
         sel = [r for r in rows if r[0] == name]
-        ax.plot([r[1] for r in sel], [r[6] for r in sel], "--", color=colour, label=f"{name}: one-term, μ = 0.0015")
-        ax.plot([r[1] for r in sel], [r[9] for r in sel], "-o", color=colour, ms=4, label=f"{name}: two-term")
+        ax.plot(
+            [r[1] for r in sel],
+            [r[6] for r in sel],
+            "--",
+            color=colour,
+            label=f"{name}: one-term, μ = 0.0015",
+        )
+        ax.plot(
+            [r[1] for r in sel],
+            [r[9] for r in sel],
+            "-o",
+            color=colour,
+            ms=4,
+            label=f"{name}: two-term",
+        )
     ax.axvline(math.degrees(rig.branch_switch_tilt()), color="0.5", lw=0.8, ls=":")
     ax.set_xlabel("tilt β [deg]")
     ax.set_ylabel("T [N·mm]")
@@ -79,18 +116,35 @@ def main(argv):
     out.mkdir(parents=True, exist_ok=True)
     rows = handbook_table(out)
     p0_90 = next(r for r in rows if r[0] == "1000095" and r[1] == 90.0)
-    print(f"handbook, bearing 1000095, Q = 2 kg, beta = 90 deg: P0 = {p0_90[4]:.2f} N, "
-          f"T(one-term) = {p0_90[6]:.6f} N*mm, T_F = {p0_90[8]:.6f} N*mm")
+    print(
+        f"handbook, bearing 1000095, Q = 2 kg, beta = 90 deg: P0 = {p0_90[4]:.2f} N, "
+        f"T(one-term) = {p0_90[6]:.6f} N*mm, T_F = {p0_90[8]:.6f} N*mm"
+    )
     for name, file in (("s0", "s0_direct.toml"), ("s1", "s1_readings.toml")):
         result = analysis.analyse(measurement.read_session(HERE / "friction" / file))
         files = report.write_report(result, out / name)
         t1, t2, t3 = result.task1, result.task2, result.task3
-        print(f"{name} ({result.session.bearing.designation}): "
-              + ", ".join(f"mu({n / RPM:.6g} rpm) = {mu:.6e}" for n, mu in zip(t1.shaft_speed, t1.friction_coefficient)))
-        print("    " + ", ".join(f"f0(beta {math.degrees(b):g}) = {f0:.6e}, T_F = {tf * 1e3:.6e} N*mm"
-                                 for b, f0, tf in zip(t2.tilt, t2.speed_term_factor, t2.load_term)))
-        print("    " + ", ".join(f"f({n / RPM:.6g} rpm) = {f:.6e}, T0 = {t0 * 1e3:.6e} N*mm"
-                                 for n, f, t0 in zip(t3.shaft_speed, t3.load_term_factor, t3.speed_term)))
+        print(
+            f"{name} ({result.session.bearing.designation}): "
+            + ", ".join(
+                f"mu({n / RPM:.6g} rpm) = {mu:.6e}"
+                for n, mu in zip(t1.shaft_speed, t1.friction_coefficient)
+            )
+        )
+        print(
+            "    "
+            + ", ".join(
+                f"f0(beta {math.degrees(b):g}) = {f0:.6e}, T_F = {tf * 1e3:.6e} N*mm"
+                for b, f0, tf in zip(t2.tilt, t2.speed_term_factor, t2.load_term)
+            )
+        )
+        print(
+            "    "
+            + ", ".join(
+                f"f({n / RPM:.6g} rpm) = {f:.6e}, T0 = {t0 * 1e3:.6e} N*mm"
+                for n, f, t0 in zip(t3.shaft_speed, t3.load_term_factor, t3.speed_term)
+            )
+        )
         print(f"    report: {files.html}")
     print(f"tables and figures are in {out}")
     return 0

@@ -33,11 +33,28 @@ def one_line_error(code, err):
 
 # ----------------------------------------------------------------------------- friction torque
 def test_torque_json_of_the_issue_example(capsys):
-    code, out, err = run(capsys, "friction", "torque", "--bearing", "101", "--radial-load", "10 N", "--axial-load", "5 N",
-                         "--speed", "3000 rpm", "--json")
+    code, out, err = run(
+        capsys,
+        "friction",
+        "torque",
+        "--bearing",
+        "101",
+        "--radial-load",
+        "10 N",
+        "--axial-load",
+        "5 N",
+        "--speed",
+        "3000 rpm",
+        "--json",
+    )
     assert code == 0, err
     d = json.loads(out)
-    assert {"equivalent_static_load_N", "torque_Nmm", "torque_speed_term_Nmm", "torque_load_term_Nmm"} <= set(d)
+    assert {
+        "equivalent_static_load_N",
+        "torque_Nmm",
+        "torque_speed_term_Nmm",
+        "torque_load_term_Nmm",
+    } <= set(d)
     assert d["equivalent_static_load_N"] == 10.0  # max(0.6*10 + 0.5*5, 10)
     assert d["branch"] == "Fr" and d["model"] == "one-term"
     assert d["torque_Nmm"] == pytest.approx(0.0015 * 10 * 12 / 2, rel=1e-14)
@@ -47,52 +64,146 @@ def test_torque_json_of_the_issue_example(capsys):
 
 
 def test_torque_two_term_and_palmgren_equal_the_python_functions(capsys):
-    code, out, _ = run(capsys, "friction", "torque", "-b", "101", "-R", "10 N", "-A", "5 N", "-n", "3000 rpm",
-                       "--model", "two-term", "--f0", "2e-7", "--json")
+    code, out, _ = run(
+        capsys,
+        "friction",
+        "torque",
+        "-b",
+        "101",
+        "-R",
+        "10 N",
+        "-A",
+        "5 N",
+        "-n",
+        "3000 rpm",
+        "--model",
+        "two-term",
+        "--f0",
+        "2e-7",
+        "--json",
+    )
     d = json.loads(out)
     t = friction.two_term(10.0, 3000 * RPM, 20e-3, 2227.0, 2e-7)
     assert code == 0
     assert d["torque_speed_term_Nmm"] == pytest.approx(t.speed_term * 1e3, rel=1e-12)
     assert d["torque_load_term_Nmm"] == pytest.approx(t.load_term * 1e3, rel=1e-12)
     assert d["torque_Nmm"] == pytest.approx(t.torque * 1e3, rel=1e-12)
-    code, out, _ = run(capsys, "friction", "torque", "-b", "101", "-R", "10 N", "-A", "5 N", "-n", "3000 rpm",
-                       "--model", "palmgren", "--viscosity", "20 cSt", "--palmgren-f0", "2", "--json")
+    code, out, _ = run(
+        capsys,
+        "friction",
+        "torque",
+        "-b",
+        "101",
+        "-R",
+        "10 N",
+        "-A",
+        "5 N",
+        "-n",
+        "3000 rpm",
+        "--model",
+        "palmgren",
+        "--viscosity",
+        "20 cSt",
+        "--palmgren-f0",
+        "2",
+        "--json",
+    )
     d = json.loads(out)
     assert code == 0
-    assert d["torque_speed_term_Nmm"] == pytest.approx(friction.palmgren(20e-6, 3000 * RPM, 20e-3, 2.0) * 1e3, rel=1e-12)
+    assert d["torque_speed_term_Nmm"] == pytest.approx(
+        friction.palmgren(20e-6, 3000 * RPM, 20e-3, 2.0) * 1e3, rel=1e-12
+    )
     assert d["equivalent_f0"] == pytest.approx(1e-7 * 2 * 20 ** (2 / 3), rel=1e-12)
 
 
 def test_torque_lists_overrides_and_inline_bearing(capsys):
-    code, out, _ = run(capsys, "friction", "torque", "--type", "radial", "--bore", "8 mm", "--mean-diameter", "13.5 mm",
-                       "--static-load-rating", "1354 N", "-R", "0N:20N:10N", "-A", "10 N", "--mu", "0.003", "--json")
+    code, out, _ = run(
+        capsys,
+        "friction",
+        "torque",
+        "--type",
+        "radial",
+        "--bore",
+        "8 mm",
+        "--mean-diameter",
+        "13.5 mm",
+        "--static-load-rating",
+        "1354 N",
+        "-R",
+        "0N:20N:10N",
+        "-A",
+        "10 N",
+        "--mu",
+        "0.003",
+        "--json",
+    )
     d = json.loads(out)
     assert code == 0 and len(d["cases"]) == 3 and d["mu"] == 0.003
     assert [c["equivalent_static_load_N"] for c in d["cases"]] == pytest.approx([5.0, 11.0, 20.0])
     assert [c["branch"] for c in d["cases"]] == ["x0*Fr+y0*Fa", "x0*Fr+y0*Fa", "Fr"]
     assert d["cases"][2]["torque_Nmm"] == pytest.approx(0.003 * 20 * 8 / 2, rel=1e-12)
-    code, out, _ = run(capsys, "friction", "torque", "-b", "18", "-A", "1 kgf", "--x0", "0.5", "--y0", "1.0", "--json")
+    code, out, _ = run(
+        capsys,
+        "friction",
+        "torque",
+        "-b",
+        "18",
+        "-A",
+        "1 kgf",
+        "--x0",
+        "0.5",
+        "--y0",
+        "1.0",
+        "--json",
+    )
     assert json.loads(out)["equivalent_static_load_N"] == pytest.approx(9.80665, rel=1e-12)
 
 
 def test_torque_human_output(capsys):
-    code, out, _ = run(capsys, "friction", "torque", "-b", "1000095", "-R", "19.62 N", "-n", "3000 rpm", "--model",
-                       "two-term", "--f0", "2e-7")
+    code, out, _ = run(
+        capsys,
+        "friction",
+        "torque",
+        "-b",
+        "1000095",
+        "-R",
+        "19.62 N",
+        "-n",
+        "3000 rpm",
+        "--model",
+        "two-term",
+        "--f0",
+        "2e-7",
+    )
     assert code == 0
-    assert "0.0306098" in out and "0.0303276" in out and "…" not in out  # T_F and T0 of spec 001 section 3.5
+    assert (
+        "0.0306098" in out and "0.0303276" in out and "…" not in out
+    )  # T_F and T0 of spec 001 section 3.5
 
 
-@pytest.mark.parametrize("args, message", [
-    (["-b", "101", "-R", "10 N", "--model", "two-term"], "f0: the two-term model needs --f0"),
-    (["-b", "101", "-R", "10 N", "--model", "three-term"], r"model must be one of \['one-term', 'two-term', 'palmgren'\]"),
-    (["-b", "101", "-R", "10 m"], "radial-load: '10 m' is a length, expected a force"),
-    (["-b", "101", "-R", "-10 N"], "radial-load must be >= 0"),
-    (["-b", "101", "--model", "palmgren", "--palmgren-f0", "2"], "viscosity: the palmgren model needs --viscosity"),
-    (["--type", "angular", "--contact-angle", "25 deg", "--bore", "8 mm", "-R", "1 N"], "contact_angle must be one of the Table 1 angles"),
-    (["-R", "1 N"], "bearing: give --bearing NAME"),
-    (["-b", "nosuch", "-R", "1 N"], "unknown name 'nosuch'"),
-    (["-b", "101", "-R", "1N,2N", "-A", "1N,2N,3N"], "lists must have the same length"),
-])
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["-b", "101", "-R", "10 N", "--model", "two-term"], "f0: the two-term model needs --f0"),
+        (
+            ["-b", "101", "-R", "10 N", "--model", "three-term"],
+            r"model must be one of \['one-term', 'two-term', 'palmgren'\]",
+        ),
+        (["-b", "101", "-R", "10 m"], "radial-load: '10 m' is a length, expected a force"),
+        (["-b", "101", "-R", "-10 N"], "radial-load must be >= 0"),
+        (
+            ["-b", "101", "--model", "palmgren", "--palmgren-f0", "2"],
+            "viscosity: the palmgren model needs --viscosity",
+        ),
+        (
+            ["--type", "angular", "--contact-angle", "25 deg", "--bore", "8 mm", "-R", "1 N"],
+            "contact_angle must be one of the Table 1 angles",
+        ),
+        (["-R", "1 N"], "bearing: give --bearing NAME"),
+        (["-b", "nosuch", "-R", "1 N"], "unknown name 'nosuch'"),
+        (["-b", "101", "-R", "1N,2N", "-A", "1N,2N,3N"], "lists must have the same length"),
+    ],
+)
 def test_torque_bad_input_is_one_line(capsys, args, message):
     code, _, err = run(capsys, "friction", "torque", *args)
     assert re.search(message, one_line_error(code, err)), err
@@ -100,16 +211,30 @@ def test_torque_bad_input_is_one_line(capsys, args, message):
 
 # ----------------------------------------------------------------------------- friction lab
 def test_lab_json_keys_and_values(capsys, tmp_path):
-    code, out, err = run(capsys, "friction", "lab", EXAMPLES / "s1_readings.toml", "--out", tmp_path / "rep", "--json")
+    code, out, err = run(
+        capsys,
+        "friction",
+        "lab",
+        EXAMPLES / "s1_readings.toml",
+        "--out",
+        tmp_path / "rep",
+        "--json",
+    )
     assert code == 0, err
     d = json.loads(out)
     assert d["report"] == str(tmp_path / "rep" / "report.html") and Path(d["report"]).exists()
     assert all({"tilt_deg", "speed_rpm", "mu", "residual_rms_Nmm"} <= set(r) for r in d["task1"])
     assert all({"tilt_deg", "f0", "torque_load_term_Nmm"} <= set(r) for r in d["task2"])
     assert all({"speed_rpm", "f", "torque_speed_term_Nmm"} <= set(r) for r in d["task3"])
-    assert [r["mu"] for r in d["task1"]] == pytest.approx([1.434957683e-03, 1.950190711e-03], rel=1e-7)
-    assert [r["f0"] for r in d["task2"]] == pytest.approx([1.497504564e-07, 1.486076994e-07], rel=1e-7)
-    assert [r["torque_speed_term_Nmm"] for r in d["task3"]] == pytest.approx([4.692238912e-02, 7.186158852e-02], rel=1e-7)
+    assert [r["mu"] for r in d["task1"]] == pytest.approx(
+        [1.434957683e-03, 1.950190711e-03], rel=1e-7
+    )
+    assert [r["f0"] for r in d["task2"]] == pytest.approx(
+        [1.497504564e-07, 1.486076994e-07], rel=1e-7
+    )
+    assert [r["torque_speed_term_Nmm"] for r in d["task3"]] == pytest.approx(
+        [4.692238912e-02, 7.186158852e-02], rel=1e-7
+    )
 
 
 def test_lab_human_output_and_no_report_without_out(capsys, tmp_path):
@@ -124,7 +249,9 @@ def test_lab_missing_file_and_refused_directory(capsys, tmp_path):
     assert "nope.toml: no such file" in one_line_error(code, err)
     (tmp_path / "keep").mkdir()
     (tmp_path / "keep" / "a.txt").write_text("x")
-    code, _, err = run(capsys, "friction", "lab", EXAMPLES / "s0_direct.toml", "--out", tmp_path / "keep")
+    code, _, err = run(
+        capsys, "friction", "lab", EXAMPLES / "s0_direct.toml", "--out", tmp_path / "keep"
+    )
     assert "is not a bearinglab report directory" in one_line_error(code, err)
 
 
@@ -143,7 +270,10 @@ def test_template_to_stdout_file_and_refusal(capsys, tmp_path):
     assert code == 0 and 'catalog = "101"' in path.read_text()
     # a blank template stops at the first thing to fill in, naming file, line and field
     code, _, err = run(capsys, "friction", "lab", path, "--out", tmp_path / "r")
-    assert re.search(r"session\.toml, line \d+, field 'measurements\.csv': no measurement rows", one_line_error(code, err))
+    assert re.search(
+        r"session\.toml, line \d+, field 'measurements\.csv': no measurement rows",
+        one_line_error(code, err),
+    )
     assert not (tmp_path / "r").exists()
 
 
@@ -163,26 +293,51 @@ def _line(text, needle):
 
 
 def _t5_at_one_speed(rows):
-    return "\n".join(line.replace(line.split(",")[4], " 31.5") if line.startswith("T5,  0") else line
-                     for line in rows.splitlines()) + "\n"
+    return (
+        "\n".join(
+            line.replace(line.split(",")[4], " 31.5") if line.startswith("T5,  0") else line
+            for line in rows.splitlines()
+        )
+        + "\n"
+    )
 
 
 NEGATIVE = {
-    "calibration value not increasing": dict(
-        toml=S1_TEXT.replace("[40, 0.0432],", "[40, 0.0318],"), file="bad.toml", needle="[40, 0.0318],",
-        field="calibration.torque_1.points", message="values must be strictly increasing"),
-    "torque reading 101": dict(
-        rows=S1_ROWS.replace("T4, 45, 2.0, B, 57.0, 23.0, 2,", "T4, 45, 2.0, B, 57.0, 101, 2,"), file="s1_readings.csv",
-        needle="57.0, 101, 2", field="torque_reading", message=r"101 is outside the calibrated range \[0, 100\]"),
-    "task 2 speeds all equal": dict(
-        rows=_t5_at_one_speed(S1_ROWS), file="s1_readings.csv", needle="T5,  0", field="speed_reading",
-        message="task 2 needs at least two distinct speeds"),
-    "Q = 0": dict(
-        rows=S1_ROWS.replace("T5, 60, 2.0, , 41.0", "T5, 60, 0, , 41.0"), file="s1_readings.csv", needle="T5, 60, 0, ",
-        field="mass", message=r"must be > 0 \[kg\], got 0"),
-    "beta = 95": dict(
-        rows=S1_ROWS.replace("T5, 60, 2.0, , 41.0", "T5, 95, 2.0, , 41.0"), file="s1_readings.csv", needle="T5, 95, ",
-        field="tilt", message=r"must be in \[0, 90\] \[deg\], got 95"),
+    "calibration value not increasing": {
+        "toml": S1_TEXT.replace("[40, 0.0432],", "[40, 0.0318],"),
+        "file": "bad.toml",
+        "needle": "[40, 0.0318],",
+        "field": "calibration.torque_1.points",
+        "message": "values must be strictly increasing",
+    },
+    "torque reading 101": {
+        "rows": S1_ROWS.replace("T4, 45, 2.0, B, 57.0, 23.0, 2,", "T4, 45, 2.0, B, 57.0, 101, 2,"),
+        "file": "s1_readings.csv",
+        "needle": "57.0, 101, 2",
+        "field": "torque_reading",
+        "message": r"101 is outside the calibrated range \[0, 100\]",
+    },
+    "task 2 speeds all equal": {
+        "rows": _t5_at_one_speed(S1_ROWS),
+        "file": "s1_readings.csv",
+        "needle": "T5,  0",
+        "field": "speed_reading",
+        "message": "task 2 needs at least two distinct speeds",
+    },
+    "Q = 0": {
+        "rows": S1_ROWS.replace("T5, 60, 2.0, , 41.0", "T5, 60, 0, , 41.0"),
+        "file": "s1_readings.csv",
+        "needle": "T5, 60, 0, ",
+        "field": "mass",
+        "message": r"must be > 0 \[kg\], got 0",
+    },
+    "beta = 95": {
+        "rows": S1_ROWS.replace("T5, 60, 2.0, , 41.0", "T5, 95, 2.0, , 41.0"),
+        "file": "s1_readings.csv",
+        "needle": "T5, 95, ",
+        "field": "tilt",
+        "message": r"must be in \[0, 90\] \[deg\], got 95",
+    },
 }
 
 
@@ -195,7 +350,10 @@ def test_negative_cases_through_the_cli(capsys, tmp_path, case):
     code, out, err = run(capsys, "friction", "lab", path, "--out", tmp_path / "report", "--json")
     err = one_line_error(code, err)
     assert out == ""
-    assert re.search(rf"{re.escape(c['file'])}, lines? {line}\b.*field '{re.escape(c['field'])}': .*{c['message']}", err), err
+    assert re.search(
+        rf"{re.escape(c['file'])}, lines? {line}\b.*field '{re.escape(c['field'])}': .*{c['message']}",
+        err,
+    ), err
     assert not (tmp_path / "report").exists()
 
 
@@ -203,17 +361,28 @@ def test_negative_cases_through_the_cli(capsys, tmp_path, case):
 def test_negative_cases_through_python_files(tmp_path, case):
     c = NEGATIVE[case]
     path = _bad_session(tmp_path, toml=c.get("toml", S1_TEXT), rows=c.get("rows", S1_ROWS))
-    with pytest.raises(InputError, match=rf"{re.escape(c['file'])}, lines? \d+.*field '{re.escape(c['field'])}': .*{c['message']}"):
+    with pytest.raises(
+        InputError,
+        match=rf"{re.escape(c['file'])}, lines? \d+.*field '{re.escape(c['field'])}': .*{c['message']}",
+    ):
         analysis.analyse(measurement.read_session(path))
 
 
 def test_negative_cases_through_python_functions():
     with pytest.raises(InputError, match="values must be strictly increasing"):
-        calibration.calibration_table([0, 10, 20, 30, 40], [0, 0.0102, 0.0208, 0.0318, 0.0318], name="torque position 1")
-    table = calibration.calibration_table(np.arange(0.0, 101.0, 10.0), np.linspace(0, 1.2e-4, 11), name="torque position 1")
-    with pytest.raises(InputError, match=r"torque position 1 reading must be in \[0, 100\] .*got 101\.0"):
+        calibration.calibration_table(
+            [0, 10, 20, 30, 40], [0, 0.0102, 0.0208, 0.0318, 0.0318], name="torque position 1"
+        )
+    table = calibration.calibration_table(
+        np.arange(0.0, 101.0, 10.0), np.linspace(0, 1.2e-4, 11), name="torque position 1"
+    )
+    with pytest.raises(
+        InputError, match=r"torque position 1 reading must be in \[0, 100\] .*got 101\.0"
+    ):
         calibration.convert(101.0, table)
-    with pytest.raises(InputError, match="task 2: the data needs at least two distinct values of shaft_speed"):
+    with pytest.raises(
+        InputError, match="task 2: the data needs at least two distinct values of shaft_speed"
+    ):
         fits.speed_dependence([3e-5, 4e-5, 5e-5], [150.0, 150.0, 150.0], 13.5e-3)
     with pytest.raises(InputError, match=r"mass must be > 0 \[kg\], got 0\.0"):
         rig.rig_loads(0.0, math.radians(45.0))

@@ -24,8 +24,10 @@ speeds = st.floats(0.0, 2e4)
 
 
 # ----------------------------------------------------------------------------- Table 1 and (3.1)
-@pytest.mark.parametrize("angle, x0, y0", [(18, 0.5, 0.43), (20, 0.5, 0.42), (26, 0.5, 0.37),
-                                           (30, 0.5, 0.33), (36, 0.5, 0.28)])
+@pytest.mark.parametrize(
+    "angle, x0, y0",
+    [(18, 0.5, 0.43), (20, 0.5, 0.42), (26, 0.5, 0.37), (30, 0.5, 0.33), (36, 0.5, 0.28)],
+)
 def test_table1_angular_rows(angle, x0, y0):
     got = friction.static_load_factors("angular", angle * DEG)
     assert (float(got.radial_factor), float(got.axial_factor)) == (x0, y0)
@@ -38,19 +40,31 @@ def test_table1_radial_row_and_vectorized_angles():
 
 
 def test_table1_rejects_untabulated_angle_unless_factors_given():
-    with pytest.raises(InputError, match=r"contact_angle must be one of the Table 1 angles .* got 25\.0"):
+    with pytest.raises(
+        InputError, match=r"contact_angle must be one of the Table 1 angles .* got 25\.0"
+    ):
         friction.static_load_factors("angular", 25 * DEG)
     with pytest.raises(InputError, match="contact_angle must be one of the Table 1"):
         friction.equivalent_static_load(100.0, 50.0, bearing_type="angular", contact_angle=25 * DEG)
-    p0 = friction.equivalent_static_load(100.0, 50.0, bearing_type="angular", contact_angle=25 * DEG,
-                                         radial_factor=0.5, axial_factor=0.4)
+    p0 = friction.equivalent_static_load(
+        100.0,
+        50.0,
+        bearing_type="angular",
+        contact_angle=25 * DEG,
+        radial_factor=0.5,
+        axial_factor=0.4,
+    )
     assert p0 == max(0.5 * 100 + 0.4 * 50, 100.0)
 
 
 def test_angular_needs_contact_angle_and_valid_type():
-    with pytest.raises(InputError, match="contact_angle: an angular-contact bearing needs its contact angle"):
+    with pytest.raises(
+        InputError, match="contact_angle: an angular-contact bearing needs its contact angle"
+    ):
         friction.static_load_factors("angular")
-    with pytest.raises(InputError, match=r"bearing_type must be one of \['radial', 'angular'\], got 'thrust'"):
+    with pytest.raises(
+        InputError, match=r"bearing_type must be one of \['radial', 'angular'\], got 'thrust'"
+    ):
         friction.equivalent_static_load(1.0, 1.0, bearing_type="thrust")
     with pytest.raises(InputError, match=r"contact_angle must be in \(0, 90\)"):
         friction.load_term_constants("angular", 95 * DEG)
@@ -80,7 +94,9 @@ def test_max_rule_is_the_larger_branch(fr, fa):
 @given(fr=loads, fa=loads, scale=st.floats(0.01, 100.0))
 def test_equivalent_load_is_homogeneous_of_degree_one(fr, fa, scale):
     p0 = friction.equivalent_static_load(fr, fa)
-    assert friction.equivalent_static_load(scale * fr, scale * fa) == pytest.approx(scale * p0, rel=1e-12, abs=1e-300)
+    assert friction.equivalent_static_load(scale * fr, scale * fa) == pytest.approx(
+        scale * p0, rel=1e-12, abs=1e-300
+    )
 
 
 def test_scalar_and_array_agree():
@@ -106,8 +122,12 @@ def test_one_term_handbook_mu_and_override():
     assert friction.handbook_friction_coefficient("angular") == 0.0020
     t = friction.one_term(19.62, 5e-3)
     assert t == pytest.approx(0.0015 * 19.62 * 5e-3 / 2, rel=1e-15)
-    assert friction.one_term(19.62, 5e-3, bearing_type="angular") == pytest.approx(t * 0.002 / 0.0015, rel=1e-14)
-    assert friction.one_term(19.62, 5e-3, friction_coefficient=0.003) == pytest.approx(2 * t, rel=1e-14)
+    assert friction.one_term(19.62, 5e-3, bearing_type="angular") == pytest.approx(
+        t * 0.002 / 0.0015, rel=1e-14
+    )
+    assert friction.one_term(19.62, 5e-3, friction_coefficient=0.003) == pytest.approx(
+        2 * t, rel=1e-14
+    )
     with pytest.raises(InputError, match=r"bore must be > 0 \[m\], got 0\.0"):
         friction.one_term(1.0, 0.0)
     with pytest.raises(InputError, match=r"equivalent_load must be >= 0 \[N\]"):
@@ -129,8 +149,12 @@ def test_table2_rows_and_30_degree_gap():
 def test_load_term_overrides_and_warning():
     base = friction.load_term(20.0, 9e-3, 392.0)
     assert base == pytest.approx(0.0009 * 20 * (20 / 392) ** 0.55 * 9e-3, rel=1e-14)
-    assert friction.load_term(20.0, 9e-3, 392.0, load_term_factor=0.0018) == pytest.approx(2 * base, rel=1e-14)
-    assert friction.load_term(20.0, 9e-3, 392.0, load_term_exponent=0.0) == pytest.approx(0.0009 * 20 * 9e-3, rel=1e-14)
+    assert friction.load_term(20.0, 9e-3, 392.0, load_term_factor=0.0018) == pytest.approx(
+        2 * base, rel=1e-14
+    )
+    assert friction.load_term(20.0, 9e-3, 392.0, load_term_exponent=0.0) == pytest.approx(
+        0.0009 * 20 * 9e-3, rel=1e-14
+    )
     with pytest.warns(ValidityWarning, match="P0/C0 up to 2"):
         friction.load_term(784.0, 9e-3, 392.0)
     with warnings.catch_warnings():
@@ -162,7 +186,9 @@ def test_speed_term_scaling_and_direction(n, k, dm):
 
 def test_speed_term_needs_nonnegative_factor_and_zero_speed_gives_zero():
     assert friction.speed_term(0.0, 9e-3, 2e-7) == 0.0
-    with pytest.raises(InputError, match=r"speed_term_factor must be >= 0 \[N\*mm\^-2\*min\^\(2/3\)\]"):
+    with pytest.raises(
+        InputError, match=r"speed_term_factor must be >= 0 \[N\*mm\^-2\*min\^\(2/3\)\]"
+    ):
         friction.speed_term(100.0, 9e-3, -1e-7)
 
 
@@ -184,7 +210,12 @@ def test_spec_s0_generating_model_reproduces_a_table_value():
 
 # ----------------------------------------------------------------------------- Palmgren
 @FAST
-@given(nu_cst=st.floats(1.0, 500.0), n=st.floats(1.0, 3e4), f0p=st.floats(0.5, 6.0), dm=st.floats(2e-3, 0.2))
+@given(
+    nu_cst=st.floats(1.0, 500.0),
+    n=st.floats(1.0, 3e4),
+    f0p=st.floats(0.5, 6.0),
+    dm=st.floats(2e-3, 0.2),
+)
 def test_palmgren_equals_seed_speed_term_with_folded_viscosity(nu_cst, n, f0p, dm):
     nu = nu_cst * 1e-6
     m0 = friction.palmgren(nu, n * RPM, dm, f0p)
@@ -214,7 +245,11 @@ def test_palmgren_branches_and_switch():
 
 # ----------------------------------------------------------------------------- docstrings
 def _documented_parameters(doc):
-    m = re.search(r"Parameters\n\s*-+\n(.*?)(?:\n\s*\n\s*(?:Returns|Raises|Warns|Notes|Examples|Yields)\n|\Z)", doc, re.S)
+    m = re.search(
+        r"Parameters\n\s*-+\n(.*?)(?:\n\s*\n\s*(?:Returns|Raises|Warns|Notes|Examples|Yields)\n|\Z)",
+        doc,
+        re.DOTALL,
+    )
     if not m:
         return []
     names = []

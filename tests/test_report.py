@@ -80,13 +80,31 @@ def _table(parser, caption_start):
 def test_report_files(written):
     files, _ = written
     names = sorted(p.name for p in files.directory.iterdir())
-    assert names == sorted([report.MARKER, "report.html", "results.json", "rows.csv", "table4_tilt45.csv",
-                            "table5_Q2kg.csv", "task1.csv", "task2.csv", "task3.csv", "task1_tilt45.png",
-                            "task1_tilt45.svg", "task2.png", "task2.svg", "task3_tilt45.png", "task3_tilt45.svg"])
+    assert names == sorted(
+        [
+            report.MARKER,
+            "report.html",
+            "results.json",
+            "rows.csv",
+            "table4_tilt45.csv",
+            "table5_Q2kg.csv",
+            "task1.csv",
+            "task2.csv",
+            "task3.csv",
+            "task1_tilt45.png",
+            "task1_tilt45.svg",
+            "task2.png",
+            "task2.svg",
+            "task3_tilt45.png",
+            "task3_tilt45.svg",
+        ]
+    )
     for f in files.figures:
         data = f.read_bytes()
         assert data.startswith(b"\x89PNG\r\n\x1a\n") if f.suffix == ".png" else b"<svg" in data
-    assert not [p for p in files.directory.parent.iterdir() if p.name.startswith(".s1.")]  # no temporary left
+    assert not [
+        p for p in files.directory.parent.iterdir() if p.name.startswith(".s1.")
+    ]  # no temporary left
 
 
 def test_report_tables_are_present_with_their_rows(written):
@@ -119,7 +137,9 @@ def test_report_images_are_embedded_and_nothing_is_external(written):
     assert all(ref.startswith("data:") for ref in p.refs)  # no links, no external resources
     assert "link" not in p.tags and "script" not in p.tags
     html_text = written[0].html.read_text(encoding="utf-8")
-    assert "@media print" in html_text and "http://" not in html_text and "https://" not in html_text
+    assert (
+        "@media print" in html_text and "http://" not in html_text and "https://" not in html_text
+    )
 
 
 def test_report_conclusions_and_conditions(written):
@@ -140,7 +160,10 @@ def test_results_json_and_csv_tables(written, s1_result):
     assert d["files"]["figures"] == [f.name for f in files.figures]
     with open(files.directory / "task1.csv", newline="", encoding="utf-8") as fh:
         rows = list(csv.DictReader(fh))
-    assert float(rows[0]["mu"]) == pytest.approx(1.434957683e-03, rel=1e-9) and rows[0]["lines"] == "5 6 7"
+    assert (
+        float(rows[0]["mu"]) == pytest.approx(1.434957683e-03, rel=1e-9)
+        and rows[0]["lines"] == "5 6 7"
+    )
     with open(files.directory / "table4_tilt45.csv", newline="", encoding="utf-8") as fh:
         t4 = list(csv.reader(fh))
     assert t4[0][:2] == ["Q [kg]", "P0 [N]"] and len(t4) == 4
@@ -171,24 +194,32 @@ def test_failed_rerun_keeps_the_previous_report(s1_result, tmp_path, monkeypatch
     _fast_figures(monkeypatch)
     first = report.write_report(s1_result, tmp_path / "out", generated="first")
     before = first.html.read_text(encoding="utf-8")
-    monkeypatch.setattr(report, "render_html", lambda *a, **k: (_ for _ in ()).throw(RuntimeError("boom")))
+    monkeypatch.setattr(
+        report, "render_html", lambda *a, **k: (_ for _ in ()).throw(RuntimeError("boom"))
+    )
     with pytest.raises(RuntimeError, match="boom"):
         report.write_report(s1_result, tmp_path / "out")
     assert first.html.read_text(encoding="utf-8") == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]
 
 
-def test_previous_report_is_replaced_but_other_directories_are_refused(s1_result, tmp_path, monkeypatch):
+def test_previous_report_is_replaced_but_other_directories_are_refused(
+    s1_result, tmp_path, monkeypatch
+):
     _fast_figures(monkeypatch)
     s0 = analysis.analyse(measurement.read_session(EXAMPLES / "s0_direct.toml"))
     report.write_report(s1_result, tmp_path / "out")
     files = report.write_report(s0, tmp_path / "out")
-    assert (files.directory / "table4_tilt90.csv").exists() and not (files.directory / "table4_tilt45.csv").exists()
+    assert (files.directory / "table4_tilt90.csv").exists() and not (
+        files.directory / "table4_tilt45.csv"
+    ).exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]
     user = tmp_path / "mine"
     user.mkdir()
     (user / "notes.txt").write_text("keep me")
-    with pytest.raises(InputError, match=r"out: .*mine exists and is not a bearinglab report directory"):
+    with pytest.raises(
+        InputError, match=r"out: .*mine exists and is not a bearinglab report directory"
+    ):
         report.write_report(s0, user)
     assert (user / "notes.txt").read_text() == "keep me" and len(list(user.iterdir())) == 1
     empty = tmp_path / "empty"

@@ -10,48 +10,78 @@ from __future__ import annotations
 import dataclasses
 import sys
 from pathlib import Path
-from typing import Annotated, Optional
+from typing import Annotated
 
 import numpy as np
 import typer
-
-from . import friction
-from .bearing import BallBearing
 from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
 
-from .cli import BearingFile, BearingName, CatalogFile, ContactAngle, JsonFlag, console, emit_json, resolve_bearing
+from . import friction
+from .bearing import BallBearing
+from .cli import (
+    BearingFile,
+    BearingName,
+    CatalogFile,
+    ContactAngle,
+    JsonFlag,
+    console,
+    emit_json,
+    resolve_bearing,
+)
 from .errors import InputError
 from .units import RPM, parse_quantity, parse_values
 
-__all__ = ["register", "friction_app"]
+__all__ = ["friction_app", "register"]
 
-friction_app = typer.Typer(help="Friction torque: handbook models and the friction-rig lab (spec 001).",
-                           no_args_is_help=True)
+friction_app = typer.Typer(
+    help="Friction torque: handbook models and the friction-rig lab (spec 001).",
+    no_args_is_help=True,
+)
 _MODELS = ("one-term", "two-term", "palmgren")
 _PANEL = "Bearing data (override the catalog)"
 
 
-def _friction_bearing(bearing, bearing_file, catalog, bearing_type, contact_angle, bore, outside_diameter,
-                      mean_diameter, static_load_rating):
+def _friction_bearing(
+    bearing,
+    bearing_file,
+    catalog,
+    bearing_type,
+    contact_angle,
+    bore,
+    outside_diameter,
+    mean_diameter,
+    static_load_rating,
+):
     if bearing or bearing_file:
         base = resolve_bearing(bearing, bearing_file, catalog, contact_angle=contact_angle)
     else:
         if bearing_type is None and bore is None:
-            raise InputError("bearing: give --bearing NAME (e.g. 101), --bearing-file FILE, or --type, --bore, "
-                             "--mean-diameter/--outside-diameter and --static-load-rating")
-        base = BallBearing(designation="inline", type=bearing_type or "radial",
-                           contact_angle=None if contact_angle is None else parse_quantity(contact_angle, "angle", "contact-angle"))
+            raise InputError(
+                "bearing: give --bearing NAME (e.g. 101), --bearing-file FILE, or --type, --bore, "
+                "--mean-diameter/--outside-diameter and --static-load-rating"
+            )
+        base = BallBearing(
+            designation="inline",
+            type=bearing_type or "radial",
+            contact_angle=None
+            if contact_angle is None
+            else parse_quantity(contact_angle, "angle", "contact-angle"),
+        )
     changes = {}
     if bearing_type is not None:
         if bearing_type not in friction.BEARING_TYPES:
-            raise InputError(f"type must be one of {list(friction.BEARING_TYPES)}, got {bearing_type!r}")
+            raise InputError(
+                f"type must be one of {list(friction.BEARING_TYPES)}, got {bearing_type!r}"
+            )
         changes["type"] = bearing_type
     if bore is not None:
         changes["bore"] = parse_quantity(bore, "length", "bore")
     if static_load_rating is not None:
-        changes["static_load_rating"] = parse_quantity(static_load_rating, "force", "static-load-rating")
+        changes["static_load_rating"] = parse_quantity(
+            static_load_rating, "force", "static-load-rating"
+        )
     if mean_diameter is not None and outside_diameter is not None:
         raise InputError("mean-diameter: give --mean-diameter or --outside-diameter, not both")
     if outside_diameter is not None:
@@ -62,7 +92,9 @@ def _friction_bearing(bearing, bearing_file, catalog, bearing_type, contact_angl
         if d is None:
             raise InputError("mean-diameter: needs the bore (--bore) to give the outside diameter")
         if not dm > d:
-            raise InputError(f"mean-diameter must be > bore [mm], got {dm * 1e3:g} mm with bore {d * 1e3:g} mm")
+            raise InputError(
+                f"mean-diameter must be > bore [mm], got {dm * 1e3:g} mm with bore {d * 1e3:g} mm"
+            )
         changes["outside_diameter"] = 2.0 * dm - d
     return dataclasses.replace(base, **changes) if changes else base
 
@@ -91,96 +123,267 @@ def _case_values(text, kind, name):
 
 
 def torque(
-    radial_load: Annotated[str, typer.Option("--radial-load", "-R", help="F_r, e.g. '10 N', '1 kgf', or a list/range '0N:50N:10N'.")] = "0 N",
-    axial_load: Annotated[str, typer.Option("--axial-load", "-A", help="F_a, e.g. '5 N' (list/range allowed).")] = "0 N",
-    speed: Annotated[str, typer.Option("--speed", "-n", help="Inner-ring speed, e.g. '3000 rpm' (list/range allowed).")] = "0 rpm",
-    model: Annotated[str, typer.Option("--model", "-m", help="one-term (default) | two-term (needs --f0) | palmgren (needs --viscosity, --palmgren-f0).")] = "one-term",
-    bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
-    bearing_type: Annotated[Optional[str], typer.Option("--type", help="radial | angular.", rich_help_panel=_PANEL)] = None,
+    radial_load: Annotated[
+        str,
+        typer.Option(
+            "--radial-load", "-R", help="F_r, e.g. '10 N', '1 kgf', or a list/range '0N:50N:10N'."
+        ),
+    ] = "0 N",
+    axial_load: Annotated[
+        str, typer.Option("--axial-load", "-A", help="F_a, e.g. '5 N' (list/range allowed).")
+    ] = "0 N",
+    speed: Annotated[
+        str,
+        typer.Option(
+            "--speed", "-n", help="Inner-ring speed, e.g. '3000 rpm' (list/range allowed)."
+        ),
+    ] = "0 rpm",
+    model: Annotated[
+        str,
+        typer.Option(
+            "--model",
+            "-m",
+            help="one-term (default) | two-term (needs --f0) | palmgren (needs --viscosity, --palmgren-f0).",
+        ),
+    ] = "one-term",
+    bearing: BearingName = None,
+    bearing_file: BearingFile = None,
+    catalog: CatalogFile = None,
+    bearing_type: Annotated[
+        str | None, typer.Option("--type", help="radial | angular.", rich_help_panel=_PANEL)
+    ] = None,
     contact_angle: ContactAngle = None,
-    bore: Annotated[Optional[str], typer.Option("--bore", help="d, e.g. '12 mm'.", rich_help_panel=_PANEL)] = None,
-    outside_diameter: Annotated[Optional[str], typer.Option("--outside-diameter", help="D, e.g. '28 mm'.", rich_help_panel=_PANEL)] = None,
-    mean_diameter: Annotated[Optional[str], typer.Option("--mean-diameter", help="d_m = (d + D)/2, e.g. '20 mm'.", rich_help_panel=_PANEL)] = None,
-    static_load_rating: Annotated[Optional[str], typer.Option("--static-load-rating", help="C0, e.g. '2227 N'.", rich_help_panel=_PANEL)] = None,
-    mu: Annotated[Optional[float], typer.Option("--mu", help="Override of the handbook μ (0.0015 radial, 0.0020 angular).", rich_help_panel="Handbook constants")] = None,
-    x0: Annotated[Optional[float], typer.Option("--x0", help="Override of x0 (Table 1).", rich_help_panel="Handbook constants")] = None,
-    y0: Annotated[Optional[float], typer.Option("--y0", help="Override of y0 (Table 1).", rich_help_panel="Handbook constants")] = None,
-    f: Annotated[Optional[float], typer.Option("--f", help="Override of f (Table 2).", rich_help_panel="Handbook constants")] = None,
-    c: Annotated[Optional[float], typer.Option("--c", help="Override of c (Table 2).", rich_help_panel="Handbook constants")] = None,
-    f0: Annotated[Optional[float], typer.Option("--f0", help="Speed-term factor of T0 = f0·d_m³·n^(2/3) in N·mm⁻²·min^(2/3) (e.g. 2e-7; from `friction lab`, task 2).", rich_help_panel="Handbook constants")] = None,
-    viscosity: Annotated[Optional[str], typer.Option("--viscosity", help="Lubricant kinematic viscosity for --model palmgren, e.g. '20 cSt'.", rich_help_panel="Handbook constants")] = None,
-    palmgren_f0: Annotated[Optional[float], typer.Option("--palmgren-f0", help="Palmgren's f0 (about 0.7-2 for deep-groove bearings) for --model palmgren.", rich_help_panel="Handbook constants")] = None,
+    bore: Annotated[
+        str | None, typer.Option("--bore", help="d, e.g. '12 mm'.", rich_help_panel=_PANEL)
+    ] = None,
+    outside_diameter: Annotated[
+        str | None,
+        typer.Option("--outside-diameter", help="D, e.g. '28 mm'.", rich_help_panel=_PANEL),
+    ] = None,
+    mean_diameter: Annotated[
+        str | None,
+        typer.Option(
+            "--mean-diameter", help="d_m = (d + D)/2, e.g. '20 mm'.", rich_help_panel=_PANEL
+        ),
+    ] = None,
+    static_load_rating: Annotated[
+        str | None,
+        typer.Option("--static-load-rating", help="C0, e.g. '2227 N'.", rich_help_panel=_PANEL),
+    ] = None,
+    mu: Annotated[
+        float | None,
+        typer.Option(
+            "--mu",
+            help="Override of the handbook μ (0.0015 radial, 0.0020 angular).",
+            rich_help_panel="Handbook constants",
+        ),
+    ] = None,
+    x0: Annotated[
+        float | None,
+        typer.Option(
+            "--x0", help="Override of x0 (Table 1).", rich_help_panel="Handbook constants"
+        ),
+    ] = None,
+    y0: Annotated[
+        float | None,
+        typer.Option(
+            "--y0", help="Override of y0 (Table 1).", rich_help_panel="Handbook constants"
+        ),
+    ] = None,
+    f: Annotated[
+        float | None,
+        typer.Option("--f", help="Override of f (Table 2).", rich_help_panel="Handbook constants"),
+    ] = None,
+    c: Annotated[
+        float | None,
+        typer.Option("--c", help="Override of c (Table 2).", rich_help_panel="Handbook constants"),
+    ] = None,
+    f0: Annotated[
+        float | None,
+        typer.Option(
+            "--f0",
+            help="Speed-term factor of T0 = f0·d_m³·n^(2/3) in N·mm⁻²·min^(2/3) (e.g. 2e-7; from `friction lab`, task 2).",
+            rich_help_panel="Handbook constants",
+        ),
+    ] = None,
+    viscosity: Annotated[
+        str | None,
+        typer.Option(
+            "--viscosity",
+            help="Lubricant kinematic viscosity for --model palmgren, e.g. '20 cSt'.",
+            rich_help_panel="Handbook constants",
+        ),
+    ] = None,
+    palmgren_f0: Annotated[
+        float | None,
+        typer.Option(
+            "--palmgren-f0",
+            help="Palmgren's f0 (about 0.7-2 for deep-groove bearings) for --model palmgren.",
+            rich_help_panel="Handbook constants",
+        ),
+    ] = None,
     json_out: JsonFlag = False,
 ):
     """Handbook friction torque under combined load (spec 001 section 3): P0, T, T0 and T_F."""
     if model not in _MODELS:
         raise InputError(f"model must be one of {list(_MODELS)}, got {model!r}")
-    b = _friction_bearing(bearing, bearing_file, catalog, bearing_type, contact_angle, bore, outside_diameter,
-                          mean_diameter, static_load_rating)
+    b = _friction_bearing(
+        bearing,
+        bearing_file,
+        catalog,
+        bearing_type,
+        contact_angle,
+        bore,
+        outside_diameter,
+        mean_diameter,
+        static_load_rating,
+    )
     fr = _case_values(radial_load, "force", "radial-load")
     fa = _case_values(axial_load, "force", "axial-load")
     n = _case_values(speed, "speed", "speed")
     sizes = {v.size for v in (fr, fa, n) if v.size > 1}
     if len(sizes) > 1:
-        raise InputError("radial-load, axial-load, speed: lists must have the same length (or one value)")
+        raise InputError(
+            "radial-load, axial-load, speed: lists must have the same length (or one value)"
+        )
     fr, fa, n = np.broadcast_arrays(fr, fa, n)
     angle = b.contact_angle if b.type == "angular" else None
     if b.type == "angular" and angle is None and (x0 is None or y0 is None):
-        raise InputError("contact-angle: an angular-contact bearing needs --contact-angle (or --x0 and --y0)")
-    kw = dict(bearing_type=b.type, contact_angle=angle, radial_factor=x0, axial_factor=y0)
+        raise InputError(
+            "contact-angle: an angular-contact bearing needs --contact-angle (or --x0 and --y0)"
+        )
+    kw = {"bearing_type": b.type, "contact_angle": angle, "radial_factor": x0, "axial_factor": y0}
     p0 = np.atleast_1d(friction.equivalent_static_load(fr, fa, **kw))
     combined = np.atleast_1d(friction.combined_branch_governs(fr, fa, **kw))
-    x0_used, y0_used = (x0, y0) if x0 is not None and y0 is not None else friction.static_load_factors(b.type, angle)
-    x0_used, y0_used = (x0 if x0 is not None else float(x0_used)), (y0 if y0 is not None else float(y0_used))
+    x0_used, y0_used = (
+        (x0, y0)
+        if x0 is not None and y0 is not None
+        else friction.static_load_factors(b.type, angle)
+    )
+    x0_used, y0_used = (
+        (x0 if x0 is not None else float(x0_used)),
+        (y0 if y0 is not None else float(y0_used)),
+    )
     info = {"bearing": b.designation, "type": b.type, "model": model, "x0": x0_used, "y0": y0_used}
     if model == "one-term":
         d = b.require("bore")
         mu_used = friction.handbook_friction_coefficient(b.type) if mu is None else mu
-        total = np.atleast_1d(friction.one_term(p0, d, bearing_type=b.type, friction_coefficient=mu))
+        total = np.atleast_1d(
+            friction.one_term(p0, d, bearing_type=b.type, friction_coefficient=mu)
+        )
         speed_term, load_term = np.zeros_like(total), total  # one term, proportional to the load
         info.update({"mu": mu_used, "bore_mm": d * 1e3})
     else:
         dm = b.mean_diameter
         c0 = b.require("static_load_rating")
-        f_tab, c_tab = friction.load_term_constants(b.type, angle) if (f is None or c is None) else (f, c)
-        f_used, c_used = (f if f is not None else float(f_tab)), (c if c is not None else float(c_tab))
-        load_term = np.atleast_1d(friction.load_term(p0, dm, c0, bearing_type=b.type, contact_angle=angle,
-                                                     load_term_factor=f_used, load_term_exponent=c_used))
+        f_tab, c_tab = (
+            friction.load_term_constants(b.type, angle) if (f is None or c is None) else (f, c)
+        )
+        f_used, c_used = (
+            (f if f is not None else float(f_tab)),
+            (c if c is not None else float(c_tab)),
+        )
+        load_term = np.atleast_1d(
+            friction.load_term(
+                p0,
+                dm,
+                c0,
+                bearing_type=b.type,
+                contact_angle=angle,
+                load_term_factor=f_used,
+                load_term_exponent=c_used,
+            )
+        )
         if model == "two-term":
             if f0 is None:
-                raise InputError("f0: the two-term model needs --f0 [N·mm⁻²·min^(2/3)], e.g. 2e-7; it has no handbook "
-                                 "value (measure it with `bearinglab friction lab`, task 2)")
+                raise InputError(
+                    "f0: the two-term model needs --f0 [N·mm⁻²·min^(2/3)], e.g. 2e-7; it has no handbook "
+                    "value (measure it with `bearinglab friction lab`, task 2)"
+                )
             speed_term = np.atleast_1d(friction.speed_term(n, dm, f0))
             info["f0"] = f0
         else:
             if viscosity is None or palmgren_f0 is None:
-                raise InputError("viscosity: the palmgren model needs --viscosity (e.g. '20 cSt') and --palmgren-f0 "
-                                 "(e.g. 2)")
+                raise InputError(
+                    "viscosity: the palmgren model needs --viscosity (e.g. '20 cSt') and --palmgren-f0 "
+                    "(e.g. 2)"
+                )
             nu = parse_quantity(viscosity, "kinematic_viscosity", "viscosity")
             speed_term = np.atleast_1d(friction.palmgren(nu, n, dm, palmgren_f0))
-            info.update({"viscosity_cSt": nu * 1e6, "palmgren_f0": palmgren_f0,
-                         "equivalent_f0": float(friction.speed_term_factor_from_palmgren(palmgren_f0, nu))})
+            info.update(
+                {
+                    "viscosity_cSt": nu * 1e6,
+                    "palmgren_f0": palmgren_f0,
+                    "equivalent_f0": float(
+                        friction.speed_term_factor_from_palmgren(palmgren_f0, nu)
+                    ),
+                }
+            )
         total = speed_term + load_term
-        info.update({"f": f_used, "c": c_used, "mean_diameter_mm": dm * 1e3, "static_load_rating_N": c0})
-    cases = [{"radial_load_N": float(fr[i]), "axial_load_N": float(fa[i]), "speed_rpm": _sig(n[i] / RPM),
-              "equivalent_static_load_N": float(p0[i]), "branch": "x0*Fr+y0*Fa" if combined[i] else "Fr",
-              "torque_Nmm": float(total[i] * 1e3), "torque_speed_term_Nmm": float(speed_term[i] * 1e3),
-              "torque_load_term_Nmm": float(load_term[i] * 1e3)} for i in range(p0.size)]
+        info.update(
+            {"f": f_used, "c": c_used, "mean_diameter_mm": dm * 1e3, "static_load_rating_N": c0}
+        )
+    cases = [
+        {
+            "radial_load_N": float(fr[i]),
+            "axial_load_N": float(fa[i]),
+            "speed_rpm": _sig(n[i] / RPM),
+            "equivalent_static_load_N": float(p0[i]),
+            "branch": "x0*Fr+y0*Fa" if combined[i] else "Fr",
+            "torque_Nmm": float(total[i] * 1e3),
+            "torque_speed_term_Nmm": float(speed_term[i] * 1e3),
+            "torque_load_term_Nmm": float(load_term[i] * 1e3),
+        }
+        for i in range(p0.size)
+    ]
     if json_out:
         emit_json({**info, **cases[0]} if len(cases) == 1 else {**info, "cases": cases})
         return
-    consts = ", ".join(f"{k} = {v:g}" for k, v in info.items() if isinstance(v, float) and not k.endswith(("_mm", "_N", "_cSt")))
-    table(f"Friction torque of {b.designation} ({b.type}), {model} model", [
-        "F_r [N]", "F_a [N]", "n [rpm]", "P0 [N]", "branch", "T [N·mm]", "T0 [N·mm]", "T_F [N·mm]"],
-        [[f"{r['radial_load_N']:.6g}", f"{r['axial_load_N']:.6g}", f"{r['speed_rpm']:.6g}",
-          f"{r['equivalent_static_load_N']:.6g}", r["branch"], f"{r['torque_Nmm']:.6g}",
-          f"{r['torque_speed_term_Nmm']:.6g}", f"{r['torque_load_term_Nmm']:.6g}"] for r in cases],
-        caption=consts + ("; the one-term model has no speed term" if model == "one-term" else ""))
+    consts = ", ".join(
+        f"{k} = {v:g}"
+        for k, v in info.items()
+        if isinstance(v, float) and not k.endswith(("_mm", "_N", "_cSt"))
+    )
+    table(
+        f"Friction torque of {b.designation} ({b.type}), {model} model",
+        [
+            "F_r [N]",
+            "F_a [N]",
+            "n [rpm]",
+            "P0 [N]",
+            "branch",
+            "T [N·mm]",
+            "T0 [N·mm]",
+            "T_F [N·mm]",
+        ],
+        [
+            [
+                f"{r['radial_load_N']:.6g}",
+                f"{r['axial_load_N']:.6g}",
+                f"{r['speed_rpm']:.6g}",
+                f"{r['equivalent_static_load_N']:.6g}",
+                r["branch"],
+                f"{r['torque_Nmm']:.6g}",
+                f"{r['torque_speed_term_Nmm']:.6g}",
+                f"{r['torque_load_term_Nmm']:.6g}",
+            ]
+            for r in cases
+        ],
+        caption=consts + ("; the one-term model has no speed term" if model == "one-term" else ""),
+    )
 
 
 def lab(
-    file: Annotated[Path, typer.Argument(help="Measurement-session file (TOML; see `bearinglab friction template`).")],
-    out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Report directory (created; a previous report there is replaced).")] = None,
+    file: Annotated[
+        Path,
+        typer.Argument(help="Measurement-session file (TOML; see `bearinglab friction template`)."),
+    ],
+    out: Annotated[
+        Path | None,
+        typer.Option(
+            "--out", "-o", help="Report directory (created; a previous report there is replaced)."
+        ),
+    ] = None,
     json_out: JsonFlag = False,
 ):
     """Reduce a friction-rig session (spec 001): tasks 1-3, cross-checks, conclusions, and the HTML report."""
@@ -197,24 +400,61 @@ def lab(
         return
     d = analysis.to_dict(result)
     b = d["bearing"]
-    console.print(f"[bold]Bearing {b['designation']}[/bold] ({b['type']}, d = {b['bore_mm']:g} mm, d_m = "
-                  f"{b['mean_diameter_mm']:g} mm, C0 = {b['static_load_rating_N']:g} N); {len(d['rows'])} rows from "
-                  f"{session.rows_source}")
+    console.print(
+        f"[bold]Bearing {b['designation']}[/bold] ({b['type']}, d = {b['bore_mm']:g} mm, d_m = "
+        f"{b['mean_diameter_mm']:g} mm, C0 = {b['static_load_rating_N']:g} N); {len(d['rows'])} rows from "
+        f"{session.rows_source}"
+    )
     if d["task1"]:
-        table("Task 1: μ (through the origin)", ["β [deg]", "n [rpm]", "μ", "± s.e.", "RMS [N·mm]", "μ/μ_hb − 1"],
-              [[f"{r['tilt_deg']:g}", f"{r['speed_rpm']:.6g}", f"{r['mu']:.6e}", _se(r["mu_standard_error"]),
-                f"{r['residual_rms_Nmm']:.4e}", f"{r['mu_relative_to_handbook']:+.1%}"] for r in d["task1"]])
+        table(
+            "Task 1: μ (through the origin)",
+            ["β [deg]", "n [rpm]", "μ", "± s.e.", "RMS [N·mm]", "μ/μ_hb − 1"],
+            [
+                [
+                    f"{r['tilt_deg']:g}",
+                    f"{r['speed_rpm']:.6g}",
+                    f"{r['mu']:.6e}",
+                    _se(r["mu_standard_error"]),
+                    f"{r['residual_rms_Nmm']:.4e}",
+                    f"{r['mu_relative_to_handbook']:+.1%}",
+                ]
+                for r in d["task1"]
+            ],
+        )
     if d["task2"]:
-        table("Task 2: f0 and T_F (f0 in N·mm⁻²·min^(2/3))", ["β [deg]", "Q [kg]", "f0", "± s.e.", "T_F [N·mm]",
-                                                               "± s.e.", "handbook T_F [N·mm]"],
-              [[f"{r['tilt_deg']:g}", f"{r['mass_kg']:g}", f"{r['f0']:.6e}", _se(r["f0_standard_error"]),
-                f"{r['torque_load_term_Nmm']:.6e}", _se(r["torque_load_term_standard_error_Nmm"]),
-                f"{r['handbook_torque_load_term_Nmm']:.4e}"] for r in d["task2"]])
+        table(
+            "Task 2: f0 and T_F (f0 in N·mm⁻²·min^(2/3))",
+            ["β [deg]", "Q [kg]", "f0", "± s.e.", "T_F [N·mm]", "± s.e.", "handbook T_F [N·mm]"],
+            [
+                [
+                    f"{r['tilt_deg']:g}",
+                    f"{r['mass_kg']:g}",
+                    f"{r['f0']:.6e}",
+                    _se(r["f0_standard_error"]),
+                    f"{r['torque_load_term_Nmm']:.6e}",
+                    _se(r["torque_load_term_standard_error_Nmm"]),
+                    f"{r['handbook_torque_load_term_Nmm']:.4e}",
+                ]
+                for r in d["task2"]
+            ],
+        )
     if d["task3"]:
-        table("Task 3: f and T0", ["β [deg]", "n [rpm]", "f", "± s.e.", "T0 [N·mm]", "± s.e.", "f/f_hb − 1"],
-              [[f"{r['tilt_deg']:g}", f"{r['speed_rpm']:.6g}", f"{r['f']:.6e}", _se(r["f_standard_error"]),
-                f"{r['torque_speed_term_Nmm']:.6e}", _se(r["torque_speed_term_standard_error_Nmm"]),
-                f"{r['f_relative_to_handbook']:+.1%}"] for r in d["task3"]])
+        table(
+            "Task 3: f and T0",
+            ["β [deg]", "n [rpm]", "f", "± s.e.", "T0 [N·mm]", "± s.e.", "f/f_hb − 1"],
+            [
+                [
+                    f"{r['tilt_deg']:g}",
+                    f"{r['speed_rpm']:.6g}",
+                    f"{r['f']:.6e}",
+                    _se(r["f_standard_error"]),
+                    f"{r['torque_speed_term_Nmm']:.6e}",
+                    _se(r["torque_speed_term_standard_error_Nmm"]),
+                    f"{r['f_relative_to_handbook']:+.1%}",
+                ]
+                for r in d["task3"]
+            ],
+        )
     console.print("[bold]Conclusions[/bold]")
     for k, text in enumerate(d["conclusions"], start=1):
         console.print(f"{k}. {text}", highlight=False, markup=False)
@@ -229,8 +469,12 @@ def _se(x):
 
 
 def template(
-    file: Annotated[Optional[Path], typer.Argument(help="New session file to write (default: print on stdout).")] = None,
-    bearing: Annotated[Optional[str], typer.Option("--bearing", "-b", help="Catalog bearing to fill in, e.g. 18.")] = None,
+    file: Annotated[
+        Path | None, typer.Argument(help="New session file to write (default: print on stdout).")
+    ] = None,
+    bearing: Annotated[
+        str | None, typer.Option("--bearing", "-b", help="Catalog bearing to fill in, e.g. 18.")
+    ] = None,
     force: Annotated[bool, typer.Option("--force", help="Replace an existing file.")] = False,
 ):
     """Write a blank, commented measurement-session file for a new session."""
@@ -240,8 +484,12 @@ def template(
         sys.stdout.write(measurement.template(bearing=bearing))
         return
     path = measurement.write_template(file, bearing=bearing, overwrite=force)
-    console.print(f"Wrote {path}. Fill in the bearing, the calibration tables and the rows, then run:\n"
-                  f"  bearinglab friction lab {path} --out {path.with_suffix('')}-report", highlight=False, markup=False)
+    console.print(
+        f"Wrote {path}. Fill in the bearing, the calibration tables and the rows, then run:\n"
+        f"  bearinglab friction lab {path} --out {path.with_suffix('')}-report",
+        highlight=False,
+        markup=False,
+    )
 
 
 def register(app):
@@ -250,5 +498,3 @@ def register(app):
     friction_app.command("lab")(lab)
     friction_app.command("template")(template)
     app.add_typer(friction_app, name="friction")
-
-

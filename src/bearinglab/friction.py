@@ -63,27 +63,27 @@ from ._validate import check_finite, check_nonnegative, check_positive
 from .errors import InputError, ValidityWarning
 
 __all__ = [
-    "RADIAL_STATIC_FACTORS",
-    "ANGULAR_STATIC_FACTORS",
-    "HANDBOOK_FRICTION_COEFFICIENTS",
-    "RADIAL_LOAD_TERM",
     "ANGULAR_LOAD_TERM_BELOW_30",
     "ANGULAR_LOAD_TERM_FROM_30",
+    "ANGULAR_STATIC_FACTORS",
     "BEARING_TYPES",
-    "StaticLoadFactors",
+    "HANDBOOK_FRICTION_COEFFICIENTS",
+    "RADIAL_LOAD_TERM",
+    "RADIAL_STATIC_FACTORS",
     "LoadTermConstants",
+    "StaticLoadFactors",
     "TwoTermTorque",
-    "static_load_factors",
-    "equivalent_static_load",
     "combined_branch_governs",
+    "equivalent_static_load",
     "handbook_friction_coefficient",
-    "one_term",
-    "load_term_constants",
     "load_term",
-    "speed_term",
-    "two_term",
+    "load_term_constants",
+    "one_term",
     "palmgren",
+    "speed_term",
     "speed_term_factor_from_palmgren",
+    "static_load_factors",
+    "two_term",
 ]
 
 _MM, _CST, _RPM = 1e-3, 1e-6, 2.0 * math.pi / 60.0  # m per mm, m^2/s per cSt, rad/s per rpm
@@ -145,14 +145,18 @@ def _check_type(bearing_type):
 
 def _contact_angle_deg(bearing_type, contact_angle, table):
     if contact_angle is None:
-        raise InputError(f"contact_angle: an angular-contact bearing needs its contact angle for {table} "
-                         f"(or give the constants explicitly)")
+        raise InputError(
+            f"contact_angle: an angular-contact bearing needs its contact angle for {table} "
+            f"(or give the constants explicitly)"
+        )
     a = check_finite("contact_angle", contact_angle, "rad")
     deg = np.degrees(a)
     bad = ~((deg > 0.0) & (deg < 90.0))
     if bad.any():
-        raise InputError(f"contact_angle must be in (0, 90) [deg] for an angular-contact bearing, "
-                         f"got {float(deg[bad].flat[0])!r}")
+        raise InputError(
+            f"contact_angle must be in (0, 90) [deg] for an angular-contact bearing, "
+            f"got {float(deg[bad].flat[0])!r}"
+        )
     return deg
 
 
@@ -208,8 +212,10 @@ def static_load_factors(bearing_type="radial", contact_angle=None):
     missing = np.isnan(x0)
     if missing.any():
         rows = ", ".join(f"{a:g}" for a in ANGULAR_STATIC_FACTORS)
-        raise InputError(f"contact_angle must be one of the Table 1 angles ({rows}) [deg] unless x0 and y0 "
-                         f"are given explicitly, got {float(deg[missing].flat[0])!r}")
+        raise InputError(
+            f"contact_angle must be one of the Table 1 angles ({rows}) [deg] unless x0 and y0 "
+            f"are given explicitly, got {float(deg[missing].flat[0])!r}"
+        )
     return StaticLoadFactors(_scalar(x0), _scalar(y0))
 
 
@@ -224,8 +230,15 @@ def _factors(bearing_type, contact_angle, radial_factor, axial_factor):
     return x0, y0
 
 
-def equivalent_static_load(radial_load, axial_load, *, bearing_type="radial", contact_angle=None,
-                           radial_factor=None, axial_factor=None):
+def equivalent_static_load(
+    radial_load,
+    axial_load,
+    *,
+    bearing_type="radial",
+    contact_angle=None,
+    radial_factor=None,
+    axial_factor=None,
+):
     """Static equivalent load P0 by the max rule (3.1).
 
     Parameters
@@ -266,8 +279,15 @@ def equivalent_static_load(radial_load, axial_load, *, bearing_type="radial", co
     return _scalar(np.maximum(x0 * fr + y0 * fa, fr))  # (3.1)
 
 
-def combined_branch_governs(radial_load, axial_load, *, bearing_type="radial", contact_angle=None,
-                            radial_factor=None, axial_factor=None):
+def combined_branch_governs(
+    radial_load,
+    axial_load,
+    *,
+    bearing_type="radial",
+    contact_angle=None,
+    radial_factor=None,
+    axial_factor=None,
+):
     """Which branch of (3.1) gives P0: True where x0 F_r + y0 F_a >= F_r.
 
     Parameters
@@ -358,7 +378,11 @@ def one_term(equivalent_load, bore, *, bearing_type="radial", friction_coefficie
     """
     p0 = check_nonnegative("equivalent_load", equivalent_load, "N")
     d = check_positive("bore", bore, "m")
-    mu = handbook_friction_coefficient(bearing_type) if friction_coefficient is None else friction_coefficient
+    mu = (
+        handbook_friction_coefficient(bearing_type)
+        if friction_coefficient is None
+        else friction_coefficient
+    )
     mu = check_nonnegative("friction_coefficient", mu, "-")
     return _scalar(mu * p0 * d / 2.0)  # (3.2)
 
@@ -397,8 +421,16 @@ def load_term_constants(bearing_type="radial", contact_angle=None):
     return LoadTermConstants(_scalar(f), _scalar(c))
 
 
-def load_term(equivalent_load, mean_diameter, static_load_rating, *, bearing_type="radial",
-              contact_angle=None, load_term_factor=None, load_term_exponent=None):
+def load_term(
+    equivalent_load,
+    mean_diameter,
+    static_load_rating,
+    *,
+    bearing_type="radial",
+    contact_angle=None,
+    load_term_factor=None,
+    load_term_exponent=None,
+):
     """Load-dependent friction torque T_F = f P0 (P0/C0)^c d_m (3.4).
 
     Parameters
@@ -453,8 +485,12 @@ def load_term(equivalent_load, mean_diameter, static_load_rating, *, bearing_typ
     c = check_finite("load_term_exponent", load_term_exponent, "-")
     ratio = p0 / c0
     if np.any(ratio > 1.0):
-        warnings.warn(f"equivalent_load exceeds static_load_rating (P0/C0 up to {float(np.max(ratio)):.3g}); "
-                      "the handbook load term (3.4) is extrapolated", ValidityWarning, stacklevel=2)
+        warnings.warn(
+            f"equivalent_load exceeds static_load_rating (P0/C0 up to {float(np.max(ratio)):.3g}); "
+            "the handbook load term (3.4) is extrapolated",
+            ValidityWarning,
+            stacklevel=2,
+        )
     return _scalar(f * p0 * ratio**c * dm)  # (3.4)
 
 
@@ -499,8 +535,18 @@ def speed_term(shaft_speed, mean_diameter, speed_term_factor):
     return _scalar(t0_nmm * _MM)  # N*mm -> N*m
 
 
-def two_term(equivalent_load, shaft_speed, mean_diameter, static_load_rating, speed_term_factor, *,
-             bearing_type="radial", contact_angle=None, load_term_factor=None, load_term_exponent=None):
+def two_term(
+    equivalent_load,
+    shaft_speed,
+    mean_diameter,
+    static_load_rating,
+    speed_term_factor,
+    *,
+    bearing_type="radial",
+    contact_angle=None,
+    load_term_factor=None,
+    load_term_exponent=None,
+):
     """Friction torque of the two-term model, T = T0 + T_F (3.3)-(3.5).
 
     Parameters
@@ -535,9 +581,15 @@ def two_term(equivalent_load, shaft_speed, mean_diameter, static_load_rating, sp
     >>> print(f"{t.torque * 1e3:.6f} = {t.speed_term * 1e3:.6f} + {t.load_term * 1e3:.6f} N*mm")
     0.060937 = 0.030328 + 0.030610 N*mm
     """
-    t_f = load_term(equivalent_load, mean_diameter, static_load_rating, bearing_type=bearing_type,
-                    contact_angle=contact_angle, load_term_factor=load_term_factor,
-                    load_term_exponent=load_term_exponent)
+    t_f = load_term(
+        equivalent_load,
+        mean_diameter,
+        static_load_rating,
+        bearing_type=bearing_type,
+        contact_angle=contact_angle,
+        load_term_factor=load_term_factor,
+        load_term_exponent=load_term_exponent,
+    )
     t_0 = speed_term(shaft_speed, mean_diameter, speed_term_factor)
     t_0, t_f = np.broadcast_arrays(np.asarray(t_0), np.asarray(t_f))
     return TwoTermTorque(_scalar(t_0 + t_f), _scalar(t_0), _scalar(t_f))  # (3.3)

@@ -35,7 +35,7 @@ from typing import NamedTuple
 
 from .errors import InputError
 
-__all__ = ["ReportFiles", "MARKER", "write_report", "render_html", "render_figure"]
+__all__ = ["MARKER", "ReportFiles", "render_figure", "render_html", "write_report"]
 
 MARKER = ".bearinglab-report"  # marks a directory written by write_report (it may be replaced)
 _COLOURS = ("#1f5fa8", "#c0392b", "#2e8b57", "#8e44ad", "#d35400", "#16a085", "#7f8c8d", "#b7950b")
@@ -110,7 +110,9 @@ def render_figure(plot):
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    with matplotlib.rc_context({"svg.fonttype": "path", "svg.hashsalt": plot.name, "font.size": 9.5}):
+    with matplotlib.rc_context(
+        {"svg.fonttype": "path", "svg.hashsalt": plot.name, "font.size": 9.5}
+    ):
         fig = Figure(figsize=(6.4, 4.2), dpi=150)
         FigureCanvasAgg(fig)
         ax = fig.add_subplot()
@@ -134,12 +136,16 @@ def render_figure(plot):
         png = io.BytesIO()
         fig.savefig(png, format="png", metadata={"Software": None})
         svg = io.StringIO()
-        fig.savefig(svg, format="svg", metadata={"Date": None, "Creator": None, "Format": None, "Type": None})
+        fig.savefig(
+            svg,
+            format="svg",
+            metadata={"Date": None, "Creator": None, "Format": None, "Type": None},
+        )
     text = svg.getvalue()
     start = text.find("<metadata>")  # drop the RDF block: it only names external vocabularies
     if start >= 0:
         end = text.find("</metadata>", start)
-        text = text[:start] + text[end + len("</metadata>"):]
+        text = text[:start] + text[end + len("</metadata>") :]
     return png.getvalue(), text
 
 
@@ -183,35 +189,114 @@ def _pm(value, error, fmt):
 
 def _coefficient_tables(d):
     parts = []
-    rows = [[r["tilt_deg"], r["column"], r["speed_rpm"], _pm(r["mu"], r["mu_standard_error"], ".6e"), r["n_points"],
-             r["residual_rms_Nmm"], r["mean_torque_Nmm"], r["mu_handbook"], r["mu_relative_to_handbook"] * 100,
-             r["residual_rms_relative_to_mean_torque"] * 100] for r in d["task1"]]
+    rows = [
+        [
+            r["tilt_deg"],
+            r["column"],
+            r["speed_rpm"],
+            _pm(r["mu"], r["mu_standard_error"], ".6e"),
+            r["n_points"],
+            r["residual_rms_Nmm"],
+            r["mean_torque_Nmm"],
+            r["mu_handbook"],
+            r["mu_relative_to_handbook"] * 100,
+            r["residual_rms_relative_to_mean_torque"] * 100,
+        ]
+        for r in d["task1"]
+    ]
     if rows:
-        parts.append(_html_table("Task 1: reduced friction coefficient μ (least squares through the origin, eq. 6.1)",
-                                 ["β [deg]", "column", "n [rpm]", "μ ± s.e.", "m", "residual RMS [N·mm]",
-                                  "mean T [N·mm]", "μ_hb", "μ/μ_hb − 1 [%] (I2)", "RMS/mean T [%] (I3)"],
-                                 rows, ["g", "", ".6g", "", "d", ".4e", ".6f", "g", "+.2f", ".2f"]))
-    rows = [[r["tilt_deg"], r["mass_kg"], r["equivalent_static_load_N"], _pm(r["f0"], r["f0_standard_error"], ".6e"),
-             _pm(r["torque_load_term_Nmm"], r["torque_load_term_standard_error_Nmm"], ".6e"), r["n_points"],
-             r["residual_rms_Nmm"], r["handbook_torque_load_term_Nmm"], r["torque_load_term_with_task3_f_Nmm"]]
-            for r in d["task2"]]
+        parts.append(
+            _html_table(
+                "Task 1: reduced friction coefficient μ (least squares through the origin, eq. 6.1)",
+                [
+                    "β [deg]",
+                    "column",
+                    "n [rpm]",
+                    "μ ± s.e.",
+                    "m",
+                    "residual RMS [N·mm]",
+                    "mean T [N·mm]",
+                    "μ_hb",
+                    "μ/μ_hb − 1 [%] (I2)",
+                    "RMS/mean T [%] (I3)",
+                ],
+                rows,
+                ["g", "", ".6g", "", "d", ".4e", ".6f", "g", "+.2f", ".2f"],
+            )
+        )
+    rows = [
+        [
+            r["tilt_deg"],
+            r["mass_kg"],
+            r["equivalent_static_load_N"],
+            _pm(r["f0"], r["f0_standard_error"], ".6e"),
+            _pm(r["torque_load_term_Nmm"], r["torque_load_term_standard_error_Nmm"], ".6e"),
+            r["n_points"],
+            r["residual_rms_Nmm"],
+            r["handbook_torque_load_term_Nmm"],
+            r["torque_load_term_with_task3_f_Nmm"],
+        ]
+        for r in d["task2"]
+    ]
     if rows:
-        parts.append(_html_table("Task 2: speed dependence T = f0·d_m³·n^(2/3) + T_F (eq. 6.2); f0 in N·mm⁻²·min^(2/3)",
-                                 ["β [deg]", "Q [kg]", "P0 [N]", "f0 ± s.e.", "T_F ± s.e. [N·mm]", "m",
-                                  "residual RMS [N·mm]", "handbook T_F [N·mm]", "T_F with f of task 3 [N·mm]"],
-                                 rows, ["g", "g", ".6f", "", "", "d", ".4e", ".6e", ".6e"]))
-    rows = [[r["tilt_deg"], r["column"], r["speed_rpm"], _pm(r["f"], r["f_standard_error"], ".6e"),
-             _pm(r["torque_speed_term_Nmm"], r["torque_speed_term_standard_error_Nmm"], ".6e"), r["n_points"],
-             r["residual_rms_Nmm"], r["f_handbook"], r["f_relative_to_handbook"] * 100,
-             r["torque_speed_term_with_task2_f0_Nmm"]] for r in d["task3"]]
+        parts.append(
+            _html_table(
+                "Task 2: speed dependence T = f0·d_m³·n^(2/3) + T_F (eq. 6.2); f0 in N·mm⁻²·min^(2/3)",
+                [
+                    "β [deg]",
+                    "Q [kg]",
+                    "P0 [N]",
+                    "f0 ± s.e.",
+                    "T_F ± s.e. [N·mm]",
+                    "m",
+                    "residual RMS [N·mm]",
+                    "handbook T_F [N·mm]",
+                    "T_F with f of task 3 [N·mm]",
+                ],
+                rows,
+                ["g", "g", ".6f", "", "", "d", ".4e", ".6e", ".6e"],
+            )
+        )
+    rows = [
+        [
+            r["tilt_deg"],
+            r["column"],
+            r["speed_rpm"],
+            _pm(r["f"], r["f_standard_error"], ".6e"),
+            _pm(r["torque_speed_term_Nmm"], r["torque_speed_term_standard_error_Nmm"], ".6e"),
+            r["n_points"],
+            r["residual_rms_Nmm"],
+            r["f_handbook"],
+            r["f_relative_to_handbook"] * 100,
+            r["torque_speed_term_with_task2_f0_Nmm"],
+        ]
+        for r in d["task3"]
+    ]
     if rows:
-        parts.append(_html_table("Task 3: load dependence T = T0 + f·P0·(P0/C0)^e·d_m (eqs. 6.2-6.3)",
-                                 ["β [deg]", "column", "n [rpm]", "f ± s.e.", "T0 ± s.e. [N·mm]", "m",
-                                  "residual RMS [N·mm]", "f_hb", "f/f_hb − 1 [%]", "f0·d_m³·n^(2/3), mean f0 of task 2 [N·mm]"],
-                                 rows, ["g", "", ".6g", "", "", "d", ".4e", "g", "+.2f", ".6e"]))
-    parts.append("<p>Standard errors from the least-squares covariance with m − p degrees of freedom (p = 1 for "
-                 "task 1, 2 for tasks 2 and 3); “n/a” where m = p. The intercepts T_F (n → 0) and T0 (P0 → 0) are "
-                 "extrapolations (spec 001 section 8.14).</p>")
+        parts.append(
+            _html_table(
+                "Task 3: load dependence T = T0 + f·P0·(P0/C0)^e·d_m (eqs. 6.2-6.3)",
+                [
+                    "β [deg]",
+                    "column",
+                    "n [rpm]",
+                    "f ± s.e.",
+                    "T0 ± s.e. [N·mm]",
+                    "m",
+                    "residual RMS [N·mm]",
+                    "f_hb",
+                    "f/f_hb − 1 [%]",
+                    "f0·d_m³·n^(2/3), mean f0 of task 2 [N·mm]",
+                ],
+                rows,
+                ["g", "", ".6g", "", "", "d", ".4e", "g", "+.2f", ".6e"],
+            )
+        )
+    parts.append(
+        "<p>Standard errors from the least-squares covariance with m − p degrees of freedom (p = 1 for "
+        "task 1, 2 for tasks 2 and 3); “n/a” where m = p. The intercepts T_F (n → 0) and T0 (P0 → 0) are "
+        "extrapolations (spec 001 section 8.14).</p>"
+    )
     return "".join(parts)
 
 
@@ -240,15 +325,20 @@ def render_html(result, figures, *, generated=None):
     b = d["bearing"]
     hb = d["handbook"]
     info = d["session"]
-    generated = generated or _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    generated = generated or _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%d %H:%M UTC")
     title = info.get("title") or f"Friction torque of bearing {b['designation']}"
-    out = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
-           '<meta name="viewport" content="width=device-width, initial-scale=1">',
-           f"<title>{html.escape(title)}</title><style>{_CSS}</style></head><body>",
-           f"<h1>{html.escape(title)}</h1>",
-           f'<p class="meta">Friction torque of ball bearings under combined loading (spec 001). Session file '
-           f"{html.escape(str(s.source))}; rows from {html.escape(str(s.rows_source))}. Generated {generated} by "
-           f"bearinglab {__version__}.</p>"]
+    out = [
+        "<!DOCTYPE html>",
+        '<html lang="en"><head><meta charset="utf-8">',
+        '<meta name="viewport" content="width=device-width, initial-scale=1">',
+        f"<title>{html.escape(title)}</title><style>{_CSS}</style></head><body>",
+        f"<h1>{html.escape(title)}</h1>",
+        (
+            f'<p class="meta">Friction torque of ball bearings under combined loading (spec 001). Session file '
+            f"{html.escape(str(s.source))}; rows from {html.escape(str(s.rows_source))}. Generated {generated} by "
+            f"bearinglab {__version__}.</p>"
+        ),
+    ]
     # 1. rig and test conditions
     out.append("<h2>1. Rig and test conditions</h2>")
     out.append(f"<p>{html.escape(_RIG_TEXT)}</p>")
@@ -258,29 +348,49 @@ def render_html(result, figures, *, generated=None):
     tilts = sorted({r["tilt_deg"] for r in d["rows"]})
     masses = sorted({r["mass_kg"] for r in d["rows"]})
     speeds = sorted({round(r["speed_rpm"], 6) for r in d["rows"]})
-    conditions = [["tilts β [deg]", ", ".join(f"{t:g}" for t in tilts)],
-                  ["masses Q [kg]", ", ".join(f"{q:g}" for q in masses)],
-                  ["tare mass [kg]", f"{d['rig']['tare_mass_kg']:g}"],
-                  ["g [m/s²]", f"{d['rig']['gravity_m_per_s2']:g}"],
-                  ["spindle speeds n [rpm]", ", ".join(f"{n:.6g}" for n in speeds)],
-                  ["rows (T4 / T5)", f"{sum(r['series'] == 'T4' for r in d['rows'])} / "
-                                     f"{sum(r['series'] == 'T5' for r in d['rows'])}"]]
+    conditions = [
+        ["tilts β [deg]", ", ".join(f"{t:g}" for t in tilts)],
+        ["masses Q [kg]", ", ".join(f"{q:g}" for q in masses)],
+        ["tare mass [kg]", f"{d['rig']['tare_mass_kg']:g}"],
+        ["g [m/s²]", f"{d['rig']['gravity_m_per_s2']:g}"],
+        ["spindle speeds n [rpm]", ", ".join(f"{n:.6g}" for n in speeds)],
+        [
+            "rows (T4 / T5)",
+            f"{sum(r['series'] == 'T4' for r in d['rows'])} / {sum(r['series'] == 'T5' for r in d['rows'])}",
+        ],
+    ]
     if d["rig"]["branch_switch_tilt_deg"] is not None:
-        conditions.append(["P0 branch switch β* = arctan(y0/(1 − x0)) [deg]", f"{d['rig']['branch_switch_tilt_deg']:.4f}"])
+        conditions.append(
+            [
+                "P0 branch switch β* = arctan(y0/(1 − x0)) [deg]",
+                f"{d['rig']['branch_switch_tilt_deg']:.4f}",
+            ]
+        )
     out.append(_html_table("Test conditions", ["quantity", "value"], conditions, ["", ""]))
-    bearing_rows = [["designation", b["designation"]], ["type", b["type"]],
-                    ["bore d [mm]", f"{b['bore_mm']:g}"], ["outside diameter D [mm]", f"{b['outside_diameter_mm']:g}"],
-                    ["mean diameter d_m [mm]", f"{b['mean_diameter_mm']:g}"],
-                    ["static load rating C0 [N]", f"{b['static_load_rating_N']:g}"]]
+    bearing_rows = [
+        ["designation", b["designation"]],
+        ["type", b["type"]],
+        ["bore d [mm]", f"{b['bore_mm']:g}"],
+        ["outside diameter D [mm]", f"{b['outside_diameter_mm']:g}"],
+        ["mean diameter d_m [mm]", f"{b['mean_diameter_mm']:g}"],
+        ["static load rating C0 [N]", f"{b['static_load_rating_N']:g}"],
+    ]
     if b["type"] == "angular" and b["contact_angle_deg"] is not None:
         bearing_rows.insert(2, ["contact angle α [deg]", f"{b['contact_angle_deg']:g}"])
     if b["source"]:
         bearing_rows.append(["source", b["source"]])
     out.append(_html_table("Test bearing", ["quantity", "value"], bearing_rows, ["", ""]))
     over = set(hb["overridden"])
-    hb_rows = [[f"{name}{' (given in the session file)' if key in over else ''}", hb[key]]
-               for key, name in (("x0", "x0 (Table 1)"), ("y0", "y0 (Table 1)"), ("mu", "μ_hb (section 3.2)"),
-                                 ("f", "f_hb (Table 2)"), ("c", "c = e (Table 2)"))]
+    hb_rows = [
+        [f"{name}{' (given in the session file)' if key in over else ''}", hb[key]]
+        for key, name in (
+            ("x0", "x0 (Table 1)"),
+            ("y0", "y0 (Table 1)"),
+            ("mu", "μ_hb (section 3.2)"),
+            ("f", "f_hb (Table 2)"),
+            ("c", "c = e (Table 2)"),
+        )
+    ]
     out.append(_html_table("Handbook constants", ["constant", "value"], hb_rows, ["", "g"]))
     # 2. measurements
     out.append("<h2>2. Measurements</h2>")
@@ -297,18 +407,22 @@ def render_html(result, figures, *, generated=None):
     out.append("<h2>4. Plots</h2>")
     for k, (plot, svg) in enumerate(figures, start=1):
         uri = "data:image/svg+xml;base64," + base64.b64encode(svg.encode("utf-8")).decode("ascii")
-        out.append(f'<figure><img alt="{html.escape(plot.title)}" src="{uri}">'
-                   f"<figcaption>Figure {k}. {html.escape(plot.title)}: experimental points and the fitted lines, "
-                   f"drawn from abscissa 0 to 1.1 × the largest experimental abscissa (files {plot.name}.png, "
-                   f"{plot.name}.svg).</figcaption></figure>")
+        out.append(
+            f'<figure><img alt="{html.escape(plot.title)}" src="{uri}">'
+            f"<figcaption>Figure {k}. {html.escape(plot.title)}: experimental points and the fitted lines, "
+            f"drawn from abscissa 0 to 1.1 × the largest experimental abscissa (files {plot.name}.png, "
+            f"{plot.name}.svg).</figcaption></figure>"
+        )
     # 5. conclusions
-    out.append("<h2>5. Conclusions</h2><ol class=\"conclusions\">")
+    out.append('<h2>5. Conclusions</h2><ol class="conclusions">')
     for text in d["conclusions"]:
         cls = ' class="warn"' if text.startswith("Warning") else ""
         out.append(f"<li{cls}>{html.escape(text)}</li>")
     out.append("</ol>")
-    out.append("<p class=\"meta\">Every number of this report is in results.json; tables are also CSV files and "
-               "plots PNG and SVG files in the same directory.</p></body></html>")
+    out.append(
+        '<p class="meta">Every number of this report is in results.json; tables are also CSV files and '
+        "plots PNG and SVG files in the same directory.</p></body></html>"
+    )
     return "\n".join(out)
 
 
@@ -328,7 +442,16 @@ def _coefficient_csvs(d):
         if not rows:
             continue
         columns = [k for k in rows[0] if k != "lines"] + ["lines"]
-        out.append((name, columns, [[r[k] if k != "lines" else " ".join(map(str, r[k])) for k in columns] for r in rows]))
+        out.append(
+            (
+                name,
+                columns,
+                [
+                    [r[k] if k != "lines" else " ".join(map(str, r[k])) for k in columns]
+                    for r in rows
+                ],
+            )
+        )
     return out
 
 
@@ -371,15 +494,19 @@ def write_report(result, out_dir, *, generated=None):
 
     target = Path(out_dir)
     if not _is_replaceable(target):
-        raise InputError(f"out: {target} exists and is not a bearinglab report directory; give a new or empty "
-                         f"directory (a previous report is replaced)")
+        raise InputError(
+            f"out: {target} exists and is not a bearinglab report directory; give a new or empty "
+            f"directory (a previous report is replaced)"
+        )
     parent = target.parent if str(target.parent) else Path(".")
     parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(prefix=f".{target.name}.tmp-", dir=parent))
     try:
         umask = os.umask(0o022)
         os.umask(umask)
-        os.chmod(tmp, 0o777 & ~umask)  # mkdtemp makes it private; a report directory is an ordinary one
+        os.chmod(
+            tmp, 0o777 & ~umask
+        )  # mkdtemp makes it private; a report directory is an ordinary one
         d = analysis.to_dict(result)
         figures, figure_files, table_files = [], [], []
         for plot in analysis.plots(result):
@@ -394,19 +521,33 @@ def write_report(result, out_dir, *, generated=None):
         for name, columns, rows in _coefficient_csvs(d):
             _write_csv(tmp / f"{name}.csv", columns, rows)
             table_files.append(f"{name}.csv")
-        d["files"] = {"html": "report.html", "json": "results.json", "figures": figure_files, "tables": table_files}
+        d["files"] = {
+            "html": "report.html",
+            "json": "results.json",
+            "figures": figure_files,
+            "tables": table_files,
+        }
         with open(tmp / "results.json", "w", encoding="utf-8") as fh:
             json.dump(d, fh, indent=2, ensure_ascii=False, allow_nan=False)
             fh.write("\n")
-        (tmp / "report.html").write_text(render_html(result, figures, generated=generated), encoding="utf-8")
-        (tmp / MARKER).write_text("bearinglab friction-lab report; this directory is replaced on the next run\n",
-                                  encoding="utf-8")
+        (tmp / "report.html").write_text(
+            render_html(result, figures, generated=generated), encoding="utf-8"
+        )
+        (tmp / MARKER).write_text(
+            "bearinglab friction-lab report; this directory is replaced on the next run\n",
+            encoding="utf-8",
+        )
         _swap_into_place(tmp, target)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
-    return ReportFiles(target, target / "report.html", target / "results.json",
-                       [target / f for f in figure_files], [target / f for f in table_files])
+    return ReportFiles(
+        target,
+        target / "report.html",
+        target / "results.json",
+        [target / f for f in figure_files],
+        [target / f for f in table_files],
+    )
 
 
 def _swap_into_place(tmp, target):

@@ -25,7 +25,9 @@ def _read(name):
 
 @pytest.fixture(scope="module")
 def s0():
-    return analysis.to_dict(analysis.analyse(measurement.read_session(DATA / "friction_s0_direct.toml")))
+    return analysis.to_dict(
+        analysis.analyse(measurement.read_session(DATA / "friction_s0_direct.toml"))
+    )
 
 
 @pytest.fixture(scope="module")
@@ -40,13 +42,20 @@ def s1(s1_result):
 
 def _close(got, row):
     value, rtol, atol = float(row["value"]), float(row["rtol"]), float(row["atol"])
-    return abs(got - value) <= max(rtol * abs(value), atol), f"{row['item']}: got {got!r}, expected {value!r}"
+    return abs(got - value) <= max(
+        rtol * abs(value), atol
+    ), f"{row['item']}: got {got!r}, expected {value!r}"
 
 
 def _pick(records, row, key="tilt_deg", speed_key="speed_rpm"):
-    hits = [r for r in records
-            if (not row["tilt_deg"] or r[key] == pytest.approx(float(row["tilt_deg"]), abs=1e-9))
-            and (not row["speed_rpm"] or r[speed_key] == pytest.approx(float(row["speed_rpm"]), abs=1e-6))]
+    hits = [
+        r
+        for r in records
+        if (not row["tilt_deg"] or r[key] == pytest.approx(float(row["tilt_deg"]), abs=1e-9))
+        and (
+            not row["speed_rpm"] or r[speed_key] == pytest.approx(float(row["speed_rpm"]), abs=1e-6)
+        )
+    ]
     assert len(hits) == 1, f"{row['item']}: {len(hits)} matches"
     return hits[0]
 
@@ -77,7 +86,11 @@ def _value(doc, row):
         return _pick(ind["I7_torque_speed_term_vs_task2"], row)[field]
     if task == "plot1":
         plot = next(p for p in doc["plots"] if p["name"] == f"task1_tilt{float(row['tilt_deg']):g}")
-        series = next(s for s in plot["series"] if s["label"].startswith(f"n = {float(row['speed_rpm']):.6g} rpm"))
+        series = next(
+            s
+            for s in plot["series"]
+            if s["label"].startswith(f"n = {float(row['speed_rpm']):.6g} rpm")
+        )
         return series["line_x"][-1] if field == "x_end" else series["line_y"][-1]
     raise AssertionError(f"unknown item {item}")
 
@@ -109,14 +122,18 @@ def test_handbook_numbers_from_the_catalog_bearing():
     from bearinglab import catalog
 
     b = catalog.get("1000095")
-    assert (b.bore, b.mean_diameter, b.static_load_rating) == pytest.approx((5e-3, 9e-3, 392.0), rel=1e-12)
+    assert (b.bore, b.mean_diameter, b.static_load_rating) == pytest.approx(
+        (5e-3, 9e-3, 392.0), rel=1e-12
+    )
     t = friction.two_term(19.62, 3000 * RPM, b.mean_diameter, b.static_load_rating, 2.0e-7)
     assert t.load_term * 1e3 == pytest.approx(3.060985e-02, rel=1e-6)
     assert t.speed_term * 1e3 == pytest.approx(3.032762e-02, rel=1e-6)
 
 
 # ----------------------------------------------------------------------------- section 4
-@pytest.mark.parametrize("row", _read("friction_rig_k_beta.csv"), ids=lambda r: f"beta={r['tilt_deg']}")
+@pytest.mark.parametrize(
+    "row", _read("friction_rig_k_beta.csv"), ids=lambda r: f"beta={r['tilt_deg']}"
+)
 def test_k_beta_table_of_section_4(row):
     r = rig.rig_equivalent_load(1.0, math.radians(float(row["tilt_deg"])), gravity=1.0)
     assert r.equivalent_load == pytest.approx(float(row["k"]), abs=5e-7)  # printed to 6 decimals
@@ -128,8 +145,11 @@ def test_branch_switch_angle_of_section_4():
 
 
 # ----------------------------------------------------------------------------- data set S0
-@pytest.mark.parametrize("row", _read("friction_S0_expected.csv"),
-                         ids=lambda r: f"{r['item']}@{r['tilt_deg']}/{r['speed_rpm']}")
+@pytest.mark.parametrize(
+    "row",
+    _read("friction_S0_expected.csv"),
+    ids=lambda r: f"{r['item']}@{r['tilt_deg']}/{r['speed_rpm']}",
+)
 def test_s0_expected_results(s0, row):
     ok, msg = _close(_value(s0, row), row)
     assert ok, msg
@@ -137,9 +157,13 @@ def test_s0_expected_results(s0, row):
 
 def test_s0_loads_and_recovered_generating_model(s0):
     t4 = [r for r in s0["rows"] if r["series"] == "T4"]
-    assert [r["equivalent_static_load_N"] for r in t4[:3]] == pytest.approx([4.905, 9.81, 19.62], rel=1e-15)
+    assert [r["equivalent_static_load_N"] for r in t4[:3]] == pytest.approx(
+        [4.905, 9.81, 19.62], rel=1e-15
+    )
     t5 = [r for r in s0["rows"] if r["series"] == "T5"]
-    assert [r["equivalent_static_load_N"] for r in t5 if r["tilt_deg"] == 0] == pytest.approx([9.81] * 6, rel=1e-15)
+    assert [r["equivalent_static_load_N"] for r in t5 if r["tilt_deg"] == 0] == pytest.approx(
+        [9.81] * 6, rel=1e-15
+    )
     # tasks 2 and 3 recover f0* = 2e-7 and f* = 0.0015 (to the 1e-9 N*mm rounding of the torques)
     for r in s0["task2"]:
         assert r["f0"] == pytest.approx(2.0e-7, rel=1e-7)
@@ -149,11 +173,21 @@ def test_s0_loads_and_recovered_generating_model(s0):
 
 
 # ----------------------------------------------------------------------------- data set S1
-@pytest.mark.parametrize("row", _read("friction_S1_rows.csv"), ids=lambda r: f"{r['series']}-{r['tilt_deg']}-{r['speed_reading']}-{r['torque_reading']}")
+@pytest.mark.parametrize(
+    "row",
+    _read("friction_S1_rows.csv"),
+    ids=lambda r: f"{r['series']}-{r['tilt_deg']}-{r['speed_reading']}-{r['torque_reading']}",
+)
 def test_s1_row_conversions(s1, row):
-    hit = [r for r in s1["rows"] if r["series"] == row["series"] and r["tilt_deg"] == float(row["tilt_deg"])
-           and r["mass_kg"] == float(row["mass_kg"]) and r["speed_reading"] == float(row["speed_reading"])
-           and r["torque_reading"] == float(row["torque_reading"])]
+    hit = [
+        r
+        for r in s1["rows"]
+        if r["series"] == row["series"]
+        and r["tilt_deg"] == float(row["tilt_deg"])
+        and r["mass_kg"] == float(row["mass_kg"])
+        and r["speed_reading"] == float(row["speed_reading"])
+        and r["torque_reading"] == float(row["torque_reading"])
+    ]
     assert len(hit) == 1
     r = hit[0]
     assert r["switch"] == int(row["switch"])
@@ -162,8 +196,11 @@ def test_s1_row_conversions(s1, row):
     assert r["equivalent_static_load_N"] == pytest.approx(float(row["p0_N"]), abs=5e-7)
 
 
-@pytest.mark.parametrize("row", _read("friction_S1_expected.csv"),
-                         ids=lambda r: f"{r['item']}@{r['tilt_deg']}/{r['speed_rpm']}")
+@pytest.mark.parametrize(
+    "row",
+    _read("friction_S1_expected.csv"),
+    ids=lambda r: f"{r['item']}@{r['tilt_deg']}/{r['speed_rpm']}",
+)
 def test_s1_expected_results(s1, row):
     ok, msg = _close(_value(s1, row), row)
     assert ok, msg

@@ -14,4 +14,4 @@ This package sits at the boundary (it reads files with units), so it may import 
 
 from . import analysis, calibration, fits, measurement, rig
 
-__all__ = ["rig", "calibration", "fits", "measurement", "analysis"]
+__all__ = ["analysis", "calibration", "fits", "measurement", "rig"]

@@ -24,8 +24,14 @@ import numpy as np
 from .._validate import as_float, check_finite
 from ..errors import InputError
 
-__all__ = ["CalibrationTable", "Calibration", "calibration_table", "convert", "convert_torque",
-           "SWITCH_POSITIONS"]
+__all__ = [
+    "SWITCH_POSITIONS",
+    "Calibration",
+    "CalibrationTable",
+    "calibration_table",
+    "convert",
+    "convert_torque",
+]
 
 SWITCH_POSITIONS = (1, 2)  # spec 001 section 4: position 1 is the more sensitive one
 
@@ -98,13 +104,19 @@ def calibration_table(readings, values, *, name="calibration", unit="-"):
         bad = ~np.isfinite(arr)
         if bad.any():
             k = int(np.argmax(bad))
-            raise _bad_point(f"calibration {name}: {what} must be finite [{unit_}], point {k + 1} has {arr[k]!r}", k)
+            raise _bad_point(
+                f"calibration {name}: {what} must be finite [{unit_}], point {k + 1} has {arr[k]!r}",
+                k,
+            )
     for arr, what, unit_ in ((i, "readings", "-"), (v, "values", unit)):
         bad = ~(np.diff(arr) > 0)
         if bad.any():
             k = int(np.argmax(bad)) + 1
-            raise _bad_point(f"calibration {name}: {what} must be strictly increasing [{unit_}], point {k + 1} "
-                             f"(reading {i[k]:g}) has {arr[k]:g} after {arr[k - 1]:g}", k)
+            raise _bad_point(
+                f"calibration {name}: {what} must be strictly increasing [{unit_}], point {k + 1} "
+                f"(reading {i[k]:g}) has {arr[k]:g} after {arr[k - 1]:g}",
+                k,
+            )
     return CalibrationTable(i, v, name)
 
 
@@ -149,8 +161,10 @@ def convert(reading, table):
     bad = ~((r >= lo) & (r <= hi))
     if bad.any():
         count = f" ({int(bad.sum())} of {r.size} values)" if r.size > 1 else ""
-        raise InputError(f"{table.name} reading must be in [{lo:g}, {hi:g}] (the calibrated range, no "
-                         f"extrapolation), got {float(r[bad].flat[0]) if r.ndim else float(r)!r}{count}")
+        raise InputError(
+            f"{table.name} reading must be in [{lo:g}, {hi:g}] (the calibrated range, no "
+            f"extrapolation), got {float(r[bad].flat[0]) if r.ndim else float(r)!r}{count}"
+        )
     return np.interp(r, table.readings, table.values)[()]
 
 
@@ -197,7 +211,9 @@ def convert_torque(reading, switch, calibration):
             continue
         table = calibration.torque.get(pos)
         if table is None:
-            raise InputError(f"switch position {pos}: readings taken at position {pos} need the torque "
-                             f"calibration table of position {pos}")
+            raise InputError(
+                f"switch position {pos}: readings taken at position {pos} need the torque "
+                f"calibration table of position {pos}"
+            )
         out[use] = convert(r[use], table)
     return out[()]

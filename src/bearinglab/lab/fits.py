@@ -38,16 +38,16 @@ from .._validate import check_finite, check_nonnegative, check_positive
 from ..errors import InputError
 
 __all__ = [
-    "ThroughOriginFit",
-    "LineFit",
     "FrictionCoefficientFit",
-    "SpeedDependenceFit",
+    "LineFit",
     "LoadDependenceFit",
-    "through_origin",
-    "straight_line",
+    "SpeedDependenceFit",
+    "ThroughOriginFit",
     "friction_coefficient",
-    "speed_dependence",
     "load_dependence",
+    "speed_dependence",
+    "straight_line",
+    "through_origin",
 ]
 
 _MM, _RPM = 1e-3, 2.0 * math.pi / 60.0  # m per mm, rad/s per rpm
@@ -187,8 +187,12 @@ def _stats(x, y, index, n_groups, labels, *, intercept, what, x_name, shown=None
         if flat.any():
             k = int(np.argmax(flat))
             at = xmin[k] if shown is None else np.ravel(shown)[np.argmax(index == k)]
-            raise _degenerate(f"{what}: {{group}} needs at least two distinct values of {x_name}, got "
-                              f"{int(m[k])} point(s) all at {at:.10g}{shown_unit}", labels, k)
+            raise _degenerate(
+                f"{what}: {{group}} needs at least two distinct values of {x_name}, got "
+                f"{int(m[k])} point(s) all at {at:.10g}{shown_unit}",
+                labels,
+                k,
+            )
         xbar = np.bincount(index, weights=x, minlength=n_groups) / m
         ybar = np.bincount(index, weights=y, minlength=n_groups) / m
         dx = x - xbar[index]
@@ -204,8 +208,12 @@ def _stats(x, y, index, n_groups, labels, *, intercept, what, x_name, shown=None
         zero = ~(sxx > 0)
         if zero.any():
             k = int(np.argmax(zero))
-            raise _degenerate(f"{what}: {{group}} has all {x_name} = 0; a line through the origin needs "
-                              f"a non-zero abscissa", labels, k)
+            raise _degenerate(
+                f"{what}: {{group}} has all {x_name} = 0; a line through the origin needs "
+                f"a non-zero abscissa",
+                labels,
+                k,
+            )
         sxy = np.bincount(index, weights=x * y, minlength=n_groups)
         slope = sxy / sxx
         icpt = np.zeros(n_groups)
@@ -217,7 +225,9 @@ def _stats(x, y, index, n_groups, labels, *, intercept, what, x_name, shown=None
     with np.errstate(divide="ignore", invalid="ignore"):
         s2 = np.where(dof > 0, ssr / np.where(dof > 0, dof, 1.0), np.nan)
         se_slope = np.sqrt(s2 / sxx)
-        se_icpt = np.sqrt(s2 * (1.0 / m + xbar**2 / sxx)) if intercept else np.full(n_groups, np.nan)
+        se_icpt = (
+            np.sqrt(s2 * (1.0 / m + xbar**2 / sxx)) if intercept else np.full(n_groups, np.nan)
+        )
     return slope, icpt, se_slope, se_icpt, rms, m.astype(int), r
 
 
@@ -251,9 +261,12 @@ def through_origin(x, y, *, groups=None):
     (2.0, 0.0)
     """
     x, y, index, n, labels = _prepare(x, y, groups, "x", "y")
-    k, _a, se, _sa, rms, m, r = _stats(x, y, index, n, labels, intercept=False, what="fit through the origin",
-                                       x_name="x")
-    return ThroughOriginFit(_out(k, labels), _out(se, labels), _out(rms, labels), _out(m, labels), r)
+    k, _a, se, _sa, rms, m, r = _stats(
+        x, y, index, n, labels, intercept=False, what="fit through the origin", x_name="x"
+    )
+    return ThroughOriginFit(
+        _out(k, labels), _out(se, labels), _out(rms, labels), _out(m, labels), r
+    )
 
 
 def straight_line(x, y, *, groups=None):
@@ -286,9 +299,18 @@ def straight_line(x, y, *, groups=None):
     (2.0, 1.0)
     """
     x, y, index, n, labels = _prepare(x, y, groups, "x", "y")
-    b, a, sb, sa, rms, m, r = _stats(x, y, index, n, labels, intercept=True, what="straight line", x_name="x")
-    return LineFit(_out(b, labels), _out(a, labels), _out(sb, labels), _out(sa, labels), _out(rms, labels),
-                   _out(m, labels), r)
+    b, a, sb, sa, rms, m, r = _stats(
+        x, y, index, n, labels, intercept=True, what="straight line", x_name="x"
+    )
+    return LineFit(
+        _out(b, labels),
+        _out(a, labels),
+        _out(sb, labels),
+        _out(sa, labels),
+        _out(rms, labels),
+        _out(m, labels),
+        r,
+    )
 
 
 # ----------------------------------------------------------------------------- the three tasks
@@ -332,9 +354,12 @@ def friction_coefficient(torque, equivalent_load, bore, *, groups=None):
     d = check_positive("bore", bore, "m")
     p0 = check_nonnegative("equivalent_load", equivalent_load, "N")
     x, y, index, n, labels = _prepare(p0 * d / 2.0, torque, groups, "equivalent_load", "torque")
-    mu, _a, se, _sa, rms, m, r = _stats(x, y, index, n, labels, intercept=False, what="task 1",
-                                        x_name="equivalent_load")  # (6.1) with abscissa P0 d/2
-    return FrictionCoefficientFit(_out(mu, labels), _out(se, labels), _out(rms, labels), _out(m, labels), r)
+    mu, _a, se, _sa, rms, m, r = _stats(
+        x, y, index, n, labels, intercept=False, what="task 1", x_name="equivalent_load"
+    )  # (6.1) with abscissa P0 d/2
+    return FrictionCoefficientFit(
+        _out(mu, labels), _out(se, labels), _out(rms, labels), _out(m, labels), r
+    )
 
 
 def speed_dependence(torque, shaft_speed, mean_diameter, *, groups=None):
@@ -385,14 +410,38 @@ def speed_dependence(torque, shaft_speed, mean_diameter, *, groups=None):
     x = (dm / _MM) ** 3 * n_rpm ** (2.0 / 3.0)  # d_m^3 N, mm^3 min^(-2/3): slope is f0 directly
     shown = np.broadcast_arrays(n_rpm, x, t_nmm)[0].ravel()
     x, y, index, k, labels = _prepare(x, t_nmm, groups, "shaft_speed", "torque")
-    f0, tf, se_f0, se_tf, rms, m, r = _stats(x, y, index, k, labels, intercept=True, what="task 2",
-                                             x_name="shaft_speed", shown=shown, shown_unit=" rpm")  # (6.2)
-    return SpeedDependenceFit(_out(f0, labels), _out(tf * _MM, labels), _out(se_f0, labels),
-                              _out(se_tf * _MM, labels), _out(rms * _MM, labels), _out(m, labels), r * _MM)
+    f0, tf, se_f0, se_tf, rms, m, r = _stats(
+        x,
+        y,
+        index,
+        k,
+        labels,
+        intercept=True,
+        what="task 2",
+        x_name="shaft_speed",
+        shown=shown,
+        shown_unit=" rpm",
+    )  # (6.2)
+    return SpeedDependenceFit(
+        _out(f0, labels),
+        _out(tf * _MM, labels),
+        _out(se_f0, labels),
+        _out(se_tf * _MM, labels),
+        _out(rms * _MM, labels),
+        _out(m, labels),
+        r * _MM,
+    )
 
 
-def load_dependence(torque, equivalent_load, mean_diameter, static_load_rating, *, load_term_exponent=0.55,
-                    groups=None):
+def load_dependence(
+    torque,
+    equivalent_load,
+    mean_diameter,
+    static_load_rating,
+    *,
+    load_term_exponent=0.55,
+    groups=None,
+):
     """Task 3: load-term factor f and speed term T0 by least squares in N = P0^(1+e), eqs. (6.2)-(6.3).
 
     Parameters
@@ -442,9 +491,24 @@ def load_dependence(torque, equivalent_load, mean_diameter, static_load_rating, 
     x = dm / c0**e * p0 ** (1.0 + e)  # (d_m / C0^e) N: slope is f directly, (6.3)
     shown = np.broadcast_arrays(p0, x, np.asarray(torque, dtype=float))[0].ravel()
     x, y, index, k, labels = _prepare(x, torque, groups, "equivalent_load", "torque")
-    f, t0, se_f, se_t0, rms, m, r = _stats(x, y, index, k, labels, intercept=True, what="task 3",
-                                           x_name="equivalent_load", shown=shown, shown_unit=" N")  # (6.2)
-    return LoadDependenceFit(_out(f, labels), _out(t0, labels), _out(se_f, labels), _out(se_t0, labels),
-                             _out(rms, labels), _out(m, labels), r)
-
-
+    f, t0, se_f, se_t0, rms, m, r = _stats(
+        x,
+        y,
+        index,
+        k,
+        labels,
+        intercept=True,
+        what="task 3",
+        x_name="equivalent_load",
+        shown=shown,
+        shown_unit=" N",
+    )  # (6.2)
+    return LoadDependenceFit(
+        _out(f, labels),
+        _out(t0, labels),
+        _out(se_f, labels),
+        _out(se_t0, labels),
+        _out(rms, labels),
+        _out(m, labels),
+        r,
+    )

@@ -61,17 +61,37 @@ from ..units import parse_quantity
 from .calibration import Calibration, calibration_table
 from .rig import GRAVITY
 
-__all__ = ["FORMAT", "SERIES", "Session", "Handbook", "Rows", "read_session", "parse_session", "template",
-           "write_template"]
+__all__ = [
+    "FORMAT",
+    "SERIES",
+    "Handbook",
+    "Rows",
+    "Session",
+    "parse_session",
+    "read_session",
+    "template",
+    "write_template",
+]
 
 FORMAT = "bearinglab-friction-session/1"
-SERIES = ("T4", "T5")  # spec 001 section 5.3: T4 = load series at fixed tilt, T5 = speed series at fixed Q
+SERIES = (
+    "T4",
+    "T5",
+)  # spec 001 section 5.3: T4 = load series at fixed tilt, T5 = speed series at fixed Q
 
 _KNOWN = {
     (): {"format", "session", "bearing", "handbook", "rig", "calibration", "measurements"},
     ("session",): {"title", "date", "operator", "rig", "lubricant", "notes"},
-    ("bearing",): {"catalog", "designation", "type", "contact_angle", "bore", "mean_diameter",
-                   "outside_diameter", "static_load_rating"},
+    ("bearing",): {
+        "catalog",
+        "designation",
+        "type",
+        "contact_angle",
+        "bore",
+        "mean_diameter",
+        "outside_diameter",
+        "static_load_rating",
+    },
     ("handbook",): {"x0", "y0", "mu", "f", "c"},
     ("rig",): {"tare_mass", "gravity"},
     ("calibration",): {"speed", "torque_1", "torque_2"},
@@ -80,12 +100,22 @@ _KNOWN = {
     ("calibration", "torque_2"): {"unit", "points"},
     ("measurements",): {"csv", "file"},
 }
-_CALIBRATIONS = {"speed": ("speed", "speed"), "torque_1": ("torque", "torque position 1"),
-                 "torque_2": ("torque", "torque position 2")}
+_CALIBRATIONS = {
+    "speed": ("speed", "speed"),
+    "torque_1": ("torque", "torque position 1"),
+    "torque_2": ("torque", "torque position 2"),
+}
 # CSV columns: name -> (kind for parse_quantity or None, needs a unit in the header)
 _COLUMNS = {
-    "series": None, "tilt": "angle", "mass": "mass", "column": None, "speed_reading": "dimensionless",
-    "torque_reading": "dimensionless", "switch": "dimensionless", "speed": "speed", "torque": "torque",
+    "series": None,
+    "tilt": "angle",
+    "mass": "mass",
+    "column": None,
+    "speed_reading": "dimensionless",
+    "torque_reading": "dimensionless",
+    "switch": "dimensionless",
+    "speed": "speed",
+    "torque": "torque",
     "note": None,
 }
 _REQUIRED_COLUMNS = ("series", "tilt", "mass")
@@ -212,7 +242,9 @@ def _locate(text):
         for delim in ('"""', "'''"):
             if text.startswith(delim, i):
                 j = i + 3
-                strings[key] = line + 1 if text.startswith("\n", j) or text.startswith("\r\n", j) else line
+                strings[key] = (
+                    line + 1 if text.startswith("\n", j) or text.startswith("\r\n", j) else line
+                )
                 end = j
                 while True:
                     end = text.find(delim, end)
@@ -294,7 +326,9 @@ def read_session(path):
     except FileNotFoundError:
         raise InputError(f"{path}: no such file") from None
     except UnicodeDecodeError as exc:
-        raise InputError(f"{path}: not a UTF-8 text file ({exc.reason} at byte {exc.start})") from None
+        raise InputError(
+            f"{path}: not a UTF-8 text file ({exc.reason} at byte {exc.start})"
+        ) from None
     except OSError as exc:
         raise InputError(f"{path}: cannot read: {exc.strerror}") from None
     return parse_session(text, source=str(path), base_dir=path.parent)
@@ -342,8 +376,17 @@ def parse_session(text, *, source="<session>", base_dir=None):
         gravity = _acceleration(rig["gravity"], ("rig", "gravity"), ctx)
     calibration = _calibration(_table(doc, ("calibration",), ctx), ctx)
     rows, rows_source = _rows(_table(doc, ("measurements",), ctx), calibration, ctx, base_dir)
-    return Session(bearing=bearing, handbook=handbook, calibration=calibration, rows=rows, tare_mass=tare,
-                   gravity=gravity, info=info, source=source, rows_source=rows_source)
+    return Session(
+        bearing=bearing,
+        handbook=handbook,
+        calibration=calibration,
+        rows=rows,
+        tare_mass=tare,
+        gravity=gravity,
+        info=info,
+        source=source,
+        rows_source=rows_source,
+    )
 
 
 def _check_known(doc, path, ctx):
@@ -352,7 +395,9 @@ def _check_known(doc, path, ctx):
         return
     for key, value in doc.items():
         if key not in known:
-            raise ctx.error(path + (key,), f"unknown field (known here: {', '.join(sorted(known))})")
+            raise ctx.error(
+                path + (key,), f"unknown field (known here: {', '.join(sorted(known))})"
+            )
         if isinstance(value, dict):
             _check_known(value, path + (key,), ctx)
 
@@ -380,11 +425,17 @@ def _quantity(table, path, kind, ctx, *, default=None):
 
 def _acceleration(value, path, ctx):
     if not isinstance(value, str):
-        raise ctx.error(path, f"expected an acceleration with its unit, e.g. '9.81 m/s^2', got {value!r}")
+        raise ctx.error(
+            path, f"expected an acceleration with its unit, e.g. '9.81 m/s^2', got {value!r}"
+        )
     try:
-        g = parse_quantity(f"{value} * kg", "force", path[-1])  # an acceleration times 1 kg is a force in N
+        g = parse_quantity(
+            f"{value} * kg", "force", path[-1]
+        )  # an acceleration times 1 kg is a force in N
     except InputError:
-        raise ctx.error(path, f"expected an acceleration with its unit, e.g. '9.81 m/s^2', got {value!r}") from None
+        raise ctx.error(
+            path, f"expected an acceleration with its unit, e.g. '9.81 m/s^2', got {value!r}"
+        ) from None
     if not g > 0:
         raise ctx.error(path, f"must be > 0 [m/s^2], got {g!r}")
     return g
@@ -397,10 +448,15 @@ def _bearing(table, ctx):
         except CatalogError as exc:
             raise ctx.error(("bearing", "catalog"), str(exc)) from None
     elif not table:
-        raise ctx.error(("bearing",), "give catalog = \"NAME\" (e.g. \"18\") or the bearing's type, bore, "
-                                      "mean_diameter (or outside_diameter) and static_load_rating")
+        raise ctx.error(
+            ("bearing",),
+            'give catalog = "NAME" (e.g. "18") or the bearing\'s type, bore, '
+            "mean_diameter (or outside_diameter) and static_load_rating",
+        )
     elif "type" not in table:
-        raise ctx.error(("bearing",), "give the bearing's type = \"radial\" or \"angular\" (or a catalog name)")
+        raise ctx.error(
+            ("bearing",), 'give the bearing\'s type = "radial" or "angular" (or a catalog name)'
+        )
     else:
         base = BallBearing(designation="inline", type="radial")
     kw = {}
@@ -408,27 +464,43 @@ def _bearing(table, ctx):
         kw["designation"] = str(table["designation"])
     if "type" in table:
         if table["type"] not in friction.BEARING_TYPES:
-            raise ctx.error(("bearing", "type"), f"must be one of {list(friction.BEARING_TYPES)}, got {table['type']!r}")
+            raise ctx.error(
+                ("bearing", "type"),
+                f"must be one of {list(friction.BEARING_TYPES)}, got {table['type']!r}",
+            )
         kw["type"] = table["type"]
     if "mean_diameter" in table and "outside_diameter" in table:
-        raise ctx.error(("bearing", "mean_diameter"), "give mean_diameter or outside_diameter, not both")
-    for key, kind in (("contact_angle", "angle"), ("bore", "length"), ("outside_diameter", "length"),
-                      ("static_load_rating", "force")):
+        raise ctx.error(
+            ("bearing", "mean_diameter"), "give mean_diameter or outside_diameter, not both"
+        )
+    for key, kind in (
+        ("contact_angle", "angle"),
+        ("bore", "length"),
+        ("outside_diameter", "length"),
+        ("static_load_rating", "force"),
+    ):
         if key in table:
             kw[key] = _quantity(table, ("bearing", key), kind, ctx)
     bore = kw.get("bore", base.bore)
     if "mean_diameter" in table:
         dm = _quantity(table, ("bearing", "mean_diameter"), "length", ctx)
         if bore is None:
-            raise ctx.error(("bearing", "mean_diameter"), "needs bore as well (d_m = (d + D)/2 gives D)")
+            raise ctx.error(
+                ("bearing", "mean_diameter"), "needs bore as well (d_m = (d + D)/2 gives D)"
+            )
         if not dm > bore:
-            raise ctx.error(("bearing", "mean_diameter"), f"must be > bore [mm], got {dm * 1e3:g} mm with bore "
-                                                          f"{bore * 1e3:g} mm")
+            raise ctx.error(
+                ("bearing", "mean_diameter"),
+                f"must be > bore [mm], got {dm * 1e3:g} mm with bore {bore * 1e3:g} mm",
+            )
         kw["outside_diameter"] = 2.0 * dm - bore
     if "contact_angle" in kw:
         kw["radial_clearance"] = None
     elif kw.get("type", base.type) != base.type:
-        kw["contact_angle"], kw["radial_clearance"] = None, None  # the catalog angle belongs to the old type
+        kw["contact_angle"], kw["radial_clearance"] = (
+            None,
+            None,
+        )  # the catalog angle belongs to the old type
     try:
         bearing = dataclasses.replace(base, **kw)
     except InputError as exc:
@@ -436,11 +508,18 @@ def _bearing(table, ctx):
         name = msg.split(" ", 1)[0]
         if name == "outside_diameter" and "mean_diameter" in table:
             name = "mean_diameter"
-        raise ctx.error(("bearing", name if name in _KNOWN[("bearing",)] else "type"), msg) from None
-    for key, label in (("bore", "bore"), ("outside_diameter", "mean_diameter (or outside_diameter)"),
-                       ("static_load_rating", "static_load_rating")):
+        raise ctx.error(
+            ("bearing", name if name in _KNOWN[("bearing",)] else "type"), msg
+        ) from None
+    for key, label in (
+        ("bore", "bore"),
+        ("outside_diameter", "mean_diameter (or outside_diameter)"),
+        ("static_load_rating", "static_load_rating"),
+    ):
         if getattr(bearing, key) is None:
-            raise ctx.error(("bearing",), f"the bearing's {label} is not known; give it in [bearing]")
+            raise ctx.error(
+                ("bearing",), f"the bearing's {label} is not known; give it in [bearing]"
+            )
     if bearing.type == "angular" and bearing.contact_angle is None:
         raise ctx.error(("bearing",), "an angular-contact bearing needs contact_angle")
     return bearing
@@ -451,7 +530,12 @@ def _handbook(table, bearing, ctx):
     for key in ("x0", "y0", "mu", "f", "c"):
         if key in table:
             v = table[key]
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v < 0:
+            if (
+                isinstance(v, bool)
+                or not isinstance(v, (int, float))
+                or not math.isfinite(v)
+                or v < 0
+            ):
                 raise ctx.error(("handbook", key), f"must be a plain number >= 0 [-], got {v!r}")
             values[key] = float(v)
     angle = bearing.contact_angle if bearing.type == "angular" else None
@@ -459,7 +543,9 @@ def _handbook(table, bearing, ctx):
         try:
             x0, y0 = friction.static_load_factors(bearing.type, angle)
         except InputError as exc:
-            raise ctx.error(("bearing", "contact_angle"), f"{exc}; or give x0 and y0 in [handbook]") from None
+            raise ctx.error(
+                ("bearing", "contact_angle"), f"{exc}; or give x0 and y0 in [handbook]"
+            ) from None
         values.setdefault("x0", float(x0))
         values.setdefault("y0", float(y0))
     if "f" not in values or "c" not in values:
@@ -480,12 +566,18 @@ def _calibration(table, ctx):
         path = ("calibration", key)
         points = sub.get("points", [])
         if not isinstance(points, list):
-            raise ctx.error(path + ("points",), f"expected a list of [reading, value] pairs, got {points!r}")
+            raise ctx.error(
+                path + ("points",), f"expected a list of [reading, value] pairs, got {points!r}"
+            )
         if not points:
             continue  # an empty table (as in the template) is a table not given
         if "unit" not in sub:
-            raise ctx.error(path + ("unit",), f"give the unit of the values, e.g. unit = "
-                                              f"\"{'rpm' if kind == 'speed' else 'N*mm'}\"", line=ctx.line(path))
+            raise ctx.error(
+                path + ("unit",),
+                f"give the unit of the values, e.g. unit = "
+                f'"{"rpm" if kind == "speed" else "N*mm"}"',
+                line=ctx.line(path),
+            )
         try:
             scale = parse_quantity(f"1 {sub['unit']}", kind, "unit")
         except InputError as exc:
@@ -494,11 +586,17 @@ def _calibration(table, ctx):
         readings, values = [], []
         for k, point in enumerate(points):
             line = lines[k] if k < len(lines) else ctx.line(path + ("points",))
-            ok = isinstance(point, list) and len(point) == 2 and all(
-                isinstance(v, (int, float)) and not isinstance(v, bool) for v in point)
+            ok = (
+                isinstance(point, list)
+                and len(point) == 2
+                and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in point)
+            )
             if not ok:
-                raise ctx.error(path + ("points",), f"point {k + 1} must be [reading, value] (two numbers), "
-                                                    f"got {point!r}", line=line)
+                raise ctx.error(
+                    path + ("points",),
+                    f"point {k + 1} must be [reading, value] (two numbers), got {point!r}",
+                    line=line,
+                )
             readings.append(float(point[0]))
             values.append(float(point[1]) * scale)
         try:
@@ -508,25 +606,36 @@ def _calibration(table, ctx):
             line = lines[k] if k is not None and k < len(lines) else ctx.line(path + ("points",))
             msg = str(exc)
             if k is not None:  # show the values in the file's unit
-                msg = _table_message(readings, [v / scale for v in values], k, name, sub["unit"], msg)
+                msg = _table_message(
+                    readings, [v / scale for v in values], k, name, sub["unit"], msg
+                )
             raise ctx.error(path + ("points",), msg, line=line) from None
-    return Calibration(tables.get("speed"), {p: tables[f"torque_{p}"] for p in (1, 2) if f"torque_{p}" in tables})
+    return Calibration(
+        tables.get("speed"), {p: tables[f"torque_{p}"] for p in (1, 2) if f"torque_{p}" in tables}
+    )
 
 
 def _table_message(readings, values, k, name, unit, fallback):
     if k > 0 and not readings[k] > readings[k - 1]:
-        return (f"calibration {name}: readings must be strictly increasing, point {k + 1} has reading "
-                f"{readings[k]:g} after {readings[k - 1]:g}")
+        return (
+            f"calibration {name}: readings must be strictly increasing, point {k + 1} has reading "
+            f"{readings[k]:g} after {readings[k - 1]:g}"
+        )
     if k > 0 and not values[k] > values[k - 1]:
-        return (f"calibration {name}: values must be strictly increasing [{unit}], point {k + 1} (reading "
-                f"{readings[k]:g}) has {values[k]:g} after {values[k - 1]:g}")
+        return (
+            f"calibration {name}: values must be strictly increasing [{unit}], point {k + 1} (reading "
+            f"{readings[k]:g}) has {values[k]:g} after {values[k - 1]:g}"
+        )
     return fallback
 
 
 # ----------------------------------------------------------------------------- rows
 def _rows(table, calibration, ctx, base_dir):
     if "csv" in table and "file" in table:
-        raise ctx.error(("measurements", "file"), "give the rows inline (csv = '''...''') or in a file, not both")
+        raise ctx.error(
+            ("measurements", "file"),
+            "give the rows inline (csv = '''...''') or in a file, not both",
+        )
     if "file" in table:
         rel = Path(str(table["file"]))
         path = rel if rel.is_absolute() else Path(base_dir or ".") / rel
@@ -542,8 +651,12 @@ def _rows(table, calibration, ctx, base_dir):
         if not isinstance(text, str):
             raise ctx.error(("measurements", "csv"), "expected the rows as CSV text in ''' quotes")
         first = ctx.loc.strings.get(("measurements", "csv"), ctx.line(("measurements", "csv")) or 1)
-        return _parse_rows(text, calibration, ctx.source, first_line=first, field_prefix="measurements.csv: "), ctx.source
-    raise ctx.error(("measurements",), "no measurement rows: give csv = '''...''' or file = \"rows.csv\"")
+        return _parse_rows(
+            text, calibration, ctx.source, first_line=first, field_prefix="measurements.csv: "
+        ), ctx.source
+    raise ctx.error(
+        ("measurements",), "no measurement rows: give csv = '''...''' or file = \"rows.csv\""
+    )
 
 
 def _row_error(source, line, row, column, message):
@@ -565,22 +678,33 @@ def _parse_rows(text, calibration, source, *, first_line, field_prefix):
         else:
             data.append((line_no, cells))
     if header is None:
-        raise InputError(f"{source}, line {first_line}, field {field_prefix + 'header'!r}: no CSV header; "
-                         f"expected e.g. 'series, tilt [deg], mass [kg], column, speed_reading, "
-                         f"torque_reading, switch, speed [rpm], torque [N*mm]'")
+        raise InputError(
+            f"{source}, line {first_line}, field {field_prefix + 'header'!r}: no CSV header; "
+            f"expected e.g. 'series, tilt [deg], mass [kg], column, speed_reading, "
+            f"torque_reading, switch, speed [rpm], torque [N*mm]'"
+        )
     columns = _columns(header, source, header_line)
     if not data:
-        raise InputError(f"{source}, line {header_line}, field {field_prefix.rstrip(': ') or 'rows'!r}: "
-                         f"no measurement rows (only the header)")
+        raise InputError(
+            f"{source}, line {header_line}, field {field_prefix.rstrip(': ') or 'rows'!r}: "
+            f"no measurement rows (only the header)"
+        )
     out = {k: [] for k in Rows._fields}
     for row_no, (line_no, cells) in enumerate(data, start=1):
         _parse_row(cells, columns, calibration, source, line_no, row_no, out)
     return Rows(
-        series=np.array(out["series"], dtype=object), tilt=np.array(out["tilt"]), mass=np.array(out["mass"]),
-        column=np.array(out["column"], dtype=object), speed_reading=np.array(out["speed_reading"]),
-        torque_reading=np.array(out["torque_reading"]), switch=np.array(out["switch"], dtype=int),
-        speed=np.array(out["speed"]), torque=np.array(out["torque"]), line=np.array(out["line"], dtype=int),
-        note=np.array(out["note"], dtype=object))
+        series=np.array(out["series"], dtype=object),
+        tilt=np.array(out["tilt"]),
+        mass=np.array(out["mass"]),
+        column=np.array(out["column"], dtype=object),
+        speed_reading=np.array(out["speed_reading"]),
+        torque_reading=np.array(out["torque_reading"]),
+        switch=np.array(out["switch"], dtype=int),
+        speed=np.array(out["speed"]),
+        torque=np.array(out["torque"]),
+        line=np.array(out["line"], dtype=int),
+        note=np.array(out["note"], dtype=object),
+    )
 
 
 def _columns(header, source, line):
@@ -590,8 +714,10 @@ def _columns(header, source, line):
         name = m.group(1).strip().lower().replace(" ", "_") if m else cell
         unit = m.group(2).strip() if m and m.group(2) else None
         if not m or name not in _COLUMNS:
-            raise InputError(f"{source}, line {line}, field {cell!r}: unknown column (known: "
-                             f"{', '.join(_COLUMNS)})")
+            raise InputError(
+                f"{source}, line {line}, field {cell!r}: unknown column (known: "
+                f"{', '.join(_COLUMNS)})"
+            )
         if name in columns:
             raise InputError(f"{source}, line {line}, field {name!r}: column given twice")
         kind = _COLUMNS[name]
@@ -599,22 +725,32 @@ def _columns(header, source, line):
         if kind in ("angle", "mass", "speed", "torque"):
             if unit is None:
                 example = {"angle": "deg", "mass": "kg", "speed": "rpm", "torque": "N*mm"}[kind]
-                raise InputError(f"{source}, line {line}, field {name!r}: the header needs the unit, "
-                                 f"e.g. '{name} [{example}]'")
+                raise InputError(
+                    f"{source}, line {line}, field {name!r}: the header needs the unit, "
+                    f"e.g. '{name} [{example}]'"
+                )
             try:
                 scale = parse_quantity(f"1 {unit}", kind, name)
             except InputError as exc:
                 raise InputError(f"{source}, line {line}, field {name!r}: {exc}") from None
         elif unit is not None:
-            raise InputError(f"{source}, line {line}, field {name!r}: a {name} column has no unit, got [{unit}]")
+            raise InputError(
+                f"{source}, line {line}, field {name!r}: a {name} column has no unit, got [{unit}]"
+            )
         columns[name] = (index, scale, unit)
     for name in _REQUIRED_COLUMNS:
         if name not in columns:
-            raise InputError(f"{source}, line {line}, field {name!r}: required column missing from the header")
+            raise InputError(
+                f"{source}, line {line}, field {name!r}: required column missing from the header"
+            )
     if "speed_reading" not in columns and "speed" not in columns:
-        raise InputError(f"{source}, line {line}, field 'speed': the header needs speed_reading or speed [rpm]")
+        raise InputError(
+            f"{source}, line {line}, field 'speed': the header needs speed_reading or speed [rpm]"
+        )
     if "torque_reading" not in columns and "torque" not in columns:
-        raise InputError(f"{source}, line {line}, field 'torque': the header needs torque_reading or torque [N*mm]")
+        raise InputError(
+            f"{source}, line {line}, field 'torque': the header needs torque_reading or torque [N*mm]"
+        )
     return columns
 
 
@@ -623,7 +759,7 @@ def _parse_row(cells, columns, calibration, source, line, row, out):
         return _row_error(source, line, row, column, message)
 
     width = max(i for i, _s, _u in columns.values()) + 1
-    if len(cells) > len(columns) and any(cells[len(columns):]):
+    if len(cells) > len(columns) and any(cells[len(columns) :]):
         raise fail("row", f"{len(cells)} cells but the header has {len(columns)} columns")
     cells = cells + [""] * (width - len(cells))
 
@@ -644,8 +780,11 @@ def _parse_row(cells, columns, calibration, source, line, row, out):
 
     series = text("series").upper()
     if series not in SERIES:
-        raise fail("series", f"must be T4 (load series at fixed tilt) or T5 (speed series at fixed Q), "
-                             f"got {text('series')!r}")
+        raise fail(
+            "series",
+            f"must be T4 (load series at fixed tilt) or T5 (speed series at fixed Q), "
+            f"got {text('series')!r}",
+        )
     tilt_v = number("tilt")
     if tilt_v is None:
         raise fail("tilt", "missing")
@@ -662,8 +801,11 @@ def _parse_row(cells, columns, calibration, source, line, row, out):
         raise fail("mass", f"must be > 0 [kg], got {mass:g}")
     label = text("column")
     if series == "T4" and not label:
-        raise fail("column", "a T4 row needs its speed-column label (rows taken at the same speed setting "
-                             "share a label)")
+        raise fail(
+            "column",
+            "a T4 row needs its speed-column label (rows taken at the same speed setting "
+            "share a label)",
+        )
     speed_reading, speed = number("speed_reading"), number("speed")
     if speed_reading is not None and speed is not None:
         raise fail("speed", "give the speed reading or the speed, not both (spec 001 section 5.3)")
@@ -675,13 +817,17 @@ def _parse_row(cells, columns, calibration, source, line, row, out):
             raise fail("speed", f"must be >= 0 [rpm], got {speed / (2 * math.pi / 60):g}")
     else:
         if calibration.speed is None:
-            raise fail("speed_reading", "a speed reading needs the speed calibration table ([calibration.speed] "
-                                        "points)")
+            raise fail(
+                "speed_reading",
+                "a speed reading needs the speed calibration table ([calibration.speed] points)",
+            )
         _check_range(speed_reading, calibration.speed, fail, "speed_reading")
     torque_reading, torque = number("torque_reading"), number("torque")
     switch = number("switch")
     if torque_reading is not None and torque is not None:
-        raise fail("torque", "give the torque reading or the torque, not both (spec 001 section 5.3)")
+        raise fail(
+            "torque", "give the torque reading or the torque, not both (spec 001 section 5.3)"
+        )
     if torque_reading is None and torque is None:
         raise fail("torque", "missing: give torque_reading (with switch) or torque")
     if switch is not None and switch not in (1.0, 2.0):
@@ -692,11 +838,17 @@ def _parse_row(cells, columns, calibration, source, line, row, out):
             raise fail("torque", f"must be >= 0 [N*mm], got {torque * 1e3:g}")
     else:
         if switch is None:
-            raise fail("switch", "a torque reading needs its switch position (1 or 2; spec 001 section 8.12)")
+            raise fail(
+                "switch",
+                "a torque reading needs its switch position (1 or 2; spec 001 section 8.12)",
+            )
         table = calibration.torque.get(int(switch))
         if table is None:
-            raise fail("torque_reading", f"a reading at switch position {int(switch)} needs the table "
-                                         f"[calibration.torque_{int(switch)}]")
+            raise fail(
+                "torque_reading",
+                f"a reading at switch position {int(switch)} needs the table "
+                f"[calibration.torque_{int(switch)}]",
+            )
         _check_range(torque_reading, table, fail, "torque_reading")
     out["series"].append(series)
     out["tilt"].append(tilt)
@@ -714,12 +866,15 @@ def _parse_row(cells, columns, calibration, source, line, row, out):
 def _check_range(reading, table, fail, column):
     lo, hi = table.readings[0], table.readings[-1]
     if not lo <= reading <= hi:
-        raise fail(column, f"{reading:g} is outside the calibrated range [{lo:g}, {hi:g}] of the "
-                           f"{table.name} table (no extrapolation)")
+        raise fail(
+            column,
+            f"{reading:g} is outside the calibrated range [{lo:g}, {hi:g}] of the "
+            f"{table.name} table (no extrapolation)",
+        )
 
 
 # ----------------------------------------------------------------------------- template
-_TEMPLATE = '''\
+_TEMPLATE = """\
 # bearinglab friction-rig measurement session (spec 001; DP11A-type rig).
 # Fill in the bearing, the calibration tables and the rows, then run
 #     bearinglab friction lab THIS_FILE --out report-dir
@@ -783,7 +938,7 @@ points = [
 csv = \'\'\'
 series, tilt [deg], mass [kg], column, speed_reading, torque_reading, switch, speed [rpm], torque [N*mm], note
 \'\'\'
-'''
+"""
 
 _BEARING_BLANK = '''\
 # A catalog bearing (bearinglab catalog list), e.g. one of the lab's 1000095, 18, 101:
@@ -819,10 +974,12 @@ def template(*, bearing=None):
         block = _BEARING_BLANK
     else:
         b = _catalog.get(bearing)
-        block = (f'catalog = "{bearing}"          # {b.type}, d = {b.bore * 1e3:g} mm, d_m = '
-                 f'{b.mean_diameter * 1e3:g} mm, C0 = {b.static_load_rating:g} N\n'
-                 '# Fields given here override the catalog (type, contact_angle, bore, mean_diameter,\n'
-                 '# outside_diameter, static_load_rating).')
+        block = (
+            f'catalog = "{bearing}"          # {b.type}, d = {b.bore * 1e3:g} mm, d_m = '
+            f"{b.mean_diameter * 1e3:g} mm, C0 = {b.static_load_rating:g} N\n"
+            "# Fields given here override the catalog (type, contact_angle, bore, mean_diameter,\n"
+            "# outside_diameter, static_load_rating)."
+        )
     return _TEMPLATE.format(format=FORMAT, bearing_block=block)
 
 

@@ -28,13 +28,24 @@ from .. import friction
 from .._validate import as_float, check_nonnegative, check_positive
 from ..errors import InputError
 
-__all__ = ["GRAVITY", "RIG_MASSES", "TILT_STEP", "RigLoads", "RigEquivalentLoad", "rig_loads",
-           "rig_equivalent_load", "branch_switch_tilt", "check_tilt"]
+__all__ = [
+    "GRAVITY",
+    "RIG_MASSES",
+    "TILT_STEP",
+    "RigEquivalentLoad",
+    "RigLoads",
+    "branch_switch_tilt",
+    "check_tilt",
+    "rig_equivalent_load",
+    "rig_loads",
+]
 
 GRAVITY = 9.81  # m/s^2, spec 001 section 2 (the source's value)
 RIG_MASSES = (0.5, 1.0, 2.0)  # kg, spec 001 section 4
 TILT_STEP = math.radians(15.0)  # rad, spec 001 section 4
-_SNAP = 1e-12  # rad: a tilt this close to 0 or 90 deg is that end, so the vanishing load is exactly 0
+_SNAP = (
+    1e-12  # rad: a tilt this close to 0 or 90 deg is that end, so the vanishing load is exactly 0
+)
 
 
 class RigLoads(NamedTuple):
@@ -131,8 +142,17 @@ def rig_loads(mass, tilt, *, tare_mass=0.0, gravity=GRAVITY):
     return RigLoads((w * cos_b)[()], (w * sin_b)[()])  # (4.1)
 
 
-def rig_equivalent_load(mass, tilt, *, tare_mass=0.0, gravity=GRAVITY, bearing_type="radial",
-                        contact_angle=None, radial_factor=None, axial_factor=None):
+def rig_equivalent_load(
+    mass,
+    tilt,
+    *,
+    tare_mass=0.0,
+    gravity=GRAVITY,
+    bearing_type="radial",
+    contact_angle=None,
+    radial_factor=None,
+    axial_factor=None,
+):
     """Loads and static equivalent load P0 on the test bearing of the rig.
 
     Parameters
@@ -168,8 +188,12 @@ def rig_equivalent_load(mass, tilt, *, tare_mass=0.0, gravity=GRAVITY, bearing_t
     0.777817 True
     """
     fa, fr = rig_loads(mass, tilt, tare_mass=tare_mass, gravity=gravity)
-    kw = dict(bearing_type=bearing_type, contact_angle=contact_angle, radial_factor=radial_factor,
-              axial_factor=axial_factor)
+    kw = {
+        "bearing_type": bearing_type,
+        "contact_angle": contact_angle,
+        "radial_factor": radial_factor,
+        "axial_factor": axial_factor,
+    }
     p0 = friction.equivalent_static_load(fr, fa, **kw)
     combined = friction.combined_branch_governs(fr, fa, **kw)
     return RigEquivalentLoad(fa, fr, p0, combined)
