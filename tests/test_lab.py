@@ -709,3 +709,16 @@ def test_benchmark_paths_agree_on_a_small_input():
     f0_ref, tf_ref = bench.baseline(t, speed, 20)
     assert_allclose(f0, f0_ref, rtol=1e-10)
     assert_allclose(tf, tf_ref, rtol=1e-9)
+
+
+def test_task1_group_whose_p0_are_all_zero_is_an_error(tmp_path):
+    # y0 = 0 makes P0 = max(x0 Fr, Fr) = 0 under pure axial load (beta = 0): spec 001 section 9
+    text = S1_TEXT.replace("[rig]", "[handbook]\ny0 = 0.0\n\n[rig]")
+    rows = S1_ROWS.replace("T4, 45,", "T4, 0,")
+    s = measurement.read_session(_session(tmp_path, toml=text, rows=rows))
+    assert s.handbook.axial_factor == 0.0 and s.handbook.overridden == ("y0",)
+    with pytest.raises(
+        InputError,
+        match=r"lines 5, 6, 7 \(Table 4 column 'A' at tilt 0 deg\), field 'mass': task 1: all P0 are zero",
+    ):
+        analysis.analyse(s)

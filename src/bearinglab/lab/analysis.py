@@ -238,7 +238,7 @@ def _fail_group(session, rows_idx, what, field, message):
 
 
 def analyse(session):
-    """Analyse a measurement session: convert, fit the three tasks, cross-check, compute I1-I7.
+    r"""Analyse a measurement session: convert, fit the three tasks, cross-check, compute I1-I7.
 
     Parameters
     ----------
@@ -258,10 +258,16 @@ def analyse(session):
 
     Examples
     --------
+    Task 1 of spec 001 data set S0 at 1500 rpm (a session with its rows inline):
+
     >>> from bearinglab.lab import measurement
-    >>> s = measurement.read_session("examples/friction/s0_direct.toml")  # doctest: +SKIP
-    >>> print(f"{analyse(s).task1.friction_coefficient[0]:.6e}")  # doctest: +SKIP
-    1.470209e-03
+    >>> text = "\n".join(['[bearing]', 'catalog = "1000095"', '[measurements]', "csv = '''",
+    ...                   "series, tilt [deg], mass [kg], column, speed [rpm], torque [N*mm]",
+    ...                   "T4, 90, 0.5, A, 1500, 0.025055204", "T4, 90, 1.0, A, 1500, 0.036527822",
+    ...                   "T4, 90, 2.0, A, 1500, 0.070121614", "'''"])
+    >>> result = analyse(measurement.parse_session(text))
+    >>> print(f"{result.task1.friction_coefficient[0]:.6e} {result.task3.load_term_factor[0]:.6e}")
+    1.470209e-03 1.500000e-03
     """
     s = session
     r = s.rows
