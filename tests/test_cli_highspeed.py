@@ -166,3 +166,33 @@ def test_inline_ceramic_balls(capsys):
     assert c["centrifugal_force_N"] < 0.45 * s["centrifugal_force_N"]
     assert c["contact_angle_outer_deg"] > s["contact_angle_outer_deg"]
     assert np.isfinite(c["axial_stiffness_N_per_um"])
+
+
+def test_long_sweep_shows_a_progress_bar_on_stderr(capsys, monkeypatch):
+    """A terminal gets a progress bar on stderr during long sweeps; stdout stays one JSON array."""
+    from rich.console import Console
+
+    from bearinglab import _cli_highspeed
+
+    seen = []
+
+    class Terminal(Console):
+        def __init__(self):
+            super().__init__(stderr=True, force_terminal=True, width=80)
+
+    monkeypatch.setattr(_cli_highspeed, "_PROGRESS_MIN_CASES", 4)
+    monkeypatch.setattr(_cli_highspeed, "_CHUNK", 3)
+    monkeypatch.setattr(_cli_highspeed, "_progress_console", Terminal)
+    real = quasistatic.sweep
+
+    def spy(*args, progress=None, **kw):
+        def report(done, total):
+            seen.append((done, total))
+            progress(done, total)
+        return real(*args, progress=report, **kw)
+
+    monkeypatch.setattr(quasistatic, "sweep", spy)
+    code, out, err = run(capsys, "high-speed", "-b", "B218", "-F", "5kN,20kN", "-n", "0,3000,6000,15000rpm", "--json")
+    assert code == 0
+    assert seen == [(3, 8), (6, 8), (8, 8)]
+    assert len(json.loads(out)) == 8

@@ -501,3 +501,22 @@ def test_bench_solvers_agree_on_a_small_map():
     assert np.all(state.converged)
     assert np.abs(state.contact_angle_inner.ravel() - ref[:, 0]).max() < 1e-9
     assert np.abs(state.contact_angle_outer.ravel() - ref[:, 1]).max() < 1e-9
+
+
+def test_sweep_in_chunks_reports_progress_and_equals_one_call():
+    calls = []
+    fa, n = [5e3, 20e3], np.array([0.0, 3000.0, 6000.0, 15000.0]) * RPM
+    a = quasistatic.sweep(B218, fa, n, chunk_size=3, progress=lambda done, total: calls.append((done, total)))
+    b = quasistatic.sweep(B218, fa, n)
+    assert calls == [(3, 8), (6, 8), (8, 8)]
+    assert a.contact_angle_inner.shape == (2, 4)
+    assert_allclose(a.contact_angle_inner, b.contact_angle_inner, rtol=0, atol=1e-14)
+    assert list(a.status.ravel()) == ["ok"] * 8
+
+
+def test_free_angle_is_not_the_reference_of_the_increments():
+    """Section 8: with alpha0 instead of alpha_s the claim "alpha_e < alpha0" is false at high thrust and
+    low speed (45 kN, 3000 rpm: alpha_e = 42.30 deg > 40 deg), while alpha_e < alpha_s holds."""
+    s = _solve(45e3, 3000.0)
+    assert s.contact_angle_outer > GEO[5]
+    assert s.contact_angle_outer < s.static_contact_angle

@@ -231,13 +231,21 @@ def _jsonable(v):
     return v
 
 
+def _progress_console():
+    """The progress bar goes to stderr, so that stdout stays one JSON document or one table."""
+    from rich.console import Console
+
+    return Console(stderr=True)
+
+
 def _sweep(bearing, loads, speeds, options):
     """The grid in batched calls, with a progress bar on a terminal for long sweeps."""
     total = loads.size * speeds.size
-    if total >= _PROGRESS_MIN_CASES and console.is_terminal:
+    bar_console = _progress_console()
+    if total >= _PROGRESS_MIN_CASES and bar_console.is_terminal:
         from rich.progress import Progress
 
-        with Progress(console=console, transient=True) as bar:
+        with Progress(console=bar_console, transient=True) as bar:
             task = bar.add_task("solving", total=total)
             return quasistatic.sweep(bearing, loads, speeds, chunk_size=_CHUNK,
                                      progress=lambda done, _total: bar.update(task, completed=done), **options)
