@@ -69,6 +69,7 @@ ol.conclusions li { margin-bottom: 0.5rem; } .warn { color: #a04000; }
 .wide { overflow-x: auto; }
 @media print {
   body { margin: 0; max-width: none; font-size: 10.5pt; }
+  table { font-size: 8pt; } th, td { padding: 0.1rem 0.3rem; }
   h2 { break-after: avoid; page-break-after: avoid; }
   table, figure, li { break-inside: avoid; page-break-inside: avoid; }
   .wide { overflow: visible; } figure img { max-width: 17cm; border: none; }
@@ -164,10 +165,30 @@ def _cell(value, fmt):
 
 
 def _html_table(title, columns, rows, formats):
-    out = ['<div class="wide"><table>', f"<caption>{html.escape(title)}</caption>", "<thead><tr>"]
-    for c, f in zip(columns, formats):
+    """A table; headers ``"group: name"`` become a two-row header (the group spanning its columns)."""
+    out = ['<div class="wide"><table>', f"<caption>{html.escape(title)}</caption>", "<thead>"]
+    split = [c.split(": ", 1) if ": " in c else [None, c] for c in columns]
+    if any(g is not None for g, _ in split):
+        out.append("<tr>")
+        k = 0
+        while k < len(split):
+            group = split[k][0]
+            span = 1
+            while k + span < len(split) and group is not None and split[k + span][0] == group:
+                span += 1
+            if group is None:
+                out.append(f'<th rowspan="2">{html.escape(split[k][1])}</th>')
+            else:
+                out.append(f'<th colspan="{span}">{html.escape(group)}</th>')
+            k += span
+        out.append("</tr>")
+        header = [(name, f) for (g, name), f in zip(split, formats) if g is not None]
+    else:
+        header = [(name, f) for (_g, name), f in zip(split, formats)]
+    out.append("<tr>")
+    for name, f in header:
         cls = ' class="text"' if f == "" else ""
-        out.append(f"<th{cls}>{html.escape(c)}</th>")
+        out.append(f"<th{cls}>{html.escape(name)}</th>")
     out.append("</tr></thead><tbody>")
     for row in rows:
         out.append("<tr>")
