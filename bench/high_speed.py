@@ -23,7 +23,7 @@ from bearinglab.units import RPM
 
 N_LOADS = N_SPEEDS = 100
 N_BASELINE = 300
-OPTIONS = dict(constants="harris", on_failure="flag", friction_limit=np.inf)
+OPTIONS = {"constants": "harris", "on_failure": "flag", "friction_limit": np.inf}
 B218 = catalog.get("B218")
 GEO = quasistatic._bearing_args(B218)
 
@@ -62,18 +62,18 @@ def baseline(fa, n, starts=None):
         idx = np.array([k])
         v = starts[k]
 
-        def f(x, w2):
+        def f(x, w2, idx=idx):
             return quasistatic._equations(model, idx, x[None, :], np.array([w2]), False)[0][0]
 
-        def jac(x, w2):
+        def jac(x, w2, idx=idx):
             return quasistatic._equations(model, idx, x[None, :], np.array([w2]), True)[1][0]
 
-        x, info, ier, msg = fsolve(f, v, args=(n[k] ** 2,), fprime=jac, xtol=1e-13, full_output=True)
+        x, info, ier, _msg = fsolve(f, v, args=(n[k] ** 2,), fprime=jac, xtol=1e-13, full_output=True)
         if ier != 1 or np.linalg.norm(info["fvec"]) > 1e-10:  # continuation in 1500-rpm steps
             x = v
             steps = max(1, int(np.ceil(n[k] / (1500 * RPM))))
             for w in np.linspace(0.0, n[k], steps + 1)[1:]:
-                x, info, ier, msg = fsolve(f, x, args=(w**2,), fprime=jac, xtol=1e-13, full_output=True)
+                x, info, ier, _msg = fsolve(f, x, args=(w**2,), fprime=jac, xtol=1e-13, full_output=True)
         if ier == 1 and np.linalg.norm(info["fvec"]) < 1e-10:
             ex = quasistatic._equations(model, idx, x[None, :], np.array([n[k] ** 2]), False)[3]
             out[k] = ex["ai"][0], ex["ae"][0]

@@ -30,16 +30,16 @@ from pathlib import Path
 import matplotlib
 
 matplotlib.use(os.environ.get("MPLBACKEND", "Agg"))
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
 
-from bearinglab import catalog, quasistatic  # noqa: E402
-from bearinglab._cli_highspeed import plot_map, write_csv  # noqa: E402
-from bearinglab.units import RPM  # noqa: E402
+from bearinglab import catalog, quasistatic
+from bearinglab._cli_highspeed import plot_map, write_csv
+from bearinglab.units import RPM
 
 #: E' of the rounded K prefactor 2.15e5 N/mm^1.5 of spec 004 eq. (16) [Pa]
 E_ROUNDED = 2.15e5 * 1e6 * 3.0 / 2.0**1.5
-OPTIONS = dict(constants="harris", reduced_modulus=E_ROUNDED)
+OPTIONS = {"constants": "harris", "reduced_modulus": E_ROUNDED}
 #: spec 004 section 7.1, alpha_i / alpha_e [deg] (rows 2.5, 5, 10, 20, 30, 45 kN; columns 3000-15 000 rpm)
 PRINTED = {
     2.5: [(45.796, 34.366), (55.576, 17.206), (58.796, 6.007), (59.935, 2.546)],

@@ -192,7 +192,7 @@ def test_long_sweep_shows_a_progress_bar_on_stderr(capsys, monkeypatch):
         return real(*args, progress=report, **kw)
 
     monkeypatch.setattr(quasistatic, "sweep", spy)
-    code, out, err = run(capsys, "high-speed", "-b", "B218", "-F", "5kN,20kN", "-n", "0,3000,6000,15000rpm", "--json")
+    code, out, _err = run(capsys, "high-speed", "-b", "B218", "-F", "5kN,20kN", "-n", "0,3000,6000,15000rpm", "--json")
     assert code == 0
     assert seen == [(3, 8), (6, 8), (8, 8)]
     assert len(json.loads(out)) == 8

@@ -32,7 +32,7 @@ def _solve(fa, n_rpm, **kw):
 
 def _unknowns(s):
     """(X1, X2, delta_i, delta_e, delta_a) / D of a state, from its outputs."""
-    z, d, dm, fi, fo, a0, ep, rho = GEO
+    _z, d, _dm, _fi, fo, _a0, _ep, _rho = GEO
     le = (fo - 0.5) * d + s.deflection_outer
     return np.stack([le * np.sin(s.contact_angle_outer), le * np.cos(s.contact_angle_outer), s.deflection_inner,
                      s.deflection_outer, s.axial_displacement], axis=-1) / d
@@ -134,7 +134,7 @@ def test_interpolated_hertz_equals_the_exact_module(d_mm, ratio, fi, fo):
 
 def test_maximum_pressure_equals_direct_hertz():
     s = _solve(20e3, 10000.0)
-    z, d, dm, fi, fo, a0, ep, rho = GEO
+    _z, d, dm, fi, _fo, _a0, ep, _rho = GEO
     inner = geometry.raceway_curvature(d, dm, fi, s.contact_angle_inner, race="inner")
     pc = hertz.point_contact(s.ball_load_inner, inner.curvature_sum, inner.curvature_difference, ep)
     assert s.max_pressure_inner == pytest.approx(pc.p_max, rel=1e-12)
@@ -440,24 +440,24 @@ def test_one_failed_case_does_not_stop_a_sweep():
 
 
 @pytest.mark.parametrize("kwargs,match", [
-    (dict(shaft_speed=-100.0), r"shaft_speed must be >= 0 and finite \[rpm\], got -954.93 rpm.*magnitude"),
-    (dict(axial_load=0.0), r"axial_load must be > 0 \[N\]"),
-    (dict(free_angle=0.0), r"free_angle must be in \(0, 90\) \[deg\]"),
-    (dict(free_angle=math.pi / 2), r"free_angle must be in \(0, 90\) \[deg\]"),
-    (dict(pitch_diameter=10e-3), r"pitch_diameter must be > ball_diameter"),
-    (dict(density=-1.0), r"density must be > 0"),
-    (dict(method="brent"), r"method must be one of \['newton', 'angle-iteration'\]"),
-    (dict(raceway_control="cage"), r"raceway_control must be one of \['outer', 'inner'\]"),
-    (dict(gyroscopic_sign=0), r"gyroscopic_sign must be \+1"),
-    (dict(constants="jones"), r"constants must be one of \['mass', 'harris', 'paper'\]"),
-    (dict(constants=(1.0, -1.0)), r"C_c and C_g must be >= 0"),
-    (dict(on_failure="ignore"), r"on_failure must be one of \['raise', 'flag'\]"),
-    (dict(speed_step=0.0), r"speed_step must be > 0"),
+    ({"shaft_speed": -100.0}, r"shaft_speed must be >= 0 and finite \[rpm\], got -954.93 rpm.*magnitude"),
+    ({"axial_load": 0.0}, r"axial_load must be > 0 \[N\]"),
+    ({"free_angle": 0.0}, r"free_angle must be in \(0, 90\) \[deg\]"),
+    ({"free_angle": math.pi / 2}, r"free_angle must be in \(0, 90\) \[deg\]"),
+    ({"pitch_diameter": 10e-3}, r"pitch_diameter must be > ball_diameter"),
+    ({"density": -1.0}, r"density must be > 0"),
+    ({"method": "brent"}, r"method must be one of \['newton', 'angle-iteration'\]"),
+    ({"raceway_control": "cage"}, r"raceway_control must be one of \['outer', 'inner'\]"),
+    ({"gyroscopic_sign": 0}, r"gyroscopic_sign must be \+1"),
+    ({"constants": "jones"}, r"constants must be one of \['mass', 'harris', 'paper'\]"),
+    ({"constants": (1.0, -1.0)}, r"C_c and C_g must be >= 0"),
+    ({"on_failure": "ignore"}, r"on_failure must be one of \['raise', 'flag'\]"),
+    ({"speed_step": 0.0}, r"speed_step must be > 0"),
 ])
 def test_bad_input_names_parameter_rule_and_value(kwargs, match):
     z, d, dm, fi, fo, a0, ep, rho = GEO
-    args = dict(axial_load=1e4, shaft_speed=1000.0, n_balls=z, ball_diameter=d, pitch_diameter=dm,
-                inner_conformity=fi, outer_conformity=fo, free_angle=a0, reduced_modulus=ep, density=rho)
+    args = {"axial_load": 1e4, "shaft_speed": 1000.0, "n_balls": z, "ball_diameter": d, "pitch_diameter": dm,
+                "inner_conformity": fi, "outer_conformity": fo, "free_angle": a0, "reduced_modulus": ep, "density": rho}
     args.update(kwargs)
     with pytest.raises(InputError, match=match):
         quasistatic.contact_angles(**args)
@@ -520,3 +520,16 @@ def test_free_angle_is_not_the_reference_of_the_increments():
     s = _solve(45e3, 3000.0)
     assert s.contact_angle_outer > GEO[5]
     assert s.contact_angle_outer < s.static_contact_angle
+
+
+def test_several_bearings_in_one_call():
+    """Geometry broadcasts too: two ball sizes (and so two Hertz tables) in one batched solve."""
+    z, d, dm, fi, fo, a0, ep, rho = GEO
+    balls = np.array([d, 0.8 * d])[:, None]
+    both = quasistatic.contact_angles(np.array([5e3, 20e3]), 10000 * RPM, z, balls, dm, fi, fo, a0, ep, rho)
+    assert both.contact_angle_inner.shape == (2, 2)
+    for k in range(2):
+        one = quasistatic.contact_angles(np.array([5e3, 20e3]), 10000 * RPM, z, balls[k, 0], dm, fi, fo, a0, ep, rho)
+        assert_allclose(both.contact_angle_inner[k], one.contact_angle_inner, rtol=0, atol=1e-13)
+        assert_allclose(both.axial_stiffness[k], one.axial_stiffness, rtol=1e-10)
+    assert np.all(both.contact_angle_outer[1] > both.contact_angle_outer[0])  # lighter balls, less spread

@@ -14,19 +14,36 @@ import sys
 import tempfile
 import warnings
 from pathlib import Path
-from typing import Annotated, Optional
+from typing import Annotated
 
 import numpy as np
 import typer
 
 from . import quasistatic
-from .cli import (BallDiameter, BallMaterial, Balls, BearingFile, BearingName, CatalogFile, Clearance,
-                  ContactAngle, InnerConformity, InnerRadius, JsonFlag, OuterConformity, OuterRadius,
-                  PitchDiameter, console, emit_json, resolve_bearing, table)
+from .cli import (
+    BallDiameter,
+    BallMaterial,
+    Balls,
+    BearingFile,
+    BearingName,
+    CatalogFile,
+    Clearance,
+    ContactAngle,
+    InnerConformity,
+    InnerRadius,
+    JsonFlag,
+    OuterConformity,
+    OuterRadius,
+    PitchDiameter,
+    console,
+    emit_json,
+    resolve_bearing,
+    table,
+)
 from .errors import InputError, ValidityWarning
 from .units import RPM, parse_quantity, parse_values
 
-__all__ = ["register", "plot_map", "write_csv"]
+__all__ = ["plot_map", "register", "write_csv"]
 
 _PROGRESS_MIN_CASES = 5000  # sweeps at least this large show a progress bar (on a terminal)
 _CHUNK = 2500  # cases per batched call while a progress bar is shown
@@ -157,9 +174,9 @@ def high_speed(
     raceway_control: Annotated[str, typer.Option("--raceway-control", help="outer (default, the paper's) | inner.")] = "outer",
     constants: Annotated[str, typer.Option("--constants", help="mass (F_c, M_g from the ball mass; default) | harris (2.26e-11, 4.47e-12: spec 004 §7) | paper (2.26e-11, 4.5e-12).")] = "mass",
     gyroscopic_sign: Annotated[str, typer.Option("--gyroscopic-sign", help="physical (default, spec 004 §4) | reversed (for comparison only).")] = "physical",
-    reduced_modulus: Annotated[Optional[str], typer.Option("--reduced-modulus", help="E' of the contact pair, e.g. '228.04 GPa' (default: from the materials).")] = None,
-    csv_file: Annotated[Optional[Path], typer.Option("--csv", help="Write the table of all cases to this CSV file.")] = None,
-    plot: Annotated[Optional[Path], typer.Option("--plot", help="Draw the map (figures 2-4 and δ_a) into this PNG/PDF/SVG file.")] = None,
+    reduced_modulus: Annotated[str | None, typer.Option("--reduced-modulus", help="E' of the contact pair, e.g. '228.04 GPa' (default: from the materials).")] = None,
+    csv_file: Annotated[Path | None, typer.Option("--csv", help="Write the table of all cases to this CSV file.")] = None,
+    plot: Annotated[Path | None, typer.Option("--plot", help="Draw the map (figures 2-4 and δ_a) into this PNG/PDF/SVG file.")] = None,
     json_out: JsonFlag = False,
 ):
     """High-speed angular-contact bearing under thrust (spec 004): α_i, α_e, δ_a, loads, F_c, M_g, speeds."""
@@ -184,8 +201,8 @@ def high_speed(
         ep = parse_quantity(reduced_modulus, "pressure", "reduced-modulus")
         if not ep > 0:
             raise InputError(f"reduced-modulus must be > 0 [GPa], got {ep / 1e9:g} GPa")
-    options = dict(method=solver, raceway_control=raceway_control, constants=constants, gyroscopic_sign=sign,
-                   reduced_modulus=ep)
+    options = {"method": solver, "raceway_control": raceway_control, "constants": constants, "gyroscopic_sign": sign,
+                   "reduced_modulus": ep}
     single = loads.size == 1 and speeds.size == 1
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", ValidityWarning)

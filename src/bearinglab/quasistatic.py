@@ -60,40 +60,46 @@ import numpy as np
 from numpy.polynomial import chebyshev as _cheb
 
 from . import _solve, geometry, hertz, static
-from ._validate import (as_float, check_greater, check_integer, check_nonnegative, check_open_interval,
-                        check_positive)
+from ._validate import (
+    as_float,
+    check_greater,
+    check_integer,
+    check_nonnegative,
+    check_open_interval,
+    check_positive,
+)
 from .errors import ConvergenceError, InputError, ValidityWarning
 from .units import MM, RPM
 
 __all__ = [
+    "CONSTANTS",
+    "FRICTION_WARNING_LIMIT",
     "HARRIS_CENTRIFUGAL_CONSTANT",
     "HARRIS_GYROSCOPIC_CONSTANT",
     "PAPER_GYROSCOPIC_CONSTANT",
-    "CONSTANTS",
     "RACEWAY_CONTROLS",
     "STATUS",
-    "FRICTION_WARNING_LIMIT",
-    "PrintedConstants",
-    "BallSpeeds",
-    "Stiffness",
-    "Residual",
     "AngleResidual",
+    "BallSpeeds",
     "HighSpeedState",
-    "printed_constants",
-    "centrifugal_force",
-    "gyroscopic_moment",
+    "PrintedConstants",
+    "Residual",
+    "Stiffness",
+    "angle_residual",
     "attitude_angle",
     "ball_speeds",
-    "friction_coefficient",
-    "contact_stiffness",
-    "residual",
-    "angle_residual",
+    "centrifugal_force",
     "contact_angles",
-    "zero_displacement_thrust",
+    "contact_stiffness",
+    "friction_coefficient",
+    "gyroscopic_moment",
     "high_speed_analysis",
+    "printed_constants",
+    "residual",
+    "result_table",
     "sign_change_thrust",
     "sweep",
-    "result_table",
+    "zero_displacement_thrust",
 ]
 
 #: Constant of eq. (8), F_c = C d_m D^3 n_m^2 [N; mm; rpm] (Harris; the paper prints the same).
@@ -723,7 +729,6 @@ def _equations(model, idx, v, w2, deriv):
         jac[:, 2:, 4] = df[:, :, 0] * dai[:, None, 2]
         jac[:, 2:, 0:2] *= d[:, None, None]
         jac[:, 2:, 4] *= d[:, None]
-        jac[:, 0:2, :] *= 1.0  # geometric rows are already per unit of v (lengths / D times D)
     r_w2 = np.concatenate([np.zeros((len(idx), 2)), fr["f_w2"]], axis=1)
     extra = {"ai": ai, "ae": ae, "di": di, "de": de, "da": da, "fr": fr, "p": p, "r_w2": r_w2}
     return r, jac, code, extra
@@ -919,7 +924,7 @@ class HighSpeedState(NamedTuple):
     max_pressure_inner: np.ndarray  # p_max at the inner contact [Pa]
     max_pressure_outer: np.ndarray  # p_max at the outer contact [Pa]
     axial_stiffness: np.ndarray  # dF_a / d delta_a [N/m]
-    friction_coefficient: np.ndarray  # 2 M_g / (D Q_e) [-]
+    friction_coefficient: np.ndarray  # 2 M_g / (D Q) at the controlling raceway (Q_e for outer control) [-]
     converged: np.ndarray  # bool
     residual: np.ndarray  # Euclidean norm of the scaled residuals at the solution [-]
     iterations: np.ndarray  # Newton iterations (all continuation steps) or refinement steps
@@ -953,7 +958,8 @@ def _newton(model, idx, w_target, v0, *, tol, max_iter, speed_step):
     """Batched Newton-Raphson with per-case continuation in speed and step control (spec 004 section 5.1).
 
     All unfinished cases are updated together; each has its own current speed, continuation step and
-    line-search fraction. Returns (v, status, iterations, residual norm).
+    line-search fraction. Returns the unknowns, the status codes, the Newton iterations, the residual
+    norm at convergence and the last converged speed of each case.
     """
     n = len(idx)
     v = v0.copy()
@@ -1220,7 +1226,7 @@ def _assemble(model, idx, v, w, alpha_s, ok):
         return out
     sel = np.flatnonzero(ok)
     ii = idx[sel]
-    r, jac, code, ex = _equations(model, ii, v[sel], w[sel] ** 2, True)
+    r, jac, _code, ex = _equations(model, ii, v[sel], w[sel] ** 2, True)
     p = ex["p"]
     ai, ae = ex["ai"], ex["ae"]
     d, dm = p["d"], p["dm"]

@@ -114,10 +114,10 @@ def test_internal_quantities_section_7_2(newton, row):
 @pytest.mark.parametrize("row", SENSITIVITY, ids=lambda r: f"{r['variant']}-{r['axial_load']}kN")
 def test_sensitivity_section_7_3(row):
     options = {
-        "default": dict(constants="harris"),
-        "paper_constant": dict(constants="paper"),
-        "reversed_sign": dict(constants="harris", gyroscopic_sign=-1),
-        "no_gyroscopic_moment": dict(constants=(quasistatic.HARRIS_CENTRIFUGAL_CONSTANT, 0.0)),
+        "default": {"constants": "harris"},
+        "paper_constant": {"constants": "paper"},
+        "reversed_sign": {"constants": "harris", "gyroscopic_sign": -1},
+        "no_gyroscopic_moment": {"constants": (quasistatic.HARRIS_CENTRIFUGAL_CONSTANT, 0.0)},
     }[row["variant"]]
     s = quasistatic.high_speed_analysis(B218, float(row["axial_load"]) * 1e3, float(row["speed"]) * RPM,
                                         reduced_modulus=E_ROUNDED, friction_limit=np.inf, **options)
@@ -145,11 +145,12 @@ def test_rounded_prefactor_reproduces_every_digit(newton):
     want_e = {(r["axial_load"], r["speed"]): float(r["contact_angle_outer"]) for r in ANGLES}
     exact = quasistatic.sweep(B218, LOADS, SPEEDS, constants="harris")
     mismatches = {"rounded": 0, "exact": 0}
-    for key in want_i:
+    for key, inner in want_i.items():
         i, j = _index(*key)
         for label, s in (("rounded", newton), ("exact", exact)):
-            got = (round(math.degrees(s.contact_angle_inner[i, j]), 3), round(math.degrees(s.contact_angle_outer[i, j]), 3))
-            mismatches[label] += (got[0] != want_i[key]) + (got[1] != want_e[key])
+            got = (round(math.degrees(s.contact_angle_inner[i, j]), 3),
+                   round(math.degrees(s.contact_angle_outer[i, j]), 3))
+            mismatches[label] += (got[0] != inner) + (got[1] != want_e[key])
     assert mismatches["rounded"] == 0
     assert mismatches["exact"] > 0
 
