@@ -911,20 +911,24 @@ def conclusions(result):
             for f, t, q in zip(t2.speed_term_factor, t2.tilt, t2.mass)
         )
         if math.isnan(ind.f0_spread):
-            out.append(f"f0 = {parts} N·mm⁻²·min^(2/3); one tilt only, so I4 is not available.")
+            out.append(
+                f"f0 = {parts} N·mm⁻²·min^(2/3); one Table 5 column only, so I4 is not available."
+            )
         else:
+            what = "β" if np.unique(t2.mass).size == 1 else "β and Q"  # the columns differ in these
             verdict = (
-                "f0 does not depend on β, as the model assumes"
+                f"f0 does not depend on {what}, as the model assumes"
                 if ind.f0_spread <= th
-                else "f0 varies with β, contrary to the model"
+                else f"f0 varies with {what}, contrary to the model"
             )
             out.append(
-                f"I4, dependence of f0 on β: f0 = {parts} N·mm⁻²·min^(2/3), mean {ind.mean_speed_term_factor:.6e}; "
+                f"I4, dependence of f0 on {what}: f0 = {parts} N·mm⁻²·min^(2/3), mean {ind.mean_speed_term_factor:.6e}; "
                 f"(max − min)/mean = {_share(ind.f0_spread, 2)}: {verdict}."
             )
         for a, bb, measured, predicted in ind.load_term_ratio:
             out.append(
                 f"I5, load term against (3.4): T_F = {t2.load_term[a] / _MM:.6g} N·mm at β = {_deg(t2.tilt[a])}° "
+                f"{'' if t2.mass[a] == t2.mass[bb] else f'(Q = {t2.mass[a]:g} kg) '}"
                 f"and {t2.load_term[bb] / _MM:.6g} N·mm at β = {_deg(t2.tilt[bb])}° (Q = {t2.mass[bb]:g} kg): "
                 f"measured ratio {measured:.6f}, predicted (P0 ratio)^(1+c) = {predicted:.6f} "
                 f"({_pct(measured / predicted - 1)})."
@@ -971,9 +975,13 @@ def conclusions(result):
                 f"predicted (n_b/n_a)^(2/3) = {predicted:.6f} ({_pct(measured / predicted - 1)})."
             )
         if not math.isnan(ind.mean_speed_term_factor):
+            several = np.unique(t3.tilt).size > 1
             parts = ", ".join(
                 f"{a / _MM:.6f} vs {p / _MM:.6f} N·mm at {_rpm(n)}"
-                for a, p, n in zip(t3.speed_term, t3.speed_term_with_task2_factor, t3.shaft_speed)
+                + (f" (β = {_deg(t)}°)" if several else "")
+                for a, p, n, t in zip(
+                    t3.speed_term, t3.speed_term_with_task2_factor, t3.shaft_speed, t3.tilt
+                )
             )
             out.append(
                 f"T0 of task 3 vs f0·d_m³·n^(2/3) with the mean f0 of task 2 ({ind.mean_speed_term_factor:.6e}): "
