@@ -440,7 +440,7 @@ def runout_command(
         raise ConvergenceError(
             "runout --refine",
             iterations=int(t.displacement.passes.max()),
-            residual=np.full(bad.size, np.nan),
+            residual=t.displacement.last_change[bad],
             estimate=t.displacement.z[bad],
             reason=f"{bad.size} of {t.rotation_angle.size} positions did not converge",
         )

@@ -277,6 +277,7 @@ def _position(d, k):
         *rest,
         runout.Shifts(*(np.asarray(v)[k] for v in d.shifts)),
         runout.Pose(*(np.asarray(v)[k] for v in d.first_approximation)),
+        np.asarray(d.last_change)[k],
     )
 
 

@@ -1217,6 +1217,7 @@ class Displacement(NamedTuple):
     converged: np.ndarray  # refinement converged (True without refinement) [bool]
     shifts: Shifts  # contact-point shifts used for Delta k (zeros without refinement) [rad]
     first_approximation: Pose  # the pose before refinement [m]
+    last_change: np.ndarray  # largest change of (dx, dy, dz) in the last refinement pass (0 without) [m]
 
 
 def _positions(psi, theta, geometry, errors, *, refine, method, tie_break, tol, max_iter):
@@ -1235,8 +1236,9 @@ def _positions(psi, theta, geometry, errors, *, refine, method, tie_break, tol, 
     shifts = Shifts(zeros, zeros, zeros)
     passes = np.zeros(P, dtype=int)
     converged = np.ones(P, dtype=bool)
+    change = np.zeros(P)
     if refine:
-        sol, pose, shifts, dk, passes, converged = _refine(
+        sol, pose, shifts, dk, passes, converged, change = _refine(
             psi,
             theta,
             geometry,
@@ -1268,6 +1270,7 @@ def _positions(psi, theta, geometry, errors, *, refine, method, tie_break, tol, 
         converged,
         shifts,
         first,
+        change,
     )
 
 
@@ -1324,7 +1327,7 @@ def _refine(
         active = ia[~done]
         if active.size == 0:
             break
-    return (ContactSolution(*fields), Pose(x, y, z), Shifts(*sh), dk, passes, converged)
+    return (ContactSolution(*fields), Pose(x, y, z), Shifts(*sh), dk, passes, converged, change)
 
 
 def initial_displacement(
@@ -1408,7 +1411,7 @@ def initial_displacement(
         raise ConvergenceError(
             "runout.initial_displacement (refinement)",
             iterations=max_iter,
-            residual=np.full(bad.size, np.nan),
+            residual=r.last_change[bad],
             estimate=np.stack([r.x[bad], r.y[bad], r.z[bad]], axis=-1),
             reason=f"{bad.size} of {flat.size} positions, first at psi = "
             f"{math.degrees(flat[bad[0]]):.6g} deg",
@@ -1451,6 +1454,7 @@ def _reshape_displacement(r, shape):
         f(r.converged),
         Shifts(*(f(v, True) for v in r.shifts)),
         Pose(*(f(v) for v in r.first_approximation)),
+        f(r.last_change),
     )
 
 
