@@ -640,3 +640,18 @@ def test_error_file_is_not_modified(tmp_path):
 def test_missing_error_file():
     with pytest.raises(CatalogError, match="no such file"):
         R.load_error_file("/nonexistent/errors.toml")
+
+
+def test_benchmark_functions_agree_on_a_small_input():
+    """Smoke test of bench/runout.py (the benchmark itself is not run in the tests)."""
+    import importlib.util
+    from pathlib import Path
+
+    path = Path(__file__).parent.parent / "bench" / "runout.py"
+    spec = importlib.util.spec_from_file_location("bench_runout", path)
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    dk, theta = bench.cases(40)
+    sol = bench.solve_batch(dk, theta)
+    a0 = bench.solve_one_by_one(dk[:8], theta[:8])
+    assert_allclose(um(sol.constant[:8]), um(a0), atol=1e-6)

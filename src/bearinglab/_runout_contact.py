@@ -84,7 +84,10 @@ def same_pattern(angles):
     """True when every position has the same azimuths relative to ball 1 (rigid rotation of the set)."""
     if angles.shape[0] <= 1:
         return True
-    rel = (angles - angles[:, :1]) - (angles[:1] - angles[:1, :1])
+    rel = angles - angles[:, :1]
+    rel -= rel[:1]
+    if np.all(np.abs(rel) < _SAME_PATTERN_ATOL):  # fast path: no wrapping between positions
+        return True
     rel = np.remainder(rel + np.pi, 2 * np.pi) - np.pi
     return bool(np.all(np.abs(rel) < _SAME_PATTERN_ATOL))
 

@@ -1060,8 +1060,10 @@ def _contact_solution(dk, theta, cb, cd, method, tie_break):
     cb_um = np.broadcast_to(np.asarray(cb, float), lead).reshape(-1) / _UM
     cd_um = np.broadcast_to(np.asarray(cd, float), lead).reshape(-1) / _UM
     a0, b, d, lam, degenerate, diam = _solve_um(flat_dk, flat_th, cb_um, cd_um, method, tie_break)
-    slack_um = flat_dk - (a0[:, None] + b[:, None] * np.sin(flat_th) + d[:, None] * np.cos(flat_th))
-    contact = slack_um <= RUNOUT_CONTACT_TOL_UM * _contact.scale(flat_dk)[:, None]
+    slack_um = flat_dk - a0[:, None]
+    slack_um -= b[:, None] * np.sin(flat_th)
+    slack_um -= d[:, None] * np.cos(flat_th)
+    contact = slack_um <= (RUNOUT_CONTACT_TOL_UM * _contact.scale(flat_dk))[:, None]
 
     def r(v, extra=()):
         return v.reshape(lead + extra)[()]
@@ -1137,7 +1139,9 @@ def solve_contact(
     shape = np.broadcast_shapes(dk.shape, th.shape)
     dk = np.broadcast_to(dk, shape)
     th = np.broadcast_to(th, shape)
-    _check_balls(th.reshape(-1, shape[-1]))
+    flat = th.reshape(-1, shape[-1])
+    # equally spaced or rigidly turned ball sets: one row stands for all
+    _check_balls(flat[:1] if _contact.same_pattern(flat) else flat)
     cb = check_finite("centre", centre[0], "m")
     cd = check_finite("centre", centre[1], "m")
     return _contact_solution(dk, th, cb, cd, method, tie_break)
@@ -1217,7 +1221,9 @@ class Displacement(NamedTuple):
     converged: np.ndarray  # refinement converged (True without refinement) [bool]
     shifts: Shifts  # contact-point shifts used for Delta k (zeros without refinement) [rad]
     first_approximation: Pose  # the pose before refinement [m]
-    last_change: np.ndarray  # largest change of (dx, dy, dz) in the last refinement pass (0 without) [m]
+    last_change: (
+        np.ndarray
+    )  # largest change of (dx, dy, dz) in the last refinement pass (0 without) [m]
 
 
 def _positions(psi, theta, geometry, errors, *, refine, method, tie_break, tol, max_iter):
