@@ -137,7 +137,7 @@ def ellipticity(curvature_difference, *, rtol=_solve.ELLIPTICITY_RTOL, max_iter=
             hi = np.where(resid > 0, np.minimum(hi, mb), hi)
             with np.errstate(invalid="ignore", divide="ignore"):
                 new = mb - resid / df
-            outside = ~((new > lo) & (new < hi)) | ~np.isfinite(new)
+            outside = ~((new >= lo) & (new <= hi)) | ~np.isfinite(new)  # closed: a converged step may land on a bound
             new = np.where(outside, 0.5 * (lo + hi), new)
             step = np.abs(new - mb)
             mb = new
