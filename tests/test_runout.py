@@ -259,8 +259,8 @@ def test_refinement_angle_equals_source_eq30(g, pose, tilt, theta):
     tau0, rc = g.contact_angle, g.inner_centre_radius
     eq30 = (z - s_theta * math.sin(tau0) + rc * m) / (
         (g.outer_groove_radius + g.inner_groove_radius - 2 * g.ball_radius) * math.cos(tau0))
-    assert_allclose(shifts.outer_contact_angle, eq30, rtol=0, atol=1e-15)
-    assert_allclose(shifts.inner_contact_angle, eq30 - m, rtol=0, atol=1e-15)  # eq. 29
+    assert_allclose(shifts.outer_angle_shift, eq30, rtol=0, atol=1e-15)
+    assert_allclose(shifts.inner_angle_shift, eq30 - m, rtol=0, atol=1e-15)  # eq. 29
 
 
 # ------------------------------------------------------------------------------ errors and their signs

@@ -160,9 +160,9 @@ def _single_dict(d, g):
         if int(d.passes):
             row.update(
                 {
-                    "dtau1_rad": float(st.outer_contact_angle[i]),
-                    "dtau2_rad": float(st.inner_contact_angle[i]),
-                    "dtheta2_rad": float(st.inner_azimuth[i]),
+                    "dtau1_rad": float(st.outer_angle_shift[i]),
+                    "dtau2_rad": float(st.inner_angle_shift[i]),
+                    "dtheta2_rad": float(st.inner_azimuth_shift[i]),
                 }
             )
         balls.append(row)

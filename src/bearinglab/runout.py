@@ -796,9 +796,9 @@ def ball_angles(rotation_angle, geometry, *, cage_ratio=None, first_ball_angle=N
 class Shifts(NamedTuple):
     """Refinement shifts of the contact points, eqs. (9.1)-(9.3); [rad], shape (..., n)."""
 
-    outer_contact_angle: np.ndarray  # d tau1
-    inner_contact_angle: np.ndarray  # d tau2
-    inner_azimuth: np.ndarray  # d theta2
+    outer_angle_shift: np.ndarray  # d tau1
+    inner_angle_shift: np.ndarray  # d tau2
+    inner_azimuth_shift: np.ndarray  # d theta2
 
 
 def _generalized_error(psi, theta, geometry, errors, shifts=None):
@@ -814,10 +814,10 @@ def _generalized_error(psi, theta, geometry, errors, shifts=None):
             if series is not None:
                 dk = dk + _horner(series.cos, series.sin, th)
         return dk
-    dk = dk + normal_deviation(theta, tau0 + shifts.outer_contact_angle, errors.outer, ring="outer")
+    dk = dk + normal_deviation(theta, tau0 + shifts.outer_angle_shift, errors.outer, ring="outer")
     dk = dk + normal_deviation(
-        inner_angle + shifts.inner_azimuth,
-        tau0 + shifts.inner_contact_angle,
+        inner_angle + shifts.inner_azimuth_shift,
+        tau0 + shifts.inner_angle_shift,
         errors.inner,
         ring="inner",
     )
@@ -945,7 +945,7 @@ def pose_from_sinusoid(constant, sine, cosine, geometry, *, tilt_x=0.0, tilt_y=0
 
     Notes
     -----
-    The source's eq. 27 loses the signs (A/sqrt(1 + ctg^2 phi) = A |sin phi|); this is the corrected form
+    The source's eq. 27 loses the signs (``A/sqrt(1 + ctg^2 phi) = A |sin phi|``); this is the corrected form
     (spec 003 section 13.7).
 
     Examples
@@ -1118,7 +1118,7 @@ def solve_contact(
     lowest point, above the origin, of the convex hull of (sin theta^i, cos theta^i, Delta k^i); its
     vertices are the ball triangles that contain the origin and the diametral pairs. A pair makes the
     optimal face a segment ("degenerate"); the tie-break then takes its point closest to c.
-    Tolerances (1e-9 um for ties, 1e-7 um for contacts) scale with max(1, max |Delta k| / 1 um).
+    Tolerances (1e-9 um for ties, 1e-7 um for contacts) scale with ``max(1, max |Delta k| / 1 um)``.
 
     Examples
     --------
@@ -1183,7 +1183,7 @@ def contact_point_shifts(x, y, z, ball_angle, geometry, *, tilt_x=0.0, tilt_y=0.
     --------
     >>> g = geometry_from_catalog(16, 7.144e-3, 54e-3, 0.53, 0.52, math.radians(15))
     >>> sh = contact_point_shifts(0.0, 0.0, -3.741978e-6, [0.0], g)
-    >>> print(f"{sh.outer_contact_angle[0]:.6f}")
+    >>> print(f"{sh.outer_angle_shift[0]:.6f}")
     -0.010119
     """
     x, y, z = (
@@ -1777,7 +1777,7 @@ def spectrum_lines(
     threshold : float
         Lines below this fraction of the largest non-DC amplitude of all components are dropped. [-]
     max_cage_harmonic, max_shaft_harmonic : int
-        Largest |p| and |q| tried. [-]
+        Largest absolute values of p and q tried. [-]
     max_lines : int
         Most lines per component, largest first. [-]
 
@@ -1912,7 +1912,7 @@ def exact_reduction(
     to the groove-centre circle of ring r. Its maximum over the half-plane has rho10 - d1 = rho20 - d2
     and the in-plane gradients of d1 and d2 opposed (analytic); both conditions are solved by Newton
     (finite-difference Jacobian) for all balls at once. Used to check (5.1): the difference is second order,
-    about |delta_perp|^2 / (2 A0) (spec 003 sections 9 and 15, example 4).
+    about ``|delta_perp|^2 / (2 A0)`` (spec 003 sections 9 and 15, example 4).
 
     Examples
     --------

@@ -172,10 +172,10 @@ def test_example2_psi0_refined(g):
     assert bool(d.converged)
     shifts = d.shifts
     for i in np.array(r["psi0_contacts"]) - 1:  # d tau1 = d tau2 = -0.010119 rad at the contacts (no tilt)
-        assert shifts.outer_contact_angle[i] == pytest.approx(r["psi0_refined_dtau_rad"], abs=0.5e-6)
-        assert shifts.inner_contact_angle[i] == pytest.approx(r["psi0_refined_dtau_rad"], abs=0.5e-6)
+        assert shifts.outer_angle_shift[i] == pytest.approx(r["psi0_refined_dtau_rad"], abs=0.5e-6)
+        assert shifts.inner_angle_shift[i] == pytest.approx(r["psi0_refined_dtau_rad"], abs=0.5e-6)
     # section 9: dz = -3.7 um changes the contact angle by -0.58 deg
-    assert math.degrees(shifts.inner_contact_angle[0]) == pytest.approx(r["contact_angle_change"], abs=0.005)
+    assert math.degrees(shifts.inner_angle_shift[0]) == pytest.approx(r["contact_angle_change"], abs=0.005)
 
 
 @pytest.mark.parametrize("example, psi, key", [("example2", 0.0, "psi0_refined_passes"),
