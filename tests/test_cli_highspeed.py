@@ -172,7 +172,7 @@ def test_long_sweep_shows_a_progress_bar_on_stderr(capsys, monkeypatch):
     """A terminal gets a progress bar on stderr during long sweeps; stdout stays one JSON array."""
     from rich.console import Console
 
-    from bearinglab import _cli_highspeed
+    from bearinglab import _cli_highspeed, cli
 
     seen = []
 
@@ -182,7 +182,7 @@ def test_long_sweep_shows_a_progress_bar_on_stderr(capsys, monkeypatch):
 
     monkeypatch.setattr(_cli_highspeed, "_PROGRESS_MIN_CASES", 4)
     monkeypatch.setattr(_cli_highspeed, "_CHUNK", 3)
-    monkeypatch.setattr(_cli_highspeed, "_progress_console", Terminal)
+    monkeypatch.setattr(cli, "_stderr_console", Terminal)
     real = quasistatic.sweep
 
     def spy(*args, progress=None, **kw):

@@ -27,16 +27,20 @@ from .cli import (
     BearingFile,
     BearingName,
     CatalogFile,
+    ChunkSizeOpt,
     Clearance,
     ContactAngle,
+    ExecutorOpt,
     InnerConformity,
     InnerRadius,
     JsonFlag,
     OuterConformity,
     OuterRadius,
     PitchDiameter,
+    WorkersOpt,
     console,
     emit_json,
+    progress_bar,
     resolve_bearing,
     table,
 )
@@ -45,8 +49,8 @@ from .units import RPM, parse_quantity, parse_values
 
 __all__ = ["plot_map", "register", "write_csv"]
 
-_PROGRESS_MIN_CASES = 5000  # sweeps at least this large show a progress bar (on a terminal)
-_CHUNK = 2500  # cases per batched call while a progress bar is shown
+_PROGRESS_MIN_CASES = 5000  # serial sweeps at least this large are cut finer, so the bar moves
+_CHUNK = 2500  # cases per batched call then
 
 
 def _directory(path: Path, what: str) -> Path:
@@ -177,6 +181,7 @@ def high_speed(
     reduced_modulus: Annotated[str | None, typer.Option("--reduced-modulus", help="E' of the contact pair, e.g. '228.04 GPa' (default: from the materials).")] = None,
     csv_file: Annotated[Path | None, typer.Option("--csv", help="Write the table of all cases to this CSV file.")] = None,
     plot: Annotated[Path | None, typer.Option("--plot", help="Draw the map (figures 2-4 and δ_a) into this PNG/PDF/SVG file.")] = None,
+    executor: ExecutorOpt = None, workers: WorkersOpt = None, chunk_size: ChunkSizeOpt = None,
     json_out: JsonFlag = False,
 ):
     """High-speed angular-contact bearing under thrust (spec 004): α_i, α_e, δ_a, loads, F_c, M_g, speeds."""
@@ -209,7 +214,8 @@ def high_speed(
         if single:
             state = quasistatic.high_speed_analysis(b, loads[0], speeds[0], **options)
         else:
-            state = _sweep(b, loads, speeds, options)
+            state = _sweep(b, loads, speeds, options, executor=executor or "serial", workers=workers,
+                           chunk_size=chunk_size)
     cols = quasistatic.result_table(state)
     if csv_file is not None:
         write_csv(csv_file, cols)
@@ -248,25 +254,15 @@ def _jsonable(v):
     return v
 
 
-def _progress_console():
-    """The progress bar goes to stderr, so that stdout stays one JSON document or one table."""
-    from rich.console import Console
-
-    return Console(stderr=True)
-
-
-def _sweep(bearing, loads, speeds, options):
-    """The grid in batched calls, with a progress bar on a terminal for long sweeps."""
-    total = loads.size * speeds.size
-    bar_console = _progress_console()
-    if total >= _PROGRESS_MIN_CASES and bar_console.is_terminal:
-        from rich.progress import Progress
-
-        with Progress(console=bar_console, transient=True) as bar:
-            task = bar.add_task("solving", total=total)
-            return quasistatic.sweep(bearing, loads, speeds, chunk_size=_CHUNK,
-                                     progress=lambda done, _total: bar.update(task, completed=done), **options)
-    return quasistatic.sweep(bearing, loads, speeds, **options)
+def _sweep(bearing, loads, speeds, options, *, executor="serial", workers=None, chunk_size=None):
+    """The grid in chunks on the chosen executor, with a progress bar on a terminal (rich for serial,
+    dask's for a cluster)."""
+    kw = {} if chunk_size is None else {"chunk_size": chunk_size}
+    if chunk_size is None and executor == "serial" and loads.size * speeds.size >= _PROGRESS_MIN_CASES:
+        kw["chunk_size"] = _CHUNK  # small enough chunks for the bar to move
+    with progress_bar("solving", executor) as progress:
+        return quasistatic.sweep(bearing, loads, speeds, executor=executor, workers=workers, progress=progress,
+                                 **kw, **options)
 
 
 def _f(x, spec):

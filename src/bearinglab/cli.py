@@ -138,11 +138,16 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
     return dataclasses.replace(base, **changes)
 
 
+def _stderr_console():
+    """Progress goes to stderr, so that stdout stays one JSON document or one table."""
+    return Console(stderr=True)
+
+
 @contextlib.contextmanager
 def progress_bar(description, executor="serial"):
     """The ``progress`` argument of :mod:`bearinglab.parallel` for a command: a rich bar (serial) or dask's
     progress bar (distributed) on an interactive terminal, nothing otherwise (pipes, tests, CI)."""
-    err = Console(stderr=True)
+    err = _stderr_console()
     if not err.is_terminal:
         yield None
         return

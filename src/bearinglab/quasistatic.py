@@ -59,7 +59,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.polynomial import chebyshev as _cheb
 
-from . import _solve, geometry, hertz, static
+from . import _solve, geometry, hertz, parallel, static
 from ._validate import (
     as_float,
     check_greater,
@@ -1601,7 +1601,23 @@ def sign_change_thrust(bearing, shaft_speed, *, reduced_modulus=None, **options)
     return zero_displacement_thrust(shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
 
 
-def sweep(bearing, axial_loads, shaft_speeds, *, progress=None, chunk_size=20_000, reduced_modulus=None, **options):
+def _sweep_chunk(axial_load, shaft_speed, bearing, reduced_modulus, options):
+    """One chunk of a sweep (a pure function of its inputs, so it can run on a dask worker): the state's
+    fields per case, and the chunk's first ValidityWarning message on its first case."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", ValidityWarning)
+        state = high_speed_analysis(bearing, axial_load, shaft_speed, reduced_modulus=reduced_modulus, **options)
+    out = {k: np.atleast_1d(getattr(state, k)) for k in HighSpeedState._fields}
+    notes = np.full(np.size(axial_load), "", dtype=object)
+    msgs = [str(c.message) for c in caught if issubclass(c.category, ValidityWarning)]
+    if msgs:
+        notes[0] = msgs[0]
+    out["_warning"] = notes
+    return out
+
+
+def sweep(bearing, axial_loads, shaft_speeds, *, progress=None, chunk_size=20_000, reduced_modulus=None,
+          executor="serial", workers=None, memory_limit=None, processes=True, **options):
     """Solve a grid of thrusts x speeds for one bearing; failed cases are flagged, the others complete.
 
     Parameters
@@ -1612,12 +1628,22 @@ def sweep(bearing, axial_loads, shaft_speeds, *, progress=None, chunk_size=20_00
         1-D thrusts F_a. [N]
     shaft_speeds : array_like
         1-D inner-ring speeds. [rad/s]
-    progress : callable, optional
-        Called as ``progress(done, total)`` after each chunk of cases.
+    progress : callable or "dask", optional
+        Called as ``progress(done, total)`` after each chunk of cases, or ``"dask"`` for dask's bar.
     chunk_size : int, optional
         Cases solved per batched call (all cases of a chunk are updated together).
     reduced_modulus : float, optional
         See :func:`high_speed_analysis`. [Pa]
+    executor : str, optional
+        ``"serial"`` (default), ``"local"`` (a dask LocalCluster for this call) or a scheduler address
+        ``"tcp://host:8786"``; see :mod:`bearinglab.parallel`. The chunks are the same on every executor,
+        so the results are bit-identical.
+    workers : int, optional
+        Workers of the local cluster. [-]
+    memory_limit : str, optional
+        Memory limit per local worker, e.g. ``"4GiB"``.
+    processes : bool, optional
+        Local workers as processes (default) or threads.
 
     Other Parameters
     ----------------
@@ -1645,22 +1671,16 @@ def sweep(bearing, axial_loads, shaft_speeds, *, progress=None, chunk_size=20_00
     options.setdefault("on_failure", "flag")
     check_integer("chunk_size", chunk_size, 1)
     grid_f, grid_w = np.meshgrid(fa, w, indexing="ij")
-    flat_f, flat_w = grid_f.ravel(), grid_w.ravel()
-    total = flat_f.size
-    parts = []
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", ValidityWarning)
-        for s in range(0, total, chunk_size):  # chunks of cases, each one batched call
-            parts.append(high_speed_analysis(bearing, flat_f[s:s + chunk_size], flat_w[s:s + chunk_size],
-                                             reduced_modulus=reduced_modulus, **options))
-            if progress is not None:
-                progress(min(s + chunk_size, total), total)
-    msgs = [str(c.message) for c in caught if issubclass(c.category, ValidityWarning)]
+    # chunks of cases, each one batched call, run by the execution layer (serial or on dask)
+    res = parallel.run_cases(_sweep_chunk, {"axial_load": grid_f.ravel(), "shaft_speed": grid_w.ravel()},
+                             constants={"bearing": bearing, "reduced_modulus": reduced_modulus, "options": options},
+                             chunk_size=int(chunk_size), executor=executor, workers=workers,
+                             memory_limit=memory_limit, processes=processes, progress=progress)
+    msgs = [m for m in res.pop("_warning") if m]
     if msgs:
         warnings.warn(msgs[0] if len(msgs) == 1 else f"{msgs[0]} (and in {len(msgs) - 1} more chunks)",
                       ValidityWarning, stacklevel=2)
-    merged = {k: np.concatenate([np.atleast_1d(getattr(p, k)) for p in parts]).reshape(grid_f.shape)
-              for k in HighSpeedState._fields}
+    merged = {k: v.reshape(grid_f.shape) for k, v in res.items()}
     return HighSpeedState(**merged)
 
 
