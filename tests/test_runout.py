@@ -34,8 +34,14 @@ def regular(n, first=0.0):
 
 
 # ------------------------------------------------------------------------------ contact problem
-cases = st.integers(3, 20).flatmap(lambda n: st.tuples(
-    st.just(n), st.floats(0.0, 2 * np.pi), st.lists(st.floats(-2.0, 2.0), min_size=n, max_size=n), st.booleans()))
+cases = st.integers(3, 20).flatmap(
+    lambda n: st.tuples(
+        st.just(n),
+        st.floats(0.0, 2 * np.pi),
+        st.lists(st.floats(-2.0, 2.0), min_size=n, max_size=n),
+        st.booleans(),
+    )
+)
 
 
 @FAST
@@ -61,7 +67,9 @@ def test_solvers_agree_on_irregular_azimuths(n, data):
     th = np.cumsum(gaps / gaps.sum() * 2 * np.pi)
     if np.max(gaps / gaps.sum() * 2 * np.pi) >= np.pi - 1e-6:
         return  # a half-circle gap: rejected, tested separately
-    dk = np.array(data.draw(st.lists(st.floats(-1.0, 1.0), min_size=2 * n, max_size=2 * n))).reshape(2, n)
+    dk = np.array(
+        data.draw(st.lists(st.floats(-1.0, 1.0), min_size=2 * n, max_size=2 * n))
+    ).reshape(2, n)
     angles = np.stack([th, th * 1.0001 + 0.3])  # two positions, different patterns
     if np.max(np.diff(np.sort(np.mod(angles[1], 2 * np.pi)))) >= np.pi - 1e-6:
         return
@@ -83,7 +91,9 @@ def test_nearly_opposite_balls_are_solved_exactly():
     a = R.solve_contact(dk * UM, th)
     b = R.solve_contact(dk * UM, th, method="triples")
     c = R.solve_contact(dk * UM, th, method="lp")
-    assert_allclose(um([a.constant, a.sine, a.cosine]), um([b.constant, b.sine, b.cosine]), atol=1e-12)
+    assert_allclose(
+        um([a.constant, a.sine, a.cosine]), um([b.constant, b.sine, b.cosine]), atol=1e-12
+    )
     assert np.all(um(a.slack[a.contact]) == pytest.approx(0.0, abs=1e-12)) and a.contact.sum() == 3
     assert not a.degenerate
     assert um(c.constant) == pytest.approx(um(a.constant), abs=1e-9)
@@ -122,12 +132,18 @@ def test_invariances(case, shift, factor, turn):
     assert um(moved.constant) == pytest.approx(um(base.constant) + shift, abs=1e-9)
     assert_allclose(um([moved.sine, moved.cosine]), um([base.sine, base.cosine]), atol=1e-9)
     scaled = R.solve_contact(dk * factor * UM, th)
-    assert_allclose(um([scaled.constant, scaled.sine, scaled.cosine]),
-                    factor * um([base.constant, base.sine, base.cosine]), atol=1e-9 * max(1.0, factor))
+    assert_allclose(
+        um([scaled.constant, scaled.sine, scaled.cosine]),
+        factor * um([base.constant, base.sine, base.cosine]),
+        atol=1e-9 * max(1.0, factor),
+    )
     k = turn % n
     rolled = R.solve_contact(np.roll(dk, k) * UM, np.roll(th, k))
-    assert_allclose(um([rolled.constant, rolled.sine, rolled.cosine]),
-                    um([base.constant, base.sine, base.cosine]), atol=1e-9)
+    assert_allclose(
+        um([rolled.constant, rolled.sine, rolled.cosine]),
+        um([base.constant, base.sine, base.cosine]),
+        atol=1e-9,
+    )
     assert np.array_equal(np.roll(base.contact, k), rolled.contact)
 
 
@@ -142,7 +158,9 @@ def test_rotating_the_ball_set_rotates_the_sinusoid(case, delta):
     assert um(b.constant) == pytest.approx(um(a.constant), abs=1e-9)
     assert um(b.amplitude) == pytest.approx(um(a.amplitude), abs=1e-7)
     if not a.degenerate and a.amplitude > 1e-8 * UM:
-        assert math.remainder(float(b.phase - (a.phase - delta)), 2 * math.pi) == pytest.approx(0.0, abs=1e-6)
+        assert math.remainder(float(b.phase - (a.phase - delta)), 2 * math.pi) == pytest.approx(
+            0.0, abs=1e-6
+        )
 
 
 def test_equal_errors_every_ball_touches():
@@ -150,7 +168,9 @@ def test_equal_errors_every_ball_touches():
     for n in (3, 4, 7, 16):
         s = R.solve_contact(np.full(n, 0.37) * UM, regular(n, 0.1))
         assert um(s.constant) == pytest.approx(0.37, abs=1e-12)
-        assert um(s.sine) == pytest.approx(0, abs=1e-12) and um(s.cosine) == pytest.approx(0, abs=1e-12)
+        assert um(s.sine) == pytest.approx(0, abs=1e-12) and um(s.cosine) == pytest.approx(
+            0, abs=1e-12
+        )
         assert np.all(s.contact)
         assert not s.degenerate
 
@@ -165,13 +185,16 @@ def test_four_balls_always_rest_on_a_pair():
     assert not tie.degenerate and np.all(tie.contact)
 
 
-@pytest.mark.parametrize("angles, match", [
-    (np.array([0.0]), "n_balls must be >= 3"),
-    (np.array([0.0, np.pi]), "n_balls must be >= 3"),
-    (np.radians([0, 30, 60, 90, 120]), "half-circle"),  # five balls within 120 deg
-    (np.radians([0, 90, 180]), "half-circle"),  # a closed half-circle is unbounded too
-    (np.radians([0, 0, 120, 240]), "same azimuth"),
-])
+@pytest.mark.parametrize(
+    "angles, match",
+    [
+        (np.array([0.0]), "n_balls must be >= 3"),
+        (np.array([0.0, np.pi]), "n_balls must be >= 3"),
+        (np.radians([0, 30, 60, 90, 120]), "half-circle"),  # five balls within 120 deg
+        (np.radians([0, 90, 180]), "half-circle"),  # a closed half-circle is unbounded too
+        (np.radians([0, 0, 120, 240]), "same azimuth"),
+    ],
+)
 def test_unbounded_configurations_are_rejected(angles, match):
     """Section 16.4."""
     with pytest.raises(InputError, match=match):
@@ -197,7 +220,9 @@ def test_sign_of_the_envelope():
     th = regular(16)
     dk = np.r_[-2.0, np.zeros(15)]
     rows = np.column_stack([np.ones(16), np.sin(th), np.cos(th)])
-    literal = linprog([1.0, 0.0, 0.0], A_ub=-rows, b_ub=-dk, bounds=[(None, None)] * 3, method="highs")
+    literal = linprog(
+        [1.0, 0.0, 0.0], A_ub=-rows, b_ub=-dk, bounds=[(None, None)] * 3, method="highs"
+    )
     s_literal = rows @ literal.x
     assert literal.x[0] == pytest.approx(0.0, abs=1e-9)
     assert np.min(dk - s_literal) == pytest.approx(-2.0, abs=1e-9)  # penetration 2 um
@@ -210,8 +235,11 @@ def test_sign_of_the_envelope():
 
 
 def test_a_position_gives_the_same_bits_alone_or_in_a_batch(g):
-    e = R.manufacturing_errors(16, ball_diameter_deviation=np.linspace(-0.2, 0.2, 16) * UM,
-                               inner=R.RacewayErrors(radial=R.fourier_series({1: 0.4, 3: 0.1}, scale=UM)))
+    e = R.manufacturing_errors(
+        16,
+        ball_diameter_deviation=np.linspace(-0.2, 0.2, 16) * UM,
+        inner=R.RacewayErrors(radial=R.fourier_series({1: 0.4, 3: 0.1}, scale=UM)),
+    )
     psi = np.linspace(0, 4 * np.pi, 500)
     batch = R.initial_displacement(psi, g, e)
     one = R.initial_displacement(psi[123], g, e)
@@ -245,8 +273,11 @@ def test_tie_break_centre_minimises_the_lateral_displacement(g, pose, tilt):
 
 
 @FAST
-@given(pose=poses, tilt=st.tuples(st.floats(-50, 50), st.floats(-50, 50)),
-       theta=st.lists(st.floats(0, 2 * np.pi), min_size=1, max_size=8))
+@given(
+    pose=poses,
+    tilt=st.tuples(st.floats(-50, 50), st.floats(-50, 50)),
+    theta=st.lists(st.floats(0, 2 * np.pi), min_size=1, max_size=8),
+)
 def test_refinement_angle_equals_source_eq30(g, pose, tilt, theta):
     """Section 16.6: (9.1) equals the source's eq. 30 with 2 Delta r33 = s(theta), to 1e-15 rad."""
     x, y, z = np.array(pose) * UM
@@ -258,7 +289,8 @@ def test_refinement_angle_equals_source_eq30(g, pose, tilt, theta):
     m = a * np.sin(th) - b * np.cos(th)
     tau0, rc = g.contact_angle, g.inner_centre_radius
     eq30 = (z - s_theta * math.sin(tau0) + rc * m) / (
-        (g.outer_groove_radius + g.inner_groove_radius - 2 * g.ball_radius) * math.cos(tau0))
+        (g.outer_groove_radius + g.inner_groove_radius - 2 * g.ball_radius) * math.cos(tau0)
+    )
     assert_allclose(shifts.outer_angle_shift, eq30, rtol=0, atol=1e-15)
     assert_allclose(shifts.inner_angle_shift, eq30 - m, rtol=0, atol=1e-15)  # eq. 29
 
@@ -288,10 +320,18 @@ def test_sign_conventions_of_the_generalized_error(g):
 
 def test_first_approximation_equals_the_refined_formula_with_zero_shifts(g):
     e = R.manufacturing_errors(
-        16, outer=R.RacewayErrors(radial=R.fourier_series({2: 0.3}, {3: 0.1}, scale=UM),
-                                  axial=R.fourier_series({1: 0.2}, scale=UM), groove=R.fourier_series({0: 0.05}, scale=UM)),
-        inner=R.RacewayErrors(radial=R.fourier_series({1: 0.4}, scale=UM), axial=R.fourier_series({}, {1: 0.3}, scale=UM),
-                              normal=R.fourier_series({4: 0.02}, scale=UM)))
+        16,
+        outer=R.RacewayErrors(
+            radial=R.fourier_series({2: 0.3}, {3: 0.1}, scale=UM),
+            axial=R.fourier_series({1: 0.2}, scale=UM),
+            groove=R.fourier_series({0: 0.05}, scale=UM),
+        ),
+        inner=R.RacewayErrors(
+            radial=R.fourier_series({1: 0.4}, scale=UM),
+            axial=R.fourier_series({}, {1: 0.3}, scale=UM),
+            normal=R.fourier_series({4: 0.02}, scale=UM),
+        ),
+    )
     zero = np.zeros((5, 16))
     psi = np.linspace(0, 2, 5)
     a = R.generalized_error(psi, g, e)
@@ -301,7 +341,9 @@ def test_first_approximation_equals_the_refined_formula_with_zero_shifts(g):
 
 def test_inner_ring_errors_turn_with_the_ring(g):
     """After one inner-ring revolution the inner error pattern returns, the balls have moved on by kappa."""
-    e = R.manufacturing_errors(16, inner=R.RacewayErrors(radial=R.fourier_series({3: 1.0}, scale=UM)))
+    e = R.manufacturing_errors(
+        16, inner=R.RacewayErrors(radial=R.fourier_series({3: 1.0}, scale=UM))
+    )
     th = R.ball_angles(2 * np.pi, g)
     dk = R.generalized_error(2 * np.pi, g, e)
     assert_allclose(um(dk), -math.cos(g.contact_angle) * np.cos(3 * (th - 2 * np.pi)), atol=1e-12)
@@ -335,7 +377,9 @@ def test_manufacturing_errors_checks():
     with pytest.raises(InputError, match="one value per ball"):
         R.manufacturing_errors(16, ball_diameter_deviation=np.zeros(15))
     with pytest.raises(InputError, match="not both"):
-        R.manufacturing_errors(3, ball_diameter_deviation=np.zeros(3), ball_outer_deficit=np.zeros(3))
+        R.manufacturing_errors(
+            3, ball_diameter_deviation=np.zeros(3), ball_outer_deficit=np.zeros(3)
+        )
     with pytest.raises(InputError, match="tilt_x must be finite"):
         R.manufacturing_errors(3, tilt_x=float("nan"))
     with pytest.raises(InputError, match="RacewayErrors"):
@@ -358,11 +402,20 @@ def test_tilt_as_a_function_of_rotation(g):
 
 # ------------------------------------------------------------------------------ geometry
 def test_geometry_forms_and_checks(g):
-    h = R.geometry_from_catalog(16, 7.144e-3, 54e-3, 0.53, 0.52, outer_bottom_radius=g.outer_bottom_radius)
+    h = R.geometry_from_catalog(
+        16, 7.144e-3, 54e-3, 0.53, 0.52, outer_bottom_radius=g.outer_bottom_radius
+    )
     assert h.contact_angle == pytest.approx(g.contact_angle, abs=1e-12)
     with pytest.raises(InputError, match="inconsistent with contact_angle"):
-        R.geometry_from_radii(16, g.ball_radius, g.outer_groove_radius, g.inner_groove_radius, g.inner_bottom_radius,
-                              g.contact_angle, outer_bottom_radius=g.outer_bottom_radius + 1e-6)
+        R.geometry_from_radii(
+            16,
+            g.ball_radius,
+            g.outer_groove_radius,
+            g.inner_groove_radius,
+            g.inner_bottom_radius,
+            g.contact_angle,
+            outer_bottom_radius=g.outer_bottom_radius + 1e-6,
+        )
     with pytest.raises(InputError, match="n_balls must be an integer >= 3"):
         R.geometry_from_catalog(2, 7.144e-3, 54e-3, 0.53, 0.52, 0.26)
     with pytest.raises(InputError, match="outer_conformity must be > 0.5"):
@@ -376,7 +429,9 @@ def test_geometry_forms_and_checks(g):
     with pytest.raises(InputError, match="pitch_diameter must be > ball_diameter"):
         R.geometry_from_catalog(16, 7.144e-3, 5e-3, 0.53, 0.52, 0.26)
     with pytest.raises(InputError, match="give contact_angle"):
-        R.geometry_from_radii(16, g.ball_radius, g.outer_groove_radius, g.inner_groove_radius, g.inner_bottom_radius)
+        R.geometry_from_radii(
+            16, g.ball_radius, g.outer_groove_radius, g.inner_groove_radius, g.inner_bottom_radius
+        )
 
 
 def test_geometry_from_a_catalog_bearing():
@@ -392,22 +447,33 @@ def test_geometry_from_a_catalog_bearing():
 
 # ------------------------------------------------------------------------------ refinement
 def test_refinement_converges_and_reports(g):
-    e = R.manufacturing_errors(16, inner=R.RacewayErrors(radial=R.fourier_series({2: 1.0}, scale=UM),
-                                                         groove=R.fourier_series({3: 0.5}, scale=UM)))
+    e = R.manufacturing_errors(
+        16,
+        inner=R.RacewayErrors(
+            radial=R.fourier_series({2: 1.0}, scale=UM), groove=R.fourier_series({3: 0.5}, scale=UM)
+        ),
+    )
     d = R.initial_displacement(np.linspace(0, 1, 7), g, e, refine=True)
     assert np.all(d.converged) and np.all(d.passes >= 2)
-    with pytest.raises(ConvergenceError, match=r"no convergence after 1 iterations \(\|residual\| = 9.91e-09\)"):
+    with pytest.raises(
+        ConvergenceError, match=r"no convergence after 1 iterations \(\|residual\| = 9.91e-09\)"
+    ):
         R.initial_displacement(0.0, g, e, refine=True, max_iter=1)
     flagged = R.initial_displacement(0.0, g, e, refine=True, max_iter=1, raise_on_failure=False)
     assert not flagged.converged and flagged.passes == 1
-    assert flagged.last_change == pytest.approx(abs(flagged.z - flagged.first_approximation.z), rel=1e-9, abs=0)
+    assert flagged.last_change == pytest.approx(
+        abs(flagged.z - flagged.first_approximation.z), rel=1e-9, abs=0
+    )
 
 
 def test_refinement_is_a_second_order_correction(g):
     """The refined pose differs from the first approximation by O(error^2): halving all errors quarters
     the correction."""
+
     def correction(scale):
-        e = R.manufacturing_errors(16, inner=R.RacewayErrors(radial=R.fourier_series({2: scale}, scale=UM)))
+        e = R.manufacturing_errors(
+            16, inner=R.RacewayErrors(radial=R.fourier_series({2: scale}, scale=UM))
+        )
         d = R.initial_displacement(0.0, g, e, refine=True)
         return d.z - d.first_approximation.z
 
@@ -430,8 +496,11 @@ def test_metrics_against_brute_force():
 
 
 def test_synchronous_and_asynchronous_parts(g):
-    e = R.manufacturing_errors(16, ball_diameter_deviation=np.r_[1.0, np.zeros(15)] * UM,
-                               inner=R.RacewayErrors(radial=R.fourier_series({1: 0.5}, scale=UM)))
+    e = R.manufacturing_errors(
+        16,
+        ball_diameter_deviation=np.r_[1.0, np.zeros(15)] * UM,
+        inner=R.RacewayErrors(radial=R.fourier_series({1: 0.5}, scale=UM)),
+    )
     t = R.rotation_sequence(g, e, revolutions=4, steps_per_revolution=90)
     x = t.displacement.x
     sync = R.synchronous_part(x, 90)
@@ -455,7 +524,11 @@ def test_spectrum_of_known_motion():
     assert sp.axial[9] == pytest.approx(0.1, abs=1e-12)
     lines = R.spectrum_lines(sp, 0.45)
     got = {(ln.component, ln.label, ln.source) for ln in lines}
-    assert got == {("radial forward", "1×", "ring"), ("radial backward", "2×", "ring"), ("axial", "κ", "cage")}
+    assert got == {
+        ("radial forward", "1×", "ring"),
+        ("radial backward", "2×", "ring"),
+        ("axial", "κ", "cage"),
+    }
 
 
 def test_cage_override_changes_the_ball_motion(g):
@@ -487,7 +560,9 @@ def test_tolerance_classes_have_sources():
     # V_DWS < V_DWL and both grow with the grade number
     s = [v.single_diameter_variation for v in grades.values()]
     lot = [v.lot_diameter_variation for v in grades.values()]
-    assert np.all(np.diff(s) > 0) and np.all(np.diff(lot) > 0) and all(a < b for a, b in zip(s, lot))
+    assert (
+        np.all(np.diff(s) > 0) and np.all(np.diff(lot) > 0) and all(a < b for a, b in zip(s, lot))
+    )
     with pytest.raises(InputError, match=r"ball_grade must be one of \['G3'"):
         R.ball_grade("G7")
     with pytest.raises(InputError, match=r"ring_class must be one of \['P5'"):
@@ -497,14 +572,25 @@ def test_tolerance_classes_have_sources():
 def test_monte_carlo_is_reproducible_and_independent_of_chunking(g):
     a = R.monte_carlo(g, "G5", "P4", 12, 99, steps_per_revolution=36, chunk_size=5)
     b = R.monte_carlo(g, "G5", "P4", 12, 99, steps_per_revolution=36, chunk_size=12)
-    c = R.monte_carlo(g, "G5", "P4", 12, np.random.SeedSequence(99), steps_per_revolution=36, chunk_size=7)
+    c = R.monte_carlo(
+        g, "G5", "P4", 12, np.random.SeedSequence(99), steps_per_revolution=36, chunk_size=7
+    )
     for name in R.METRICS:
         assert np.array_equal(getattr(a.samples, name), getattr(b.samples, name)), name
         assert np.array_equal(getattr(a.samples, name), getattr(c.samples, name)), name
     d = R.monte_carlo(g, "G5", "P4", 12, 100, steps_per_revolution=36)
     assert not np.array_equal(a.samples.axial_ptp, d.samples.axial_ptp)
     calls = []
-    R.monte_carlo(g, "G5", "P4", 10, 1, steps_per_revolution=12, chunk_size=4, progress=lambda k, n: calls.append((k, n)))
+    R.monte_carlo(
+        g,
+        "G5",
+        "P4",
+        10,
+        1,
+        steps_per_revolution=12,
+        chunk_size=4,
+        progress=lambda k, n: calls.append((k, n)),
+    )
     assert calls == [(4, 10), (8, 10), (10, 10)]
 
 
@@ -516,12 +602,19 @@ def test_monte_carlo_sample_equals_the_public_path(g):
     u = _uniforms(5, [3], _draw_count(16, 15))
     theta1, dd, ser = _sampled_errors(u, 16, R.ball_grade("G10"), R.ring_class("P5"), 15)
     one = {k: R.FourierSeries(v.cos[0], v.sin[0]) for k, v in ser.items()}
-    e = R.manufacturing_errors(16, ball_diameter_deviation=dd[0],
-                               inner=R.RacewayErrors(radial=one["inner"], axial=one["wobble"]),
-                               outer=R.RacewayErrors(radial=one["outer"]))
-    t = R.rotation_sequence(g._replace(first_ball_angle=theta1[0]), e, revolutions=2, steps_per_revolution=60)
+    e = R.manufacturing_errors(
+        16,
+        ball_diameter_deviation=dd[0],
+        inner=R.RacewayErrors(radial=one["inner"], axial=one["wobble"]),
+        outer=R.RacewayErrors(radial=one["outer"]),
+    )
+    t = R.rotation_sequence(
+        g._replace(first_ball_angle=theta1[0]), e, revolutions=2, steps_per_revolution=60
+    )
     for name in R.METRICS:
-        assert getattr(res, name)[0] == pytest.approx(getattr(t.metrics, name), rel=1e-12, abs=1e-20), name
+        assert getattr(res, name)[0] == pytest.approx(
+            getattr(t.metrics, name), rel=1e-12, abs=1e-20
+        ), name
 
 
 def test_monte_carlo_draws_follow_the_tolerance_classes():
@@ -532,14 +625,20 @@ def test_monte_carlo_draws_follow_the_tolerance_classes():
     grade, rings = R.ball_grade("G10"), R.ring_class("P5")
     u = _uniforms(11, np.arange(400), _draw_count(16, 15))
     theta1, dd, ser = _sampled_errors(u, 16, grade, rings, 15)
-    assert np.all(np.abs(dd) <= (grade.lot_diameter_variation + grade.single_diameter_variation) / 2)
+    assert np.all(
+        np.abs(dd) <= (grade.lot_diameter_variation + grade.single_diameter_variation) / 2
+    )
     assert np.all((theta1 >= 0) & (theta1 < 2 * np.pi))
     a1 = np.hypot(ser["inner"].cos[:, 1], ser["inner"].sin[:, 1])
-    assert np.all(a1 <= rings.radial_runout / 2) and a1.mean() == pytest.approx(rings.radial_runout / 4, rel=0.1)
+    assert np.all(a1 <= rings.radial_runout / 2) and a1.mean() == pytest.approx(
+        rings.radial_runout / 4, rel=0.1
+    )
     s1 = np.hypot(ser["wobble"].cos[:, 1], ser["wobble"].sin[:, 1])
     assert np.all(s1 <= rings.axial_runout / 2)
     for key in ("inner", "outer"):
-        ms = 0.5 * (ser[key].cos[:, 2:] ** 2 + ser[key].sin[:, 2:] ** 2).sum(axis=1)  # mean square of orders 2..15
+        ms = 0.5 * (ser[key].cos[:, 2:] ** 2 + ser[key].sin[:, 2:] ** 2).sum(
+            axis=1
+        )  # mean square of orders 2..15
         assert math.sqrt(ms.mean()) == pytest.approx(rings.waviness_rms, rel=0.05)
     assert np.all(ser["outer"].cos[:, :2] == 0)  # outer order 1 only shifts the centre: not drawn
 
@@ -570,9 +669,15 @@ contact_angle = "15 deg"
 
 
 def test_error_file_all_features(tmp_path, g):
-    (tmp_path / "prof.csv").write_text("# angle deg, deviation um\n" + "\n".join(
-        f"{a}, {0.2 * math.cos(math.radians(2 * a))}" for a in range(0, 360, 15)), encoding="utf-8")
-    p = _write(tmp_path, GEOM + """
+    (tmp_path / "prof.csv").write_text(
+        "# angle deg, deviation um\n"
+        + "\n".join(f"{a}, {0.2 * math.cos(math.radians(2 * a))}" for a in range(0, 360, 15)),
+        encoding="utf-8",
+    )
+    p = _write(
+        tmp_path,
+        GEOM
+        + """
 first_ball_angle = "10 deg"
 [errors.inner.radial]
 profile = "prof.csv"
@@ -592,38 +697,55 @@ inner_deficit = [0, 0.2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
 [tilt]
 alpha = 5
 beta = "-0.01 mrad"
-""")
+""",
+    )
     geom, e = R.load_error_file(p)
     assert geom.first_ball_angle == pytest.approx(math.radians(10))
     assert_allclose(e.inner.radial.cos, [0, 0, 0.2e-6, 0, 0], atol=1e-18)
     assert e.inner.axial.sin[1] == pytest.approx(0.3e-6)
     assert e.outer.groove.cos[0] == pytest.approx(50e-9)
     assert_allclose(e.outer.normal.cos, [0, 0.1e-6], atol=1e-18)
-    assert e.ball_outer_deficit[0] == pytest.approx(0.1e-6) and e.ball_inner_deficit[1] == pytest.approx(0.2e-6)
+    assert e.ball_outer_deficit[0] == pytest.approx(0.1e-6) and e.ball_inner_deficit[
+        1
+    ] == pytest.approx(0.2e-6)
     assert e.tilt_x == pytest.approx(5e-6) and e.tilt_y == pytest.approx(-10e-6)
     # a given geometry overrides the file's
     g2, _ = R.load_error_file(p, g)
     assert g2 is g
 
 
-@pytest.mark.parametrize("text, match", [
-    ("[geometry]\nballs = 16\n", "ball_diameter"),
-    (GEOM + "[errors.inner.radial]\ncos = { 1 = 0.5 }\nfoo = 1\n", r"\[errors.inner.radial\], key 'foo': unknown key"),
-    (GEOM + "[errors.balls]\ndiameter = [0.1, 0.2]\n", "16 balls, got 2 values"),
-    (GEOM + "[errors.inner.radial]\ncos = { 1 = 0.5 }\nprofile = 'x.csv'\nmax_order = 2\n", "not both"),
-    (GEOM + "[errors.inner.radial]\nprofile = 'missing.csv'\nmax_order = 2\n", "no such file"),
-    (GEOM + "[errors.inner.radial]\nprofile = 'missing.csv'\n", "max_order"),
-    (GEOM + "[errors.inner.radial]\ncos = { 1 = '2 kg' }\n", "is a mass, expected a length"),
-    (GEOM + "[errors.inner.radial]\nsin = { 0 = 1 }\n", "sin has no order 0"),
-    (GEOM + "[errors.inner.wobble]\ncos = { 1 = 1 }\n", "unknown key"),
-    (GEOM + "[tilt]\nalpha = '3 mm'\n", "expected an angle"),
-    (GEOM + "[errors.balls]\ndiameter = [0.1]\nouter_deficit = [0.1]\n", "not both"),
-    (GEOM.replace("pitch_diameter = \"54 mm\"", "inner_bottom_radius = \"23.4 mm\"\npitch_diameter = \"54 mm\""),
-     "exactly one"),
-    (GEOM.replace("0.53", "0.49"), "outer_conformity must be > 0.5"),
-    ("title = 'x'\n", "no \\[geometry\\] table"),
-    ("[geometry\n", "not valid TOML"),
-])
+@pytest.mark.parametrize(
+    "text, match",
+    [
+        ("[geometry]\nballs = 16\n", "ball_diameter"),
+        (
+            GEOM + "[errors.inner.radial]\ncos = { 1 = 0.5 }\nfoo = 1\n",
+            r"\[errors.inner.radial\], key 'foo': unknown key",
+        ),
+        (GEOM + "[errors.balls]\ndiameter = [0.1, 0.2]\n", "16 balls, got 2 values"),
+        (
+            GEOM + "[errors.inner.radial]\ncos = { 1 = 0.5 }\nprofile = 'x.csv'\nmax_order = 2\n",
+            "not both",
+        ),
+        (GEOM + "[errors.inner.radial]\nprofile = 'missing.csv'\nmax_order = 2\n", "no such file"),
+        (GEOM + "[errors.inner.radial]\nprofile = 'missing.csv'\n", "max_order"),
+        (GEOM + "[errors.inner.radial]\ncos = { 1 = '2 kg' }\n", "is a mass, expected a length"),
+        (GEOM + "[errors.inner.radial]\nsin = { 0 = 1 }\n", "sin has no order 0"),
+        (GEOM + "[errors.inner.wobble]\ncos = { 1 = 1 }\n", "unknown key"),
+        (GEOM + "[tilt]\nalpha = '3 mm'\n", "expected an angle"),
+        (GEOM + "[errors.balls]\ndiameter = [0.1]\nouter_deficit = [0.1]\n", "not both"),
+        (
+            GEOM.replace(
+                'pitch_diameter = "54 mm"',
+                'inner_bottom_radius = "23.4 mm"\npitch_diameter = "54 mm"',
+            ),
+            "exactly one",
+        ),
+        (GEOM.replace("0.53", "0.49"), "outer_conformity must be > 0.5"),
+        ("title = 'x'\n", "no \\[geometry\\] table"),
+        ("[geometry\n", "not valid TOML"),
+    ],
+)
 def test_error_file_problems_name_the_place(tmp_path, text, match):
     p = _write(tmp_path, text)
     with pytest.raises(CatalogError, match=match):
@@ -631,7 +753,10 @@ def test_error_file_problems_name_the_place(tmp_path, text, match):
 
 
 def test_error_file_is_not_modified(tmp_path):
-    p = _write(tmp_path, GEOM + "[errors.balls]\ndiameter = [2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]\n")
+    p = _write(
+        tmp_path,
+        GEOM + "[errors.balls]\ndiameter = [2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]\n",
+    )
     before = p.read_bytes(), p.stat().st_mtime_ns
     R.load_error_file(p)
     assert (p.read_bytes(), p.stat().st_mtime_ns) == before

@@ -40,8 +40,14 @@ def half_unit(value):
 @pytest.fixture(scope="module")
 def g():
     r = REF["geometry"]
-    return R.geometry_from_catalog(r["balls"], r["ball_diameter"] * 1e-3, r["pitch_diameter"] * 1e-3,
-                                   r["outer_conformity"], r["inner_conformity"], math.radians(r["contact_angle"]))
+    return R.geometry_from_catalog(
+        r["balls"],
+        r["ball_diameter"] * 1e-3,
+        r["pitch_diameter"] * 1e-3,
+        r["outer_conformity"],
+        r["inner_conformity"],
+        math.radians(r["contact_angle"]),
+    )
 
 
 def example1():
@@ -49,15 +55,21 @@ def example1():
 
 
 def example2():
-    return R.manufacturing_errors(16, inner=R.RacewayErrors(radial=R.fourier_series({2: 1.0}, scale=UM)))
+    return R.manufacturing_errors(
+        16, inner=R.RacewayErrors(radial=R.fourier_series({2: 1.0}, scale=UM))
+    )
 
 
 def example3():
     r = REF["example3"]
     inner = R.RacewayErrors(radial=R.fourier_series(r["inner_cos"], r["inner_sin"], scale=UM))
     outer = R.RacewayErrors(radial=R.fourier_series(r["outer_cos"], r["outer_sin"], scale=UM))
-    return R.manufacturing_errors(16, inner=inner, outer=outer,
-                                  ball_diameter_deviation=np.array(r["ball_diameter_deviation"]) * UM)
+    return R.manufacturing_errors(
+        16,
+        inner=inner,
+        outer=outer,
+        ball_diameter_deviation=np.array(r["ball_diameter_deviation"]) * UM,
+    )
 
 
 def contacts(d):
@@ -67,9 +79,17 @@ def contacts(d):
 # ------------------------------------------------------------------------------------------- section 2
 def test_reference_geometry(g):
     r = REF["geometry"]
-    got = {"r30": g.ball_radius, "rho10": g.outer_groove_radius, "rho20": g.inner_groove_radius,
-           "A0": g.groove_distance, "R_b": g.ball_centre_radius, "H20": g.inner_bottom_radius,
-           "H10": g.outer_bottom_radius, "S": g.axial_offset, "R_c2": g.inner_centre_radius}
+    got = {
+        "r30": g.ball_radius,
+        "rho10": g.outer_groove_radius,
+        "rho20": g.inner_groove_radius,
+        "A0": g.groove_distance,
+        "R_b": g.ball_centre_radius,
+        "H20": g.inner_bottom_radius,
+        "H10": g.outer_bottom_radius,
+        "S": g.axial_offset,
+        "R_c2": g.inner_centre_radius,
+    }
     for key, value in got.items():  # printed to 6 decimals in mm (A0 to 5)
         assert value * 1e3 == pytest.approx(r[key], abs=0.5e-6 if key != "A0" else 0.5e-5), key
     assert g.pitch_ratio == pytest.approx(r["gamma"], abs=0.5e-6)
@@ -79,8 +99,15 @@ def test_reference_geometry(g):
 
 
 def test_radii_form_gives_the_same_geometry(g):
-    h = R.geometry_from_radii(16, g.ball_radius, g.outer_groove_radius, g.inner_groove_radius, g.inner_bottom_radius,
-                              g.contact_angle, outer_bottom_radius=g.outer_bottom_radius)
+    h = R.geometry_from_radii(
+        16,
+        g.ball_radius,
+        g.outer_groove_radius,
+        g.inner_groove_radius,
+        g.inner_bottom_radius,
+        g.contact_angle,
+        outer_bottom_radius=g.outer_bottom_radius,
+    )
     for a, b in zip(g, h):
         assert a == pytest.approx(b, rel=1e-14, abs=1e-18)
 
@@ -90,7 +117,9 @@ def test_tilt_only_example(g):
     r = REF["tilt_only"]
     e = R.manufacturing_errors(16, tilt_x=r["alpha_urad"] * UM, tilt_y=r["beta_urad"] * UM)
     d = R.initial_displacement(0.0, g, e)
-    assert um([d.contact.constant, d.contact.sine, d.contact.cosine]) == pytest.approx([0, 0, 0], abs=TOL)
+    assert um([d.contact.constant, d.contact.sine, d.contact.cosine]) == pytest.approx(
+        [0, 0, 0], abs=TOL
+    )
     assert_allclose(um([d.x, d.y, d.z]), [r["dx"], r["dy"], r["dz"]], atol=half_unit(r["dx"]))
     # dx = beta R_c2 tan(tau0), dy = -alpha R_c2 tan(tau0) exactly
     k = g.inner_centre_radius * math.tan(g.contact_angle)
@@ -104,7 +133,9 @@ def test_example1_single_position(g, method):
     r = REF["example1"]
     d = R.initial_displacement(0.0, g, example1(), method=method)
     c = d.contact
-    assert_allclose(um([c.constant, c.sine, c.cosine, c.amplitude]), [r["a0"], r["B"], r["D"], r["A"]], atol=TOL)
+    assert_allclose(
+        um([c.constant, c.sine, c.cosine, c.amplitude]), [r["a0"], r["B"], r["D"], r["A"]], atol=TOL
+    )
     assert math.degrees(c.phase) == pytest.approx(r["phi"], abs=1e-6)
     assert contacts(d) == r["contacts"]
     assert bool(c.degenerate) is r["degenerate"]
@@ -127,7 +158,10 @@ def test_example1_face_ends(g):
     # an LP over the face confirms both ends
     face = np.column_stack([np.sin(th), np.cos(th)])
     rhs = dk - r["a0"] + 1e-12
-    ends = [linprog(c, A_ub=face, b_ub=rhs, bounds=[(None, None)] * 2, method="highs").x[0] for c in ([1, 0], [-1, 0])]
+    ends = [
+        linprog(c, A_ub=face, b_ub=rhs, bounds=[(None, None)] * 2, method="highs").x[0]
+        for c in ([1, 0], [-1, 0])
+    ]
     assert_allclose(ends, [-r["face_B_half"], r["face_B_half"]], atol=0.5e-6)
 
 
@@ -168,19 +202,30 @@ def test_example2_psi0_refined(g):
     r = REF["example2"]
     d = R.initial_displacement(0.0, g, example2(), refine=True)
     assert um(d.z) == pytest.approx(r["psi0_refined_dz"], abs=TOL_REFINED)
-    assert um(d.x) == pytest.approx(0.0, abs=TOL_REFINED) and um(d.y) == pytest.approx(0.0, abs=TOL_REFINED)
+    assert um(d.x) == pytest.approx(0.0, abs=TOL_REFINED) and um(d.y) == pytest.approx(
+        0.0, abs=TOL_REFINED
+    )
     assert bool(d.converged)
     shifts = d.shifts
-    for i in np.array(r["psi0_contacts"]) - 1:  # d tau1 = d tau2 = -0.010119 rad at the contacts (no tilt)
+    for i in (
+        np.array(r["psi0_contacts"]) - 1
+    ):  # d tau1 = d tau2 = -0.010119 rad at the contacts (no tilt)
         assert shifts.outer_angle_shift[i] == pytest.approx(r["psi0_refined_dtau_rad"], abs=0.5e-6)
         assert shifts.inner_angle_shift[i] == pytest.approx(r["psi0_refined_dtau_rad"], abs=0.5e-6)
     # section 9: dz = -3.7 um changes the contact angle by -0.58 deg
-    assert math.degrees(shifts.inner_angle_shift[0]) == pytest.approx(r["contact_angle_change"], abs=0.005)
+    assert math.degrees(shifts.inner_angle_shift[0]) == pytest.approx(
+        r["contact_angle_change"], abs=0.005
+    )
 
 
-@pytest.mark.parametrize("example, psi, key", [("example2", 0.0, "psi0_refined_passes"),
-                                               ("example3", 0.0, "psi0_refined_passes"),
-                                               ("example3", 90.0, "psi90_refined_passes")])
+@pytest.mark.parametrize(
+    "example, psi, key",
+    [
+        ("example2", 0.0, "psi0_refined_passes"),
+        ("example3", 0.0, "psi0_refined_passes"),
+        ("example3", 90.0, "psi90_refined_passes"),
+    ],
+)
 def test_refinement_pass_counts(g, example, psi, key):
     """The printed pass counts (6, 5, 4) do not follow from the stated tolerance of 1e-9 um, which stops
     after 4, 3 and 3 passes here (the pose changes by 1.7e-10, 3.9e-10 and 1.5e-11 um at those passes).
@@ -218,7 +263,9 @@ def test_example2_axial_ptp_tends_to_the_analytic_value(g):
     """Over a full cycle the axial peak-to-peak is cos(tau0)(1 - cos(pi/8))/sin(tau0) = 0.284085 um; the
     1080-step trajectory misses the exact extreme by 0.0008 um, a fine one does not."""
     r = REF["example2"]
-    analytic = math.cos(g.contact_angle) * (1 - math.cos(math.pi / 8)) / math.sin(g.contact_angle)  # um per um
+    analytic = (
+        math.cos(g.contact_angle) * (1 - math.cos(math.pi / 8)) / math.sin(g.contact_angle)
+    )  # um per um
     assert analytic == pytest.approx(r["axial_ptp_analytic"], abs=0.5e-6)
     # dz is lowest when a ball sits at the ovality's minor axis (psi = 0) and highest when two balls sit
     # symmetrically about it, the ball set turned by pi/16 relative to the inner ring: (kappa - 1) psi = -pi/16
@@ -238,7 +285,9 @@ def test_example3_psi0(g, method):
     d = R.initial_displacement(0.0, g, example3(), method=method)
     assert_allclose(um(d.generalized_error), r["psi0_dk"], atol=0.5e-6)  # printed to 6 decimals
     c = d.contact
-    assert_allclose(um([c.constant, c.sine, c.cosine]), [r["psi0_a0"], r["psi0_B"], r["psi0_D"]], atol=TOL)
+    assert_allclose(
+        um([c.constant, c.sine, c.cosine]), [r["psi0_a0"], r["psi0_B"], r["psi0_D"]], atol=TOL
+    )
     assert contacts(d) == r["psi0_contacts"]
     assert bool(c.degenerate)
     assert um(c.face_diameter) == pytest.approx(r["psi0_face_diameter"], abs=0.5e-6)
@@ -251,10 +300,14 @@ def test_example3_psi90(g, method):
     d = R.initial_displacement(math.radians(90.0), g, example3(), method=method)
     assert math.degrees(d.ball_angle[0]) == pytest.approx(r["psi90_ball1"], rel=1e-6)
     c = d.contact
-    assert_allclose(um([c.constant, c.sine, c.cosine]), [r["psi90_a0"], r["psi90_B"], r["psi90_D"]], atol=TOL)
+    assert_allclose(
+        um([c.constant, c.sine, c.cosine]), [r["psi90_a0"], r["psi90_B"], r["psi90_D"]], atol=TOL
+    )
     assert contacts(d) == r["psi90_contacts"]
     assert not bool(c.degenerate)
-    assert_allclose(c.load_share[np.array(r["psi90_contacts"]) - 1], r["psi90_load_share"], atol=0.5e-6)
+    assert_allclose(
+        c.load_share[np.array(r["psi90_contacts"]) - 1], r["psi90_load_share"], atol=0.5e-6
+    )
     assert_allclose(um([d.x, d.y, d.z]), r["psi90_pose"], atol=TOL)
 
 
@@ -287,13 +340,17 @@ def test_example3_refined_trajectory(g):
     t = R.rotation_sequence(g, example3(), revolutions=3, steps_per_revolution=36, refine=True)
     assert np.all(t.displacement.converged)
     for name in R.METRICS:
-        assert um(getattr(t.metrics, name)) == pytest.approx(r[f"refined_{name}"], abs=TOL_REFINED), name
+        assert um(getattr(t.metrics, name)) == pytest.approx(
+            r[f"refined_{name}"], abs=TOL_REFINED
+        ), name
 
 
 def test_example3_with_15_balls_has_no_degenerate_position(g):
     g15 = R.geometry_from_catalog(15, 7.144e-3, 54e-3, 0.53, 0.52, math.radians(15))
     e = example3()
-    e15 = e._replace(ball_outer_deficit=e.ball_outer_deficit[:15], ball_inner_deficit=e.ball_inner_deficit[:15])
+    e15 = e._replace(
+        ball_outer_deficit=e.ball_outer_deficit[:15], ball_inner_deficit=e.ball_inner_deficit[:15]
+    )
     t = R.rotation_sequence(g15, e15, revolutions=3, steps_per_revolution=360)
     assert t.degenerate_fraction == 0.0
 
@@ -301,17 +358,23 @@ def test_example3_with_15_balls_has_no_degenerate_position(g):
 def test_example3_midpoint_tie_break_moves_points_but_not_metrics(g):
     r = REF["example3"]
     a = R.rotation_sequence(g, example3(), revolutions=3, steps_per_revolution=360)
-    b = R.rotation_sequence(g, example3(), revolutions=3, steps_per_revolution=360, tie_break="midpoint")
+    b = R.rotation_sequence(
+        g, example3(), revolutions=3, steps_per_revolution=360, tie_break="midpoint"
+    )
     move = np.hypot(a.displacement.x - b.displacement.x, a.displacement.y - b.displacement.y)
-    face_move = np.hypot(a.displacement.contact.sine - b.displacement.contact.sine,
-                         a.displacement.contact.cosine - b.displacement.contact.cosine)
+    face_move = np.hypot(
+        a.displacement.contact.sine - b.displacement.contact.sine,
+        a.displacement.contact.cosine - b.displacement.contact.cosine,
+    )
     # The spec's "up to 0.265 um" is the move in the (B, D) plane (0.26557 um, i.e. truncated, not rounded);
     # the ring centre itself moves 1/cos(tau0) times as far, 0.27494 um. Tolerance 1e-3 um covers the
     # truncation; see the report.
     assert um(face_move.max()) == pytest.approx(r["midpoint_max_move"], abs=1e-3)
     assert move.max() == pytest.approx(face_move.max() / math.cos(g.contact_angle), rel=1e-9)
     for name in R.METRICS:
-        assert um(getattr(b.metrics, name)) == pytest.approx(um(getattr(a.metrics, name)), abs=1e-9), name
+        assert um(getattr(b.metrics, name)) == pytest.approx(
+            um(getattr(a.metrics, name)), abs=1e-9
+        ), name
 
 
 # ------------------------------------------------------------------------------------------- example 4
@@ -340,22 +403,34 @@ def test_example4_exact_geometry(g):
         exact = R.exact_reduction(th, *pose, g, tilt_x=alpha, tilt_y=beta)
         worst = um(np.abs(exact - linear).max())
         assert worst == pytest.approx(r[key], rel=0.05 / 9.3), key  # 2 significant digits printed
-    assert um(R.exact_reduction(0.0, 0.0, 0.0, 1.0 * UM, g)) == pytest.approx(r["dz1_exact"], abs=0.5e-6)
-    assert um(R.sinusoid_from_pose(0.0, 0.0, 1.0 * UM, g).constant) == pytest.approx(r["dz1_linear"], abs=0.5e-6)
+    assert um(R.exact_reduction(0.0, 0.0, 0.0, 1.0 * UM, g)) == pytest.approx(
+        r["dz1_exact"], abs=0.5e-6
+    )
+    assert um(R.sinusoid_from_pose(0.0, 0.0, 1.0 * UM, g).constant) == pytest.approx(
+        r["dz1_linear"], abs=0.5e-6
+    )
 
 
 def test_example4_exact_minus_linear_is_about_the_quadratic_term(g):
     """Section 9: |exact - linear| ~ |delta_perp|^2 / (2 A0) in s; a pure dz = 1 um has delta_perp = dz cos tau0."""
     d_perp = 1.0 * UM * math.cos(g.contact_angle)
     quad = d_perp**2 / (2 * g.groove_distance)
-    diff = R.exact_reduction(0.0, 0.0, 0.0, 1.0 * UM, g) - R.sinusoid_from_pose(0.0, 0.0, 1.0 * UM, g).constant
+    diff = (
+        R.exact_reduction(0.0, 0.0, 0.0, 1.0 * UM, g)
+        - R.sinusoid_from_pose(0.0, 0.0, 1.0 * UM, g).constant
+    )
     assert diff == pytest.approx(quad, rel=0.01)
 
 
 # ------------------------------------------------------------------------------------------- shipped files
-@pytest.mark.parametrize("name, key", [("example1_oversize_ball.toml", "example1"),
-                                       ("example2_inner_ovality.toml", "example2"),
-                                       ("example3_mixed.toml", "example3")])
+@pytest.mark.parametrize(
+    "name, key",
+    [
+        ("example1_oversize_ball.toml", "example1"),
+        ("example2_inner_ovality.toml", "example2"),
+        ("example3_mixed.toml", "example3"),
+    ],
+)
 def test_shipped_example_files_reproduce_the_spec(name, key):
     geom, e = R.load_error_file(EXAMPLES / name)
     t = R.rotation_sequence(geom, e, revolutions=3, steps_per_revolution=360)
@@ -376,8 +451,11 @@ def test_shipped_example4_file_recovers_the_pose_at_every_angle():
 
 # ------------------------------------------------------------------------------------------- section 11
 def _mc_reference():
-    lines = [ln for ln in (DATA / "runout_monte_carlo_reference.csv").read_text().splitlines()
-             if ln and not ln.startswith("#")]
+    lines = [
+        ln
+        for ln in (DATA / "runout_monte_carlo_reference.csv").read_text().splitlines()
+        if ln and not ln.startswith("#")
+    ]
     return list(csv.DictReader(lines))
 
 
@@ -385,7 +463,9 @@ def _mc_reference():
 def test_monte_carlo_statistical_acceptance(g, case, n):
     """Section 11: with N samples the sample means lie within mean +- 3 std / sqrt(N) of the table."""
     grade, rings = case.split("/")
-    res = R.monte_carlo(g, grade, rings, n, 20260, steps_per_revolution=180, revolutions=2, max_order=15)
+    res = R.monte_carlo(
+        g, grade, rings, n, 20260, steps_per_revolution=180, revolutions=2, max_order=15
+    )
     rows = [row for row in _mc_reference() if row["case"] == case]
     assert len(rows) == 3
     for row in rows:
