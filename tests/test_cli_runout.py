@@ -279,12 +279,12 @@ def test_monte_carlo_text_and_bearing(capsys):
     ],
 )
 def test_bad_input_is_one_line_and_exit_2(capsys, args, match):
-    code, out, err = run(capsys, *args)
+    code, _out, err = run(capsys, *args)
     assert_one_line_error(code, err, 2, match)
 
 
 def test_ball_count_mismatch_names_the_file(capsys):
-    code, out, err = run(capsys, "runout", "--errors", EX3, "--bearing", "4-1006095")
+    code, _out, err = run(capsys, "runout", "--errors", EX3, "--bearing", "4-1006095")
     assert_one_line_error(code, err, 2, "needs one value per ball: 7 balls, got 16 values")
     assert "example3_mixed.toml" in err
 
@@ -299,7 +299,7 @@ def test_non_convergence_exits_3(capsys, monkeypatch):
         )
 
     monkeypatch.setattr(runout, "initial_displacement", failing)
-    code, out, err = run(capsys, "runout", "--errors", EX3, "--refine")
+    code, _out, err = run(capsys, "runout", "--errors", EX3, "--refine")
     assert_one_line_error(code, err, 3, "no convergence after 30 iterations")
 
 
