@@ -356,3 +356,8 @@ def test_progress_bar_on_a_terminal(capsys, monkeypatch):
         "--json",
     )
     assert code == 0 and err == ""
+
+
+def test_negative_seed_is_an_input_error(capsys):
+    code, _out, err = run(capsys, "runout", "monte-carlo", "--geometry", MC, "--samples", "4", "--seed", "-1")
+    assert_one_line_error(code, err, 2, "seed must be a whole number >= 0")

@@ -780,3 +780,27 @@ def test_benchmark_functions_agree_on_a_small_input():
     sol = bench.solve_batch(dk, theta)
     a0 = bench.solve_one_by_one(dk[:8], theta[:8])
     assert_allclose(um(sol.constant[:8]), um(a0), atol=1e-6)
+
+
+def test_monte_carlo_seed_checks(g):
+    for bad in (-1, 1.5, "7", True):
+        with pytest.raises(InputError, match="seed must be a whole number >= 0"):
+            R.monte_carlo(g, "G5", "P4", 4, bad, steps_per_revolution=12)
+    r = R.monte_carlo(g, "G5", "P4", 4, np.int64(5), steps_per_revolution=12)
+    assert r.seed == 5
+
+
+def test_shipped_measured_profile_example():
+    """The profile example: catalog geometry, a CSV roundness profile, inline samples, contact deficits and a
+    tilt varying with rotation."""
+    from pathlib import Path
+
+    path = Path(__file__).parent.parent / "examples" / "runout" / "measured_profile.toml"
+    geom, e = R.load_error_file(path)
+    assert geom.n_balls == 16 and geom.contact_angle == pytest.approx(math.radians(40))
+    assert geom.first_ball_angle == pytest.approx(math.radians(5))
+    assert e.inner.radial.cos.size == 9 and e.outer.radial.cos.size == 4
+    assert isinstance(e.tilt_x, R.FourierSeries) and isinstance(e.tilt_y, R.FourierSeries)
+    t = R.rotation_sequence(geom, e, revolutions=2, steps_per_revolution=90, refine=True)
+    assert np.all(t.displacement.converged)
+    assert 0 < t.metrics.radial_ptp_max < 5 * UM

@@ -38,6 +38,7 @@ from ._solve import (
     RUNOUT_STRICT_WEIGHT,
     RUNOUT_TIE_TOL_UM,
 )
+from .errors import ConvergenceError
 
 __all__: list[str] = []
 
@@ -399,7 +400,13 @@ def solve_lp(dk, angles, centre_b, centre_d):
             options=opts,
         )
         if res.status != 0:
-            raise RuntimeError(f"linprog failed at position {p}: {res.message}")
+            raise ConvergenceError(
+                "runout.solve_contact (linprog)",
+                iterations=res.nit,
+                residual=np.inf,
+                estimate=res.x,
+                reason=f"position {p}: {res.message}",
+            )
         a = res.x[0]
         face = np.column_stack([sx, cx])
         rhs = dk[p] - a + RUNOUT_TIE_TOL_UM * scale(dk[p])
@@ -409,7 +416,13 @@ def solve_lp(dk, angles, centre_b, centre_d):
                 obj, A_ub=face, b_ub=rhs, bounds=[(None, None)] * 2, method="highs-ds", options=opts
             )
             if r2.status != 0:
-                raise RuntimeError(f"linprog (face) failed at position {p}: {r2.message}")
+                raise ConvergenceError(
+                    "runout.solve_contact (linprog, face)",
+                    iterations=r2.nit,
+                    residual=np.inf,
+                    estimate=r2.x,
+                    reason=f"position {p}: {r2.message}",
+                )
             ends.append(r2.x)
         ends = np.array(ends)
         dist = np.hypot(ends[:, None, 0] - ends[None, :, 0], ends[:, None, 1] - ends[None, :, 1])

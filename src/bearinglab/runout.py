@@ -2123,6 +2123,17 @@ class MonteCarloResult(NamedTuple):
     max_order: int
 
 
+def _seed(seed):
+    """(entropy, spawn-key prefix) of a root seed: a whole number >= 0 or a SeedSequence."""
+    if isinstance(seed, np.random.SeedSequence):
+        return seed.entropy, tuple(seed.spawn_key)
+    if isinstance(seed, (bool, np.bool_)) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        raise InputError(
+            f"seed must be a whole number >= 0 or a numpy.random.SeedSequence, got {seed!r}"
+        )
+    return int(seed), ()
+
+
 def _uniforms(seed, index, count):
     """``count`` uniforms per sample from the sample's own generator.
 
@@ -2130,10 +2141,7 @@ def _uniforms(seed, index, count):
     ``SeedSequence(seed).spawn`` would give, so a sample's numbers do not depend on how the samples are
     split into chunks.
     """
-    if isinstance(seed, np.random.SeedSequence):
-        entropy, prefix = seed.entropy, tuple(seed.spawn_key)
-    else:
-        entropy, prefix = int(seed), ()
+    entropy, prefix = _seed(seed)
     # a loop over samples for the draws only (one generator call each); the physics below is batched
     return np.stack(
         [
@@ -2384,6 +2392,7 @@ def monte_carlo(
     ['axial_ptp', 'dz_mean', 'radial_ptp_max', 'radial_ptp_x', 'radial_ptp_y']
     """
     total = int(check_integer("n_samples", n_samples, 2))
+    _seed(seed)
     chunk = int(check_integer("chunk_size", chunk_size, 1))
     grade = ball_grade(grade)
     rings = ring_class(rings)
@@ -2407,7 +2416,7 @@ def monte_carlo(
             progress(int(idx[-1]) + 1, total)
     samples = MonteCarloSamples(*(np.concatenate(f) for f in zip(*parts)))
     summary = {name: summarize(getattr(samples, name)) for name in METRICS}
-    seed_out = seed if isinstance(seed, int) else int(getattr(seed, "entropy", 0) or 0)
+    seed_out = _seed(seed)[0]
     return MonteCarloResult(
         samples,
         summary,
