@@ -43,7 +43,7 @@ def main():
         if code != 0 or not results:
             failed.append(script.name)
         rows += [(script.name, name, f) for name, f in results]
-    stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    stamp = _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%d %H:%M UTC")
     lines = [BEGIN, f"Last `make bench`: {stamp}, Python {platform.python_version()}, {os.cpu_count()} cores.", "",
              "| script | result | cases/s (batched) | cases/s (baseline) | ratio | other |", "|---|---|---|---|---|---|"]
     for script, name, f in rows:

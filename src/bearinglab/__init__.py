@@ -18,9 +18,38 @@ report      self-contained HTML reports of the friction lab, with PNG/SVG plots,
 quasistatic high-speed angular-contact bearing under thrust: centrifugal force, gyroscopic moment (spec 004)
 """
 
-from . import (bearing, catalog, errors, friction, geometry, hertz, kinematics, lab, parallel, quasistatic, report, runout,
-               static, units)
+from . import (
+               bearing,
+               catalog,
+               errors,
+               friction,
+               geometry,
+               hertz,
+               kinematics,
+               lab,
+               parallel,
+               quasistatic,
+               report,
+               runout,
+               static,
+               units,
+)
 
 __version__ = "0.1.0"
-__all__ = ["bearing", "catalog", "errors", "friction", "geometry", "hertz", "kinematics", "lab", "parallel", "quasistatic", "report", "runout",
-           "static", "units", "__version__"]
+__all__ = [
+               "__version__",
+               "bearing",
+               "catalog",
+               "errors",
+               "friction",
+               "geometry",
+               "hertz",
+               "kinematics",
+               "lab",
+               "parallel",
+               "quasistatic",
+               "report",
+               "runout",
+               "static",
+               "units",
+]

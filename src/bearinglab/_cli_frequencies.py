@@ -8,7 +8,7 @@ import os
 import re
 import tempfile
 from pathlib import Path
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
@@ -97,7 +97,7 @@ def frequencies(
         str, typer.Option("--outer-speed", help="Outer-ring speed, same sense as --speed.")
     ] = "0 rpm",
     axial_load: Annotated[
-        Optional[str],
+        str | None,
         typer.Option(
             "--axial-load",
             "-F",
@@ -137,7 +137,7 @@ def frequencies(
         bool, typer.Option("--mask", help="Print (or add to the JSON) the spectral-mask table.")
     ] = False,
     csv_file: Annotated[
-        Optional[Path], typer.Option("--csv", help="Write the spectral mask to this CSV file.")
+        Path | None, typer.Option("--csv", help="Write the spectral mask to this CSV file.")
     ] = None,
     json_out: JsonFlag = False,
 ):

@@ -7,11 +7,11 @@ subcommand are rejected rather than silently ignored.
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import io
 import math
 import os
-import sys
 import tempfile
 from pathlib import Path
 from typing import Annotated
@@ -21,7 +21,17 @@ import typer
 
 from . import catalog as _catalog
 from . import runout
-from .cli import BearingName, CatalogFile, JsonFlag, console, emit_json, table
+from .cli import (
+    BearingName,
+    CatalogFile,
+    ExecutorOpt,
+    JsonFlag,
+    WorkersOpt,
+    console,
+    emit_json,
+    progress_bar,
+    table,
+)
 from .errors import CatalogError, ConvergenceError, InputError
 from .units import parse_quantity
 
@@ -509,7 +519,9 @@ def monte_carlo_command(
         int, typer.Option("--max-order", help="Highest waviness order K_max.")
     ] = 15,
     cage_ratio: CageRatio = None,
-    chunk_size: Annotated[int, typer.Option("--chunk-size", help="Samples per batch.")] = 100,
+    chunk_size: Annotated[int, typer.Option("--chunk-size", help="Samples per batch (task).", rich_help_panel="Execution")] = 100,
+    executor: ExecutorOpt = None,
+    workers: WorkersOpt = None,
     samples_csv: Annotated[
         Path | None, typer.Option("--samples-csv", help="Write the per-sample metrics as CSV.")
     ] = None,
@@ -528,35 +540,9 @@ def monte_carlo_command(
         raise InputError(f"samples must be >= 2 [-], got {samples}")
     grade = runout.ball_grade(ball_grade)
     rings = runout.ring_class(ring_class)
-    show = progress and sys.stderr.isatty()
-    if show:
-        from rich.console import Console
-        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeRemainingColumn
-
-        bar = Progress(
-            "[progress.description]{task.description}",
-            BarColumn(),
-            MofNCompleteColumn(),
-            TimeRemainingColumn(),
-            console=Console(stderr=True),
-            transient=True,
-        )
-        with bar:
-            task = bar.add_task("Monte Carlo", total=samples)
-            r = runout.monte_carlo(
-                g,
-                grade,
-                rings,
-                samples,
-                seed,
-                steps_per_revolution=steps_per_rev,
-                revolutions=revolutions,
-                max_order=max_order,
-                cage_ratio=cage_ratio,
-                chunk_size=chunk_size,
-                progress=lambda done, total: bar.update(task, completed=done),
-            )
-    else:
+    ex = executor or "serial"
+    bar = progress_bar("Monte Carlo", ex) if progress else contextlib.nullcontext(None)
+    with bar as callback:  # rich for serial, dask's progress bar on a cluster; none off a terminal
         r = runout.monte_carlo(
             g,
             grade,
@@ -568,6 +554,9 @@ def monte_carlo_command(
             max_order=max_order,
             cage_ratio=cage_ratio,
             chunk_size=chunk_size,
+            progress=callback,
+            executor=ex,
+            workers=workers,
         )
     info = {
         "samples": samples,

@@ -3,15 +3,32 @@
 from __future__ import annotations
 
 import math
-from typing import Annotated, Optional
+from typing import Annotated
 
 import numpy as np
 import typer
 
 from . import static
-from .cli import (BallDiameter, BallMaterial, Balls, BearingFile, BearingName, CatalogFile, Clearance,
-                  ContactAngle, InnerConformity, InnerRadius, JsonFlag, OuterConformity, OuterRadius,
-                  PitchDiameter, console, emit_json, resolve_bearing, table)
+from .cli import (
+    BallDiameter,
+    BallMaterial,
+    Balls,
+    BearingFile,
+    BearingName,
+    CatalogFile,
+    Clearance,
+    ContactAngle,
+    InnerConformity,
+    InnerRadius,
+    JsonFlag,
+    OuterConformity,
+    OuterRadius,
+    PitchDiameter,
+    console,
+    emit_json,
+    resolve_bearing,
+    table,
+)
 from .errors import InputError
 from .units import KGF, format_dms, parse_values, to_dms, to_rpm
 
@@ -33,8 +50,8 @@ def axial_angle(
     contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
     hertz: Annotated[str, typer.Option("--hertz", help="exact (default) | table (the bearing's tabulated 2K/(πμ)).")] = "exact",
     legacy: Annotated[bool, typer.Option("--legacy", help="Reproduce the paper's printed rounding (π = 3.14, F cut to 3 decimals).")] = False,
-    x0: Annotated[Optional[float], typer.Option("--x0", help="Start of the iteration table [rad] (the paper printed 0.0433985).")] = None,
-    rows: Annotated[Optional[int], typer.Option("--rows", help="Rows of the iteration table (default: to convergence).")] = None,
+    x0: Annotated[float | None, typer.Option("--x0", help="Start of the iteration table [rad] (the paper printed 0.0433985).")] = None,
+    rows: Annotated[int | None, typer.Option("--rows", help="Rows of the iteration table (default: to convergence).")] = None,
     json_out: JsonFlag = False,
 ):
     """Operating contact angle under axial load (spec 000): C*, x0, Newton iterations, displacement."""

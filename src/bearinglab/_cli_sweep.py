@@ -3,13 +3,22 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated, Optional
+from typing import Annotated
 
 import numpy as np
 import typer
 
 from . import sweep as _sweep
-from .cli import ChunkSizeOpt, ExecutorOpt, JsonFlag, WorkersOpt, console, emit_json, progress_bar, table
+from .cli import (
+    ChunkSizeOpt,
+    ExecutorOpt,
+    JsonFlag,
+    WorkersOpt,
+    console,
+    emit_json,
+    progress_bar,
+    table,
+)
 from .errors import InputError
 
 __all__ = ["register"]
@@ -17,9 +26,9 @@ __all__ = ["register"]
 
 def sweep(
     file: Annotated[Path, typer.Argument(help="Sweep file (TOML): model, bearing, parameters, output, execution.")],
-    out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Result table, .csv or .parquet (overrides the file).")] = None,
+    out: Annotated[Path | None, typer.Option("--out", "-o", help="Result table, .csv or .parquet (overrides the file).")] = None,
     executor: ExecutorOpt = None, workers: WorkersOpt = None, chunk_size: ChunkSizeOpt = None,
-    memory_limit: Annotated[Optional[str], typer.Option("--memory-limit", help="Per local worker, e.g. '4GiB'.", rich_help_panel="Execution")] = None,
+    memory_limit: Annotated[str | None, typer.Option("--memory-limit", help="Per local worker, e.g. '4GiB'.", rich_help_panel="Execution")] = None,
     json_out: JsonFlag = False,
 ):
     """Evaluate a model over the Cartesian product of parameter values; write the cases as CSV or Parquet."""

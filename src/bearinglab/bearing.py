@@ -26,7 +26,7 @@ import numpy as np
 from . import geometry, hertz
 from .errors import InputError
 
-__all__ = ["Material", "STEEL", "SILICON_NITRIDE", "MATERIALS", "BallBearing"]
+__all__ = ["MATERIALS", "SILICON_NITRIDE", "STEEL", "BallBearing", "Material"]
 
 
 @dataclass(frozen=True)

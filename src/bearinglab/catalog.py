@@ -39,7 +39,7 @@ from .bearing import MATERIALS, BallBearing
 from .errors import CatalogError, InputError
 from .units import parse_quantity
 
-__all__ = ["load_catalog", "bearing_from_table", "load_bearing_file", "builtin", "get", "names", "ENV_VAR"]
+__all__ = ["ENV_VAR", "bearing_from_table", "builtin", "get", "load_bearing_file", "load_catalog", "names"]
 
 ENV_VAR = "BEARINGLAB_CATALOG"
 

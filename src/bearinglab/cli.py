@@ -27,7 +27,7 @@ import json
 import math
 import sys
 from pathlib import Path
-from typing import Annotated, Optional
+from typing import Annotated
 
 import click
 import numpy as np
@@ -64,24 +64,24 @@ console = Console()
 # ----------------------------------------------------------------------------- shared options
 # Bearing given by name, by file, or inline. Commands that need a bearing take these parameters and
 # call resolve_bearing(...) with them.
-BearingName = Annotated[Optional[str], typer.Option("--bearing", "-b", help="Catalog name, e.g. B218, 4-1006095, 6205-2RS.", rich_help_panel="Bearing")]
-BearingFile = Annotated[Optional[Path], typer.Option("--bearing-file", help="TOML file with one bearing table.", rich_help_panel="Bearing")]
-CatalogFile = Annotated[Optional[Path], typer.Option("--catalog", help="User catalog TOML (also $BEARINGLAB_CATALOG).", rich_help_panel="Bearing")]
-Balls = Annotated[Optional[int], typer.Option("--balls", help="Number of balls.", rich_help_panel="Inline geometry")]
-BallDiameter = Annotated[Optional[str], typer.Option("--ball-diameter", help="e.g. '2 mm'.", rich_help_panel="Inline geometry")]
-PitchDiameter = Annotated[Optional[str], typer.Option("--pitch-diameter", help="e.g. '8.7355 mm'.", rich_help_panel="Inline geometry")]
-InnerRadius = Annotated[Optional[str], typer.Option("--inner-groove-radius", help="e.g. '1.05 mm'.", rich_help_panel="Inline geometry")]
-OuterRadius = Annotated[Optional[str], typer.Option("--outer-groove-radius", help="e.g. '1.16 mm'.", rich_help_panel="Inline geometry")]
-InnerConformity = Annotated[Optional[float], typer.Option("--inner-conformity", help="f_i = r_i / D.", rich_help_panel="Inline geometry")]
-OuterConformity = Annotated[Optional[float], typer.Option("--outer-conformity", help="f_o = r_o / D.", rich_help_panel="Inline geometry")]
-ContactAngle = Annotated[Optional[str], typer.Option("--contact-angle", help="Nominal (free) angle, e.g. '12 deg'.", rich_help_panel="Inline geometry")]
-Clearance = Annotated[Optional[str], typer.Option("--radial-clearance", help="Diametral clearance, e.g. '9 um'.", rich_help_panel="Inline geometry")]
-BallMaterial = Annotated[Optional[str], typer.Option("--ball-material", help="steel | silicon_nitride.", rich_help_panel="Inline geometry")]
+BearingName = Annotated[str | None, typer.Option("--bearing", "-b", help="Catalog name, e.g. B218, 4-1006095, 6205-2RS.", rich_help_panel="Bearing")]
+BearingFile = Annotated[Path | None, typer.Option("--bearing-file", help="TOML file with one bearing table.", rich_help_panel="Bearing")]
+CatalogFile = Annotated[Path | None, typer.Option("--catalog", help="User catalog TOML (also $BEARINGLAB_CATALOG).", rich_help_panel="Bearing")]
+Balls = Annotated[int | None, typer.Option("--balls", help="Number of balls.", rich_help_panel="Inline geometry")]
+BallDiameter = Annotated[str | None, typer.Option("--ball-diameter", help="e.g. '2 mm'.", rich_help_panel="Inline geometry")]
+PitchDiameter = Annotated[str | None, typer.Option("--pitch-diameter", help="e.g. '8.7355 mm'.", rich_help_panel="Inline geometry")]
+InnerRadius = Annotated[str | None, typer.Option("--inner-groove-radius", help="e.g. '1.05 mm'.", rich_help_panel="Inline geometry")]
+OuterRadius = Annotated[str | None, typer.Option("--outer-groove-radius", help="e.g. '1.16 mm'.", rich_help_panel="Inline geometry")]
+InnerConformity = Annotated[float | None, typer.Option("--inner-conformity", help="f_i = r_i / D.", rich_help_panel="Inline geometry")]
+OuterConformity = Annotated[float | None, typer.Option("--outer-conformity", help="f_o = r_o / D.", rich_help_panel="Inline geometry")]
+ContactAngle = Annotated[str | None, typer.Option("--contact-angle", help="Nominal (free) angle, e.g. '12 deg'.", rich_help_panel="Inline geometry")]
+Clearance = Annotated[str | None, typer.Option("--radial-clearance", help="Diametral clearance, e.g. '9 um'.", rich_help_panel="Inline geometry")]
+BallMaterial = Annotated[str | None, typer.Option("--ball-material", help="steel | silicon_nitride.", rich_help_panel="Inline geometry")]
 JsonFlag = Annotated[bool, typer.Option("--json", help="Print one JSON document on stdout.")]
 # Batch execution (bearinglab.parallel): every batch command takes these three.
-ExecutorOpt = Annotated[Optional[str], typer.Option("--executor", help="serial | local | tcp://host:8786 (a running dask scheduler).", rich_help_panel="Execution")]
-WorkersOpt = Annotated[Optional[int], typer.Option("--workers", help="Workers of the local dask cluster.", rich_help_panel="Execution")]
-ChunkSizeOpt = Annotated[Optional[int], typer.Option("--chunk-size", help="Cases per chunk (task).", rich_help_panel="Execution")]
+ExecutorOpt = Annotated[str | None, typer.Option("--executor", help="serial | local | tcp://host:8786 (a running dask scheduler).", rich_help_panel="Execution")]
+WorkersOpt = Annotated[int | None, typer.Option("--workers", help="Workers of the local dask cluster.", rich_help_panel="Execution")]
+ChunkSizeOpt = Annotated[int | None, typer.Option("--chunk-size", help="Cases per chunk (task).", rich_help_panel="Execution")]
 
 
 def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, ball_diameter=None,

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["InputError", "CatalogError", "ConvergenceError", "ValidityWarning"]
+__all__ = ["CatalogError", "ConvergenceError", "InputError", "ValidityWarning"]
 
 
 class InputError(ValueError):

@@ -25,16 +25,16 @@ from ._validate import as_float, check_greater, check_open_interval, check_posit
 from .errors import InputError
 
 __all__ = [
-    "total_curvature",
-    "pitch_ratio",
-    "free_contact_angle",
-    "free_contact_angle_052",
-    "radial_clearance",
-    "axial_play",
-    "groove_centre_diameters",
-    "raceway_curvature",
     "Curvature",
     "GrooveCentres",
+    "axial_play",
+    "free_contact_angle",
+    "free_contact_angle_052",
+    "groove_centre_diameters",
+    "pitch_ratio",
+    "raceway_curvature",
+    "radial_clearance",
+    "total_curvature",
 ]
 
 

@@ -39,13 +39,13 @@ from .errors import ConvergenceError, InputError
 __all__ = [
     "HertzCoefficients",
     "PointContact",
-    "ellipticity",
-    "coefficients",
-    "tabulated",
-    "reduced_modulus",
-    "point_contact",
-    "load_deflection_constant",
     "approach_coefficient",
+    "coefficients",
+    "ellipticity",
+    "load_deflection_constant",
+    "point_contact",
+    "reduced_modulus",
+    "tabulated",
 ]
 
 

@@ -48,13 +48,13 @@ from .errors import InputError
 
 __all__ = [
     "FAMILIES",
-    "CharacteristicFrequencies",
     "BallPass",
+    "CharacteristicFrequencies",
     "FrequencyShift",
     "SpectralMask",
-    "cage_speed",
     "ball_pass_frequencies",
     "ball_spin_frequency",
+    "cage_speed",
     "characteristic_frequencies",
     "characteristic_orders",
     "frequency_shift",

@@ -32,7 +32,7 @@ import numpy as np
 
 from .errors import InputError
 
-__all__ = ["DEFAULT_CHUNK_SIZE", "DEFAULT_BLOCK_SIZE", "chunk_bounds", "run_cases", "run_seeded", "executor_client"]
+__all__ = ["DEFAULT_BLOCK_SIZE", "DEFAULT_CHUNK_SIZE", "chunk_bounds", "executor_client", "run_cases", "run_seeded"]
 
 DEFAULT_CHUNK_SIZE = 10_000
 DEFAULT_BLOCK_SIZE = 256

@@ -72,6 +72,7 @@ from typing import NamedTuple
 import numpy as np
 
 from . import _runout_contact as _contact
+from . import parallel
 from ._solve import (
     RUNOUT_CONTACT_TOL_UM,
     RUNOUT_EXACT_MAX_ITER,
@@ -2341,6 +2342,11 @@ def summarize(values):
     )
 
 
+def _monte_carlo_task(sample_index, geometry, grade, rings, seed, **options):
+    """:func:`monte_carlo_chunk` as a mapping of per-sample arrays (the chunk function of the execution layer)."""
+    return monte_carlo_chunk(geometry, grade, rings, sample_index, seed, **options)._asdict()
+
+
 def monte_carlo(
     geometry,
     grade,
@@ -2354,6 +2360,10 @@ def monte_carlo(
     cage_ratio=None,
     chunk_size=100,
     progress=None,
+    executor="serial",
+    workers=None,
+    memory_limit=None,
+    processes=True,
 ):
     """Monte Carlo runout study over a ball grade and a ring class (spec 003 section 11).
 
@@ -2377,8 +2387,18 @@ def monte_carlo(
         kappa override. [-]
     chunk_size : int
         Samples solved per batch (memory: about 3 kB per sample and position). [-]
-    progress : callable, optional
-        Called as ``progress(done, total)`` after each chunk.
+    progress : callable or "dask", optional
+        Called as ``progress(done, total)`` after each chunk, or ``"dask"`` for dask's progress bar.
+    executor : str, optional
+        ``"serial"`` (default), ``"local"`` (a dask LocalCluster for this study) or a scheduler address
+        ``"tcp://host:8786"`` (:mod:`bearinglab.parallel`). Each sample has its own seed, so the result
+        is the same on every executor and for every chunk size.
+    workers : int, optional
+        Workers of the local cluster. [-]
+    memory_limit : str, optional
+        Memory limit per local worker, e.g. ``"4GiB"``.
+    processes : bool, optional
+        Local workers as processes (default) or threads.
 
     Returns
     -------
@@ -2396,25 +2416,28 @@ def monte_carlo(
     chunk = int(check_integer("chunk_size", chunk_size, 1))
     grade = ball_grade(grade)
     rings = ring_class(rings)
-    parts = []
-    for start in range(0, total, chunk):  # chunks of samples; each chunk is one batch
-        idx = np.arange(start, min(start + chunk, total))
-        parts.append(
-            monte_carlo_chunk(
-                geometry,
-                grade,
-                rings,
-                idx,
-                seed,
-                steps_per_revolution=steps_per_revolution,
-                revolutions=revolutions,
-                max_order=max_order,
-                cage_ratio=cage_ratio,
-            )
-        )
-        if progress is not None:
-            progress(int(idx[-1]) + 1, total)
-    samples = MonteCarloSamples(*(np.concatenate(f) for f in zip(*parts)))
+    # chunks of samples, each one batch, run by the execution layer (serial or on dask)
+    fields = parallel.run_cases(
+        _monte_carlo_task,
+        {"sample_index": np.arange(total)},
+        constants={
+            "geometry": geometry,
+            "grade": grade,
+            "rings": rings,
+            "seed": seed,
+            "steps_per_revolution": steps_per_revolution,
+            "revolutions": revolutions,
+            "max_order": max_order,
+            "cage_ratio": cage_ratio,
+        },
+        chunk_size=chunk,
+        executor=executor,
+        workers=workers,
+        memory_limit=memory_limit,
+        processes=processes,
+        progress=progress,
+    )
+    samples = MonteCarloSamples(**fields)
     summary = {name: summarize(getattr(samples, name)) for name in METRICS}
     seed_out = _seed(seed)[0]
     return MonteCarloResult(

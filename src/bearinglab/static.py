@@ -45,24 +45,24 @@ from .errors import ConvergenceError, InputError
 from .units import CM, KGF, MM, RPM
 
 __all__ = [
-    "PAPER_ELASTIC_CONSTANT",
     "MIN_LOAD_CONSTANT",
-    "StandLoad",
-    "StandConstants",
+    "PAPER_ELASTIC_CONSTANT",
     "IterationRow",
-    "ThrustContact",
     "StandAnalysis",
-    "min_axial_load",
-    "min_axial_load_gyroscopic",
-    "stand_constants",
-    "thrust_from_angle",
-    "series_coefficients",
-    "first_approximation",
-    "operating_contact_angle",
-    "iteration_table",
+    "StandConstants",
+    "StandLoad",
+    "ThrustContact",
     "axial_displacement_ratio",
     "contact_angle_under_thrust",
+    "first_approximation",
+    "iteration_table",
+    "min_axial_load",
+    "min_axial_load_gyroscopic",
+    "operating_contact_angle",
+    "series_coefficients",
     "stand_analysis",
+    "stand_constants",
+    "thrust_from_angle",
 ]
 
 # (cm^2/kgf)^(2/3) -> (m^2/N)^(2/3): the unit of the approach coefficients c_v, c_n

@@ -43,8 +43,17 @@ from .bearing import BallBearing
 from .errors import CatalogError, ConvergenceError, InputError
 from .units import KGF, parse_quantity, parse_values
 
-__all__ = ["SweepModel", "SweepSpec", "MODELS", "GEOMETRY_PARAMETERS", "load_sweep", "case_grid", "run_sweep",
-           "write_table", "register_model"]
+__all__ = [
+    "GEOMETRY_PARAMETERS",
+    "MODELS",
+    "SweepModel",
+    "SweepSpec",
+    "case_grid",
+    "load_sweep",
+    "register_model",
+    "run_sweep",
+    "write_table",
+]
 
 #: Bearing fields a sweep may vary, with their kinds (geometry variants).
 GEOMETRY_PARAMETERS = {

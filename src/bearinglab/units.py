@@ -33,22 +33,22 @@ import numpy as np
 from .errors import InputError
 
 __all__ = [
-    "MM",
     "CM",
-    "UM",
-    "KGF",
-    "RPM",
     "DEG",
+    "KGF",
+    "KINDS",
+    "MM",
+    "RPM",
     "STANDARD_GRAVITY",
-    "from_rpm",
-    "to_rpm",
-    "from_kgf",
-    "to_kgf",
-    "to_dms",
+    "UM",
     "format_dms",
+    "from_kgf",
+    "from_rpm",
     "parse_quantity",
     "parse_values",
-    "KINDS",
+    "to_dms",
+    "to_kgf",
+    "to_rpm",
 ]
 
 MM = 1e-3
