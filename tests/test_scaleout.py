@@ -67,3 +67,48 @@ def test_cli_bad_scheduler_address_is_one_line(capsys, monkeypatch):
     assert code == 2 and err.count("\n") == 1 and "cannot reach a dask scheduler" in err
     code = main(["high-speed", "-b", "B218", "-F", "5kN,20kN", "-n", "0,10000rpm", "--executor", "mars"])
     assert code == 2 and "executor must be 'serial', 'local' or a scheduler address" in capsys.readouterr().err
+
+
+# ----------------------------------------------------------------------------- runout Monte Carlo
+def _mc(**kw):
+    from bearinglab import runout
+
+    g = runout.geometry_from_catalog(16, 7.144e-3, 54e-3, 0.53, 0.52, np.radians(15.0))
+    return runout.monte_carlo(g, "G5", "P4", 24, 11, steps_per_revolution=24, **kw)
+
+
+def test_monte_carlo_serial_equals_local_cluster_and_any_chunking():
+    ref = _mc(chunk_size=24)
+    for kw in ({"chunk_size": 5}, {"chunk_size": 1}, {"chunk_size": 7, "executor": "local", "workers": 2, "processes": False}):
+        got = _mc(**kw)
+        for k in ref.samples._fields:
+            assert np.array_equal(getattr(ref.samples, k), getattr(got.samples, k)), (kw, k)
+        assert ref.summary == got.summary
+
+
+def test_cli_monte_carlo_on_local_cluster(capsys):
+    import json
+
+    args = ["runout", "monte-carlo", "--bearing", "B218", "--samples", "6", "--seed", "2", "--steps-per-rev", "12",
+            "--json", "--chunk-size", "2"]
+    assert main(args) == 0
+    serial = json.loads(capsys.readouterr().out)
+    assert main(args + ["--executor", "local", "--workers", "2"]) == 0
+    local = json.loads(capsys.readouterr().out)
+    assert serial == local
+
+
+# ----------------------------------------------------------------------------- generic sweep of the high-speed model
+def test_generic_sweep_of_the_high_speed_model_reproduces_spec_004(tmp_path):
+    from bearinglab import sweep
+
+    p = tmp_path / "hs.toml"
+    p.write_text('model = "high-speed"\nbearing = "B218"\n[parameters]\naxial_load = ["2.5 kN", "20 kN", "-1 kN"]\n'
+                 'speed = "0,10000rpm"\n[constants]\nconstants = "harris"\n')
+    cols = sweep.run_sweep(sweep.load_sweep(p), chunk_size=2)
+    assert cols["axial_load_N"].tolist() == [2500.0, 2500.0, 20000.0, 20000.0, -1000.0, -1000.0]
+    assert cols["converged"].tolist() == [True, True, True, True, False, False]
+    assert cols["failure"][4] == "axial_load must be > 0"
+    # spec 004 section 7.1: 2.5 kN static 40.421; 20 kN at 10 000 rpm 49.308 / 32.514
+    np.testing.assert_allclose(cols["contact_angle_inner_deg"][[0, 3]], [40.421, 49.308], atol=1e-3)
+    np.testing.assert_allclose(cols["contact_angle_outer_deg"][3], 32.514, atol=1e-3)

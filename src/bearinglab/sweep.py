@@ -204,6 +204,35 @@ def _evaluate_frequencies(speed, axial_load=None, **cases):
     return out
 
 
+def _evaluate_high_speed(axial_load, speed, bearing, **options):
+    """Chunk function of the ``high-speed`` model (spec 004; options as :func:`quasistatic.contact_angles`)."""
+    import warnings
+
+    from . import quasistatic
+    from .errors import ValidityWarning
+
+    fa, w = np.asarray(axial_load, dtype=float), np.asarray(speed, dtype=float)
+    ok, reason = _flags(fa.size, [("axial_load must be > 0", fa > 0), ("speed must be >= 0", w >= 0)])
+    # the same columns and dtypes in every chunk, even one without a valid case: floats, or objects
+    # for the columns that have no unit factor (converged, iterations, status, method)
+    cols = {name: _nan(fa.size) if factor is not None else np.full(fa.size, None, dtype=object)
+            for name, _field, factor in quasistatic._COLUMNS if name not in ("axial_load_kN", "speed_rpm")}
+    idx = np.flatnonzero(ok)
+    if idx.size:
+        with warnings.catch_warnings():  # per-case validity is in the columns (friction_coefficient)
+            warnings.simplefilter("ignore", ValidityWarning)
+            state = quasistatic.high_speed_analysis(bearing, fa[idx], w[idx], on_failure="flag", **options)
+        for name, col in quasistatic.result_table(state).items():
+            if name in cols:
+                cols[name][idx] = col
+        failed = ~np.asarray(state.converged, dtype=bool).ravel()
+        reason[idx[failed]] = np.asarray(state.status, dtype=object).ravel()[failed]
+        ok[idx[failed]] = False
+    cols.pop("converged", None)
+    cols.update(converged=ok, failure=reason)
+    return cols
+
+
 MODELS: dict[str, SweepModel] = {}
 
 # kind -> (column suffix, factor from SI) for the input columns of a sweep table
@@ -232,6 +261,8 @@ register_model(SweepModel("axial-angle", {"axial_load": "force"}, _evaluate_axia
                           "operating contact angle under axial load (spec 000)"))
 register_model(SweepModel("stand-load", {"speed": "speed"}, _evaluate_stand_load,
                           "minimum axial load on a test stand (spec 000 section 3)"))
+register_model(SweepModel("high-speed", {"axial_load": "force", "speed": "speed"}, _evaluate_high_speed,
+                          "high-speed angular-contact bearing under thrust (spec 004)", geometry=False))
 register_model(SweepModel("frequencies", {"speed": "speed", "axial_load": "force"}, _evaluate_frequencies,
                           "characteristic frequencies at the nominal or operating angle", optional=("axial_load",)))
 
