@@ -43,15 +43,17 @@ def main():
         if code != 0 or not results:
             failed.append(script.name)
         rows += [(script.name, name, f) for name, f in results]
-    stamp = _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%d %H:%M UTC")
-    lines = [BEGIN, f"Last `make bench`: {stamp}, Python {platform.python_version()}, {os.cpu_count()} cores.", "",
-             "| script | result | cases/s (batched) | cases/s (baseline) | ratio | other |", "|---|---|---|---|---|---|"]
-    for script, name, f in rows:
-        other = ", ".join(f"{k}={v}" for k, v in f.items() if k not in ("cases_per_s", "baseline_cases_per_s", "ratio"))
-        lines.append(f"| {script} | {name} | {f.get('cases_per_s', '')} | {f.get('baseline_cases_per_s', '')} | "
-                     f"{f.get('ratio', '')} | {other} |")
-    if failed:
+    stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    lines = [BEGIN, f"Last `make bench`: {stamp}, Python {platform.python_version()}, {os.cpu_count()} cores. "
+             "Each table: the batched path and its per-case baseline, measured in the same run.", ""]
+    for script, name, f in rows:  # one table per model
+        lines += [f"### {name} (`bench/{script}`)", "", "| path | cases/s |", "|---|---|",
+                  f"| batched | {f.get('cases_per_s', '')} |", f"| baseline | {f.get('baseline_cases_per_s', '')} |",
+                  f"| **ratio** | **{f.get('ratio', '')}** |"]
+        other = [(k, v) for k, v in f.items() if k not in ("cases_per_s", "baseline_cases_per_s", "ratio")]
+        lines += [f"| {k} | {v} |" for k, v in other]
         lines.append("")
+    if failed:
         lines.append(f"Failed or printed no RESULT line: {', '.join(failed)}")
     lines.append(END)
     bench_md = ROOT / "BENCHMARKS.md"

@@ -80,3 +80,22 @@ def test_bad_scheduler_address_fails_fast_with_clear_error():
     with pytest.raises(InputError, match=r"cannot reach a dask scheduler at 'tcp://127.0.0.1:9' within 1 s"):
         parallel.run_cases(square_or_flag, {"x": np.arange(3.0)}, executor="tcp://127.0.0.1:9", timeout=1.0)
     assert time.perf_counter() - t < 10.0
+
+
+def die_once(x, marker):
+    """Kill the worker process the first time the chunk holding case 5 runs (a crash, not an exception)."""
+    import os
+    from pathlib import Path
+
+    if 5.0 in x and not Path(marker).exists():
+        Path(marker).write_text("died")
+        os._exit(1)
+    return {"y": x * 10.0, "pid": np.full(x.shape, os.getpid())}
+
+
+def test_a_worker_that_dies_is_replaced_and_no_case_is_lost_or_duplicated(tmp_path):
+    x = np.arange(12.0)
+    out = parallel.run_cases(die_once, {"x": x}, constants={"marker": str(tmp_path / "died")}, chunk_size=3,
+                             executor="local", workers=2, processes=True)
+    assert (tmp_path / "died").exists()  # the crash happened
+    assert np.array_equal(out["y"], x * 10.0)  # every case once, in order
