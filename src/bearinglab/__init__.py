@@ -10,6 +10,7 @@ bearing     Material, BallBearing: validated inputs of the models
 catalog     built-in bearings and user TOML catalogs
 static      test-stand method (spec 000) and the static contact angle under thrust
 parallel    chunked batch execution, serial or on dask
+sweep       parameter sweeps of a model over a Cartesian grid (sweep files)
 kinematics  cage and ball speeds, characteristic (defect) frequencies, spectral masks
 runout      spindle-bearing manufacturing errors -> initial inner-ring displacement, runout (spec 003)
 friction    friction torque: P0 max rule, one-term, two-term, Palmgren (spec 001 section 3)
@@ -19,37 +20,39 @@ quasistatic high-speed angular-contact bearing under thrust: centrifugal force, 
 """
 
 from . import (
-               bearing,
-               catalog,
-               errors,
-               friction,
-               geometry,
-               hertz,
-               kinematics,
-               lab,
-               parallel,
-               quasistatic,
-               report,
-               runout,
-               static,
-               units,
+    bearing,
+    catalog,
+    errors,
+    friction,
+    geometry,
+    hertz,
+    kinematics,
+    lab,
+    parallel,
+    quasistatic,
+    report,
+    runout,
+    static,
+    sweep,
+    units,
 )
 
 __version__ = "0.1.0"
 __all__ = [
-               "__version__",
-               "bearing",
-               "catalog",
-               "errors",
-               "friction",
-               "geometry",
-               "hertz",
-               "kinematics",
-               "lab",
-               "parallel",
-               "quasistatic",
-               "report",
-               "runout",
-               "static",
-               "units",
+    "__version__",
+    "bearing",
+    "catalog",
+    "errors",
+    "friction",
+    "geometry",
+    "hertz",
+    "kinematics",
+    "lab",
+    "parallel",
+    "quasistatic",
+    "report",
+    "runout",
+    "static",
+    "sweep",
+    "units",
 ]
