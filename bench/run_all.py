@@ -47,10 +47,14 @@ def main():
     lines = [BEGIN, f"Last `make bench`: {stamp}, Python {platform.python_version()}, {os.cpu_count()} cores. "
              "Each table: the batched path and its per-case baseline, measured in the same run.", ""]
     for script, name, f in rows:  # one table per model
+        # a script may name its two paths (batched_label=2_workers); underscores read as spaces
+        batched = f.get("batched_label", "batched").replace("_", " ")
+        baseline = f.get("baseline_label", "per-case baseline").replace("_", " ")
         lines += [f"### {name} (`bench/{script}`)", "", "| path | cases/s |", "|---|---|",
-                  f"| batched | {f.get('cases_per_s', '')} |", f"| baseline | {f.get('baseline_cases_per_s', '')} |",
+                  f"| {batched} | {f.get('cases_per_s', '')} |", f"| {baseline} | {f.get('baseline_cases_per_s', '')} |",
                   f"| **ratio** | **{f.get('ratio', '')}** |"]
-        other = [(k, v) for k, v in f.items() if k not in ("cases_per_s", "baseline_cases_per_s", "ratio")]
+        shown = ("cases_per_s", "baseline_cases_per_s", "ratio", "batched_label", "baseline_label")
+        other = [(k, v) for k, v in f.items() if k not in shown]
         lines += [f"| {k} | {v} |" for k, v in other]
         lines.append("")
     if failed:

@@ -78,7 +78,7 @@ def main():
           f"(workers as fast as one core here)")
     print(f"RESULT runout_mc_scaling cases_per_s={N_SAMPLES / times[2]:.4g} baseline_cases_per_s={N_SAMPLES / times[1]:.4g} "
           f"ratio={speedup:.4g} efficiency={efficiency:.3f} chunk_s={t_chunk:.3g} task_overhead_ms={overhead * 1e3:.3g} "
-          f"estimate_1e7_64w_min={estimate / 60:.3g}")
+          f"estimate_1e7_64w_min={estimate / 60:.3g} batched_label=2_workers baseline_label=1_worker")
     return 0 if same else 1
 
 
