@@ -136,6 +136,11 @@ def test_free_stiffness_static_angle_equals_stand_method_with_same_hertz():
                                b.contact_angle, elastic_constant=(3 / ep) ** (2 / 3) / 2)
     alpha = static.operating_contact_angle(loads, c.force_characteristic, b.contact_angle)
     assert_allclose(r.contact_angle, alpha, atol=1e-12)
+    # the deflections use K_i, K_e at alpha0 too
+    ki = hertz.load_deflection_constant(*b.curvature("inner", b.contact_angle), ep)
+    ke = hertz.load_deflection_constant(*b.curvature("outer", b.contact_angle), ep)
+    assert_allclose(ki * r.deflection_inner**1.5, r.ball_load, rtol=1e-12)
+    assert_allclose(ke * r.deflection_outer**1.5, r.ball_load, rtol=1e-12)
 
 
 def test_static_thrust_angle_equilibrium_and_compatibility():

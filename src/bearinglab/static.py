@@ -654,7 +654,8 @@ def contact_angle_under_thrust(axial_load, n_balls, ball_diameter, pitch_diamete
     def stiffness(angle):
         return _series_stiffness(*_contact_stiffness(d, dm, fi, fo, angle, ep))
 
-    kn0 = stiffness(a0)
+    k0 = _contact_stiffness(d, dm, fi, fo, a0, ep)  # K_i, K_e at alpha0 (reused for "free")
+    kn0 = _series_stiffness(*k0)
     alpha = a0 + first_approximation(fa / (z * kn0 * bd**1.5), a0)
     alpha = np.minimum(alpha, 0.5 * (a0 + np.pi / 2))
     h = 1e-7
@@ -678,8 +679,7 @@ def contact_angle_under_thrust(axial_load, n_balls, ball_diameter, pitch_diamete
     else:
         raise ConvergenceError("static.contact_angle_under_thrust", iterations=max_iter,
                                residual=(thrust - fa) / fa, estimate=alpha)
-    k_i, k_e = (kn0 * 0 + _contact_stiffness(d, dm, fi, fo, a0, ep)[0], _contact_stiffness(d, dm, fi, fo, a0, ep)[1]) \
-        if stiffness_at == "free" else _contact_stiffness(d, dm, fi, fo, alpha, ep)
+    k_i, k_e = k0 if stiffness_at == "free" else _contact_stiffness(d, dm, fi, fo, alpha, ep)
     q = fa / (z * np.sin(alpha))
     delta_n = bd * (np.cos(a0) / np.cos(alpha) - 1.0)
     delta_a = (bd + delta_n) * np.sin(alpha) - bd * np.sin(a0)
