@@ -2,17 +2,15 @@
 
 from __future__ import annotations
 
-import csv
 import math
-import os
 import re
-import tempfile
 from pathlib import Path
 from typing import Annotated
 
 import typer
 
 from . import kinematics, static
+from ._cli_highspeed import write_csv
 from .cli import (
     BallDiameter,
     BallMaterial,
@@ -68,25 +66,6 @@ def _keys(freqs, shaft_hz, names=kinematics.FAMILIES[1:]):
         out[f"{name}_hz"] = hz
         out[f"{name}_order"] = hz / abs(shaft_hz) if shaft_hz else None
     return out
-
-
-def _write_csv(path: Path, header, rows):
-    """Write the whole file or nothing: a temporary file in the same directory, then os.replace."""
-    path = Path(path)
-    directory = path.parent if str(path.parent) else Path(".")
-    if not directory.is_dir():
-        raise InputError(f"csv: directory {str(directory)!r} does not exist")
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    try:
-        with os.fdopen(fd, "w", newline="", encoding="utf-8") as fh:
-            writer = csv.writer(fh)
-            writer.writerow(header)
-            writer.writerows(rows)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
 
 
 def frequencies(
@@ -240,13 +219,8 @@ def frequencies(
                     "order": float(f) / abs(shaft_hz) if shaft_hz else None,
                 }
             )
-        if csv_file is not None:
-            header = list(mask_rows[0])
-            _write_csv(
-                csv_file,
-                header,
-                [["" if r[c] is None else r[c] for c in header] for r in mask_rows],
-            )
+        if csv_file is not None:  # None (no order at zero shaft speed) is written as an empty cell
+            write_csv(csv_file, {c: [r[c] for r in mask_rows] for c in mask_rows[0]})
     if mask:
         out["mask"] = {
             "harmonics": harmonics,
