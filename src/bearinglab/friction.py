@@ -219,7 +219,10 @@ def static_load_factors(bearing_type="radial", contact_angle=None):
     return StaticLoadFactors(_scalar(x0), _scalar(y0))
 
 
-def _factors(bearing_type, contact_angle, radial_factor, axial_factor):
+def _branches(radial_load, axial_load, bearing_type, contact_angle, radial_factor, axial_factor):
+    """The two terms of the max rule (3.1): (x0 F_r + y0 F_a, F_r), inputs checked."""
+    fr = check_nonnegative("radial_load", radial_load, "N")
+    fa = check_nonnegative("axial_load", axial_load, "N")
     _check_type(bearing_type)
     if radial_factor is None or axial_factor is None:
         x_tab, y_tab = static_load_factors(bearing_type, contact_angle)
@@ -227,7 +230,7 @@ def _factors(bearing_type, contact_angle, radial_factor, axial_factor):
         axial_factor = y_tab if axial_factor is None else axial_factor
     x0 = check_nonnegative("radial_factor", radial_factor, "-")
     y0 = check_nonnegative("axial_factor", axial_factor, "-")
-    return x0, y0
+    return x0 * fr + y0 * fa, fr
 
 
 def equivalent_static_load(
@@ -273,10 +276,10 @@ def equivalent_static_load(
     >>> float(equivalent_static_load(19.62, 0.0))
     19.62
     """
-    fr = check_nonnegative("radial_load", radial_load, "N")
-    fa = check_nonnegative("axial_load", axial_load, "N")
-    x0, y0 = _factors(bearing_type, contact_angle, radial_factor, axial_factor)
-    return _scalar(np.maximum(x0 * fr + y0 * fa, fr))  # (3.1)
+    combined, fr = _branches(
+        radial_load, axial_load, bearing_type, contact_angle, radial_factor, axial_factor
+    )
+    return _scalar(np.maximum(combined, fr))  # (3.1)
 
 
 def combined_branch_governs(
@@ -317,10 +320,10 @@ def combined_branch_governs(
     >>> bool(combined_branch_governs(np.sin(np.radians(60)), np.cos(np.radians(60))))
     False
     """
-    fr = check_nonnegative("radial_load", radial_load, "N")
-    fa = check_nonnegative("axial_load", axial_load, "N")
-    x0, y0 = _factors(bearing_type, contact_angle, radial_factor, axial_factor)
-    return np.asarray(x0 * fr + y0 * fa >= fr)[()]
+    combined, fr = _branches(
+        radial_load, axial_load, bearing_type, contact_angle, radial_factor, axial_factor
+    )
+    return np.asarray(combined >= fr)[()]
 
 
 # ----------------------------------------------------------------------------- one-term model
