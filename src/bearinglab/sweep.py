@@ -176,17 +176,16 @@ def _evaluate_frequencies(speed, axial_load=None, **cases):
     w = np.asarray(speed, dtype=float)
     n = w.size
     bearing = cases.pop("bearing", None)
-    angle = dict(_geometry_arrays(n, bearing, cases))["contact_angle"]
+    g = _geometry_arrays(n, bearing, cases)
     out = {}
-    if axial_load is not None:
+    if axial_load is not None:  # operating angle; the axial-angle model checks the whole geometry
         res = _evaluate_axial_angle(axial_load, bearing=bearing, **cases)
         angle = np.radians(res["operating_contact_angle_deg"])
         ok, reason = res["converged"], res["failure"]
         out["operating_contact_angle_deg"] = res["operating_contact_angle_deg"]
-    else:
-        g = _geometry_arrays(n, bearing, cases)
+    else:  # nominal angle; kinematics needs neither the conformities nor a positive angle
+        angle = g["contact_angle"]
         ok, reason = _flags(n, [r for r in _valid_geometry(g) if "conformity" not in r[0] and "(0, 90)" not in r[0]])
-    g = _geometry_arrays(n, bearing, cases)
     ok = ok & (w >= 0)
     reason = np.where((w < 0) & (reason == ""), "speed must be >= 0", reason)
     freqs = {k: _nan(n) for k in ("shaft", "ftf", "bpfo", "bpfi", "bsf", "two_bsf")}
