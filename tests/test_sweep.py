@@ -71,6 +71,12 @@ def test_outputs_written_whole_csv_and_parquet(sweep_file, tmp_path):
     assert not list(tmp_path.glob(".*tmp"))
 
 
+def test_written_table_is_an_ordinary_file(tmp_path):
+    # mkstemp makes a private (0600) file; the renamed result must be readable like any other output
+    sweep.write_table({"x": np.arange(3.0)}, tmp_path / "r.csv")
+    assert (tmp_path / "r.csv").stat().st_mode & 0o777 == 0o644
+
+
 @pytest.mark.parametrize("text, match", [
     ('model = "warp-drive"\nbearing = "B218"\n[parameters]\naxial_load = "1 kN"', r"model: must be one of"),
     ('model = "axial-angle"\n[parameters]\naxial_load = "1 kN"', r"bearing: missing"),

@@ -436,6 +436,7 @@ def write_table(columns, path):
                     w.writerow(row)
         else:
             raise InputError(f"output must end in .csv or .parquet, got {path.name!r}")
+        os.chmod(tmp, 0o644)  # mkstemp creates 0600; a result table is an ordinary file
         os.replace(tmp, path)
     finally:
         if os.path.exists(tmp):
