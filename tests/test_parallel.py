@@ -75,6 +75,14 @@ def test_local_cluster_threads_is_bit_identical_to_serial():
     assert np.array_equal(a["u"], b["u"])
 
 
+def test_dask_progress_bar_keeps_stdout_clean(capsys):
+    # stdout of a command is one table or one JSON document; dask's text bar goes to stderr
+    out = parallel.run_cases(square_or_flag, {"x": np.arange(10.0)}, chunk_size=4, executor="local", workers=1,
+                             processes=False, progress="dask")
+    assert out["ok"].sum() == 9
+    assert capsys.readouterr().out == ""
+
+
 def test_bad_scheduler_address_fails_fast_with_clear_error():
     t = time.perf_counter()
     with pytest.raises(InputError, match=r"cannot reach a dask scheduler at 'tcp://127.0.0.1:9' within 1 s"):

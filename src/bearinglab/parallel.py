@@ -26,6 +26,7 @@ from __future__ import annotations
 import contextlib
 import math
 import os
+import sys
 from collections.abc import Callable, Mapping
 
 import numpy as np
@@ -174,7 +175,9 @@ def _run(tasks, sizes, *, executor, workers, memory_limit, processes, progress, 
         if progress == "dask":
             from distributed import progress as dask_progress
 
-            dask_progress(futures)
+            # dask's text bar writes on stdout, which stays one table or one JSON document
+            with contextlib.redirect_stdout(sys.stderr):
+                dask_progress(futures)
         elif callable(progress):
             for fut in as_completed(futures):
                 done += sizes[index[fut.key]]
