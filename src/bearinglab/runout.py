@@ -2053,13 +2053,7 @@ def ball_grade(name):
     >>> print(f"{ball_grade('g10').single_diameter_variation * 1e6:.2f}")
     0.25
     """
-    if isinstance(name, BallGrade):
-        return name
-    grades = tolerance_classes()[0]
-    key = str(name).upper()
-    if key not in grades:
-        raise InputError(f"ball_grade must be one of {list(grades)}, got {name!r}")
-    return grades[key]
+    return _tolerance_lookup("ball_grade", name, BallGrade, 0)
 
 
 def ring_class(name):
@@ -2079,13 +2073,19 @@ def ring_class(name):
     >>> print(f"{ring_class('P4').radial_runout * 1e6:.1f}")
     4.0
     """
-    if isinstance(name, RingClass):
+    return _tolerance_lookup("ring_class", name, RingClass, 1)
+
+
+def _tolerance_lookup(param, name, cls, which):
+    """``name`` itself if already a ``cls``, else the preset of that name (case-insensitive) in
+    ``tolerance_classes()[which]``; the data file is read only when a name is given."""
+    if isinstance(name, cls):
         return name
-    classes = tolerance_classes()[1]
+    presets = tolerance_classes()[which]
     key = str(name).upper()
-    if key not in classes:
-        raise InputError(f"ring_class must be one of {list(classes)}, got {name!r}")
-    return classes[key]
+    if key not in presets:
+        raise InputError(f"{param} must be one of {list(presets)}, got {name!r}")
+    return presets[key]
 
 
 class MonteCarloSamples(NamedTuple):
