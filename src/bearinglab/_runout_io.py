@@ -85,18 +85,23 @@ class _Ctx:
         self.fail(table, key, f"expected a number or a quantity string, got {value!r}")
 
 
-def read_error_file(path, geometry=None):
-    """(geometry, errors) from an error file; ``geometry`` overrides the file's [geometry] table."""
-    ctx = _Ctx(path)
+def _load(ctx):
+    """The parsed TOML document of ``ctx.path``; every failure is a CatalogError naming the file."""
     try:
         with open(ctx.path, "rb") as fh:
-            doc = tomllib.load(fh)
+            return tomllib.load(fh)
     except FileNotFoundError:
         raise CatalogError(f"{ctx.path}: no such file") from None
     except tomllib.TOMLDecodeError as exc:
         raise CatalogError(f"{ctx.path}: not valid TOML: {exc}") from None
     except OSError as exc:
         raise CatalogError(f"{ctx.path}: cannot read: {exc.strerror}") from None
+
+
+def read_error_file(path, geometry=None):
+    """(geometry, errors) from an error file; ``geometry`` overrides the file's [geometry] table."""
+    ctx = _Ctx(path)
+    doc = _load(ctx)
     ctx.known("top level", doc, _TOP)
     if geometry is None:
         if "geometry" not in doc:
@@ -114,13 +119,7 @@ def read_error_file(path, geometry=None):
 def read_geometry_file(path):
     """The [geometry] table of a file (an error file or a geometry-only file)."""
     ctx = _Ctx(path)
-    try:
-        with open(ctx.path, "rb") as fh:
-            doc = tomllib.load(fh)
-    except FileNotFoundError:
-        raise CatalogError(f"{ctx.path}: no such file") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise CatalogError(f"{ctx.path}: not valid TOML: {exc}") from None
+    doc = _load(ctx)
     if "geometry" not in doc:
         raise CatalogError(f"{ctx.path}: no [geometry] table")
     return read_geometry(doc["geometry"], ctx)
