@@ -370,6 +370,8 @@ def analyse(session):
     else:
         f2 = fits.SpeedDependenceFit(*(np.zeros(0),) * 7)
         p0_5 = np.zeros(0)
+    # one group gives scalar fit fields: make every field an array once
+    f1, f2, f3 = (type(fit)(*map(np.atleast_1d, fit)) for fit in (f1, f2, f3))
     # ---- cross-checks (6.5); the load and speed terms are linear in f and f0
     c = hb.load_term_exponent
     unit_tf5 = (
@@ -382,7 +384,7 @@ def analyse(session):
     for k in range(n5):
         same = np.isclose(tilt4, tilt5[k], rtol=0, atol=1e-12)
         if same.any():
-            f3_at[k] = np.mean(np.atleast_1d(f3.load_term_factor)[same])
+            f3_at[k] = np.mean(f3.load_term_factor[same])
     tf_task3 = f3_at * unit_tf5
     mean_f0 = float(np.mean(f2.speed_term_factor)) if n5 else math.nan
     unit_t0 = friction.speed_term(col_speed, dm, 1.0) if n4 else np.zeros(0)
@@ -391,25 +393,25 @@ def analyse(session):
         tilt4,
         label4,
         col_speed,
-        np.atleast_1d(f1.friction_coefficient),
-        np.atleast_1d(f1.standard_error),
-        np.atleast_1d(f1.residual_rms),
-        np.atleast_1d(f1.count),
+        f1.friction_coefficient,
+        f1.standard_error,
+        f1.residual_rms,
+        f1.count,
         mean_t,
-        np.atleast_1d(f1.friction_coefficient) / hb.friction_coefficient - 1.0,
-        np.atleast_1d(f1.residual_rms) / mean_t if n4 else np.zeros(0),
+        f1.friction_coefficient / hb.friction_coefficient - 1.0,
+        f1.residual_rms / mean_t if n4 else np.zeros(0),
         tuple(members4),
     )
     task2 = Task2(
         mass5,
         tilt5,
         p0_5,
-        np.atleast_1d(f2.speed_term_factor),
-        np.atleast_1d(f2.speed_term_factor_standard_error),
-        np.atleast_1d(f2.load_term),
-        np.atleast_1d(f2.load_term_standard_error),
-        np.atleast_1d(f2.residual_rms),
-        np.atleast_1d(f2.count),
+        f2.speed_term_factor,
+        f2.speed_term_factor_standard_error,
+        f2.load_term,
+        f2.load_term_standard_error,
+        f2.residual_rms,
+        f2.count,
         hb_tf,
         tf_task3,
         tuple(members5),
@@ -418,13 +420,13 @@ def analyse(session):
         tilt4,
         label4,
         col_speed,
-        np.atleast_1d(f3.load_term_factor),
-        np.atleast_1d(f3.load_term_factor_standard_error),
-        np.atleast_1d(f3.speed_term),
-        np.atleast_1d(f3.speed_term_standard_error),
-        np.atleast_1d(f3.residual_rms),
-        np.atleast_1d(f3.count),
-        np.atleast_1d(f3.load_term_factor) / hb.load_term_factor - 1.0,
+        f3.load_term_factor,
+        f3.load_term_factor_standard_error,
+        f3.speed_term,
+        f3.speed_term_standard_error,
+        f3.residual_rms,
+        f3.count,
+        f3.load_term_factor / hb.load_term_factor - 1.0,
         t0_task2,
         tuple(members4),
     )
