@@ -32,9 +32,9 @@ RPM = 2 * math.pi / 60
 def handbook_table(out):
     tilts = np.arange(0.0, 91.0, 15.0)
     rows = []
+    loads = rig.rig_equivalent_load(2.0, np.radians(tilts))  # same for all: radial, Q = 2 kg
     for name in ("1000095", "18", "101"):
         b = catalog.get(name)
-        loads = rig.rig_equivalent_load(2.0, np.radians(tilts))
         one = friction.one_term(loads.equivalent_load, b.bore)
         two = friction.two_term(
             loads.equivalent_load, 3000 * RPM, b.mean_diameter, b.static_load_rating, 1.5e-7
