@@ -59,6 +59,14 @@ def test_solvers_agree_on_random_cases(case):
         assert np.array_equal(s.degenerate, sols[0].degenerate)
 
 
+def test_triples_face_of_a_near_tie_is_a_point():
+    # four balls tied, the fifth 6e-8 um higher (hypothesis found it): the face is one point for the
+    # dual and the LP; the triple enumeration once counted vertices within the face tolerance of it
+    dk = np.array([0.0, 0.0, 0.0, 0.0, 5.960464477539063e-08]) * UM
+    sols = [R.solve_contact(dk, regular(5), method=m) for m in ("dual", "triples", "lp")]
+    assert [bool(s.degenerate) for s in sols] == [False, False, False]
+
+
 @FAST
 @given(n=st.integers(3, 12), data=st.data())
 def test_solvers_agree_on_irregular_azimuths(n, data):

@@ -365,9 +365,12 @@ def solve_triples(dk, angles, centre_b, centre_d, chunk=256):
         best = dist.argmin(axis=1)
         rows = np.arange(m)
         a0[sl], b[sl], d[sl] = a, cand_b[rows, best], cand_d[rows, best]
-        # face diameter: largest distance between feasible pairwise intersections (vertices of F)
-        vb = np.where(good[:, 1 + n :], cand_b[:, 1 + n :], np.nan)
-        vd = np.where(good[:, 1 + n :], cand_d[:, 1 + n :], np.nan)
+        # face diameter: largest distance between feasible pairwise intersections (vertices of F),
+        # feasible to eps as the LP's face: ftol would admit vertices up to ~ftol / sin(angle) off F,
+        # whose spread exceeds the contact tolerance on a face that is a single point
+        vert = np.all(viol[:, 1 + n :] <= eps[:, None, None], axis=2) & good[:, 1 + n :]
+        vb = np.where(vert, cand_b[:, 1 + n :], np.nan)
+        vd = np.where(vert, cand_d[:, 1 + n :], np.nan)
         spread = np.hypot(vb[:, :, None] - vb[:, None, :], vd[:, :, None] - vd[:, None, :])
         diam[sl] = np.nan_to_num(
             np.nanmax(np.where(np.isnan(spread), -np.inf, spread), axis=(1, 2)), neginf=0.0
