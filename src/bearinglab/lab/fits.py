@@ -173,6 +173,11 @@ def _out(value, labels):
     return value[0] if labels is None else value
 
 
+def _pack(cls, labels, *values, residuals):
+    """``cls`` of the per-group ``values`` (scalars without groups) and the per-point residuals."""
+    return cls(*(_out(v, labels) for v in values), residuals)
+
+
 def _stats(x, y, index, n_groups, labels, *, intercept, what, x_name, shown=None, shown_unit=""):
     """Centred least-squares sums per group -> (slope, intercept, se_slope, se_intercept, rms, m, r)."""
     m = np.bincount(index, minlength=n_groups).astype(float)
@@ -264,9 +269,7 @@ def through_origin(x, y, *, groups=None):
     k, _a, se, _sa, rms, m, r = _stats(
         x, y, index, n, labels, intercept=False, what="fit through the origin", x_name="x"
     )
-    return ThroughOriginFit(
-        _out(k, labels), _out(se, labels), _out(rms, labels), _out(m, labels), r
-    )
+    return _pack(ThroughOriginFit, labels, k, se, rms, m, residuals=r)
 
 
 def straight_line(x, y, *, groups=None):
@@ -302,15 +305,7 @@ def straight_line(x, y, *, groups=None):
     b, a, sb, sa, rms, m, r = _stats(
         x, y, index, n, labels, intercept=True, what="straight line", x_name="x"
     )
-    return LineFit(
-        _out(b, labels),
-        _out(a, labels),
-        _out(sb, labels),
-        _out(sa, labels),
-        _out(rms, labels),
-        _out(m, labels),
-        r,
-    )
+    return _pack(LineFit, labels, b, a, sb, sa, rms, m, residuals=r)
 
 
 # ----------------------------------------------------------------------------- the three tasks
@@ -357,9 +352,7 @@ def friction_coefficient(torque, equivalent_load, bore, *, groups=None):
     mu, _a, se, _sa, rms, m, r = _stats(
         x, y, index, n, labels, intercept=False, what="task 1", x_name="equivalent_load"
     )  # (6.1) with abscissa P0 d/2
-    return FrictionCoefficientFit(
-        _out(mu, labels), _out(se, labels), _out(rms, labels), _out(m, labels), r
-    )
+    return _pack(FrictionCoefficientFit, labels, mu, se, rms, m, residuals=r)
 
 
 def speed_dependence(torque, shaft_speed, mean_diameter, *, groups=None):
@@ -422,15 +415,8 @@ def speed_dependence(torque, shaft_speed, mean_diameter, *, groups=None):
         shown=shown,
         shown_unit=" rpm",
     )  # (6.2)
-    return SpeedDependenceFit(
-        _out(f0, labels),
-        _out(tf * _MM, labels),
-        _out(se_f0, labels),
-        _out(se_tf * _MM, labels),
-        _out(rms * _MM, labels),
-        _out(m, labels),
-        r * _MM,
-    )
+    tf, se_tf, rms, r = tf * _MM, se_tf * _MM, rms * _MM, r * _MM  # N*mm -> N*m
+    return _pack(SpeedDependenceFit, labels, f0, tf, se_f0, se_tf, rms, m, residuals=r)
 
 
 def load_dependence(
@@ -503,12 +489,4 @@ def load_dependence(
         shown=shown,
         shown_unit=" N",
     )  # (6.2)
-    return LoadDependenceFit(
-        _out(f, labels),
-        _out(t0, labels),
-        _out(se_f, labels),
-        _out(se_t0, labels),
-        _out(rms, labels),
-        _out(m, labels),
-        r,
-    )
+    return _pack(LoadDependenceFit, labels, f, t0, se_f, se_t0, rms, m, residuals=r)
