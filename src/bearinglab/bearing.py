@@ -176,7 +176,7 @@ class BallBearing:
             angle = float(geometry.free_contact_angle(self.radial_clearance, self.ball_diameter,
                                                       self.inner_conformity, self.outer_conformity))
             if not angle < math.pi / 2:  # arccos is real up to 4 B D, but a bearing's contact is below 90 deg
-                limit = 2.0 * (self.inner_conformity + self.outer_conformity - 1.0) * self.ball_diameter
+                limit = 2.0 * self.groove_distance
                 raise InputError(f"radial_clearance must be in (0, {limit * 1e3:.6g}) [mm] to give a contact angle "
                                  f"below 90 deg, got {self.radial_clearance * 1e3:.6g} mm ({math.degrees(angle):.4g} deg)")
             object.__setattr__(self, "contact_angle", angle)

@@ -38,7 +38,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import catalog, kinematics, parallel, static
+from . import catalog, geometry, kinematics, parallel, static
 from .bearing import BallBearing
 from .errors import CatalogError, ConvergenceError, InputError
 from .units import KGF, parse_quantity, parse_values
@@ -147,7 +147,7 @@ def _evaluate_axial_angle(axial_load, **cases):
             a = np.where(good, np.asarray(exc.estimate, dtype=float), np.nan)
             reason[idx[~good]] = "no convergence"
             ok[idx[~good]] = False
-        bd = (s["inner_conformity"] + s["outer_conformity"] - 1.0) * s["ball_diameter"]
+        bd = geometry.total_curvature(s["inner_conformity"], s["outer_conformity"]) * s["ball_diameter"]
         angle[idx] = a
         cstar[idx] = c.force_characteristic
         q[idx] = fa[idx] / (s["n_balls"] * np.sin(a))
