@@ -11,16 +11,14 @@ frequencies.png. Usage: python examples/demo_frequencies.py OUT
 
 from __future__ import annotations
 
-import csv
 import math
-import os
 import sys
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from bearinglab import catalog, kinematics, static
+from bearinglab.sweep import write_table
 from bearinglab.units import KGF, RPM, format_dms
 
 HZ = 2 * math.pi  # rad/s per Hz
@@ -29,13 +27,8 @@ CWRU_PUBLISHED = {"bpfi": 5.4152, "bpfo": 3.5848, "ftf": 0.39828, "two_bsf": 4.7
 
 
 def write_csv(path, header, rows):
-    """Write a CSV whole or not at all."""
-    fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
-    with os.fdopen(fd, "w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(header)
-        w.writerows(rows)
-    os.replace(tmp, path)
+    """Write a CSV whole or not at all (rows -> columns for :func:`bearinglab.sweep.write_table`)."""
+    write_table(dict(zip(header, zip(*rows))), path)
 
 
 def main(out):

@@ -7,27 +7,20 @@ Usage: python examples/demo_stand.py OUT
 
 from __future__ import annotations
 
-import csv
 import math
-import os
 import sys
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from bearinglab import catalog, kinematics, static
+from bearinglab.sweep import write_table
 from bearinglab.units import KGF, RPM, format_dms
 
 
 def write_csv(path, header, rows):
-    """Write a CSV whole or not at all."""
-    fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
-    with os.fdopen(fd, "w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(header)
-        w.writerows(rows)
-    os.replace(tmp, path)
+    """Write a CSV whole or not at all (rows -> columns for :func:`bearinglab.sweep.write_table`)."""
+    write_table(dict(zip(header, zip(*rows))), path)
 
 
 def main(out):
