@@ -111,10 +111,7 @@ def main(out):
 
     # thrust at which delta_a changes sign
     moving = speeds_rpm[1:]
-    z, d, dm, fi, fo, a0, _ep, rho = b218.n_balls, b218.ball_diameter, b218.pitch_diameter, b218.inner_conformity, \
-        b218.outer_conformity, b218.contact_angle, b218.reduced_modulus, b218.ball_material.density
-    sign_change = quasistatic.zero_displacement_thrust(moving * RPM, z, d, dm, fi, fo, a0, E_ROUNDED, rho,
-                                                       constants="harris")
+    sign_change = quasistatic.sign_change_thrust(b218, moving * RPM, **OPTIONS)
     write_csv(out / "sign_change.csv", {"speed_rpm": moving, "axial_load_kN": sign_change * 1e-3,
                                         "printed_kN": np.array([PRINTED_SIGN_CHANGE[int(n)] for n in moving])})
 
