@@ -370,8 +370,6 @@ def analyse(session):
     else:
         f2 = fits.SpeedDependenceFit(*(np.zeros(0),) * 7)
         p0_5 = np.zeros(0)
-    # one group gives scalar fit fields: make every field an array once
-    f1, f2, f3 = (type(fit)(*map(np.atleast_1d, fit)) for fit in (f1, f2, f3))
     # ---- cross-checks (6.5); the load and speed terms are linear in f and f0
     c = hb.load_term_exponent
     unit_tf5 = (
@@ -389,6 +387,7 @@ def analyse(session):
     mean_f0 = float(np.mean(f2.speed_term_factor)) if n5 else math.nan
     unit_t0 = friction.speed_term(col_speed, dm, 1.0) if n4 else np.zeros(0)
     t0_task2 = mean_f0 * unit_t0
+    # fitted with groups=, every fit field is already a 1-d array (one value per group)
     task1 = Task1(
         tilt4,
         label4,
