@@ -159,6 +159,17 @@ def test_torque_lists_overrides_and_inline_bearing(capsys):
     assert json.loads(out)["equivalent_static_load_N"] == pytest.approx(9.80665, rel=1e-12)
 
 
+def test_torque_json_reports_one_override_with_the_other_tabulated_constant(capsys):
+    code, out, _ = run(
+        capsys, "friction", "torque", "-b", "18", "-R", "10 N", "--x0", "0.7", "--c", "0.5",
+        "--model", "two-term", "--f0", "2e-7", "--json",
+    )  # fmt: skip
+    d = json.loads(out)
+    assert code == 0
+    assert (d["x0"], d["y0"]) == (0.7, friction.RADIAL_STATIC_FACTORS[1])
+    assert (d["f"], d["c"]) == (friction.RADIAL_LOAD_TERM[0], 0.5)
+
+
 def test_torque_human_output(capsys):
     code, out, _ = run(
         capsys,

@@ -255,15 +255,11 @@ def torque(
     kw = {"bearing_type": b.type, "contact_angle": angle, "radial_factor": x0, "axial_factor": y0}
     p0 = np.atleast_1d(friction.equivalent_static_load(fr, fa, **kw))
     combined = np.atleast_1d(friction.combined_branch_governs(fr, fa, **kw))
-    x0_used, y0_used = (
-        (x0, y0)
-        if x0 is not None and y0 is not None
-        else friction.static_load_factors(b.type, angle)
-    )
-    x0_used, y0_used = (
-        (x0 if x0 is not None else float(x0_used)),
-        (y0 if y0 is not None else float(y0_used)),
-    )
+    x0_used, y0_used = x0, y0
+    if x0 is None or y0 is None:
+        x_tab, y_tab = friction.static_load_factors(b.type, angle)
+        x0_used = float(x_tab) if x0 is None else x0
+        y0_used = float(y_tab) if y0 is None else y0
     info = {"bearing": b.designation, "type": b.type, "model": model, "x0": x0_used, "y0": y0_used}
     if model == "one-term":
         d = b.require("bore")
@@ -276,13 +272,11 @@ def torque(
     else:
         dm = b.mean_diameter
         c0 = b.require("static_load_rating")
-        f_tab, c_tab = (
-            friction.load_term_constants(b.type, angle) if (f is None or c is None) else (f, c)
-        )
-        f_used, c_used = (
-            (f if f is not None else float(f_tab)),
-            (c if c is not None else float(c_tab)),
-        )
+        f_used, c_used = f, c
+        if f is None or c is None:
+            f_tab, c_tab = friction.load_term_constants(b.type, angle)
+            f_used = float(f_tab) if f is None else f
+            c_used = float(c_tab) if c is None else c
         load_term = np.atleast_1d(
             friction.load_term(
                 p0,
@@ -393,12 +387,11 @@ def lab(
     session = measurement.read_session(file)
     result = analysis.analyse(session)
     files = report.write_report(result, out) if out is not None else None
-    if json_out:
-        doc = analysis.to_dict(result)
-        doc["report"] = None if files is None else str(files.html)
-        emit_json(doc)
-        return
     d = analysis.to_dict(result)
+    if json_out:
+        d["report"] = None if files is None else str(files.html)
+        emit_json(d)
+        return
     b = d["bearing"]
     console.print(
         f"[bold]Bearing {b['designation']}[/bold] ({b['type']}, d = {b['bore_mm']:g} mm, d_m = "
