@@ -96,10 +96,8 @@ def main():
     # one batched residual + Jacobian evaluation of the same cases, at the solution
     model, _ = quasistatic._prepare(fa.ravel(), *GEO, "outer", 1, OPTIONS["constants"])
     idx = np.arange(total)
-    le = (GEO[4] - 0.5) * GEO[1] + state.deflection_outer.ravel()
-    v = np.stack([le * np.sin(state.contact_angle_outer.ravel()), le * np.cos(state.contact_angle_outer.ravel()),
-                  state.deflection_inner.ravel(), state.deflection_outer.ravel(),
-                  state.axial_displacement.ravel()], axis=1) / GEO[1]
+    v = quasistatic._unknowns_from(model, idx, state.contact_angle_outer.ravel(), state.deflection_inner.ravel(),
+                                   state.deflection_outer.ravel(), state.axial_displacement.ravel())
     t_eval, _ = best_of(lambda: quasistatic._equations(model, idx, v, n.ravel() ** 2, True), 10)
     t_public, _ = best_of(lambda: quasistatic.residual(v.reshape(fa.shape + (5,)), fa, n, *GEO,
                                                        constants=OPTIONS["constants"]), 5)
