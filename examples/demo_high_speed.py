@@ -57,6 +57,7 @@ def save(fig, path):
     fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".png")
     os.close(fd)
     fig.savefig(tmp, dpi=120)
+    os.chmod(tmp, 0o644)  # mkstemp creates 0600; an output is an ordinary file
     os.replace(tmp, path)
     plt.close(fig)
 

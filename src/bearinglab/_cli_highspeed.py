@@ -72,6 +72,7 @@ def write_csv(path, columns):
             writer.writerow(names)
             for row in zip(*(columns[n] for n in names)):
                 writer.writerow([_cell(v) for v in row])
+        os.chmod(tmp, 0o644)  # mkstemp creates 0600; an output is an ordinary file
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):
@@ -151,6 +152,7 @@ def plot_map(state, path, *, title="", sign_change=None):
     os.close(fd)
     try:
         fig.savefig(tmp, format=suffix, dpi=120)
+        os.chmod(tmp, 0o644)  # mkstemp creates 0600; an output is an ordinary file
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):

@@ -429,7 +429,7 @@ def write_table(columns, path):
         elif path.suffix == ".csv":
             import csv
 
-            with open(tmp, "w", newline="") as fh:
+            with open(tmp, "w", newline="", encoding="utf-8") as fh:
                 w = csv.writer(fh)
                 w.writerow(list(columns))
                 for row in zip(*[np.asarray(v).tolist() for v in columns.values()]):
