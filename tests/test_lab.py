@@ -7,7 +7,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from numpy.testing import assert_allclose
 from scipy import stats
@@ -250,6 +250,9 @@ def test_noiseless_two_term_data_recovered_by_task2(f0, f, dm, c0, p0, n, spread
 def test_noiseless_two_term_data_recovered_by_task3(f0, f, dm, c0, p0, n, spread, m):
     loads = np.geomspace(p0, p0 * spread, m)
     t = friction.two_term(loads, n * RPM, dm, c0, f0, load_term_factor=f)
+    # the fit can only see f through the spread of T_F between the points: where that spread is below
+    # 1e-6 of the torque, rounding alone limits f to ~1e-10 / 1e-6 relative (a well-posed case only)
+    assume(np.ptp(t.load_term) > 1e-6 * float(np.max(t.torque)))
     got = fits.load_dependence(t.torque, loads, dm, c0, load_term_exponent=0.55)
     assert got.load_term_factor == pytest.approx(f, rel=1e-9)
     assert got.speed_term == pytest.approx(float(t.speed_term[0]), rel=1e-9)

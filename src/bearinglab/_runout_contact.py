@@ -378,6 +378,21 @@ def solve_triples(dk, angles, centre_b, centre_d, chunk=256):
     return a0, b, d, diam
 
 
+def _polish_vertex(v, face, rhs):
+    """A face end point from the LP, moved onto the exact intersection of its two tightest independent
+    constraints. The simplex returns it within its feasibility tolerance (~1e-10); on a face much shorter
+    than its distance to the tie-break centre, the projection onto the face magnifies that by the ratio
+    (1e6 seen), so the cross-check would measure the LP's tolerance, not the solvers' disagreement."""
+    order = np.argsort(np.abs(rhs - face @ v))
+    i = order[0]
+    for j in order[1:]:
+        if abs(face[i, 0] * face[j, 1] - face[i, 1] * face[j, 0]) > 1e-8:  # not parallel
+            exact = np.linalg.solve(face[[i, j]], rhs[[i, j]])
+            # keep the LP's point if the pair was not the vertex's (the exact point must be feasible)
+            return exact if np.all(face @ exact - rhs <= 1e-9 * max(1.0, np.abs(rhs).max())) else v
+    return v
+
+
 def solve_lp(dk, angles, centre_b, centre_d):
     """Reference solve with a general LP solver, one position at a time (spec 003 section 8.1).
 
@@ -426,7 +441,7 @@ def solve_lp(dk, angles, centre_b, centre_d):
                     estimate=r2.x,
                     reason=f"position {p}: {r2.message}",
                 )
-            ends.append(r2.x)
+            ends.append(_polish_vertex(r2.x, face, dk[p] - a))
         ends = np.array(ends)
         dist = np.hypot(ends[:, None, 0] - ends[None, :, 0], ends[:, None, 1] - ends[None, :, 1])
         i, j = np.unravel_index(dist.argmax(), dist.shape)
