@@ -450,7 +450,8 @@ def solve_lp(dk, angles, centre_b, centre_d):
         length = float(np.hypot(*seg))
         c = np.array([centre_b[p], centre_d[p]])
         if length > 0:
-            t = np.clip(np.dot(c - p1, seg) / length**2, 0.0, 1.0)
+            # divided in two steps: length**2 underflows to 0 on a face ~1e-160 um long (hypothesis found it)
+            t = np.clip(np.dot(c - p1, seg / length) / length, 0.0, 1.0)
             v = p1 + t * seg
         else:
             v = p1

@@ -68,10 +68,13 @@ class PointContact(NamedTuple):
 
 
 _SMALL_F = 1e-5  # below this F(rho) the series m = 8F/3 (+O(F^2)) is used: the closed form is 0/0
+_F_NOISE_ULPS = 8.0  # K and E carry a few ulps each; 3.9e-15 was seen against the 4.9e-15 of one ulp
 
 
 def _f_of_m(m):
-    """F(rho) as a function of the elliptic parameter m = 1 - 1/kappa^2, and dF/dm."""
+    """F(rho) as a function of the elliptic parameter m = 1 - 1/kappa^2, dF/dm, and the rounding error
+    of F (a bound: the numerator cancels, so F is known to ~eps ((kappa^2+1)E + 2K) / |den|, about 5e-15
+    at F = 0.07, not to eps)."""
     k = ellipk(m)
     e = ellipe(m)
     k2 = 1.0 / (1.0 - m)  # kappa^2
@@ -84,7 +87,8 @@ def _f_of_m(m):
     dk2 = k2 * k2
     dnum = dk2 * e + (k2 + 1.0) * de - 2.0 * dk
     dden = dk2 * e + (k2 - 1.0) * de
-    return f, (dnum * den - num * dden) / (den * den)
+    noise = _F_NOISE_ULPS * np.finfo(float).eps * ((k2 + 1.0) * e + 2.0 * k) / np.abs(den)
+    return f, (dnum * den - num * dden) / (den * den), noise
 
 
 def ellipticity(curvature_difference, *, rtol=_solve.ELLIPTICITY_RTOL, max_iter=_solve.ELLIPTICITY_MAX_ITER):
@@ -130,8 +134,9 @@ def ellipticity(curvature_difference, *, rtol=_solve.ELLIPTICITY_RTOL, max_iter=
         mb = np.clip(1.0 - 1.0 / kappa0**2, 1e-12, 1.0 - 1e-16)
         lo = np.zeros_like(mb)
         hi = np.ones_like(mb)
+        active = np.ones(mb.shape, dtype=bool)
         for it in range(1, max_iter + 1):
-            f, df = _f_of_m(mb)
+            f, df, noise = _f_of_m(mb)
             resid = f - fb
             lo = np.where(resid < 0, np.maximum(lo, mb), lo)  # F rises with m
             hi = np.where(resid > 0, np.minimum(hi, mb), hi)
@@ -139,9 +144,14 @@ def ellipticity(curvature_difference, *, rtol=_solve.ELLIPTICITY_RTOL, max_iter=
                 new = mb - resid / df
             outside = ~((new >= lo) & (new <= hi)) | ~np.isfinite(new)  # closed: a converged step may land on a bound
             new = np.where(outside, 0.5 * (lo + hi), new)
-            step = np.abs(new - mb)
-            mb = new
-            if np.all(step <= rtol * np.maximum(mb, 1e-300)) or np.all(resid == 0):
+            # Newton may cycle between two neighbours whose residuals are +-(rounding of F) (F = 0.0683:
+            # 8.6e-15 apart, 5e-14 relative > rtol). A step back onto the other bracket end (a point already
+            # evaluated) with a residual within the rounding is such a cycle: m is a root as far as F can tell
+            at_root = (np.abs(resid) <= noise) & ((new == lo) | (new == hi))
+            stepped = np.abs(new - mb) <= rtol * np.maximum(new, 1e-300)
+            mb = np.where(active & ~at_root, new, mb)
+            active &= ~(at_root | stepped)
+            if not active.any():
                 break
         else:
             raise ConvergenceError(
