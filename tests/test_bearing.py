@@ -138,19 +138,19 @@ def test_materials():
     ],
 )
 def test_bad_material(kw, match):
-    args = dict(name="x", elastic_modulus=2e11, poisson_ratio=0.3, density=7800.0) | kw
+    args = {"name": "x", "elastic_modulus": 2e11, "poisson_ratio": 0.3, "density": 7800.0} | kw
     with pytest.raises(InputError, match=match):
         Material(**args)
 
 
-GOOD = dict(
-    n_balls=7,
-    ball_diameter=2e-3,
-    pitch_diameter=8.7355e-3,
-    inner_conformity=0.525,
-    outer_conformity=0.58,
-    contact_angle=math.radians(12),
-)
+GOOD = {
+    "n_balls": 7,
+    "ball_diameter": 2e-3,
+    "pitch_diameter": 8.7355e-3,
+    "inner_conformity": 0.525,
+    "outer_conformity": 0.58,
+    "contact_angle": math.radians(12),
+}
 
 
 @pytest.mark.parametrize(

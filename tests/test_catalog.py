@@ -17,61 +17,61 @@ MM = 1e-3
 # expected values written from the sources cited in the catalog (not read from the catalog file)
 BUILTIN = {
     # spec 000 section 7: 5 x 13 x 4 mm, z = 7, d = 2 mm, dm = 8.7355 mm, r_v = 1.05, r_n = 1.16 mm, 12 deg
-    "4-1006095": dict(
-        n_balls=7,
-        ball_diameter=2 * MM,
-        pitch_diameter=8.7355 * MM,
-        inner_conformity=0.525,
-        outer_conformity=0.58,
-        contact_angle=math.radians(12),
-        bore=5 * MM,
-        outside_diameter=13 * MM,
-        width=4 * MM,
-        type="angular",
-    ),
+    "4-1006095": {
+        "n_balls": 7,
+        "ball_diameter": 2 * MM,
+        "pitch_diameter": 8.7355 * MM,
+        "inner_conformity": 0.525,
+        "outer_conformity": 0.58,
+        "contact_angle": math.radians(12),
+        "bore": 5 * MM,
+        "outside_diameter": 13 * MM,
+        "width": 4 * MM,
+        "type": "angular",
+    },
     # spec 001 section 3.4, Table 3: d, d_m, (D), C0; radial
-    "1000095": dict(
-        bore=5 * MM,
-        pitch_diameter=9 * MM,
-        outside_diameter=13 * MM,
-        static_load_rating=392.0,
-        type="radial",
-    ),
-    "18": dict(
-        bore=8 * MM,
-        pitch_diameter=13.5 * MM,
-        outside_diameter=19 * MM,
-        static_load_rating=1354.0,
-        type="radial",
-    ),
-    "101": dict(
-        bore=12 * MM,
-        pitch_diameter=20 * MM,
-        outside_diameter=28 * MM,
-        static_load_rating=2227.0,
-        type="radial",
-    ),
+    "1000095": {
+        "bore": 5 * MM,
+        "pitch_diameter": 9 * MM,
+        "outside_diameter": 13 * MM,
+        "static_load_rating": 392.0,
+        "type": "radial",
+    },
+    "18": {
+        "bore": 8 * MM,
+        "pitch_diameter": 13.5 * MM,
+        "outside_diameter": 19 * MM,
+        "static_load_rating": 1354.0,
+        "type": "radial",
+    },
+    "101": {
+        "bore": 12 * MM,
+        "pitch_diameter": 20 * MM,
+        "outside_diameter": 28 * MM,
+        "static_load_rating": 2227.0,
+        "type": "radial",
+    },
     # spec 004 section 6: Z = 16, D = 22.23 mm, d_m = 125.3 mm, f = 0.5232, 40 deg
-    "B218": dict(
-        n_balls=16,
-        ball_diameter=22.23 * MM,
-        pitch_diameter=125.3 * MM,
-        inner_conformity=0.5232,
-        outer_conformity=0.5232,
-        contact_angle=math.radians(40),
-        type="angular",
-    ),
+    "B218": {
+        "n_balls": 16,
+        "ball_diameter": 22.23 * MM,
+        "pitch_diameter": 125.3 * MM,
+        "inner_conformity": 0.5232,
+        "outer_conformity": 0.5232,
+        "contact_angle": math.radians(40),
+        "type": "angular",
+    },
     # CWRU drive-end bearing: 9 balls, 7.94 mm, pitch 39.04 mm, 0 deg; 25 x 52 x 15 mm
-    "6205-2RS": dict(
-        n_balls=9,
-        ball_diameter=7.94 * MM,
-        pitch_diameter=39.04 * MM,
-        contact_angle=0.0,
-        bore=25 * MM,
-        outside_diameter=52 * MM,
-        width=15 * MM,
-        type="radial",
-    ),
+    "6205-2RS": {
+        "n_balls": 9,
+        "ball_diameter": 7.94 * MM,
+        "pitch_diameter": 39.04 * MM,
+        "contact_angle": 0.0,
+        "bore": 25 * MM,
+        "outside_diameter": 52 * MM,
+        "width": 15 * MM,
+        "type": "radial",
+    },
 }
 
 

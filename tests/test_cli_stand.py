@@ -1,5 +1,6 @@
 """Command line of the test-stand method: axial-angle and stand-load, and every bad-input case of issue 2."""
 
+import itertools
 import json
 
 import pytest
@@ -53,7 +54,7 @@ def test_axial_angle_human_output_and_load_range(capsys):
     code, out, _ = run(capsys, "axial-angle", "-b", "4-1006095", "-F", "1kgf:4kgf:1kgf", "--json")
     cases = json.loads(out)["cases"]
     assert [c["axial_load_kgf"] for c in cases] == pytest.approx([1, 2, 3, 4])
-    assert all(b["operating_contact_angle_deg"] > a["operating_contact_angle_deg"] for a, b in zip(cases, cases[1:]))
+    assert all(b["operating_contact_angle_deg"] > a["operating_contact_angle_deg"] for a, b in itertools.pairwise(cases))
 
 
 def test_axial_angle_inline_geometry_equals_catalog(capsys):
@@ -125,6 +126,6 @@ def test_non_convergence_is_one_line_exit_3(capsys, monkeypatch):
 
     monkeypatch.setattr(st.operating_contact_angle, "__kwdefaults__",
                         dict(st.operating_contact_angle.__kwdefaults__, max_iter=1, xtol=0.0, ftol_percent=0.0))
-    code, out, err = run(capsys, "axial-angle", "-b", "4-1006095", "-F", "2 kgf")
+    code, _out, err = run(capsys, "axial-angle", "-b", "4-1006095", "-F", "2 kgf")
     assert code == 3
     assert err.count("\n") == 1 and "no convergence after 1 iterations" in err and "Traceback" not in err

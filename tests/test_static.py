@@ -174,14 +174,14 @@ def test_static_thrust_angle_of_the_218_bearing():
 
 
 @pytest.mark.parametrize("kwargs, match", [
-    (dict(axial_load=0.0), r"axial_load must be > 0 \[N\], got 0.0"),
-    (dict(axial_load=-1.0), r"axial_load must be > 0"),
-    (dict(free_angle=0.0), r"free_angle must be in \(0, 90\) \[deg\], got 0.0"),
-    (dict(free_angle=math.radians(95)), r"free_angle must be in \(0, 90\) \[deg\], got 95"),
-    (dict(force_characteristic=0.0), r"force_characteristic must be > 0"),
+    ({"axial_load": 0.0}, r"axial_load must be > 0 \[N\], got 0.0"),
+    ({"axial_load": -1.0}, r"axial_load must be > 0"),
+    ({"free_angle": 0.0}, r"free_angle must be in \(0, 90\) \[deg\], got 0.0"),
+    ({"free_angle": math.radians(95)}, r"free_angle must be in \(0, 90\) \[deg\], got 95"),
+    ({"force_characteristic": 0.0}, r"force_characteristic must be > 0"),
 ])
 def test_bad_inputs_name_parameter_and_range(kwargs, match):
-    args = dict(axial_load=2 * KGF, force_characteristic=CS, free_angle=A0)
+    args = {"axial_load": 2 * KGF, "force_characteristic": CS, "free_angle": A0}
     args.update(kwargs)
     with pytest.raises(InputError, match=match):
         static.operating_contact_angle(**args)

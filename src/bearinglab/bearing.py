@@ -140,9 +140,10 @@ class BallBearing:
     source: str = ""
 
     def __post_init__(self):
-        if self.n_balls is not None:
-            if not (isinstance(self.n_balls, (int, np.integer)) and not isinstance(self.n_balls, bool)) or self.n_balls < 1:
-                raise InputError(f"n_balls must be an integer >= 1 [-], got {self.n_balls!r}")
+        if self.n_balls is not None and (
+            not (isinstance(self.n_balls, (int, np.integer)) and not isinstance(self.n_balls, bool)) or self.n_balls < 1
+        ):
+            raise InputError(f"n_balls must be an integer >= 1 [-], got {self.n_balls!r}")
         for name, unit in (("ball_diameter", "m"), ("pitch_diameter", "m"), ("bore", "m"),
                            ("outside_diameter", "m"), ("width", "m"), ("static_load_rating", "N")):
             _positive(name, getattr(self, name), unit)
@@ -150,12 +151,15 @@ class BallBearing:
             f = getattr(self, name)
             if f is not None and not (isinstance(f, (int, float, np.floating)) and 0.5 < f < 10.0):
                 raise InputError(f"{name} must be in (0.5, 10) [-], got {f!r}")
-        if self.ball_diameter is not None and self.pitch_diameter is not None:
-            if not self.pitch_diameter > self.ball_diameter:
-                raise InputError(
-                    f"pitch_diameter must be > ball_diameter [mm], got {self.pitch_diameter * 1e3:g} mm "
-                    f"with ball_diameter = {self.ball_diameter * 1e3:g} mm"
-                )
+        if (
+            self.ball_diameter is not None
+            and self.pitch_diameter is not None
+            and not self.pitch_diameter > self.ball_diameter
+        ):
+            raise InputError(
+                f"pitch_diameter must be > ball_diameter [mm], got {self.pitch_diameter * 1e3:g} mm "
+                f"with ball_diameter = {self.ball_diameter * 1e3:g} mm"
+            )
         if self.bore is not None and self.outside_diameter is not None and not self.outside_diameter > self.bore:
             raise InputError(
                 f"outside_diameter must be > bore [mm], got {self.outside_diameter * 1e3:g} mm "

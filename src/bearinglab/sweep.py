@@ -192,8 +192,8 @@ def _evaluate_frequencies(speed, axial_load=None, **cases):
     if ok.any():
         f = kinematics.characteristic_frequencies(w[ok], g["ball_diameter"][ok], g["pitch_diameter"][ok],
                                                   g["n_balls"][ok].astype(int), angle[ok])
-        for k in freqs:
-            freqs[k][ok] = getattr(f, k)
+        for k, values in freqs.items():
+            values[ok] = getattr(f, k)
     for k, v in freqs.items():
         out[f"{k}_hz"] = v / (2 * math.pi)
         if k != "shaft":

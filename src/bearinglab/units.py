@@ -402,7 +402,7 @@ def parse_values(text, kind, name):
         start, stop, step = values
         if not step > 0 or stop < start:
             raise InputError(f"{name}: range {text!r} needs step > 0 and stop >= start")
-        count = int(math.floor((stop - start) / step * (1 + 1e-12) + 1e-9)) + 1
+        count = math.floor((stop - start) / step * (1 + 1e-12) + 1e-9) + 1
         if count > 10_000_000:
             raise InputError(f"{name}: range {text!r} has {count} values, more than 10^7")
         return start + step * np.arange(count)
