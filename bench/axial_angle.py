@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import math
 import sys
-import time
 
 import numpy as np
+from _timing import best_of
 from scipy.optimize import brentq
 
 from bearinglab import catalog, static
@@ -36,14 +36,6 @@ def baseline(loads, cs, a0):
 
     return np.array([brentq(f, a0 + 1e-15, math.pi / 2 - 1e-12, args=(fa,), xtol=1e-14, rtol=1e-14) for fa in loads])
 
-
-def best_of(fn, repeat):
-    times = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        out = fn()
-        times.append(time.perf_counter() - t)
-    return min(times), out
 
 
 def main():

@@ -9,9 +9,9 @@ and the largest relative difference in f0 and T_F between the two.
 from __future__ import annotations
 
 import sys
-import time
 
 import numpy as np
+from _timing import best_of
 from scipy import stats
 
 from bearinglab.lab import fits
@@ -48,14 +48,6 @@ def baseline(t, speed, n_groups):
         f0[g], tf[g] = r.slope / (DM * 1e3) ** 3, r.intercept * 1e-3
     return f0, tf
 
-
-def best_of(fn, repeat):
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        out = fn()
-        times.append(time.perf_counter() - start)
-    return min(times), out
 
 
 def main():

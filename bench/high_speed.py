@@ -13,9 +13,9 @@ residual-plus-Jacobian evaluation of all cases.
 from __future__ import annotations
 
 import sys
-import time
 
 import numpy as np
+from _timing import best_of
 from scipy.optimize import fsolve
 
 from bearinglab import catalog, quasistatic
@@ -79,14 +79,6 @@ def baseline(fa, n, starts=None):
             out[k] = ex["ai"][0], ex["ae"][0]
     return out
 
-
-def best_of(fn, repeat):
-    times = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        out = fn()
-        times.append(time.perf_counter() - t)
-    return min(times), out
 
 
 def main():

@@ -12,9 +12,9 @@ difference in a0 between the two.
 from __future__ import annotations
 
 import sys
-import time
 
 import numpy as np
+from _timing import best_of
 from scipy.optimize import linprog
 
 from bearinglab import runout
@@ -51,14 +51,6 @@ def solve_one_by_one(dk, theta):
         out[p] = res.x[0] * UM
     return out
 
-
-def best_of(fn, repeat):
-    times = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        out = fn()
-        times.append(time.perf_counter() - t)
-    return min(times), out
 
 
 def main():

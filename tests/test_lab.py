@@ -699,14 +699,8 @@ def test_results_dict_is_json_clean():
     )  # no 59.99999999999999
 
 
-def test_benchmark_paths_agree_on_a_small_input():
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location(
-        "friction_fits_bench", Path(__file__).resolve().parent.parent / "bench" / "friction_fits.py"
-    )
-    bench = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(bench)
+def test_benchmark_paths_agree_on_a_small_input(load_bench):
+    bench = load_bench("friction_fits")
     t, speed, groups = bench.cases(20, seed=3)
     f0, tf = bench.batched(t, speed, groups)
     f0_ref, tf_ref = bench.baseline(t, speed, 20)

@@ -1,10 +1,8 @@
 """Properties of the high-speed quasi-static model (spec 004): constants, kinematics, Jacobian, limits,
 equilibrium at the solution, the paper's claims (section 8) over grids of loads and speeds, failures."""
 
-import importlib.util
 import math
 import warnings
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -490,11 +488,8 @@ def test_result_table_units():
     assert t["status"][0] == "ok" and t["converged"][0]
 
 
-def test_bench_solvers_agree_on_a_small_map():
-    spec = importlib.util.spec_from_file_location("bench_high_speed",
-                                                  Path(__file__).parents[1] / "bench" / "high_speed.py")
-    bench = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(bench)
+def test_bench_solvers_agree_on_a_small_map(load_bench):
+    bench = load_bench("high_speed")
     fa, n = bench.grid(4, 3)
     state = bench.batched(fa, n)
     ref = bench.baseline(fa.ravel(), n.ravel())

@@ -797,15 +797,9 @@ def test_missing_error_file():
         R.load_error_file("/nonexistent/errors.toml")
 
 
-def test_benchmark_functions_agree_on_a_small_input():
+def test_benchmark_functions_agree_on_a_small_input(load_bench):
     """Smoke test of bench/runout.py (the benchmark itself is not run in the tests)."""
-    import importlib.util
-    from pathlib import Path
-
-    path = Path(__file__).parent.parent / "bench" / "runout.py"
-    spec = importlib.util.spec_from_file_location("bench_runout", path)
-    bench = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(bench)
+    bench = load_bench("runout")
     dk, theta = bench.cases(40)
     sol = bench.solve_batch(dk, theta)
     a0 = bench.solve_one_by_one(dk[:8], theta[:8])
