@@ -23,7 +23,6 @@ from __future__ import annotations
 import math
 import os
 import sys
-import tempfile
 import time
 from pathlib import Path
 
@@ -35,6 +34,7 @@ import numpy as np
 
 from bearinglab import catalog, quasistatic
 from bearinglab._cli_highspeed import plot_map, write_csv
+from bearinglab._io import atomic_output
 from bearinglab.units import RPM
 
 #: E' of the rounded K prefactor 2.15e5 N/mm^1.5 of spec 004 eq. (16) [Pa]
@@ -54,11 +54,8 @@ PRINTED_SIGN_CHANGE = {3000: 2.31, 6000: 6.61, 10000: 14.42, 15000: 26.81}  # kN
 
 def save(fig, path):
     """Write a figure whole or not at all."""
-    fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".png")
-    os.close(fd)
-    fig.savefig(tmp, dpi=120)
-    os.chmod(tmp, 0o644)  # mkstemp creates 0600; an output is an ordinary file
-    os.replace(tmp, path)
+    with atomic_output(path, suffix=".png") as tmp:
+        fig.savefig(tmp, dpi=120)
     plt.close(fig)
 
 

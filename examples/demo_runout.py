@@ -12,18 +12,15 @@ writes tables (CSV) and figures (PNG) under ``out/runout/`` and prints a short s
 
 from __future__ import annotations
 
-import csv
-import io
 import math
-import os
 import sys
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from bearinglab import _runout_plots as plots
 from bearinglab import runout
+from bearinglab._io import csv_text, write_text
 
 HERE = Path(__file__).resolve().parent
 UM = 1e-6
@@ -31,18 +28,7 @@ UM = 1e-6
 
 def write_csv(path, header, rows, comments=()):
     """Write a CSV file whole or not at all (temporary file in the same directory, then os.replace)."""
-    buf = io.StringIO()
-    for line in comments:
-        buf.write(f"# {line}\n")
-    w = csv.writer(buf, lineterminator="\n")
-    w.writerow(header)
-    w.writerows(rows)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
-        fh.write(buf.getvalue())
-    os.chmod(tmp, 0o644)
-    os.replace(tmp, path)
-    return path
+    return write_text(path, csv_text(header, rows, comments))
 
 
 def main(argv):

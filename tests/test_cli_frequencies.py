@@ -377,7 +377,7 @@ def test_csv_failure_keeps_the_old_file(capsys, tmp_path, monkeypatch):
     def broken(*args, **kwargs):
         raise OSError(28, "No space left on device", str(target))
 
-    import bearinglab._cli_highspeed as mod  # the CSV writer the command uses
+    import bearinglab._io as mod  # the whole-or-nothing writer every output goes through
 
     monkeypatch.setattr(mod.os, "replace", broken)
     code, _out, err = run(

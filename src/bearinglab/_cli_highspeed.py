@@ -11,7 +11,6 @@ import csv
 import math
 import os
 import sys
-import tempfile
 import warnings
 from pathlib import Path
 from typing import Annotated
@@ -20,6 +19,7 @@ import numpy as np
 import typer
 
 from . import quasistatic
+from ._io import atomic_output
 from .cli import (
     BallDiameter,
     BallMaterial,
@@ -53,31 +53,21 @@ _PROGRESS_MIN_CASES = 5000  # serial sweeps at least this large are cut finer, s
 _CHUNK = 2500  # cases per batched call then
 
 
-def _directory(path: Path, what: str) -> Path:
-    directory = path.parent if str(path.parent) else Path(".")
-    if not directory.is_dir():
-        raise InputError(f"{what}: directory {str(directory)!r} does not exist")
-    return directory
+def _check_directory(path: Path, what: str) -> None:
+    if not path.parent.is_dir():
+        raise InputError(f"{what}: directory {str(path.parent)!r} does not exist")
 
 
 def write_csv(path, columns):
     """Write ``columns`` (name -> 1-D array) as CSV, whole or not at all (temporary file, then rename)."""
     path = Path(path)
-    directory = _directory(path, "csv")
+    _check_directory(path, "csv")
     names = list(columns)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    try:
-        with os.fdopen(fd, "w", newline="", encoding="utf-8") as fh:
-            writer = csv.writer(fh)
-            writer.writerow(names)
-            for row in zip(*(columns[n] for n in names)):
-                writer.writerow([_cell(v) for v in row])
-        os.chmod(tmp, 0o644)  # mkstemp creates 0600; an output is an ordinary file
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+    with atomic_output(path) as tmp, open(tmp, "w", newline="", encoding="utf-8") as fh:
+        writer = csv.writer(fh)
+        writer.writerow(names)
+        for row in zip(*(columns[n] for n in names)):
+            writer.writerow([_cell(v) for v in row])
 
 
 def _cell(v):
@@ -106,7 +96,7 @@ def plot_map(state, path, *, title="", sign_change=None):
     import matplotlib.pyplot as plt
 
     path = Path(path)
-    directory = _directory(path, "plot")
+    _check_directory(path, "plot")
     fa = np.asarray(state.axial_load)[:, 0] * 1e-3
     speeds = np.asarray(state.shaft_speed)[0] / RPM
     deg = 180.0 / math.pi
@@ -148,16 +138,9 @@ def plot_map(state, path, *, title="", sign_change=None):
     if title:
         fig.suptitle(title)
     suffix = path.suffix.lower().lstrip(".") or "png"
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=f".{suffix}", dir=directory)
-    os.close(fd)
     try:
-        fig.savefig(tmp, format=suffix, dpi=120)
-        os.chmod(tmp, 0o644)  # mkstemp creates 0600; an output is an ordinary file
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+        with atomic_output(path, suffix=f".{suffix}") as tmp:
+            fig.savefig(tmp, format=suffix, dpi=120)
     finally:
         plt.close(fig)
 

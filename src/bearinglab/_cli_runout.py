@@ -8,11 +8,7 @@ subcommand are rejected rather than silently ignored.
 from __future__ import annotations
 
 import contextlib
-import csv
-import io
 import math
-import os
-import tempfile
 from pathlib import Path
 from typing import Annotated
 
@@ -21,6 +17,7 @@ import typer
 
 from . import catalog as _catalog
 from . import runout
+from ._io import csv_text, write_text
 from .cli import (
     BearingName,
     CatalogFile,
@@ -98,29 +95,9 @@ def _geometry(geometry_file, bearing, catalog_file, first_ball_angle):
 
 
 def _atomic_write(path, text):
-    """Write a whole file or nothing: a temporary file in the same directory, then os.replace."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
-            fh.write(text)
-        os.chmod(tmp, 0o644)  # mkstemp creates 0600; an output table is an ordinary file
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
-
-
-def _csv_text(header, rows, comments=()):
-    buf = io.StringIO()
-    for line in comments:
-        buf.write(f"# {line}\n")
-    w = csv.writer(buf, lineterminator="\n")
-    w.writerow(header)
-    w.writerows(rows)
-    return buf.getvalue()
+    """Write a whole file or nothing, creating its directory."""
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    write_text(path, text)
 
 
 def _um(v):
@@ -262,7 +239,7 @@ def _trajectory_csv(t):
             t.rotation_angle, d.x, d.y, d.z, d.contact.contact, d.contact.degenerate, d.free_play
         )
     ]
-    return _csv_text(
+    return csv_text(
         ["psi_deg", "dx_um", "dy_um", "dz_um", "contact_balls", "degenerate", "free_play_um"],
         rows,
         [
@@ -595,7 +572,7 @@ def monte_carlo_command(
         ]
         _atomic_write(
             samples_csv,
-            _csv_text(
+            csv_text(
                 [
                     "sample",
                     "first_ball_angle_deg",

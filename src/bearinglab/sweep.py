@@ -29,8 +29,6 @@ instead of raising, so one bad case does not stop a sweep.
 from __future__ import annotations
 
 import math
-import os
-import tempfile
 import tomllib
 from collections.abc import Callable
 from pathlib import Path
@@ -39,6 +37,7 @@ from typing import NamedTuple
 import numpy as np
 
 from . import catalog, geometry, kinematics, parallel, static
+from ._io import atomic_output
 from .bearing import BallBearing
 from .errors import CatalogError, ConvergenceError, InputError
 from .units import KGF, parse_quantity, parse_values
@@ -416,17 +415,17 @@ def write_table(columns, path):
         Target file; its suffix chooses the format.
     """
     path = Path(path)
+    if path.suffix not in (".csv", ".parquet"):
+        raise InputError(f"output must end in .csv or .parquet, got {path.name!r}")
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    os.close(fd)
-    try:
+    with atomic_output(path) as tmp:
         if path.suffix == ".parquet":
             import pyarrow as pa
             import pyarrow.parquet as pq
 
             table = pa.table({k: (v.astype(str) if v.dtype == object else v) for k, v in columns.items()})
             pq.write_table(table, tmp)
-        elif path.suffix == ".csv":
+        else:
             import csv
 
             with open(tmp, "w", newline="", encoding="utf-8") as fh:
@@ -434,11 +433,4 @@ def write_table(columns, path):
                 w.writerow(list(columns))
                 for row in zip(*[np.asarray(v).tolist() for v in columns.values()]):
                     w.writerow(row)
-        else:
-            raise InputError(f"output must end in .csv or .parquet, got {path.name!r}")
-        os.chmod(tmp, 0o644)  # mkstemp creates 0600; a result table is an ordinary file
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
 

@@ -43,9 +43,7 @@ from __future__ import annotations
 import csv
 import dataclasses
 import math
-import os
 import re
-import tempfile
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -55,6 +53,7 @@ import numpy as np
 
 from .. import catalog as _catalog
 from .. import friction
+from .._io import atomic_output
 from ..bearing import BallBearing
 from ..errors import CatalogError, InputError
 from ..units import parse_quantity
@@ -1011,15 +1010,6 @@ def write_template(path, *, bearing=None, overwrite=False):
         raise InputError(f"{path}: file exists; choose a new name (or --force to replace it)")
     if path.is_dir():
         raise InputError(f"{path}: is a directory")
-    directory = path.parent if str(path.parent) else Path(".")
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(text)
-        os.chmod(tmp, 0o644)  # mkstemp creates 0600; an output is an ordinary file
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+    with atomic_output(path) as tmp:
+        tmp.write_text(text, encoding="utf-8")
     return path
