@@ -23,7 +23,7 @@ PATTERN = re.compile(r"^RESULT (\S+) (.*)$")
 
 def run(script):
     print(f"== {script.name}", flush=True)
-    proc = subprocess.run([sys.executable, str(script)], cwd=ROOT, capture_output=True, text=True)
+    proc = subprocess.run([sys.executable, str(script)], check=False, cwd=ROOT, capture_output=True, text=True)
     sys.stdout.write(proc.stdout)
     sys.stderr.write(proc.stderr)
     results = []
@@ -43,9 +43,9 @@ def main():
         if code != 0 or not results:
             failed.append(script.name)
         rows += [(script.name, name, f) for name, f in results]
-    stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
-    lines = [BEGIN, f"Last `make bench`: {stamp}, Python {platform.python_version()}, {os.cpu_count()} cores. "
-             "Each table: the batched path and its per-case baseline, measured in the same run.", ""]
+    stamp = _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%d %H:%M UTC")
+    lines = [BEGIN, (f"Last `make bench`: {stamp}, Python {platform.python_version()}, {os.cpu_count()} cores. "
+                     "Each table: the batched path and its per-case baseline, measured in the same run."), ""]
     for script, name, f in rows:  # one table per model
         # a script may name its two paths (batched_label=2_workers); underscores read as spaces
         batched = f.get("batched_label", "batched").replace("_", " ")

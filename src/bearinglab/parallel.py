@@ -12,6 +12,10 @@ chunk_bounds     (start, stop) of each chunk
 run_cases        evaluate ``func(**chunk_of_cases, **constants)`` over all cases
 run_seeded       Monte Carlo: ``func(n, rng, **constants)`` over blocks of samples with their own seeds
 executor_client  context manager yielding a dask client for an executor (``None`` for serial)
+Execution        the execution options (executor, workers, chunk size, progress, ...) as one value
+
+Every batch entry point of the models (``quasistatic.sweep``, ``runout.monte_carlo``, ``sweep.run_sweep``)
+takes one ``execution=Execution(...)`` argument instead of five keyword arguments.
 
 Seeds (``run_seeded``): samples are grouped in blocks of ``block_size``; block k draws from
 ``numpy.random.Generator(PCG64(SeedSequence(seed).spawn(n_blocks)[k]))``. A chunk is a run of whole blocks,
@@ -24,6 +28,7 @@ dask is imported on first use of a distributed executor, so ``import bearinglab`
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import math
 import os
 import sys
@@ -33,11 +38,75 @@ import numpy as np
 
 from .errors import InputError
 
-__all__ = ["DEFAULT_BLOCK_SIZE", "DEFAULT_CHUNK_SIZE", "chunk_bounds", "executor_client", "run_cases", "run_seeded"]
+__all__ = ["DEFAULT_BLOCK_SIZE", "DEFAULT_CHUNK_SIZE", "Execution", "chunk_bounds", "executor_client", "run_cases",
+           "run_seeded"]
 
 DEFAULT_CHUNK_SIZE = 10_000
 DEFAULT_BLOCK_SIZE = 256
 _CONNECT_TIMEOUT_S = 10.0
+
+
+@dataclasses.dataclass(frozen=True)
+class Execution:
+    """How a batch runs: where, in which chunks, with what progress report. One value travels from the
+    command line to :func:`run_cases` / :func:`run_seeded` instead of five keyword arguments.
+
+    Parameters
+    ----------
+    executor : str, optional
+        ``"serial"`` (default), ``"local"`` (a ``LocalCluster`` started for the job) or a scheduler
+        address ``"tcp://host:8786"``.
+    workers : int, optional
+        Workers of a local cluster. [-]
+    chunk_size : int, optional
+        Cases per chunk (task); ``None`` takes the default of the entry point. [-]
+    memory_limit : str or int, optional
+        Memory limit per local worker.
+    processes : bool, optional
+        Local workers as processes (default) or threads.
+    progress : callable or "dask", optional
+        ``progress(done_cases, total_cases)`` after each chunk, or ``"dask"`` for dask's progress bar.
+    timeout : float, optional
+        Seconds to wait for a remote scheduler (default 10). [s]
+
+    Examples
+    --------
+    >>> Execution(chunk_size=500).with_default_chunk_size(10_000).chunk_size
+    500
+    >>> Execution().with_default_chunk_size(10_000).chunk_size
+    10000
+    """
+
+    executor: str = "serial"
+    workers: int | None = None
+    chunk_size: int | None = None
+    memory_limit: str | int | None = None
+    processes: bool = True
+    progress: Callable[[int, int], object] | str | None = None
+    timeout: float | None = None
+
+    def __post_init__(self):
+        if self.executor is None:  # None and "serial" are the same request
+            object.__setattr__(self, "executor", "serial")
+        _validate_executor(self.executor)
+        for name in ("workers", "chunk_size"):
+            v = getattr(self, name)
+            if v is not None and (isinstance(v, bool) or int(v) != v or v < 1):
+                raise InputError(f"{name.replace('_', '-')} must be an integer >= 1 [-], got {v!r}")
+
+    def with_default_chunk_size(self, chunk_size):
+        """This value, with ``chunk_size`` filled in where it was left ``None``."""
+        return self if self.chunk_size is not None else dataclasses.replace(self, chunk_size=int(chunk_size))
+
+
+def _execution(execution, **legacy):
+    """One Execution from the new argument or the old keyword arguments (the old ones keep working)."""
+    given = {k: v for k, v in legacy.items() if v is not None}
+    if execution is None:
+        return Execution(**given)
+    if given:
+        raise InputError(f"give execution=Execution(...) or {', '.join(sorted(given))}, not both")
+    return execution
 
 
 def chunk_bounds(n_cases, chunk_size):
@@ -152,12 +221,13 @@ def _concatenate(results, n_expected):
     return out
 
 
-def _run(tasks, sizes, *, executor, workers, memory_limit, processes, progress, timeout):
+def _run(tasks, sizes, ex):
     """tasks: list of (callable, args) evaluated in order; returns their results in order."""
     total = int(sum(sizes))
     done = 0
-    with executor_client(executor, workers=workers, memory_limit=memory_limit, processes=processes,
-                         timeout=timeout) as client:
+    progress = ex.progress
+    with executor_client(ex.executor, workers=ex.workers, memory_limit=ex.memory_limit,
+                         processes=ex.processes, timeout=ex.timeout) as client:
         if client is None:
             results = []
             for (fn, args), size in zip(tasks, sizes):
@@ -186,7 +256,7 @@ def _run(tasks, sizes, *, executor, workers, memory_limit, processes, progress, 
 
 
 def run_cases(func: Callable[..., Mapping[str, np.ndarray]], cases: Mapping[str, np.ndarray], *, constants=None,
-              chunk_size=DEFAULT_CHUNK_SIZE, executor="serial", workers=None, memory_limit=None, processes=True,
+              execution=None, chunk_size=None, executor=None, workers=None, memory_limit=None, processes=None,
               progress=None, timeout=None):
     """Evaluate a batched model over many cases, chunk by chunk.
 
@@ -199,6 +269,10 @@ def run_cases(func: Callable[..., Mapping[str, np.ndarray]], cases: Mapping[str,
         Per-case inputs, all of the same length along the first axis.
     constants : mapping, optional
         Keyword arguments passed unchanged to every chunk.
+    execution : Execution, optional
+        Executor, workers, chunk size, progress and timeout as one value (default: serial, chunks of
+        :data:`DEFAULT_CHUNK_SIZE`). The keyword arguments below are the older spelling of the same
+        fields; give one or the other.
     chunk_size : int, optional
         Cases per chunk. [-]
     executor : str, optional
@@ -232,19 +306,21 @@ def run_cases(func: Callable[..., Mapping[str, np.ndarray]], cases: Mapping[str,
     if len(lengths) != 1:
         raise InputError(f"cases must all have the same length, got lengths {sorted(lengths)}")
     n = lengths.pop()
-    bounds = chunk_bounds(n, chunk_size)
+    ex = _execution(execution, chunk_size=chunk_size, executor=executor, workers=workers,
+                    memory_limit=memory_limit, processes=processes, progress=progress,
+                    timeout=timeout).with_default_chunk_size(DEFAULT_CHUNK_SIZE)
+    bounds = chunk_bounds(n, ex.chunk_size)
     if not bounds:
         raise InputError("cases must hold at least one case")
     constants = dict(constants or {})
     tasks = [(_evaluate, (func, {k: v[a:b] for k, v in arrays.items()}, constants)) for a, b in bounds]
-    results = _run(tasks, [b - a for a, b in bounds], executor=executor, workers=workers, memory_limit=memory_limit,
-                   processes=processes, progress=progress, timeout=timeout)
+    results = _run(tasks, [b - a for a, b in bounds], ex)
     return _concatenate(results, n)
 
 
 def run_seeded(func: Callable[..., Mapping[str, np.ndarray]], n_samples, seed, *, constants=None,
-               block_size=DEFAULT_BLOCK_SIZE, chunk_size=DEFAULT_CHUNK_SIZE, executor="serial", workers=None,
-               memory_limit=None, processes=True, progress=None, timeout=None):
+               block_size=DEFAULT_BLOCK_SIZE, execution=None, chunk_size=None, executor=None, workers=None,
+               memory_limit=None, processes=None, progress=None, timeout=None):
     """Monte Carlo over ``n_samples``, reproducible from one seed whatever the chunking or executor.
 
     Parameters
@@ -260,6 +336,8 @@ def run_seeded(func: Callable[..., Mapping[str, np.ndarray]], n_samples, seed, *
         Keyword arguments passed unchanged to every block.
     block_size : int, optional
         Samples per seeded block; the result depends on it (and the seed) only. [-]
+    execution : Execution, optional
+        As in :func:`run_cases`; its chunk size is in samples per task, rounded up to whole blocks.
     chunk_size : int, optional
         Samples per task, rounded up to whole blocks. [-]
     executor : str, optional
@@ -293,17 +371,19 @@ def run_seeded(func: Callable[..., Mapping[str, np.ndarray]], n_samples, seed, *
     if isinstance(block_size, bool) or int(block_size) != block_size or block_size < 1:
         raise InputError(f"block_size must be an integer >= 1 [-], got {block_size!r}")
     n_samples, block_size = int(n_samples), int(block_size)
+    ex = _execution(execution, chunk_size=chunk_size, executor=executor, workers=workers,
+                    memory_limit=memory_limit, processes=processes, progress=progress,
+                    timeout=timeout).with_default_chunk_size(DEFAULT_CHUNK_SIZE)
     root = seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)
     n_blocks = math.ceil(n_samples / block_size)
     seeds = root.spawn(n_blocks)
     sizes = [min(block_size, n_samples - k * block_size) for k in range(n_blocks)]
-    blocks_per_chunk = max(1, math.ceil(chunk_bounds(n_samples, chunk_size)[0][1] / block_size))
+    blocks_per_chunk = max(1, math.ceil(chunk_bounds(n_samples, ex.chunk_size)[0][1] / block_size))
     constants = dict(constants or {})
     tasks, task_sizes = [], []
     for a in range(0, n_blocks, blocks_per_chunk):
         b = min(a + blocks_per_chunk, n_blocks)
         tasks.append((_evaluate_blocks, (func, sizes[a:b], seeds[a:b], constants)))
         task_sizes.append(sum(sizes[a:b]))
-    results = _run(tasks, task_sizes, executor=executor, workers=workers, memory_limit=memory_limit,
-                   processes=processes, progress=progress, timeout=timeout)
+    results = _run(tasks, task_sizes, ex)
     return _concatenate(results, n_samples)
