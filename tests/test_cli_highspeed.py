@@ -101,11 +101,11 @@ def test_sweep_json_array_csv_and_plot(capsys, tmp_path):
 
 
 def test_sweep_table_and_failed_case_does_not_stop_it(capsys):
-    code, out, err = run(capsys, "high-speed", "-b", "B218", "-F", "300N,20kN", "-n", "3000,15000rpm",
+    code, out, err = run(capsys, "high-speed", "-b", "B218", "-F", "300N,20kN", "-n", "3000, 15000rpm",
                          "--raceway-control", "inner")
     assert code == 0, err
     assert "4 cases, 1 failed" in out  # the status column may be cut on a narrow terminal; JSON below
-    code, out, _ = run(capsys, "high-speed", "-b", "B218", "-F", "300N,20kN", "-n", "3000,15000rpm",
+    code, out, _ = run(capsys, "high-speed", "-b", "B218", "-F", "300N,20kN", "-n", "3000, 15000rpm",
                        "--raceway-control", "inner", "--json")
     rows = json.loads(out)
     status = {(r["axial_load_kN"], r["speed_rpm"]): r["status"] for r in rows}

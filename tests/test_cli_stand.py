@@ -80,7 +80,7 @@ def test_stand_load_json(capsys):
     assert doc["min_axial_load_N"] == pytest.approx(doc["min_axial_load_kgf"] * 9.80665)
     assert doc["max_axial_load_kgf"] == pytest.approx(1.2 * doc["min_axial_load_kgf"])
     assert doc["max_axial_load_N"] == pytest.approx(1.2 * doc["min_axial_load_N"])
-    code, out, _ = run(capsys, "stand-load", "-b", "4-1006095", "--speed", "3000,10000rpm")
+    code, out, _ = run(capsys, "stand-load", "-b", "4-1006095", "--speed", "3000, 10000rpm")
     assert code == 0 and "0.001039" in out
 
 

@@ -50,7 +50,7 @@ def test_failed_case_in_the_middle_of_a_sweep_stays_flagged():
 def test_cli_high_speed_sweep_on_local_cluster(capsys):
     import json
 
-    args = ["high-speed", "-b", "B218", "-F", "5kN,20kN", "-n", "0,10000rpm", "--json", "--chunk-size", "1"]
+    args = ["high-speed", "-b", "B218", "-F", "5kN,20kN", "-n", "0, 10000rpm", "--json", "--chunk-size", "1"]
     assert main(args) == 0
     serial = json.loads(capsys.readouterr().out)
     assert main(args + ["--executor", "local", "--workers", "2"]) == 0
@@ -62,10 +62,10 @@ def test_cli_bad_scheduler_address_is_one_line(capsys, monkeypatch):
     from bearinglab import parallel
 
     monkeypatch.setattr(parallel, "_CONNECT_TIMEOUT_S", 1.0)
-    code = main(["high-speed", "-b", "B218", "-F", "5kN,20kN", "-n", "0,10000rpm", "--executor", "tcp://127.0.0.1:9"])
+    code = main(["high-speed", "-b", "B218", "-F", "5kN,20kN", "-n", "0, 10000rpm", "--executor", "tcp://127.0.0.1:9"])
     err = capsys.readouterr().err
     assert code == 2 and err.count("\n") == 1 and "cannot reach a dask scheduler" in err
-    code = main(["high-speed", "-b", "B218", "-F", "5kN,20kN", "-n", "0,10000rpm", "--executor", "mars"])
+    code = main(["high-speed", "-b", "B218", "-F", "5kN,20kN", "-n", "0, 10000rpm", "--executor", "mars"])
     assert code == 2 and "executor must be 'serial', 'local' or a scheduler address" in capsys.readouterr().err
 
 
@@ -104,7 +104,7 @@ def test_generic_sweep_of_the_high_speed_model_reproduces_spec_004(tmp_path):
 
     p = tmp_path / "hs.toml"
     p.write_text('model = "high-speed"\nbearing = "B218"\n[parameters]\naxial_load = ["2.5 kN", "20 kN", "-1 kN"]\n'
-                 'speed = "0,10000rpm"\n[constants]\nconstants = "harris"\n')
+                 'speed = "0, 10000rpm"\n[constants]\nconstants = "harris"\n')
     cols = sweep.run_sweep(sweep.load_sweep(p), chunk_size=2)
     assert cols["axial_load_N"].tolist() == [2500.0, 2500.0, 20000.0, 20000.0, -1000.0, -1000.0]
     assert cols["converged"].tolist() == [True, True, True, True, False, False]

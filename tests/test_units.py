@@ -177,7 +177,7 @@ def test_parse_values(text, kind, want):
         ("1:5:0kgf", r"needs step > 0"),
         ("1:5:-1kgf", r"needs step > 0"),
         (",", r"x: no values in ','"),
-        ("1,2 m", r"'1.0 m' is a length, expected a force"),  # the last unit applies to all items
+        ("1, 2 m", r"'1.0 m' is a length, expected a force"),  # the last unit applies to all items
         ("0:1e9:1 N", r"has 1000000001 values, more than 10\^7"),
     ],
 )
@@ -206,3 +206,38 @@ def test_dms_parts_add_up(deg):
     d, m, s = units.to_dms(math.radians(deg))
     assert d + m / 60 + s / 3600 == pytest.approx(deg, abs=1e-9)
     assert 0 <= abs(m) < 60 and 0 <= abs(s) < 60
+
+
+# --------------------------------------------------------------------------- issue 15: spellings and commas
+@pytest.mark.parametrize(
+    "text", ["10000 rpm", "10000 RPM", "10000 1/min", "10000 r/min", "10000 rev/min", "10000 min^-1",
+             "10000 U/min", "10 krpm", "166.66666666666666 Hz", "166.66666666666666 1/s", "166.66666666666666 rps"])
+def test_speed_spellings_mean_revolutions(text):
+    assert units.parse_quantity(text, "speed", "speed") == pytest.approx(10000 * 2 * math.pi / 60, rel=1e-14)
+
+
+def test_speed_in_radians_stays_radians():
+    assert units.parse_quantity("314 rad/s", "speed", "speed") == 314.0
+    assert units.parse_quantity("6000 deg/s", "speed", "speed") == pytest.approx(math.radians(6000))
+
+
+@pytest.mark.parametrize("text", ["2 kgf", "2 KGF", "2 Kgf", "2 kp", "2 kilopond", "2000 gf"])
+def test_force_spellings(text):
+    assert units.parse_quantity(text, "force", "axial-load") == pytest.approx(2 * 9.80665, rel=1e-14)
+
+
+@pytest.mark.parametrize("text", ["2,5 kN", "2,5", "-2,5 kN", "3000,10000rpm"])
+def test_decimal_comma_is_never_guessed(text):
+    kind = "speed" if "rpm" in text else "force"
+    for parse in (units.parse_values, units.parse_quantity):
+        with pytest.raises(InputError, match=r"is ambiguous: write '.*\..*' for one value .* for a list of two"):
+            parse(text, kind, "axial-load")
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [("2, 5 kN", [2000.0, 5000.0]), ("2 kN; 5 kN", [2000.0, 5000.0]), ("2;5 kN", [2000.0, 5000.0]),
+     ("300N,20kN", [300.0, 20000.0]), ("1,2,3 kN", [1000.0, 2000.0, 3000.0]), ("2.5 kN", [2500.0])],
+)
+def test_unambiguous_lists(text, expected):
+    np.testing.assert_array_equal(units.parse_values(text, "force", "axial-load"), expected)

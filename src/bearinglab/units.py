@@ -242,14 +242,41 @@ def _ureg():
     return _registry
 
 
+# spellings engineers write that pint does not know (or reads otherwise), and what they mean
+_SPELLINGS = (
+    (re.compile(r"(?<![\w/])(?:rpm|r/min|rev/min|U/min|1/min|min\^-1|min-1)(?![\w/^*])", re.IGNORECASE),
+     " revolution/minute"),
+    (re.compile(r"(?<![\w/])(?:rps|r/s|rev/s)(?![\w/^*])", re.IGNORECASE), " revolution/s"),
+    (re.compile(r"(?<![\w/])kgf(?!\w)", re.IGNORECASE), "kgf"),
+    (re.compile(r"(?<![\w/])kp(?!\w)"), "kilopond"),
+    (re.compile(r"(?<![\w/])cSt(?!\w)"), "centistokes"),
+    (re.compile(r"(?<![\w/.^*])1\s*/\s*(?=[A-Za-z])"), " /"),  # "50 1/s" is 50 per second, one number
+)
+
+
 def _normalise(text: str) -> str:
     t = text.strip().replace("µ", "u").replace("μ", "u").replace("·", "*").replace("°", " deg ")
-    t = t.replace("′", " arcmin ").replace("″", " arcsec ")
+    t = t.replace("′", " arcmin ").replace("″", " arcsec ").replace("−", "-")
     # a rotation frequency in Hz means revolutions per second, not radians per second
     t = re.sub(r"(?<![A-Za-z])(k?)Hz\b", lambda m: " revolution/s" if not m.group(1) else " kilorevolution/s", t)
-    t = re.sub(r"\brps\b", "revolution/s", t)
-    t = re.sub(r"\bcSt\b", "centistokes", t)
+    for pattern, replacement in _SPELLINGS:
+        t = pattern.sub(replacement, t)
     return t
+
+
+# "2,5 kN": one comma between two digits, no unit before it -- a decimal comma or a list of two?
+_AMBIGUOUS_COMMA = re.compile(r"^\s*([-+]?\d+),(\d+)\s*([^,;:]*)$")
+
+
+def _reject_decimal_comma(text, name):
+    m = _AMBIGUOUS_COMMA.match(text)
+    if m:
+        whole, frac, unit = m.group(1), m.group(2), m.group(3).strip()
+        u = f" {unit}" if unit else ""
+        raise InputError(
+            f"{name}: {text!r} is ambiguous: write '{whole}.{frac}{u}' for one value (a decimal point, "
+            f"not a comma) or '{whole}{u}, {frac}{u}' for a list of two values"
+        )
 
 
 def parse_quantity(value, kind, name, *, default_unit=None):
@@ -306,11 +333,12 @@ def parse_quantity(value, kind, name, *, default_unit=None):
         text = value
     else:
         raise InputError(f"{name}: expected a quantity such as {examples}, got {value!r}")
+    _reject_decimal_comma(text, name)
     dms = _DMS.match(text) if kind == "angle" else None
     if dms and (dms.group(3) or dms.group(4)):  # 14°28'03.38": pint would multiply the three parts
         deg = float(dms.group(2)) + float(dms.group(3) or 0.0) / 60.0 + float(dms.group(4) or 0.0) / 3600.0
         return math.radians(-deg if dms.group(1) == "-" else deg)
-    if len(_STANDALONE_NUMBER.findall(text)) > 1:  # pint reads "1 000 N" as 1 * 0 N and "2 3 kgf" as 6 kgf
+    if len(_STANDALONE_NUMBER.findall(_normalise(text))) > 1:  # pint reads "1 000 N" as 1 * 0 N and "2 3 kgf" as 6 kgf
         raise InputError(f"{name}: {text!r} holds more than one number; write one number and its unit, e.g. {examples}")
     try:
         q = ureg.Quantity(_normalise(text))
@@ -335,6 +363,10 @@ def parse_quantity(value, kind, name, *, default_unit=None):
         return float(q.to("radian").magnitude) if kind == "angle" else float(q.to("").magnitude)
     if not q.check(dim):
         raise InputError(f"{name}: {text!r} is a {_describe(q)}, expected a {kind.replace('_', ' ')} (e.g. {examples})")
+    if kind == "speed" and not any(a in u for u, _exp in q.unit_items() for a in _ANGLE_UNITS):
+        # a rotational speed written as a plain reciprocal time ("50 1/s", "50 /s") counts revolutions,
+        # as n in DIN/ISO drawings and as Hz does here; reading it as rad/s would slip a factor of 2 pi
+        q = q * ureg.revolution
     return float(q.to(si).magnitude)
 
 
@@ -361,7 +393,7 @@ def parse_values(text, kind, name):
     Parameters
     ----------
     text : str
-        ``"2 kgf"``, ``"1 kN, 500 N"``, ``"0,3000,6000rpm"`` or ``"2.5kN:45kN:2.5kN"``.
+        ``"2 kgf"``, ``"1 kN, 500 N"``, ``"0,3000,6000rpm"``, ``"1 kN; 2 kN"`` or ``"2.5kN:45kN:2.5kN"``.
     kind : str
         One of :data:`KINDS`.
     name : str
@@ -375,7 +407,9 @@ def parse_values(text, kind, name):
     Notes
     -----
     A unit written only on the last item applies to all items without one. A range includes its end
-    point when the steps land on it; it may hold at most 10^7 values.
+    point when the steps land on it; it may hold at most 10^7 values. Items are separated by commas or
+    semicolons. One comma between two digits (``"2,5 kN"``) could be a decimal comma or a list of two
+    values; it is rejected with both spellings in the message, never guessed.
 
     Examples
     --------
@@ -385,7 +419,8 @@ def parse_values(text, kind, name):
     array([  0.   , 314.159, 628.319])
     """
     text = str(text).strip()
-    sep = ":" if ":" in text else ","
+    _reject_decimal_comma(text, name)
+    sep = ":" if ":" in text else (";" if ";" in text else ",")
     items = [s.strip() for s in text.split(sep) if s.strip()]
     if not items:
         raise InputError(f"{name}: no values in {text!r}")
