@@ -239,11 +239,9 @@ def _elastic_constant(choice, ball_material, ring_material):
         ep = hertz.reduced_modulus(ball_material.elastic_modulus, ball_material.poisson_ratio,
                                    ring_material.elastic_modulus, ring_material.poisson_ratio)
         return float(hertz.elastic_constant(ep))
-    if isinstance(choice, str):
-        if choice == "paper":
-            return PAPER_ELASTIC_CONSTANT
-        raise InputError(f"elastic_constant must be 'materials', 'paper' or a number [(m^2/N)^(2/3)], got {choice!r}")
-    if not isinstance(choice, numbers.Real) or isinstance(choice, bool):
+    if isinstance(choice, str) and choice == "paper":
+        return PAPER_ELASTIC_CONSTANT
+    if isinstance(choice, (str, bool)) or not isinstance(choice, numbers.Real):
         raise InputError(f"elastic_constant must be 'materials', 'paper' or a number [(m^2/N)^(2/3)], got {choice!r}")
     return float(check_positive("elastic_constant", choice, "(m^2/N)^(2/3)"))
 
