@@ -1,7 +1,7 @@
 r"""Batched Newton-Raphson with per-case continuation in speed: the solver of spec 004 section 5.1.
 
 All cases of a batch are updated together; each case has its own current speed, continuation step and
-line-search fraction. The state of the iteration is one :class:`_Continuation` value (one row per case).
+line-search fraction. The state of the iteration is one ``_Continuation`` value (one row per case).
 Started from the static solution at the same thrust (section 5.3), so the result at zero speed is the
 static one.
 

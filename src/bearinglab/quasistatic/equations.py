@@ -273,7 +273,7 @@ def residual(unknowns, axial_load, shaft_speed, n_balls, ball_diameter, pitch_di
     gyroscopic_sign : {1, -1}, optional
         +1 physical (spec 004 section 4); -1 the reversed convention, for comparison only.
     constants : {"mass", "harris", "paper"} or (float, float), optional
-        How F_c and M_g are computed (see :func:`contact_angles`).
+        How F_c and M_g are computed (see :func:`~bearinglab.quasistatic.contact_angles`).
 
     Returns
     -------
@@ -284,7 +284,7 @@ def residual(unknowns, axial_load, shaft_speed, n_balls, ball_diameter, pitch_di
 
     Notes
     -----
-    :func:`contact_angles` drives these residuals below 1e-12 (Euclidean norm). The Jacobian is
+    :func:`~bearinglab.quasistatic.contact_angles` drives these residuals below 1e-12 (Euclidean norm). The Jacobian is
     analytic: the kinematics (9), (10), (13) differentiated in closed form, d ln K/d cos(alpha) from the
     Chebyshev interpolant of the exact Hertz stiffness.
     """
@@ -377,7 +377,7 @@ def angle_residual(contact_angle_inner, contact_angle_outer, axial_load, shaft_s
     gyroscopic_sign : {1, -1}, optional
         See :func:`residual`.
     constants : {"mass", "harris", "paper"} or (float, float), optional
-        See :func:`contact_angles`.
+        See :func:`~bearinglab.quasistatic.contact_angles`.
 
     Returns
     -------
