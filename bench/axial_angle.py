@@ -1,6 +1,6 @@
 """Benchmark: operating contact angle under axial load (spec 000), batched Newton vs per-case brentq.
 
-Solves 10^6 loads on bearing 4-1006095 with :func:`bearinglab.static.operating_contact_angle` and, in the
+Solves 10^6 loads on bearing 4-1006095 with :func:`bearinglab.stand.operating_contact_angle` and, in the
 same run, a sample of the same cases one by one with ``scipy.optimize.brentq`` on the same equation (1).
 Prints cases/s, the ratio and the largest difference between the two.
 """
@@ -14,7 +14,7 @@ import numpy as np
 from _timing import best_of
 from scipy.optimize import brentq
 
-from bearinglab import catalog, static
+from bearinglab import catalog, stand, static
 from bearinglab.units import KGF
 
 N_BATCH = 1_000_000
@@ -27,7 +27,7 @@ def cases(n, seed=0):
 
 
 def batched(loads, cs, a0):
-    return static.operating_contact_angle(loads, cs, a0)
+    return stand.operating_contact_angle(loads, cs, a0)
 
 
 def baseline(loads, cs, a0):
@@ -40,8 +40,8 @@ def baseline(loads, cs, a0):
 
 def main():
     b = catalog.get("4-1006095")
-    c = static.stand_constants(b.n_balls, b.ball_diameter, b.pitch_diameter, b.inner_conformity, b.outer_conformity,
-                               b.contact_angle)
+    c = stand.stand_constants(b.n_balls, b.ball_diameter, b.pitch_diameter, b.inner_conformity, b.outer_conformity,
+                              b.contact_angle)
     cs, a0 = float(c.force_characteristic), b.contact_angle
     loads = cases(N_BATCH)
     t_batch, alpha = best_of(lambda: batched(loads, cs, a0), 3)

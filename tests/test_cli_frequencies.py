@@ -43,10 +43,11 @@ def test_json_cwru_bearing(capsys):
 
 def test_json_at_operating_angle_under_axial_load(capsys):
     doc = run_json(
-        capsys, "frequencies", "-b", "4-1006095", "--speed", "3000 rpm", "--axial-load", "2 kgf"
+        capsys, "frequencies", "-b", "4-1006095", "--speed", "3000 rpm", "--axial-load", "2 kgf",
+        "--elastic-constant", "paper",  # the source's constant: its printed angle
     )
     b = catalog.get("4-1006095")
-    alpha = float(static.stand_analysis(b, 2 * 9.80665).contact_angle)
+    alpha = float(static.stand_analysis(b, 2 * 9.80665, elastic_constant="paper").contact_angle)
     assert doc["contact_angle_deg"] == pytest.approx(math.degrees(alpha), rel=1e-14)
     assert doc["contact_angle_dms"] == "14°27'56.81\""  # spec 000 section 8, exact Hertz
     assert doc["nominal"]["contact_angle_deg"] == pytest.approx(12.0, rel=1e-14)
@@ -81,6 +82,8 @@ def test_table_hertz_gives_the_printed_operating_angle(capsys):
         "2 kgf",
         "--hertz",
         "table",
+        "--elastic-constant",
+        "paper",
     )
     assert doc["contact_angle_dms"] == "14°28'03.38\""  # spec 000 section 8, table coefficients
 
@@ -386,3 +389,9 @@ def test_csv_failure_keeps_the_old_file(capsys, tmp_path, monkeypatch):
     assert code == 2 and "No space left" in err
     assert target.read_text() == "old contents\n"
     assert [p.name for p in tmp_path.iterdir()] == ["mask.csv"]
+
+
+def test_default_elastic_constant_comes_from_the_materials(capsys):
+    doc = run_json(capsys, "frequencies", "-b", "4-1006095", "--speed", "3000 rpm", "--axial-load", "2 kgf")
+    alpha = float(static.stand_analysis(catalog.get("4-1006095"), 2 * 9.80665).contact_angle)
+    assert doc["contact_angle_deg"] == pytest.approx(math.degrees(alpha), rel=1e-14)

@@ -15,7 +15,8 @@ def run(capsys, *args):
 
 
 def test_axial_angle_json_reproduces_print(capsys):
-    code, out, err = run(capsys, "axial-angle", "--bearing", "4-1006095", "--axial-load", "2 kgf", "--hertz", "table", "--json")
+    code, out, err = run(capsys, "axial-angle", "--bearing", "4-1006095", "--axial-load", "2 kgf", "--hertz", "table",
+                         "--elastic-constant", "paper", "--json")
     assert code == 0, err
     doc = json.loads(out)
     for key in ("contact_angle_initial_deg", "load_deflection_constant_kgf", "operating_contact_angle_deg",
@@ -40,7 +41,7 @@ def test_axial_angle_same_load_in_newtons_and_kgf(capsys):
 
 def test_axial_angle_legacy_rows(capsys):
     code, out, _ = run(capsys, "axial-angle", "-b", "4-1006095", "-F", "2 kgf", "--hertz", "table", "--legacy",
-                       "--x0", "0.0433985", "--json")
+                       "--x0", "0.0433985", "--elastic-constant", "paper", "--json")
     assert code == 0
     rows = json.loads(out)["iterations"]
     assert len(rows) == 2
@@ -49,7 +50,8 @@ def test_axial_angle_legacy_rows(capsys):
 
 
 def test_axial_angle_human_output_and_load_range(capsys):
-    code, out, _ = run(capsys, "axial-angle", "-b", "4-1006095", "-F", "2 kgf", "--hertz", "table")
+    code, out, _ = run(capsys, "axial-angle", "-b", "4-1006095", "-F", "2 kgf", "--hertz", "table",
+                       "--elastic-constant", "paper")
     assert code == 0 and "7792.36 kgf" in out and "14°28'03.38\"" in out
     code, out, _ = run(capsys, "axial-angle", "-b", "4-1006095", "-F", "1kgf:4kgf:1kgf", "--json")
     cases = json.loads(out)["cases"]

@@ -284,6 +284,18 @@ def test_approach_coefficient_definition():
     )
 
 
+@settings(max_examples=50, deadline=None)
+@given(e_red=st.floats(5e10, 5e11), q=st.floats(1e-2, 1e5))
+def test_elastic_constant_gives_the_approach_of_the_contact(e_red, q):
+    """C* of spec 000 with c_E = (3/E')^(2/3)/2: K = Q / delta^1.5 is load_deflection_constant."""
+    s, f = 1336.19, 0.9287242
+    delta_star = hertz.coefficients(f).delta_star
+    delta = hertz.elastic_constant(e_red) * delta_star * np.cbrt(s) * q ** (2 / 3)  # delta/D times D, D cancels
+    assert q / delta**1.5 == pytest.approx(hertz.load_deflection_constant(s, f, e_red), rel=1e-12)
+    with pytest.raises(InputError, match=r"reduced_modulus must be > 0 \[Pa\]"):
+        hertz.elastic_constant(0.0)
+
+
 # ------------------------------------------------------------------------------------------ bad input
 @pytest.mark.parametrize(
     "call, match",

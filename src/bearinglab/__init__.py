@@ -8,7 +8,8 @@ geometry    conformity, curvature sums, clearance and free contact angle
 hertz       Hertz point contact: exact coefficients, semi-axes, pressure, approach, stiffness
 bearing     Material, BallBearing: validated inputs of the models
 catalog     built-in bearings and user TOML catalogs
-static      test-stand method (spec 000) and the static contact angle under thrust
+static      static contact angle under thrust (zero speed): load-angle relation, displacement
+stand       test-stand method (spec 000): stand load, C*, operating contact angle, iteration table
 parallel    chunked batch execution, serial or on dask
 sweep       parameter sweeps of a model over a Cartesian grid (sweep files)
 kinematics  cage and ball speeds, characteristic (defect) frequencies, spectral masks
@@ -32,6 +33,7 @@ from . import (
     quasistatic,
     report,
     runout,
+    stand,
     static,
     sweep,
     units,
@@ -52,6 +54,7 @@ __all__ = [
     "quasistatic",
     "report",
     "runout",
+    "stand",
     "static",
     "sweep",
     "units",

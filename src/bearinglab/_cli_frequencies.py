@@ -89,6 +89,10 @@ def frequencies(
             "--hertz", help="Hertz coefficients for the operating angle: exact (default) | table."
         ),
     ] = "exact",
+    elastic_constant: Annotated[
+        str,
+        typer.Option("--elastic-constant", help="materials (default: from E, ν) | paper (0.592e-4 (cm²/kgf)^(2/3))."),
+    ] = "materials",
     bearing: BearingName = None,
     bearing_file: BearingFile = None,
     catalog: CatalogFile = None,
@@ -165,7 +169,7 @@ def frequencies(
         fa = parse_quantity(axial_load, "force", "axial-load")
         if not fa > 0:
             raise InputError(f"axial-load must be > 0 [N], got {fa!r} N")
-        angle = float(static.stand_analysis(b, fa, hertz=hertz).contact_angle)
+        angle = float(static.stand_analysis(b, fa, hertz=hertz, elastic_constant=elastic_constant).contact_angle)
         out.update(axial_load_N=fa, axial_load_kgf=fa / KGF, hertz=hertz)
     else:
         angle = a0

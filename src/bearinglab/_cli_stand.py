@@ -49,6 +49,7 @@ def axial_angle(
     inner_conformity: InnerConformity = None, outer_conformity: OuterConformity = None,
     contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
     hertz: Annotated[str, typer.Option("--hertz", help="exact (default) | table (the bearing's tabulated 2K/(πμ)).")] = "exact",
+    elastic_constant: Annotated[str, typer.Option("--elastic-constant", help="materials (default: from the bearing's E, ν) | paper (the source's 0.592e-4 (cm²/kgf)^(2/3)).")] = "materials",
     legacy: Annotated[bool, typer.Option("--legacy", help="Reproduce the paper's printed rounding (π = 3.14, F cut to 3 decimals).")] = False,
     x0: Annotated[float | None, typer.Option("--x0", help="Start of the iteration table [rad] (the paper printed 0.0433985).")] = None,
     rows: Annotated[int | None, typer.Option("--rows", help="Rows of the iteration table (default: to convergence).")] = None,
@@ -60,6 +61,8 @@ def axial_angle(
                         ball_material)
     if hertz not in ("exact", "table"):
         raise InputError(f"hertz must be one of ['exact', 'table'], got {hertz!r}")
+    if elastic_constant not in ("materials", "paper"):
+        raise InputError(f"elastic-constant must be one of ['materials', 'paper'], got {elastic_constant!r}")
     loads = parse_values(axial_load, "force", "axial-load")
     if np.any(~(loads > 0)):
         raise InputError(f"axial-load must be > 0 [N], got {float(loads[~(loads > 0)][0])!r} N")
@@ -67,11 +70,13 @@ def axial_angle(
     # the paper prints two rows; legacy mode reproduces exactly those unless --rows says otherwise
     max_rows = rows if rows is not None else (2 if legacy else None)
     r = static.stand_analysis(b, loads[0] if scalar else loads, hertz=hertz, reproduce_print=legacy, x0=x0,
-                              max_rows=max_rows)
+                              max_rows=max_rows, elastic_constant=elastic_constant)
     c = r.constants
     base = {
         "bearing": b.designation,
         "hertz": hertz,
+        "elastic_constant": elastic_constant,
+        "elastic_constant_cm2_per_kgf_2_3": c.elastic_constant_paper,
         "contact_angle_initial_deg": math.degrees(r.free_angle),
         "gamma": c.gamma,
         "curvature_sum_inner_per_mm": c.curvature_sum_inner * 1e-3,

@@ -12,6 +12,7 @@ reduced_modulus          E' = 2 / [(1 - nu1^2)/E1 + (1 - nu2^2)/E2]
 point_contact            semi-axes, approach, maximum pressure
 load_deflection_constant K in Q = K delta^1.5
 approach_coefficient     c in delta / D = c (Q / D^2)^(2/3) (spec 000 section 5.3)
+elastic_constant         c_E = (3/E')^(2/3) / 2, the material factor of c (spec 000 section 5.3)
 
 Curvature sums and F(rho) of the two raceway contacts are in :func:`bearinglab.geometry.raceway_curvature`.
 The exact relations are those of Harris and Kotzalas [1]_; the start of the ellipticity solve is the fit
@@ -41,6 +42,7 @@ __all__ = [
     "PointContact",
     "approach_coefficient",
     "coefficients",
+    "elastic_constant",
     "ellipticity",
     "load_deflection_constant",
     "point_contact",
@@ -345,6 +347,43 @@ def load_deflection_constant(curvature_sum, curvature_difference, reduced_modulu
     return (2.0**1.5 / 3.0 * ep / np.sqrt(s) * np.asarray(c.delta_star) ** -1.5)[()]
 
 
+def elastic_constant(reduced_modulus):
+    r"""Elastic constant c_E of the approach coefficient, :math:`c_E = (3/E')^{2/3}/2`.
+
+    Parameters
+    ----------
+    reduced_modulus : array_like
+        E' of the ball-ring pair (see :func:`reduced_modulus`). [Pa]
+
+    Returns
+    -------
+    ndarray
+        c_E. [(m^2/N)^(2/3)]
+
+    Notes
+    -----
+    The approach of :func:`point_contact`, :math:`\delta = \delta^* [3Q/(E'\Sigma\rho)]^{2/3}\,\Sigma\rho/2`
+    (Harris and Kotzalas 2006, eqs. 6.38-6.43 with :math:`\eta = 2/E'`), written per ball diameter D:
+
+    .. math:: \frac{\delta}{D} = c_E\,\delta^*\,\sqrt[3]{D\Sigma\rho}\,\Big(\frac{Q}{D^2}\Big)^{2/3},
+              \qquad c_E = \frac12\Big(\frac{3}{E'}\Big)^{2/3}
+
+    which is the form of spec 000 section 5.3, :math:`c_j = c_E (2K/\pi\mu)_j \sqrt[3]{d\Sigma\rho_j}`. With
+    this c_E the force characteristic C* of the test-stand method is exactly :math:`Z K_n (B D)^{3/2}` with
+    the K of :func:`load_deflection_constant` at the free angle. The source prints
+    c_E = 0.592e-4 (cm^2/kgf)^(2/3), which is this value for E' = 2.2836e5 MPa (steel with E = 2.078e5 MPa,
+    nu = 0.3); the library's steel (E = 2.075e5 MPa, nu = 0.3) gives 0.59258e-4.
+
+    Examples
+    --------
+    >>> ce = elastic_constant(reduced_modulus(2.075e11, 0.3, 2.075e11, 0.3))
+    >>> print(f"{ce / (1e-2**(4 / 3) / 9.80665**(2 / 3)):.5e} (cm^2/kgf)^(2/3)")
+    5.92580e-05 (cm^2/kgf)^(2/3)
+    """
+    ep = check_positive("reduced_modulus", reduced_modulus, "Pa")
+    return ((3.0 / ep) ** (2.0 / 3.0) / 2.0)[()]
+
+
 def approach_coefficient(ball_diameter, curvature_sum, curvature_difference, reduced_modulus, *, hertz=None):
     r"""Elastic approach coefficient c of spec 000 section 5.3: delta / D = c (Q / D^2)^(2/3).
 
@@ -368,11 +407,12 @@ def approach_coefficient(ball_diameter, curvature_sum, curvature_difference, red
 
     Notes
     -----
-    :math:`c = \delta^*\,\sqrt[3]{D\Sigma\rho}\;(3/E')^{2/3}/2`. The source's constant 0.592e-4
-    (cm^2/kgf)^(2/3) is :math:`(3/E')^{2/3}/2` for steel with E = 2.078e5 MPa, nu = 0.3.
+    :math:`c = \delta^*\,\sqrt[3]{D\Sigma\rho}\;c_E` with :math:`c_E = (3/E')^{2/3}/2`
+    (:func:`elastic_constant`). The source's constant 0.592e-4 (cm^2/kgf)^(2/3) is c_E for steel with
+    E = 2.078e5 MPa, nu = 0.3.
     """
     d = check_positive("ball_diameter", ball_diameter, "m")
     s = check_positive("curvature_sum", curvature_sum, "1/m")
     ep = check_positive("reduced_modulus", reduced_modulus, "Pa")
     c = _coeffs(curvature_difference, hertz)
-    return (np.asarray(c.delta_star) * np.cbrt(d * s) * (3.0 / ep) ** (2.0 / 3.0) / 2.0)[()]
+    return (np.asarray(c.delta_star) * np.cbrt(d * s) * elastic_constant(ep))[()]

@@ -1,40 +1,43 @@
-r"""Static load distribution under pure thrust: the test-stand method of spec 000 and the static
-contact angle that the high-speed model starts from (spec 004 section 5.3).
+r"""Static contact angle of a ball bearing under pure thrust (zero speed, rigid rings).
 
-Minimum stand load (spec 000 section 3)
----------------------------------------
-min_axial_load               the printed criterion against gyroscopic slip, with the +20 % maximum
-min_axial_load_gyroscopic    the same from its physical derivation (ball spin, cage speed, friction)
+Under a thrust F_a every ball carries Q = F_a/(Z sin alpha) and the groove-curvature centres move apart
+axially: the contact angle grows from the free angle alpha0 until the elastic approach of the two
+contacts matches the geometry. These relations are shared by the test-stand method of spec 000
+(:mod:`bearinglab.stand`, stiffness held at alpha0) and by the high-speed model of spec 004 (its
+zero-speed start and limit, stiffness at the loaded angle).
 
-Contact constants (spec 000 section 5)
---------------------------------------
-stand_constants              curvature sums, cos(tau), Hertz coefficients, c_v, c_n and C*
-
-Operating contact angle (spec 000 section 6)
---------------------------------------------
+Load-angle relation, constant stiffness (spec 000 section 6)
+-------------------------------------------------------------
 thrust_from_angle            F_a = C* (cos a0 / cos a - 1)^1.5 sin a                        eq. (1)
-series_coefficients          a0 ... a4 of the expansion of eq. (2)
 first_approximation          x0 of eq. (3) (corrected prefactor sin 2 alpha0)
-operating_contact_angle      Newton on eq. (2) to tolerance, vectorized over loads and bearings
-iteration_table              the per-iteration table of the paper (k, x_k, angle, xi_a, F_a,k, Delta)
-axial_displacement_ratio     xi_a = cos a0 (tan a - tan a0)
-contact_angle_under_thrust   the static angle with K_i, K_e at the loaded angle (spec 004 section 5.3)
+axial_displacement_ratio     xi_a = delta_a / (B D) = cos a0 (tan a - tan a0): ring geometry only
 
-Analysis
---------
-stand_analysis               every step of spec 000 for one bearing and load(s)
+Stiffness at the loaded angle (spec 004 section 5.3)
+----------------------------------------------------
+contact_angle_under_thrust   the static angle, deflections and ball load with K_i, K_e at the loaded angle
+ThrustContact
+
+The axial displacement ratio is static-generic: it is the geometry of the two groove-curvature centres
+(their distance B D cos alpha0 / cos alpha, the inner one shifted axially), whatever the stiffness model,
+so it holds for both methods and belongs here.
+
+The test-stand names that this module held before the stand method moved to :mod:`bearinglab.stand`
+(``stand_analysis``, ``stand_constants``, ``min_axial_load``, ... and ``PAPER_ELASTIC_CONSTANT``) are
+still reachable from here, unchanged.
 
 References
 ----------
 .. [1] V. A. Zaitsev and V. A. Voronkin, "Calculation of axial loads and operating contact angles of
    rolling bearings when assessing their quality on test stands," 2009 (spec 000 of this project).
-.. [2] T. A. Harris and M. N. Kotzalas, *Essential Concepts of Bearing Technology*, 5th ed., CRC Press,
+.. [2] Zhao Chunjiang, Cui Guohua, Wang Guoqiang, Huang Qingxue and Zhang Fangping, "Precise definition
+   of the contact-angle field of a high-speed angular-contact ball bearing under axial load,"
+   Transactions of the CSAM, vol. 39, no. 12, pp. 154-156, 209, 2008 (spec 004 of this project).
+.. [3] T. A. Harris and M. N. Kotzalas, *Essential Concepts of Bearing Technology*, 5th ed., CRC Press,
    2006, doi:10.1201/9781420006599.
 """
 
 from __future__ import annotations
 
-import math
 from typing import NamedTuple
 
 import numpy as np
@@ -42,239 +45,40 @@ import numpy as np
 from . import _solve, geometry, hertz
 from ._validate import check_integer, check_open_interval, check_positive
 from .errors import ConvergenceError, InputError
-from .units import CM, KGF, MM, RPM
 
 __all__ = [
-    "MIN_LOAD_CONSTANT",
-    "PAPER_ELASTIC_CONSTANT",
-    "IterationRow",
-    "StandAnalysis",
-    "StandConstants",
-    "StandLoad",
     "ThrustContact",
     "axial_displacement_ratio",
     "contact_angle_under_thrust",
     "first_approximation",
-    "iteration_table",
-    "min_axial_load",
-    "min_axial_load_gyroscopic",
-    "operating_contact_angle",
-    "series_coefficients",
-    "stand_analysis",
-    "stand_constants",
     "thrust_from_angle",
 ]
 
-# (cm^2/kgf)^(2/3) -> (m^2/N)^(2/3): the unit of the approach coefficients c_v, c_n
-_C_PAPER_UNIT = CM ** (4.0 / 3.0) / KGF ** (2.0 / 3.0)
-#: The source's elastic constant 0.592e-4 (cm^2/kgf)^(2/3) in SI, (m^2/N)^(2/3); steel, E = 2.078e5 MPa,
-#: nu = 0.3 (spec 000 section 5.3). It equals 2.7838e-4 (mm^2/N)^(2/3).
-PAPER_ELASTIC_CONSTANT = 0.592e-4 * _C_PAPER_UNIT
-#: The constant of the printed minimum-load criterion, kgf with d, D0 in mm and n in rpm (spec 000 section 3).
-MIN_LOAD_CONSTANT = 5.75e-12
+#: Names of the test-stand method that moved to :mod:`bearinglab.stand`; reachable from here unchanged.
+_STAND_NAMES = frozenset({
+    "MIN_LOAD_CONSTANT", "PAPER_ELASTIC_CONSTANT", "IterationRow", "StandAnalysis", "StandConstants", "StandLoad",
+    "iteration_table", "min_axial_load", "min_axial_load_gyroscopic", "operating_contact_angle",
+    "series_coefficients", "stand_analysis", "stand_constants",
+})
+
+
+def __getattr__(name):
+    """The test-stand names, from :mod:`bearinglab.stand` (imported on first use: stand builds on this module)."""
+    if name in _STAND_NAMES:
+        from . import stand
+
+        return getattr(stand, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | _STAND_NAMES)
 
 
 def _angle(name, value):
     return check_open_interval(name, value, 0.0, np.pi / 2, "deg", scale=180.0 / np.pi)
 
-
-# --------------------------------------------------------------------------- minimum stand load
-class StandLoad(NamedTuple):
-    """Axial load range of a bearing on a vibration test stand."""
-
-    minimum: np.ndarray  # least load against gyroscopic slip [N]
-    maximum: np.ndarray  # the paper's allowed maximum, 1.2 x minimum [N]
-
-
-def min_axial_load(shaft_speed, n_balls, ball_diameter, pitch_diameter, contact_angle):
-    r"""Least axial load that keeps the balls from gyroscopic slip on a test stand (spec 000 section 3).
-
-    Parameters
-    ----------
-    shaft_speed : array_like
-        Inner-ring speed. [rad/s]
-    n_balls : array_like
-        Number of balls z. [-]
-    ball_diameter : array_like
-        Ball diameter d. [m]
-    pitch_diameter : array_like
-        Pitch diameter D0. [m]
-    contact_angle : array_like
-        Contact angle, normally the free angle alpha0. [rad]
-
-    Returns
-    -------
-    StandLoad
-        ``minimum`` and the paper's allowed ``maximum`` (+20 %). [N]
-
-    Notes
-    -----
-    The printed criterion, with d and D0 in mm, n in rpm and F in kgf:
-
-    .. math:: F_a \ge 5.75\cdot10^{-12}\, z\, d^3 D_0\, n^2 \sin^2\alpha\,[1 - (d/D_0)^2\cos^2\alpha]
-
-    It is 10 times the centrifugal force of a steel ball orbiting at half the shaft speed, the factor
-    being 0.2/mu with a friction coefficient mu = 0.02; see :func:`min_axial_load_gyroscopic`.
-
-    Examples
-    --------
-    >>> import math
-    >>> f = min_axial_load(3000 * math.pi / 30, 7, 2e-3, 8.7355e-3, math.radians(12))
-    >>> print(f"{f.minimum / 9.80665:.3g} kgf")
-    0.00104 kgf
-    """
-    n = np.abs(np.asarray(shaft_speed, dtype=float)) / RPM
-    z = check_integer("n_balls", n_balls, 1)
-    d = check_positive("ball_diameter", ball_diameter, "m") / MM
-    dm = check_positive("pitch_diameter", pitch_diameter, "m") / MM
-    a = check_open_interval("contact_angle", contact_angle, -1e-300, np.pi / 2, "deg", scale=180 / np.pi)
-    f_kgf = MIN_LOAD_CONSTANT * z * d**3 * dm * n**2 * np.sin(a) ** 2 * (1.0 - (d / dm) ** 2 * np.cos(a) ** 2)
-    f = f_kgf * KGF
-    return StandLoad(f[()], (1.2 * f)[()])
-
-
-def min_axial_load_gyroscopic(shaft_speed, n_balls, ball_diameter, pitch_diameter, contact_angle, *,
-                              friction_coefficient=0.02, density=7850.0):
-    r"""Least axial load against gyroscopic slip, from its physical derivation (spec 000 section 3).
-
-    Parameters
-    ----------
-    shaft_speed : array_like
-        Inner-ring speed omega. [rad/s]
-    n_balls : array_like
-        Number of balls z. [-]
-    ball_diameter : array_like
-        Ball diameter d. [m]
-    pitch_diameter : array_like
-        Pitch diameter D0. [m]
-    contact_angle : array_like
-        Contact angle alpha. [rad]
-    friction_coefficient : float, optional
-        Friction coefficient mu at the contacts (0.02 in the source). [-]
-    density : float, optional
-        Ball density (steel 7850). [kg/m^3]
-
-    Returns
-    -------
-    ndarray
-        The least axial load. [N]
-
-    Notes
-    -----
-    Ball spin omega_B = (D0/(2d)) omega (1 - gamma^2), cage speed omega/2 (the (1 - gamma) factor is
-    dropped, which is conservative), J = m d^2/10, M_g = J omega_B (omega/2) sin alpha, resisted while
-    M_g <= mu P d with P = F_a/(z sin alpha):
-    :math:`F_a = (0.2/\mu)\, z \sin^2\alpha\,(1-\gamma^2)\, m (D_0/2)(\omega/2)^2`.
-    Agrees with :func:`min_axial_load` to 0.08 % for steel (the rounding of 5.75).
-    """
-    w = np.abs(np.asarray(shaft_speed, dtype=float))
-    z = check_integer("n_balls", n_balls, 1)
-    d = check_positive("ball_diameter", ball_diameter, "m")
-    dm = check_positive("pitch_diameter", pitch_diameter, "m")
-    mu = check_positive("friction_coefficient", friction_coefficient, "-")
-    rho = check_positive("density", density, "kg/m^3")
-    a = np.asarray(contact_angle, dtype=float)
-    gamma = d * np.cos(a) / dm
-    mass = rho * np.pi * d**3 / 6.0
-    centrifugal = mass * (dm / 2.0) * (w / 2.0) ** 2
-    return ((0.2 / mu) * z * np.sin(a) ** 2 * (1.0 - gamma**2) * centrifugal)[()]
-
-
-# --------------------------------------------------------------------------- contact constants
-class StandConstants(NamedTuple):
-    """Contact constants of spec 000 section 5 (SI; the paper's kgf-cm values are ``*_paper``)."""
-
-    gamma: np.ndarray  # D cos(a0)/d_m [-]
-    curvature_sum_inner: np.ndarray  # [1/m]
-    curvature_sum_outer: np.ndarray  # [1/m]
-    curvature_difference_inner: np.ndarray  # cos(tau_v) [-]
-    curvature_difference_outer: np.ndarray  # cos(tau_n) [-]
-    hertz_inner: hertz.HertzCoefficients
-    hertz_outer: hertz.HertzCoefficients
-    approach_inner: np.ndarray  # c_v [(m^2/N)^(2/3)]
-    approach_outer: np.ndarray  # c_n [(m^2/N)^(2/3)]
-    force_characteristic: np.ndarray  # C* [N]
-
-    @property
-    def approach_inner_paper(self):
-        """c_v in the paper's unit (cm^2/kgf)^(2/3)."""
-        return self.approach_inner / _C_PAPER_UNIT
-
-    @property
-    def approach_outer_paper(self):
-        """c_n in the paper's unit (cm^2/kgf)^(2/3)."""
-        return self.approach_outer / _C_PAPER_UNIT
-
-    @property
-    def force_characteristic_kgf(self):
-        """C* in kgf, the paper's unit."""
-        return self.force_characteristic / KGF
-
-
-def stand_constants(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle, *,
-                    delta_star_inner=None, delta_star_outer=None, elastic_constant=PAPER_ELASTIC_CONSTANT):
-    r"""Curvatures, Hertz coefficients, approach coefficients and force characteristic (spec 000 section 5).
-
-    Parameters
-    ----------
-    n_balls : array_like
-        Number of balls z. [-]
-    ball_diameter : array_like
-        Ball diameter d. [m]
-    pitch_diameter : array_like
-        Pitch diameter d_m. [m]
-    inner_conformity, outer_conformity : array_like
-        xi_v = r_v/d and xi_n = r_n/d, each > 0.5. [-]
-    free_angle : array_like
-        Free contact angle alpha0, in (0, 90 deg). [rad]
-    delta_star_inner, delta_star_outer : array_like, optional
-        Tabulated 2K/(pi mu) to use instead of the exact values (the paper's 0.63 and 0.852). [-]
-    elastic_constant : float, optional
-        The constant of c = const 2K/(pi mu) (d Sigma rho)^(1/3); the paper's 0.592e-4 (cm^2/kgf)^(2/3)
-        by default. Pass ``(3/E')**(2/3)/2`` for another material. [(m^2/N)^(2/3)]
-
-    Returns
-    -------
-    StandConstants
-        gamma, Sigma rho and cos(tau) per contact, Hertz coefficients, c_v, c_n and C* [N].
-
-    Notes
-    -----
-    Spec 000 eqs. of section 5.1 (corrected sign pattern, evaluated from d_m, not from the catalogue
-    T), section 5.2 (exact coefficients) and section 5.3:
-
-    .. math::
-        c_j = c_E\,(2K/\pi\mu)_j\,\sqrt[3]{d\,\Sigma\rho_j},\qquad
-        C^* = \left(\frac{\xi}{c_n + c_v}\right)^{3/2} z\, d^2
-
-    In the paper's units C* needs d in centimetres (7792 kgf for the example); in SI it is in newtons.
-
-    Examples
-    --------
-    >>> import math
-    >>> c = stand_constants(7, 2e-3, 8.7355e-3, 0.525, 0.58, math.radians(12),
-    ...                     delta_star_inner=0.63, delta_star_outer=0.852)
-    >>> print(f"{c.force_characteristic_kgf:.2f} kgf, c_n = {c.approach_outer_paper:.4e}")
-    7792.36 kgf, c_n = 6.2580e-05
-    """
-    z = check_integer("n_balls", n_balls, 1)
-    d = check_positive("ball_diameter", ball_diameter, "m")
-    a0 = _angle("free_angle", free_angle)
-    ce = check_positive("elastic_constant", elastic_constant, "(m^2/N)^(2/3)")
-    inner = geometry.raceway_curvature(d, pitch_diameter, inner_conformity, a0, race="inner")
-    outer = geometry.raceway_curvature(d, pitch_diameter, outer_conformity, a0, race="outer")
-    h_in = hertz.coefficients(inner.curvature_difference) if delta_star_inner is None else hertz.tabulated(delta_star_inner)
-    h_out = hertz.coefficients(outer.curvature_difference) if delta_star_outer is None else hertz.tabulated(delta_star_outer)
-    c_v = ce * np.asarray(h_in.delta_star) * np.cbrt(d * inner.curvature_sum)
-    c_n = ce * np.asarray(h_out.delta_star) * np.cbrt(d * outer.curvature_sum)
-    b = geometry.total_curvature(inner_conformity, outer_conformity)
-    c_star = (b / (c_n + c_v)) ** 1.5 * z * d**2
-    gamma = d * np.cos(a0) / np.asarray(pitch_diameter, dtype=float)
-    return StandConstants(gamma[()], inner.curvature_sum, outer.curvature_sum, inner.curvature_difference,
-                          outer.curvature_difference, h_in, h_out, c_v[()], c_n[()], np.asarray(c_star)[()])
-
-
-# --------------------------------------------------------------------------- operating angle
+# --------------------------------------------------------------------------- constant stiffness
 def thrust_from_angle(contact_angle, force_characteristic, free_angle):
     r"""Axial load at which the operating contact angle is ``contact_angle``: eq. (1) of spec 000 section 6.1.
 
@@ -296,48 +100,6 @@ def thrust_from_angle(contact_angle, force_characteristic, free_angle):
     a0 = np.asarray(free_angle, dtype=float)
     c = np.maximum(np.cos(a0) / np.cos(a) - 1.0, 0.0)
     return (np.asarray(force_characteristic, dtype=float) * c**1.5 * np.sin(a))[()]
-
-
-def series_coefficients(thrust_ratio, free_angle):
-    r"""Coefficients a0 ... a4 of the Taylor expansion of eq. (2) in x = alpha - alpha0 (spec 000 section 6.2).
-
-    Parameters
-    ----------
-    thrust_ratio : array_like
-        F_a / C*. [-]
-    free_angle : array_like
-        Free contact angle alpha0. [rad]
-
-    Returns
-    -------
-    ndarray
-        Shape ``(5,) + broadcast shape``: a0, a1, a2, a3, a4. [-]
-
-    Notes
-    -----
-    With s = sin alpha0, t = tan alpha0 and sec = 1/cos alpha0 (the printed coefficients, verified):
-    a0 = -(F_a/C*)^(2/3), a1 = s^(2/3) t, a2 = s^(2/3)(6 + cos^2 alpha0)/(6 cos^2 alpha0),
-    a3 = (1/9) s^(2/3)(1.5 t + 2 cot alpha0 + 9 sec^2 t),
-    a4 = (1/9) s^(2/3)[(4/9 - sec^2 + sec^4/2) cot^2 + 4.375 sec^4 + 4.25 sec^2 t^2 + 0.375 t^4].
-
-    Examples
-    --------
-    >>> import math
-    >>> print(np.round(series_coefficients(2 / 7792.357, math.radians(12)), 7))
-    [-0.0040387  0.074598   0.4253049  0.4573164  0.1471544]
-    """
-    t_ratio = check_positive("thrust_ratio", thrust_ratio, "-")
-    a0 = _angle("free_angle", free_angle)
-    s23 = np.sin(a0) ** (2.0 / 3.0)
-    t = np.tan(a0)
-    sec2 = 1.0 / np.cos(a0) ** 2
-    cot = 1.0 / t
-    c0 = -(t_ratio ** (2.0 / 3.0))
-    c1 = s23 * t
-    c2 = s23 * (6.0 + np.cos(a0) ** 2) / (6.0 * np.cos(a0) ** 2)
-    c3 = s23 / 9.0 * (1.5 * t + 2.0 * cot + 9.0 * sec2 * t)
-    c4 = s23 / 9.0 * ((4.0 / 9.0 - sec2 + 0.5 * sec2**2) * cot**2 + 4.375 * sec2**2 + 4.25 * sec2 * t**2 + 0.375 * t**4)
-    return np.stack(np.broadcast_arrays(c0, c1, c2, c3, c4))
 
 
 def first_approximation(thrust_ratio, free_angle):
@@ -378,91 +140,6 @@ def first_approximation(thrust_ratio, free_angle):
     return (3.0 * s * c / (6.0 + c**2) * (root - 1.0))[()]
 
 
-def _newton_step(axial_load, thrust, alpha, free_angle):
-    """Newton increment of spec 000 section 6.3 (exact Newton for (F/F_a)^(2/3) - 1 = 0)."""
-    gap = np.cos(free_angle) - np.cos(alpha)
-    slope = np.tan(alpha) + (2.0 / 3.0) / np.tan(alpha) + np.sin(alpha) / gap
-    return ((axial_load / thrust) ** (2.0 / 3.0) - 1.0) / slope
-
-
-def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xtol=_solve.AXIAL_ANGLE_XTOL,
-                            ftol_percent=_solve.AXIAL_ANGLE_FTOL_PERCENT, max_iter=_solve.AXIAL_ANGLE_MAX_ITER):
-    r"""Operating contact angle under a pure axial load (spec 000 section 6): x0 of eq. (3), then Newton.
-
-    Parameters
-    ----------
-    axial_load : array_like
-        F_a > 0. [N]
-    force_characteristic : array_like
-        C* > 0 (see :func:`stand_constants`). [N]
-    free_angle : array_like
-        alpha0, in (0, 90 deg). [rad]
-    xtol : float, optional
-        Converged where |Delta x| < xtol. [rad]
-    ftol_percent : float, optional
-        ... or where |F_a,k - F_a| / F_a < ftol_percent. [%]
-    max_iter : int, optional
-        Iteration limit.
-
-    Returns
-    -------
-    ndarray
-        The operating contact angle alpha in (alpha0, 90 deg), broadcast over the inputs. [rad]
-
-    Raises
-    ------
-    ConvergenceError
-        If some element has not converged in ``max_iter`` iterations or left (alpha0, 90 deg).
-
-    Notes
-    -----
-    Newton on eq. (2), :math:`f(x) = [\cos\alpha_0/\cos(\alpha_0+x) - 1]\sin^{2/3}(\alpha_0+x) - (F_a/C^*)^{2/3}`,
-    with the increment (the paper prints it as "x_k =", it is Delta x_k)
-
-    .. math:: \Delta x_k = \frac{(F_a/F_{a,k})^{2/3} - 1}{\tan\alpha_k + \tfrac23\cot\alpha_k + \sin\alpha_k/(\cos\alpha_0 - \cos\alpha_k)}
-
-    All elements are updated together; convergence is quadratic.
-
-    Examples
-    --------
-    >>> import math
-    >>> a = operating_contact_angle(2 * 9.80665, 7792.357 * 9.80665, math.radians(12))
-    >>> print(f"{math.degrees(a):.6f} deg")
-    14.467605 deg
-    """
-    fa = check_positive("axial_load", axial_load, "N")
-    cs = check_positive("force_characteristic", force_characteristic, "N")
-    a0 = _angle("free_angle", free_angle)
-    cos_a0 = np.cos(a0)  # before broadcasting: one cosine per bearing, not per case
-    x0 = first_approximation(fa / cs, a0)
-    alpha = np.minimum(a0 + x0, 0.5 * (a0 + np.pi / 2))  # x0 can overshoot 90 deg at absurd loads
-    alpha = np.array(np.broadcast_to(alpha, np.broadcast_shapes(fa.shape, cs.shape, a0.shape)), dtype=float)
-    for it in range(1, max_iter + 1):
-        ca, sa = np.cos(alpha), np.sin(alpha)
-        gap = cos_a0 - ca
-        c = gap / ca
-        thrust = cs * c * np.sqrt(c) * sa  # eq. (1)
-        ratio = fa / thrust
-        tan = sa / ca
-        dx = (np.cbrt(ratio * ratio) - 1.0) / (tan + (2.0 / 3.0) / tan + sa / gap)
-        alpha += dx
-        # stay inside (alpha0, 90 deg): a step out of the domain is halved toward the boundary
-        low, high = alpha <= a0, alpha >= np.pi / 2
-        if low.any() or high.any():
-            alpha = np.where(low, 0.5 * (alpha - dx + a0), alpha)
-            alpha = np.where(high, 0.5 * (alpha - dx + np.pi / 2), alpha)
-        if np.max(np.abs(dx), initial=0.0) < xtol:
-            break
-        done = (np.abs(dx) < xtol) | (np.abs(ratio - 1.0) * 100.0 < ftol_percent)
-        if done.all():
-            break
-    else:
-        raise ConvergenceError("static.operating_contact_angle", iterations=max_iter,
-                               residual=1.0 / ratio - 1.0, estimate=alpha,
-                               reason="the angle did not settle in (alpha0, 90 deg)")
-    return alpha[()]
-
-
 def axial_displacement_ratio(contact_angle, free_angle):
     r"""Dimensionless axial displacement xi_a = delta_a / (xi d) = cos a0 (tan a - tan a0) (spec 000 section 6.1).
 
@@ -483,90 +160,7 @@ def axial_displacement_ratio(contact_angle, free_angle):
     return (np.cos(a0) * (np.tan(a) - np.tan(a0)))[()]
 
 
-class IterationRow(NamedTuple):
-    """One row of the paper's iteration table (spec 000 section 8)."""
-
-    k: int
-    x: float  # x_k [rad]
-    contact_angle: float  # alpha0 + x_k [rad] (the pi = 3.14, truncated-seconds angle in legacy mode)
-    axial_displacement_ratio: float  # xi_a [-]
-    axial_load: float  # F_a,k [N]
-    error_percent: float  # Delta_k = (F_a,k - F_a)/F_a [%]
-
-
-def _legacy_angle(free_angle, x):
-    """alpha0 + x converted to degrees with pi = 3.14 (spec 000 section 9.9); the paper prints it with
-    the seconds truncated (``units.to_dms(..., truncate=True)``) but evaluates xi_a and F at it unrounded."""
-    return math.radians(math.degrees(free_angle) + x * 180.0 / 3.14)
-
-
-def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, reproduce_print=False,
-                    xtol=_solve.AXIAL_ANGLE_XTOL, ftol_percent=_solve.AXIAL_ANGLE_FTOL_PERCENT,
-                    max_iter=_solve.AXIAL_ANGLE_MAX_ITER, max_rows=None):
-    r"""The paper's iteration table for one bearing and load (spec 000 sections 6.3 and 8).
-
-    Parameters
-    ----------
-    axial_load : float
-        F_a. [N]
-    force_characteristic : float
-        C*. [N]
-    free_angle : float
-        alpha0. [rad]
-    x0 : float, optional
-        Start instead of :func:`first_approximation` (the paper's printed 0.0433985). [rad]
-    reproduce_print : bool, optional
-        Legacy mode: angles from x with pi = 3.14 and truncated seconds, F cut to three kgf decimals
-        in the Newton step, as the paper computed (spec 000 section 8).
-    xtol : float, optional
-        Converged where |Delta x| < xtol. [rad]
-    ftol_percent : float, optional
-        ... or where |Delta_k| < ftol_percent. [%]
-    max_iter : int, optional
-        Iteration limit.
-    max_rows : int, optional
-        Stop after this many rows (the paper prints two); ``None`` iterates to convergence.
-
-    Returns
-    -------
-    list of IterationRow
-        k, x_k, alpha_k, xi_a, F_a,k [N], Delta_k [%]; the last row is the converged one unless
-        ``max_rows`` stopped it first.
-
-    Raises
-    ------
-    ConvergenceError
-        If the tolerance is not met within ``max_iter`` rows (and ``max_rows`` is None).
-    """
-    fa = float(check_positive("axial_load", axial_load, "N"))
-    cs = float(check_positive("force_characteristic", force_characteristic, "N"))
-    a0 = float(_angle("free_angle", free_angle))
-    x = float(first_approximation(fa / cs, a0)) if x0 is None else float(x0)
-    rows = []
-    limit = max_iter if max_rows is None else max_rows
-    settled = False  # the previous step was below xtol: this row is the converged one
-    for k in range(limit):
-        alpha = _legacy_angle(a0, x) if reproduce_print else a0 + x
-        if not a0 < alpha < math.pi / 2:
-            raise ConvergenceError("static.iteration_table", iterations=k, residual=float("nan"), estimate=alpha,
-                                   reason="the angle left (alpha0, 90 deg)")
-        thrust = float(thrust_from_angle(alpha, cs, a0))
-        # legacy: the paper steps with F cut to three kgf decimals (2.02994 -> 2.029, spec 000 section 9.12)
-        step_thrust = math.floor(thrust / KGF * 1000.0) / 1000.0 * KGF if reproduce_print else thrust
-        error = (step_thrust - fa) / fa * 100.0
-        rows.append(IterationRow(k, x, alpha, float(axial_displacement_ratio(alpha, a0)), thrust, error))
-        if max_rows is None and (settled or abs(error) < ftol_percent):
-            return rows
-        dx = float(_newton_step(fa, step_thrust, alpha, a0))
-        settled = abs(dx) < xtol
-        x += dx
-    if max_rows is None:
-        raise ConvergenceError("static.iteration_table", iterations=limit, residual=rows[-1].error_percent / 100,
-                               estimate=rows[-1].contact_angle)
-    return rows
-
-
-# --------------------------------------------------------------------------- static angle, K at the loaded angle
+# --------------------------------------------------------------------------- stiffness at the loaded angle
 class ThrustContact(NamedTuple):
     """Static state of a ball bearing under pure thrust (spec 004 section 5.3)."""
 
@@ -684,80 +278,3 @@ def contact_angle_under_thrust(axial_load, n_balls, ball_diameter, pitch_diamete
     delta_n = bd * (np.cos(a0) / np.cos(alpha) - 1.0)
     delta_a = (bd + delta_n) * np.sin(alpha) - bd * np.sin(a0)
     return ThrustContact(alpha[()], delta_a[()], q[()], ((q / k_i) ** (2.0 / 3.0))[()], ((q / k_e) ** (2.0 / 3.0))[()], it)
-
-
-# --------------------------------------------------------------------------- analysis
-class StandAnalysis(NamedTuple):
-    """Every step of spec 000 for one bearing at one axial load (or an array of loads)."""
-
-    axial_load: np.ndarray  # F_a [N]
-    free_angle: float  # alpha0 [rad]
-    constants: StandConstants
-    series: np.ndarray  # a0..a4 [-]
-    first_approximation: np.ndarray  # x0 [rad]
-    contact_angle: np.ndarray  # converged operating angle [rad]
-    axial_displacement_ratio: np.ndarray  # xi_a [-]
-    axial_displacement: np.ndarray  # delta_a [m]
-    ball_load: np.ndarray  # P = F_a/(z sin alpha) [N]
-    iterations: list  # IterationRow list (scalar load only; empty for arrays)
-    hertz: str  # "exact" or "table"
-
-
-def stand_analysis(bearing, axial_load, *, hertz="exact", elastic_constant=PAPER_ELASTIC_CONSTANT,
-                   reproduce_print=False, x0=None, max_rows=None):
-    """Run every step of the test-stand method for a bearing (spec 000 sections 4-8).
-
-    Parameters
-    ----------
-    bearing : BallBearing
-        Needs n_balls, ball_diameter, pitch_diameter, both conformities and a contact angle in (0, 90 deg)
-        (or a radial clearance that gives one).
-    axial_load : array_like
-        F_a > 0. [N]
-    hertz : {"exact", "table"}, optional
-        Exact Hertz coefficients (default) or the bearing's tabulated ones (``bearing.hertz_table``).
-    elastic_constant : float, optional
-        See :func:`stand_constants`. [(m^2/N)^(2/3)]
-    reproduce_print : bool, optional
-        Legacy mode of the iteration table (spec 000 section 8).
-    x0 : float, optional
-        Start of the iteration table instead of eq. (3). [rad]
-    max_rows : int, optional
-        Rows of the iteration table (``None``: to convergence).
-
-    Returns
-    -------
-    StandAnalysis
-
-    Examples
-    --------
-    >>> from bearinglab import catalog
-    >>> r = stand_analysis(catalog.get("4-1006095"), 2 * 9.80665, hertz="table")
-    >>> import math; print(f"{math.degrees(r.contact_angle):.5f} deg in {len(r.iterations)} rows")
-    14.46761 deg in 4 rows
-    """
-    z, d, dm, fi, fo, a0 = bearing.require("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity",
-                                           "outer_conformity", "contact_angle")
-    if not 0.0 < a0 < math.pi / 2:
-        raise InputError(f"contact_angle must be in (0, 90) [deg] for the axial-load method, got {math.degrees(a0):g}")
-    if hertz == "table":
-        table = bearing.hertz_table or {}
-        if "inner" not in table or "outer" not in table:
-            raise InputError(f"hertz: bearing {bearing.designation!r} has no tabulated Hertz coefficients "
-                             "(hertz_table = { inner = ..., outer = ... }); use hertz='exact'")
-        ds_i, ds_o = table["inner"], table["outer"]
-    elif hertz == "exact":
-        ds_i = ds_o = None
-    else:
-        raise InputError(f"hertz must be one of ['exact', 'table'], got {hertz!r}")
-    consts = stand_constants(z, d, dm, fi, fo, a0, delta_star_inner=ds_i, delta_star_outer=ds_o,
-                             elastic_constant=elastic_constant)
-    fa = check_positive("axial_load", axial_load, "N")
-    cs = consts.force_characteristic
-    alpha = operating_contact_angle(fa, cs, a0)
-    xi_a = axial_displacement_ratio(alpha, a0)
-    rows = []
-    if np.ndim(fa) == 0:
-        rows = iteration_table(float(fa), float(cs), a0, x0=x0, reproduce_print=reproduce_print, max_rows=max_rows)
-    return StandAnalysis(fa, a0, consts, series_coefficients(fa / cs, a0), first_approximation(fa / cs, a0),
-                         alpha, xi_a, (xi_a * bearing.groove_distance)[()], (fa / (z * np.sin(alpha)))[()], rows, hertz)
