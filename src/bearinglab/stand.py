@@ -69,6 +69,7 @@ __all__ = [
     "StandAnalysis",
     "StandConstants",
     "StandLoad",
+    "constants_at_operating_angle",
     "iteration_table",
     "min_axial_load",
     "min_axial_load_gyroscopic",
@@ -525,6 +526,81 @@ def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, re
 
 
 # --------------------------------------------------------------------------- analysis
+def constants_at_operating_angle(axial_load, n_balls, ball_diameter, pitch_diameter, inner_conformity,
+                                 outer_conformity, free_angle, *, elastic_constant=None,
+                                 xtol=_solve.AXIAL_ANGLE_XTOL, max_iter=_solve.AXIAL_ANGLE_MAX_ITER):
+    r"""Exact-Hertz contact constants evaluated at the operating angle they produce, and that angle.
+
+    Parameters
+    ----------
+    axial_load : array_like
+        F_a > 0. [N]
+    n_balls : array_like
+        Number of balls z. [-]
+    ball_diameter : array_like
+        Ball diameter d. [m]
+    pitch_diameter : array_like
+        Pitch diameter d_m. [m]
+    inner_conformity, outer_conformity : array_like
+        xi_v, xi_n, each > 0.5. [-]
+    free_angle : array_like
+        Free contact angle alpha0, in (0, 90 deg). [rad]
+    elastic_constant : float or "paper", optional
+        As in :func:`stand_constants`. [(m^2/N)^(2/3)]
+    xtol : float, optional
+        Change of the angle between two passes below which it is converged. [rad]
+    max_iter : int, optional
+        Passes at most. [-]
+
+    Returns
+    -------
+    tuple of (StandConstants, ndarray)
+        The constants at the operating angle (arrays over the loads) and the operating angle [rad].
+
+    Raises
+    ------
+    ConvergenceError
+        The fixed point did not settle within ``max_iter`` passes.
+
+    Notes
+    -----
+    Spec 000 holds the curvature sums, and with them C*, at the free angle alpha0 (section 5). The
+    exact static solution evaluates them at the loaded angle, as the high-speed model does at zero
+    speed (spec 004 section 5.3) and as :func:`bearinglab.static.contact_angle_under_thrust` does.
+    Here the spec-000 relation eq. (2) is solved with C*(alpha) by a fixed point: alpha_{k+1} solves
+    eq. (2) with C*(alpha_k). C* changes little with the angle (6e-5 deg of angle for B218 at 20 kN),
+    so the map contracts strongly and three or four passes reach 1e-12 rad. At the fixed point the
+    spec-000 Newton with this C* converges to the same angle, so the iteration table and the
+    operating angle agree.
+
+    Examples
+    --------
+    >>> import math
+    >>> from bearinglab import catalog, hertz
+    >>> b = catalog.get("B218")
+    >>> c, a = constants_at_operating_angle(20e3, b.n_balls, b.ball_diameter, b.pitch_diameter,
+    ...     b.inner_conformity, b.outer_conformity, b.contact_angle,
+    ...     elastic_constant=hertz.elastic_constant(b.reduced_modulus))
+    >>> print(f"{math.degrees(a):.6f} deg")
+    41.608640 deg
+    """
+    fa = check_positive("axial_load", axial_load, "N")
+    a0 = _angle("free_angle", free_angle)
+    args = (n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity)
+    alpha = operating_contact_angle(fa, stand_constants(*args, a0, elastic_constant=elastic_constant)
+                                    .force_characteristic, a0)
+    step = np.inf
+    for it in range(1, int(max_iter) + 1):
+        consts = stand_constants(*args, alpha, elastic_constant=elastic_constant)
+        new = operating_contact_angle(fa, consts.force_characteristic, a0)
+        step = np.max(np.abs(new - alpha))
+        alpha = new
+        if step <= xtol:
+            return consts, alpha
+    raise ConvergenceError("operating contact angle with the stiffness at the loaded angle", iterations=it,
+                           residual=step, estimate=alpha)
+
+
 class StandAnalysis(NamedTuple):
     """Every step of spec 000 for one bearing at one axial load (or an array of loads)."""
 
@@ -541,7 +617,7 @@ class StandAnalysis(NamedTuple):
     hertz: str  # "exact" or "table"
 
 
-def stand_analysis(bearing, axial_load, *, hertz="exact", elastic_constant=None,
+def stand_analysis(bearing, axial_load, *, hertz="exact", elastic_constant=None, stiffness_at=None,
                    reproduce_print=False, x0=None, max_rows=None):
     """Run every step of the test-stand method for a bearing (spec 000 sections 4-8).
 
@@ -560,6 +636,12 @@ def stand_analysis(bearing, axial_load, *, hertz="exact", elastic_constant=None,
         exactly Z K_n (B D)^1.5 of the library's exact Hertz stiffness at alpha0; "paper": the source's
         printed 0.592e-4 (cm^2/kgf)^(2/3) for steel (:data:`PAPER_ELASTIC_CONSTANT`), to reproduce
         its worked example; or a number. [(m^2/N)^(2/3)]
+    stiffness_at : {None, "operating", "free"}, optional
+        Angle at which the curvature sums, and with them C*, are evaluated. "free": at alpha0, as
+        spec 000 does; "operating": at the loaded angle (:func:`constants_at_operating_angle`), the
+        exact static solution that the high-speed model gives at zero speed and the combined-load
+        model gives under pure thrust. Default: "operating" with exact Hertz, "free" with the
+        tabulated coefficients (the paper's method).
     reproduce_print : bool, optional
         Legacy mode of the iteration table (spec 000 section 8).
     x0 : float, optional
@@ -573,14 +655,16 @@ def stand_analysis(bearing, axial_load, *, hertz="exact", elastic_constant=None,
 
     Notes
     -----
-    The method holds the contact stiffness at the free angle alpha0 (C*, spec 000 section 5). With the
-    default elastic constant its angle is therefore
+    Spec 000 holds the contact stiffness at the free angle alpha0 (C*, section 5); with
+    ``stiffness_at="free"`` and the default elastic constant the angle is
     ``static.contact_angle_under_thrust(..., stiffness_at="free")`` to the solver tolerance. The
-    high-speed model at zero speed (:func:`bearinglab.quasistatic.high_speed_analysis`) evaluates the
-    stiffness at the loaded angle (spec 004 section 5.3, ``stiffness_at="operating"``); the two differ
-    by the change of the raceway curvature sums between alpha0 and alpha, 6.06e-5 deg for B218 at 20 kN
-    (41.608701 deg here, 41.608640 deg there). The source's printed constant
-    (``elastic_constant="paper"``) moves the angle by a further 1.5e-3 deg for B218 at 20 kN.
+    default with exact Hertz evaluates C* at the loaded angle instead, so that one bearing under one
+    thrust has one operating angle in the whole library: the high-speed model at zero speed
+    (:func:`bearinglab.quasistatic.high_speed_analysis`, spec 004 section 5.3) gives the same angle to
+    1e-9 deg. The two choices differ by the change of the raceway curvature sums between alpha0 and
+    alpha: 6.06e-5 deg for B218 at 20 kN (41.608701 deg at alpha0, 41.608640 deg at alpha). The
+    source's printed constant (``elastic_constant="paper"``) moves the angle by a further 1.5e-3 deg
+    for B218 at 20 kN. With "operating", ``constants`` holds arrays over the loads.
 
     Examples
     --------
@@ -603,11 +687,21 @@ def stand_analysis(bearing, axial_load, *, hertz="exact", elastic_constant=None,
         ds_i = ds_o = None
     else:
         raise InputError(f"hertz must be one of ['exact', 'table'], got {hertz!r}")
+    if stiffness_at is None:
+        stiffness_at = "operating" if hertz == "exact" else "free"
+    if stiffness_at not in ("operating", "free"):
+        raise InputError(f"stiffness_at must be one of ['operating', 'free'], got {stiffness_at!r}")
+    if stiffness_at == "operating" and hertz == "table":
+        raise InputError("stiffness_at: 'operating' needs hertz='exact' (the tabulated coefficients belong to alpha0)")
     ce = _elastic_constant(elastic_constant, bearing.ball_material, bearing.ring_material)
-    consts = stand_constants(z, d, dm, fi, fo, a0, delta_star_inner=ds_i, delta_star_outer=ds_o, elastic_constant=ce)
     fa = check_positive("axial_load", axial_load, "N")
+    if stiffness_at == "operating":
+        consts, alpha = constants_at_operating_angle(fa, z, d, dm, fi, fo, a0, elastic_constant=ce)
+    else:
+        consts = stand_constants(z, d, dm, fi, fo, a0, delta_star_inner=ds_i, delta_star_outer=ds_o,
+                                 elastic_constant=ce)
+        alpha = operating_contact_angle(fa, consts.force_characteristic, a0)
     cs = consts.force_characteristic
-    alpha = operating_contact_angle(fa, cs, a0)
     xi_a = axial_displacement_ratio(alpha, a0)
     rows = []
     if np.ndim(fa) == 0:
