@@ -1,4 +1,6 @@
-"""Figures of spec 003 (matplotlib, Agg canvas; imported on use by the command line and the demo).
+"""Figures of spec 003, the runout model (matplotlib, Agg canvas; functions return Figures).
+
+Imported on use by the command line and the demo only, so ``import bearinglab`` does not load matplotlib.
 
 Figures
 -------
@@ -22,8 +24,8 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from . import runout
-from ._io import atomic_output
+from .. import runout
+from .._io import atomic_output
 
 __all__ = [
     "figure_axial",
@@ -47,7 +49,21 @@ def _figure(**kw):
 
 
 def save(fig, path, *, dpi=130):
-    """Write a figure as PNG atomically; returns the path."""
+    """Write a figure as PNG, whole or not at all (its directory is created).
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure.
+    path : str or Path
+        The PNG file.
+    dpi : int
+        Resolution. [1/inch]
+
+    Returns
+    -------
+    Path
+    """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     with atomic_output(path, suffix=".png") as tmp:
@@ -58,7 +74,14 @@ def save(fig, path, *, dpi=130):
 def figure_contact(d):
     """Figure 5 of the source: Delta k^i against ball azimuth, the sinusoid s(theta), the contacts.
 
-    ``d`` is a single-position :class:`~bearinglab.runout.Displacement`.
+    Parameters
+    ----------
+    d : Displacement
+        One position (:func:`bearinglab.runout.initial_displacement` at a single angle).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
     """
     c = d.contact
     fig = _figure(figsize=(8, 4.5))
@@ -100,7 +123,17 @@ def figure_contact(d):
 
 
 def figure_trajectory(t):
-    """The centre trajectory of a :class:`~bearinglab.runout.Trajectory`, x-y and polar."""
+    """The centre trajectory, x-y and polar.
+
+    Parameters
+    ----------
+    t : Trajectory
+        From :func:`bearinglab.runout.rotation_sequence`.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
     d = t.displacement
     x, y = d.x / UM, d.y / UM
     fig = _figure(figsize=(10, 4.6))
@@ -128,7 +161,17 @@ def figure_trajectory(t):
 
 
 def figure_axial(t):
-    """Delta z against the rotation angle (in revolutions)."""
+    """Delta z against the rotation angle (in revolutions).
+
+    Parameters
+    ----------
+    t : Trajectory
+        From :func:`bearinglab.runout.rotation_sequence`.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
     d = t.displacement
     fig = _figure(figsize=(9, 3.8))
     ax = fig.add_subplot()
@@ -151,7 +194,19 @@ def figure_axial(t):
 
 
 def figure_spectrum(spectrum, lines=()):
-    """Amplitude spectra of the radial (forward/backward whirl) and axial motion, lines labelled."""
+    """Amplitude spectra of the radial (forward/backward whirl) and axial motion, lines labelled.
+
+    Parameters
+    ----------
+    spectrum : Spectrum
+        From :func:`bearinglab.runout.runout_spectrum`.
+    lines : sequence of SpectrumLine
+        Lines to label (:func:`bearinglab.runout.spectrum_lines`).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
     fig = _figure(figsize=(10, 6))
     o = spectrum.order
     top = max(2.0, float(np.max([ln.order for ln in lines], initial=0.0)) * 1.15)
@@ -210,7 +265,17 @@ def figure_spectrum(spectrum, lines=()):
 
 
 def figure_histograms(result):
-    """Histograms of the per-sample metrics of a :class:`~bearinglab.runout.MonteCarloResult`."""
+    """Histograms of the per-sample metrics of a Monte Carlo study.
+
+    Parameters
+    ----------
+    result : MonteCarloResult
+        From :func:`bearinglab.runout.monte_carlo`.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
     fig = _figure(figsize=(10, 7))
     names = ("radial_ptp_x", "radial_ptp_y", "radial_ptp_max", "axial_ptp")
     for k, name in enumerate(names):
@@ -233,13 +298,41 @@ def figure_histograms(result):
 
 
 def save_single(d, directory):
-    """Figure 5 for one position; returns the paths written."""
+    """Write figure 5 of one position as ``runout_contact_psi<deg>.png``.
+
+    Parameters
+    ----------
+    d : Displacement
+        One position.
+    directory : str or Path
+        Where to write.
+
+    Returns
+    -------
+    list of Path
+    """
     psi = math.degrees(float(d.rotation_angle))
     return [save(figure_contact(d), Path(directory) / f"runout_contact_psi{psi:g}.png")]
 
 
 def save_sequence(t, spectrum=None, lines=None, directory="."):
-    """Trajectory, axial and spectrum figures of a sequence; returns the paths written."""
+    """Write the trajectory, axial, spectrum and first-position figures of a sequence.
+
+    Parameters
+    ----------
+    t : Trajectory
+        From :func:`bearinglab.runout.rotation_sequence`.
+    spectrum : Spectrum, optional
+        Its spectrum (computed when not given).
+    lines : sequence of SpectrumLine, optional
+        Lines to label (found when not given).
+    directory : str or Path
+        Where to write.
+
+    Returns
+    -------
+    list of Path
+    """
     d = t.displacement
     if spectrum is None:
         spectrum = runout.runout_spectrum(d.x, d.y, d.z, t.steps_per_revolution)
@@ -273,5 +366,17 @@ def _position(d, k):
 
 
 def save_monte_carlo(result, directory):
-    """Histograms of a Monte Carlo study; returns the paths written."""
+    """Write the histograms of a Monte Carlo study as ``runout_monte_carlo.png``.
+
+    Parameters
+    ----------
+    result : MonteCarloResult
+        The study.
+    directory : str or Path
+        Where to write.
+
+    Returns
+    -------
+    list of Path
+    """
     return [save(figure_histograms(result), Path(directory) / "runout_monte_carlo.png")]

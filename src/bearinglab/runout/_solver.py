@@ -1,7 +1,7 @@
-"""Private solvers of the rigid contact problem of spec 003 section 6 (used by :mod:`bearinglab.runout`).
+"""Private solvers of the rigid contact problem of spec 003 section 6 (used by :mod:`bearinglab.runout.contact`).
 
 All functions here work in micrometres (the unit in which spec 003 states its tolerances); the public
-wrapper :func:`bearinglab.runout.solve_contact` converts from and to SI.
+wrapper :func:`bearinglab.runout.contact.solve_contact` converts from and to SI.
 
 Problem (6.1), for every position p::
 
@@ -32,13 +32,13 @@ import itertools
 
 import numpy as np
 
-from ._solve import (
+from .._solve import (
     RUNOUT_CONTACT_TOL_UM,
     RUNOUT_FACE_TOL_UM,
     RUNOUT_STRICT_WEIGHT,
     RUNOUT_TIE_TOL_UM,
 )
-from .errors import ConvergenceError
+from ..errors import ConvergenceError
 
 __all__: list[str] = []
 
