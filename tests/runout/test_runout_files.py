@@ -5,10 +5,12 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from numpy.testing import assert_allclose
 
 from bearinglab import runout as R
-from bearinglab.errors import CatalogError
+from bearinglab.errors import CatalogError, InputError
 
 UM = 1e-6
 
@@ -143,3 +145,75 @@ def test_shipped_measured_profile_example():
     t = R.rotation_sequence(geom, e, revolutions=2, steps_per_revolution=90, refine=True)
     assert np.all(t.displacement.converged)
     assert 0 < t.metrics.radial_ptp_max < 5 * UM
+
+
+# ------------------------------------------------------------------------------ writing
+finite = st.floats(allow_nan=False, allow_infinity=False)  # any finite double, subnormals and -0.0 too
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    coefficients=st.lists(finite, min_size=4, max_size=4),
+    deficits=st.lists(finite, min_size=16, max_size=16),
+    tilt=finite,
+    first_ball_angle=st.floats(-10.0, 10.0),
+)
+def test_written_error_file_reads_back_bit_for_bit(
+    tmp_path_factory, g, coefficients, deficits, tilt, first_ball_angle
+):
+    c = np.array(coefficients)
+    series = R.FourierSeries(c, c[::-1])
+    e = R.manufacturing_errors(
+        16,
+        outer=R.RacewayErrors(radial=series, axial=R.FourierSeries(c[:2], c[2:])),
+        inner=R.RacewayErrors(groove=series, normal=R.FourierSeries(-c, c)),
+        ball_outer_deficit=deficits,
+        ball_inner_deficit=deficits[::-1],
+        tilt_x=tilt,
+        tilt_y=R.FourierSeries(c[:3], np.r_[0.0, c[1:3]]),
+    )
+    geometry = g._replace(first_ball_angle=first_ball_angle)
+    path = R.write_error_file(tmp_path_factory.mktemp("w") / "e.toml", e, geometry, title='a "b"')
+    g2, e2 = R.load_error_file(path)
+    assert g2 == geometry
+    for ring in ("outer", "inner"):
+        for name in ("radial", "axial", "groove", "normal"):
+            a, b = getattr(getattr(e, ring), name), getattr(getattr(e2, ring), name)
+            assert (a is None) == (b is None), (ring, name)
+            if a is not None:  # sin[0] multiplies sin(0 theta) = 0: it is not written
+                assert np.array_equal(a.cos, b.cos) and np.array_equal(a.sin[1:], b.sin[1:])
+    for name in ("ball_outer_deficit", "ball_inner_deficit"):
+        assert np.array_equal(getattr(e, name), getattr(e2, name))
+    assert e2.tilt_x == (tilt if tilt != 0.0 else 0.0)
+    assert np.array_equal(e2.tilt_y.cos, e.tilt_y.cos) and np.array_equal(e2.tilt_y.sin, e.tilt_y.sin)
+
+
+def test_write_error_file_refuses_what_a_file_cannot_hold(tmp_path, g):
+    path = tmp_path / "e.toml"
+    with pytest.raises(InputError, match="function of the rotation angle cannot be written"):
+        R.write_error_file(path, R.manufacturing_errors(16, tilt_y=lambda psi: 0 * psi), g)
+    two_d = R.FourierSeries(np.zeros((2, 3)), np.zeros((2, 3)))
+    with pytest.raises(InputError, match="must be 1-D"):
+        R.write_error_file(path, R.manufacturing_errors(16, inner=R.RacewayErrors(radial=two_d)), g)
+    with pytest.raises(InputError, match=r"one value per ball \(16\)"):
+        R.write_error_file(path, R.manufacturing_errors(15), g)
+    with pytest.raises(InputError, match="errors must be a ManufacturingErrors"):
+        R.write_error_file(path, None, g)
+    assert list(tmp_path.iterdir()) == []  # nothing written, not even a temporary file
+
+
+def test_sample_error_files_reproduce_the_samples(tmp_path, g):
+    """Defect 6: the error files of the worst samples give back their metrics exactly."""
+    r = R.monte_carlo(g, "G5", "P4", 12, 4, steps_per_revolution=30, chunk_size=5)
+    worst = R.worst_samples(r, "radial_ptp_max", 2)
+    paths = R.write_sample_error_files(tmp_path / "worst", r, g, worst)
+    assert [p.name for p in paths] == [f"sample_{i}.toml" for i in worst]
+    for i, path in zip(worst, paths):
+        text = path.read_text(encoding="utf-8")
+        assert "--revolutions 2 --steps-per-rev 30" in text and "G5 balls, P4 rings" in text
+        geometry, errors = R.load_error_file(path)
+        t = R.rotation_sequence(geometry, errors, revolutions=2, steps_per_revolution=30)
+        for name in R.METRICS:
+            assert getattr(t.metrics, name) == getattr(r.samples, name)[i], name
+    with pytest.raises(InputError, match="result must be a MonteCarloResult"):
+        R.write_sample_error_files(tmp_path, r.samples, g, worst)

@@ -2,10 +2,13 @@
 draws, the statistics, and bit-identical results on every executor."""
 
 import math
+import time
 
 import numpy as np
 import pytest
+from threadpoolctl import threadpool_limits
 
+from bearinglab import parallel
 from bearinglab import runout as R
 from bearinglab.errors import InputError
 
@@ -114,3 +117,94 @@ def test_monte_carlo_seed_checks(g):
             R.monte_carlo(g, "G5", "P4", 4, bad, steps_per_revolution=12)
     r = R.monte_carlo(g, "G5", "P4", 4, np.int64(5), steps_per_revolution=12)
     assert r.seed == 5
+
+
+# ------------------------------------------------------------------------------ the same bits everywhere
+def _assert_same_study(a, b):
+    """Per-sample metrics and statistics equal to the last bit (==, not allclose)."""
+    for name in a.samples._fields:
+        assert np.array_equal(getattr(a.samples, name), getattr(b.samples, name)), name
+    assert a.summary == b.summary
+
+
+def test_monte_carlo_chunk_does_not_depend_on_the_blas_threads(g):
+    """Defect 4: a complex matrix product (OpenBLAS zgemm) in the kernel rounded differently with one and
+    with two BLAS threads; the kernel now has no BLAS product and holds BLAS to one thread."""
+    runs = []
+    for threads in (1, 2):
+        with threadpool_limits(limits=threads, user_api="blas"):
+            # the spec's 180 steps x 2 revolutions: OpenBLAS threads products of this size, not smaller
+            runs.append(R.monte_carlo_chunk(g, "G5", "P4", np.arange(20), 7))
+    for name in runs[0]._fields:
+        assert np.array_equal(getattr(runs[0], name), getattr(runs[1], name)), name
+
+
+def test_monte_carlo_on_a_local_cluster_equals_serial(g):
+    """Defect 4: serial (here with 2 BLAS threads, as a 2-core machine has by default) and a real dask
+    LocalCluster of 2 worker processes (1 BLAS thread each), chunks of 37: the same bits."""
+    options = {"steps_per_revolution": 180, "revolutions": 2}  # smaller products ran on one thread
+    start = time.perf_counter()
+    with threadpool_limits(limits=2, user_api="blas"):
+        serial = R.monte_carlo(g, "G5", "P4", 90, 7, **options)
+    local = R.monte_carlo(
+        g,
+        "G5",
+        "P4",
+        90,
+        7,
+        execution=parallel.Execution("local", workers=2, chunk_size=37, processes=True),
+        **options,
+    )
+    _assert_same_study(serial, local)
+    assert time.perf_counter() - start < 60.0  # about 6 s, most of it starting the cluster
+
+
+def test_execution_value_and_the_older_keywords_agree(g):
+    options = {"steps_per_revolution": 12, "revolutions": 1}
+    calls = []
+    a = R.monte_carlo(
+        g,
+        "G5",
+        "P4",
+        10,
+        3,
+        execution=parallel.Execution(chunk_size=4, progress=lambda k, n: calls.append((k, n))),
+        **options,
+    )
+    assert calls == [(4, 10), (8, 10), (10, 10)]
+    b = R.monte_carlo(g, "G5", "P4", 10, 3, chunk_size=4, executor="serial", **options)
+    c = R.monte_carlo(g, "G5", "P4", 10, 3, **options)  # default chunks of 100
+    _assert_same_study(a, b)
+    _assert_same_study(a, c)
+    with pytest.raises(InputError, match="not both"):
+        R.monte_carlo(g, "G5", "P4", 10, 3, execution=parallel.Execution(), chunk_size=4)
+    with pytest.raises(InputError, match="chunk-size must be an integer >= 1"):
+        R.monte_carlo(g, "G5", "P4", 10, 3, chunk_size=0)
+
+
+# ------------------------------------------------------------------------------ reproducing samples
+def test_chosen_samples_are_reproduced_bit_for_bit(g):
+    """Defect 6: the errors of any sample regenerate from the seed; a rotation sequence of them gives the
+    sample's metrics exactly, whichever chunk the sample was computed in."""
+    r = R.monte_carlo(g, "G10", "P5", 30, 11, steps_per_revolution=45, chunk_size=7)
+    worst = R.worst_samples(r, "axial_ptp", 3)
+    drawn = R.monte_carlo_errors(g, "G10", "P5", worst, 11)
+    assert [s.sample_index for s in drawn] == list(worst)
+    for s in drawn:
+        assert s.geometry == g._replace(first_ball_angle=r.samples.first_ball_angle[s.sample_index])
+        assert s.errors.tilt_x == 0.0 and s.errors.inner.axial.cos.size == 2  # order-1 wobble only
+        t = R.rotation_sequence(s.geometry, s.errors, revolutions=2, steps_per_revolution=45)
+        for name in R.METRICS:
+            assert getattr(t.metrics, name) == getattr(r.samples, name)[s.sample_index], name
+
+
+def test_worst_samples_ranks_by_magnitude():
+    zeros = np.zeros(5)
+    s = R.MonteCarloSamples(np.arange(10, 15), *(zeros,) * 7)
+    s = s._replace(dz_mean=np.array([-1.0, -4.0, 2.0, 4.0, 0.5]))
+    assert list(R.worst_samples(s, "dz_mean", 3)) == [11, 13, 12]  # |-4| = |4|: lower index first
+    assert list(R.worst_samples(s, "dz_mean", 99)) == [11, 13, 12, 10, 14]
+    with pytest.raises(InputError, match=r"metric must be one of \['radial_ptp_x'"):
+        R.worst_samples(s, "runout", 1)
+    with pytest.raises(InputError, match="count must be an integer >= 1"):
+        R.worst_samples(s, "axial_ptp", 0)

@@ -61,6 +61,7 @@ Files (``files``)
 load_error_file         the TOML error file of ``examples/runout/README.md``
 load_geometry_file      the [geometry] table of a file
 write_error_file        write one bearing's errors as such a file (exact round trip)
+write_sample_error_files  the error files of chosen Monte Carlo samples, to reproduce them one by one
 
 Units: SI throughout (m, rad). The spec states its tolerances in micrometres; the solvers scale them.
 Every name is defined in the submodule of its topic and re-exported here; ``from bearinglab import
@@ -95,7 +96,7 @@ from .deviations import (
     roundness_coefficients,
 )
 from .exact import exact_reduction
-from .files import load_error_file, load_geometry_file, write_error_file
+from .files import load_error_file, load_geometry_file, write_error_file, write_sample_error_files
 from .geometry import (
     SpindleGeometry,
     geometry_from_bearing,
@@ -185,4 +186,5 @@ __all__ = [
     "tolerance_classes",
     "worst_samples",
     "write_error_file",
+    "write_sample_error_files",
 ]
