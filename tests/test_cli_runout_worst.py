@@ -9,7 +9,9 @@ import pytest
 from bearinglab import runout
 from bearinglab.cli import main
 
-MC = str(Path(__file__).resolve().parent.parent / "examples" / "runout" / "monte_carlo_reference.toml")
+MC = str(
+    Path(__file__).resolve().parent.parent / "examples" / "runout" / "monte_carlo_reference.toml"
+)
 STUDY = ["--ball-grade", "G10", "--ring-class", "P5", "--samples", "15", "--seed", "5"]
 ROTATION = ["--steps-per-rev", "40", "--revolutions", "2"]
 
@@ -58,6 +60,8 @@ def test_text_output_lists_the_files(capsys, tmp_path, monkeypatch):
     ],
 )
 def test_bad_write_worst_options_fail_before_the_study(capsys, extra, match):
-    code, _out, err = run(capsys, "runout", "monte-carlo", "--geometry", MC, "--samples", "4", *extra)
+    code, _out, err = run(
+        capsys, "runout", "monte-carlo", "--geometry", MC, "--samples", "4", *extra
+    )
     assert code == 2
     assert err.count("\n") == 1 and match in err and "Traceback" not in err

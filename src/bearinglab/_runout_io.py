@@ -7,4 +7,8 @@ from .runout.files import _read_geometry as read_geometry
 from .runout.files import load_error_file as read_error_file
 from .runout.files import load_geometry_file as read_geometry_file
 
-__all__ = ["read_error_file", "read_geometry", "read_geometry_file"]  # as before, for the command line
+__all__ = [
+    "read_error_file",
+    "read_geometry",
+    "read_geometry_file",
+]  # as before, for the command line

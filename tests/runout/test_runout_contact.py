@@ -33,6 +33,7 @@ def contact_tol_um(dk_um):
     """Spec 003 section 7.6: the slack below which a ball touches, scaled by max(1, max |dk| / 1 um)."""
     return RUNOUT_CONTACT_TOL_UM * max(1.0, float(np.max(np.abs(dk_um))))
 
+
 # ------------------------------------------------------------------------------ contact problem
 cases = st.integers(3, 20).flatmap(
     lambda n: st.tuples(
@@ -155,7 +156,9 @@ def test_invariances(case, shift, factor, turn):
     face_tol = max(contact_tol_um(dk), contact_tol_um(dk + shift))
     assert_allclose(um([moved.sine, moved.cosine]), um([base.sine, base.cosine]), atol=face_tol)
     scaled = R.solve_contact(dk * factor * UM, th)
-    assert um(scaled.constant) == pytest.approx(factor * um(base.constant), abs=1e-9 * max(1.0, factor))
+    assert um(scaled.constant) == pytest.approx(
+        factor * um(base.constant), abs=1e-9 * max(1.0, factor)
+    )
     assert_allclose(
         um([scaled.sine, scaled.cosine]),
         factor * um([base.sine, base.cosine]),

@@ -131,6 +131,7 @@ def test_missing_error_file():
     with pytest.raises(CatalogError, match="no such file"):
         R.load_error_file("/nonexistent/errors.toml")
 
+
 def test_shipped_measured_profile_example():
     """The profile example: catalog geometry, a CSV roundness profile, inline samples, contact deficits and a
     tilt varying with rotation."""
@@ -148,7 +149,9 @@ def test_shipped_measured_profile_example():
 
 
 # ------------------------------------------------------------------------------ writing
-finite = st.floats(allow_nan=False, allow_infinity=False)  # any finite double, subnormals and -0.0 too
+finite = st.floats(
+    allow_nan=False, allow_infinity=False
+)  # any finite double, subnormals and -0.0 too
 
 
 @settings(max_examples=60, deadline=None)
@@ -185,7 +188,9 @@ def test_written_error_file_reads_back_bit_for_bit(
     for name in ("ball_outer_deficit", "ball_inner_deficit"):
         assert np.array_equal(getattr(e, name), getattr(e2, name))
     assert e2.tilt_x == (tilt if tilt != 0.0 else 0.0)
-    assert np.array_equal(e2.tilt_y.cos, e.tilt_y.cos) and np.array_equal(e2.tilt_y.sin, e.tilt_y.sin)
+    assert np.array_equal(e2.tilt_y.cos, e.tilt_y.cos) and np.array_equal(
+        e2.tilt_y.sin, e.tilt_y.sin
+    )
 
 
 def test_write_error_file_refuses_what_a_file_cannot_hold(tmp_path, g):

@@ -32,7 +32,6 @@ def test_metrics_against_brute_force():
         assert np.ptp(proj, axis=1).max() == pytest.approx(d, rel=1e-6)
 
 
-
 def brute_force_diameter(x, y):
     """The largest distance over all pairs of points, written independently of the library."""
     dx = x[:, None] - x[None, :]
@@ -52,7 +51,9 @@ point_sets = st.integers(1, 80).flatmap(
 @given(points=point_sets, scale=st.sampled_from([1.0, 1e-9]), offset=st.floats(-1e3, 1e3))
 @example(points=([0.0] * 12, [0.0] * 12), scale=1.0, offset=0.0)  # one point, repeated
 @example(points=(list(range(12)), [3.0] * 12), scale=1.0, offset=0.0)  # collinear, along x
-@example(points=(list(range(12)), list(range(0, 24, 2))), scale=1e-9, offset=5.0)  # collinear, askew
+@example(
+    points=(list(range(12)), list(range(0, 24, 2))), scale=1e-9, offset=5.0
+)  # collinear, askew
 @example(points=([0.0, 1.0, 0.0, 1.0] * 3, [0.0, 0.0, 1.0, 1.0] * 3), scale=1.0, offset=0.0)  # ties
 def test_diameter_equals_the_largest_distance_of_all_pairs(points, scale, offset):
     """The convex-hull diameter (rotating calipers) equals the brute force over all pairs. Both take the
@@ -65,14 +66,15 @@ def test_diameter_equals_the_largest_distance_of_all_pairs(points, scale, offset
     assert got == pytest.approx(brute_force_diameter(x, y), rel=1e-13, abs=0.0)
 
 
-
 @settings(max_examples=150, deadline=None)
 @given(
     angles=st.lists(st.floats(0.0, 2 * np.pi), min_size=3, max_size=120),
     aspect=st.floats(0.2, 1.0),
 )
 # found by a random search against the first version (it looked for the antipode past the last edge)
-@example(angles=[1.0, 5.387135627773562e-15, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 2.0], aspect=1.0)  # merged
+@example(
+    angles=[1.0, 5.387135627773562e-15, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 2.0], aspect=1.0
+)  # merged
 @example(
     angles=[1.02, 2.26, 5.31, 3.04, 3.39, 1.83, 3.46, 3.8, 2.11, 3.78, 4.74, 2.22, 2.86, 0.82],
     aspect=1.0,
@@ -120,6 +122,7 @@ def test_a_thousand_revolutions_take_seconds():
     assert t.metrics.radial_ptp_max >= max(t.metrics.radial_ptp_x, t.metrics.radial_ptp_y)
     few = R.rotation_sequence(geometry, errors, revolutions=10, steps_per_revolution=36)
     assert t.metrics.radial_ptp_max >= few.metrics.radial_ptp_max  # a longer record covers more
+
 
 def test_synchronous_and_asynchronous_parts(g):
     e = R.manufacturing_errors(

@@ -103,7 +103,9 @@ def fourier_series(cos=None, sin=None, *, scale=1.0):
     return FourierSeries(out[0], out[1])
 
 
-_HORNER_BLOCK = 32768  # elements per block of the Horner sums (the complex temporaries stay in cache)
+_HORNER_BLOCK = (
+    32768  # elements per block of the Horner sums (the complex temporaries stay in cache)
+)
 
 
 def _horner(cos, sin, angle):

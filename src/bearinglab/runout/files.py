@@ -568,8 +568,10 @@ def write_error_file(path, errors, geometry=None, *, title=None, description=Non
         raise InputError(f"errors must be a ManufacturingErrors, got {type(errors).__name__}")
     if geometry is not None and not isinstance(geometry, SpindleGeometry):
         raise InputError(f"geometry must be a SpindleGeometry, got {type(geometry).__name__}")
-    lines = ["# bearinglab runout error file (format: examples/runout/README.md); lengths in m and",
-             "# angles in rad with all their digits, so that reading it back gives the same numbers"]
+    lines = [
+        "# bearinglab runout error file (format: examples/runout/README.md); lengths in m and",
+        "# angles in rad with all their digits, so that reading it back gives the same numbers",
+    ]
     for key, text in (("title", title), ("description", description)):
         if text is not None:
             lines.append(f"{key} = {json.dumps(str(text), ensure_ascii=False)}")
@@ -627,7 +629,12 @@ def write_sample_error_files(directory, result, geometry, sample_index, *, seed=
     seed = result.seed if seed is None else seed
     grade, rings = result.ball_grade.name, result.ring_class.name
     drawn = monte_carlo_errors(
-        geometry, result.ball_grade, result.ring_class, sample_index, seed, max_order=result.max_order
+        geometry,
+        result.ball_grade,
+        result.ring_class,
+        sample_index,
+        seed,
+        max_order=result.max_order,
     )
     where = {int(i): k for k, i in enumerate(result.samples.sample_index)}
     paths = []

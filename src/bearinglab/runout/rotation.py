@@ -74,7 +74,9 @@ def _antipodal_pairs(vx, vy):
     i = np.arange(h)
     turn = np.arctan2(np.roll(vy, -1) - vy, np.roll(vx, -1) - vx)
     turn = np.maximum.accumulate(np.mod(turn - turn[0], 2 * np.pi))  # rounding must not un-sort it
-    j = np.searchsorted(turn, np.mod(turn + np.pi, 2 * np.pi))  # the edge turned by pi, round the end
+    j = np.searchsorted(
+        turn, np.mod(turn + np.pi, 2 * np.pi)
+    )  # the edge turned by pi, round the end
     ends = np.concatenate([i, (i + 1) % h] * 3)
     far = np.concatenate([(j + k) % h for k in (-1, 0, 1) for _ in range(2)])
     return ends, far

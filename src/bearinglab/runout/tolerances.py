@@ -360,7 +360,9 @@ def monte_carlo_errors(geometry, grade, rings, sample_index, seed, *, max_order=
     theta1, deficit, series = _draw(geometry.n_balls, grade, rings, idx, seed, k_max)
     # one object per chosen sample (a handful, for files): the draws above are batched
     return tuple(
-        SampleErrors(int(i), geometry._replace(first_ball_angle=float(t1)), _errors(deficit, series, s))
+        SampleErrors(
+            int(i), geometry._replace(first_ball_angle=float(t1)), _errors(deficit, series, s)
+        )
         for s, (i, t1) in enumerate(zip(idx, theta1))
     )
 
