@@ -12,23 +12,30 @@ writes tables (CSV) and figures (PNG) under ``out/runout/`` and prints a short s
 
 from __future__ import annotations
 
+import csv
+import io
 import math
 import sys
 from pathlib import Path
 
 import numpy as np
 
-from bearinglab import _runout_plots as plots
 from bearinglab import runout
-from bearinglab._io import csv_text, write_text
+from bearinglab.plots import runout as plots
 
 HERE = Path(__file__).resolve().parent
 UM = 1e-6
 
 
 def write_csv(path, header, rows, comments=()):
-    """Write a CSV file whole or not at all (temporary file in the same directory, then os.replace)."""
-    return write_text(path, csv_text(header, rows, comments))
+    """Write a CSV file with ``# comment`` lines first (the demo's outputs are small: one write each)."""
+    buf = io.StringIO()
+    buf.writelines(f"# {line}\n" for line in comments)
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(header)
+    writer.writerows(rows)
+    Path(path).write_text(buf.getvalue(), encoding="utf-8")
+    return Path(path)
 
 
 def main(argv):

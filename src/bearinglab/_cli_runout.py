@@ -502,6 +502,22 @@ def monte_carlo_command(
     samples_csv: Annotated[
         Path | None, typer.Option("--samples-csv", help="Write the per-sample metrics as CSV.")
     ] = None,
+    write_worst: Annotated[
+        int | None,
+        typer.Option(
+            "--write-worst",
+            help="Write the error files of the N worst samples (by --worst-by) into --worst-dir; "
+            "the runout command re-runs each exactly (see the file's description).",
+        ),
+    ] = None,
+    worst_by: Annotated[
+        str,
+        typer.Option("--worst-by", help="Metric ranking --write-worst: " + ", ".join(runout.METRICS)),
+    ] = "radial_ptp_max",
+    worst_dir: Annotated[
+        Path | None,
+        typer.Option("--worst-dir", help="Directory of the --write-worst files (default: .)."),
+    ] = None,
     progress: Annotated[
         bool,
         typer.Option("--progress/--no-progress", help="Progress bar on stderr (terminals only)."),
@@ -515,6 +531,7 @@ def monte_carlo_command(
         raise InputError("geometry: give --geometry FILE or --bearing NAME")
     if samples < 2:
         raise InputError(f"samples must be >= 2 [-], got {samples}")
+    _check_write_worst(write_worst, worst_by, worst_dir)
     grade = runout.ball_grade(ball_grade)
     rings = runout.ring_class(ring_class)
     ex = executor or "serial"
@@ -590,6 +607,10 @@ def monte_carlo_command(
             ),
         )
         info["samples_csv"] = str(samples_csv)
+    if write_worst is not None:
+        worst = runout.worst_samples(r, worst_by, write_worst)
+        files = runout.write_sample_error_files(worst_dir or Path("."), r, g, worst)
+        info["worst_error_files"] = [str(p) for p in files]
     if plot is not None:
         from . import _runout_plots
 
@@ -608,9 +629,19 @@ def monte_carlo_command(
             for name in runout.METRICS
         ],
     )
-    for key in ("samples_csv", "figures"):
+    for key in ("samples_csv", "worst_error_files", "figures"):
         if key in info:
             console.print(f"{key}: {info[key] if key == 'samples_csv' else ', '.join(info[key])}")
+
+
+def _check_write_worst(count, metric, directory):
+    """The --write-worst options, checked before the study runs."""
+    if count is not None and count < 1:
+        raise InputError(f"write-worst must be >= 1 [-], got {count}")
+    if metric not in runout.METRICS:
+        raise InputError(f"worst-by must be one of {list(runout.METRICS)}, got {metric!r}")
+    if directory is not None and count is None:
+        raise InputError("worst-dir: give --write-worst N too (the number of samples to write)")
 
 
 def register(app):

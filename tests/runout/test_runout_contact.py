@@ -1,5 +1,5 @@
-"""Properties of the spindle-bearing runout model (spec 003): the contact problem and its solvers, the
-sign conventions, the refinement, rotation metrics, spectrum, Monte Carlo, error files and input checks.
+"""Properties of the one-position runout model (spec 003 sections 4-9, ``runout.contact``): the contact
+problem and its solvers, the reduced bearing, the generalized error and its signs, the refinement.
 
 Published cases are in ``tests/validation/test_runout_examples.py``.
 """
@@ -15,15 +15,10 @@ from scipy.optimize import linprog
 
 from bearinglab import runout as R
 from bearinglab._solve import RUNOUT_CONTACT_TOL_UM
-from bearinglab.errors import CatalogError, ConvergenceError, InputError
+from bearinglab.errors import ConvergenceError, InputError
 
 UM = 1e-6
 FAST = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-
-
-@pytest.fixture(scope="module")
-def g():
-    return R.geometry_from_catalog(16, 7.144e-3, 54e-3, 0.53, 0.52, math.radians(15))
 
 
 def um(x):
@@ -161,7 +156,9 @@ def test_invariances(case, shift, factor, turn):
     face_tol = max(contact_tol_um(dk), contact_tol_um(dk + shift))
     assert_allclose(um([moved.sine, moved.cosine]), um([base.sine, base.cosine]), atol=face_tol)
     scaled = R.solve_contact(dk * factor * UM, th)
-    assert um(scaled.constant) == pytest.approx(factor * um(base.constant), abs=1e-9 * max(1.0, factor))
+    assert um(scaled.constant) == pytest.approx(
+        factor * um(base.constant), abs=1e-9 * max(1.0, factor)
+    )
     assert_allclose(
         um([scaled.sine, scaled.cosine]),
         factor * um([base.sine, base.cosine]),
@@ -325,7 +322,7 @@ def test_refinement_angle_equals_source_eq30(g, pose, tilt, theta):
     assert_allclose(shifts.inner_angle_shift, eq30 - m, rtol=0, atol=1e-15)  # eq. 29
 
 
-# ------------------------------------------------------------------------------ errors and their signs
+# ------------------------------------------------------------------------------ generalized error and its signs
 def test_sign_conventions_of_the_generalized_error(g):
     """Clearance-positive: material missing (a bigger outer raceway, a smaller inner raceway, a bigger
     groove radius, an undersize ball) makes dk positive."""
@@ -379,43 +376,6 @@ def test_inner_ring_errors_turn_with_the_ring(g):
     assert_allclose(um(dk), -math.cos(g.contact_angle) * np.cos(3 * (th - 2 * np.pi)), atol=1e-12)
 
 
-def test_roundness_profile_fit(g):
-    rng = np.random.default_rng(3)
-    th = np.sort(rng.uniform(0, 2 * np.pi, 50))  # uneven spacing
-    true = R.fourier_series({0: 0.1, 1: 0.5, 4: -0.2}, {2: 0.3, 4: 0.05})
-    dev = R.evaluate_series(true, th)
-    fit = R.roundness_coefficients(th, dev, 6)
-    assert_allclose(fit.cos, np.r_[true.cos, 0, 0], atol=1e-12)
-    assert_allclose(fit.sin, np.r_[true.sin, 0, 0], atol=1e-12)
-    with pytest.raises(InputError, match="max_order must be <="):
-        R.roundness_coefficients(th[:7], dev[:7], 4)
-    with pytest.raises(InputError, match="one value per angle"):
-        R.roundness_coefficients(th, dev[:-1], 3)
-
-
-def test_fourier_series_input_checks():
-    assert_allclose(R.fourier_series({"2": 1.0}).cos, [0, 0, 1])
-    with pytest.raises(InputError, match="whole number >= 0"):
-        R.fourier_series({-1: 1.0})
-    with pytest.raises(InputError, match="whole number >= 0"):
-        R.fourier_series({"1.5": 1.0})
-    with pytest.raises(InputError, match="must be finite"):
-        R.fourier_series({1: float("inf")})
-
-
-def test_manufacturing_errors_checks():
-    with pytest.raises(InputError, match="one value per ball"):
-        R.manufacturing_errors(16, ball_diameter_deviation=np.zeros(15))
-    with pytest.raises(InputError, match="not both"):
-        R.manufacturing_errors(
-            3, ball_diameter_deviation=np.zeros(3), ball_outer_deficit=np.zeros(3)
-        )
-    with pytest.raises(InputError, match="tilt_x must be finite"):
-        R.manufacturing_errors(3, tilt_x=float("nan"))
-    with pytest.raises(InputError, match="RacewayErrors"):
-        R.manufacturing_errors(3, inner={"radial": 1})
-
-
 def test_tilt_as_a_function_of_rotation(g):
     """A tilt given as a Fourier series in psi, or as a callable, enters the pose through (5.2)."""
     series = R.fourier_series({0: 5.0, 1: 10.0}, scale=UM)
@@ -428,51 +388,6 @@ def test_tilt_as_a_function_of_rotation(g):
     assert_allclose(a.y, -(5.0 + 10.0 * np.cos(psi)) * UM * k, rtol=1e-12)
     assert_allclose(a.y, b.y, rtol=1e-14)
     assert_allclose(a.tilt_x, (5.0 + 10.0 * np.cos(psi)) * UM, rtol=1e-14)
-
-
-# ------------------------------------------------------------------------------ geometry
-def test_geometry_forms_and_checks(g):
-    h = R.geometry_from_catalog(
-        16, 7.144e-3, 54e-3, 0.53, 0.52, outer_bottom_radius=g.outer_bottom_radius
-    )
-    assert h.contact_angle == pytest.approx(g.contact_angle, abs=1e-12)
-    with pytest.raises(InputError, match="inconsistent with contact_angle"):
-        R.geometry_from_radii(
-            16,
-            g.ball_radius,
-            g.outer_groove_radius,
-            g.inner_groove_radius,
-            g.inner_bottom_radius,
-            g.contact_angle,
-            outer_bottom_radius=g.outer_bottom_radius + 1e-6,
-        )
-    with pytest.raises(InputError, match="n_balls must be an integer >= 3"):
-        R.geometry_from_catalog(2, 7.144e-3, 54e-3, 0.53, 0.52, 0.26)
-    with pytest.raises(InputError, match="outer_conformity must be > 0.5"):
-        R.geometry_from_catalog(16, 7.144e-3, 54e-3, 0.5, 0.52, 0.26)
-    with pytest.raises(InputError, match="inner_groove_radius must be > ball_radius"):
-        R.geometry_from_radii(16, 3.572e-3, 3.8e-3, 3.5e-3, 23.4e-3, 0.26)
-    with pytest.raises(InputError, match=r"contact_angle must be in \(0, 90\)"):
-        R.geometry_from_catalog(16, 7.144e-3, 54e-3, 0.53, 0.52, 0.0)
-    with pytest.raises(InputError, match=r"contact_angle must be in \(0, 90\)"):
-        R.geometry_from_catalog(16, 7.144e-3, 54e-3, 0.53, 0.52, math.radians(95))
-    with pytest.raises(InputError, match="pitch_diameter must be > ball_diameter"):
-        R.geometry_from_catalog(16, 7.144e-3, 5e-3, 0.53, 0.52, 0.26)
-    with pytest.raises(InputError, match="give contact_angle"):
-        R.geometry_from_radii(
-            16, g.ball_radius, g.outer_groove_radius, g.inner_groove_radius, g.inner_bottom_radius
-        )
-
-
-def test_geometry_from_a_catalog_bearing():
-    from bearinglab import catalog
-
-    b = catalog.get("B218")
-    h = R.geometry_from_bearing(b, first_ball_angle=0.1)
-    assert h.n_balls == 16 and h.first_ball_angle == 0.1
-    assert 2 * h.ball_centre_radius == pytest.approx(b.pitch_diameter, rel=1e-14)
-    with pytest.raises(InputError, match="n_balls of '1000095' is not known"):
-        R.geometry_from_bearing(catalog.get("1000095"))
 
 
 # ------------------------------------------------------------------------------ refinement
@@ -510,293 +425,6 @@ def test_refinement_is_a_second_order_correction(g):
     assert correction(0.5) / correction(1.0) == pytest.approx(0.25, rel=0.01)
 
 
-# ------------------------------------------------------------------------------ rotation and metrics
-def test_metrics_against_brute_force():
-    rng = np.random.default_rng(7)
-    x, y, z = rng.normal(size=(3, 3, 200))
-    m = R.runout_metrics(x, y, z)
-    for k in range(3):
-        d = np.hypot(x[k][:, None] - x[k][None, :], y[k][:, None] - y[k][None, :]).max()
-        assert m.radial_ptp_max[k] == pytest.approx(d, rel=1e-14)
-        assert m.radial_ptp_max[k] >= max(m.radial_ptp_x[k], m.radial_ptp_y[k])
-        # the largest peak-to-peak over directions equals the diameter: check against 3600 directions
-        phi = np.linspace(0, np.pi, 3600, endpoint=False)
-        proj = np.outer(np.cos(phi), x[k]) + np.outer(np.sin(phi), y[k])
-        assert np.ptp(proj, axis=1).max() == pytest.approx(d, rel=1e-6)
-
-
-def test_synchronous_and_asynchronous_parts(g):
-    e = R.manufacturing_errors(
-        16,
-        ball_diameter_deviation=np.r_[1.0, np.zeros(15)] * UM,
-        inner=R.RacewayErrors(radial=R.fourier_series({1: 0.5}, scale=UM)),
-    )
-    t = R.rotation_sequence(g, e, revolutions=4, steps_per_revolution=90)
-    x = t.displacement.x
-    sync = R.synchronous_part(x, 90)
-    assert_allclose(sync[:90], sync[90:180])
-    assert_allclose((x - sync).reshape(4, 90).mean(axis=0), 0.0, atol=1e-20)
-    assert t.asynchronous.dz_mean == pytest.approx(0.0, abs=1e-20)
-    with pytest.raises(InputError, match="whole revolutions"):
-        R.synchronous_part(x[:-1], 90)
-
-
-def test_spectrum_of_known_motion():
-    psi = 2 * np.pi * np.arange(20 * 64) / 64  # 20 revolutions: resolution 1/20 order
-    x = 0.5 * np.cos(psi) + 0.2 * np.cos(2 * psi)
-    y = 0.5 * np.sin(psi) - 0.2 * np.sin(2 * psi)  # forward at 1x, backward at 2x
-    z = 0.1 * np.cos(psi * 0.45)  # 0.45 = 9/20, on the grid
-    sp = R.runout_spectrum(x, y, z, 64)
-    assert sp.order[20] == 1.0
-    assert sp.radial_forward[20] == pytest.approx(0.5, abs=1e-12)
-    assert sp.radial_backward[40] == pytest.approx(0.2, abs=1e-12)
-    assert sp.radial_x[40] == pytest.approx(0.2, abs=1e-12)
-    assert sp.axial[9] == pytest.approx(0.1, abs=1e-12)
-    lines = R.spectrum_lines(sp, 0.45)
-    got = {(ln.component, ln.label, ln.source) for ln in lines}
-    assert got == {
-        ("radial forward", "1×", "ring"),
-        ("radial backward", "2×", "ring"),
-        ("axial", "κ", "cage"),
-    }
-
-
-def test_cage_override_changes_the_ball_motion(g):
-    e = R.manufacturing_errors(16, ball_diameter_deviation=np.r_[2.0, np.zeros(15)] * UM)
-    t = R.rotation_sequence(g, e, revolutions=1, steps_per_revolution=8, cage_ratio=0.5)
-    assert_allclose(t.displacement.ball_angle[:, 0], 0.5 * t.rotation_angle)
-    # ball 1 drives the ring away from itself: the centre sits opposite ball 1
-    ang = np.arctan2(t.displacement.y, t.displacement.x)
-    assert_allclose(np.cos(ang - (t.displacement.ball_angle[:, 0] + np.pi)), 1.0, atol=1e-9)
-
-
-# ------------------------------------------------------------------------------ exact geometry
-def test_exact_reduction_properties(g):
-    th = R.ball_angles(0.0, g)
-    assert np.max(np.abs(um(R.exact_reduction(th, 0.0, 0.0, 0.0, g)))) < 1e-9
-    # a lateral shift is seen as a cos(theta) pattern of period 2 pi: balls opposite see opposite signs
-    s = R.exact_reduction(np.array([0.0, np.pi]), 0.3 * UM, 0.0, 0.0, g)
-    assert s[0] > 0 > s[1]
-    with pytest.raises(ConvergenceError):
-        R.exact_reduction(th, 0.8 * UM, -0.5 * UM, 2 * UM, g, max_iter=1)
-
-
-# ------------------------------------------------------------------------------ Monte Carlo
-def test_tolerance_classes_have_sources():
-    grades, classes = R.tolerance_classes()
-    assert list(grades) == ["G3", "G5", "G10", "G16", "G20", "G24", "G28", "G40"]
-    assert all("ISO 3290" in v.source for v in grades.values())
-    assert all("ISO 492" in v.source and "assumed" in v.source for v in classes.values())
-    # V_DWS < V_DWL and both grow with the grade number
-    s = [v.single_diameter_variation for v in grades.values()]
-    lot = [v.lot_diameter_variation for v in grades.values()]
-    assert (
-        np.all(np.diff(s) > 0) and np.all(np.diff(lot) > 0) and all(a < b for a, b in zip(s, lot))
-    )
-    with pytest.raises(InputError, match=r"ball_grade must be one of \['G3'"):
-        R.ball_grade("G7")
-    with pytest.raises(InputError, match=r"ring_class must be one of \['P5'"):
-        R.ring_class("P0")
-
-
-def test_monte_carlo_is_reproducible_and_independent_of_chunking(g):
-    a = R.monte_carlo(g, "G5", "P4", 12, 99, steps_per_revolution=36, chunk_size=5)
-    b = R.monte_carlo(g, "G5", "P4", 12, 99, steps_per_revolution=36, chunk_size=12)
-    c = R.monte_carlo(
-        g, "G5", "P4", 12, np.random.SeedSequence(99), steps_per_revolution=36, chunk_size=7
-    )
-    for name in R.METRICS:
-        assert np.array_equal(getattr(a.samples, name), getattr(b.samples, name)), name
-        assert np.array_equal(getattr(a.samples, name), getattr(c.samples, name)), name
-    d = R.monte_carlo(g, "G5", "P4", 12, 100, steps_per_revolution=36)
-    assert not np.array_equal(a.samples.axial_ptp, d.samples.axial_ptp)
-    calls = []
-    R.monte_carlo(
-        g,
-        "G5",
-        "P4",
-        10,
-        1,
-        steps_per_revolution=12,
-        chunk_size=4,
-        progress=lambda k, n: calls.append((k, n)),
-    )
-    assert calls == [(4, 10), (8, 10), (10, 10)]
-
-
-def test_monte_carlo_sample_equals_the_public_path(g):
-    """A sample's metrics equal a rotation_sequence of the same errors built with the public API."""
-    from bearinglab.runout import _draw_count, _sampled_errors, _uniforms
-
-    res = R.monte_carlo_chunk(g, "G10", "P5", [3], 5, steps_per_revolution=60, revolutions=2)
-    u = _uniforms(5, [3], _draw_count(16, 15))
-    theta1, dd, ser = _sampled_errors(u, 16, R.ball_grade("G10"), R.ring_class("P5"), 15)
-    one = {k: R.FourierSeries(v.cos[0], v.sin[0]) for k, v in ser.items()}
-    e = R.manufacturing_errors(
-        16,
-        ball_diameter_deviation=dd[0],
-        inner=R.RacewayErrors(radial=one["inner"], axial=one["wobble"]),
-        outer=R.RacewayErrors(radial=one["outer"]),
-    )
-    t = R.rotation_sequence(
-        g._replace(first_ball_angle=theta1[0]), e, revolutions=2, steps_per_revolution=60
-    )
-    for name in R.METRICS:
-        assert getattr(res, name)[0] == pytest.approx(
-            getattr(t.metrics, name), rel=1e-12, abs=1e-20
-        ), name
-
-
-def test_monte_carlo_draws_follow_the_tolerance_classes():
-    """Ball deviations within (V_DWL + V_DWS)/2, order-1 amplitudes within K_ia/2 and S_ia/2, and the
-    waviness RMS close to w_rms on average."""
-    from bearinglab.runout import _draw_count, _sampled_errors, _uniforms
-
-    grade, rings = R.ball_grade("G10"), R.ring_class("P5")
-    u = _uniforms(11, np.arange(400), _draw_count(16, 15))
-    theta1, dd, ser = _sampled_errors(u, 16, grade, rings, 15)
-    assert np.all(
-        np.abs(dd) <= (grade.lot_diameter_variation + grade.single_diameter_variation) / 2
-    )
-    assert np.all((theta1 >= 0) & (theta1 < 2 * np.pi))
-    a1 = np.hypot(ser["inner"].cos[:, 1], ser["inner"].sin[:, 1])
-    assert np.all(a1 <= rings.radial_runout / 2) and a1.mean() == pytest.approx(
-        rings.radial_runout / 4, rel=0.1
-    )
-    s1 = np.hypot(ser["wobble"].cos[:, 1], ser["wobble"].sin[:, 1])
-    assert np.all(s1 <= rings.axial_runout / 2)
-    for key in ("inner", "outer"):
-        ms = 0.5 * (ser[key].cos[:, 2:] ** 2 + ser[key].sin[:, 2:] ** 2).sum(
-            axis=1
-        )  # mean square of orders 2..15
-        assert math.sqrt(ms.mean()) == pytest.approx(rings.waviness_rms, rel=0.05)
-    assert np.all(ser["outer"].cos[:, :2] == 0)  # outer order 1 only shifts the centre: not drawn
-
-
-def test_summarize_checks():
-    s = R.summarize(np.arange(101.0))
-    assert s.median == 50 and s.p95 == 95 and s.max == 100
-    with pytest.raises(InputError, match="at least 2 samples"):
-        R.summarize([1.0])
-
-
-# ------------------------------------------------------------------------------ error files
-def _write(tmp_path, text, name="e.toml"):
-    p = tmp_path / name
-    p.write_text(text, encoding="utf-8")
-    return p
-
-
-GEOM = """
-[geometry]
-balls = 16
-ball_diameter = "7.144 mm"
-pitch_diameter = "54 mm"
-outer_conformity = 0.53
-inner_conformity = 0.52
-contact_angle = "15 deg"
-"""
-
-
-def test_error_file_all_features(tmp_path, g):
-    (tmp_path / "prof.csv").write_text(
-        "# angle deg, deviation um\n"
-        + "\n".join(f"{a}, {0.2 * math.cos(math.radians(2 * a))}" for a in range(0, 360, 15)),
-        encoding="utf-8",
-    )
-    p = _write(
-        tmp_path,
-        GEOM
-        + """
-first_ball_angle = "10 deg"
-[errors.inner.radial]
-profile = "prof.csv"
-max_order = 4
-[errors.inner.axial]
-sin = { 1 = "0.3 um" }
-[errors.outer.groove]
-cos = { 0 = 50 }
-unit = "nm"
-[errors.outer.normal]
-angle = [0, 90, 180, 270]
-deviation = [0.1, 0, -0.1, 0]
-max_order = 1
-[errors.balls]
-outer_deficit = [0.1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
-inner_deficit = [0, 0.2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
-[tilt]
-alpha = 5
-beta = "-0.01 mrad"
-""",
-    )
-    geom, e = R.load_error_file(p)
-    assert geom.first_ball_angle == pytest.approx(math.radians(10))
-    assert_allclose(e.inner.radial.cos, [0, 0, 0.2e-6, 0, 0], atol=1e-18)
-    assert e.inner.axial.sin[1] == pytest.approx(0.3e-6)
-    assert e.outer.groove.cos[0] == pytest.approx(50e-9)
-    assert_allclose(e.outer.normal.cos, [0, 0.1e-6], atol=1e-18)
-    assert e.ball_outer_deficit[0] == pytest.approx(0.1e-6) and e.ball_inner_deficit[
-        1
-    ] == pytest.approx(0.2e-6)
-    assert e.tilt_x == pytest.approx(5e-6) and e.tilt_y == pytest.approx(-10e-6)
-    # a given geometry overrides the file's
-    g2, _ = R.load_error_file(p, g)
-    assert g2 is g
-
-
-@pytest.mark.parametrize(
-    "text, match",
-    [
-        ("[geometry]\nballs = 16\n", "ball_diameter"),
-        (
-            GEOM + "[errors.inner.radial]\ncos = { 1 = 0.5 }\nfoo = 1\n",
-            r"\[errors.inner.radial\], key 'foo': unknown key",
-        ),
-        (GEOM + "[errors.balls]\ndiameter = [0.1, 0.2]\n", "16 balls, got 2 values"),
-        (
-            GEOM + "[errors.inner.radial]\ncos = { 1 = 0.5 }\nprofile = 'x.csv'\nmax_order = 2\n",
-            "not both",
-        ),
-        (GEOM + "[errors.inner.radial]\nprofile = 'missing.csv'\nmax_order = 2\n", "no such file"),
-        (GEOM + "[errors.inner.radial]\nprofile = 'missing.csv'\n", "max_order"),
-        (GEOM + "[errors.inner.radial]\ncos = { 1 = '2 kg' }\n", "is a mass, expected a length"),
-        (GEOM + "[errors.inner.radial]\nsin = { 0 = 1 }\n", "sin has no order 0"),
-        (GEOM + "[errors.inner.wobble]\ncos = { 1 = 1 }\n", "unknown key"),
-        (GEOM + "[tilt]\nalpha = '3 mm'\n", "expected an angle"),
-        (GEOM + "[errors.balls]\ndiameter = [0.1]\nouter_deficit = [0.1]\n", "not both"),
-        (
-            GEOM.replace(
-                'pitch_diameter = "54 mm"',
-                'inner_bottom_radius = "23.4 mm"\npitch_diameter = "54 mm"',
-            ),
-            "exactly one",
-        ),
-        (GEOM.replace("0.53", "0.49"), "outer_conformity must be > 0.5"),
-        ("title = 'x'\n", "no \\[geometry\\] table"),
-        ("[geometry\n", "not valid TOML"),
-    ],
-)
-def test_error_file_problems_name_the_place(tmp_path, text, match):
-    p = _write(tmp_path, text)
-    with pytest.raises(CatalogError, match=match):
-        R.load_error_file(p)
-
-
-def test_error_file_is_not_modified(tmp_path):
-    p = _write(
-        tmp_path,
-        GEOM + "[errors.balls]\ndiameter = [2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]\n",
-    )
-    before = p.read_bytes(), p.stat().st_mtime_ns
-    R.load_error_file(p)
-    assert (p.read_bytes(), p.stat().st_mtime_ns) == before
-
-
-def test_missing_error_file():
-    with pytest.raises(CatalogError, match="no such file"):
-        R.load_error_file("/nonexistent/errors.toml")
-
-
 def test_benchmark_functions_agree_on_a_small_input(load_bench):
     """Smoke test of bench/runout.py (the benchmark itself is not run in the tests)."""
     bench = load_bench("runout")
@@ -804,27 +432,3 @@ def test_benchmark_functions_agree_on_a_small_input(load_bench):
     sol = bench.solve_batch(dk, theta)
     a0 = bench.solve_one_by_one(dk[:8], theta[:8])
     assert_allclose(um(sol.constant[:8]), um(a0), atol=1e-6)
-
-
-def test_monte_carlo_seed_checks(g):
-    for bad in (-1, 1.5, "7", True):
-        with pytest.raises(InputError, match="seed must be a whole number >= 0"):
-            R.monte_carlo(g, "G5", "P4", 4, bad, steps_per_revolution=12)
-    r = R.monte_carlo(g, "G5", "P4", 4, np.int64(5), steps_per_revolution=12)
-    assert r.seed == 5
-
-
-def test_shipped_measured_profile_example():
-    """The profile example: catalog geometry, a CSV roundness profile, inline samples, contact deficits and a
-    tilt varying with rotation."""
-    from pathlib import Path
-
-    path = Path(__file__).parent.parent / "examples" / "runout" / "measured_profile.toml"
-    geom, e = R.load_error_file(path)
-    assert geom.n_balls == 16 and geom.contact_angle == pytest.approx(math.radians(40))
-    assert geom.first_ball_angle == pytest.approx(math.radians(5))
-    assert e.inner.radial.cos.size == 9 and e.outer.radial.cos.size == 4
-    assert isinstance(e.tilt_x, R.FourierSeries) and isinstance(e.tilt_y, R.FourierSeries)
-    t = R.rotation_sequence(geom, e, revolutions=2, steps_per_revolution=90, refine=True)
-    assert np.all(t.displacement.converged)
-    assert 0 < t.metrics.radial_ptp_max < 5 * UM
