@@ -544,32 +544,17 @@ def _indicators(task1, task2, task3, c, mean_f0):
 
 
 # ----------------------------------------------------------------------------- moved names
-_PRESENTATION = frozenset(
-    {
-        "RESULTS_FORMAT",
-        "WORDING_THRESHOLD",
-        "PlotData",
-        "PlotSeries",
-        "TableData",
-        "conclusions",
-        "plots",
-        "rows_table",
-        "table4",
-        "table5",
-        "to_dict",
-    }
-)
-
-
 def __getattr__(name):
-    # the presentation names lived here before issue 10; they stay reachable (no warning: they are
-    # the same objects, only their home moved to .presentation, which imports this module)
-    if name in _PRESENTATION:
-        from . import presentation
+    # The names of .presentation lived here before issue 10 and stay reachable (the same objects, no
+    # warning). Imported on first use: .presentation imports this module.
+    from . import presentation
 
+    if name in presentation.__all__:
         return getattr(presentation, name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def __dir__():
-    return sorted(set(globals()) | _PRESENTATION)
+    from . import presentation
+
+    return sorted(set(globals()) | set(presentation.__all__))

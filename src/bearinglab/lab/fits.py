@@ -367,23 +367,7 @@ def reduced_friction_coefficient(torque, equivalent_load, bore, *, groups=None):
 
 # ----------------------------------------------------------------------------- deprecated names
 def friction_coefficient(torque, equivalent_load, bore, *, groups=None):
-    """Deprecated name of :func:`reduced_friction_coefficient` (warns with DeprecationWarning).
-
-    Parameters
-    ----------
-    torque : array_like
-        Measured friction torque T_i. [N*m]
-    equivalent_load : array_like
-        Static equivalent load P0_i of each point. [N]
-    bore : array_like
-        Bore diameter d of the test bearing. [m]
-    groups : array_like, optional
-        Group label of every point. [-]
-
-    Returns
-    -------
-    ReducedFrictionCoefficientFit
-    """
+    """Deprecated name of :func:`reduced_friction_coefficient` (warns with DeprecationWarning)."""
     warn_renamed("bearinglab.lab.fits.friction_coefficient", "reduced_friction_coefficient")
     return reduced_friction_coefficient(torque, equivalent_load, bore, groups=groups)
 

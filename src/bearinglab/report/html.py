@@ -261,7 +261,11 @@ def _pm(value, error, fmt):
 
 def _coefficient_tables(d):
     """Section 3: one table per task (only for tasks that were run) and a note on the statistics."""
-    parts = [_task1_table(d["task1"]), _task2_table(d["task2"]), _task3_table(d["task3"])]
+    parts = [
+        _records_table(_TASK1_TITLE, d["task1"], _TASK1_COLUMNS),
+        _records_table(_TASK2_TITLE, d["task2"], _TASK2_COLUMNS),
+        _records_table(_TASK3_TITLE, d["task3"], _TASK3_COLUMNS),
+    ]
     parts.append(
         "<p>Standard errors from the least-squares covariance with m − p degrees of freedom (p = 1 for "
         "task 1, 2 for tasks 2 and 3); “n/a” where m = p. The intercepts T_F (n → 0) and T0 (P0 → 0) are "
@@ -270,110 +274,72 @@ def _coefficient_tables(d):
     return "".join(parts)
 
 
-def _task1_table(records):
+def _records_table(title, records, columns):
+    """A table of result records (dicts of :func:`~bearinglab.lab.presentation.to_dict`), one row each;
+    ``columns`` are (header, display format, cell of a record); no records, no table."""
     if not records:
         return ""
-    rows = [
-        [
-            r["tilt_deg"],
-            r["column"],
-            r["speed_rpm"],
-            _pm(r["mu"], r["mu_standard_error"], ".6e"),
-            r["n_points"],
-            r["residual_rms_Nmm"],
-            r["mean_torque_Nmm"],
-            r["mu_handbook"],
-            r["mu_relative_to_handbook"] * 100,
-            r["residual_rms_relative_to_mean_torque"] * 100,
-        ]
-        for r in records
-    ]
-    return _html_table(
-        "Task 1: reduced friction coefficient μ (least squares through the origin, eq. 6.1)",
-        [
-            "β [deg]",
-            "column",
-            "n [rpm]",
-            "μ ± s.e.",
-            "m",
-            "residual RMS [N·mm]",
-            "mean T [N·mm]",
-            "μ_hb",
-            "μ/μ_hb − 1 [%] (I2)",
-            "RMS/mean T [%] (I3)",
-        ],
-        rows,
-        ["g", "", ".6g", "", "d", ".4e", ".6f", "g", "+.2f", ".2f"],
-    )
+    rows = [[cell(r) for _h, _f, cell in columns] for r in records]
+    return _html_table(title, [h for h, _f, _c in columns], rows, [f for _h, f, _c in columns])
 
 
-def _task2_table(records):
-    if not records:
-        return ""
-    rows = [
-        [
-            r["tilt_deg"],
-            r["mass_kg"],
-            r["equivalent_static_load_N"],
-            _pm(r["f0"], r["f0_standard_error"], ".6e"),
-            _pm(r["torque_load_term_Nmm"], r["torque_load_term_standard_error_Nmm"], ".6e"),
-            r["n_points"],
-            r["residual_rms_Nmm"],
-            r["handbook_torque_load_term_Nmm"],
-            r["torque_load_term_with_task3_f_Nmm"],
-        ]
-        for r in records
-    ]
-    return _html_table(
-        "Task 2: speed dependence T = f0·d_m³·n^(2/3) + T_F (eq. 6.2); f0 in N·mm⁻²·min^(2/3)",
-        [
-            "β [deg]",
-            "Q [kg]",
-            "P0 [N]",
-            "f0 ± s.e.",
-            "T_F ± s.e. [N·mm]",
-            "m",
-            "residual RMS [N·mm]",
-            "handbook T_F [N·mm]",
-            "T_F with f of task 3 [N·mm]",
-        ],
-        rows,
-        ["g", "g", ".6f", "", "", "d", ".4e", ".6e", ".6e"],
-    )
+def _field(key, scale=None):
+    return (lambda r: r[key]) if scale is None else (lambda r: r[key] * scale)
 
 
-def _task3_table(records):
-    if not records:
-        return ""
-    rows = [
-        [
-            r["tilt_deg"],
-            r["column"],
-            r["speed_rpm"],
-            _pm(r["f"], r["f_standard_error"], ".6e"),
-            _pm(r["torque_speed_term_Nmm"], r["torque_speed_term_standard_error_Nmm"], ".6e"),
-            r["n_points"],
-            r["residual_rms_Nmm"],
-            r["f_handbook"],
-            r["f_relative_to_handbook"] * 100,
-            r["torque_speed_term_with_task2_f0_Nmm"],
-        ]
-        for r in records
-    ]
-    return _html_table(
-        "Task 3: load dependence T = T0 + f·P0·(P0/C0)^e·d_m (eqs. 6.2-6.3)",
-        [
-            "β [deg]",
-            "column",
-            "n [rpm]",
-            "f ± s.e.",
-            "T0 ± s.e. [N·mm]",
-            "m",
-            "residual RMS [N·mm]",
-            "f_hb",
-            "f/f_hb − 1 [%]",
-            "f0·d_m³·n^(2/3), mean f0 of task 2 [N·mm]",
-        ],
-        rows,
-        ["g", "", ".6g", "", "", "d", ".4e", "g", "+.2f", ".6e"],
-    )
+def _with_error(key, error_key):
+    return lambda r: _pm(r[key], r[error_key], ".6e")
+
+
+_TASK1_TITLE = "Task 1: reduced friction coefficient μ (least squares through the origin, eq. 6.1)"
+_TASK1_COLUMNS = (
+    ("β [deg]", "g", _field("tilt_deg")),
+    ("column", "", _field("column")),
+    ("n [rpm]", ".6g", _field("speed_rpm")),
+    ("μ ± s.e.", "", _with_error("mu", "mu_standard_error")),
+    ("m", "d", _field("n_points")),
+    ("residual RMS [N·mm]", ".4e", _field("residual_rms_Nmm")),
+    ("mean T [N·mm]", ".6f", _field("mean_torque_Nmm")),
+    ("μ_hb", "g", _field("mu_handbook")),
+    ("μ/μ_hb − 1 [%] (I2)", "+.2f", _field("mu_relative_to_handbook", 100)),
+    ("RMS/mean T [%] (I3)", ".2f", _field("residual_rms_relative_to_mean_torque", 100)),
+)
+_TASK2_TITLE = (
+    "Task 2: speed dependence T = f0·d_m³·n^(2/3) + T_F (eq. 6.2); f0 in N·mm⁻²·min^(2/3)"
+)
+_TASK2_COLUMNS = (
+    ("β [deg]", "g", _field("tilt_deg")),
+    ("Q [kg]", "g", _field("mass_kg")),
+    ("P0 [N]", ".6f", _field("equivalent_static_load_N")),
+    ("f0 ± s.e.", "", _with_error("f0", "f0_standard_error")),
+    (
+        "T_F ± s.e. [N·mm]",
+        "",
+        _with_error("torque_load_term_Nmm", "torque_load_term_standard_error_Nmm"),
+    ),
+    ("m", "d", _field("n_points")),
+    ("residual RMS [N·mm]", ".4e", _field("residual_rms_Nmm")),
+    ("handbook T_F [N·mm]", ".6e", _field("handbook_torque_load_term_Nmm")),
+    ("T_F with f of task 3 [N·mm]", ".6e", _field("torque_load_term_with_task3_f_Nmm")),
+)
+_TASK3_TITLE = "Task 3: load dependence T = T0 + f·P0·(P0/C0)^e·d_m (eqs. 6.2-6.3)"
+_TASK3_COLUMNS = (
+    ("β [deg]", "g", _field("tilt_deg")),
+    ("column", "", _field("column")),
+    ("n [rpm]", ".6g", _field("speed_rpm")),
+    ("f ± s.e.", "", _with_error("f", "f_standard_error")),
+    (
+        "T0 ± s.e. [N·mm]",
+        "",
+        _with_error("torque_speed_term_Nmm", "torque_speed_term_standard_error_Nmm"),
+    ),
+    ("m", "d", _field("n_points")),
+    ("residual RMS [N·mm]", ".4e", _field("residual_rms_Nmm")),
+    ("f_hb", "g", _field("f_handbook")),
+    ("f/f_hb − 1 [%]", "+.2f", _field("f_relative_to_handbook", 100)),
+    (
+        "f0·d_m³·n^(2/3), mean f0 of task 2 [N·mm]",
+        ".6e",
+        _field("torque_speed_term_with_task2_f0_Nmm"),
+    ),
+)
