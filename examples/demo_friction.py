@@ -128,7 +128,7 @@ def main(argv):
             f"{name} ({result.session.bearing.designation}): "
             + ", ".join(
                 f"mu({n / RPM:.6g} rpm) = {mu:.6e}"
-                for n, mu in zip(t1.shaft_speed, t1.friction_coefficient)
+                for n, mu in zip(t1.shaft_speed, t1.reduced_friction_coefficient)
             )
         )
         print(

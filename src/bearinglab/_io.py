@@ -3,6 +3,11 @@
 Every writer of the library (CSV tables, figures, measurement templates) goes through
 :func:`atomic_output`: the data go to a temporary file in the target's directory, which replaces the
 target in one ``os.replace`` only once it is complete. A failure leaves the old file, if any, as it was.
+
+atomic_output     a temporary path that becomes the target on success
+write_text        text to a file, whole or not at all
+csv_text          the library's one CSV dialect: ``#`` comments, header, rows, LF line endings
+json_text         the library's one JSON dialect: indent 2, UTF-8 text, NaN/inf -> null, numpy -> Python
 """
 
 from __future__ import annotations
@@ -10,11 +15,15 @@ from __future__ import annotations
 import contextlib
 import csv
 import io
+import json
+import math
 import os
 import tempfile
 from pathlib import Path
 
-__all__ = ["atomic_output", "csv_text", "write_text"]
+import numpy as np
+
+__all__ = ["atomic_output", "csv_text", "json_text", "write_text"]
 
 
 @contextlib.contextmanager
@@ -52,3 +61,29 @@ def csv_text(header, rows, comments=()):
     w.writerow(header)
     w.writerows(rows)
     return buf.getvalue()
+
+
+def json_text(obj):
+    """JSON text of ``obj`` (indent 2, non-ASCII kept, one final newline).
+
+    NaN and infinities become null (JSON has no such numbers); numpy scalars and arrays become Python
+    numbers and lists, tuples become lists and dict keys strings.
+    """
+    return json.dumps(_jsonable(obj), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+
+
+def _jsonable(obj):
+    if isinstance(obj, dict):
+        return {str(k): _jsonable(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_jsonable(v) for v in obj]
+    if isinstance(obj, np.ndarray):
+        return _jsonable(obj.tolist())
+    if isinstance(obj, (bool, np.bool_)):
+        return bool(obj)
+    if isinstance(obj, np.integer):
+        return int(obj)
+    if isinstance(obj, (float, np.floating)):
+        v = float(obj)
+        return v if math.isfinite(v) else None
+    return obj

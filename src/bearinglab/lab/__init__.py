@@ -5,13 +5,25 @@ Submodules
 rig           loads from the hung mass and the tilt, P0 and its branch, tare mass
 calibration   speed and torque calibration tables, piecewise-linear conversion without extrapolation
 fits          the three least-squares tasks: mu (task 1), f0 and T_F (task 2), f and T0 (task 3)
-measurement   the measurement-session file: reading, validation, and the blank template
-analysis      one session -> per-row values, Tables 4 and 5, fits, cross-checks, indicators, conclusions
+measurement   the measurement-session file: reading and validation (file, line and field in every error)
+template      the blank, commented session file and its safe writer
+analysis      one session -> per-row values, the three tasks, cross-checks and indicators I1-I7 (SI)
+presentation  a result in engineering units: Tables 4 and 5, plot data, conclusions, the results dict
 
-This package sits at the boundary (it reads files with units), so it may import pint through
-:mod:`bearinglab.units`; the physics it uses is in :mod:`bearinglab.friction`.
+The report (HTML, figures, CSV, JSON) is written by :mod:`bearinglab.report`, the figures drawn by
+:mod:`bearinglab.plots.friction`. This package sits at the boundary (it reads files with units), so
+it may import pint through :mod:`bearinglab.units`; the physics it uses is in
+:mod:`bearinglab.friction`.
 """
 
-from . import analysis, calibration, fits, measurement, rig
+from . import analysis, calibration, fits, measurement, presentation, rig, template
 
-__all__ = ["analysis", "calibration", "fits", "measurement", "rig"]
+__all__ = [
+    "analysis",
+    "calibration",
+    "fits",
+    "measurement",
+    "presentation",
+    "rig",
+    "template",
+]

@@ -7,9 +7,13 @@ straight_line             y = a + b x, with standard errors and residual RMS
 
 Tasks
 -----
-friction_coefficient      task 1: mu of T = mu P0 d / 2 through the origin, eq. (6.1)
-speed_dependence          task 2: f0 and T_F of T = f0 d_m^3 n^(2/3) + T_F, eq. (6.2)
-load_dependence           task 3: f and T0 of T = T0 + f P0 (P0/C0)^e d_m, eqs. (6.2)-(6.3)
+reduced_friction_coefficient  task 1: mu of T = mu P0 d / 2 through the origin, eq. (6.1)
+speed_dependence              task 2: f0 and T_F of T = f0 d_m^3 n^(2/3) + T_F, eq. (6.2)
+load_dependence               task 3: f and T0 of T = T0 + f P0 (P0/C0)^e d_m, eqs. (6.2)-(6.3)
+
+Deprecated names (they warn; removed after one release): ``friction_coefficient`` (now
+:func:`reduced_friction_coefficient`), ``FrictionCoefficientFit`` (now
+:class:`ReducedFrictionCoefficientFit`) and its field ``friction_coefficient``.
 
 Every function takes an optional ``groups`` array that labels the points; one fit is made per
 distinct label (outputs ordered like ``numpy.unique(groups)``), all groups at once with
@@ -36,15 +40,16 @@ import numpy as np
 
 from .._validate import check_finite, check_nonnegative, check_positive
 from ..errors import InputError
+from ._compat import renamed_field, warn_renamed
 
 __all__ = [
-    "FrictionCoefficientFit",
     "LineFit",
     "LoadDependenceFit",
+    "ReducedFrictionCoefficientFit",
     "SpeedDependenceFit",
     "ThroughOriginFit",
-    "friction_coefficient",
     "load_dependence",
+    "reduced_friction_coefficient",
     "speed_dependence",
     "straight_line",
     "through_origin",
@@ -87,10 +92,10 @@ class LineFit(NamedTuple):
     """y - a - b x at every point (input order)."""
 
 
-class FrictionCoefficientFit(NamedTuple):
-    """Task 1: reduced friction coefficient of the one-term model, per group."""
+class ReducedFrictionCoefficientFit(NamedTuple):
+    """Task 1: reduced friction coefficient of the one-term model (referred to the bore), per group."""
 
-    friction_coefficient: float | np.ndarray
+    reduced_friction_coefficient: float | np.ndarray
     """mu of (6.1). [-]"""
     standard_error: float | np.ndarray
     """Standard error of mu; NaN for a single point. [-]"""
@@ -100,6 +105,10 @@ class FrictionCoefficientFit(NamedTuple):
     """Number of points m. [-]"""
     residuals: np.ndarray
     """T_i - mu P0_i d/2 at every point (input order). [N*m]"""
+
+    friction_coefficient = renamed_field(
+        "ReducedFrictionCoefficientFit", "friction_coefficient", "reduced_friction_coefficient"
+    )
 
 
 class SpeedDependenceFit(NamedTuple):
@@ -309,7 +318,7 @@ def straight_line(x, y, *, groups=None):
 
 
 # ----------------------------------------------------------------------------- the three tasks
-def friction_coefficient(torque, equivalent_load, bore, *, groups=None):
+def reduced_friction_coefficient(torque, equivalent_load, bore, *, groups=None):
     """Task 1: reduced friction coefficient mu by least squares through the origin, eq. (6.1).
 
     Parameters
@@ -325,7 +334,7 @@ def friction_coefficient(torque, equivalent_load, bore, *, groups=None):
 
     Returns
     -------
-    FrictionCoefficientFit
+    ReducedFrictionCoefficientFit
         mu, its standard error, the residual RMS [N*m], the count and the residuals.
 
     Raises
@@ -343,7 +352,8 @@ def friction_coefficient(torque, equivalent_load, bore, *, groups=None):
     Spec 001 section 10.1, n = 1500 rpm (T in N*m):
 
     >>> t = np.array([0.025055204, 0.036527822, 0.070121614]) * 1e-3
-    >>> print(f"{friction_coefficient(t, [4.905, 9.81, 19.62], 5e-3).friction_coefficient:.6e}")
+    >>> fit = reduced_friction_coefficient(t, [4.905, 9.81, 19.62], 5e-3)
+    >>> print(f"{fit.reduced_friction_coefficient:.6e}")
     1.470209e-03
     """
     d = check_positive("bore", bore, "m")
@@ -352,7 +362,21 @@ def friction_coefficient(torque, equivalent_load, bore, *, groups=None):
     mu, _a, se, _sa, rms, m, r = _stats(
         x, y, index, n, labels, intercept=False, what="task 1", x_name="equivalent_load"
     )  # (6.1) with abscissa P0 d/2
-    return _pack(FrictionCoefficientFit, labels, mu, se, rms, m, residuals=r)
+    return _pack(ReducedFrictionCoefficientFit, labels, mu, se, rms, m, residuals=r)
+
+
+# ----------------------------------------------------------------------------- deprecated names
+def friction_coefficient(torque, equivalent_load, bore, *, groups=None):
+    """Deprecated name of :func:`reduced_friction_coefficient` (warns with DeprecationWarning)."""
+    warn_renamed("bearinglab.lab.fits.friction_coefficient", "reduced_friction_coefficient")
+    return reduced_friction_coefficient(torque, equivalent_load, bore, groups=groups)
+
+
+def __getattr__(name):
+    if name == "FrictionCoefficientFit":
+        warn_renamed("bearinglab.lab.fits.FrictionCoefficientFit", "ReducedFrictionCoefficientFit")
+        return ReducedFrictionCoefficientFit
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def speed_dependence(torque, shaft_speed, mean_diameter, *, groups=None):
