@@ -1,4 +1,9 @@
-"""Command line of the characteristic frequencies: ``frequencies`` (with the spectral mask)."""
+"""Command line of the characteristic frequencies: ``frequencies`` (with the spectral mask).
+
+Functions
+---------
+register   add the ``frequencies`` command to the application
+"""
 
 from __future__ import annotations
 
@@ -9,9 +14,10 @@ from typing import Annotated
 
 import typer
 
-from . import kinematics, static
-from ._cli_highspeed import write_csv
-from .cli import (
+from .. import kinematics, static
+from ..errors import InputError
+from ..units import KGF, format_dms, parse_quantity
+from ._common import (
     BallDiameter,
     BallMaterial,
     Balls,
@@ -27,12 +33,11 @@ from .cli import (
     OuterRadius,
     PitchDiameter,
     console,
+    emit_csv,
     emit_json,
     resolve_bearing,
     table,
 )
-from .errors import InputError
-from .units import KGF, format_dms, parse_quantity
 
 __all__ = ["register"]
 
@@ -140,6 +145,32 @@ def frequencies(
         radial_clearance,
         ball_material,
     )
+    w_in, w_out, fa, band_fraction = _read(speed, outer_speed, axial_load, hertz, harmonics, sidebands, band)
+    out, angle = _frequencies(b, w_in, w_out, fa, hertz)
+    mask_rows = []
+    if mask or csv_file is not None:
+        mask_rows = _mask(b, w_in, w_out, angle, harmonics, sidebands, band_fraction)
+        if csv_file is not None:  # None (no order at zero shaft speed) is written as an empty cell
+            emit_csv(csv_file, {c: [r[c] for r in mask_rows] for c in mask_rows[0]})
+    if mask:
+        out["mask"] = {
+            "harmonics": harmonics,
+            "sidebands": sidebands,
+            "band_percent": band_fraction * 100.0,
+            "lines": mask_rows,
+        }
+    if json_out:
+        emit_json(out)
+        return
+    _print(b, out, mask_rows if mask else None)
+    if csv_file is not None:
+        console.print(
+            f"spectral mask ({len(mask_rows)} lines) written to {csv_file}", highlight=False
+        )
+
+
+def _read(speed, outer_speed, axial_load, hertz, harmonics, sidebands, band):
+    """The options in SI, checked: ring speeds, axial load (or None), band as a fraction."""
     if hertz not in ("exact", "table"):
         raise InputError(f"hertz must be one of ['exact', 'table'], got {hertz!r}")
     w_in = parse_quantity(speed, "speed", "speed")
@@ -154,6 +185,15 @@ def frequencies(
         raise InputError(f"harmonics must be an integer >= 1 [-], got {harmonics}")
     if sidebands < 0:
         raise InputError(f"sidebands must be an integer >= 0 [-], got {sidebands}")
+    fa = None
+    if axial_load is not None:
+        fa = parse_quantity(axial_load, "force", "axial-load")
+    return w_in, w_out, fa, band_fraction
+
+
+def _frequencies(b, w_in, w_out, fa, hertz):
+    """Frequencies at the nominal angle, or at the operating angle under ``fa`` with the shift; and
+    the angle [rad] they are at."""
     z, d, dm, a0 = b.require("n_balls", "ball_diameter", "pitch_diameter", "contact_angle")
     out = {
         "bearing": b.designation,
@@ -161,8 +201,7 @@ def frequencies(
         "outer_speed_rpm": w_out / _HZ * 60.0,
     }
     shaft_hz = w_in / _HZ
-    if axial_load is not None:
-        fa = parse_quantity(axial_load, "force", "axial-load")
+    if fa is not None:
         if not fa > 0:
             raise InputError(f"axial-load must be > 0 [N], got {fa!r} N")
         angle = float(static.stand_analysis(b, fa, hertz=hertz).contact_angle)
@@ -185,64 +224,56 @@ def frequencies(
     out["shift_percent"] = {
         n: float(getattr(shift.shift_percent, n)) for n in kinematics.FAMILIES[1:]
     }
-    mask_rows = []
-    if mask or csv_file is not None:
-        m = kinematics.spectral_mask(
-            w_in,
-            d,
-            dm,
-            z,
-            angle,
-            outer_speed=w_out,
-            harmonics=harmonics,
-            sidebands=sidebands,
-            band=band_fraction,
-        )
-        for name, h, mod, k, f, lo, hi in zip(
-            m.name,
-            m.harmonic,
-            m.modulation,
-            m.sideband,
-            m.frequency / _HZ,
-            m.low / _HZ,
-            m.high / _HZ,
-        ):
-            mask_rows.append(
-                {
-                    "name": str(name),
-                    "harmonic": int(h),
-                    "modulation": str(mod),
-                    "sideband": int(k),
-                    "frequency_hz": float(f),
-                    "low_hz": float(lo),
-                    "high_hz": float(hi),
-                    "order": float(f) / abs(shaft_hz) if shaft_hz else None,
-                }
-            )
-        if csv_file is not None:  # None (no order at zero shaft speed) is written as an empty cell
-            write_csv(csv_file, {c: [r[c] for r in mask_rows] for c in mask_rows[0]})
-    if mask:
-        out["mask"] = {
-            "harmonics": harmonics,
-            "sidebands": sidebands,
-            "band_percent": band_fraction * 100.0,
-            "lines": mask_rows,
+    return out, angle
+
+
+def _mask(b, w_in, w_out, angle, harmonics, sidebands, band_fraction):
+    """The lines of the spectral mask at the angle of the frequencies (Hz and orders)."""
+    z, d, dm = b.require("n_balls", "ball_diameter", "pitch_diameter")
+    shaft_hz = w_in / _HZ
+    m = kinematics.spectral_mask(
+        w_in,
+        d,
+        dm,
+        z,
+        angle,
+        outer_speed=w_out,
+        harmonics=harmonics,
+        sidebands=sidebands,
+        band=band_fraction,
+    )
+    return [
+        {
+            "name": str(name),
+            "harmonic": int(h),
+            "modulation": str(mod),
+            "sideband": int(k),
+            "frequency_hz": float(f),
+            "low_hz": float(lo),
+            "high_hz": float(hi),
+            "order": float(f) / abs(shaft_hz) if shaft_hz else None,
         }
-    if json_out:
-        emit_json(out)
-        return
-    loaded = axial_load is not None
+        for name, h, mod, k, f, lo, hi in zip(
+            m.name, m.harmonic, m.modulation, m.sideband, m.frequency / _HZ, m.low / _HZ, m.high / _HZ
+        )
+    ]
+
+
+def _print(b, out, mask_rows):
+    """The frequencies (and the shift under load) as tables; the mask too if ``mask_rows`` is given."""
+    loaded = "axial_load_N" in out
+    shaft_hz, outer_hz = out["shaft_hz"], out["outer_hz"]
     speeds = f"shaft {out['speed_rpm']:g} rpm = {shaft_hz:.6g} Hz"
-    if w_out:
-        speeds += f", outer ring {out['outer_speed_rpm']:g} rpm = {w_out / _HZ:.6g} Hz"
+    if outer_hz:
+        speeds += f", outer ring {out['outer_speed_rpm']:g} rpm = {outer_hz:.6g} Hz"
     console.print(
-        f"Bearing {b.designation}: {speeds}; nominal contact angle {math.degrees(a0):.4f}°",
+        f"Bearing {b.designation}: {speeds}; nominal contact angle {out['nominal_contact_angle_deg']:.4f}°",
         highlight=False,
     )
     if loaded:
         console.print(
-            f"operating contact angle at {out['axial_load_kgf']:.4g} kgf ({fa:.4g} N): "
-            f"{math.degrees(angle):.4f}° = {format_dms(angle)} ({hertz} Hertz)",
+            f"operating contact angle at {out['axial_load_kgf']:.4g} kgf ({out['axial_load_N']:.4g} N): "
+            f"{out['contact_angle_deg']:.4f}° = {out['contact_angle_dms']} ({out['hertz']} Hertz)",
             highlight=False,
         )
     columns = ["frequency", "nominal [Hz]" if loaded else "f [Hz]", "order"]
@@ -261,9 +292,10 @@ def frequencies(
             ]
         rows.append(row)
     table("Characteristic frequencies", columns, rows)
-    if mask:
+    if mask_rows is not None:
+        m = out["mask"]
         table(
-            f"Spectral mask: harmonics 1..{harmonics}, sidebands ±1..{sidebands}, band {band_fraction * 100:g} %",
+            f"Spectral mask: harmonics 1..{m['harmonics']}, sidebands ±1..{m['sidebands']}, band {m['band_percent']:g} %",
             ["line", "h", "sideband", "f [Hz]", "low [Hz]", "high [Hz]", "order"],
             [
                 [
@@ -278,10 +310,6 @@ def frequencies(
                 for r in mask_rows
             ],
         )
-    if csv_file is not None:
-        console.print(
-            f"spectral mask ({len(mask_rows)} lines) written to {csv_file}", highlight=False
-        )
 
 
 def _order(x):
@@ -295,4 +323,11 @@ def _sideband(row):
 
 
 def register(app):
+    """Add the ``frequencies`` command to the application.
+
+    Parameters
+    ----------
+    app : typer.Typer
+        The ``bearinglab`` application.
+    """
     app.command("frequencies")(frequencies)
