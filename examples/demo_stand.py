@@ -13,14 +13,13 @@ from pathlib import Path
 
 import numpy as np
 
-from bearinglab import catalog, kinematics, static
-from bearinglab.sweep import write_table
+from bearinglab import catalog, kinematics, static, tables
 from bearinglab.units import KGF, RPM, format_dms
 
 
 def write_csv(path, header, rows):
-    """Write a CSV whole or not at all (rows -> columns for :func:`bearinglab.sweep.write_table`)."""
-    write_table(dict(zip(header, zip(*rows))), path)
+    """Write a CSV whole or not at all (rows -> columns for :func:`bearinglab.tables.write_table`)."""
+    tables.write_table(dict(zip(header, zip(*rows))), path)
 
 
 def main(out):

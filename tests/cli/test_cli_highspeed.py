@@ -172,7 +172,8 @@ def test_long_sweep_shows_a_progress_bar_on_stderr(capsys, monkeypatch):
     """A terminal gets a progress bar on stderr during long sweeps; stdout stays one JSON array."""
     from rich.console import Console
 
-    from bearinglab import _cli_highspeed, cli
+    from bearinglab.cli import _common
+    from bearinglab.cli import high_speed as command
 
     seen = []
 
@@ -180,9 +181,9 @@ def test_long_sweep_shows_a_progress_bar_on_stderr(capsys, monkeypatch):
         def __init__(self):
             super().__init__(stderr=True, force_terminal=True, width=80)
 
-    monkeypatch.setattr(_cli_highspeed, "_PROGRESS_MIN_CASES", 4)
-    monkeypatch.setattr(_cli_highspeed, "_CHUNK", 3)
-    monkeypatch.setattr(cli, "_stderr_console", Terminal)
+    monkeypatch.setattr(command, "_PROGRESS_MIN_CASES", 4)
+    monkeypatch.setattr(command, "_CHUNK", 3)
+    monkeypatch.setattr(_common, "_stderr_console", Terminal)
     real = quasistatic.sweep
 
     def spy(*args, progress=None, **kw):
