@@ -318,7 +318,7 @@ def stand_load(shaft_speed, result):
     ----------
     shaft_speed : array_like
         Inner-ring speeds. [rad/s]
-    result : AxialLoadRange
+    result : StandLoad
         A result of :func:`bearinglab.static.min_axial_load` at those speeds.
 
     Returns

@@ -23,8 +23,8 @@ import numpy as np
 import typer
 
 from .. import plots, quasistatic, tables
-from ..plots import high_speed as high_speed_plots
 from ..errors import InputError, ValidityWarning
+from ..plots import high_speed as high_speed_plots
 from ..units import RPM, parse_quantity, parse_values
 from ._common import (
     BallDiameter,
