@@ -12,8 +12,9 @@ high-speed                     high-speed quasi-static model under thrust (spec 
 friction torque | lab | template   friction torque models and the friction-rig lab   cli/friction.py
 runout | runout monte-carlo    manufacturing errors -> inner-ring runout (spec 003)   cli/runout.py
 
-The options every command shares (bearing, execution, JSON) and the output helpers are in
-``cli/_common.py``. Importing this package builds the whole application: :data:`app` lists every
+Each command module defines ``COMMANDS`` (command name -> function, or a Typer group); the options
+every command shares (bearing, execution, JSON) and the output helpers are in ``cli/_common.py``, so
+no command module imports this package. Importing this package builds the whole application: :data:`app` lists every
 command, for the console script, ``python -m bearinglab``, test runners and documentation tools alike.
 
 Errors in the input print one line on stderr and exit with code 2; a solver that does not converge
@@ -67,7 +68,11 @@ def _main_options(
 
 
 for _module in (catalog, stand, frequencies, sweep, high_speed, friction, runout):
-    _module.register(app)
+    for _name, _command in _module.COMMANDS.items():
+        if isinstance(_command, typer.Typer):
+            app.add_typer(_command, name=_name)
+        else:
+            app.command(_name)(_command)
 
 
 def main(argv=None) -> int:

@@ -1,8 +1,8 @@
 """Command line of the catalogs: ``catalog list`` and ``catalog show NAME``.
 
-Functions
----------
-register   add the ``catalog`` command group to the application
+Commands
+--------
+COMMANDS   the ``catalog`` command group, by name (the application adds it)
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ from .. import catalog as _catalog
 from .. import tables
 from ._common import CatalogFile, JsonFlag, emit_json, table
 
-__all__ = ["register"]
+__all__ = ["COMMANDS"]
 
 catalog_app = typer.Typer(help="Bearings in the built-in and user catalogs.", no_args_is_help=True)
 
@@ -49,12 +49,5 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name or alias
           [[k, _fmt(v, ".6g") if isinstance(v, float) else v] for k, v in info.items() if v is not None])
 
 
-def register(app):
-    """Add the ``catalog`` command group to the application.
-
-    Parameters
-    ----------
-    app : typer.Typer
-        The ``bearinglab`` application.
-    """
-    app.add_typer(catalog_app, name="catalog")
+#: The ``catalog`` command group, as the application adds it.
+COMMANDS = {"catalog": catalog_app}

@@ -1,8 +1,8 @@
 """Command line of the characteristic frequencies: ``frequencies`` (with the spectral mask).
 
-Functions
----------
-register   add the ``frequencies`` command to the application
+Commands
+--------
+COMMANDS   the ``frequencies`` command, by name (the application adds it)
 """
 
 from __future__ import annotations
@@ -39,7 +39,7 @@ from ._common import (
     table,
 )
 
-__all__ = ["register"]
+__all__ = ["COMMANDS"]
 
 _HZ = 2.0 * math.pi  # rad/s per Hz (rev/s)
 _LABELS = {
@@ -322,12 +322,5 @@ def _sideband(row):
     return f"{row['sideband']:+d}×{_LABELS[row['modulation']].split(' ')[0]}"
 
 
-def register(app):
-    """Add the ``frequencies`` command to the application.
-
-    Parameters
-    ----------
-    app : typer.Typer
-        The ``bearinglab`` application.
-    """
-    app.command("frequencies")(frequencies)
+#: The ``frequencies`` command, as the application adds it.
+COMMANDS = {"frequencies": frequencies}

@@ -4,9 +4,9 @@ torque     handbook friction torque of a bearing under combined load (one-term, 
 lab        a measurement-session file -> the three tasks, cross-checks, conclusions and the HTML report
 template   a blank, commented measurement-session file to start a new session
 
-Functions
----------
-register   add the ``friction`` command group to the application
+Commands
+--------
+COMMANDS   the ``friction`` command group, by name (the application adds it)
 """
 
 from __future__ import annotations
@@ -35,7 +35,7 @@ from ._common import (
 )
 from ._common import table as _table
 
-__all__ = ["register"]
+__all__ = ["COMMANDS"]
 
 friction_app = typer.Typer(
     help="Friction torque: handbook models and the friction-rig lab (spec 001).",
@@ -497,15 +497,9 @@ def template(
     )
 
 
-def register(app):
-    """Add the ``friction`` command group to the application.
+friction_app.command("torque")(torque)
+friction_app.command("lab")(lab)
+friction_app.command("template")(template)
 
-    Parameters
-    ----------
-    app : typer.Typer
-        The ``bearinglab`` application.
-    """
-    friction_app.command("torque")(torque)
-    friction_app.command("lab")(lab)
-    friction_app.command("template")(template)
-    app.add_typer(friction_app, name="friction")
+#: The ``friction`` command group, as the application adds it.
+COMMANDS = {"friction": friction_app}

@@ -6,9 +6,9 @@ written with ``--csv`` and drawn with ``--plot`` (the paper's figures 2-4 and de
 The columns are :func:`bearinglab.tables.high_speed`; the figure is
 :func:`bearinglab.plots.high_speed.plot_map`.
 
-Functions
----------
-register   add the ``high-speed`` command to the application
+Commands
+--------
+COMMANDS   the ``high-speed`` command, by name (the application adds it)
 """
 
 from __future__ import annotations
@@ -55,7 +55,7 @@ from ._common import (
     table,
 )
 
-__all__ = ["register"]
+__all__ = ["COMMANDS"]
 
 _PROGRESS_MIN_CASES = 5000  # serial sweeps at least this large are cut finer, so the bar moves
 _CHUNK = 2500  # cases per batched call then
@@ -203,12 +203,5 @@ def _print_sweep(b, rows, options):
             _f(r["gyroscopic_moment_Nmm"], ".0f"), r["status"]] for r in rows], caption=caption)
 
 
-def register(app):
-    """Add the ``high-speed`` command to the application.
-
-    Parameters
-    ----------
-    app : typer.Typer
-        The ``bearinglab`` application.
-    """
-    app.command("high-speed")(high_speed)
+#: The ``high-speed`` command, as the application adds it.
+COMMANDS = {"high-speed": high_speed}

@@ -4,9 +4,9 @@
 subcommand is given; ``monte-carlo`` is its subcommand. Options of the callback written before the
 subcommand are rejected rather than silently ignored.
 
-Functions
----------
-register   add the ``runout`` command group (with ``monte-carlo``) to the application
+Commands
+--------
+COMMANDS   the ``runout`` command group (with ``monte-carlo``), by name (the application adds it)
 """
 
 from __future__ import annotations
@@ -36,7 +36,7 @@ from ._common import (
     table,
 )
 
-__all__ = ["register"]
+__all__ = ["COMMANDS"]
 
 UM = 1e-6
 
@@ -633,12 +633,5 @@ def _print_monte_carlo(info, grade, rings, samples, seed):
             console.print(f"{key}: {info[key] if key == 'samples_csv' else ', '.join(info[key])}")
 
 
-def register(app):
-    """Add ``runout`` (with its ``monte-carlo`` subcommand) to the command line.
-
-    Parameters
-    ----------
-    app : typer.Typer
-        The ``bearinglab`` application.
-    """
-    app.add_typer(runout_app, name="runout")
+#: The ``runout`` command group (with ``monte-carlo``), as the application adds it.
+COMMANDS = {"runout": runout_app}

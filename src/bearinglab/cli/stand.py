@@ -1,8 +1,8 @@
 """Command line of the test-stand method (spec 000): ``axial-angle`` and ``stand-load``.
 
-Functions
----------
-register   add the ``axial-angle`` and ``stand-load`` commands to the application
+Commands
+--------
+COMMANDS   the ``axial-angle`` and ``stand-load`` commands, by name (the application adds them)
 """
 
 from __future__ import annotations
@@ -37,7 +37,7 @@ from ._common import (
     table,
 )
 
-__all__ = ["register"]
+__all__ = ["COMMANDS"]
 
 
 def _angle_row(row, legacy):
@@ -171,13 +171,5 @@ def stand_load(
             f"{r['max_axial_load_kgf']:.4g}", f"{r['max_axial_load_N']:.4g}"] for r in rows])
 
 
-def register(app):
-    """Add the ``axial-angle`` and ``stand-load`` commands to the application.
-
-    Parameters
-    ----------
-    app : typer.Typer
-        The ``bearinglab`` application.
-    """
-    app.command("axial-angle")(axial_angle)
-    app.command("stand-load")(stand_load)
+#: The ``axial-angle`` and ``stand-load`` commands, as the application adds them.
+COMMANDS = {"axial-angle": axial_angle, "stand-load": stand_load}

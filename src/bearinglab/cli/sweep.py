@@ -1,8 +1,8 @@
 """Command line of parameter sweeps: ``bearinglab sweep FILE.toml`` (see :mod:`bearinglab.sweep`).
 
-Functions
----------
-register   add the ``sweep`` command to the application
+Commands
+--------
+COMMANDS   the ``sweep`` command, by name (the application adds it)
 """
 
 from __future__ import annotations
@@ -27,7 +27,7 @@ from ._common import (
     table,
 )
 
-__all__ = ["register"]
+__all__ = ["COMMANDS"]
 
 
 def sweep(
@@ -64,12 +64,5 @@ def sweep(
         console.print(f"wrote {target}", highlight=False)
 
 
-def register(app):
-    """Add the ``sweep`` command to the application.
-
-    Parameters
-    ----------
-    app : typer.Typer
-        The ``bearinglab`` application.
-    """
-    app.command("sweep")(sweep)
+#: The ``sweep`` command, as the application adds it.
+COMMANDS = {"sweep": sweep}
