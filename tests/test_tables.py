@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from bearinglab import catalog, quasistatic, runout, static, tables
+from bearinglab import catalog, kinematics, quasistatic, runout, static, tables
 from bearinglab.units import KGF, RPM
 
 
@@ -156,3 +156,22 @@ def test_json_text_nan_numpy_and_unicode():
     text = tables.json_text(doc)
     assert text.endswith("}\n") and "µ" in text and "α" in text
     assert json.loads(text) == {"a": None, "b": 3, "c": [1.0, None], "d": [True], "µ": "α"}
+
+
+def test_frequencies_and_spectral_mask_in_hz_and_orders():
+    b = catalog.get("6205-2RS")
+    w = 1797 * RPM
+    f = kinematics.characteristic_frequencies(w, b.ball_diameter, b.pitch_diameter, b.n_balls, b.contact_angle)
+    got = tables.frequencies(f, w)
+    assert list(got)[:2] == ["ftf_hz", "ftf_order"]
+    assert got["bpfi_hz"] == pytest.approx(float(f.bpfi) / (2 * math.pi), rel=1e-15)
+    assert got["bpfi_order"] == pytest.approx(float(f.bpfi) / w, rel=1e-14)
+    m = kinematics.spectral_mask(w, b.ball_diameter, b.pitch_diameter, b.n_balls, b.contact_angle, harmonics=2)
+    cols = tables.spectral_mask(m, w)
+    assert len(cols["name"]) == len(m.name) and cols["name"][0] == "shaft"
+    assert cols["order"][0] == pytest.approx(1.0, rel=1e-15)
+    # only the outer ring turns: no shaft frequency to refer orders to
+    still = kinematics.spectral_mask(0.0, b.ball_diameter, b.pitch_diameter, b.n_balls, b.contact_angle,
+                                     outer_speed=w)
+    assert np.isnan(tables.spectral_mask(still, 0.0)["order"]).all()
+    assert tables.frequencies(f, 0.0)["bpfi_order"] is None

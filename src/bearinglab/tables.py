@@ -21,6 +21,8 @@ rows            columns -> list of per-case dicts (JSON-ready scalars)
 high_speed      a high-speed state -> its columns (kN, rpm, deg, mm, µm, N, N·mm, Hz, MPa, N/µm)
 input_columns   sweep inputs (SI, by kind) -> columns with the unit in the name
 stand_load      speeds and a minimum-load result -> columns (rpm, N, kgf)
+frequencies     characteristic frequencies -> ``{name}_hz`` and ``{name}_order`` values
+spectral_mask   the lines of a spectral mask -> columns (Hz and orders)
 bearing_summary every known field of a bearing and its derived quantities
 catalog_entry   the catalog-list row of a bearing
 runout_metrics  runout metrics -> ``{metric}_um`` values
@@ -54,6 +56,7 @@ __all__ = [
     "catalog_entry",
     "columns",
     "csv_text",
+    "frequencies",
     "high_speed",
     "input_columns",
     "json_text",
@@ -62,6 +65,7 @@ __all__ = [
     "rows",
     "runout_metrics",
     "significant",
+    "spectral_mask",
     "stand_load",
     "write_table",
 ]
@@ -330,6 +334,63 @@ def stand_load(shaft_speed, result):
     lo, hi = np.atleast_1d(result.minimum), np.atleast_1d(result.maximum)
     return {"speed_rpm": np.ravel(shaft_speed) / RPM, "min_axial_load_kgf": lo / KGF, "min_axial_load_N": lo,
             "max_axial_load_kgf": hi / KGF, "max_axial_load_N": hi}
+
+
+def _order(hz, shaft_hz):
+    """Multiple of the shaft frequency; NaN (shown empty, or null in JSON) when the shaft stands still."""
+    return hz / abs(shaft_hz) if shaft_hz else math.nan
+
+
+def frequencies(freqs, shaft_speed, names=("ftf", "bpfo", "bpfi", "bsf", "two_bsf")):
+    """Characteristic frequencies in Hz and as orders (multiples of the shaft frequency).
+
+    Parameters
+    ----------
+    freqs : CharacteristicFrequencies
+        A result of :mod:`bearinglab.kinematics` for one speed. [rad/s]
+    shaft_speed : float
+        Inner-ring (shaft) speed the orders refer to. [rad/s]
+    names : sequence of str, optional
+        The families wanted, in order (default: every defect family of ``kinematics.FAMILIES``).
+
+    Returns
+    -------
+    dict
+        ``{name}_hz`` and ``{name}_order`` -> float, per family (``None`` for the orders at zero
+        shaft speed).
+    """
+    shaft_hz = shaft_speed / (2.0 * math.pi)
+    out = {}
+    for name in names:
+        hz = float(getattr(freqs, name)) / (2.0 * math.pi)
+        out[f"{name}_hz"] = hz
+        out[f"{name}_order"] = hz / abs(shaft_hz) if shaft_hz else None
+    return out
+
+
+def spectral_mask(mask, shaft_speed):
+    """The lines of a spectral mask as columns, the frequencies in Hz and as orders.
+
+    Parameters
+    ----------
+    mask : SpectralMask
+        A result of :func:`bearinglab.kinematics.spectral_mask` for one speed.
+    shaft_speed : float
+        Inner-ring (shaft) speed the orders refer to. [rad/s]
+
+    Returns
+    -------
+    dict
+        ``name``, ``harmonic``, ``modulation``, ``sideband``, ``frequency_hz``, ``low_hz``, ``high_hz``
+        and ``order`` (NaN at zero shaft speed): 1-D arrays, one entry per line.
+    """
+    hz = 2.0 * math.pi  # rad/s per Hz
+    cols = {"name": np.asarray(mask.name).astype(str), "harmonic": np.asarray(mask.harmonic).astype(int),
+            "modulation": np.asarray(mask.modulation).astype(str), "sideband": np.asarray(mask.sideband).astype(int)}
+    for key, field in (("frequency_hz", "frequency"), ("low_hz", "low"), ("high_hz", "high")):
+        cols[key] = np.ravel(getattr(mask, field)) / hz
+    cols["order"] = np.array([_order(f, shaft_speed / hz) for f in cols["frequency_hz"]])
+    return cols
 
 
 def _optional(value, factor):

@@ -1,11 +1,11 @@
-"""What every command of the command line shares: the bearing and execution options, output, errors.
+"""What every command of the command line shares: the bearing and execution options, and the output.
 
 Bearing options  BearingName, BearingFile, CatalogFile and the inline geometry; resolve_bearing
 Execution        ExecutorOpt, WorkersOpt, ChunkSizeOpt; execution (one parallel.Execution with the
-                 command's progress bar), sweep_options (the same as keyword arguments, for the batch
+                 command's progress bar), execution_kwargs (the same as keyword arguments, for the batch
                  functions that do not take ``execution=`` yet)
 Output           console, emit_json (one JSON document on stdout), table (a rich table), emit_csv
-Input checks     quantity, choice, check_directory
+Input checks     choice, check_directory
 
 The command modules import these; none of them imports the package ``bearinglab.cli`` itself, so the
 application is built on import without a cycle.
@@ -191,7 +191,7 @@ def execution(description, executor=None, workers=None, chunk_size=None, *, memo
         yield dataclasses.replace(ex, progress=report)
 
 
-def sweep_options(ex):
+def execution_kwargs(ex):
     """An Execution as the keyword arguments of the batch functions that do not take ``execution=``
     yet (``quasistatic.sweep``, ``runout.monte_carlo``); a chunk size left ``None`` keeps their default."""
     kw = {"executor": ex.executor, "workers": ex.workers, "memory_limit": ex.memory_limit,

@@ -14,7 +14,7 @@ from typing import Annotated
 
 import typer
 
-from .. import kinematics, static
+from .. import kinematics, static, tables
 from ..errors import InputError
 from ..units import KGF, format_dms, parse_quantity
 from ._common import (
@@ -62,15 +62,6 @@ def _band(text):
     if not 0.0 < value < 200.0:
         raise InputError(f"band must be in (0, 200) [%], got {value:g} %")
     return value / 100.0
-
-
-def _keys(freqs, shaft_hz, names=kinematics.FAMILIES[1:]):
-    out = {}
-    for name in names:
-        hz = float(getattr(freqs, name)) / _HZ
-        out[f"{name}_hz"] = hz
-        out[f"{name}_order"] = hz / abs(shaft_hz) if shaft_hz else None
-    return out
 
 
 def frequencies(
@@ -216,9 +207,9 @@ def _frequencies(b, w_in, w_out, fa, hertz):
         shaft_hz=shaft_hz,
         outer_hz=w_out / _HZ,
     )
-    out.update(_keys(shift.operating, shaft_hz))
+    out.update(tables.frequencies(shift.operating, w_in))
     out["nominal"] = dict(
-        contact_angle_deg=math.degrees(a0), shaft_hz=shaft_hz, **_keys(shift.nominal, shaft_hz)
+        contact_angle_deg=math.degrees(a0), shaft_hz=shaft_hz, **tables.frequencies(shift.nominal, w_in)
     )
     out["shift_hz"] = {n: float(getattr(shift.shift, n)) / _HZ for n in kinematics.FAMILIES[1:]}
     out["shift_percent"] = {
@@ -230,7 +221,6 @@ def _frequencies(b, w_in, w_out, fa, hertz):
 def _mask(b, w_in, w_out, angle, harmonics, sidebands, band_fraction):
     """The lines of the spectral mask at the angle of the frequencies (Hz and orders)."""
     z, d, dm = b.require("n_balls", "ball_diameter", "pitch_diameter")
-    shaft_hz = w_in / _HZ
     m = kinematics.spectral_mask(
         w_in,
         d,
@@ -242,21 +232,7 @@ def _mask(b, w_in, w_out, angle, harmonics, sidebands, band_fraction):
         sidebands=sidebands,
         band=band_fraction,
     )
-    return [
-        {
-            "name": str(name),
-            "harmonic": int(h),
-            "modulation": str(mod),
-            "sideband": int(k),
-            "frequency_hz": float(f),
-            "low_hz": float(lo),
-            "high_hz": float(hi),
-            "order": float(f) / abs(shaft_hz) if shaft_hz else None,
-        }
-        for name, h, mod, k, f, lo, hi in zip(
-            m.name, m.harmonic, m.modulation, m.sideband, m.frequency / _HZ, m.low / _HZ, m.high / _HZ
-        )
-    ]
+    return tables.rows(tables.spectral_mask(m, w_in))
 
 
 def _print(b, out, mask_rows):

@@ -50,8 +50,8 @@ from ._common import (
     emit_csv,
     emit_json,
     execution,
+    execution_kwargs,
     resolve_bearing,
-    sweep_options,
     table,
 )
 
@@ -157,7 +157,7 @@ def _solve(bearing, loads, speeds, options, ex):
         else:
             if ex.chunk_size is None and ex.executor == "serial" and loads.size * speeds.size >= _PROGRESS_MIN_CASES:
                 ex = dataclasses.replace(ex, chunk_size=_CHUNK)  # small enough chunks for the bar to move
-            state = quasistatic.sweep(bearing, loads, speeds, **sweep_options(ex), **options)
+            state = quasistatic.sweep(bearing, loads, speeds, **execution_kwargs(ex), **options)
     return state, [str(c.message) for c in caught if issubclass(c.category, ValidityWarning)]
 
 

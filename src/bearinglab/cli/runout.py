@@ -32,7 +32,7 @@ from ._common import (
     console,
     emit_json,
     execution,
-    sweep_options,
+    execution_kwargs,
     table,
 )
 
@@ -541,7 +541,7 @@ def monte_carlo_command(
             revolutions=revolutions,
             max_order=max_order,
             cage_ratio=cage_ratio,
-            **sweep_options(ex),
+            **execution_kwargs(ex),
         )
     info = _monte_carlo_info(r, g, grade, rings, samples, seed, steps_per_rev, revolutions, max_order)
     if samples_csv is not None:
