@@ -17,8 +17,8 @@ from pathlib import Path
 
 import numpy as np
 
-from bearinglab import catalog, kinematics, static
-from bearinglab.sweep import write_table
+from bearinglab import catalog, kinematics, plots, static, tables
+from bearinglab.plots import frequencies as frequency_plots
 from bearinglab.units import KGF, RPM, format_dms
 
 HZ = 2 * math.pi  # rad/s per Hz
@@ -27,8 +27,8 @@ CWRU_PUBLISHED = {"bpfi": 5.4152, "bpfo": 3.5848, "ftf": 0.39828, "two_bsf": 4.7
 
 
 def write_csv(path, header, rows):
-    """Write a CSV whole or not at all (rows -> columns for :func:`bearinglab.sweep.write_table`)."""
-    write_table(dict(zip(header, zip(*rows))), path)
+    """Write a CSV whole or not at all (rows -> columns for :func:`bearinglab.tables.write_table`)."""
+    tables.write_table(dict(zip(header, zip(*rows))), path)
 
 
 def main(out):
@@ -94,47 +94,25 @@ def main(out):
     nominal = masks["nominal"]
     outside = int(np.sum((m.frequency < nominal.low) | (m.frequency > nominal.high)))
 
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(2, 1, figsize=(12, 7), constrained_layout=True)
-    carriers = {
-        "bpfo": "C0",
-        "bpfi": "C3",
-        "bsf": "C2",
-        "two_bsf": "C4",
-        "ftf": "C1",
-        "shaft": "0.4",
-    }
-    for name, colour in carriers.items():
-        sel = m.name == name
-        for lo, hi, mod in zip(m.low[sel] / HZ, m.high[sel] / HZ, m.modulation[sel]):
-            ax[0].axvspan(lo, hi, color=colour, alpha=0.25 if mod else 0.6, lw=0)
-        ax[0].plot([], [], color=colour, lw=6, label=name)
-    ax[0].set(
+    fig = plots.figure(figsize=(12, 7))
+    top, bottom = fig.subplots(2, 1)
+    frequency_plots.spectral_mask(
+        m,
         xlim=(0, 700),
-        yticks=[],
-        xlabel="frequency [Hz]",
         title=f"Spectral mask of 4-1006095 at 3000 rpm, 2 kgf (operating angle {format_dms(alpha)}): "
         "carriers dark, sidebands light, 2 % bands",
+        ax=top,
     )
-    ax[0].legend(ncol=6, loc="upper right", fontsize=8)
-    angles = np.radians(np.linspace(0.0, 45.0, 181))
-    sweep = kinematics.characteristic_orders(b.ball_diameter, b.pitch_diameter, b.n_balls, angles)
-    for name in ("bpfi", "bpfo", "two_bsf", "bsf"):
-        ax[1].plot(np.degrees(angles), getattr(sweep, name), color=carriers[name], label=name)
-    ax[1].axvline(math.degrees(b.contact_angle), color="0.5", ls="--", lw=1, label="nominal 12°")
-    ax[1].axvline(math.degrees(alpha), color="k", ls=":", lw=1, label="operating at 2 kgf")
-    ax[1].set(
-        xlabel="contact angle [deg]",
-        ylabel="order (multiple of shaft speed)",
+    frequency_plots.orders(
+        b.ball_diameter,
+        b.pitch_diameter,
+        b.n_balls,
+        np.radians(np.linspace(0.0, 45.0, 181)),
+        marks=[(b.contact_angle, "nominal 12°"), (alpha, "operating at 2 kgf")],
         title="Orders of 4-1006095 against the contact angle",
+        ax=bottom,
     )
-    ax[1].legend(ncol=3, fontsize=8)
-    fig.savefig(out / "frequencies.png", dpi=120)
-    plt.close(fig)
+    plots.save(fig, out / "frequencies.png")
 
     print(
         "CWRU 6205-2RS orders: "

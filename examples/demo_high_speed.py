@@ -32,9 +32,8 @@ matplotlib.use(os.environ.get("MPLBACKEND", "Agg"))
 import matplotlib.pyplot as plt
 import numpy as np
 
-from bearinglab import catalog, quasistatic
-from bearinglab._cli_highspeed import plot_map, write_csv
-from bearinglab._io import atomic_output
+from bearinglab import catalog, plots, quasistatic, tables
+from bearinglab.plots.high_speed import plot_map
 from bearinglab.units import RPM
 
 #: E' of the rounded K prefactor 2.15e5 N/mm^1.5 of spec 004 eq. (16) [Pa]
@@ -53,9 +52,8 @@ PRINTED_SIGN_CHANGE = {3000: 2.31, 6000: 6.61, 10000: 14.42, 15000: 26.81}  # kN
 
 
 def save(fig, path):
-    """Write a figure whole or not at all."""
-    with atomic_output(path, suffix=".png") as tmp:
-        fig.savefig(tmp, dpi=120)
+    """Write a pyplot figure whole or not at all, and close it."""
+    plots.save(fig, path)
     plt.close(fig)
 
 
@@ -90,7 +88,7 @@ def main(out):
     t = time.perf_counter()
     state = quasistatic.sweep(b218, loads, speeds_rpm * RPM, **OPTIONS)
     elapsed = time.perf_counter() - t
-    write_csv(out / "map_218.csv", quasistatic.result_table(state))
+    tables.write_table(tables.high_speed(state), out / "map_218.csv")
 
     # the printed table of section 7.1
     printed_loads = np.array(sorted(PRINTED)) * 1e3
@@ -105,13 +103,13 @@ def main(out):
             worst = max(worst, abs(ai - pi_), abs(ae - pe))
             for key, val in zip(rows, (fa, n, ai, pi_, ae, pe)):
                 rows[key].append(val)
-    write_csv(out / "table_7_1.csv", {k: np.array(v) for k, v in rows.items()})
+    tables.write_table({k: np.array(v) for k, v in rows.items()}, out / "table_7_1.csv")
 
     # thrust at which delta_a changes sign
     moving = speeds_rpm[1:]
     sign_change = quasistatic.sign_change_thrust(b218, moving * RPM, **OPTIONS)
-    write_csv(out / "sign_change.csv", {"speed_rpm": moving, "axial_load_kN": sign_change * 1e-3,
-                                        "printed_kN": np.array([PRINTED_SIGN_CHANGE[int(n)] for n in moving])})
+    tables.write_table({"speed_rpm": moving, "axial_load_kN": sign_change * 1e-3,
+                        "printed_kN": np.array([PRINTED_SIGN_CHANGE[int(n)] for n in moving])}, out / "sign_change.csv")
 
     deg = 180.0 / math.pi
     ai, ae, a_s = state.contact_angle_inner * deg, state.contact_angle_outer * deg, state.static_contact_angle * deg
@@ -125,8 +123,8 @@ def main(out):
     marks = np.concatenate([[np.nan], sign_change * 1e-3])
     curves(state, speeds_rpm, state.axial_displacement * 1e6, "δ_a [µm]",
            "Axial displacement of the inner ring (○: sign change)", out / "axial_displacement.png", marks=marks)
-    plot_map(state, out / "map_218.png", title="Bearing 218: high-speed contact angles under thrust (spec 004)",
-             sign_change=np.concatenate([[0.0], sign_change]))
+    plots.save(plot_map(state, title="Bearing 218: high-speed contact angles under thrust (spec 004)",
+                        sign_change=np.concatenate([[0.0], sign_change])), out / "map_218.png")
 
     print(f"218 bearing, {state.converged.size} cases ({len(loads)} thrusts x {len(speeds_rpm)} speeds) in "
           f"{elapsed * 1e3:.0f} ms, {int((~state.converged).sum())} failed")

@@ -121,3 +121,20 @@ def test_cli_sweep_unreachable_scheduler(sweep_file, capsys, monkeypatch):
     code = main(["sweep", str(sweep_file), "--executor", "tcp://127.0.0.1:9"])
     err = capsys.readouterr().err
     assert code == 2 and "cannot reach a dask scheduler at 'tcp://127.0.0.1:9'" in err and err.count("\n") == 1
+
+
+def test_execution_value_equals_the_keyword_arguments(sweep_file):
+    from bearinglab.errors import InputError
+    from bearinglab.parallel import Execution
+
+    spec = sweep.load_sweep(sweep_file)
+    seen = []
+    ref = sweep.run_sweep(spec, chunk_size=7)
+    got = sweep.run_sweep(spec, execution=Execution(chunk_size=7, progress=lambda d, t: seen.append((d, t))))
+    for k in ref:
+        assert np.array_equal(ref[k], got[k], equal_nan=ref[k].dtype.kind == "f"), k
+    assert seen == [(7, 24), (14, 24), (21, 24), (24, 24)]
+    # chunk size left None: the file's (here the default); executor of the value, not of the file
+    assert sweep.run_sweep(spec, execution=Execution())["converged"].sum() == 16
+    with pytest.raises(InputError, match="not both"):
+        sweep.run_sweep(spec, execution=Execution(), workers=2)

@@ -18,6 +18,9 @@ friction    friction torque: P0 max rule, one-term, two-term, Palmgren (spec 001
 lab         the friction-rig lab: rig loads, calibration, measurement files, the three fits (spec 001)
 report      self-contained HTML reports of the friction lab, with PNG/SVG plots, CSV and JSON
 quasistatic high-speed angular-contact bearing under thrust: centrifugal force, gyroscopic moment (spec 004)
+tables      results -> engineering-unit columns; the CSV, Parquet and JSON writers
+plots       all figures (matplotlib, loaded on first use); functions return Figures
+cli         the command line (imported on its own: ``bearinglab.cli``, ``python -m bearinglab``)
 """
 
 from . import (
@@ -30,12 +33,14 @@ from . import (
     kinematics,
     lab,
     parallel,
+    plots,
     quasistatic,
     report,
     runout,
     stand,
     static,
     sweep,
+    tables,
     units,
 )
 
@@ -51,11 +56,13 @@ __all__ = [
     "kinematics",
     "lab",
     "parallel",
+    "plots",
     "quasistatic",
     "report",
     "runout",
     "stand",
     "static",
     "sweep",
+    "tables",
     "units",
 ]

@@ -1,13 +1,21 @@
-"""Output files written whole or not at all (STYLE.md: no half-written result may be left behind).
+"""Output files written whole or not at all, and the one JSON and the one CSV convention of the package.
 
-Every writer of the library (CSV tables, figures, measurement templates) goes through
-:func:`atomic_output`: the data go to a temporary file in the target's directory, which replaces the
-target in one ``os.replace`` only once it is complete. A failure leaves the old file, if any, as it was.
+STYLE.md: no half-written result may be left behind. Every writer of the library (CSV tables, figures,
+measurement templates, reports) goes through :func:`atomic_output`: the data go to a temporary file in
+the target's directory, which replaces the target in one ``os.replace`` only once it is complete. A
+failure leaves the old file, if any, as it was.
 
-atomic_output     a temporary path that becomes the target on success
-write_text        text to a file, whole or not at all
-csv_text          the library's one CSV dialect: ``#`` comments, header, rows, LF line endings
-json_text         the library's one JSON dialect: indent 2, UTF-8 text, NaN/inf -> null, numpy -> Python
+Functions
+---------
+atomic_output   temporary path that becomes the target on success (any writer)
+write_text      a text file, whole or not at all
+json_value      Python/numpy values -> JSON-ready values (NaN and inf -> None, numpy -> Python)
+json_text       one JSON document (two-space indent, UTF-8 characters kept), ending in a newline
+csv_cell        one value -> one CSV cell (floats as repr, NaN/inf/None empty, booleans true/false)
+csv_text        CSV text: ``# comment`` lines, the header row, the rows (LF line endings)
+write_columns   equal-length columns -> .csv or .parquet, whole or not at all
+
+The public spelling of the JSON, CSV and column writers is :mod:`bearinglab.tables`.
 """
 
 from __future__ import annotations
@@ -23,7 +31,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["atomic_output", "csv_text", "json_text", "write_text"]
+__all__ = ["atomic_output", "csv_cell", "csv_text", "json_text", "json_value", "write_columns", "write_text"]
 
 
 @contextlib.contextmanager
@@ -52,38 +60,77 @@ def write_text(path, text):
     return Path(path)
 
 
+def json_value(obj):
+    """``obj`` with numpy arrays and scalars as Python lists and numbers, NaN and inf as ``None``.
+
+    Dictionaries keep their order (keys become strings); tuples become lists.
+    """
+    if isinstance(obj, dict):
+        return {str(k): json_value(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [json_value(v) for v in obj]
+    if isinstance(obj, np.ndarray):
+        return json_value(obj.tolist())
+    if isinstance(obj, (np.bool_, bool)):
+        return bool(obj)
+    if isinstance(obj, np.integer):
+        return int(obj)
+    if isinstance(obj, (np.floating, float)):
+        v = float(obj)
+        return v if math.isfinite(v) else None
+    return obj
+
+
+def json_text(obj):
+    """One JSON document of ``obj`` (see :func:`json_value`), indented by two spaces, with a final newline."""
+    return json.dumps(json_value(obj), indent=2, ensure_ascii=False) + "\n"
+
+
+def csv_cell(value):
+    """One CSV cell: floats in full precision (``repr``), NaN, inf and None empty, booleans ``true``/``false``."""
+    if value is None:
+        return ""
+    if isinstance(value, (np.bool_, bool)):
+        return "true" if value else "false"
+    if isinstance(value, (float, np.floating)):
+        return repr(float(value)) if math.isfinite(value) else ""
+    if isinstance(value, np.integer):
+        return int(value)
+    if isinstance(value, np.str_):
+        return str(value)
+    return value
+
+
 def csv_text(header, rows, comments=()):
-    """CSV text with ``# comment`` lines first, then the header row and the rows (LF line endings)."""
+    """CSV text with ``# comment`` lines first, then the header row and the rows (LF line endings).
+
+    Every cell goes through :func:`csv_cell`; cells already formatted as strings pass unchanged.
+    """
     buf = io.StringIO()
     for line in comments:
         buf.write(f"# {line}\n")
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(header)
-    w.writerows(rows)
+    w.writerows([csv_cell(v) for v in row] for row in rows)
     return buf.getvalue()
 
 
-def json_text(obj):
-    """JSON text of ``obj`` (indent 2, non-ASCII kept, one final newline).
+def write_columns(path, columns, *, comments=()):
+    """Write equal-length columns (name -> 1-D array) to a .csv or .parquet file, whole or not at all.
 
-    NaN and infinities become null (JSON has no such numbers); numpy scalars and arrays become Python
-    numbers and lists, tuples become lists and dict keys strings.
+    CSV cells follow :func:`csv_cell`; ``comments`` become ``#`` lines before the header (CSV only).
+    Parquet keeps the column dtypes (object columns as strings). Returns the path.
     """
-    return json.dumps(_jsonable(obj), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+    path = Path(path)
+    names = list(columns)
+    if path.suffix == ".parquet":
+        import pyarrow as pa
+        import pyarrow.parquet as pq
 
-
-def _jsonable(obj):
-    if isinstance(obj, dict):
-        return {str(k): _jsonable(v) for k, v in obj.items()}
-    if isinstance(obj, (list, tuple)):
-        return [_jsonable(v) for v in obj]
-    if isinstance(obj, np.ndarray):
-        return _jsonable(obj.tolist())
-    if isinstance(obj, (bool, np.bool_)):
-        return bool(obj)
-    if isinstance(obj, np.integer):
-        return int(obj)
-    if isinstance(obj, (float, np.floating)):
-        v = float(obj)
-        return v if math.isfinite(v) else None
-    return obj
+        arrays = {k: np.asarray(columns[k]) for k in names}
+        table = pa.table({k: (v.astype(str) if v.dtype == object else v) for k, v in arrays.items()})
+        with atomic_output(path, suffix=".parquet") as tmp:
+            pq.write_table(table, tmp)
+        return path
+    rows = zip(*(np.asarray(columns[k], dtype=object) for k in names))
+    return write_text(path, csv_text(names, rows, comments))

@@ -436,7 +436,7 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
         if done.all():
             break
     else:
-        raise ConvergenceError("static.operating_contact_angle", iterations=max_iter,
+        raise ConvergenceError("stand.operating_contact_angle", iterations=max_iter,
                                residual=1.0 / ratio - 1.0, estimate=alpha,
                                reason="the angle did not settle in (alpha0, 90 deg)")
     return alpha[()]
@@ -507,7 +507,7 @@ def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, re
     for k in range(limit):
         alpha = _legacy_angle(a0, x) if reproduce_print else a0 + x
         if not a0 < alpha < math.pi / 2:
-            raise ConvergenceError("static.iteration_table", iterations=k, residual=float("nan"), estimate=alpha,
+            raise ConvergenceError("stand.iteration_table", iterations=k, residual=float("nan"), estimate=alpha,
                                    reason="the angle left (alpha0, 90 deg)")
         thrust = float(thrust_from_angle(alpha, cs, a0))
         # legacy: the paper steps with F cut to three kgf decimals (2.02994 -> 2.029, spec 000 section 9.12)
@@ -520,7 +520,7 @@ def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, re
         settled = abs(dx) < xtol
         x += dx
     if max_rows is None:
-        raise ConvergenceError("static.iteration_table", iterations=limit, residual=rows[-1].error_percent / 100,
+        raise ConvergenceError("stand.iteration_table", iterations=limit, residual=rows[-1].error_percent / 100,
                                estimate=rows[-1].contact_angle)
     return rows
 

@@ -28,6 +28,7 @@ instead of raising, so one bad case does not stop a sweep.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import tomllib
 from collections.abc import Callable
@@ -36,8 +37,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import catalog, geometry, kinematics, parallel, static
-from ._io import atomic_output
+from . import catalog, geometry, hertz, kinematics, parallel, stand, static, tables
 from .bearing import BallBearing
 from .errors import CatalogError, ConvergenceError, InputError
 from .units import KGF, parse_quantity, parse_values
@@ -128,27 +128,29 @@ def _nan(n):
 
 
 def _evaluate_axial_angle(axial_load, **cases):
-    """Chunk function of the ``axial-angle`` model (spec 000, exact Hertz, the paper's elastic constant)."""
+    """Chunk function of the ``axial-angle`` model (spec 000 with exact Hertz, C* at the operating angle
+    and the elastic constant of the bearing's materials, as :func:`bearinglab.stand.stand_analysis`)."""
     fa = np.asarray(axial_load, dtype=float)
     n = fa.size
-    g = _geometry_arrays(n, cases.pop("bearing", None), cases)
+    bearing = cases.pop("bearing", None)
+    g = _geometry_arrays(n, bearing, cases)
     ok, reason = _flags(n, [("axial_load must be > 0", fa > 0)] + _valid_geometry(g))
     angle, cstar, q, da = _nan(n), _nan(n), _nan(n), _nan(n)
     idx = np.flatnonzero(ok)
     if idx.size:
         s = {k: v[idx] for k, v in g.items()}
-        c = static.stand_constants(s["n_balls"].astype(int), s["ball_diameter"], s["pitch_diameter"],
-                                   s["inner_conformity"], s["outer_conformity"], s["contact_angle"])
+        ce = hertz.elastic_constant(bearing.reduced_modulus) if bearing is not None else None
         try:
-            a = static.operating_contact_angle(fa[idx], c.force_characteristic, s["contact_angle"])
-        except ConvergenceError as exc:  # flag the cases that did not settle, keep the others
-            good = np.abs(np.asarray(exc.residual)) < 1e-10
-            a = np.where(good, np.asarray(exc.estimate, dtype=float), np.nan)
-            reason[idx[~good]] = "no convergence"
-            ok[idx[~good]] = False
+            c, a = stand.constants_at_operating_angle(
+                fa[idx], s["n_balls"].astype(int), s["ball_diameter"], s["pitch_diameter"], s["inner_conformity"],
+                s["outer_conformity"], s["contact_angle"], elastic_constant=ce)
+            cstar[idx] = c.force_characteristic
+        except ConvergenceError:  # flag the chunk's cases rather than report an unsettled angle
+            a = np.full(idx.size, np.nan)
+            reason[idx] = "no convergence"
+            ok[idx] = False
         bd = geometry.total_curvature(s["inner_conformity"], s["outer_conformity"]) * s["ball_diameter"]
         angle[idx] = a
-        cstar[idx] = c.force_characteristic
         q[idx] = fa[idx] / (s["n_balls"] * np.sin(a))
         da[idx] = static.axial_displacement_ratio(a, s["contact_angle"]) * bd
     return {"operating_contact_angle_deg": np.degrees(angle), "load_deflection_constant_kgf": cstar / KGF,
@@ -164,7 +166,7 @@ def _evaluate_stand_load(speed, **cases):
     ok, reason = _flags(n, rules)
     lo = _nan(n)
     if ok.any():
-        lo[ok] = static.min_axial_load(w[ok], g["n_balls"][ok].astype(int), g["ball_diameter"][ok],
+        lo[ok] = stand.min_axial_load(w[ok], g["n_balls"][ok].astype(int), g["ball_diameter"][ok],
                                        g["pitch_diameter"][ok], g["contact_angle"][ok]).minimum
     return {"min_axial_load_N": lo, "max_axial_load_N": 1.2 * lo, "min_axial_load_kgf": lo / KGF,
             "max_axial_load_kgf": 1.2 * lo / KGF, "converged": ok, "failure": reason}
@@ -213,14 +215,14 @@ def _evaluate_high_speed(axial_load, speed, bearing, **options):
     ok, reason = _flags(fa.size, [("axial_load must be > 0", fa > 0), ("speed must be >= 0", w >= 0)])
     # the same columns and dtypes in every chunk, even one without a valid case: floats, or objects
     # for the columns that have no unit factor (converged, iterations, status, method)
-    cols = {name: _nan(fa.size) if factor is not None else np.full(fa.size, None, dtype=object)
-            for name, _field, factor in quasistatic._COLUMNS if name not in ("axial_load_kN", "speed_rpm")}
+    cols = {c.name: _nan(fa.size) if c.factor is not None else np.full(fa.size, None, dtype=object)
+            for c in tables.HIGH_SPEED if c.name not in ("axial_load_kN", "speed_rpm")}
     idx = np.flatnonzero(ok)
     if idx.size:
         with warnings.catch_warnings():  # per-case validity is in the columns (friction_coefficient)
             warnings.simplefilter("ignore", ValidityWarning)
             state = quasistatic.high_speed_analysis(bearing, fa[idx], w[idx], on_failure="flag", **options)
-        for name, col in quasistatic.result_table(state).items():
+        for name, col in tables.high_speed(state).items():
             if name in cols:
                 cols[name][idx] = col
         failed = ~np.asarray(state.converged, dtype=bool).ravel()
@@ -232,10 +234,6 @@ def _evaluate_high_speed(axial_load, speed, bearing, **options):
 
 
 MODELS: dict[str, SweepModel] = {}
-
-# kind -> (column suffix, factor from SI) for the input columns of a sweep table
-_DISPLAY = {"force": ("_N", 1.0), "angle": ("_deg", 180.0 / math.pi), "speed": ("_rpm", 30.0 / math.pi),
-            "length": ("_mm", 1e3), "dimensionless": ("", 1.0), "mass": ("_kg", 1.0)}
 
 
 def register_model(model: SweepModel):
@@ -366,13 +364,18 @@ def case_grid(parameters):
     return {k: m.ravel() for k, m in zip(names, mesh)}
 
 
-def run_sweep(spec, *, executor=None, workers=None, chunk_size=None, memory_limit=None, processes=True, progress=None):
-    """Evaluate a sweep; returns the input columns (SI) and the model's output columns, case by case.
+def run_sweep(spec, *, execution=None, executor=None, workers=None, chunk_size=None, memory_limit=None,
+              processes=None, progress=None):
+    """Evaluate a sweep; returns the input columns (engineering units) and the model's output columns.
 
     Parameters
     ----------
     spec : SweepSpec
         From :func:`load_sweep`.
+    execution : bearinglab.parallel.Execution, optional
+        Executor, workers, chunk size and progress as one value; it overrides the file's
+        ``[execution]`` table, except for the workers and the chunk size when it leaves them ``None``.
+        The keyword arguments below are the older spelling; give one or the other.
     executor : str, optional
         Overrides the file's executor.
     workers : int, optional
@@ -389,48 +392,35 @@ def run_sweep(spec, *, executor=None, workers=None, chunk_size=None, memory_limi
     Returns
     -------
     dict of str to ndarray
+        The inputs as :func:`bearinglab.tables.input_columns` (``axial_load_N``, ``speed_rpm``, ...),
+        then the model's outputs, case by case.
     """
+    ex = parallel._execution(execution, executor=executor or (None if execution else spec.executor),
+                             workers=workers, chunk_size=chunk_size, memory_limit=memory_limit,
+                             processes=processes, progress=progress)
+    if ex.workers is None and spec.workers is not None:
+        ex = dataclasses.replace(ex, workers=spec.workers)
+    ex = ex.with_default_chunk_size(spec.chunk_size)
     cases = case_grid(spec.parameters)
     out = parallel.run_cases(spec.model.evaluate, cases, constants=dict(spec.constants, bearing=spec.bearing),
-                             chunk_size=chunk_size or spec.chunk_size, executor=executor or spec.executor,
-                             workers=workers if workers is not None else spec.workers, memory_limit=memory_limit,
-                             processes=processes, progress=progress)
-    kinds = dict(GEOMETRY_PARAMETERS, **spec.model.parameters)
-    columns = {}
-    for k, v in cases.items():  # inputs in the units engineers read, the unit in the column name
-        suffix, scale = _DISPLAY[kinds[k]]
-        columns[f"{k}{suffix}"] = v * scale
+                             execution=ex)
+    columns = tables.input_columns(cases, dict(GEOMETRY_PARAMETERS, **spec.model.parameters))
     columns.update(out)
     return columns
 
 
 def write_table(columns, path):
-    """Write columns to ``path`` (.csv or .parquet), whole or not at all (temporary file, then rename).
+    """Write columns to ``path`` (.csv or .parquet), whole or not at all, creating its directory.
 
     Parameters
     ----------
     columns : dict of str to ndarray
         Equal-length columns.
     path : str or Path
-        Target file; its suffix chooses the format.
+        Target file; its suffix chooses the format (cells as :func:`bearinglab.tables.write_table`).
     """
     path = Path(path)
     if path.suffix not in (".csv", ".parquet"):
         raise InputError(f"output must end in .csv or .parquet, got {path.name!r}")
     path.parent.mkdir(parents=True, exist_ok=True)
-    with atomic_output(path) as tmp:
-        if path.suffix == ".parquet":
-            import pyarrow as pa
-            import pyarrow.parquet as pq
-
-            table = pa.table({k: (v.astype(str) if v.dtype == object else v) for k, v in columns.items()})
-            pq.write_table(table, tmp)
-        else:
-            import csv
-
-            with open(tmp, "w", newline="", encoding="utf-8") as fh:
-                w = csv.writer(fh)
-                w.writerow(list(columns))
-                for row in zip(*[np.asarray(v).tolist() for v in columns.values()]):
-                    w.writerow(row)
-
+    tables.write_table(columns, path)

@@ -87,8 +87,7 @@ from .equations import (  # noqa: F401
     angle_residual,
     residual,
 )
-from .thrust import (  # noqa: F401  (_COLUMNS: sweep.py; _bearing_args: bench and tests, for now)
-    _COLUMNS,
+from .thrust import (  # noqa: F401  (_bearing_args: bench and tests, for now)
     HighSpeedState,
     _bearing_args,
     contact_angles,

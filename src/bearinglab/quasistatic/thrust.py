@@ -578,36 +578,6 @@ def sweep(bearing, axial_loads, shaft_speeds, *, execution=None, reduced_modulus
     return HighSpeedState(**merged)
 
 
-#: Columns of :func:`result_table`: (name, field, factor from SI).
-_COLUMNS = (
-    ("axial_load_kN", "axial_load", 1e-3),
-    ("speed_rpm", "shaft_speed", 1.0 / RPM),
-    ("contact_angle_inner_deg", "contact_angle_inner", 180.0 / math.pi),
-    ("contact_angle_outer_deg", "contact_angle_outer", 180.0 / math.pi),
-    ("static_contact_angle_deg", "static_contact_angle", 180.0 / math.pi),
-    ("axial_displacement_mm", "axial_displacement", 1e3),
-    ("ball_load_inner_N", "ball_load_inner", 1.0),
-    ("ball_load_outer_N", "ball_load_outer", 1.0),
-    ("deflection_inner_um", "deflection_inner", 1e6),
-    ("deflection_outer_um", "deflection_outer", 1e6),
-    ("centrifugal_force_N", "centrifugal_force", 1.0),
-    ("gyroscopic_moment_Nmm", "gyroscopic_moment", 1e3),
-    ("attitude_angle_deg", "attitude_angle", 180.0 / math.pi),
-    ("cage_speed_rpm", "cage_speed", 1.0 / RPM),
-    ("ball_spin_speed_rpm", "ball_spin_speed", 1.0 / RPM),
-    ("bpfo_Hz", "bpfo", 1.0 / (2.0 * math.pi)),
-    ("bpfi_Hz", "bpfi", 1.0 / (2.0 * math.pi)),
-    ("max_pressure_inner_MPa", "max_pressure_inner", 1e-6),
-    ("max_pressure_outer_MPa", "max_pressure_outer", 1e-6),
-    ("axial_stiffness_N_per_um", "axial_stiffness", 1e-6),
-    ("friction_coefficient", "friction_coefficient", 1.0),
-    ("converged", "converged", None),
-    ("residual", "residual", 1.0),
-    ("iterations", "iterations", None),
-    ("status", "status", None),
-    ("method", "method", None),
-)
-
 
 def result_table(state):
     """The state as flat columns in engineering units (kN, rpm, deg, mm, um, N, N mm, Hz, MPa, N/um).
@@ -623,10 +593,6 @@ def result_table(state):
         Column name -> 1-D ndarray; the names carry the unit (``contact_angle_inner_deg``,
         ``axial_displacement_mm``, ``gyroscopic_moment_Nmm``, ...).
     """
-    cols = {}
-    for name, field, factor in _COLUMNS:
-        val = np.ravel(np.asarray(getattr(state, field)))
-        cols[name] = val if factor is None else val.astype(float) * factor
-    for name in ("axial_load_kN", "speed_rpm"):  # inputs: drop the last-bit noise of the unit round trip
-        cols[name] = np.array([float(f"{x:.12g}") for x in cols[name]])
-    return cols
+    from .. import tables  # the one place where results become engineering-unit columns
+
+    return tables.high_speed(state)

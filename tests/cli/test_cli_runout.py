@@ -10,7 +10,7 @@ from bearinglab import runout
 from bearinglab.cli import main
 from bearinglab.errors import ConvergenceError
 
-EXAMPLES = Path(__file__).parent.parent / "examples" / "runout"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "runout"
 EX1 = str(EXAMPLES / "example1_oversize_ball.toml")
 EX3 = str(EXAMPLES / "example3_mixed.toml")
 MC = str(EXAMPLES / "monte_carlo_reference.toml")

@@ -3,11 +3,14 @@
 ``runout`` is a sub-application whose callback does the single-angle / sequence computation when no
 subcommand is given; ``monte-carlo`` is its subcommand. Options of the callback written before the
 subcommand are rejected rather than silently ignored.
+
+Commands
+--------
+COMMANDS   the ``runout`` command group (with ``monte-carlo``), by name (the application adds it)
 """
 
 from __future__ import annotations
 
-import contextlib
 import math
 from pathlib import Path
 from typing import Annotated
@@ -15,10 +18,12 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from . import catalog as _catalog
-from . import runout
-from ._io import csv_text, write_text
-from .cli import (
+from .. import catalog as _catalog
+from .. import runout, tables
+from .._io import csv_text, write_text
+from ..errors import CatalogError, ConvergenceError, InputError
+from ..units import parse_quantity
+from ._common import (
     BearingName,
     CatalogFile,
     ExecutorOpt,
@@ -26,13 +31,11 @@ from .cli import (
     WorkersOpt,
     console,
     emit_json,
-    progress_bar,
+    execution,
     table,
 )
-from .errors import CatalogError, ConvergenceError, InputError
-from .units import parse_quantity
 
-__all__ = ["register"]
+__all__ = ["COMMANDS"]
 
 UM = 1e-6
 
@@ -67,11 +70,15 @@ PlotDir = Annotated[
 ]
 
 
+def _runout_figures():
+    from ..plots import runout as figures  # imports matplotlib: loaded only when --plot is given
+
+    return figures
+
+
 # ----------------------------------------------------------------------------- helpers
 def _geometry(geometry_file, bearing, catalog_file, first_ball_angle):
     """The geometry given by --geometry or --bearing (None when neither is given)."""
-    from . import _runout_io
-
     if geometry_file and bearing:
         raise InputError("geometry: give --geometry FILE or --bearing NAME, not both")
     theta1 = (
@@ -84,7 +91,7 @@ def _geometry(geometry_file, bearing, catalog_file, first_ball_angle):
         g = runout.geometry_from_bearing(_catalog.get(bearing, catalog=catalog_file))
     elif geometry_file:
         try:
-            g = _runout_io.read_geometry_file(geometry_file)
+            g = runout.files.load_geometry_file(geometry_file)
         except CatalogError as exc:
             if "no [geometry] table" not in str(exc):
                 raise
@@ -105,26 +112,11 @@ def _um(v):
 
 
 def _metrics_dict(m):
-    return {f"{name}_um": _um(getattr(m, name)) for name in runout.METRICS}
+    return tables.runout_metrics(m, runout.METRICS)
 
 
 def _geometry_dict(g):
-    return {
-        "balls": g.n_balls,
-        "ball_diameter_mm": 2e3 * g.ball_radius,
-        "pitch_diameter_mm": 2e3 * g.ball_centre_radius,
-        "outer_groove_radius_mm": 1e3 * g.outer_groove_radius,
-        "inner_groove_radius_mm": 1e3 * g.inner_groove_radius,
-        "outer_bottom_radius_mm": 1e3 * g.outer_bottom_radius,
-        "inner_bottom_radius_mm": 1e3 * g.inner_bottom_radius,
-        "contact_angle_deg": math.degrees(g.contact_angle),
-        "first_ball_angle_deg": math.degrees(g.first_ball_angle),
-        "groove_distance_mm": 1e3 * g.groove_distance,
-        "axial_offset_mm": 1e3 * g.axial_offset,
-        "inner_centre_radius_mm": 1e3 * g.inner_centre_radius,
-        "gamma": g.pitch_ratio,
-        "cage_ratio": g.cage_ratio,
-    }
+    return tables.record(g, tables.RUNOUT_GEOMETRY)
 
 
 def _single_dict(d, g):
@@ -363,25 +355,14 @@ def runout_command(
     FILE or with --bearing NAME. `runout monte-carlo --help` for the tolerance-class study.
     """
     if ctx.invoked_subcommand is not None:
-        given = [
-            f"--{k.replace('_', '-')}"
-            for k, v in ctx.params.items()
-            if v not in (None, False) and not (k == "start_angle" and v == "0 deg")
-        ]
-        if given:
-            raise InputError(
-                f"runout: {', '.join(given)} given before '{ctx.invoked_subcommand}'; write the "
-                f"options after the subcommand"
-            )
+        _reject_options_before(ctx)
         return
-    from . import _runout_io
-
     if errors is None:
         raise InputError(
             "errors: give the error file with --errors FILE (see examples/runout/README.md)"
         )
     g, theta1 = _geometry(geometry, bearing, catalog, first_ball_angle)
-    g, e = _runout_io.read_error_file(errors, g)
+    g, e = runout.files.load_error_file(errors, g)
     if theta1 is not None:
         g = g._replace(first_ball_angle=theta1)
     sequence = revolutions is not None or steps_per_rev is not None
@@ -394,20 +375,7 @@ def runout_command(
             "csv: --csv writes a trajectory; give --revolutions N (and --steps-per-rev M)"
         )
     if not sequence:
-        psi = 0.0 if angle is None else parse_quantity(angle, "angle", "angle", default_unit="deg")
-        d = runout.initial_displacement(psi, g, e, refine=refine, cage_ratio=cage_ratio)
-        info = _single_dict(d, g)
-        info["geometry"] = _geometry_dict(g)
-        if plot is not None:
-            from . import _runout_plots
-
-            info["figures"] = [str(p) for p in _runout_plots.save_single(d, plot)]
-        if json_out:
-            emit_json(info)
-        else:
-            _print_single(info)
-            if plot is not None:
-                console.print(f"figures: {', '.join(info['figures'])}")
+        _single(g, e, angle, refine, cage_ratio, plot, json_out)
         return
     revs = 3 if revolutions is None else revolutions
     steps = 360 if steps_per_rev is None else steps_per_rev
@@ -440,12 +408,45 @@ def runout_command(
         _atomic_write(csv_out, _trajectory_csv(t))
         info["csv"] = str(csv_out)
     if plot is not None:
-        from . import _runout_plots
-
-        info["figures"] = [str(p) for p in _runout_plots.save_sequence(t, spec, lines, plot)]
+        info["figures"] = [str(p) for p in _runout_figures().save_sequence(t, spec, lines, plot)]
     if json_out:
         emit_json(info)
         return
+    _print_sequence(info, t, lines, revs, steps, refine)
+
+
+def _reject_options_before(ctx):
+    """Options of ``runout`` written before its subcommand would be ignored: an error instead."""
+    given = [
+        f"--{k.replace('_', '-')}"
+        for k, v in ctx.params.items()
+        if v not in (None, False) and not (k == "start_angle" and v == "0 deg")
+    ]
+    if given:
+        raise InputError(
+            f"runout: {', '.join(given)} given before '{ctx.invoked_subcommand}'; write the "
+            f"options after the subcommand"
+        )
+
+
+def _single(g, e, angle, refine, cage_ratio, plot, json_out):
+    """The displacement at one rotation angle: compute, draw, print."""
+    psi = 0.0 if angle is None else parse_quantity(angle, "angle", "angle", default_unit="deg")
+    d = runout.initial_displacement(psi, g, e, refine=refine, cage_ratio=cage_ratio)
+    info = _single_dict(d, g)
+    info["geometry"] = _geometry_dict(g)
+    if plot is not None:
+        info["figures"] = [str(p) for p in _runout_figures().save_single(d, plot)]
+    if json_out:
+        emit_json(info)
+    else:
+        _print_single(info)
+        if plot is not None:
+            console.print(f"figures: {', '.join(info['figures'])}")
+
+
+def _print_sequence(info, t, lines, revs, steps, refine):
+    """The runout metrics, the spectral lines and the files written, of a rotation sequence."""
     _print_metrics(
         f"Runout over {revs} revolutions, {steps} steps per revolution (µm)",
         [
@@ -534,9 +535,8 @@ def monte_carlo_command(
     _check_write_worst(write_worst, worst_by, worst_dir)
     grade = runout.ball_grade(ball_grade)
     rings = runout.ring_class(ring_class)
-    ex = executor or "serial"
-    bar = progress_bar("Monte Carlo", ex) if progress else contextlib.nullcontext(None)
-    with bar as callback:  # rich for serial, dask's progress bar on a cluster; none off a terminal
+    # rich for serial, dask's progress bar on a cluster; none off a terminal
+    with execution("Monte Carlo", executor, workers, chunk_size, progress=progress) as ex:
         r = runout.monte_carlo(
             g,
             grade,
@@ -547,11 +547,27 @@ def monte_carlo_command(
             revolutions=revolutions,
             max_order=max_order,
             cage_ratio=cage_ratio,
-            chunk_size=chunk_size,
-            progress=callback,
-            executor=ex,
-            workers=workers,
+            execution=ex,
         )
+    info = _monte_carlo_info(r, g, grade, rings, samples, seed, steps_per_rev, revolutions, max_order)
+    if samples_csv is not None:
+        _atomic_write(samples_csv, _samples_csv(r, grade, rings, seed, samples, revolutions, steps_per_rev,
+                                                max_order))
+        info["samples_csv"] = str(samples_csv)
+    if write_worst is not None:
+        worst = runout.worst_samples(r, worst_by, write_worst)
+        files = runout.write_sample_error_files(worst_dir or Path("."), r, g, worst)
+        info["worst_error_files"] = [str(p) for p in files]
+    if plot is not None:
+        info["figures"] = [str(p) for p in _runout_figures().save_monte_carlo(r, plot)]
+    if json_out:
+        emit_json(info)
+        return
+    _print_monte_carlo(info, grade, rings, samples, seed)
+
+
+def _monte_carlo_info(r, g, grade, rings, samples, seed, steps_per_rev, revolutions, max_order):
+    """The inputs and the summary statistics of a Monte Carlo study, in µm."""
     info = {
         "samples": samples,
         "seed": seed,
@@ -576,48 +592,41 @@ def monte_carlo_command(
     for name in runout.METRICS:
         info[f"{name}_um"] = {k: v / UM for k, v in r.summary[name]._asdict().items()}
     info["degenerate_fraction_mean"] = float(np.mean(r.samples.degenerate_fraction))
-    if samples_csv is not None:
-        s = r.samples
-        rows = [
-            [
-                int(i),
-                f"{math.degrees(t1):.6f}",
-                *[f"{getattr(s, m)[k] / UM:.9f}" for m in runout.METRICS],
-                f"{s.degenerate_fraction[k]:.6f}",
-            ]
-            for k, (i, t1) in enumerate(zip(s.sample_index, s.first_ball_angle))
-        ]
-        _atomic_write(
-            samples_csv,
-            csv_text(
-                [
-                    "sample",
-                    "first_ball_angle_deg",
-                    *[f"{m}_um" for m in runout.METRICS],
-                    "degenerate_fraction",
-                ],
-                rows,
-                [
-                    (
-                        f"bearinglab runout monte-carlo: {grade.name} / {rings.name}, seed {seed}, {samples} samples, "
-                        f"{revolutions} rev x {steps_per_rev} steps, K_max {max_order}"
-                    ),
-                    "units: um",
-                ],
-            ),
-        )
-        info["samples_csv"] = str(samples_csv)
-    if write_worst is not None:
-        worst = runout.worst_samples(r, worst_by, write_worst)
-        files = runout.write_sample_error_files(worst_dir or Path("."), r, g, worst)
-        info["worst_error_files"] = [str(p) for p in files]
-    if plot is not None:
-        from . import _runout_plots
+    return info
 
-        info["figures"] = [str(p) for p in _runout_plots.save_monte_carlo(r, plot)]
-    if json_out:
-        emit_json(info)
-        return
+
+def _samples_csv(r, grade, rings, seed, samples, revolutions, steps_per_rev, max_order):
+    """The per-sample metrics as CSV text."""
+    s = r.samples
+    rows = [
+        [
+            int(i),
+            f"{math.degrees(t1):.6f}",
+            *[f"{getattr(s, m)[k] / UM:.9f}" for m in runout.METRICS],
+            f"{s.degenerate_fraction[k]:.6f}",
+        ]
+        for k, (i, t1) in enumerate(zip(s.sample_index, s.first_ball_angle))
+    ]
+    return csv_text(
+        [
+            "sample",
+            "first_ball_angle_deg",
+            *[f"{m}_um" for m in runout.METRICS],
+            "degenerate_fraction",
+        ],
+        rows,
+        [
+            (
+                f"bearinglab runout monte-carlo: {grade.name} / {rings.name}, seed {seed}, {samples} samples, "
+                f"{revolutions} rev x {steps_per_rev} steps, K_max {max_order}"
+            ),
+            "units: um",
+        ],
+    )
+
+
+def _print_monte_carlo(info, grade, rings, samples, seed):
+    """The summary table and the files written."""
     table(
         f"Monte Carlo {grade.name} / {rings.name}: {samples} samples, seed {seed} (µm)",
         ["metric", "mean", "std", "median", "p95", "max"],
@@ -644,6 +653,5 @@ def _check_write_worst(count, metric, directory):
         raise InputError("worst-dir: give --write-worst N too (the number of samples to write)")
 
 
-def register(app):
-    """Add ``runout`` (with its ``monte-carlo`` subcommand) to the command line."""
-    app.add_typer(runout_app, name="runout")
+#: The ``runout`` command group (with ``monte-carlo``), as the application adds it.
+COMMANDS = {"runout": runout_app}

@@ -1,4 +1,9 @@
-"""Command line of parameter sweeps: ``bearinglab sweep FILE.toml`` (see :mod:`bearinglab.sweep`)."""
+"""Command line of parameter sweeps: ``bearinglab sweep FILE.toml`` (see :mod:`bearinglab.sweep`).
+
+Commands
+--------
+COMMANDS   the ``sweep`` command, by name (the application adds it)
+"""
 
 from __future__ import annotations
 
@@ -8,20 +13,21 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from . import sweep as _sweep
-from .cli import (
+from .. import sweep as _sweep
+from .. import tables
+from ..errors import InputError
+from ._common import (
     ChunkSizeOpt,
     ExecutorOpt,
     JsonFlag,
     WorkersOpt,
     console,
     emit_json,
-    progress_bar,
+    execution,
     table,
 )
-from .errors import InputError
 
-__all__ = ["register"]
+__all__ = ["COMMANDS"]
 
 
 def sweep(
@@ -36,28 +42,27 @@ def sweep(
     target = out or spec.output
     if target is not None and Path(target).suffix not in (".csv", ".parquet"):
         raise InputError(f"out must end in .csv or .parquet, got {str(target)!r}")
-    ex = executor or spec.executor
-    with progress_bar(f"sweep {spec.model.name}", ex) as progress:
-        cols = _sweep.run_sweep(spec, executor=ex, workers=workers, chunk_size=chunk_size, memory_limit=memory_limit,
-                                progress=progress)
+    with execution(f"sweep {spec.model.name}", executor or spec.executor, workers, chunk_size,
+                   memory_limit=memory_limit) as ex:
+        cols = _sweep.run_sweep(spec, execution=ex)
     n = len(cols["converged"])
     failed = int(n - np.count_nonzero(cols["converged"]))
     if target is not None:
         _sweep.write_table(cols, target)
     summary = {"model": spec.model.name, "bearing": spec.bearing.designation, "cases": n, "failed": failed,
-               "executor": ex, "output": None if target is None else str(target)}
+               "executor": ex.executor, "output": None if target is None else str(target)}
     if json_out:
-        emit_json(dict(summary, results=[dict(zip(cols, row)) for row in zip(*[np.asarray(v).tolist() for v in cols.values()])]))
+        emit_json(dict(summary, results=tables.rows(cols)))
         return
     reasons = {}
     for r in np.asarray(cols["failure"])[~np.asarray(cols["converged"], dtype=bool)]:
         reasons[r] = reasons.get(r, 0) + 1
     table(f"Sweep of {spec.model.name} on {spec.bearing.designation}", ["quantity", "value"],
           [["cases", n], ["failed", failed]] + [[f"  {k}", v] for k, v in reasons.items()] +
-          [["executor", ex], ["output", summary["output"] or "(none: give --out or [output] file)"]])
+          [["executor", ex.executor], ["output", summary["output"] or "(none: give --out or [output] file)"]])
     if target is not None:
         console.print(f"wrote {target}", highlight=False)
 
 
-def register(app):
-    app.command("sweep")(sweep)
+#: The ``sweep`` command, as the application adds it.
+COMMANDS = {"sweep": sweep}

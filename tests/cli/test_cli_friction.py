@@ -14,7 +14,7 @@ from bearinglab.cli import main
 from bearinglab.errors import InputError
 from bearinglab.lab import analysis, calibration, fits, measurement, rig
 
-EXAMPLES = Path(__file__).resolve().parent.parent / "examples" / "friction"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "friction"
 RPM = 2 * math.pi / 60
 
 

@@ -3,6 +3,10 @@
 torque     handbook friction torque of a bearing under combined load (one-term, two-term, Palmgren)
 lab        a measurement-session file -> the three tasks, cross-checks, conclusions and the HTML report
 template   a blank, commented measurement-session file to start a new session
+
+Commands
+--------
+COMMANDS   the ``friction`` command group, by name (the application adds it)
 """
 
 from __future__ import annotations
@@ -14,13 +18,12 @@ from typing import Annotated
 
 import numpy as np
 import typer
-from rich.console import Console
-from rich.markup import escape
-from rich.table import Table
 
-from . import friction
-from .bearing import BallBearing
-from .cli import (
+from .. import friction, tables
+from ..bearing import BallBearing
+from ..errors import InputError
+from ..units import RPM, parse_quantity, parse_values
+from ._common import (
     BearingFile,
     BearingName,
     CatalogFile,
@@ -30,10 +33,9 @@ from .cli import (
     emit_json,
     resolve_bearing,
 )
-from .errors import InputError
-from .units import RPM, parse_quantity, parse_values
+from ._common import table as _table
 
-__all__ = ["friction_app", "register"]
+__all__ = ["COMMANDS"]
 
 friction_app = typer.Typer(
     help="Friction torque: handbook models and the friction-rig lab (spec 001).",
@@ -102,17 +104,7 @@ def _friction_bearing(
 def table(title, columns, rows, *, caption=None):
     """Print a table without truncating any cell: wider than the terminal rather than cut (numbers
     must never be shown as '0.34…')."""
-    t = Table(title=escape(title), caption=caption and escape(caption), header_style="bold")
-    for i, col in enumerate(columns):
-        t.add_column(escape(col), justify="left" if i == 0 else "right", no_wrap=True)
-    for row in rows:
-        t.add_row(*[escape(str(c)) for c in row])
-    Console(width=max(console.width, 200), highlight=False).print(t)
-
-
-def _sig(x):
-    """A converted input shown without round-trip noise (3000.0000000000005 rpm -> 3000.0)."""
-    return float(f"{x:.12g}")
+    _table(title, columns, rows, caption=caption, wide=True)
 
 
 def _case_values(text, kind, name):
@@ -238,15 +230,7 @@ def torque(
         mean_diameter,
         static_load_rating,
     )
-    fr = _case_values(radial_load, "force", "radial-load")
-    fa = _case_values(axial_load, "force", "axial-load")
-    n = _case_values(speed, "speed", "speed")
-    sizes = {v.size for v in (fr, fa, n) if v.size > 1}
-    if len(sizes) > 1:
-        raise InputError(
-            "radial-load, axial-load, speed: lists must have the same length (or one value)"
-        )
-    fr, fa, n = np.broadcast_arrays(fr, fa, n)
+    fr, fa, n = _cases(radial_load, axial_load, speed)
     angle = b.contact_angle if b.type == "angular" else None
     if b.type == "angular" and angle is None and (x0 is None or y0 is None):
         raise InputError(
@@ -262,66 +246,16 @@ def torque(
         y0_used = float(y_tab) if y0 is None else y0
     info = {"bearing": b.designation, "type": b.type, "model": model, "x0": x0_used, "y0": y0_used}
     if model == "one-term":
-        d = b.require("bore")
-        mu_used = friction.handbook_friction_coefficient(b.type) if mu is None else mu
-        total = np.atleast_1d(
-            friction.one_term(p0, d, bearing_type=b.type, friction_coefficient=mu)
-        )
-        speed_term, load_term = np.zeros_like(total), total  # one term, proportional to the load
-        info.update({"mu": mu_used, "bore_mm": d * 1e3})
+        speed_term, load_term = _one_term(b, p0, mu, info)
     else:
-        dm = b.mean_diameter
-        c0 = b.require("static_load_rating")
-        f_used, c_used = f, c
-        if f is None or c is None:
-            f_tab, c_tab = friction.load_term_constants(b.type, angle)
-            f_used = float(f_tab) if f is None else f
-            c_used = float(c_tab) if c is None else c
-        load_term = np.atleast_1d(
-            friction.load_term(
-                p0,
-                dm,
-                c0,
-                bearing_type=b.type,
-                contact_angle=angle,
-                load_term_factor=f_used,
-                load_term_exponent=c_used,
-            )
-        )
-        if model == "two-term":
-            if f0 is None:
-                raise InputError(
-                    "f0: the two-term model needs --f0 [N·mm⁻²·min^(2/3)], e.g. 2e-7; it has no handbook "
-                    "value (measure it with `bearinglab friction lab`, task 2)"
-                )
-            speed_term = np.atleast_1d(friction.speed_term(n, dm, f0))
-            info["f0"] = f0
-        else:
-            if viscosity is None or palmgren_f0 is None:
-                raise InputError(
-                    "viscosity: the palmgren model needs --viscosity (e.g. '20 cSt') and --palmgren-f0 "
-                    "(e.g. 2)"
-                )
-            nu = parse_quantity(viscosity, "kinematic_viscosity", "viscosity")
-            speed_term = np.atleast_1d(friction.palmgren(nu, n, dm, palmgren_f0))
-            info.update(
-                {
-                    "viscosity_cSt": nu * 1e6,
-                    "palmgren_f0": palmgren_f0,
-                    "equivalent_f0": float(
-                        friction.speed_term_factor_from_palmgren(palmgren_f0, nu)
-                    ),
-                }
-            )
-        total = speed_term + load_term
-        info.update(
-            {"f": f_used, "c": c_used, "mean_diameter_mm": dm * 1e3, "static_load_rating_N": c0}
-        )
+        speed_term, load_term = _two_term(b, model, angle, p0, n, f, c, f0, viscosity, palmgren_f0, info)
+    total = speed_term + load_term
+    rpm = tables.significant(n / RPM)  # a converted input shown without round-trip noise
     cases = [
         {
             "radial_load_N": float(fr[i]),
             "axial_load_N": float(fa[i]),
-            "speed_rpm": _sig(n[i] / RPM),
+            "speed_rpm": float(rpm[i]),
             "equivalent_static_load_N": float(p0[i]),
             "branch": "x0*Fr+y0*Fa" if combined[i] else "Fr",
             "torque_Nmm": float(total[i] * 1e3),
@@ -333,6 +267,84 @@ def torque(
     if json_out:
         emit_json({**info, **cases[0]} if len(cases) == 1 else {**info, "cases": cases})
         return
+    _print_torque(b, model, info, cases)
+
+
+def _cases(radial_load, axial_load, speed):
+    """The radial loads, axial loads and speeds (SI), broadcast to one length."""
+    fr = _case_values(radial_load, "force", "radial-load")
+    fa = _case_values(axial_load, "force", "axial-load")
+    n = _case_values(speed, "speed", "speed")
+    sizes = {v.size for v in (fr, fa, n) if v.size > 1}
+    if len(sizes) > 1:
+        raise InputError(
+            "radial-load, axial-load, speed: lists must have the same length (or one value)"
+        )
+    return np.broadcast_arrays(fr, fa, n)
+
+
+def _one_term(b, p0, mu, info):
+    """Speed and load terms of the one-term model (the whole torque is the load term)."""
+    d = b.require("bore")
+    mu_used = friction.handbook_friction_coefficient(b.type) if mu is None else mu
+    total = np.atleast_1d(friction.one_term(p0, d, bearing_type=b.type, friction_coefficient=mu))
+    info.update({"mu": mu_used, "bore_mm": d * 1e3})
+    return np.zeros_like(total), total  # one term, proportional to the load
+
+
+def _two_term(b, model, angle, p0, n, f, c, f0, viscosity, palmgren_f0, info):
+    """Speed and load terms of the two-term and the Palmgren model; the constants used go to ``info``."""
+    dm = b.mean_diameter
+    c0 = b.require("static_load_rating")
+    f_used, c_used = f, c
+    if f is None or c is None:
+        f_tab, c_tab = friction.load_term_constants(b.type, angle)
+        f_used = float(f_tab) if f is None else f
+        c_used = float(c_tab) if c is None else c
+    load_term = np.atleast_1d(
+        friction.load_term(
+            p0,
+            dm,
+            c0,
+            bearing_type=b.type,
+            contact_angle=angle,
+            load_term_factor=f_used,
+            load_term_exponent=c_used,
+        )
+    )
+    if model == "two-term":
+        if f0 is None:
+            raise InputError(
+                "f0: the two-term model needs --f0 [N·mm⁻²·min^(2/3)], e.g. 2e-7; it has no handbook "
+                "value (measure it with `bearinglab friction lab`, task 2)"
+            )
+        speed_term = np.atleast_1d(friction.speed_term(n, dm, f0))
+        info["f0"] = f0
+    else:
+        if viscosity is None or palmgren_f0 is None:
+            raise InputError(
+                "viscosity: the palmgren model needs --viscosity (e.g. '20 cSt') and --palmgren-f0 "
+                "(e.g. 2)"
+            )
+        nu = parse_quantity(viscosity, "kinematic_viscosity", "viscosity")
+        speed_term = np.atleast_1d(friction.palmgren(nu, n, dm, palmgren_f0))
+        info.update(
+            {
+                "viscosity_cSt": nu * 1e6,
+                "palmgren_f0": palmgren_f0,
+                "equivalent_f0": float(
+                    friction.speed_term_factor_from_palmgren(palmgren_f0, nu)
+                ),
+            }
+        )
+    info.update(
+        {"f": f_used, "c": c_used, "mean_diameter_mm": dm * 1e3, "static_load_rating_N": c0}
+    )
+    return speed_term, load_term
+
+
+def _print_torque(b, model, info, cases):
+    """The torque table, with the constants used in the caption."""
     consts = ", ".join(
         f"{k} = {v:g}"
         for k, v in info.items()
@@ -381,8 +393,8 @@ def lab(
     json_out: JsonFlag = False,
 ):
     """Reduce a friction-rig session (spec 001): tasks 1-3, cross-checks, conclusions, and the HTML report."""
-    from . import report
-    from .lab import analysis, measurement
+    from .. import report
+    from ..lab import analysis, measurement
 
     session = measurement.read_session(file)
     result = analysis.analyse(session)
@@ -471,7 +483,7 @@ def template(
     force: Annotated[bool, typer.Option("--force", help="Replace an existing file.")] = False,
 ):
     """Write a blank, commented measurement-session file for a new session."""
-    from .lab import measurement
+    from ..lab import measurement
 
     if file is None or str(file) == "-":
         sys.stdout.write(measurement.template(bearing=bearing))
@@ -485,9 +497,9 @@ def template(
     )
 
 
-def register(app):
-    """Add the ``friction`` command group to the application."""
-    friction_app.command("torque")(torque)
-    friction_app.command("lab")(lab)
-    friction_app.command("template")(template)
-    app.add_typer(friction_app, name="friction")
+friction_app.command("torque")(torque)
+friction_app.command("lab")(lab)
+friction_app.command("template")(template)
+
+#: The ``friction`` command group, as the application adds it.
+COMMANDS = {"friction": friction_app}

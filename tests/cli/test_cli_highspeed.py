@@ -1,6 +1,7 @@
 """Command line of the high-speed model (spec 004): ``bearinglab high-speed``, single cases and sweeps."""
 
 import csv
+import dataclasses
 import json
 import math
 
@@ -172,7 +173,8 @@ def test_long_sweep_shows_a_progress_bar_on_stderr(capsys, monkeypatch):
     """A terminal gets a progress bar on stderr during long sweeps; stdout stays one JSON array."""
     from rich.console import Console
 
-    from bearinglab import _cli_highspeed, cli
+    from bearinglab.cli import _common
+    from bearinglab.cli import high_speed as command
 
     seen = []
 
@@ -180,16 +182,16 @@ def test_long_sweep_shows_a_progress_bar_on_stderr(capsys, monkeypatch):
         def __init__(self):
             super().__init__(stderr=True, force_terminal=True, width=80)
 
-    monkeypatch.setattr(_cli_highspeed, "_PROGRESS_MIN_CASES", 4)
-    monkeypatch.setattr(_cli_highspeed, "_CHUNK", 3)
-    monkeypatch.setattr(cli, "_stderr_console", Terminal)
+    monkeypatch.setattr(command, "_PROGRESS_MIN_CASES", 4)
+    monkeypatch.setattr(command, "_CHUNK", 3)
+    monkeypatch.setattr(_common, "_stderr_console", Terminal)
     real = quasistatic.sweep
 
-    def spy(*args, progress=None, **kw):
+    def spy(*args, execution=None, **kw):
         def report(done, total):
             seen.append((done, total))
-            progress(done, total)
-        return real(*args, progress=report, **kw)
+            execution.progress(done, total)
+        return real(*args, execution=dataclasses.replace(execution, progress=report), **kw)
 
     monkeypatch.setattr(quasistatic, "sweep", spy)
     code, out, _err = run(capsys, "high-speed", "-b", "B218", "-F", "5kN,20kN", "-n", "0,3000,6000,15000rpm", "--json")

@@ -1,4 +1,9 @@
-"""Command line of the test-stand method (spec 000): ``axial-angle`` and ``stand-load``."""
+"""Command line of the test-stand method (spec 000): ``axial-angle`` and ``stand-load``.
+
+Commands
+--------
+COMMANDS   the ``axial-angle`` and ``stand-load`` commands, by name (the application adds them)
+"""
 
 from __future__ import annotations
 
@@ -8,8 +13,10 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from . import static
-from .cli import (
+from .. import stand, tables
+from ..errors import InputError
+from ..units import KGF, format_dms, parse_values, to_dms, to_rpm
+from ._common import (
     BallDiameter,
     BallMaterial,
     Balls,
@@ -29,10 +36,8 @@ from .cli import (
     resolve_bearing,
     table,
 )
-from .errors import InputError
-from .units import KGF, format_dms, parse_values, to_dms, to_rpm
 
-__all__ = ["register"]
+__all__ = ["COMMANDS"]
 
 
 def _angle_row(row, legacy):
@@ -69,7 +74,7 @@ def axial_angle(
     scalar = loads.size == 1
     # the paper prints two rows; legacy mode reproduces exactly those unless --rows says otherwise
     max_rows = rows if rows is not None else (2 if legacy else None)
-    r = static.stand_analysis(b, loads[0] if scalar else loads, hertz=hertz, reproduce_print=legacy, x0=x0,
+    r = stand.stand_analysis(b, loads[0] if scalar else loads, hertz=hertz, reproduce_print=legacy, x0=x0,
                               max_rows=max_rows, elastic_constant=elastic_constant)
     c = r.constants
     base = {
@@ -113,32 +118,40 @@ def axial_angle(
         if json_out:
             emit_json(out)
             return
-        table(f"Bearing {b.designation}: contact constants ({hertz} Hertz)", ["quantity", "inner (в)", "outer (н)"], [
-            ["Σρ [1/mm]", f"{out['curvature_sum_inner_per_mm']:.7f}", f"{out['curvature_sum_outer_per_mm']:.7f}"],
-            ["cos τ", f"{out['cos_tau_inner']:.7f}", f"{out['cos_tau_outer']:.7f}"],
-            ["2K/(πμ)", f"{out['delta_star_inner']:.5f}", f"{out['delta_star_outer']:.5f}"],
-            ["c [(cm²/kgf)^(2/3)]", f"{out['c_inner_cm2_per_kgf_2_3']:.6e}", f"{out['c_outer_cm2_per_kgf_2_3']:.6e}"],
-        ], caption=f"α0 = {out['contact_angle_initial_deg']:g}°, γ = {c.gamma:.6f}, C* = {c.force_characteristic_kgf:.2f} kgf = {c.force_characteristic:.1f} N")
-        table(f"Iterations at F_a = {out['axial_load_kgf']:.4g} kgf ({out['axial_load_N']:.4g} N)" + (" — legacy rounding" if legacy else ""),
-              ["k", "x_k [rad]", "α [deg]", "α [D°M′S″]", "ξ_a", "F_a,k [kgf]", "Δ [%]"],
-              [[i["k"], f"{i['x_rad']:.7f}", f"{i['contact_angle_deg']:.6f}", i["contact_angle_dms"],
-                f"{i['axial_displacement_ratio']:.7f}", f"{i['axial_load_kgf']:.5f}", f"{i['error_percent']:.3g}"]
-               for i in out["iterations"]])
-        console.print(f"operating contact angle {out['operating_contact_angle_deg']:.6f}° ({out['operating_contact_angle_dms']}), "
-                      f"+{out['contact_angle_increment_deg']:.4f}° over α0; axial displacement {out['axial_displacement_mm'] * 1e3:.3f} µm; "
-                      f"ball load {out['ball_load_N']:.4g} N ({out['ball_load_kgf']:.4g} kgf)", highlight=False)
+        _print_single(b, c, out, hertz, legacy)
         return
-    cases = [{"axial_load_N": float(f), "axial_load_kgf": float(f) / KGF, "operating_contact_angle_deg": math.degrees(a),
-              "axial_displacement_ratio": float(xa), "axial_displacement_mm": float(da) * 1e3, "ball_load_N": float(q),
-              "converged": True}
-             for f, a, xa, da, q in zip(r.axial_load, r.contact_angle, r.axial_displacement_ratio, r.axial_displacement, r.ball_load)]
+    cases = [dict(row, converged=True) for row in tables.rows(tables.columns(r, tables.AXIAL_ANGLE))]
     if json_out:
         emit_json(dict(base, cases=cases))
         return
-    table(f"Bearing {b.designation}: operating contact angle ({hertz} Hertz, C* = {c.force_characteristic_kgf:.2f} kgf)",
-          ["F_a [kgf]", "F_a [N]", "α [deg]", "ξ_a", "δ_a [µm]", "ball load [N]"],
+    cstar = np.broadcast_to(c.force_characteristic_kgf, len(cases))
+    if np.ndim(c.force_characteristic_kgf) == 0:  # C* at alpha0: one value for all loads, in the title
+        title, head, extra = f"{hertz} Hertz, C* = {float(cstar[0]):.2f} kgf", [], [[] for _ in cases]
+    else:  # C* at each load's operating angle: a column
+        title, head, extra = f"{hertz} Hertz, C* at the operating angle", ["C* [kgf]"], [[f"{v:.2f}"] for v in cstar]
+    table(f"Bearing {b.designation}: operating contact angle ({title})",
+          ["F_a [kgf]", "F_a [N]", "α [deg]", "ξ_a", "δ_a [µm]", "ball load [N]", *head],
           [[f"{x['axial_load_kgf']:.4g}", f"{x['axial_load_N']:.4g}", f"{x['operating_contact_angle_deg']:.5f}",
-            f"{x['axial_displacement_ratio']:.6f}", f"{x['axial_displacement_mm'] * 1e3:.3f}", f"{x['ball_load_N']:.4g}"] for x in cases])
+            f"{x['axial_displacement_ratio']:.6f}", f"{x['axial_displacement_mm'] * 1e3:.3f}", f"{x['ball_load_N']:.4g}",
+            *e] for x, e in zip(cases, extra)])
+
+
+def _print_single(b, c, out, hertz, legacy):
+    """The tables of one load: contact constants, iterations, and the result line."""
+    table(f"Bearing {b.designation}: contact constants ({hertz} Hertz)", ["quantity", "inner (в)", "outer (н)"], [
+        ["Σρ [1/mm]", f"{out['curvature_sum_inner_per_mm']:.7f}", f"{out['curvature_sum_outer_per_mm']:.7f}"],
+        ["cos τ", f"{out['cos_tau_inner']:.7f}", f"{out['cos_tau_outer']:.7f}"],
+        ["2K/(πμ)", f"{out['delta_star_inner']:.5f}", f"{out['delta_star_outer']:.5f}"],
+        ["c [(cm²/kgf)^(2/3)]", f"{out['c_inner_cm2_per_kgf_2_3']:.6e}", f"{out['c_outer_cm2_per_kgf_2_3']:.6e}"],
+    ], caption=f"α0 = {out['contact_angle_initial_deg']:g}°, γ = {c.gamma:.6f}, C* = {c.force_characteristic_kgf:.2f} kgf = {c.force_characteristic:.1f} N")
+    table(f"Iterations at F_a = {out['axial_load_kgf']:.4g} kgf ({out['axial_load_N']:.4g} N)" + (" — legacy rounding" if legacy else ""),
+          ["k", "x_k [rad]", "α [deg]", "α [D°M′S″]", "ξ_a", "F_a,k [kgf]", "Δ [%]"],
+          [[i["k"], f"{i['x_rad']:.7f}", f"{i['contact_angle_deg']:.6f}", i["contact_angle_dms"],
+            f"{i['axial_displacement_ratio']:.7f}", f"{i['axial_load_kgf']:.5f}", f"{i['error_percent']:.3g}"]
+           for i in out["iterations"]])
+    console.print(f"operating contact angle {out['operating_contact_angle_deg']:.6f}° ({out['operating_contact_angle_dms']}), "
+                  f"+{out['contact_angle_increment_deg']:.4f}° over α0; axial displacement {out['axial_displacement_mm'] * 1e3:.3f} µm; "
+                  f"ball load {out['ball_load_N']:.4g} N ({out['ball_load_kgf']:.4g} kgf)", highlight=False)
 
 
 def stand_load(
@@ -158,10 +171,8 @@ def stand_load(
     if np.any(speeds < 0):
         raise InputError(f"speed must be >= 0 [rpm], got {float(to_rpm(speeds[speeds < 0][0]))!r} rpm")
     z, d, dm, a = b.require("n_balls", "ball_diameter", "pitch_diameter", "contact_angle")
-    res = static.min_axial_load(speeds, z, d, dm, a)
-    rows = [{"speed_rpm": float(to_rpm(n)), "min_axial_load_kgf": float(lo) / KGF, "min_axial_load_N": float(lo),
-             "max_axial_load_kgf": float(hi) / KGF, "max_axial_load_N": float(hi)}
-            for n, lo, hi in zip(speeds, np.atleast_1d(res.minimum), np.atleast_1d(res.maximum))]
+    res = stand.min_axial_load(speeds, z, d, dm, a)
+    rows = tables.rows(tables.stand_load(speeds, res))
     if json_out:
         emit_json(dict(rows[0], bearing=b.designation, contact_angle_deg=math.degrees(a)) if len(rows) == 1 else rows)
         return
@@ -171,6 +182,5 @@ def stand_load(
             f"{r['max_axial_load_kgf']:.4g}", f"{r['max_axial_load_N']:.4g}"] for r in rows])
 
 
-def register(app):
-    app.command("axial-angle")(axial_angle)
-    app.command("stand-load")(stand_load)
+#: The ``axial-angle`` and ``stand-load`` commands, as the application adds them.
+COMMANDS = {"axial-angle": axial_angle, "stand-load": stand_load}

@@ -1,4 +1,9 @@
-"""Command line of the characteristic frequencies: ``frequencies`` (with the spectral mask)."""
+"""Command line of the characteristic frequencies: ``frequencies`` (with the spectral mask).
+
+Commands
+--------
+COMMANDS   the ``frequencies`` command, by name (the application adds it)
+"""
 
 from __future__ import annotations
 
@@ -9,9 +14,10 @@ from typing import Annotated
 
 import typer
 
-from . import kinematics, static
-from ._cli_highspeed import write_csv
-from .cli import (
+from .. import kinematics, stand, tables
+from ..errors import InputError
+from ..units import KGF, format_dms, parse_quantity
+from ._common import (
     BallDiameter,
     BallMaterial,
     Balls,
@@ -26,15 +32,15 @@ from .cli import (
     OuterConformity,
     OuterRadius,
     PitchDiameter,
+    choice,
     console,
+    emit_csv,
     emit_json,
     resolve_bearing,
     table,
 )
-from .errors import InputError
-from .units import KGF, format_dms, parse_quantity
 
-__all__ = ["register"]
+__all__ = ["COMMANDS"]
 
 _HZ = 2.0 * math.pi  # rad/s per Hz (rev/s)
 _LABELS = {
@@ -57,15 +63,6 @@ def _band(text):
     if not 0.0 < value < 200.0:
         raise InputError(f"band must be in (0, 200) [%], got {value:g} %")
     return value / 100.0
-
-
-def _keys(freqs, shaft_hz, names=kinematics.FAMILIES[1:]):
-    out = {}
-    for name in names:
-        hz = float(getattr(freqs, name)) / _HZ
-        out[f"{name}_hz"] = hz
-        out[f"{name}_order"] = hz / abs(shaft_hz) if shaft_hz else None
-    return out
 
 
 def frequencies(
@@ -144,8 +141,36 @@ def frequencies(
         radial_clearance,
         ball_material,
     )
+    w_in, w_out, fa, band_fraction = _read(speed, outer_speed, axial_load, hertz, harmonics, sidebands, band)
+    choice("elastic-constant", elastic_constant, ("materials", "paper"))
+    out, angle = _frequencies(b, w_in, w_out, fa, hertz, elastic_constant)
+    mask_rows = []
+    if mask or csv_file is not None:
+        mask_rows = _mask(b, w_in, w_out, angle, harmonics, sidebands, band_fraction)
+        if csv_file is not None:  # None (no order at zero shaft speed) is written as an empty cell
+            emit_csv(csv_file, {c: [r[c] for r in mask_rows] for c in mask_rows[0]})
+    if mask:
+        out["mask"] = {
+            "harmonics": harmonics,
+            "sidebands": sidebands,
+            "band_percent": band_fraction * 100.0,
+            "lines": mask_rows,
+        }
+    if json_out:
+        emit_json(out)
+        return
+    _print(b, out, mask_rows if mask else None)
+    if csv_file is not None:
+        console.print(
+            f"spectral mask ({len(mask_rows)} lines) written to {csv_file}", highlight=False
+        )
+
+
+def _read(speed, outer_speed, axial_load, hertz, harmonics, sidebands, band):
+    """The options in SI, checked: ring speeds, axial load (or None), band as a fraction."""
     if hertz not in ("exact", "table"):
         raise InputError(f"hertz must be one of ['exact', 'table'], got {hertz!r}")
+
     w_in = parse_quantity(speed, "speed", "speed")
     w_out = parse_quantity(outer_speed, "speed", "outer-speed")
     if w_in == w_out:
@@ -158,6 +183,15 @@ def frequencies(
         raise InputError(f"harmonics must be an integer >= 1 [-], got {harmonics}")
     if sidebands < 0:
         raise InputError(f"sidebands must be an integer >= 0 [-], got {sidebands}")
+    fa = None
+    if axial_load is not None:
+        fa = parse_quantity(axial_load, "force", "axial-load")
+    return w_in, w_out, fa, band_fraction
+
+
+def _frequencies(b, w_in, w_out, fa, hertz, elastic_constant):
+    """Frequencies at the nominal angle, or at the operating angle under ``fa`` with the shift; and
+    the angle [rad] they are at."""
     z, d, dm, a0 = b.require("n_balls", "ball_diameter", "pitch_diameter", "contact_angle")
     out = {
         "bearing": b.designation,
@@ -165,11 +199,10 @@ def frequencies(
         "outer_speed_rpm": w_out / _HZ * 60.0,
     }
     shaft_hz = w_in / _HZ
-    if axial_load is not None:
-        fa = parse_quantity(axial_load, "force", "axial-load")
+    if fa is not None:
         if not fa > 0:
             raise InputError(f"axial-load must be > 0 [N], got {fa!r} N")
-        angle = float(static.stand_analysis(b, fa, hertz=hertz, elastic_constant=elastic_constant).contact_angle)
+        angle = float(stand.stand_analysis(b, fa, hertz=hertz, elastic_constant=elastic_constant).contact_angle)
         out.update(axial_load_N=fa, axial_load_kgf=fa / KGF, hertz=hertz)
     else:
         angle = a0
@@ -181,72 +214,49 @@ def frequencies(
         shaft_hz=shaft_hz,
         outer_hz=w_out / _HZ,
     )
-    out.update(_keys(shift.operating, shaft_hz))
+    out.update(tables.frequencies(shift.operating, w_in))
     out["nominal"] = dict(
-        contact_angle_deg=math.degrees(a0), shaft_hz=shaft_hz, **_keys(shift.nominal, shaft_hz)
+        contact_angle_deg=math.degrees(a0), shaft_hz=shaft_hz, **tables.frequencies(shift.nominal, w_in)
     )
     out["shift_hz"] = {n: float(getattr(shift.shift, n)) / _HZ for n in kinematics.FAMILIES[1:]}
     out["shift_percent"] = {
         n: float(getattr(shift.shift_percent, n)) for n in kinematics.FAMILIES[1:]
     }
-    mask_rows = []
-    if mask or csv_file is not None:
-        m = kinematics.spectral_mask(
-            w_in,
-            d,
-            dm,
-            z,
-            angle,
-            outer_speed=w_out,
-            harmonics=harmonics,
-            sidebands=sidebands,
-            band=band_fraction,
-        )
-        for name, h, mod, k, f, lo, hi in zip(
-            m.name,
-            m.harmonic,
-            m.modulation,
-            m.sideband,
-            m.frequency / _HZ,
-            m.low / _HZ,
-            m.high / _HZ,
-        ):
-            mask_rows.append(
-                {
-                    "name": str(name),
-                    "harmonic": int(h),
-                    "modulation": str(mod),
-                    "sideband": int(k),
-                    "frequency_hz": float(f),
-                    "low_hz": float(lo),
-                    "high_hz": float(hi),
-                    "order": float(f) / abs(shaft_hz) if shaft_hz else None,
-                }
-            )
-        if csv_file is not None:  # None (no order at zero shaft speed) is written as an empty cell
-            write_csv(csv_file, {c: [r[c] for r in mask_rows] for c in mask_rows[0]})
-    if mask:
-        out["mask"] = {
-            "harmonics": harmonics,
-            "sidebands": sidebands,
-            "band_percent": band_fraction * 100.0,
-            "lines": mask_rows,
-        }
-    if json_out:
-        emit_json(out)
-        return
-    loaded = axial_load is not None
+    return out, angle
+
+
+def _mask(b, w_in, w_out, angle, harmonics, sidebands, band_fraction):
+    """The lines of the spectral mask at the angle of the frequencies (Hz and orders)."""
+    z, d, dm = b.require("n_balls", "ball_diameter", "pitch_diameter")
+    m = kinematics.spectral_mask(
+        w_in,
+        d,
+        dm,
+        z,
+        angle,
+        outer_speed=w_out,
+        harmonics=harmonics,
+        sidebands=sidebands,
+        band=band_fraction,
+    )
+    return tables.rows(tables.spectral_mask(m, w_in))
+
+
+def _print(b, out, mask_rows):
+    """The frequencies (and the shift under load) as tables; the mask too if ``mask_rows`` is given."""
+    loaded = "axial_load_N" in out
+    shaft_hz, outer_hz = out["shaft_hz"], out["outer_hz"]
     speeds = f"shaft {out['speed_rpm']:g} rpm = {shaft_hz:.6g} Hz"
-    if w_out:
-        speeds += f", outer ring {out['outer_speed_rpm']:g} rpm = {w_out / _HZ:.6g} Hz"
+    if outer_hz:
+        speeds += f", outer ring {out['outer_speed_rpm']:g} rpm = {outer_hz:.6g} Hz"
     console.print(
-        f"Bearing {b.designation}: {speeds}; nominal contact angle {math.degrees(a0):.4f}°",
+        f"Bearing {b.designation}: {speeds}; nominal contact angle {out['nominal_contact_angle_deg']:.4f}°",
         highlight=False,
     )
     if loaded:
         console.print(
-            f"operating contact angle at {out['axial_load_kgf']:.4g} kgf ({fa:.4g} N): "
-            f"{math.degrees(angle):.4f}° = {format_dms(angle)} ({hertz} Hertz)",
+            f"operating contact angle at {out['axial_load_kgf']:.4g} kgf ({out['axial_load_N']:.4g} N): "
+            f"{out['contact_angle_deg']:.4f}° = {out['contact_angle_dms']} ({out['hertz']} Hertz)",
             highlight=False,
         )
     columns = ["frequency", "nominal [Hz]" if loaded else "f [Hz]", "order"]
@@ -265,9 +275,10 @@ def frequencies(
             ]
         rows.append(row)
     table("Characteristic frequencies", columns, rows)
-    if mask:
+    if mask_rows is not None:
+        m = out["mask"]
         table(
-            f"Spectral mask: harmonics 1..{harmonics}, sidebands ±1..{sidebands}, band {band_fraction * 100:g} %",
+            f"Spectral mask: harmonics 1..{m['harmonics']}, sidebands ±1..{m['sidebands']}, band {m['band_percent']:g} %",
             ["line", "h", "sideband", "f [Hz]", "low [Hz]", "high [Hz]", "order"],
             [
                 [
@@ -282,10 +293,6 @@ def frequencies(
                 for r in mask_rows
             ],
         )
-    if csv_file is not None:
-        console.print(
-            f"spectral mask ({len(mask_rows)} lines) written to {csv_file}", highlight=False
-        )
 
 
 def _order(x):
@@ -298,5 +305,5 @@ def _sideband(row):
     return f"{row['sideband']:+d}×{_LABELS[row['modulation']].split(' ')[0]}"
 
 
-def register(app):
-    app.command("frequencies")(frequencies)
+#: The ``frequencies`` command, as the application adds it.
+COMMANDS = {"frequencies": frequencies}

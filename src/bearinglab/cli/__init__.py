@@ -1,0 +1,116 @@
+"""The ``bearinglab`` command line. It calls public functions only; every number it prints can be had
+from Python.
+
+Commands
+--------
+catalog list | show NAME       the bearings known (built-in and user catalogs)        cli/catalog.py
+axial-angle                    operating contact angle under axial load (spec 000)    cli/stand.py
+stand-load                     minimum axial load on a test stand (spec 000 section 3) cli/stand.py
+frequencies                    characteristic frequencies and the spectral mask       cli/frequencies.py
+sweep FILE                     a model over a grid of parameters (sweep files)        cli/sweep.py
+high-speed                     high-speed quasi-static model under thrust (spec 004)  cli/high_speed.py
+friction torque | lab | template   friction torque models and the friction-rig lab   cli/friction.py
+runout | runout monte-carlo    manufacturing errors -> inner-ring runout (spec 003)   cli/runout.py
+
+Each command module defines ``COMMANDS`` (command name -> function, or a Typer group); the options
+every command shares (bearing, execution, JSON) and the output helpers are in ``cli/_common.py``, so
+no command module imports this package. Importing this package builds the whole application: :data:`app` lists every
+command, for the console script, ``python -m bearinglab``, test runners and documentation tools alike.
+
+Errors in the input print one line on stderr and exit with code 2; a solver that does not converge
+prints one line and exits with code 3. No traceback reaches the user.
+
+Functions
+---------
+main   run the command line with a list of arguments; returns the exit code
+run    the console-script entry point (``bearinglab``): ``sys.exit(main())``
+"""
+
+from __future__ import annotations
+
+import sys
+
+import typer
+
+from .. import __version__
+from ..errors import ConvergenceError, InputError
+from . import catalog, frequencies, friction, high_speed, runout, stand, sweep
+
+__all__ = ["app", "main", "run"]
+
+# typer >= 0.20 vendors click and raises its own exception classes, older typer raises click's: the
+# usage error is the base class named so of typer's BadParameter either way (click is not a dependency).
+_USAGE_ERRORS = tuple(c for c in typer.BadParameter.__mro__ if c.__name__ == "UsageError")
+
+
+def _version(value: bool):
+    if value:
+        print(f"bearinglab {__version__}")
+        raise typer.Exit()
+
+
+app = typer.Typer(
+    name="bearinglab",
+    help="Ball-bearing mechanics: test-stand contact angles, Hertz contact, friction torque, runout, high-speed model.",
+    no_args_is_help=True,
+    pretty_exceptions_enable=False,
+    add_completion=False,
+    context_settings={"help_option_names": ["-h", "--help"]},
+)
+
+
+@app.callback()
+def _main_options(
+    version: bool = typer.Option(False, "--version", help="Print the version and exit.", is_eager=True,
+                                 callback=_version),
+):
+    """Ball-bearing mechanics: test-stand contact angles, Hertz contact, friction torque, runout, high-speed model."""
+
+
+for _module in (catalog, stand, frequencies, sweep, high_speed, friction, runout):
+    for _name, _command in _module.COMMANDS.items():
+        if isinstance(_command, typer.Typer):
+            app.add_typer(_command, name=_name)
+        else:
+            app.command(_name)(_command)
+
+
+def main(argv=None) -> int:
+    """Run the command line; return the exit code instead of raising (tests call this).
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments after the program name; ``None`` reads ``sys.argv``.
+
+    Returns
+    -------
+    int
+        0 on success, 2 for invalid input (one line on stderr), 3 for a solve that did not converge.
+    """
+    try:
+        rv = app(args=argv, prog_name="bearinglab", standalone_mode=False)
+    except _USAGE_ERRORS as exc:
+        if exc.format_message():  # empty after no_args_is_help has printed the help
+            print(f"bearinglab: error: {exc.format_message()}", file=sys.stderr)
+        return 2
+    except typer.Exit as exc:
+        return exc.exit_code
+    except typer.Abort:
+        print("bearinglab: aborted", file=sys.stderr)
+        return 1
+    except ConvergenceError as exc:
+        print(f"bearinglab: error: {exc}", file=sys.stderr)
+        return 3
+    except InputError as exc:
+        print(f"bearinglab: error: {exc}", file=sys.stderr)
+        return 2
+    except OSError as exc:
+        print(f"bearinglab: error: {exc.filename or ''}: {exc.strerror}", file=sys.stderr)
+        return 2
+    return rv if isinstance(rv, int) else 0
+
+
+def run():
+    """Console-script entry point."""
+    sys.exit(main())

@@ -1,0 +1,190 @@
+"""What every command of the command line shares: the bearing and execution options, and the output.
+
+Bearing options  BearingName, BearingFile, CatalogFile and the inline geometry; resolve_bearing
+Execution        ExecutorOpt, WorkersOpt, ChunkSizeOpt; execution (one parallel.Execution with the
+                 command's progress bar)
+Output           console, emit_json (one JSON document on stdout), table (a rich table), emit_csv
+Input checks     choice, check_directory
+
+The command modules import these; none of them imports the package ``bearinglab.cli`` itself, so the
+application is built on import without a cycle.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import dataclasses
+import sys
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.console import Console
+from rich.markup import escape
+from rich.table import Table
+
+from .. import catalog as _catalog
+from .. import parallel, tables
+from ..bearing import MATERIALS, BallBearing
+from ..errors import InputError
+from ..units import parse_quantity
+
+__all__: list[str] = []  # private to the command line
+
+console = Console()
+
+# ----------------------------------------------------------------------------- shared options
+# Bearing given by name, by file, or inline. Commands that need a bearing take these parameters and
+# call resolve_bearing(...) with them.
+BearingName = Annotated[str | None, typer.Option("--bearing", "-b", help="Catalog name, e.g. B218, 4-1006095, 6205-2RS.", rich_help_panel="Bearing")]
+BearingFile = Annotated[Path | None, typer.Option("--bearing-file", help="TOML file with one bearing table.", rich_help_panel="Bearing")]
+CatalogFile = Annotated[Path | None, typer.Option("--catalog", help="User catalog TOML (also $BEARINGLAB_CATALOG).", rich_help_panel="Bearing")]
+Balls = Annotated[int | None, typer.Option("--balls", help="Number of balls.", rich_help_panel="Inline geometry")]
+BallDiameter = Annotated[str | None, typer.Option("--ball-diameter", help="e.g. '2 mm'.", rich_help_panel="Inline geometry")]
+PitchDiameter = Annotated[str | None, typer.Option("--pitch-diameter", help="e.g. '8.7355 mm'.", rich_help_panel="Inline geometry")]
+InnerRadius = Annotated[str | None, typer.Option("--inner-groove-radius", help="e.g. '1.05 mm'.", rich_help_panel="Inline geometry")]
+OuterRadius = Annotated[str | None, typer.Option("--outer-groove-radius", help="e.g. '1.16 mm'.", rich_help_panel="Inline geometry")]
+InnerConformity = Annotated[float | None, typer.Option("--inner-conformity", help="f_i = r_i / D.", rich_help_panel="Inline geometry")]
+OuterConformity = Annotated[float | None, typer.Option("--outer-conformity", help="f_o = r_o / D.", rich_help_panel="Inline geometry")]
+ContactAngle = Annotated[str | None, typer.Option("--contact-angle", help="Nominal (free) angle, e.g. '12 deg'.", rich_help_panel="Inline geometry")]
+Clearance = Annotated[str | None, typer.Option("--radial-clearance", help="Diametral clearance, e.g. '9 um'.", rich_help_panel="Inline geometry")]
+BallMaterial = Annotated[str | None, typer.Option("--ball-material", help="steel | silicon_nitride.", rich_help_panel="Inline geometry")]
+JsonFlag = Annotated[bool, typer.Option("--json", help="Print one JSON document on stdout.")]
+# Batch execution (bearinglab.parallel): every batch command takes these three.
+ExecutorOpt = Annotated[str | None, typer.Option("--executor", help="serial | local | tcp://host:8786 (a running dask scheduler).", rich_help_panel="Execution")]
+WorkersOpt = Annotated[int | None, typer.Option("--workers", help="Workers of the local dask cluster.", rich_help_panel="Execution")]
+ChunkSizeOpt = Annotated[int | None, typer.Option("--chunk-size", help="Cases per chunk (task).", rich_help_panel="Execution")]
+
+
+def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, ball_diameter=None,
+                    pitch_diameter=None, inner_groove_radius=None, outer_groove_radius=None,
+                    inner_conformity=None, outer_conformity=None, contact_angle=None,
+                    radial_clearance=None, ball_material=None) -> BallBearing:
+    """The bearing named, read from a file, or given inline; inline options override named fields."""
+    if bearing and bearing_file:
+        raise InputError("bearing: give --bearing or --bearing-file, not both")
+    if bearing:
+        base = _catalog.get(bearing, catalog=catalog)
+    elif bearing_file:
+        base = _catalog.load_bearing_file(bearing_file)
+    else:
+        base = BallBearing(designation="inline")
+    changes = {}
+    if balls is not None:
+        changes["n_balls"] = balls
+    for key, text in (("ball_diameter", ball_diameter), ("pitch_diameter", pitch_diameter)):
+        if text is not None:
+            changes[key] = parse_quantity(text, "length", key.replace("_", "-"))
+    d = changes.get("ball_diameter", base.ball_diameter)
+    for race, radius, conf in (("inner", inner_groove_radius, inner_conformity), ("outer", outer_groove_radius, outer_conformity)):
+        if radius is not None and conf is not None:
+            raise InputError(f"{race}-groove-radius: give the radius or the conformity, not both")
+        if radius is not None:
+            if d is None:
+                raise InputError(f"{race}-groove-radius: needs --ball-diameter")
+            changes[f"{race}_conformity"] = parse_quantity(radius, "length", f"{race}-groove-radius") / d
+        elif conf is not None:
+            changes[f"{race}_conformity"] = conf
+    if contact_angle is not None and radial_clearance is not None:
+        raise InputError("contact-angle: give --contact-angle or --radial-clearance, not both")
+    if contact_angle is not None:
+        changes["contact_angle"] = parse_quantity(contact_angle, "angle", "contact-angle")
+        changes["radial_clearance"] = None
+    elif radial_clearance is not None:
+        changes["radial_clearance"] = parse_quantity(radial_clearance, "length", "radial-clearance")
+        changes["contact_angle"] = None
+    elif "inner_conformity" in changes or "outer_conformity" in changes:
+        # new conformities keep the angle and re-derive the clearance
+        changes["radial_clearance"] = None
+    if ball_material is not None:
+        key = ball_material.lower().replace("-", "_")
+        if key not in MATERIALS:
+            raise InputError(f"ball-material must be one of {sorted(MATERIALS)}, got {ball_material!r}")
+        changes["ball_material"] = MATERIALS[key]
+    if not changes:
+        if not (bearing or bearing_file):
+            raise InputError("bearing: give --bearing NAME, --bearing-file FILE or the inline geometry (--balls, --ball-diameter, ...)")
+        return base
+    return dataclasses.replace(base, **changes)
+
+
+def _stderr_console():
+    """Progress goes to stderr, so that stdout stays one JSON document or one table."""
+    return Console(stderr=True)
+
+
+@contextlib.contextmanager
+def progress_bar(description, executor="serial"):
+    """The ``progress`` argument of :mod:`bearinglab.parallel` for a command: a rich bar (serial) or dask's
+    progress bar (distributed) on an interactive terminal, nothing otherwise (pipes, tests, CI)."""
+    err = _stderr_console()
+    if not err.is_terminal:
+        yield None
+        return
+    if executor not in (None, "serial"):
+        yield "dask"
+        return
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeRemainingColumn
+
+    with Progress("[progress.description]{task.description}", BarColumn(), MofNCompleteColumn(),
+                  TimeRemainingColumn(), console=err, transient=True) as bar:
+        task = bar.add_task(description, total=None)
+        yield lambda done, total: bar.update(task, completed=done, total=total)
+
+
+def emit_json(obj):
+    """Print one JSON document on stdout (NaN and inf become null; :func:`bearinglab.tables.json_text`)."""
+    sys.stdout.write(tables.json_text(obj))
+
+
+def table(title, columns, rows, *, caption=None, wide=False):
+    """Print a rich table; ``columns`` are header strings, ``rows`` lists of already formatted cells.
+
+    ``wide`` never truncates a cell: the table grows wider than the terminal rather than showing a
+    number as '0.34…'.
+    """
+    t = Table(title=escape(title), caption=caption and escape(caption), header_style="bold")
+    for i, col in enumerate(columns):
+        t.add_column(escape(col), justify="left" if i == 0 else "right", no_wrap=wide)
+    for row in rows:
+        t.add_row(*[escape(str(c)) for c in row])
+    if wide:
+        Console(width=max(console.width, 200), highlight=False).print(t)
+    else:
+        console.print(t)
+
+
+def emit_csv(path, columns, what="csv"):
+    """Write ``columns`` as CSV to ``path`` (whole or not at all); the directory must exist."""
+    path = Path(path)
+    check_directory(path, what)
+    tables.write_table(columns, path)
+
+
+def check_directory(path: Path, what: str) -> None:
+    """An output file's directory must exist (a typo must not create a tree of directories)."""
+    if not Path(path).parent.is_dir():
+        raise InputError(f"{what}: directory {str(Path(path).parent)!r} does not exist")
+
+
+def choice(name, value, choices):
+    """``value`` if it is one of ``choices``; otherwise an InputError listing them."""
+    if value not in choices:
+        raise InputError(f"{name} must be one of {list(choices)}, got {value!r}")
+    return value
+
+
+@contextlib.contextmanager
+def execution(description, executor=None, workers=None, chunk_size=None, *, memory_limit=None,
+              progress=True):
+    """The execution options of a batch command as one :class:`bearinglab.parallel.Execution`.
+
+    Checks the options (executor, workers >= 1, chunk size >= 1), then yields the Execution with the
+    command's progress report: a rich bar (serial) or dask's bar (distributed) on a terminal, none
+    otherwise or with ``progress=False``.
+    """
+    ex = parallel.Execution(executor=executor or "serial", workers=workers, chunk_size=chunk_size,
+                            memory_limit=memory_limit)
+    bar = progress_bar(description, ex.executor) if progress else contextlib.nullcontext(None)
+    with bar as report:
+        yield dataclasses.replace(ex, progress=report)

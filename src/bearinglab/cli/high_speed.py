@@ -1,0 +1,206 @@
+"""Command line of the high-speed model under thrust (spec 004): ``high-speed``.
+
+One case prints a table of every output (or one JSON object with ``--json``); lists or ranges of loads
+and speeds make a grid that is solved in one batched call and printed as a table (or one JSON array),
+written with ``--csv`` and drawn with ``--plot`` (the paper's figures 2-4 and delta_a against thrust).
+The columns are :func:`bearinglab.tables.high_speed`; the figure is
+:func:`bearinglab.plots.high_speed.plot_map`.
+
+Commands
+--------
+COMMANDS   the ``high-speed`` command, by name (the application adds it)
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import sys
+import warnings
+from pathlib import Path
+from typing import Annotated
+
+import numpy as np
+import typer
+
+from .. import plots, quasistatic, tables
+from ..errors import InputError, ValidityWarning
+from ..plots import high_speed as high_speed_plots
+from ..units import RPM, parse_quantity, parse_values
+from ._common import (
+    BallDiameter,
+    BallMaterial,
+    Balls,
+    BearingFile,
+    BearingName,
+    CatalogFile,
+    ChunkSizeOpt,
+    Clearance,
+    ContactAngle,
+    ExecutorOpt,
+    InnerConformity,
+    InnerRadius,
+    JsonFlag,
+    OuterConformity,
+    OuterRadius,
+    PitchDiameter,
+    WorkersOpt,
+    check_directory,
+    choice,
+    console,
+    emit_csv,
+    emit_json,
+    execution,
+    resolve_bearing,
+    table,
+)
+
+__all__ = ["COMMANDS"]
+
+_PROGRESS_MIN_CASES = 5000  # serial sweeps at least this large are cut finer, so the bar moves
+_CHUNK = 2500  # cases per batched call then
+
+
+def high_speed(
+    axial_load: Annotated[str, typer.Option("--axial-load", "-F", help="Thrust: '20 kN', or a list/range '2.5kN:45kN:2.5kN'.")],
+    speed: Annotated[str, typer.Option("--speed", "-n", help="Inner-ring speed: '10000 rpm', or a list/range '0,3000,6000rpm'.")],
+    bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
+    balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
+    inner_groove_radius: InnerRadius = None, outer_groove_radius: OuterRadius = None,
+    inner_conformity: InnerConformity = None, outer_conformity: OuterConformity = None,
+    contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
+    solver: Annotated[str, typer.Option("--solver", help="newton (batched Newton-Raphson, §5.1) | angle-iteration (the paper's search, §5.2).")] = "newton",
+    raceway_control: Annotated[str, typer.Option("--raceway-control", help="outer (default, the paper's) | inner.")] = "outer",
+    constants: Annotated[str, typer.Option("--constants", help="mass (F_c, M_g from the ball mass; default) | harris (2.26e-11, 4.47e-12: spec 004 §7) | paper (2.26e-11, 4.5e-12).")] = "mass",
+    gyroscopic_sign: Annotated[str, typer.Option("--gyroscopic-sign", help="physical (default, spec 004 §4) | reversed (for comparison only).")] = "physical",
+    reduced_modulus: Annotated[str | None, typer.Option("--reduced-modulus", help="E' of the contact pair, e.g. '228.04 GPa' (default: from the materials).")] = None,
+    csv_file: Annotated[Path | None, typer.Option("--csv", help="Write the table of all cases to this CSV file.")] = None,
+    plot: Annotated[Path | None, typer.Option("--plot", help="Draw the map (figures 2-4 and δ_a) into this PNG/PDF/SVG file.")] = None,
+    executor: ExecutorOpt = None, workers: WorkersOpt = None, chunk_size: ChunkSizeOpt = None,
+    json_out: JsonFlag = False,
+):
+    """High-speed angular-contact bearing under thrust (spec 004): α_i, α_e, δ_a, loads, F_c, M_g, speeds."""
+    b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
+                        outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
+                        ball_material)
+    options = _model_options(solver, raceway_control, constants, gyroscopic_sign, reduced_modulus)
+    loads, speeds = _grid(axial_load, speed)
+    if plot is not None and (loads.size < 2 or speeds.size < 1):
+        raise InputError("plot: needs a sweep over at least two thrusts (e.g. --axial-load 2.5kN:45kN:2.5kN)")
+    for path, what in ((csv_file, "csv"), (plot, "plot")):
+        if path is not None:
+            check_directory(path, what)
+    single = loads.size == 1 and speeds.size == 1
+    with execution("solving", executor, workers, chunk_size, progress=not single) as ex:
+        state, notes = _solve(b, loads, speeds, options, ex)
+    cols = tables.high_speed(state)
+    if csv_file is not None:
+        emit_csv(csv_file, cols)
+    if plot is not None:
+        fig = high_speed_plots.plot_map(state, title=f"Bearing {b.designation}: high-speed contact angles under thrust")
+        plots.save(fig, plot)
+    rows = tables.rows(cols)
+    if json_out:
+        for note in notes:  # stdout stays one JSON document
+            print(f"bearinglab: warning: {note}", file=sys.stderr)
+        if single:
+            emit_json(dict(rows[0], bearing=b.designation, constants=constants, raceway_control=raceway_control,
+                           gyroscopic_sign=gyroscopic_sign, solver=solver, warnings=notes))
+        else:
+            emit_json(rows)
+        return
+    if single:
+        _print_single(b, rows[0], options)
+    else:
+        _print_sweep(b, rows, options)
+    for note in notes:
+        console.print(f"[yellow]warning:[/yellow] {note}", highlight=False)
+    for path in (csv_file, plot):
+        if path is not None:
+            console.print(f"wrote {path}", highlight=False)
+
+
+def _model_options(solver, raceway_control, constants, gyroscopic_sign, reduced_modulus):
+    """The options of :func:`bearinglab.quasistatic.high_speed_analysis`, checked."""
+    choice("solver", solver, ("newton", "angle-iteration"))
+    choice("raceway-control", raceway_control, tuple(quasistatic.RACEWAY_CONTROLS))
+    choice("constants", constants, tuple(quasistatic.CONSTANTS))
+    sign = {"physical": 1, "reversed": -1}.get(choice("gyroscopic-sign", gyroscopic_sign, ("physical", "reversed")))
+    ep = None
+    if reduced_modulus is not None:
+        ep = parse_quantity(reduced_modulus, "pressure", "reduced-modulus")
+        if not ep > 0:
+            raise InputError(f"reduced-modulus must be > 0 [GPa], got {ep / 1e9:g} GPa")
+    return {"method": solver, "raceway_control": raceway_control, "constants": constants, "gyroscopic_sign": sign,
+            "reduced_modulus": ep}
+
+
+def _grid(axial_load, speed):
+    """The thrusts and speeds given (SI), checked."""
+    loads = parse_values(axial_load, "force", "axial-load")
+    speeds = parse_values(speed, "speed", "speed")
+    if np.any(~(loads > 0)):
+        raise InputError(f"axial-load must be > 0 [N], got {float(loads[~(loads > 0)][0])!r} N")
+    if np.any(~(speeds >= 0)):
+        raise InputError(f"speed must be >= 0 [rpm] (the inner-ring speed as a magnitude), got "
+                         f"{float(speeds[~(speeds >= 0)][0]) / RPM:g} rpm")
+    return loads, speeds
+
+
+def _solve(bearing, loads, speeds, options, ex):
+    """One case (:func:`quasistatic.high_speed_analysis`) or the grid (:func:`quasistatic.sweep`) in chunks on
+    the chosen executor; returns the state and the validity warnings raised on the way."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", ValidityWarning)
+        if loads.size == 1 and speeds.size == 1:
+            state = quasistatic.high_speed_analysis(bearing, loads[0], speeds[0], **options)
+        else:
+            if ex.chunk_size is None and ex.executor == "serial" and loads.size * speeds.size >= _PROGRESS_MIN_CASES:
+                ex = dataclasses.replace(ex, chunk_size=_CHUNK)  # small enough chunks for the bar to move
+            state = quasistatic.sweep(bearing, loads, speeds, execution=ex, **options)
+    return state, [str(c.message) for c in caught if issubclass(c.category, ValidityWarning)]
+
+
+def _f(x, spec):
+    return "—" if x is None else format(x, spec)
+
+
+def _print_single(b, r, options):
+    caption = (f"{options['raceway_control']}-raceway control, constants {options['constants']}, "
+               f"{'physical' if options['gyroscopic_sign'] > 0 else 'reversed'} gyroscopic sign, "
+               f"solver {options['method']} ({r['method']}, {r['iterations']} iterations, residual {_f(r['residual'], '.2e')})")
+    table(f"Bearing {b.designation}: F_a = {r['axial_load_kN']:g} kN at {r['speed_rpm']:g} rpm", ["quantity", "inner", "outer"], [
+        ["contact angle [deg]", _f(r["contact_angle_inner_deg"], ".4f"), _f(r["contact_angle_outer_deg"], ".4f")],
+        ["static contact angle α_s [deg]", _f(r["static_contact_angle_deg"], ".4f"), ""],
+        ["ball load Q [N]", _f(r["ball_load_inner_N"], ".1f"), _f(r["ball_load_outer_N"], ".1f")],
+        ["deflection δ [µm]", _f(r["deflection_inner_um"], ".3f"), _f(r["deflection_outer_um"], ".3f")],
+        ["max contact pressure [MPa]", _f(r["max_pressure_inner_MPa"], ".0f"), _f(r["max_pressure_outer_MPa"], ".0f")],
+        ["ball-pass frequency [Hz]", _f(r["bpfi_Hz"], ".2f"), _f(r["bpfo_Hz"], ".2f")],
+    ], caption=caption)
+    table("Ball and ring", ["quantity", "value"], [
+        ["axial displacement δ_a [mm]", _f(r["axial_displacement_mm"], ".5f")],
+        ["axial stiffness dF_a/dδ_a [N/µm]", _f(r["axial_stiffness_N_per_um"], ".2f")],
+        ["centrifugal force F_c [N]", _f(r["centrifugal_force_N"], ".1f")],
+        ["gyroscopic moment M_g [N·mm]", _f(r["gyroscopic_moment_Nmm"], ".1f")],
+        ["attitude angle β [deg]", _f(r["attitude_angle_deg"], ".3f")],
+        ["cage speed [rpm]", _f(r["cage_speed_rpm"], ".1f")],
+        ["ball spin speed [rpm]", _f(r["ball_spin_speed_rpm"], ".0f")],
+        ["friction coefficient 2M_g/(D Q) [-]", _f(r["friction_coefficient"], ".4f")],
+        ["converged", str(r["converged"]).lower()],
+    ])
+
+
+def _print_sweep(b, rows, options):
+    failed = sum(1 for r in rows if not r["converged"])
+    caption = (f"{len(rows)} cases, {failed} failed; {options['raceway_control']}-raceway control, constants "
+               f"{options['constants']}, solver {options['method']}; --json or --csv for every output")
+    table(f"Bearing {b.designation}: high-speed contact angles under thrust",
+          ["F_a kN", "n rpm", "α_i °", "α_e °", "δ_a µm", "Q_i N", "Q_e N", "M_g N·mm", "status"],
+          [[f"{r['axial_load_kN']:g}", f"{r['speed_rpm']:g}", _f(r["contact_angle_inner_deg"], ".3f"),
+            _f(r["contact_angle_outer_deg"], ".3f"),
+            _f(None if r["axial_displacement_mm"] is None else r["axial_displacement_mm"] * 1e3, ".2f"),
+            _f(r["ball_load_inner_N"], ".0f"), _f(r["ball_load_outer_N"], ".0f"),
+            _f(r["gyroscopic_moment_Nmm"], ".0f"), r["status"]] for r in rows], caption=caption)
+
+
+#: The ``high-speed`` command, as the application adds it.
+COMMANDS = {"high-speed": high_speed}

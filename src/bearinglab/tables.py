@@ -1,0 +1,500 @@
+"""Results as columns in engineering units: one convention for the command line, the reports and the web page.
+
+The library computes in SI (STYLE.md section 3); engineers read mm, µm, N, kN, deg and rpm. Every table
+a user sees is built here, from column specifications: the column name (which carries the unit, as in
+``contact_angle_inner_deg``), the field of the result it comes from, the unit label, and the conversion
+from SI. The same result gives the same columns wherever it is shown.
+
+Column specifications
+---------------------
+Column          one column: name, field of the result, unit label, conversion factor and divisor
+HIGH_SPEED      the columns of a :class:`bearinglab.quasistatic.HighSpeedState`
+AXIAL_ANGLE     the per-case columns of :func:`bearinglab.stand.stand_analysis`
+RUNOUT_GEOMETRY the fields of a runout geometry (:func:`bearinglab.runout.geometry_from_bearing`)
+KIND_UNITS      quantity kind -> (column suffix, factor from SI), for inputs given by kind
+
+Results -> columns
+------------------
+columns         a result NamedTuple -> ordered dict of 1-D columns, by specifications
+record          one case of a result -> ordered dict of Python scalars, by specifications
+rows            columns -> list of per-case dicts (JSON-ready scalars)
+high_speed      a high-speed state -> its columns (kN, rpm, deg, mm, µm, N, N·mm, Hz, MPa, N/µm)
+input_columns   sweep inputs (SI, by kind) -> columns with the unit in the name
+stand_load      speeds and a minimum-load result -> columns (rpm, N, kgf)
+frequencies     characteristic frequencies -> ``{name}_hz`` and ``{name}_order`` values
+spectral_mask   the lines of a spectral mask -> columns (Hz and orders)
+bearing_summary every known field of a bearing and its derived quantities
+catalog_entry   the catalog-list row of a bearing
+runout_metrics  runout metrics -> ``{metric}_um`` values
+significant     input values without the last-bit noise of a unit round trip
+
+Writers
+-------
+write_table     columns -> .csv or .parquet, whole or not at all
+json_value      values -> JSON-ready values (NaN and inf -> None, numpy -> Python)
+json_text       one JSON document, as the command line prints it
+csv_text        CSV text with ``#`` comment lines (cells as :func:`write_table` writes them)
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+
+from ._io import csv_text, json_text, json_value, write_columns
+from .units import KGF, RPM
+
+__all__ = [
+    "AXIAL_ANGLE",
+    "HIGH_SPEED",
+    "KIND_UNITS",
+    "RUNOUT_GEOMETRY",
+    "Column",
+    "bearing_summary",
+    "catalog_entry",
+    "columns",
+    "csv_text",
+    "frequencies",
+    "high_speed",
+    "input_columns",
+    "json_text",
+    "json_value",
+    "record",
+    "rows",
+    "runout_metrics",
+    "significant",
+    "spectral_mask",
+    "stand_load",
+    "write_table",
+]
+
+_DEG = 180.0 / math.pi  # deg per rad
+_HZ = 1.0 / (2.0 * math.pi)  # Hz per rad/s
+
+
+class Column(NamedTuple):
+    """One column of a table: ``value [unit] = SI value * factor / divisor``.
+
+    Factor and divisor are kept apart so that each conversion is the same floating-point operation
+    as everywhere else in the package (a multiplication by 1e3 for mm, a division by the kilogram-force
+    for kgf), and a printed number does not change in its last digit between two outputs.
+
+    Parameters
+    ----------
+    name : str
+        Column name; it ends in the unit (``axial_load_kN``), unless dimensionless or not a number.
+    field : str
+        Attribute of the result the column is taken from.
+    unit : str
+        Unit label for headers (``"kN"``; ``"-"`` dimensionless; ``""`` not a number).
+    factor : float or None, optional
+        Multiplier from SI; ``None`` passes the values unchanged (flags, counts, text).
+    divisor : float, optional
+        Divisor from SI, applied after ``factor``.
+    """
+
+    name: str
+    field: str
+    unit: str
+    factor: float | None = 1.0
+    divisor: float = 1.0
+
+    def convert(self, value):
+        """``value`` (SI) in the column's unit; unchanged if the column has no factor."""
+        if self.factor is None:
+            return value
+        return np.asarray(value, dtype=float) * self.factor / self.divisor
+
+
+#: Columns of a :class:`bearinglab.quasistatic.HighSpeedState` (spec 004), in the order printed.
+HIGH_SPEED = (
+    Column("axial_load_kN", "axial_load", "kN", 1e-3),
+    Column("speed_rpm", "shaft_speed", "rpm", 1.0 / RPM),
+    Column("contact_angle_inner_deg", "contact_angle_inner", "deg", _DEG),
+    Column("contact_angle_outer_deg", "contact_angle_outer", "deg", _DEG),
+    Column("static_contact_angle_deg", "static_contact_angle", "deg", _DEG),
+    Column("axial_displacement_mm", "axial_displacement", "mm", 1e3),
+    Column("ball_load_inner_N", "ball_load_inner", "N"),
+    Column("ball_load_outer_N", "ball_load_outer", "N"),
+    Column("deflection_inner_um", "deflection_inner", "µm", 1e6),
+    Column("deflection_outer_um", "deflection_outer", "µm", 1e6),
+    Column("centrifugal_force_N", "centrifugal_force", "N"),
+    Column("gyroscopic_moment_Nmm", "gyroscopic_moment", "N·mm", 1e3),
+    Column("attitude_angle_deg", "attitude_angle", "deg", _DEG),
+    Column("cage_speed_rpm", "cage_speed", "rpm", 1.0 / RPM),
+    Column("ball_spin_speed_rpm", "ball_spin_speed", "rpm", 1.0 / RPM),
+    Column("bpfo_Hz", "bpfo", "Hz", _HZ),
+    Column("bpfi_Hz", "bpfi", "Hz", _HZ),
+    Column("max_pressure_inner_MPa", "max_pressure_inner", "MPa", 1e-6),
+    Column("max_pressure_outer_MPa", "max_pressure_outer", "MPa", 1e-6),
+    Column("axial_stiffness_N_per_um", "axial_stiffness", "N/µm", 1e-6),
+    Column("friction_coefficient", "friction_coefficient", "-"),
+    Column("converged", "converged", "", None),
+    Column("residual", "residual", "-"),
+    Column("iterations", "iterations", "", None),
+    Column("status", "status", "", None),
+    Column("method", "method", "", None),
+)
+
+#: Per-case columns of :func:`bearinglab.stand.stand_analysis` over several loads (spec 000).
+AXIAL_ANGLE = (
+    Column("axial_load_N", "axial_load", "N"),
+    Column("axial_load_kgf", "axial_load", "kgf", 1.0, KGF),
+    Column("operating_contact_angle_deg", "contact_angle", "deg", _DEG),
+    Column("axial_displacement_ratio", "axial_displacement_ratio", "-"),
+    Column("axial_displacement_mm", "axial_displacement", "mm", 1e3),
+    Column("ball_load_N", "ball_load", "N"),
+)
+
+#: Fields of a runout geometry (spec 003), as printed with a runout result.
+RUNOUT_GEOMETRY = (
+    Column("balls", "n_balls", "", None),
+    Column("ball_diameter_mm", "ball_radius", "mm", 2e3),
+    Column("pitch_diameter_mm", "ball_centre_radius", "mm", 2e3),
+    Column("outer_groove_radius_mm", "outer_groove_radius", "mm", 1e3),
+    Column("inner_groove_radius_mm", "inner_groove_radius", "mm", 1e3),
+    Column("outer_bottom_radius_mm", "outer_bottom_radius", "mm", 1e3),
+    Column("inner_bottom_radius_mm", "inner_bottom_radius", "mm", 1e3),
+    Column("contact_angle_deg", "contact_angle", "deg", _DEG),
+    Column("first_ball_angle_deg", "first_ball_angle", "deg", _DEG),
+    Column("groove_distance_mm", "groove_distance", "mm", 1e3),
+    Column("axial_offset_mm", "axial_offset", "mm", 1e3),
+    Column("inner_centre_radius_mm", "inner_centre_radius", "mm", 1e3),
+    Column("gamma", "pitch_ratio", "-"),
+    Column("cage_ratio", "cage_ratio", "-"),
+)
+
+#: Quantity kind -> (column-name suffix, factor from SI), for inputs known by their kind (sweep files).
+KIND_UNITS = {
+    "force": ("_N", 1.0),
+    "angle": ("_deg", _DEG),
+    "speed": ("_rpm", 30.0 / math.pi),
+    "length": ("_mm", 1e3),
+    "dimensionless": ("", 1.0),
+    "mass": ("_kg", 1.0),
+}
+
+
+def columns(result, specs):
+    """The columns ``specs`` of ``result``, each flattened to 1-D and converted from SI.
+
+    Parameters
+    ----------
+    result : NamedTuple
+        A result of the library (any object with the fields the specifications name).
+    specs : sequence of Column
+        The columns wanted, in order.
+
+    Returns
+    -------
+    dict
+        Column name -> 1-D ndarray (floats in the column's unit; unconverted columns as they are).
+
+    Examples
+    --------
+    >>> from collections import namedtuple
+    >>> r = namedtuple("R", "axial_load")(2500.0)
+    >>> columns(r, [Column("axial_load_kN", "axial_load", "kN", 1e-3)])["axial_load_kN"].tolist()
+    [2.5]
+    """
+    out = {}
+    for spec in specs:
+        value = np.ravel(np.asarray(getattr(result, spec.field)))
+        out[spec.name] = spec.convert(value) if spec.factor is not None else value
+    return out
+
+
+def record(result, specs):
+    """One case of ``result`` as Python scalars in engineering units, by specifications.
+
+    Parameters
+    ----------
+    result : NamedTuple
+        A result whose fields are scalars.
+    specs : sequence of Column
+        The fields wanted, in order.
+
+    Returns
+    -------
+    dict
+        Column name -> Python float (or the value unchanged for columns without a factor).
+    """
+    out = {}
+    for spec in specs:
+        value = getattr(result, spec.field)
+        out[spec.name] = value if spec.factor is None else float(value) * spec.factor / spec.divisor
+    return out
+
+
+def rows(table):
+    """Columns -> one dict per case, with JSON-ready scalars (NaN and inf as ``None``).
+
+    Parameters
+    ----------
+    table : dict
+        Column name -> 1-D array, all of one length.
+
+    Returns
+    -------
+    list of dict
+    """
+    names = list(table)
+    if not names:
+        return []
+    n = len(table[names[0]])
+    return [{k: json_value(np.asarray(table[k])[i]) for k in names} for i in range(n)]
+
+
+def significant(values, digits=12):
+    """Values rounded to ``digits`` significant digits: an input without the last-bit noise of a
+    unit round trip (3000 rpm -> rad/s -> 3000.0000000000005 rpm -> 3000.0).
+
+    Parameters
+    ----------
+    values : array_like
+        Values, any unit.
+    digits : int, optional
+        Significant digits kept. [-]
+
+    Returns
+    -------
+    ndarray
+        1-D array of floats.
+
+    Examples
+    --------
+    >>> significant([3000.0000000000005]).tolist()
+    [3000.0]
+    """
+    return np.array([float(f"{x:.{digits}g}") for x in np.ravel(np.asarray(values, dtype=float))])
+
+
+def high_speed(state):
+    """A high-speed state as flat columns in engineering units (kN, rpm, deg, mm, µm, N, N·mm, Hz, MPa, N/µm).
+
+    Parameters
+    ----------
+    state : HighSpeedState
+        A result of :func:`bearinglab.quasistatic.contact_angles`,
+        :func:`~bearinglab.quasistatic.high_speed_analysis` or :func:`~bearinglab.quasistatic.sweep`.
+
+    Returns
+    -------
+    dict
+        Column name -> 1-D ndarray, the names and order of :data:`HIGH_SPEED` (``contact_angle_inner_deg``,
+        ``axial_displacement_mm``, ``gyroscopic_moment_Nmm``, ...). The inputs (thrust and speed) are
+        rounded to 12 significant digits.
+    """
+    cols = columns(state, HIGH_SPEED)
+    for name in ("axial_load_kN", "speed_rpm"):  # inputs: drop the last-bit noise of the unit round trip
+        cols[name] = significant(cols[name])
+    return cols
+
+
+def input_columns(cases, kinds):
+    """Input values (SI) as columns in the units engineers read, the unit in the column name.
+
+    Parameters
+    ----------
+    cases : dict
+        Parameter name -> 1-D array of SI values.
+    kinds : dict
+        Parameter name -> quantity kind (a key of :data:`KIND_UNITS`).
+
+    Returns
+    -------
+    dict
+        ``name + suffix`` -> converted array (``axial_load_N``, ``contact_angle_deg``, ``speed_rpm``).
+    """
+    out = {}
+    for k, v in cases.items():
+        suffix, scale = KIND_UNITS[kinds[k]]
+        out[f"{k}{suffix}"] = v * scale
+    return out
+
+
+def stand_load(shaft_speed, result):
+    """The minimum and maximum axial load on a test stand, per speed (spec 000 section 3).
+
+    Parameters
+    ----------
+    shaft_speed : array_like
+        Inner-ring speeds. [rad/s]
+    result : StandLoad
+        A result of :func:`bearinglab.stand.min_axial_load` at those speeds.
+
+    Returns
+    -------
+    dict
+        ``speed_rpm``, ``min_axial_load_kgf``, ``min_axial_load_N``, ``max_axial_load_kgf``,
+        ``max_axial_load_N``: 1-D arrays.
+    """
+    lo, hi = np.atleast_1d(result.minimum), np.atleast_1d(result.maximum)
+    return {"speed_rpm": np.ravel(shaft_speed) / RPM, "min_axial_load_kgf": lo / KGF, "min_axial_load_N": lo,
+            "max_axial_load_kgf": hi / KGF, "max_axial_load_N": hi}
+
+
+def _order(hz, shaft_hz):
+    """Multiple of the shaft frequency; NaN (shown empty, or null in JSON) when the shaft stands still."""
+    return hz / abs(shaft_hz) if shaft_hz else math.nan
+
+
+def frequencies(freqs, shaft_speed, names=("ftf", "bpfo", "bpfi", "bsf", "two_bsf")):
+    """Characteristic frequencies in Hz and as orders (multiples of the shaft frequency).
+
+    Parameters
+    ----------
+    freqs : CharacteristicFrequencies
+        A result of :mod:`bearinglab.kinematics` for one speed. [rad/s]
+    shaft_speed : float
+        Inner-ring (shaft) speed the orders refer to. [rad/s]
+    names : sequence of str, optional
+        The families wanted, in order (default: every defect family of ``kinematics.FAMILIES``).
+
+    Returns
+    -------
+    dict
+        ``{name}_hz`` and ``{name}_order`` -> float, per family (``None`` for the orders at zero
+        shaft speed).
+    """
+    shaft_hz = shaft_speed / (2.0 * math.pi)
+    out = {}
+    for name in names:
+        hz = float(getattr(freqs, name)) / (2.0 * math.pi)
+        out[f"{name}_hz"] = hz
+        out[f"{name}_order"] = hz / abs(shaft_hz) if shaft_hz else None
+    return out
+
+
+def spectral_mask(mask, shaft_speed):
+    """The lines of a spectral mask as columns, the frequencies in Hz and as orders.
+
+    Parameters
+    ----------
+    mask : SpectralMask
+        A result of :func:`bearinglab.kinematics.spectral_mask` for one speed.
+    shaft_speed : float
+        Inner-ring (shaft) speed the orders refer to. [rad/s]
+
+    Returns
+    -------
+    dict
+        ``name``, ``harmonic``, ``modulation``, ``sideband``, ``frequency_hz``, ``low_hz``, ``high_hz``
+        and ``order`` (NaN at zero shaft speed): 1-D arrays, one entry per line.
+    """
+    hz = 2.0 * math.pi  # rad/s per Hz
+    cols = {"name": np.asarray(mask.name).astype(str), "harmonic": np.asarray(mask.harmonic).astype(int),
+            "modulation": np.asarray(mask.modulation).astype(str), "sideband": np.asarray(mask.sideband).astype(int)}
+    for key, field in (("frequency_hz", "frequency"), ("low_hz", "low"), ("high_hz", "high")):
+        cols[key] = np.ravel(getattr(mask, field)) / hz
+    cols["order"] = np.array([_order(f, shaft_speed / hz) for f in cols["frequency_hz"]])
+    return cols
+
+
+def _optional(value, factor):
+    return None if value is None else value * factor
+
+
+def bearing_summary(bearing):
+    """Every known field of a bearing and its derived quantities, in engineering units.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing.
+
+    Returns
+    -------
+    dict
+        Field name (with its unit) -> value; ``None`` for a field the bearing does not give.
+    """
+    b = bearing
+    out = {"designation": b.designation, "type": b.type, "balls": b.n_balls,
+           "ball_diameter_mm": b.ball_diameter and b.ball_diameter * 1e3,
+           "pitch_diameter_mm": b.pitch_diameter and b.pitch_diameter * 1e3,
+           "inner_conformity": b.inner_conformity, "outer_conformity": b.outer_conformity,
+           "contact_angle_deg": None if b.contact_angle is None else math.degrees(b.contact_angle),
+           "radial_clearance_um": b.radial_clearance and b.radial_clearance * 1e6,
+           "bore_mm": b.bore and b.bore * 1e3, "outside_diameter_mm": b.outside_diameter and b.outside_diameter * 1e3,
+           "width_mm": b.width and b.width * 1e3, "static_load_rating_N": b.static_load_rating,
+           "ball_material": b.ball_material.name, "ring_material": b.ring_material.name, "source": b.source}
+    if b.inner_conformity is not None and b.outer_conformity is not None and b.ball_diameter is not None:
+        out["inner_groove_radius_mm"] = b.inner_groove_radius * 1e3
+        out["outer_groove_radius_mm"] = b.outer_groove_radius * 1e3
+        out["total_curvature_B"] = b.total_curvature
+        out["groove_distance_A_mm"] = b.groove_distance * 1e3
+        if b.contact_angle is not None and b.pitch_diameter is not None:
+            out["gamma"] = b.gamma
+            if b.contact_angle > 0:
+                out["axial_play_mm"] = b.axial_play() * 1e3
+    if b.hertz_table:
+        out["hertz_table"] = dict(b.hertz_table)
+    return out
+
+
+def catalog_entry(name, bearing):
+    """The row of a bearing in a catalog listing.
+
+    Parameters
+    ----------
+    name : str
+        The name the catalog lists it under.
+    bearing : BallBearing
+        The bearing.
+
+    Returns
+    -------
+    dict
+        ``name``, ``type``, ``balls`` and the main dimensions in mm and deg (``None`` where not given).
+    """
+    b = bearing
+    return {
+        "name": name, "type": b.type, "balls": b.n_balls,
+        "ball_diameter_mm": _optional(b.ball_diameter, 1e3),
+        "pitch_diameter_mm": _optional(b.pitch_diameter, 1e3),
+        "contact_angle_deg": None if b.contact_angle is None else math.degrees(b.contact_angle),
+        "bore_mm": _optional(b.bore, 1e3),
+        "outside_diameter_mm": _optional(b.outside_diameter, 1e3),
+    }
+
+
+def runout_metrics(metrics, names):
+    """Runout metrics (SI) as ``{name}_um`` values in micrometres.
+
+    Parameters
+    ----------
+    metrics : NamedTuple
+        A metrics result of :mod:`bearinglab.runout` (fields in m).
+    names : sequence of str
+        The metrics wanted, in order (e.g. ``runout.METRICS``).
+
+    Returns
+    -------
+    dict
+        ``{name}_um`` -> float.
+    """
+    return {f"{name}_um": float(getattr(metrics, name)) / 1e-6 for name in names}
+
+
+def write_table(table, path, *, comments=()):
+    """Write columns to a .csv or .parquet file, whole or not at all (temporary file, then rename).
+
+    CSV cells: floats in full precision, NaN and missing values empty, booleans ``true``/``false``;
+    ``comments`` become ``#`` lines before the header. The directory must exist.
+
+    Parameters
+    ----------
+    table : dict
+        Column name -> 1-D array, all of one length.
+    path : str or Path
+        Target file; its suffix (.csv or .parquet) chooses the format.
+    comments : sequence of str, optional
+        Lines written as ``# line`` before the header (CSV only).
+
+    Returns
+    -------
+    Path
+    """
+    return write_columns(path, table, comments=comments)
