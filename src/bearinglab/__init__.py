@@ -17,6 +17,7 @@ friction    friction torque: P0 max rule, one-term, two-term, Palmgren (spec 001
 lab         the friction-rig lab: rig loads, calibration, measurement files, the three fits (spec 001)
 report      self-contained HTML reports of the friction lab, with PNG/SVG plots, CSV and JSON
 quasistatic high-speed angular-contact bearing under thrust: centrifugal force, gyroscopic moment (spec 004)
+ratings     load ratings and rating life: ISO 76, ISO 281, ISO/TS 16281
 """
 
 from . import (
@@ -30,6 +31,7 @@ from . import (
     lab,
     parallel,
     quasistatic,
+    ratings,
     report,
     runout,
     static,
@@ -50,6 +52,7 @@ __all__ = [
     "lab",
     "parallel",
     "quasistatic",
+    "ratings",
     "report",
     "runout",
     "static",
