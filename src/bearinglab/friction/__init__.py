@@ -59,8 +59,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._validate import check_finite, check_nonnegative, check_positive
-from .errors import InputError, ValidityWarning
+from .._validate import check_finite, check_nonnegative, check_positive
+from ..errors import InputError, ValidityWarning
 
 __all__ = [
     "ANGULAR_LOAD_TERM_BELOW_30",
