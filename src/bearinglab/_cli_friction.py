@@ -265,7 +265,7 @@ def torque(
         d = b.require("bore")
         mu_used = friction.handbook_friction_coefficient(b.type) if mu is None else mu
         total = np.atleast_1d(
-            friction.one_term(p0, d, bearing_type=b.type, friction_coefficient=mu)
+            friction.one_term(p0, d, bearing_type=b.type, reduced_friction_coefficient=mu)
         )
         speed_term, load_term = np.zeros_like(total), total  # one term, proportional to the load
         info.update({"mu": mu_used, "bore_mm": d * 1e3})

@@ -253,7 +253,7 @@ def rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None, contam
         Ring rotating relative to the load (ISO/TS 16281 equivalent loads).
     fatigue_method : {"precise", "simplified"}
         Cu from the geometry or C0/22 (when the catalog has no Cu).
-    **lubricant
+    **lubricant : optional
         ``temperature`` [K] with ``iso_vg`` or ``viscosity_40`` [m^2/s], and ``viscosity_100`` [m^2/s]
         (:func:`.lubrication.kinematic_viscosity`).
 
@@ -392,7 +392,7 @@ def duty_cycle_life(bearing, loads, shaft_speeds, time_shares, **options):
         (k,) speeds, > 0. [rad/s]
     time_shares : array_like
         (k,) shares of the time, >= 0, summing to 1. [-]
-    **options
+    **options : optional
         Passed to :func:`rating_life` (lubricant, contamination, reliability, load distribution ...);
         array options broadcast along the steps.
 
