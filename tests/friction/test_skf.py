@@ -141,3 +141,9 @@ def test_series_from_designation():
         friction.bearing_series("7205 BE")
     with pytest.raises(InputError, match="cannot be read"):
         friction.bearing_series("NU 205")
+
+
+def test_benchmark_paths_agree_on_a_small_input(load_bench):
+    bench = load_bench("skf_friction")
+    args = bench.cases(200, seed=3)
+    assert_allclose(bench.batched(*args), bench.baseline(*args), rtol=1e-12)

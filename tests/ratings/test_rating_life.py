@@ -154,3 +154,12 @@ def test_duty_cycle_is_palmgren_miner():
     assert one.basic_rating_life == pytest.approx(lives[1], rel=1e-14)
     with pytest.raises(InputError, match="time_shares must sum to 1"):
         ratings.duty_cycle_life(B6205, loads, speeds, [0.2, 0.2, 0.2], kinematic_viscosity=30e-6)
+
+
+def test_benchmark_paths_agree_on_a_small_input(load_bench):
+    bench = load_bench("life")
+    from bearinglab import catalog
+
+    bearing = catalog.get("6205-2RS")
+    loads, speeds = bench.cases(200, seed=3)
+    assert_allclose(bench.batched(bearing, loads, speeds), bench.baseline(bearing, loads, speeds), rtol=1e-12)
