@@ -29,6 +29,7 @@ import numpy as np
 
 from .._validate import check_nonnegative, check_positive
 from ..errors import InputError
+from .static import _angular_degrees
 
 __all__ = [
     "MATERIAL_FACTOR",
@@ -220,11 +221,7 @@ def dynamic_load_factors(radial_load, axial_load, static_load_rating, contact_an
                         _DG_RATIO[0], _DG_RATIO[-1])
         x, y, e = _DG_X, np.interp(ratio, _DG_RATIO, _DG_Y), np.interp(ratio, _DG_RATIO, _DG_E)
     elif bearing_type == "angular":
-        deg = np.degrees(np.asarray(contact_angle, dtype=float))
-        bad = ~((deg >= 15.0 - 1e-9) & (deg <= 45.0 + 1e-9))
-        if bad.any():
-            raise InputError(f"contact_angle must be in [15, 45] [deg] for ISO 281 table 3 (angular "
-                             f"contact), got {float(deg[bad].flat[0])!r}")
+        deg = _angular_degrees(contact_angle, "ISO 281 table 3")
         x, y, e = _angular_above_15(deg, fa / c0)
     else:
         raise InputError(f"bearing_type must be one of ['radial', 'angular'], got {bearing_type!r}")

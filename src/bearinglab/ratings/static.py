@@ -266,6 +266,16 @@ class StaticLoadFactors(NamedTuple):
     """Y0. [-]"""
 
 
+def _angular_degrees(contact_angle, table):
+    """Contact angle in degrees, required in [15, 45] (the angular-contact rows of the ISO tables)."""
+    deg = np.degrees(np.asarray(contact_angle, dtype=float))
+    bad = ~((deg >= 15.0 - 1e-9) & (deg <= 45.0 + 1e-9))
+    if bad.any():
+        raise InputError(f"contact_angle must be in [15, 45] [deg] for {table} (angular contact), "
+                         f"got {float(deg[bad].flat[0])!r}")
+    return deg
+
+
 def static_load_factors(contact_angle=0.0, *, bearing_type="radial"):
     """X0 and Y0 of ISO 76:2006 table 1 for single-row ball bearings.
 
@@ -289,11 +299,7 @@ def static_load_factors(contact_angle=0.0, *, bearing_type="radial"):
         return StaticLoadFactors(*_RADIAL_X0_Y0)
     if bearing_type != "angular":
         raise InputError(f"bearing_type must be one of ['radial', 'angular'], got {bearing_type!r}")
-    deg = np.degrees(np.asarray(contact_angle, dtype=float))
-    bad = ~((deg >= 15.0 - 1e-9) & (deg <= 45.0 + 1e-9))
-    if bad.any():
-        raise InputError(f"contact_angle must be in [15, 45] [deg] for ISO 76 table 1 (angular contact), "
-                         f"got {float(deg[bad].flat[0])!r}")
+    deg = _angular_degrees(contact_angle, "ISO 76 table 1")
     y0 = np.interp(deg, _ANGULAR_ANGLES_DEG, _ANGULAR_Y0)
     return StaticLoadFactors(_ANGULAR_X0, y0[()])
 
