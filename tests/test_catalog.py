@@ -71,6 +71,23 @@ BUILTIN = {
         "outside_diameter": 52 * MM,
         "width": 15 * MM,
         "type": "radial",
+        # SKF catalogue (2018), 6205-2RSH: C = 14.8 kN, C0 = 7.8 kN, Pu = 0.335 kN
+        "dynamic_load_rating": 14800.0,
+        "static_load_rating": 7800.0,
+        "fatigue_load_limit": 335.0,
+        "series": "62",
+    },
+    # issue 12: SKF 61811-2RS1, 55 x 72 x 9 mm, d_m = 63.5 mm, RS1 seals on d_s = 59.5 mm
+    "61811-2RS1": {
+        "pitch_diameter": 63.5 * MM,
+        "bore": 55 * MM,
+        "outside_diameter": 72 * MM,
+        "width": 9 * MM,
+        "type": "radial",
+        "series": "618",
+        "seal": "RS1",
+        "seals": 2,
+        "seal_diameter": 59.5 * MM,
     },
 }
 
@@ -103,7 +120,7 @@ def test_unknown_name_lists_known_names():
     with pytest.raises(
         CatalogError,
         match=r"bearing: unknown name 'X999'; known: 1000095, 101, 18, 4-1006095, "
-        r"6205-2RS, 7218B, B218",
+        r"61811-2RS1, 6205-2RS, 7218B, B218",
     ) as info:
         catalog.get("X999")
     assert isinstance(info.value, InputError) and isinstance(info.value, ValueError)
@@ -358,3 +375,62 @@ def test_bad_catalog_in_environment_is_reported(tmp_path, monkeypatch, capsys):
         f"bearinglab: error: {path}, entry 'E', field 'ball_diameter': ball_diameter: '2 kg' is a "
         "mass, expected a length (e.g. '2 mm', '0.2 cm')"
     )
+
+
+def test_ratings_seals_and_materials_keys(tmp_path):
+    f = tmp_path / "cat.toml"
+    f.write_text(
+        """
+[materials."M50"]
+elastic_modulus = "203 GPa"
+poisson_ratio = 0.28
+density = "7.8 g/cm^3"
+
+[bearings."A"]
+balls = 9
+ball_diameter = "7.94 mm"
+pitch_diameter = "39.04 mm"
+contact_angle = "0 deg"
+dynamic_load_rating = "14 kN"
+fatigue_load_limit = "300 N"
+series = "62"
+seal = "RS1"
+seals = 1
+seal_diameter = "30 mm"
+ball_material = "M50"
+ring_material = "steel"
+
+[bearings."B"]
+balls = 9
+ball_diameter = "7.94 mm"
+pitch_diameter = "39.04 mm"
+elastic_modulus = "210 GPa"
+poisson_ratio = 0.3
+""",
+        encoding="utf-8",
+    )
+    a = catalog.get("A", catalog=f)
+    assert (a.dynamic_load_rating, a.fatigue_load_limit, a.series, a.seal, a.seals) == (14000.0, 300.0, "62", "RS1", 1)
+    assert a.seal_diameter == pytest.approx(30 * MM)
+    assert a.ball_material.elastic_modulus == pytest.approx(203e9) and a.ball_material.density == pytest.approx(7800.0)
+    assert a.ring_material == STEEL
+    b = catalog.get("B", catalog=f)
+    assert b.ball_material == b.ring_material and b.ring_material.elastic_modulus == pytest.approx(210e9)
+    assert b.reduced_modulus == pytest.approx(210e9 / (1 - 0.3**2))
+
+
+@pytest.mark.parametrize(
+    ("entry", "message"),
+    [
+        ('seals = 3', "field 'seals': must be 0, 1 or 2"),
+        ('elastic_modulus = "210 GPa"', "field 'elastic_modulus': needs poisson_ratio too"),
+        ('elastic_modulus = "210 GPa"\npoisson_ratio = 0.3\nball_material = "steel"', "not both"),
+        ('ball_material = "unobtainium"', "unknown material 'unobtainium'"),
+        ('dynamic_load_rating = "14 m"', "field 'dynamic_load_rating'"),
+    ],
+)
+def test_new_keys_are_checked(tmp_path, entry, message):
+    f = tmp_path / "bad.toml"
+    f.write_text(f'[bearings."X"]\nballs = 9\nball_diameter = "7.94 mm"\n{entry}\n', encoding="utf-8")
+    with pytest.raises(CatalogError, match=message):
+        catalog.load_catalog(f)

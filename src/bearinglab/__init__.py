@@ -21,6 +21,7 @@ quasistatic high-speed angular-contact bearing under thrust: centrifugal force, 
 tables      results -> engineering-unit columns; the CSV, Parquet and JSON writers
 plots       all figures (matplotlib, loaded on first use); functions return Figures
 cli         the command line (imported on its own: ``bearinglab.cli``, ``python -m bearinglab``)
+ratings     load ratings and rating life: ISO 76, ISO 281, ISO/TS 16281
 """
 
 from . import (
@@ -35,6 +36,7 @@ from . import (
     parallel,
     plots,
     quasistatic,
+    ratings,
     report,
     runout,
     stand,
@@ -58,6 +60,7 @@ __all__ = [
     "parallel",
     "plots",
     "quasistatic",
+    "ratings",
     "report",
     "runout",
     "stand",

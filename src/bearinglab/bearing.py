@@ -113,6 +113,19 @@ class BallBearing:
         Tabulated Hertz coefficients the source used, ``{"inner": delta*, "outer": delta*}``.
     source : str
         Where the numbers come from.
+    dynamic_load_rating : float
+        Catalog basic dynamic load rating C; takes precedence over ISO 281 from the geometry. [N]
+    fatigue_load_limit : float
+        Catalog fatigue load limit Cu; takes precedence over ISO 281 annex B. [N]
+    series : str
+        Bearing series (``"62"``, ``"618"``, ``"72B"``) for the SKF friction constants; read from the
+        designation when not given (:func:`bearinglab.friction.bearing_series`).
+    seal : str
+        Seal type (``"RS1"``, ``"RZ"``, ...) for the seal friction moment.
+    seals : int
+        Number of sealed sides, 0, 1 or 2.
+    seal_diameter : float
+        Seal counterface diameter d_s (SKF: the shoulder diameter the lip runs on). [m]
 
     Examples
     --------
@@ -138,6 +151,12 @@ class BallBearing:
     ring_material: Material = STEEL
     hertz_table: dict = field(default_factory=dict, compare=False)
     source: str = ""
+    dynamic_load_rating: float | None = None
+    fatigue_load_limit: float | None = None
+    series: str | None = None
+    seal: str | None = None
+    seals: int | None = None
+    seal_diameter: float | None = None
 
     def __post_init__(self):
         if self.n_balls is not None and (
@@ -145,7 +164,8 @@ class BallBearing:
         ):
             raise InputError(f"n_balls must be an integer >= 1 [-], got {self.n_balls!r}")
         for name, unit in (("ball_diameter", "m"), ("pitch_diameter", "m"), ("bore", "m"),
-                           ("outside_diameter", "m"), ("width", "m"), ("static_load_rating", "N")):
+                           ("outside_diameter", "m"), ("width", "m"), ("static_load_rating", "N"),
+                           ("dynamic_load_rating", "N"), ("fatigue_load_limit", "N"), ("seal_diameter", "m")):
             _positive(name, getattr(self, name), unit)
         for name in ("inner_conformity", "outer_conformity"):
             f = getattr(self, name)
@@ -165,6 +185,11 @@ class BallBearing:
                 f"outside_diameter must be > bore [mm], got {self.outside_diameter * 1e3:g} mm "
                 f"with bore = {self.bore * 1e3:g} mm"
             )
+        if self.seals is not None and (isinstance(self.seals, bool) or self.seals not in (0, 1, 2)):
+            raise InputError(f"seals must be 0, 1 or 2 (sealed sides) [-], got {self.seals!r}")
+        for name in ("series", "seal"):
+            if getattr(self, name) is not None and not isinstance(getattr(self, name), str):
+                raise InputError(f"{name} must be a string, got {getattr(self, name)!r}")
         if self.type not in _TYPES:
             raise InputError(f"type must be one of {list(_TYPES)}, got {self.type!r}")
         if self.contact_angle is not None:

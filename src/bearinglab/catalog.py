@@ -22,6 +22,16 @@ File format (quantities are strings with units)::
     bore = "90 mm"                            # optional: bore, outside_diameter, width,
     type = "angular"                          # type (radial|angular), static_load_rating,
     ball_material = "steel"                   # ball_material (steel|silicon_nitride), source
+    dynamic_load_rating = "124 kN"            # optional catalog ratings: dynamic_load_rating,
+    fatigue_load_limit = "3.9 kN"             # static_load_rating, fatigue_load_limit
+    series = "72B"                            # optional: series (SKF friction constants),
+    seal = "RS1"                              # seal type, seals (sealed sides, 0-2),
+    seals = 2                                 # seal_diameter (seal counterface d_s)
+    seal_diameter = "59.5 mm"
+
+Materials: ``ball_material`` / ``ring_material`` name a built-in material (steel, silicon_nitride) or a
+``[materials."NAME"]`` table of the same file (``elastic_modulus``, ``poisson_ratio``, ``density``);
+or ``elastic_modulus`` and ``poisson_ratio`` in the entry set both parts at once (steel's density).
 
 A user catalog is given by ``--catalog FILE`` or the environment variable ``BEARINGLAB_CATALOG``
 (several files separated by ``os.pathsep``); its entries take precedence over the built-ins.
@@ -35,7 +45,7 @@ import tomllib
 from importlib import resources
 from pathlib import Path
 
-from .bearing import MATERIALS, BallBearing
+from .bearing import MATERIALS, STEEL, BallBearing, Material
 from .errors import CatalogError, InputError
 from .units import parse_quantity
 
@@ -43,13 +53,17 @@ __all__ = ["ENV_VAR", "bearing_from_table", "builtin", "get", "load_bearing_file
 
 ENV_VAR = "BEARINGLAB_CATALOG"
 
-_LENGTHS = ("ball_diameter", "pitch_diameter", "bore", "outside_diameter", "width", "radial_clearance")
+_LENGTHS = ("ball_diameter", "pitch_diameter", "bore", "outside_diameter", "width", "radial_clearance",
+            "seal_diameter")
+_FORCES = ("static_load_rating", "dynamic_load_rating", "fatigue_load_limit")
 _KNOWN = {
     "balls", "ball_diameter", "pitch_diameter", "inner_groove_radius", "outer_groove_radius",
     "inner_conformity", "outer_conformity", "contact_angle", "radial_clearance", "bore",
     "outside_diameter", "width", "type", "static_load_rating", "ball_material", "ring_material",
-    "source", "aliases", "hertz_table", "designation",
+    "source", "aliases", "hertz_table", "designation", "dynamic_load_rating", "fatigue_load_limit",
+    "series", "seal", "seals", "seal_diameter", "elastic_modulus", "poisson_ratio",
 }
+_MATERIAL_KEYS = {"elastic_modulus": "pressure", "poisson_ratio": "dimensionless", "density": "density"}
 
 
 def _where(file, entry):
@@ -57,7 +71,50 @@ def _where(file, entry):
     return f"{loc}, entry {entry!r}" if entry else loc
 
 
-def bearing_from_table(table, *, name="", file=None):
+def _material_table(table, name, where):
+    """A ``[materials."NAME"]`` table -> Material."""
+    if not isinstance(table, dict):
+        raise CatalogError(f"{where}, material {name!r}: expected a table of fields, got {type(table).__name__}")
+    unknown = sorted(set(table) - set(_MATERIAL_KEYS))
+    missing = sorted(set(_MATERIAL_KEYS) - set(table))
+    if unknown or missing:
+        raise CatalogError(f"{where}, material {name!r}: fields must be {sorted(_MATERIAL_KEYS)}, "
+                           f"{'unknown ' + repr(unknown[0]) if unknown else 'missing ' + repr(missing[0])}")
+    try:
+        values = {k: parse_quantity(table[k], kind, k) for k, kind in _MATERIAL_KEYS.items()}
+        return Material(name, **values)
+    except InputError as exc:
+        raise CatalogError(f"{where}, material {name!r}: {exc}") from None
+
+
+def _materials(table, kw, where, materials, q):
+    """Ball and ring materials of an entry: named, or from elastic_modulus and poisson_ratio."""
+    known = {**MATERIALS, **{k.lower(): m for k, m in (materials or {}).items()}}
+    for key in ("ball_material", "ring_material"):
+        if key in table:
+            mat = str(table[key]).lower().replace(" ", "_").replace("-", "_")
+            if mat not in known:
+                raise CatalogError(f"{where}, field {key!r}: unknown material {table[key]!r} "
+                                   f"(known: {', '.join(known)})")
+            kw[key] = known[mat]
+    elastic = [k for k in ("elastic_modulus", "poisson_ratio") if k in table]
+    if not elastic:
+        return
+    if len(elastic) == 1:
+        other = ({"elastic_modulus", "poisson_ratio"} - set(elastic)).pop()
+        raise CatalogError(f"{where}, field {elastic[0]!r}: needs {other} too")
+    if "ball_material" in kw or "ring_material" in kw:
+        raise CatalogError(f"{where}, field 'elastic_modulus': give elastic_modulus / poisson_ratio or "
+                           "ball_material / ring_material, not both")
+    try:
+        mat = Material(f"{where} material", q("elastic_modulus", "pressure"), q("poisson_ratio", "dimensionless"),
+                       STEEL.density)
+    except InputError as exc:
+        raise CatalogError(f"{where}, field 'elastic_modulus': {exc}") from None
+    kw["ball_material"] = kw["ring_material"] = mat
+
+
+def bearing_from_table(table, *, name="", file=None, materials=None):
     """Build a :class:`~bearinglab.bearing.BallBearing` from one catalog table.
 
     Parameters
@@ -68,6 +125,9 @@ def bearing_from_table(table, *, name="", file=None):
         Designation of the entry.
     file : str or Path, optional
         The file it came from, for error messages.
+    materials : dict, optional
+        ``{name: Material}`` of the file's ``[materials."NAME"]`` tables, for ``ball_material`` and
+        ``ring_material``.
 
     Returns
     -------
@@ -120,17 +180,17 @@ def bearing_from_table(table, *, name="", file=None):
                 kw[f_key] = q(f_key, "dimensionless")
         if "contact_angle" in table:
             kw["contact_angle"] = q("contact_angle", "angle")
-        if "static_load_rating" in table:
-            kw["static_load_rating"] = q("static_load_rating", "force")
-        for key in ("ball_material", "ring_material"):
+        for key in _FORCES:
             if key in table:
-                mat = str(table[key]).lower().replace(" ", "_").replace("-", "_")
-                if mat not in MATERIALS:
-                    raise CatalogError(f"{where}, field {key!r}: unknown material {table[key]!r} (known: {', '.join(MATERIALS)})")
-                kw[key] = MATERIALS[mat]
-        for key in ("type", "source"):
+                kw[key] = q(key, "force")
+        _materials(table, kw, where, materials, q)
+        for key in ("type", "source", "series", "seal"):
             if key in table:
                 kw[key] = str(table[key])
+        if "seals" in table:
+            if isinstance(table["seals"], bool) or table["seals"] not in (0, 1, 2):
+                raise CatalogError(f"{where}, field 'seals': must be 0, 1 or 2 (sealed sides), got {table['seals']!r}")
+            kw["seals"] = int(table["seals"])
         if "hertz_table" in table:
             ht = table["hertz_table"]
             if not (isinstance(ht, dict) and set(ht) <= {"inner", "outer"} and all(isinstance(v, (int, float)) for v in ht.values())):
@@ -167,9 +227,13 @@ def _entries(doc, file):
     bearings = doc.get("bearings")
     if not isinstance(bearings, dict) or not bearings:
         raise CatalogError(f"{file}: no [bearings.\"NAME\"] tables")
+    tables = doc.get("materials", {})
+    if not isinstance(tables, dict):
+        raise CatalogError(f"{file}: [materials] must hold [materials.\"NAME\"] tables")
+    materials = {k: _material_table(v, k, file) for k, v in tables.items()}
     out, aliases = {}, {}
     for name, table in bearings.items():
-        out[name] = bearing_from_table(table, name=name, file=file)
+        out[name] = bearing_from_table(table, name=name, file=file, materials=materials)
         names = table.get("aliases", [])
         if not (isinstance(names, list) and all(isinstance(a, str) for a in names)):
             raise CatalogError(f"{_where(file, name)}, field 'aliases': expected a list of names such as "
@@ -222,7 +286,12 @@ def load_bearing_file(path):
             raise CatalogError(f"{path}: a bearing file holds one bearing, found {len(entries)}")
         return next(iter(entries.values()))
     name = str(doc.get("designation", Path(path).stem))
-    return bearing_from_table(doc, name=name, file=path)
+    doc = dict(doc)
+    tables = doc.pop("materials", {})
+    if not isinstance(tables, dict):
+        raise CatalogError(f"{path}: [materials] must hold [materials.\"NAME\"] tables")
+    materials = {k: _material_table(v, k, path) for k, v in tables.items()}
+    return bearing_from_table(doc, name=name, file=path, materials=materials)
 
 
 @functools.cache

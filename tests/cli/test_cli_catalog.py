@@ -77,7 +77,7 @@ def _one_line_exit_2(code, out, err):
 def test_unknown_name(capsys):
     code, out, err = run(capsys, "catalog", "show", "6206")
     _one_line_exit_2(code, out, err)
-    assert "unknown name '6206'; known: 1000095, 101, 18, 4-1006095, 6205-2RS, 7218B, B218" in err
+    assert "unknown name '6206'; known: 1000095, 101, 18, 4-1006095, 61811-2RS1, 6205-2RS, 7218B, B218" in err
 
 
 def test_missing_catalog_file(capsys, tmp_path):

@@ -139,7 +139,7 @@ def test_noiseless_two_term_data_recovered_by_task3(f0, f, dm, c0, p0, n, spread
 @given(mu=st.floats(1e-4, 1e-2), d=st.floats(1e-3, 0.1), m=st.integers(1, 6))
 def test_noiseless_one_term_data_recovered_by_task1(mu, d, m):
     p0 = np.linspace(1.0, 30.0, m)
-    t = friction.one_term(p0, d, friction_coefficient=mu)
+    t = friction.one_term(p0, d, reduced_friction_coefficient=mu)
     got = fits.reduced_friction_coefficient(t, p0, d)
     assert got.reduced_friction_coefficient == pytest.approx(mu, rel=1e-12)
     assert got.residual_rms <= 1e-12 * float(np.max(t))

@@ -287,7 +287,7 @@ def _one_term(b, p0, mu, info):
     """Speed and load terms of the one-term model (the whole torque is the load term)."""
     d = b.require("bore")
     mu_used = friction.handbook_friction_coefficient(b.type) if mu is None else mu
-    total = np.atleast_1d(friction.one_term(p0, d, bearing_type=b.type, friction_coefficient=mu))
+    total = np.atleast_1d(friction.one_term(p0, d, bearing_type=b.type, reduced_friction_coefficient=mu))
     info.update({"mu": mu_used, "bore_mm": d * 1e3})
     return np.zeros_like(total), total  # one term, proportional to the load
 

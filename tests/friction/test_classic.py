@@ -125,7 +125,7 @@ def test_one_term_handbook_mu_and_override():
     assert friction.one_term(19.62, 5e-3, bearing_type="angular") == pytest.approx(
         t * 0.002 / 0.0015, rel=1e-14
     )
-    assert friction.one_term(19.62, 5e-3, friction_coefficient=0.003) == pytest.approx(
+    assert friction.one_term(19.62, 5e-3, reduced_friction_coefficient=0.003) == pytest.approx(
         2 * t, rel=1e-14
     )
     with pytest.raises(InputError, match=r"bore must be > 0 \[m\], got 0\.0"):
@@ -267,3 +267,17 @@ def test_public_docstrings_document_exactly_the_signature(name):
         return
     params = list(inspect.signature(obj).parameters)
     assert _documented_parameters(inspect.getdoc(obj) and obj.__doc__) == params, name
+
+
+def test_one_term_old_keyword_still_works_with_a_deprecation_warning():
+    with pytest.warns(DeprecationWarning, match="reduced_friction_coefficient"):
+        old = friction.one_term(19.62, 5e-3, friction_coefficient=0.003)
+    assert old == friction.one_term(19.62, 5e-3, reduced_friction_coefficient=0.003)
+    with pytest.raises(InputError, match="reduced_friction_coefficient only"):
+        friction.one_term(19.62, 5e-3, friction_coefficient=0.003, reduced_friction_coefficient=0.003)
+
+
+def test_dispatcher_lists_the_models():
+    assert friction.torque("palmgren", 20e-6, 300.0, 20e-3, 2.0) == friction.palmgren(20e-6, 300.0, 20e-3, 2.0)
+    with pytest.raises(InputError, match=r"model must be one of \['one-term', 'two-term', 'palmgren', 'skf'\]"):
+        friction.torque("coulomb", 1.0)

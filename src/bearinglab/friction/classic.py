@@ -1,4 +1,4 @@
-r"""Friction torque of single-row ball bearings: the handbook models of spec 001 section 3.
+r"""Friction torque of single-row ball bearings: the handbook models of spec 001 section 3 (classic models).
 
 Static equivalent load
 ----------------------
@@ -59,8 +59,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._validate import check_finite, check_nonnegative, check_positive
-from .errors import InputError, ValidityWarning
+from .._validate import check_finite, check_nonnegative, check_positive
+from ..errors import InputError, ValidityWarning
 
 __all__ = [
     "ANGULAR_LOAD_TERM_BELOW_30",
@@ -349,7 +349,8 @@ def handbook_friction_coefficient(bearing_type="radial"):
     return HANDBOOK_FRICTION_COEFFICIENTS[bearing_type]
 
 
-def one_term(equivalent_load, bore, *, bearing_type="radial", friction_coefficient=None):
+def one_term(equivalent_load, bore, *, bearing_type="radial", reduced_friction_coefficient=None,
+             friction_coefficient=None):
     """Friction torque of the one-term model, T = mu P0 d / 2 (3.2).
 
     Parameters
@@ -359,9 +360,11 @@ def one_term(equivalent_load, bore, *, bearing_type="radial", friction_coefficie
     bore : array_like
         Bore diameter d (not the mean diameter, spec 001 section 8.15). [m]
     bearing_type : {"radial", "angular"}
-        Selects the handbook mu when ``friction_coefficient`` is not given. [-]
+        Selects the handbook mu when ``reduced_friction_coefficient`` is not given. [-]
+    reduced_friction_coefficient : array_like, optional
+        Override of mu, the friction coefficient referred to the bore. [-]
     friction_coefficient : array_like, optional
-        Override of mu. [-]
+        Deprecated name of ``reduced_friction_coefficient`` (warns with DeprecationWarning). [-]
 
     Returns
     -------
@@ -379,14 +382,20 @@ def one_term(equivalent_load, bore, *, bearing_type="radial", friction_coefficie
     >>> print(f"{one_term(19.62, 5e-3) * 1e3:.6f} N*mm")
     0.073575 N*mm
     """
+    if friction_coefficient is not None:
+        if reduced_friction_coefficient is not None:
+            raise InputError("give reduced_friction_coefficient only (friction_coefficient is its old name)")
+        warnings.warn("one_term(friction_coefficient=) is deprecated; use reduced_friction_coefficient=",
+                      DeprecationWarning, stacklevel=2)
+        reduced_friction_coefficient = friction_coefficient
     p0 = check_nonnegative("equivalent_load", equivalent_load, "N")
     d = check_positive("bore", bore, "m")
     mu = (
         handbook_friction_coefficient(bearing_type)
-        if friction_coefficient is None
-        else friction_coefficient
+        if reduced_friction_coefficient is None
+        else reduced_friction_coefficient
     )
-    mu = check_nonnegative("friction_coefficient", mu, "-")
+    mu = check_nonnegative("reduced_friction_coefficient", mu, "-")
     return _scalar(mu * p0 * d / 2.0)  # (3.2)
 
 

@@ -1,0 +1,129 @@
+r"""Friction torque of ball bearings: one function per published model, and a dispatcher.
+
+Classic models (:mod:`.classic`, spec 001 section 3)
+----------------------------------------------------
+static_load_factors, equivalent_static_load, combined_branch_governs   P0 = max(x0 Fr + y0 Fa, Fr)
+handbook_friction_coefficient, one_term                T = mu P0 d / 2 (mu: reduced friction coefficient)
+load_term_constants, load_term, speed_term, two_term   T = T0 + T_F
+palmgren, speed_term_factor_from_palmgren              Palmgren's M0 from the viscosity
+
+SKF four-term model (:mod:`.skf`)
+---------------------------------
+skf, skf_for_bearing                   M = M_rr + M_sl + M_seal + M_drag
+series_constants, bearing_series, seal_constants, sliding_friction_coefficient   its parts and tables
+
+Dispatcher
+----------
+torque                                 call a model by name (``MODELS``)
+
+Every name of the former module ``bearinglab.friction`` is re-exported here.
+"""
+
+from ..errors import InputError
+from . import classic
+from . import skf as skf_model
+from .classic import (
+    ANGULAR_LOAD_TERM_BELOW_30,
+    ANGULAR_LOAD_TERM_FROM_30,
+    ANGULAR_STATIC_FACTORS,
+    BEARING_TYPES,
+    HANDBOOK_FRICTION_COEFFICIENTS,
+    RADIAL_LOAD_TERM,
+    RADIAL_STATIC_FACTORS,
+    LoadTermConstants,
+    StaticLoadFactors,
+    TwoTermTorque,
+    combined_branch_governs,
+    equivalent_static_load,
+    handbook_friction_coefficient,
+    load_term,
+    load_term_constants,
+    one_term,
+    palmgren,
+    speed_term,
+    speed_term_factor_from_palmgren,
+    static_load_factors,
+    two_term,
+)
+from .skf import (
+    DEEP_GROOVE_CONSTANTS,
+    LUBRICATION_METHODS,
+    SEAL_CONSTANTS,
+    SealConstants,
+    SKFConstants,
+    SKFTorque,
+    bearing_series,
+    seal_constants,
+    series_constants,
+    skf,
+    skf_for_bearing,
+    sliding_friction_coefficient,
+)
+
+__all__ = [
+    "ANGULAR_LOAD_TERM_BELOW_30",
+    "ANGULAR_LOAD_TERM_FROM_30",
+    "ANGULAR_STATIC_FACTORS",
+    "BEARING_TYPES",
+    "DEEP_GROOVE_CONSTANTS",
+    "HANDBOOK_FRICTION_COEFFICIENTS",
+    "LUBRICATION_METHODS",
+    "MODELS",
+    "RADIAL_LOAD_TERM",
+    "RADIAL_STATIC_FACTORS",
+    "SEAL_CONSTANTS",
+    "LoadTermConstants",
+    "SKFConstants",
+    "SKFTorque",
+    "SealConstants",
+    "StaticLoadFactors",
+    "TwoTermTorque",
+    "bearing_series",
+    "classic",
+    "combined_branch_governs",
+    "equivalent_static_load",
+    "handbook_friction_coefficient",
+    "load_term",
+    "load_term_constants",
+    "one_term",
+    "palmgren",
+    "seal_constants",
+    "series_constants",
+    "skf",
+    "skf_for_bearing",
+    "skf_model",
+    "sliding_friction_coefficient",
+    "speed_term",
+    "speed_term_factor_from_palmgren",
+    "static_load_factors",
+    "torque",
+    "two_term",
+]
+
+#: Model name -> function, for :func:`torque` and the command line.
+MODELS = {"one-term": one_term, "two-term": two_term, "palmgren": palmgren, "skf": skf}
+
+
+def torque(model, *args, **kwargs):
+    """Friction torque by the named model.
+
+    Parameters
+    ----------
+    model : str
+        One of :data:`MODELS`: ``"one-term"``, ``"two-term"``, ``"palmgren"``, ``"skf"``.
+    *args, **kwargs : optional
+        The arguments of that model's function.
+
+    Returns
+    -------
+    float, ndarray or NamedTuple
+        What the model's function returns (N m, or its NamedTuple of moments).
+
+    Examples
+    --------
+    >>> print(f"{torque('one-term', 19.62, 5e-3) * 1e3:.6f} N*mm")
+    0.073575 N*mm
+    """
+    if model not in MODELS:
+        raise InputError(f"model must be one of {list(MODELS)}, got {model!r}")
+    return MODELS[model](*args, **kwargs)

@@ -1,0 +1,448 @@
+r"""The SKF four-term friction model of deep-groove and angular-contact ball bearings.
+
+Model
+-----
+skf                        M = Phi_ish Phi_rs M_rr + M_sl + M_seal + M_drag from loads, speed and viscosity
+skf_for_bearing            the same for a BallBearing (series, seals and ratings read from it)
+
+Parts and tables
+----------------
+SKFConstants               the geometry constants R1, R2, R3, S1, S2, S3 of a bearing series
+series_constants           the constants of a series (deep groove: SKF table, by series)
+bearing_series             the series of a designation ("6205-2RSH" -> "62", "61811-2RS1" -> "618")
+seal_constants             K_S1, beta, K_S2 of a seal type and outside diameter
+sliding_friction_coefficient   mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL
+DEEP_GROOVE_CONSTANTS, SEAL_CONSTANTS, LUBRICATION_METHODS   the tables
+
+The published model is in N, mm, rpm and mm^2/s with moments in N mm; the API is SI (N, m, rad/s,
+m^2/s, N m) and :func:`skf` converts its inputs and outputs once, in plain sight.
+
+References
+----------
+.. [1] SKF, *Rolling bearings*, catalogue PUB BU/P1 17000 EN, 2018, section "Friction": the SKF model
+   for calculating the frictional moment (rolling, sliding, seal and drag moments; inlet shear heating
+   and kinematic replenishment/starvation factors; the variables G_rr, G_sl of its table for radial
+   bearings; the geometry constants of deep-groove ball bearings by series; the seal constants).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from typing import NamedTuple
+
+import numpy as np
+
+from .._validate import check_nonnegative, check_positive
+from ..errors import InputError
+
+__all__ = [
+    "DEEP_GROOVE_CONSTANTS",
+    "LUBRICATION_METHODS",
+    "SEAL_CONSTANTS",
+    "SKFConstants",
+    "SKFTorque",
+    "SealConstants",
+    "bearing_series",
+    "seal_constants",
+    "series_constants",
+    "skf",
+    "skf_for_bearing",
+    "sliding_friction_coefficient",
+]
+
+_MM, _CST, _RPM = 1e-3, 1e-6, 2.0 * math.pi / 60.0  # m per mm, m^2/s per mm^2/s, rad/s per rpm
+
+
+class SKFConstants(NamedTuple):
+    """Geometry constants of the rolling (R) and sliding (S) frictional moments of a bearing series."""
+
+    r1: float
+    r2: float
+    s1: float
+    s2: float
+    r3: float = 0.0
+    """Angular contact only (with S3: the centrifugal term F_g)."""
+    s3: float = 0.0
+
+
+# SKF Rolling bearings catalogue (2018), Friction, geometry constants of deep-groove ball bearings by
+# series: (R1, R2, S1, S2); R3 = S3 = 0. Units of the published model (N, mm).
+DEEP_GROOVE_CONSTANTS = {
+    "2": SKFConstants(4.4e-7, 1.7, 2.00e-3, 100.0),
+    "3": SKFConstants(4.4e-7, 1.7, 2.00e-3, 100.0),
+    "42": SKFConstants(5.4e-7, 0.96, 3.00e-3, 40.0),
+    "43": SKFConstants(5.4e-7, 0.96, 3.00e-3, 40.0),
+    "60": SKFConstants(4.1e-7, 1.7, 3.73e-3, 14.6),
+    "630": SKFConstants(4.1e-7, 1.7, 3.73e-3, 14.6),
+    "62": SKFConstants(3.9e-7, 1.7, 3.23e-3, 36.5),
+    "622": SKFConstants(3.9e-7, 1.7, 3.23e-3, 36.5),
+    "63": SKFConstants(3.7e-7, 1.7, 2.84e-3, 92.8),
+    "623": SKFConstants(3.7e-7, 1.7, 2.84e-3, 92.8),
+    "64": SKFConstants(3.6e-7, 1.7, 2.43e-3, 198.0),
+    "160": SKFConstants(4.3e-7, 1.7, 4.63e-3, 4.25),
+    "161": SKFConstants(4.3e-7, 1.7, 4.63e-3, 4.25),
+    "617": SKFConstants(4.7e-7, 1.7, 6.50e-3, 0.78),
+    "618": SKFConstants(4.7e-7, 1.7, 6.50e-3, 0.78),
+    "628": SKFConstants(4.7e-7, 1.7, 6.50e-3, 0.78),
+    "637": SKFConstants(4.7e-7, 1.7, 6.50e-3, 0.78),
+    "638": SKFConstants(4.7e-7, 1.7, 6.50e-3, 0.78),
+    "619": SKFConstants(4.3e-7, 1.7, 4.75e-3, 3.6),
+    "639": SKFConstants(4.3e-7, 1.7, 4.75e-3, 3.6),
+}
+
+
+class SealConstants(NamedTuple):
+    """M_seal = K_S1 d_s^beta + K_S2 [N mm, d_s in mm] for a bearing sealed on both sides."""
+
+    ks1: float
+    beta: float
+    ks2: float
+
+
+# SKF Rolling bearings catalogue (2018), Friction, seal frictional moment constants of deep-groove ball
+# bearings: seal type -> [(upper limit of the outside diameter D [mm], constants)], first row that fits.
+# Non-contact seals (RZ) and shields (Z) have no seal moment in the model. Other rows: give the
+# constants (``seal_constants=``).
+SEAL_CONSTANTS = {
+    "RS1": [(80.0, SealConstants(0.018, 2.25, 20.0))],  # valid 62 < D <= 80 mm
+    "RZ": [(math.inf, SealConstants(0.0, 0.0, 0.0))],
+    "Z": [(math.inf, SealConstants(0.0, 0.0, 0.0))],
+}
+_SEAL_LOWER = {"RS1": 62.0}  # mm: the row's lower limit of D (exclusive)
+
+# K_rs of the replenishment/starvation factor: SKF catalogue, "Kinematic replenishment/starvation
+# reduction factor" (3e-8 for low-level oil bath and oil jet, 6e-8 for grease and oil-air).
+LUBRICATION_METHODS = {"grease": 6e-8, "oil-air": 6e-8, "oil-jet": 3e-8}
+_KZ = {"radial": 3.1, "angular": 4.4}  # bearing-type constant K_Z (deep groove, angular contact)
+# mu_bl and mu_EHL (mineral oil) of the sliding friction coefficient
+_MU_BOUNDARY, _MU_EHL = 0.15, 0.05
+
+
+def bearing_series(designation):
+    """The SKF series of a deep-groove ball bearing designation.
+
+    Parameters
+    ----------
+    designation : str
+        E.g. ``"6205-2RSH"``, ``"61811-2RS1"``, ``"16004"``, ``"6305"``.
+
+    Returns
+    -------
+    str
+        The series key of :data:`DEEP_GROOVE_CONSTANTS` (``"62"``, ``"618"``, ``"160"`` ...).
+
+    Examples
+    --------
+    >>> bearing_series("61811-2RS1"), bearing_series("6205-2RS"), bearing_series("16004"), bearing_series("618/500")
+    ('618', '62', '160', '618')
+    """
+    text = str(designation).strip()
+    m = re.match(r"(\d+)\s*/", text)  # 618/500: the series before the slash
+    if m:
+        head = m.group(1)
+    else:
+        m = re.match(r"(\d+)", text)
+        if not m:
+            raise InputError(f"series cannot be read from the designation {designation!r}; give the series")
+        head = m.group(1)[:-2]  # the last two digits are the bore code
+    if head not in DEEP_GROOVE_CONSTANTS:
+        raise InputError(f"series {head!r} of {designation!r} is not in the table; known: "
+                         f"{', '.join(DEEP_GROOVE_CONSTANTS)}")
+    return head
+
+
+def series_constants(series):
+    """Geometry constants of a deep-groove ball bearing series.
+
+    Parameters
+    ----------
+    series : str
+        A key of :data:`DEEP_GROOVE_CONSTANTS`.
+
+    Returns
+    -------
+    SKFConstants
+
+    Examples
+    --------
+    >>> series_constants("62").s2
+    36.5
+    """
+    key = str(series).strip().upper()
+    if key not in DEEP_GROOVE_CONSTANTS:
+        raise InputError(f"series must be one of {list(DEEP_GROOVE_CONSTANTS)} (deep groove; for other "
+                         f"bearings give constants=SKFConstants(...)), got {series!r}")
+    return DEEP_GROOVE_CONSTANTS[key]
+
+
+def seal_constants(seal, outside_diameter):
+    """K_S1, beta and K_S2 of a seal type for a bearing of outside diameter D.
+
+    Parameters
+    ----------
+    seal : str
+        Seal type, a key of :data:`SEAL_CONSTANTS` (``"RS1"``, ``"RZ"``, ``"Z"``).
+    outside_diameter : float
+        D. [m]
+
+    Returns
+    -------
+    SealConstants
+
+    Examples
+    --------
+    >>> seal_constants("RS1", 0.072)
+    SealConstants(ks1=0.018, beta=2.25, ks2=20.0)
+    """
+    key = str(seal).strip().upper()
+    if key not in SEAL_CONSTANTS:
+        raise InputError(f"seal must be one of {list(SEAL_CONSTANTS)} (or give seal_constants=), got {seal!r}")
+    big = float(check_positive("outside_diameter", outside_diameter, "m")) / _MM
+    for upper, constants in SEAL_CONSTANTS[key]:
+        if _SEAL_LOWER.get(key, 0.0) < big <= upper:
+            return constants
+    raise InputError(f"outside_diameter {big:g} mm is outside the tabulated rows of seal {key!r} "
+                     f"({_SEAL_LOWER.get(key, 0.0):g} < D <= {SEAL_CONSTANTS[key][-1][0]:g} mm); give seal_constants=")
+
+
+def sliding_friction_coefficient(kinematic_viscosity, shaft_speed, mean_diameter, *,
+                                 boundary_coefficient=_MU_BOUNDARY, ehl_coefficient=_MU_EHL):
+    r"""Sliding friction coefficient mu_sl of the SKF model.
+
+    Parameters
+    ----------
+    kinematic_viscosity : array_like
+        nu at the operating temperature (of the base oil for grease). [m^2/s]
+    shaft_speed : array_like
+        n. [rad/s]
+    mean_diameter : array_like
+        d_m = (d + D)/2. [m]
+    boundary_coefficient : float
+        mu_bl, 0.15. [-]
+    ehl_coefficient : float
+        mu_EHL, 0.05 for mineral oils. [-]
+
+    Returns
+    -------
+    ndarray or float
+        :math:`\mu_{sl} = \phi_{bl}\mu_{bl} + (1-\phi_{bl})\mu_{EHL}`,
+        :math:`\phi_{bl} = \exp(-2.6\times10^{-8} (n\nu)^{1.4} d_m)` (rpm, mm^2/s, mm). [-]
+
+    Examples
+    --------
+    >>> print(f"{sliding_friction_coefficient(30e-6, 2000 * 2 * np.pi / 60, 63.5e-3):.5f}")
+    0.05003
+    """
+    nu = check_nonnegative("kinematic_viscosity", kinematic_viscosity, "m^2/s") / _CST
+    n = np.abs(np.asarray(shaft_speed, dtype=float)) / _RPM
+    dm = check_positive("mean_diameter", mean_diameter, "m") / _MM
+    phi_bl = np.exp(-2.6e-8 * (n * nu) ** 1.4 * dm)
+    return (phi_bl * boundary_coefficient + (1.0 - phi_bl) * ehl_coefficient)[()]
+
+
+_mu_sl = sliding_friction_coefficient  # skf() takes a keyword of the same name
+
+
+class SKFTorque(NamedTuple):
+    """The four moments of the SKF model, their sum and the power loss (SI)."""
+
+    rolling_moment: np.ndarray
+    """Phi_ish Phi_rs M_rr. [N m]"""
+    sliding_moment: np.ndarray
+    """M_sl. [N m]"""
+    seal_moment: np.ndarray
+    """M_seal. [N m]"""
+    drag_moment: np.ndarray
+    """M_drag (0: oil bath is not modelled). [N m]"""
+    total_moment: np.ndarray
+    """M. [N m]"""
+    power_loss: np.ndarray
+    """M n. [W]"""
+    sliding_friction_coefficient: np.ndarray
+    """mu_sl. [-]"""
+
+
+def _load_variables(fr, fa, n, dm, c, bearing_type, c0):
+    """G_rr and G_sl of the SKF table for radial bearings (N, mm, rpm)."""
+    if bearing_type == "radial":
+        if np.any(fa > 0) and c0 is None:
+            raise InputError("static_load_rating (C0) is needed for a deep-groove bearing under axial load")
+        with np.errstate(divide="ignore", invalid="ignore"):
+            sin_af = np.sin(np.radians(24.6 * (fa / (c0 if c0 is not None else 1.0)) ** 0.24))
+            axial = fa > 0
+            s = np.where(axial, sin_af, 1.0)
+            g_rr = c.r1 * dm**1.96 * np.where(axial, fr + c.r2 * fa / s, fr) ** 0.54
+            g_sl = np.where(axial, c.s1 * dm**-0.145 * (fr**5 + c.s2 * dm**1.5 * fa**4 / s) ** (1 / 3),
+                            c.s1 * dm**-0.26 * fr ** (5 / 3))
+        return g_rr, g_sl
+    fg_r = c.r3 * dm**4 * n**2
+    fg_s = c.s3 * dm**4 * n**2
+    g_rr = c.r1 * dm**1.97 * (fr + fg_r + c.r2 * fa) ** 0.54
+    g_sl = c.s1 * dm**0.26 * ((fr + fg_s) ** (4 / 3) + c.s2 * fa ** (4 / 3))
+    return g_rr, g_sl
+
+
+def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside_diameter, *, series=None,
+        constants=None, bearing_type="radial", lubrication="grease", static_load_rating=None, seal=None,
+        seals=2, seal_diameter=None, seal_constants_override=None, sliding_friction_coefficient=None,
+        ehl_coefficient=_MU_EHL):
+    r"""Frictional moment of a deep-groove or angular-contact ball bearing by the SKF four-term model.
+
+    Parameters
+    ----------
+    radial_load, axial_load : array_like
+        Fr and Fa, >= 0. [N]
+    shaft_speed : array_like
+        n (its sign does not matter). [rad/s]
+    kinematic_viscosity : array_like
+        nu at the operating temperature (of the base oil for grease). [m^2/s]
+    bore, outside_diameter : array_like
+        d and D; d_m = (d + D)/2. [m]
+    series : str, optional
+        Deep-groove series for the constants (see :func:`series_constants`).
+    constants : SKFConstants, optional
+        The geometry constants directly (required for angular contact). [-]
+    bearing_type : {"radial", "angular"}
+        Deep groove (K_Z = 3.1) or angular contact (K_Z = 4.4).
+    lubrication : {"grease", "oil-air", "oil-jet"}
+        Sets K_rs; oil bath is refused (its drag moment is not modelled).
+    static_load_rating : float, optional
+        C0, needed for a deep-groove bearing under axial load. [N]
+    seal : str, optional
+        Seal type (see :func:`seal_constants`); None for an open bearing.
+    seals : int
+        Sealed sides, 0, 1 or 2 (the table's moment is for two). [-]
+    seal_diameter : float, optional
+        Seal counterface diameter d_s, needed with a seal. [m]
+    seal_constants_override : SealConstants, optional
+        Seal constants in place of the table's. [-]
+    sliding_friction_coefficient : array_like, optional
+        mu_sl in place of the model's (e.g. fitted on a rig). [-]
+    ehl_coefficient : float
+        mu_EHL of the lubricant, 0.05 for mineral oils. [-]
+
+    Returns
+    -------
+    SKFTorque
+
+    Notes
+    -----
+    In the catalogue's units (N, mm, rpm, mm^2/s; moments N mm):
+    :math:`M = \Phi_{ish}\Phi_{rs} G_{rr}(\nu n)^{0.6} + G_{sl}\mu_{sl} + K_{S1} d_s^\beta + K_{S2}
+    + M_{drag}` with :math:`\Phi_{ish} = 1/(1 + 1.84\times10^{-9}(n d_m)^{1.28}\nu^{0.64})` and
+    :math:`\Phi_{rs} = \exp(-K_{rs}\nu n (d + D)\sqrt{K_Z/(2(D-d))})`. Deep groove with Fa = 0:
+    :math:`G_{rr} = R_1 d_m^{1.96} F_r^{0.54}`, :math:`G_{sl} = S_1 d_m^{-0.26} F_r^{5/3}`; with
+    Fa > 0, :math:`\alpha_F = 24.6 (F_a/C_0)^{0.24}` deg, :math:`G_{rr} = R_1 d_m^{1.96}(F_r + R_2 F_a/
+    \sin\alpha_F)^{0.54}` and :math:`G_{sl} = S_1 d_m^{-0.145}(F_r^5 + S_2 d_m^{1.5} F_a^4/\sin
+    \alpha_F)^{1/3}`. Angular contact: :math:`G_{rr} = R_1 d_m^{1.97}(F_r + F_g + R_2 F_a)^{0.54}`,
+    :math:`F_g = R_3 d_m^4 n^2`, :math:`G_{sl} = S_1 d_m^{0.26}((F_r + F_g)^{4/3} + S_2 F_a^{4/3})`,
+    :math:`F_g = S_3 d_m^4 n^2`. The seal moment is halved for one sealed side.
+
+    Examples
+    --------
+    The SKF 61811-2RS1 of the measured pair (grease, 30 mm^2/s, Fr = 6.51 N, 2000 rpm):
+
+    >>> m = skf(6.51, 0.0, 2000 * 2 * np.pi / 60, 30e-6, 55e-3, 72e-3, series="618", seal="RS1",
+    ...         seal_diameter=59.5e-3)
+    >>> print(f"{m.total_moment * 1e3:.2f} N mm, of which the seals {m.seal_moment * 1e3:.2f}")
+    199.67 N mm, of which the seals 196.98
+    """
+    if lubrication not in LUBRICATION_METHODS:
+        hint = " (oil bath: its drag moment is not modelled here)" if "bath" in str(lubrication) else ""
+        raise InputError(f"lubrication must be one of {list(LUBRICATION_METHODS)}, got {lubrication!r}{hint}")
+    if bearing_type not in _KZ:
+        raise InputError(f"bearing_type must be one of {list(_KZ)}, got {bearing_type!r}")
+    if constants is None:
+        if series is None:
+            raise InputError("give the bearing series (series=) or its constants (constants=)")
+        if bearing_type != "radial":
+            raise InputError("angular-contact constants are not tabulated here; give constants=SKFConstants(...)")
+        constants = series_constants(series)
+    fr = check_nonnegative("radial_load", radial_load, "N")
+    fa = check_nonnegative("axial_load", axial_load, "N")
+    omega = np.abs(np.asarray(shaft_speed, dtype=float))
+    n = omega / _RPM
+    nu = check_positive("kinematic_viscosity", kinematic_viscosity, "m^2/s") / _CST
+    d = check_positive("bore", bore, "m") / _MM
+    big = check_positive("outside_diameter", outside_diameter, "m") / _MM
+    dm = 0.5 * (d + big)
+    c0 = None if static_load_rating is None else check_positive("static_load_rating", static_load_rating, "N")
+    g_rr, g_sl = _load_variables(fr, fa, n, dm, constants, bearing_type, c0)
+    phi_ish = 1.0 / (1.0 + 1.84e-9 * (n * dm) ** 1.28 * nu**0.64)
+    phi_rs = np.exp(-LUBRICATION_METHODS[lubrication] * nu * n * (d + big) * np.sqrt(_KZ[bearing_type] / (2 * (big - d))))
+    m_rr = phi_ish * phi_rs * g_rr * (nu * n) ** 0.6
+    mu = (_mu_sl(nu * _CST, omega, dm * _MM, ehl_coefficient=ehl_coefficient)
+          if sliding_friction_coefficient is None
+          else check_nonnegative("sliding_friction_coefficient", sliding_friction_coefficient, "-"))
+    m_sl = g_sl * mu
+    m_seal = _seal_moment(seal, seals, seal_diameter, seal_constants_override, outside_diameter)
+    total = m_rr + m_sl + m_seal
+    shape = np.broadcast(total, mu).shape
+    out = [np.broadcast_to(x * _MM, shape)[()] for x in (m_rr, m_sl, m_seal, 0.0, total)]
+    return SKFTorque(*out, np.broadcast_to(total * _MM * omega, shape)[()], np.broadcast_to(mu, shape)[()])
+
+
+def _seal_moment(seal, seals, seal_diameter, override, outside_diameter):
+    """K_S1 d_s^beta + K_S2 for two sealed sides, half for one [N mm]."""
+    if seals not in (0, 1, 2) or isinstance(seals, bool):
+        raise InputError(f"seals must be 0, 1 or 2 [-], got {seals!r}")
+    if (seal is None and override is None) or seals == 0:
+        return 0.0
+    k = override if override is not None else seal_constants(seal, float(np.max(outside_diameter)))
+    if k.ks1 == 0.0 and k.ks2 == 0.0:
+        return 0.0
+    if seal_diameter is None:
+        raise InputError("seal_diameter (the seal counterface d_s) is needed for a contact seal")
+    ds = check_positive("seal_diameter", seal_diameter, "m") / _MM
+    return (k.ks1 * ds**k.beta + k.ks2) * seals / 2.0
+
+
+def skf_for_bearing(bearing, radial_load, axial_load, shaft_speed, kinematic_viscosity, *, lubrication="grease",
+                    **options):
+    """The SKF model for a BallBearing: envelope, series, seals and C0 read from it.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Needs ``bore`` and ``outside_diameter``; ``series`` (else read from the designation), ``seal``,
+        ``seals`` and ``seal_diameter`` when sealed, ``static_load_rating`` under axial load (else
+        ISO 76 from the ball set).
+    radial_load, axial_load : array_like
+        Fr, Fa. [N]
+    shaft_speed : array_like
+        n. [rad/s]
+    kinematic_viscosity : array_like
+        nu. [m^2/s]
+    lubrication : {"grease", "oil-air", "oil-jet"}
+        See :func:`skf`.
+    **options : optional
+        Passed to :func:`skf` (``constants``, ``sliding_friction_coefficient``, ...).
+
+    Returns
+    -------
+    SKFTorque
+
+    Examples
+    --------
+    >>> from bearinglab import catalog
+    >>> m = skf_for_bearing(catalog.get("61811-2RS1"), 6.51, 0.0, 2000 * 2 * np.pi / 60, 30e-6)
+    >>> print(f"{2 * m.total_moment:.3f} N m for the pair")
+    0.399 N m for the pair
+    """
+    d, big = bearing.require("bore", "outside_diameter")
+    kw = {"bearing_type": bearing.type, "lubrication": lubrication}
+    if "constants" not in options:
+        kw["series"] = bearing.series or bearing_series(bearing.designation)
+    if bearing.seal is not None:
+        kw.update(seal=bearing.seal, seals=2 if bearing.seals is None else bearing.seals,
+                  seal_diameter=bearing.seal_diameter)
+    if np.any(np.asarray(axial_load) > 0):
+        if bearing.static_load_rating is not None:
+            kw["static_load_rating"] = bearing.static_load_rating
+        else:
+            from ..ratings import bearing_ratings
+
+            kw["static_load_rating"] = bearing_ratings(bearing).static_load_rating
+    kw.update(options)
+    return skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, d, big, **kw)

@@ -1,0 +1,430 @@
+r"""Rating life of a ball bearing: the ISO 281 and ISO/TS 16281 analysis of a BallBearing, and duty cycles.
+
+Ratings of a bearing
+--------------------
+bearing_ratings        C, C0, Cu and f0 of a BallBearing: catalog values first, else from the geometry
+
+Analysis
+--------
+rating_life            every life quantity for loads (Fx, Fy, Fz, Mx, My), speed, lubricant, cleanliness
+                       and reliability, batched over load cases
+duty_cycle_life        the combined life of a duty cycle (Palmgren-Miner)
+miner_life             Palmgren-Miner combination of lives at given revolution shares
+
+The analysis composes the functions of :mod:`.static`, :mod:`.dynamic`, :mod:`.lubrication` and
+:mod:`.reference`, so each number it reports can be had from them. SI throughout: N, N m, rad/s, m^2/s,
+K; lives in revolutions and their durations in seconds.
+"""
+
+from __future__ import annotations
+
+import warnings
+from typing import NamedTuple
+
+import numpy as np
+
+from .._validate import as_float, check_nonnegative, check_positive
+from ..errors import InputError
+from . import dynamic, lubrication, reference, static
+from .static import RatingWarning
+
+__all__ = [
+    "BearingRatings",
+    "DutyCycleLife",
+    "RatingLife",
+    "bearing_ratings",
+    "duty_cycle_life",
+    "miner_life",
+    "rating_life",
+]
+
+
+class BearingRatings(NamedTuple):
+    """Load ratings of a bearing and where each comes from."""
+
+    dynamic_load_rating: float
+    """C. [N]"""
+    static_load_rating: float
+    """C0. [N]"""
+    fatigue_load_limit: float
+    """Cu. [N]"""
+    static_load_factor: float
+    """f0 of ISO 76 (NaN where the ball set is unknown). [N/mm^2]"""
+    rating_source: dict
+    """Quantity name -> ``"catalog"``, ``"ISO 76"``, ``"ISO 281"``, ``"ISO 281 annex B (precise)"`` or
+    ``"ISO 281 annex B (C0/22)"``."""
+
+
+def _geometry(bearing):
+    return (bearing.n_balls, bearing.ball_diameter, bearing.pitch_diameter,
+            bearing.contact_angle if bearing.contact_angle is not None else 0.0)
+
+
+def _conformities(bearing):
+    fi = bearing.inner_conformity if bearing.inner_conformity is not None else 0.52  # ISO 76 table 2
+    fo = bearing.outer_conformity if bearing.outer_conformity is not None else 0.53
+    return fi, fo
+
+
+def bearing_ratings(bearing, *, fatigue_method="precise"):
+    """C, C0 and Cu of a bearing: the catalog's values where given, else ISO 76 / ISO 281 from the geometry.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        With catalog ratings, or with ``n_balls``, ``ball_diameter`` and ``pitch_diameter`` (groove
+        conformities 0.52 / 0.53 of ISO 76 when not known).
+    fatigue_method : {"precise", "simplified"}
+        Cu by ISO 281 annex B.3 from the contact stress (needs the ball set), or C0/22.
+
+    Returns
+    -------
+    BearingRatings
+
+    Examples
+    --------
+    >>> from bearinglab.bearing import BallBearing
+    >>> r = bearing_ratings(BallBearing(9, 7.94e-3, 39.04e-3, 0.52, 0.53, contact_angle=0.0, type="radial"))
+    >>> print(f"{r.dynamic_load_rating:.0f} {r.static_load_rating:.0f} {r.fatigue_load_limit:.1f}", r.rating_source["dynamic_load_rating"])
+    14023 7872 358.6 ISO 281
+    """
+    if fatigue_method not in ("precise", "simplified"):
+        raise InputError(f"fatigue_method must be one of ['precise', 'simplified'], got {fatigue_method!r}")
+    z, d, dpw, alpha = _geometry(bearing)
+    fi, fo = _conformities(bearing)
+    has_set = None not in (z, d, dpw)
+    source = {}
+
+    def need(what):
+        if not has_set:
+            label = bearing.designation or "this bearing"
+            raise InputError(f"{what} of {label!r} is not in its catalog entry and the ball set (n_balls, "
+                             "ball_diameter, pitch_diameter) needed to compute it is not known")
+
+    f0 = float(static.static_load_factor(d, dpw, alpha, inner_conformity=fi, outer_conformity=fo)) \
+        if has_set else float("nan")
+    if bearing.dynamic_load_rating is not None:
+        c, source["dynamic_load_rating"] = bearing.dynamic_load_rating, "catalog"
+    else:
+        need("dynamic_load_rating")
+        c, source["dynamic_load_rating"] = float(dynamic.dynamic_load_rating(z, d, dpw, alpha)), "ISO 281"
+    if bearing.static_load_rating is not None:
+        c0, source["static_load_rating"] = bearing.static_load_rating, "catalog"
+    else:
+        need("static_load_rating")
+        c0 = float(static.static_load_rating(z, d, dpw, alpha, inner_conformity=fi, outer_conformity=fo))
+        source["static_load_rating"] = "ISO 76"
+    if bearing.fatigue_load_limit is not None:
+        cu, source["fatigue_load_limit"] = bearing.fatigue_load_limit, "catalog"
+    elif fatigue_method == "precise" and has_set:
+        cu = float(static.fatigue_load_limit(z, d, dpw, alpha, inner_conformity=fi, outer_conformity=fo))
+        source["fatigue_load_limit"] = "ISO 281 annex B (precise)"
+    else:
+        cu = float(static.fatigue_load_limit_simplified(c0, dpw if dpw is not None else bearing.mean_diameter))
+        source["fatigue_load_limit"] = "ISO 281 annex B (C0/22)"
+    return BearingRatings(float(c), float(c0), float(cu), f0, source)
+
+
+class RatingLife(NamedTuple):
+    """Every life quantity of one analysis (arrays over the load cases); lives in revolutions."""
+
+    dynamic_load_rating: float
+    """C. [N]"""
+    static_load_rating: float
+    """C0. [N]"""
+    fatigue_load_limit: float
+    """Cu. [N]"""
+    rating_source: dict
+    """Where C, C0 and Cu come from (see :class:`BearingRatings`)."""
+    equivalent_dynamic_load: np.ndarray
+    """P of ISO 281 (NaN where not defined, as under a moment). [N]"""
+    basic_rating_life: np.ndarray
+    """L10. [revolutions]"""
+    basic_rating_life_duration: np.ndarray
+    """L10 at the given speed. [s]"""
+    reliability_factor: float
+    """a1. [-]"""
+    viscosity_ratio: np.ndarray
+    """kappa = nu / nu1 (not clamped). [-]"""
+    life_modification_factor: np.ndarray
+    """a_ISO. [-]"""
+    modified_rating_life: np.ndarray
+    """L_nm = a1 a_ISO L10. [revolutions]"""
+    modified_rating_life_duration: np.ndarray
+    """L_nm at the given speed. [s]"""
+    reference_rating_life: np.ndarray
+    """L10r of ISO/TS 16281 (NaN without a load distribution). [revolutions]"""
+    modified_reference_rating_life: np.ndarray
+    """L_nmr = a1 a_ISO(P_ref) L10r, P_ref = C L10r^(-1/3). [revolutions]"""
+    static_safety_factor: np.ndarray
+    """s0 = C0 / P0 (NaN where P0 is not defined). [-]"""
+    warnings: tuple
+    """The warnings raised during the analysis, as messages."""
+
+
+def _split_loads(loads):
+    f = np.asarray(loads, dtype=float)
+    if f.ndim == 0 or f.shape[-1] != 5:
+        raise InputError(f"loads must have the five components (Fx, Fy, Fz, Mx, My) on their last axis "
+                         f"[N, N, N, N m, N m], got shape {np.shape(loads)}")
+    bad = ~np.isfinite(f)
+    if bad.any():
+        raise InputError(f"loads must be finite [N, N m], got {float(f[bad].flat[0])!r}")
+    return np.hypot(f[..., 0], f[..., 1]), np.abs(f[..., 2]), np.hypot(f[..., 3], f[..., 4])
+
+
+def _viscosity(kinematic_viscosity, lubricant):
+    if kinematic_viscosity is not None:
+        if lubricant:
+            raise InputError(f"give kinematic_viscosity or the oil ({', '.join(lubricant)}), not both")
+        return check_positive("kinematic_viscosity", kinematic_viscosity, "m^2/s")
+    if "temperature" not in lubricant:
+        raise InputError("give kinematic_viscosity, or temperature with iso_vg / viscosity_40 and viscosity_100")
+    t = lubricant.pop("temperature")
+    return lubrication.kinematic_viscosity(t, **lubricant)
+
+
+def _contact_loads(load_distribution, bearing, loads, shaft_speed):
+    """(inner, outer) ball loads from a load-distribution callable, result or array; None if not given."""
+    if load_distribution is None:
+        return None
+    result = load_distribution(bearing, loads, shaft_speed) if callable(load_distribution) else load_distribution
+    for inner, outer in (("ball_load_inner", "ball_load_outer"), ("contact_loads", "contact_loads")):
+        if hasattr(result, inner):
+            return np.asarray(getattr(result, inner), dtype=float), np.asarray(getattr(result, outer), dtype=float)
+    q = np.asarray(result, dtype=float)
+    return q, q
+
+
+def _iso281(bearing, ratings, fr, fa, moment):
+    """P and P0 of ISO 281 / ISO 76, NaN where a moment acts (not defined there)."""
+    kind, alpha = bearing.type, bearing.contact_angle if bearing.contact_angle is not None else 0.0
+    if (fa > 0).any() and kind == "radial" and not np.isfinite(ratings.static_load_factor):
+        raise InputError(f"the axial factor Y of a deep-groove bearing needs f0 Fa / C0 (ISO 281 table 3), "
+                         f"and f0 needs the ball set of {bearing.designation or 'this bearing'!r}")
+    f0 = ratings.static_load_factor if kind == "radial" else None
+    p = dynamic.equivalent_dynamic_load(fr, fa, ratings.static_load_rating, alpha, bearing_type=kind,
+                                        static_load_factor=f0 if f0 is None or np.isfinite(f0) else 1.0)
+    p0 = static.static_equivalent_load(fr, fa, alpha, bearing_type=kind)
+    tilted = moment > 0
+    if tilted.any():
+        warnings.warn(f"{int(tilted.sum())} of {tilted.size} load cases carry a tilting moment: ISO 281's "
+                      "equivalent load P (and ISO 76's P0) is not defined there, so the ISO 281 lives and s0 "
+                      "are NaN; the ISO/TS 16281 reference life covers them", RatingWarning, stacklevel=3)
+    return np.where(tilted, np.nan, p), np.where(tilted, np.nan, p0)
+
+
+def _contamination(contamination, pitch):
+    if isinstance(contamination, str):
+        return lubrication.contamination_factor(contamination, pitch)
+    ec = check_nonnegative("contamination", contamination, "-")
+    if (ec > 1).any():
+        raise InputError(f"contamination must be a factor e_C in [0, 1] [-] or a class name, got "
+                         f"{float(ec[ec > 1].flat[0])!r}")
+    return ec
+
+
+def rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None, contamination=1.0, reliability=0.9,
+                ep_additives=False, load_distribution=None, rotating="inner", fatigue_method="precise",
+                **lubricant):
+    r"""ISO 281 and ISO/TS 16281 life of a ball bearing for a batch of load cases.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing; catalog ratings take precedence over the geometry (see :func:`bearing_ratings`).
+    loads : array_like
+        (..., 5): Fx, Fy, Fz (axial), Mx, My on the rotating ring. [N, N, N, N m, N m]
+    shaft_speed : array_like
+        Speed of the rotating ring, > 0, broadcast against the load cases. [rad/s]
+    kinematic_viscosity : array_like, optional
+        nu at the operating temperature (or give the oil through ``lubricant``). [m^2/s]
+    contamination : float or str
+        e_C in [0, 1], or a cleanliness class of ISO 281 table 13 (mid-range value). [-]
+    reliability : float
+        0.90 to 0.9995 (a fraction). [-]
+    ep_additives : bool
+        Apply the EP-additive rule of ISO 281 clause 9.3.3.
+    load_distribution : callable, result or array_like, optional
+        Per-ball loads for ISO/TS 16281: a callable ``f(bearing, loads, shaft_speed)`` or its result,
+        with ``ball_load_inner`` / ``ball_load_outer`` or ``contact_loads`` (..., Z) attributes, or the
+        array of ball loads itself. Without it the reference lives are NaN. [N]
+    rotating : {"inner", "outer"}
+        Ring rotating relative to the load (ISO/TS 16281 equivalent loads).
+    fatigue_method : {"precise", "simplified"}
+        Cu from the geometry or C0/22 (when the catalog has no Cu).
+    **lubricant : optional
+        ``temperature`` [K] with ``iso_vg`` or ``viscosity_40`` [m^2/s], and ``viscosity_100`` [m^2/s]
+        (:func:`.lubrication.kinematic_viscosity`).
+
+    Returns
+    -------
+    RatingLife
+
+    Notes
+    -----
+    ISO 281:2007: :math:`L_{10} = (C/P)^3` (eq. (15)), :math:`L_{nm} = a_1 a_{ISO} L_{10}` (eq. (16));
+    kappa with nu1 of eqs. (14)-(15) at the pitch diameter ((d + D)/2 when the ball set is unknown).
+    ISO/TS 16281:2008: L10r from the ball loads, and the modified reference life with a_ISO evaluated
+    at the equivalent reference load :math:`P_{ref} = C L_{10r}^{-1/3}` (L10r in 10^6 revolutions).
+    The warnings are both raised (:class:`RatingWarning`) and returned.
+
+    Examples
+    --------
+    >>> from bearinglab.bearing import BallBearing
+    >>> b = BallBearing(9, 7.94e-3, 39.04e-3, 0.52, 0.53, contact_angle=0.0, type="radial")
+    >>> r = rating_life(b, [1000.0, 0, 0, 0, 0], 3000 * np.pi / 30, kinematic_viscosity=20e-6)
+    >>> print(f"L10 = {r.basic_rating_life / 1e6:.0f} Mrev = {r.basic_rating_life_duration / 3600:.0f} h")
+    L10 = 2758 Mrev = 15320 h
+    """
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        out = _rating_life(bearing, loads, shaft_speed, kinematic_viscosity, contamination, reliability,
+                           ep_additives, load_distribution, rotating, fatigue_method, lubricant)
+    messages = tuple(dict.fromkeys(str(w.message) for w in caught))
+    for w in caught:
+        warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    return out._replace(warnings=messages)
+
+
+def _rating_life(bearing, loads, shaft_speed, nu, contamination, reliability, ep_additives, load_distribution,
+                 rotating, fatigue_method, lubricant):
+    r = bearing_ratings(bearing, fatigue_method=fatigue_method)
+    fr, fa, moment = _split_loads(loads)
+    n = check_positive("shaft_speed", shaft_speed, "rad/s")
+    nu = _viscosity(nu, dict(lubricant))
+    pitch = bearing.pitch_diameter if bearing.pitch_diameter is not None else bearing.mean_diameter
+    a1 = float(dynamic.reliability_factor(reliability))
+    ec = _contamination(contamination, pitch)
+    kappa = lubrication.viscosity_ratio(nu, n, pitch)
+    p, p0 = _iso281(bearing, r, fr, fa, moment)
+    p_safe = np.where(np.isfinite(p) & (p > 0), p, 1.0)
+    l10 = np.where(np.isfinite(p), dynamic.basic_rating_life(r.dynamic_load_rating, np.where(np.isfinite(p), p, 0.0)),
+                   np.nan)
+    a_iso = np.where(np.isfinite(p), lubrication.life_modification_factor(
+        kappa, ec, r.fatigue_load_limit, p_safe, ep_additives=ep_additives), np.nan)
+    s0 = np.where(np.isfinite(p0), static.static_safety_factor(r.static_load_rating, np.where(np.isfinite(p0), p0, 0.0)),
+                  np.nan)
+    l10r = np.full(np.shape(fr), np.nan)
+    a_ref = np.full(np.shape(fr), np.nan)
+    balls = _contact_loads(load_distribution, bearing, loads, shaft_speed)
+    if balls is None:
+        warnings.warn("no load distribution given: the ISO/TS 16281 reference lives are NaN", RatingWarning,
+                      stacklevel=3)
+    else:
+        fi, fo = _conformities(bearing)
+        l10r = reference.reference_rating_life(balls[0], r.dynamic_load_rating, bearing.require("ball_diameter"),
+                                               bearing.require("pitch_diameter"), fi, fo,
+                                               bearing.contact_angle or 0.0, rotating=rotating,
+                                               outer_contact_loads=balls[1])
+        with np.errstate(divide="ignore"):
+            p_ref = r.dynamic_load_rating * (l10r / 1e6) ** (-1.0 / 3.0)
+        a_ref = np.where(p_ref > 0, lubrication.life_modification_factor(
+            kappa, ec, r.fatigue_load_limit, np.where(p_ref > 0, p_ref, 1.0), ep_additives=ep_additives), np.inf)
+    speed = np.broadcast_to(n, np.broadcast(n, fr).shape)
+    lnm = a1 * a_iso * l10
+    return RatingLife(
+        r.dynamic_load_rating, r.static_load_rating, r.fatigue_load_limit, r.rating_source, p[()], l10[()],
+        (l10 / speed * 2 * np.pi)[()], a1, np.broadcast_to(kappa, speed.shape)[()], a_iso[()], lnm[()],
+        (lnm / speed * 2 * np.pi)[()], l10r[()], (a1 * a_ref * l10r)[()], s0[()], ())
+
+
+def miner_life(lives, revolution_shares, *, axis=-1):
+    r"""Palmgren-Miner combination of lives: :math:`L = 1 / \sum_k (u_k / L_k)`.
+
+    Parameters
+    ----------
+    lives : array_like
+        Life at each duty-cycle step (inf allowed; NaN gives NaN). [revolutions]
+    revolution_shares : array_like
+        Share u_k of the revolutions run at each step, >= 0, summing to 1 along ``axis``. [-]
+    axis : int
+        The step axis.
+
+    Returns
+    -------
+    ndarray or float
+        Combined life. [revolutions]
+
+    Examples
+    --------
+    >>> print(miner_life([1e9, 1e8], [0.5, 0.5]) / 1e6)
+    181.8181818181818
+    """
+    lives = as_float("lives", lives)
+    bad = lives <= 0  # NaN (a life not defined) passes and gives NaN
+    if bad.any():
+        raise InputError(f"lives must be > 0 [rev], got {float(lives[bad].flat[0])!r}")
+    u = check_nonnegative("revolution_shares", revolution_shares, "-")
+    total = np.sum(u, axis=axis)
+    if not np.allclose(total, 1.0, rtol=0, atol=1e-9):
+        raise InputError(f"revolution_shares must sum to 1 [-], got {float(np.ravel(total)[0])!r}")
+    return (1.0 / np.sum(u / lives, axis=axis))[()]
+
+
+class DutyCycleLife(NamedTuple):
+    """Combined lives of a duty cycle (Palmgren-Miner) and the analysis of each step."""
+
+    basic_rating_life: float
+    """Combined L10. [revolutions]"""
+    modified_rating_life: float
+    """Combined L_nm. [revolutions]"""
+    reference_rating_life: float
+    """Combined L10r (NaN without a load distribution). [revolutions]"""
+    modified_reference_rating_life: float
+    """Combined L_nmr. [revolutions]"""
+    mean_speed: float
+    """Time-weighted mean speed, to turn the lives into durations. [rad/s]"""
+    steps: RatingLife
+    """The analysis of each step (arrays along the steps)."""
+
+
+def duty_cycle_life(bearing, loads, shaft_speeds, time_shares, **options):
+    r"""Combined life of a duty cycle: steps of load and speed, each run for a share of the time.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing.
+    loads : array_like
+        (k, 5) loads of the k steps (see :func:`rating_life`). [N, N m]
+    shaft_speeds : array_like
+        (k,) speeds, > 0. [rad/s]
+    time_shares : array_like
+        (k,) shares of the time, >= 0, summing to 1. [-]
+    **options : optional
+        Passed to :func:`rating_life` (lubricant, contamination, reliability, load distribution ...);
+        array options broadcast along the steps.
+
+    Returns
+    -------
+    DutyCycleLife
+
+    Notes
+    -----
+    Palmgren-Miner: the revolution share of step k is :math:`u_k = t_k n_k / \sum_j t_j n_j`, and
+    :math:`L = 1/\sum_k u_k/L_k` for each life; a duration is :math:`L / \bar n` with
+    :math:`\bar n = \sum_k t_k n_k`.
+
+    Examples
+    --------
+    >>> from bearinglab.bearing import BallBearing
+    >>> b = BallBearing(9, 7.94e-3, 39.04e-3, 0.52, 0.53, contact_angle=0.0, type="radial")
+    >>> d = duty_cycle_life(b, [[1000.0, 0, 0, 0, 0], [2000.0, 0, 0, 0, 0]], [300.0, 300.0], [0.5, 0.5],
+    ...                     kinematic_viscosity=20e-6)
+    >>> print(f"{d.basic_rating_life / 1e6:.1f} Mrev")
+    612.8 Mrev
+    """
+    n = check_positive("shaft_speeds", shaft_speeds, "rad/s")
+    t = check_nonnegative("time_shares", time_shares, "-")
+    if n.ndim != 1 or t.shape != n.shape or np.shape(loads)[:-1] != n.shape:
+        raise InputError(f"loads (k, 5), shaft_speeds (k,) and time_shares (k,) must agree, got shapes "
+                         f"{np.shape(loads)}, {n.shape} and {t.shape}")
+    if not np.isclose(t.sum(), 1.0, rtol=0, atol=1e-9):
+        raise InputError(f"time_shares must sum to 1 [-], got {float(t.sum())!r}")
+    steps = rating_life(bearing, loads, n, **options)
+    u = t * n / np.sum(t * n)
+    combine = {name: float(miner_life(np.asarray(getattr(steps, name), dtype=float), u))
+               for name in ("basic_rating_life", "modified_rating_life", "reference_rating_life",
+                            "modified_reference_rating_life")}
+    return DutyCycleLife(**combine, mean_speed=float(np.sum(t * n)), steps=steps)

@@ -1,0 +1,343 @@
+r"""Lubricant viscosity, viscosity ratio, contamination and the life modification factor a_ISO (ISO 281).
+
+Viscosity
+---------
+iso_vg_viscosity           kinematic viscosity at 40 degC of an ISO VG grade (ISO 3448 mid-point)
+walther_constants          A, B of ASTM D341 (Walther) through two reference viscosities
+walther_viscosity          nu(T) from A, B
+kinematic_viscosity        nu at a temperature from a VG grade or nu40, and nu100 (ASTM D341)
+
+Lubrication condition
+---------------------
+rated_viscosity            nu1 of ISO 281:2007 eqs. (14)-(15) (reference kinematic viscosity)
+viscosity_ratio            kappa = nu / nu1
+contamination_factor       e_C of ISO 281:2007 table 13 from a cleanliness class
+life_modification_factor   a_ISO of ISO 281:2007 eq. (B.4) for ball bearings, capped at 50
+
+SI in the API (m^2/s, K, rad/s, m, N). The published fits use mm^2/s, rpm and mm; each function
+converts once, in plain sight.
+
+References
+----------
+.. [1] ISO 281:2007, *Rolling bearings -- Dynamic load ratings and rating life*, clause 9.3 (a_ISO,
+   table 13 of e_C, eqs. (14)-(15) of nu1) and annex B.
+.. [2] ASTM D341-09, *Standard practice for viscosity-temperature charts for liquid petroleum
+   products*, eqs. (1)-(2): log log (nu + 0.7) = A - B log T.
+.. [3] ISO 3448:1992, *Industrial liquid lubricants -- ISO viscosity classification* (VG mid-points).
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+
+from .._validate import check_nonnegative, check_positive
+from ..errors import InputError
+from .static import RatingWarning
+
+__all__ = [
+    "CONTAMINATION_CLASSES",
+    "ISO_VG_GRADES",
+    "contamination_factor",
+    "iso_vg_viscosity",
+    "kinematic_viscosity",
+    "life_modification_factor",
+    "rated_viscosity",
+    "viscosity_ratio",
+    "walther_constants",
+    "walther_viscosity",
+]
+
+_CST, _RPM, _MM = 1e-6, 2.0 * np.pi / 60.0, 1e-3  # m^2/s per mm^2/s, rad/s per rpm, m per mm
+_T40, _T100 = 313.15, 373.15  # K
+_WALTHER_MIN_CST = 2.0  # ASTM D341: the plain Z = nu + 0.7 holds down to 2 mm^2/s
+
+# ISO 3448 viscosity grades (mid-point kinematic viscosity at 40 degC in mm^2/s = the grade number)
+ISO_VG_GRADES = (2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500, 2200, 3200)
+
+# ISO 281:2007 table 13: cleanliness class -> e_C range (low, high) for Dpw < 100 mm and Dpw >= 100 mm
+CONTAMINATION_CLASSES = {
+    "extreme_cleanliness": ((1.0, 1.0), (1.0, 1.0)),
+    "high_cleanliness": ((0.6, 0.8), (0.8, 0.9)),
+    "normal_cleanliness": ((0.5, 0.6), (0.6, 0.8)),
+    "slight_contamination": ((0.3, 0.5), (0.4, 0.6)),
+    "typical_contamination": ((0.1, 0.3), (0.2, 0.4)),
+    "severe_contamination": ((0.0, 0.1), (0.0, 0.1)),
+    "very_severe_contamination": ((0.0, 0.0), (0.0, 0.0)),
+}
+_CLASS_PITCH = 0.1  # m: the two columns of table 13
+
+# ISO 281:2007 eq. (B.4) (ball bearings): (kappa range, c, p) of a_ISO = 0.1 [1 - (2.5671 - c/kappa^p)^0.83
+# (e_C Cu / P)^(1/3)]^-9.3
+_AISO_BALL = ((0.1, 0.4, 2.2649, 0.054381), (0.4, 1.0, 1.9987, 0.19087), (1.0, 4.0, 1.9987, 0.071739))
+AISO_CAP = 50.0
+
+
+def iso_vg_viscosity(grade):
+    """Kinematic viscosity at 40 degC of an ISO viscosity grade (the mid-point of ISO 3448).
+
+    Parameters
+    ----------
+    grade : int
+        ISO VG number, one of :data:`ISO_VG_GRADES`.
+
+    Returns
+    -------
+    float
+        nu40. [m^2/s]
+
+    Examples
+    --------
+    >>> iso_vg_viscosity(68)
+    6.8e-05
+    """
+    if grade not in ISO_VG_GRADES:
+        raise InputError(f"iso_vg must be one of {list(ISO_VG_GRADES)}, got {grade!r}")
+    return float(grade) * _CST
+
+
+def walther_constants(temperatures, viscosities):
+    r"""Constants A and B of the ASTM D341 (Walther) relation through two reference points.
+
+    Parameters
+    ----------
+    temperatures : tuple of 2 float
+        T1, T2 (distinct). [K]
+    viscosities : tuple of 2 float
+        nu(T1), nu(T2), each >= 2 mm^2/s. [m^2/s]
+
+    Returns
+    -------
+    tuple of float
+        (A, B) of :math:`\log_{10}\log_{10}(\nu + 0.7) = A - B\log_{10} T`, nu in mm^2/s and T in K.
+
+    Examples
+    --------
+    >>> a, b = walther_constants((313.15, 373.15), (68e-6, 8.7e-6))
+    >>> print(f"{a:.4f} {b:.4f}")
+    9.3097 3.6244
+    """
+    t1, t2 = (float(check_positive("temperatures", t, "K")) for t in temperatures)
+    v1, v2 = (float(check_positive("viscosities", v, "m^2/s")) / _CST for v in viscosities)
+    if t1 == t2:
+        raise InputError(f"temperatures must be distinct [K], got {t1!r} twice")
+    if min(v1, v2) < _WALTHER_MIN_CST:
+        raise InputError(f"viscosities must be >= {_WALTHER_MIN_CST:g} [mm^2/s] for ASTM D341, got "
+                         f"{min(v1, v2)!r}")
+    z1, z2 = np.log10(np.log10(v1 + 0.7)), np.log10(np.log10(v2 + 0.7))
+    b = (z1 - z2) / (np.log10(t2) - np.log10(t1))
+    return float(z1 + b * np.log10(t1)), float(b)
+
+
+def walther_viscosity(temperature, a, b):
+    r"""Kinematic viscosity from the ASTM D341 relation.
+
+    Parameters
+    ----------
+    temperature : array_like
+        Temperature. [K]
+    a, b : float
+        Constants of :func:`walther_constants`. [-]
+
+    Returns
+    -------
+    ndarray or float
+        :math:`\nu = 10^{10^{A - B \log_{10} T}} - 0.7` (mm^2/s, here in SI). [m^2/s]
+
+    Examples
+    --------
+    >>> print(f"{walther_viscosity(313.15, *walther_constants((313.15, 373.15), (68e-6, 8.7e-6))):.4g}")
+    6.8e-05
+    """
+    t = check_positive("temperature", temperature, "K")
+    return ((10.0 ** (10.0 ** (a - b * np.log10(t))) - 0.7) * _CST)[()]
+
+
+def kinematic_viscosity(temperature, *, iso_vg=None, viscosity_40=None, viscosity_100=None):
+    """Kinematic viscosity of an oil at the operating temperature (ASTM D341 through 40 and 100 degC).
+
+    Parameters
+    ----------
+    temperature : array_like
+        Operating temperature. [K]
+    iso_vg : int, optional
+        ISO VG grade, giving nu40 (or give ``viscosity_40``).
+    viscosity_40 : float, optional
+        nu at 40 degC. [m^2/s]
+    viscosity_100 : float
+        nu at 100 degC (the second reference point). [m^2/s]
+
+    Returns
+    -------
+    ndarray or float
+        nu(T). [m^2/s]
+
+    Notes
+    -----
+    A viscosity index alone does not fix nu100 without the tables of ISO 2909 / ASTM D2270, which
+    are not implemented; give nu100 from the oil's data sheet.
+
+    Examples
+    --------
+    >>> print(f"{kinematic_viscosity(343.15, iso_vg=68, viscosity_100=8.7e-6) * 1e6:.2f} mm^2/s")
+    20.12 mm^2/s
+    """
+    if (iso_vg is None) == (viscosity_40 is None):
+        raise InputError("give exactly one of iso_vg and viscosity_40")
+    if viscosity_100 is None:
+        raise InputError("viscosity_100 (nu at 100 degC) is needed with a VG grade or nu40 "
+                         "(a viscosity index alone is not supported)")
+    nu40 = iso_vg_viscosity(iso_vg) if iso_vg is not None else viscosity_40
+    a, b = walther_constants((_T40, _T100), (nu40, viscosity_100))
+    return walther_viscosity(temperature, a, b)
+
+
+def rated_viscosity(shaft_speed, pitch_diameter):
+    r"""Reference (rated) kinematic viscosity nu1 of ISO 281:2007 eqs. (14) and (15).
+
+    Parameters
+    ----------
+    shaft_speed : array_like
+        Rotational speed n, > 0. [rad/s]
+    pitch_diameter : array_like
+        Dpw, or (d + D)/2 when the ball set is unknown. [m]
+
+    Returns
+    -------
+    ndarray or float
+        :math:`\nu_1 = 45000\, n^{-0.83} d_m^{-0.5}` for n < 1000 rpm, else
+        :math:`4500\, n^{-0.5} d_m^{-0.5}` (mm^2/s, rpm, mm; here in SI). [m^2/s]
+
+    Examples
+    --------
+    >>> print(f"{rated_viscosity(3000 * 2 * np.pi / 60, 0.0635) * 1e6:.3f} mm^2/s")
+    10.310 mm^2/s
+    """
+    n = check_positive("shaft_speed", shaft_speed, "rad/s") / _RPM
+    dm = check_positive("pitch_diameter", pitch_diameter, "m") / _MM
+    nu1 = np.where(n < 1000.0, 45000.0 * n**-0.83 * dm**-0.5, 4500.0 * n**-0.5 * dm**-0.5)
+    return (nu1 * _CST)[()]
+
+
+def viscosity_ratio(kinematic_viscosity, shaft_speed, pitch_diameter):
+    """Viscosity ratio kappa = nu / nu1 of ISO 281:2007 eq. (13).
+
+    Parameters
+    ----------
+    kinematic_viscosity : array_like
+        nu at the operating temperature. [m^2/s]
+    shaft_speed : array_like
+        n. [rad/s]
+    pitch_diameter : array_like
+        Dpw or (d + D)/2. [m]
+
+    Returns
+    -------
+    ndarray or float
+        kappa (not clamped). [-]
+
+    Examples
+    --------
+    >>> print(f"{viscosity_ratio(20.62e-6, 3000 * 2 * np.pi / 60, 0.0635):.3f}")
+    2.000
+    """
+    nu = check_positive("kinematic_viscosity", kinematic_viscosity, "m^2/s")
+    return (nu / rated_viscosity(shaft_speed, pitch_diameter))[()]
+
+
+def contamination_factor(cleanliness, pitch_diameter, *, bound="mid"):
+    """Contamination factor e_C of a cleanliness class of ISO 281:2007 table 13.
+
+    Parameters
+    ----------
+    cleanliness : str
+        One of :data:`CONTAMINATION_CLASSES` (spaces or hyphens read as underscores).
+    pitch_diameter : array_like
+        Dpw; table 13 has a column below and one from 100 mm. [m]
+    bound : {"mid", "low", "high"}
+        Which value of the class's range.
+
+    Returns
+    -------
+    ndarray or float
+        e_C. [-]
+
+    Examples
+    --------
+    >>> print(contamination_factor("normal cleanliness", 0.0635))
+    0.55
+    """
+    key = str(cleanliness).strip().lower().replace(" ", "_").replace("-", "_")
+    if key not in CONTAMINATION_CLASSES:
+        raise InputError(f"cleanliness must be one of {list(CONTAMINATION_CLASSES)}, got {cleanliness!r}")
+    pick = {"low": lambda lo, hi: lo, "high": lambda lo, hi: hi, "mid": lambda lo, hi: 0.5 * (lo + hi)}
+    if bound not in pick:
+        raise InputError(f"bound must be one of {list(pick)}, got {bound!r}")
+    dpw = check_positive("pitch_diameter", pitch_diameter, "m")
+    small, large = (pick[bound](*r) for r in CONTAMINATION_CLASSES[key])
+    return np.where(dpw < _CLASS_PITCH, small, large)[()]
+
+
+def life_modification_factor(viscosity_ratio, contamination_factor, fatigue_load_limit,
+                             equivalent_dynamic_load, *, ep_additives=False):
+    r"""Life modification factor a_ISO of ball bearings, ISO 281:2007 eq. (B.4) and clause 9.3.
+
+    Parameters
+    ----------
+    viscosity_ratio : array_like
+        kappa = nu / nu1, > 0. [-]
+    contamination_factor : array_like
+        e_C in [0, 1]. [-]
+    fatigue_load_limit : array_like
+        Cu. [N]
+    equivalent_dynamic_load : array_like
+        P, > 0. [N]
+    ep_additives : bool
+        The lubricant has EP additives proven effective for the bearing: ISO 281 then allows
+        kappa = 1 where kappa < 1 and e_C >= 0.2, with a_ISO limited to 3.
+
+    Returns
+    -------
+    ndarray or float
+        a_ISO in (0, 50]. [-]
+
+    Notes
+    -----
+    .. math:: a_{ISO} = 0.1\left[1 - \left(2.5671 - \frac{c}{\kappa^{p}}\right)^{0.83}
+              \left(\frac{e_C C_u}{P}\right)^{1/3}\right]^{-9.3}
+
+    with (c, p) = (2.2649, 0.054381) for 0.1 <= kappa < 0.4, (1.9987, 0.19087) for 0.4 <= kappa < 1
+    and (1.9987, 0.071739) for 1 <= kappa <= 4. kappa is clamped to [0.1, 4] (a warning below 0.1,
+    where the standard does not apply); a_ISO is capped at 50, also where the bracket is <= 0.
+
+    Examples
+    --------
+    >>> print(f"{life_modification_factor(1.0, 0.5, 300.0, 3000.0):.4f}")
+    1.1437
+    """
+    kappa = check_positive("viscosity_ratio", viscosity_ratio, "-")
+    ec = check_nonnegative("contamination_factor", contamination_factor, "-")
+    if (ec > 1).any():
+        raise InputError(f"contamination_factor must be in [0, 1] [-], got {float(ec[ec > 1].flat[0])!r}")
+    cu = check_nonnegative("fatigue_load_limit", fatigue_load_limit, "N")
+    p = check_positive("equivalent_dynamic_load", equivalent_dynamic_load, "N")
+    low = kappa < 0.1
+    if low.any():
+        warnings.warn(f"viscosity ratio kappa = {float(kappa[low].min()):.3g} is below 0.1, outside ISO "
+                      "281:2007 clause 9.3; a_ISO is evaluated at kappa = 0.1", RatingWarning, stacklevel=2)
+    cap = np.full(np.broadcast(kappa, ec).shape, AISO_CAP)
+    if ep_additives:
+        ep = (kappa < 1.0) & (ec >= 0.2)
+        if ep.any():
+            warnings.warn("EP-additive rule of ISO 281:2007 clause 9.3.3 applied: kappa = 1 used where "
+                          "kappa < 1 and e_C >= 0.2, with a_ISO limited to 3", RatingWarning, stacklevel=2)
+        kappa = np.where(ep, 1.0, kappa)
+        cap = np.where(ep, 3.0, cap)
+    k = np.clip(kappa, 0.1, 4.0)
+    c = np.where(k < 0.4, _AISO_BALL[0][2], _AISO_BALL[1][2])
+    pw = np.select([k < 0.4, k < 1.0], [_AISO_BALL[0][3], _AISO_BALL[1][3]], _AISO_BALL[2][3])
+    inner = 1.0 - (2.5671 - c / k**pw) ** 0.83 * np.cbrt(ec * cu / p)
+    with np.errstate(divide="ignore", over="ignore"):
+        a_iso = np.where(inner > 0, 0.1 * np.where(inner > 0, inner, 1.0) ** -9.3, np.inf)
+    return np.minimum(a_iso, cap)[()]

@@ -1,0 +1,93 @@
+"""ISO 281 dynamic load rating, equivalent load, basic life and reliability factor."""
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from bearinglab import ratings
+from bearinglab.errors import InputError
+
+# ISO 281:2007 table 2 (single-row radial ball bearings), some rows; ISO 281 table 12 (a1)
+FC_ROWS = [(0.05, 46.7), (0.10, 55.5), (0.18, 59.9), (0.20, 59.9), (0.30, 56.0), (0.40, 48.4)]
+A1_ROWS = [(0.90, 1.0), (0.95, 0.64), (0.96, 0.55), (0.97, 0.47), (0.98, 0.37), (0.99, 0.25), (0.992, 0.22),
+           (0.994, 0.19), (0.996, 0.16), (0.998, 0.12), (0.999, 0.093), (0.9992, 0.087), (0.9994, 0.080),
+           (0.9995, 0.077)]
+
+
+@pytest.mark.parametrize(("gamma", "fc"), FC_ROWS)
+def test_fc_at_the_table_rows(gamma, fc):
+    assert ratings.load_rating_factor(10e-3, 10e-3 / gamma) == pytest.approx(fc, rel=1e-12)
+
+
+def test_fc_outside_table_raises():
+    with pytest.raises(InputError, match=r"Dw cos\(alpha\) / Dpw must be in \[0.01, 0.40\]"):
+        ratings.load_rating_factor(10e-3, 20e-3)
+
+
+def test_dynamic_load_rating_formula_and_large_balls():
+    # ISO 281 eq. (2) by hand for the deep-groove 6205 ball set (Z = 9, Dw = 7.94 mm)
+    gamma = 7.94 / 39.04
+    fc = np.interp(gamma, [0.20, 0.22], [59.9, 59.6])
+    assert ratings.dynamic_load_rating(9, 7.94e-3, 39.04e-3) == pytest.approx(
+        1.3 * fc * 9 ** (2 / 3) * 7.94**1.8, rel=1e-12)
+    # eq. (3) above Dw = 25.4 mm
+    assert ratings.dynamic_load_rating(10, 30e-3, 0.2) == pytest.approx(
+        1.3 * ratings.load_rating_factor(30e-3, 0.2) * 10 ** (2 / 3) * 3.647 * 30**1.4, rel=1e-12)
+
+
+def test_equivalent_load_deep_groove_rows_and_limit():
+    # ISO 281 table 3: at f0 Fa/C0 = 1.03, e = 0.28, X = 0.56, Y = 1.55
+    c0, f0 = 10000.0, 10.3
+    fa = 1000.0
+    assert ratings.equivalent_dynamic_load(10000.0, fa, c0, static_load_factor=f0) == 10000.0  # Fa/Fr <= e
+    assert ratings.equivalent_dynamic_load(1000.0, fa, c0, static_load_factor=f0) == pytest.approx(
+        0.56 * 1000 + 1.55 * 1000)
+    assert ratings.equivalent_dynamic_load(0.0, fa, c0, static_load_factor=f0) == pytest.approx(1.55 * 1000)
+    with pytest.raises(InputError, match="static_load_factor"):
+        ratings.equivalent_dynamic_load(1000.0, fa, c0)
+
+
+def test_equivalent_load_angular_contact():
+    # 40 deg: e = 1.14, X = 0.35, Y = 0.57; 15 deg at i Fa/C0 = 0.058: e = 0.43, X = 0.44, Y = 1.30
+    a40 = math.radians(40)
+    assert ratings.equivalent_dynamic_load(1000.0, 2000.0, 1e4, a40, bearing_type="angular") == pytest.approx(
+        0.35 * 1000 + 0.57 * 2000)
+    assert ratings.equivalent_dynamic_load(1000.0, 1000.0, 1e4, a40, bearing_type="angular") == 1000.0
+    a15 = math.radians(15)
+    assert ratings.equivalent_dynamic_load(1000.0, 580.0, 1e4, a15, bearing_type="angular") == pytest.approx(
+        0.44 * 1000 + 1.30 * 580)
+    with pytest.raises(InputError, match="contact_angle"):
+        ratings.equivalent_dynamic_load(1000.0, 580.0, 1e4, math.radians(10), bearing_type="angular")
+
+
+@pytest.mark.parametrize(("reliability", "a1"), A1_ROWS)
+def test_reliability_factor_table(reliability, a1):
+    assert ratings.reliability_factor(reliability) == a1
+
+
+@given(r=st.floats(0.9, 0.9995))
+def test_reliability_factor_between_rows_is_near_the_table(r):
+    a1 = ratings.reliability_factor(r)
+    rows = np.array(A1_ROWS)
+    lo = np.interp(r, rows[:, 0], rows[:, 1])
+    assert 0.0 < a1 <= 1.0
+    assert a1 == pytest.approx(lo, abs=0.03)  # the Weibull relation lies within 0.03 of the chords
+
+
+def test_reliability_out_of_range():
+    with pytest.raises(InputError, match=r"a fraction: 0.99 for 99 %"):
+        ratings.reliability_factor(99.0)
+
+
+@given(p=st.floats(10.0, 1e5), k=st.floats(0.1, 10.0))
+def test_life_scales_with_load_to_minus_three(p, k):
+    c = 20000.0
+    assert ratings.basic_rating_life(c, k * p) == pytest.approx(ratings.basic_rating_life(c, p) / k**3, rel=1e-12)
+
+
+def test_life_at_zero_load_is_infinite():
+    with np.errstate(divide="ignore"):
+        assert ratings.basic_rating_life(1000.0, 0.0) == math.inf

@@ -1,0 +1,105 @@
+"""Viscosity (ISO VG, ASTM D341), nu1, kappa, e_C and a_ISO of ISO 281."""
+
+import math
+import warnings
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from bearinglab import ratings
+from bearinglab.errors import InputError
+
+RPM = 2 * math.pi / 60
+
+
+def _a_iso_by_hand(kappa, ec_cu_p):
+    """ISO 281:2007 eq. (B.4), ball bearings, written out for 0.1 <= kappa <= 4 (no cap)."""
+    c, p = (2.2649, 0.054381) if kappa < 0.4 else (1.9987, 0.19087) if kappa < 1 else (1.9987, 0.071739)
+    return 0.1 * (1 - (2.5671 - c / kappa**p) ** 0.83 * ec_cu_p ** (1 / 3)) ** -9.3
+
+
+def test_rated_viscosity_both_branches():
+    # ISO 281 eqs. (14)-(15) by hand: 500 rpm and 3000 rpm at d_m = 50 mm
+    assert ratings.rated_viscosity(500 * RPM, 0.05) * 1e6 == pytest.approx(45000 * 500**-0.83 * 50**-0.5, rel=1e-12)
+    assert ratings.rated_viscosity(3000 * RPM, 0.05) * 1e6 == pytest.approx(4500 * 3000**-0.5 * 50**-0.5, rel=1e-12)
+
+
+@pytest.mark.parametrize(("kappa", "ratio"), [(0.2, 0.05), (0.6, 0.1), (1.0, 0.05), (3.0, 0.2)])
+def test_a_iso_equation(kappa, ratio):
+    assert ratings.life_modification_factor(kappa, ratio, 1000.0, 1000.0) == pytest.approx(
+        _a_iso_by_hand(kappa, ratio), rel=1e-12)
+
+
+def test_a_iso_cap_and_clamps():
+    assert ratings.life_modification_factor(4.0, 1.0, 3000.0, 1000.0) == 50.0  # bracket <= 0
+    assert ratings.life_modification_factor(10.0, 0.5, 500.0, 1000.0) == ratings.life_modification_factor(
+        4.0, 0.5, 500.0, 1000.0)
+    with pytest.warns(ratings.RatingWarning, match="below 0.1"):
+        low = ratings.life_modification_factor(0.05, 0.5, 500.0, 1000.0)
+    assert low == ratings.life_modification_factor(0.1, 0.5, 500.0, 1000.0)
+
+
+def test_a_iso_ep_additive_rule():
+    with pytest.warns(ratings.RatingWarning, match="EP-additive"):
+        ep = ratings.life_modification_factor(0.5, 0.8, 2000.0, 1000.0, ep_additives=True)
+    assert ep == 3.0  # kappa = 1 would give more; the rule limits it to 3
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        # e_C < 0.2: the rule does not apply
+        assert ratings.life_modification_factor(0.5, 0.1, 100.0, 1000.0, ep_additives=True) == pytest.approx(
+            _a_iso_by_hand(0.5, 0.01), rel=1e-12)
+
+
+@given(k1=st.floats(0.1, 4.0), k2=st.floats(0.1, 4.0), ec=st.floats(0.0, 1.0), load_ratio=st.floats(0.01, 2.0))
+def test_a_iso_monotone_in_kappa(k1, k2, ec, load_ratio):
+    lo, hi = sorted((k1, k2))
+    a_lo = ratings.life_modification_factor(lo, ec, load_ratio * 1000.0, 1000.0)
+    a_hi = ratings.life_modification_factor(hi, ec, load_ratio * 1000.0, 1000.0)
+    assert a_hi >= a_lo * (1 - 1e-12)
+    assert 0.0 < a_lo <= 50.0
+
+
+@given(e1=st.floats(0.0, 1.0), e2=st.floats(0.0, 1.0), kappa=st.floats(0.1, 4.0))
+def test_a_iso_monotone_in_contamination_factor(e1, e2, kappa):
+    lo, hi = sorted((e1, e2))
+    assert ratings.life_modification_factor(kappa, hi, 300.0, 1000.0) >= ratings.life_modification_factor(
+        kappa, lo, 300.0, 1000.0) * (1 - 1e-12)
+
+
+def test_contamination_classes():
+    assert ratings.contamination_factor("extreme cleanliness", 0.05) == 1.0
+    assert ratings.contamination_factor("typical-contamination", 0.05) == pytest.approx(0.2)
+    assert ratings.contamination_factor("typical_contamination", 0.15) == pytest.approx(0.3)
+    assert ratings.contamination_factor("high_cleanliness", 0.05, bound="low") == 0.6
+    with pytest.raises(InputError, match="cleanliness must be one of"):
+        ratings.contamination_factor("dusty", 0.05)
+
+
+@given(t1=st.floats(250.0, 350.0), dt=st.floats(10.0, 100.0), nu_hot=st.floats(2e-6, 50e-6),
+       factor=st.floats(1.5, 30.0))
+def test_walther_round_trip_through_reference_points(t1, dt, nu_hot, factor):
+    a, b = ratings.walther_constants((t1, t1 + dt), (nu_hot * factor, nu_hot))
+    assert ratings.walther_viscosity(t1, a, b) == pytest.approx(nu_hot * factor, rel=1e-9)
+    assert ratings.walther_viscosity(t1 + dt, a, b) == pytest.approx(nu_hot, rel=1e-9)
+    # between the points the viscosity lies between them (monotone in T)
+    mid = ratings.walther_viscosity(t1 + dt / 2, a, b)
+    assert nu_hot < mid < nu_hot * factor
+
+
+def test_iso_vg_and_temperature():
+    assert ratings.iso_vg_viscosity(68) == pytest.approx(68e-6)
+    nu = ratings.kinematic_viscosity(np.array([313.15, 373.15]), iso_vg=68, viscosity_100=8.7e-6)
+    np.testing.assert_allclose(nu, [68e-6, 8.7e-6], rtol=1e-9)
+    with pytest.raises(InputError, match="iso_vg must be one of"):
+        ratings.iso_vg_viscosity(70)
+    with pytest.raises(InputError, match="viscosity_100"):
+        ratings.kinematic_viscosity(343.15, iso_vg=68)
+    with pytest.raises(InputError, match=">= 2"):
+        ratings.walther_constants((313.15, 373.15), (10e-6, 1e-6))
+
+
+def test_viscosity_ratio():
+    nu1 = ratings.rated_viscosity(1500 * RPM, 0.04)
+    assert ratings.viscosity_ratio(2 * nu1, 1500 * RPM, 0.04) == pytest.approx(2.0, rel=1e-14)
