@@ -59,8 +59,8 @@ from typing import NamedTuple
 import numpy as np
 from numpy.polynomial import chebyshev as _cheb
 
-from . import _solve, geometry, hertz, parallel, static
-from ._validate import (
+from .. import _solve, geometry, hertz, parallel, static
+from .._validate import (
     as_float,
     check_greater,
     check_integer,
@@ -68,8 +68,8 @@ from ._validate import (
     check_open_interval,
     check_positive,
 )
-from .errors import ConvergenceError, InputError, ValidityWarning
-from .units import MM, RPM
+from ..errors import ConvergenceError, InputError, ValidityWarning
+from ..units import MM, RPM
 
 __all__ = [
     "CONSTANTS",
