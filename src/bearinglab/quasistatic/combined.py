@@ -91,7 +91,8 @@ MAX_ITER = 60  # ring Newton iterations per case (per continuation step at speed
 _N_CHEB = 16  # Chebyshev nodes in cos(alpha) of the Hertz interpolants (analytic on [0, 1]; ~1e-13)
 _BALL_TOL = 1e-14  # ball Newton: |step| / D
 _BALL_MAX_ITER = 40
-_LINE_SEARCH = 30  # step halvings of the ring Newton
+_LINE_SEARCH = 8  # step cuts (by 4) of the ring Newton line search
+_LAM_MAX = 1e4  # Levenberg-Marquardt damping beyond which a case has failed
 _CONTINUATION = (1, 4, 16)  # equal steps in omega^2 tried for a case that fails at the full speed
 
 
@@ -485,12 +486,13 @@ def _scaled(geo, vec):
 
 
 def _measure(geo, loads, force, balls):
-    """Relative residual: |F - F(u)| over max(|F|, sum of ball reactions), moments divided by d_m/2."""
-    res = _scaled(geo, loads - force)
+    """Residual norm |F - F(u)| (moments divided by d_m/2) [N] and the same relative to
+    max(|F|, sum of the ball reactions) [-]."""
+    res = np.linalg.norm(_scaled(geo, loads - force), axis=-1)
     total = np.sum(np.hypot(balls["pa"], balls["pr"]), axis=-1)
     scale = np.maximum(np.linalg.norm(_scaled(geo, loads), axis=-1), total)
     with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(scale > 0, np.linalg.norm(res, axis=-1) / scale, np.linalg.norm(res, axis=-1))
+        return res, np.where(scale > 0, res / scale, res)
 
 
 def _thrust_offset(geo, per_ball, kn0):
@@ -524,54 +526,64 @@ def _start(geo, loads):
     return u
 
 
-def _step(geo, stiff, residual):
-    """Newton step K du = r in scaled variables; a singular K (no ball loaded) gets a small diagonal."""
+def _step(geo, stiff, residual, lam):
+    """Levenberg-Marquardt step (K + lam max|diag K| I) du = r in scaled variables (lam = 0: Newton).
+
+    A K that is singular (fewer than three balls loaded, or none) gets a floor of 1e-14 max|diag K|.
+    """
     sc = np.array([1.0, 1.0, 1.0, 2.0 / geo.dm, 2.0 / geo.dm])
     ks = stiff * sc[None, :, None] * sc[None, None, :]
-    rs = residual * sc
     diag = np.max(np.abs(np.diagonal(ks, axis1=1, axis2=2)), axis=1)
-    floor = np.where(diag > 0, 1e-14 * diag, 1.0)
-    ks = ks + floor[:, None, None] * np.eye(5)
-    return np.linalg.solve(ks, rs[:, :, None])[:, :, 0] * sc
+    diag = np.where(diag > 0, diag, 1.0)
+    ks = ks + (np.maximum(lam, 1e-14) * diag)[:, None, None] * np.eye(5)
+    return np.linalg.solve(ks, (residual * sc)[:, :, None])[:, :, 0] * sc
 
 
 def _newton(geo, loads, w2, u0, x0, tol, max_iter):
-    """Damped Newton on the ring equilibrium, all cases together; returns u, converged, iterations, x."""
+    """Damped Newton (Levenberg-Marquardt) on the ring equilibrium, all cases together.
+
+    Each case has its own damping: it falls tenfold after a full step and rises when the line search
+    on |F - F(u)| has to cut the step. Returns u, converged, iterations and the ball centres at speed.
+    """
     n = len(loads)
     u = u0.copy()
-    x = x0
     it = np.zeros(n, dtype=int)
-    force, stiff, balls = _evaluate(geo, u, w2, x)
-    norm = _measure(geo, loads, force, balls)
-    ok_balls = np.all(balls["ok"], axis=1)
-    done = (norm <= tol) & ok_balls
-    failed = np.zeros(n, dtype=bool)
+    lam = np.zeros(n)
+    force, stiff, balls = _evaluate(geo, u, w2, x0)
+    norm, rel = _measure(geo, loads, force, balls)
+    done = (rel <= tol) & np.all(balls["ok"], axis=1)
     x = balls.get("x")
     for _ in range(max_iter):
-        act = np.flatnonzero(~done & ~failed)
+        act = np.flatnonzero(~done & (it < max_iter) & (lam <= _LAM_MAX))
         if act.size == 0:
             break
-        du = _step(geo, stiff[act], (loads - force)[act])
-        t = np.ones(act.size)
+        it[act] += 1
+        du = _step(geo, stiff[act], (loads - force)[act], lam[act])
+        # trust region: no groove centre moves by more than A / 2 in one step
+        move = np.maximum(np.max(np.abs(du @ geo.ja.T), axis=1), np.max(np.abs(du @ geo.jr.T), axis=1))
+        with np.errstate(divide="ignore"):
+            t = np.minimum(1.0, 0.5 * geo.big_a / move)
+        full = t == 1.0
         pending = np.arange(act.size)
         for _ls in range(_LINE_SEARCH):
             sel = act[pending]
             trial = u[sel] + t[pending, None] * du[pending]
             f_t, k_t, b_t = _evaluate(geo, trial, w2[sel], None if x is None else x[sel])
-            n_t = _measure(geo, loads[sel], f_t, b_t)
-            good = (n_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | (n_t <= tol)
-            good &= np.all(b_t["ok"], axis=1)
+            n_t, r_t = _measure(geo, loads[sel], f_t, b_t)
+            good = ((n_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | (r_t <= tol)) & np.all(b_t["ok"], axis=1)
             g = sel[good]
-            u[g], force[g], stiff[g], norm[g] = trial[good], f_t[good], k_t[good], n_t[good]
+            u[g], force[g], stiff[g], norm[g], rel[g] = trial[good], f_t[good], k_t[good], n_t[good], r_t[good]
             if x is not None:
                 x[g] = b_t["x"][good]
-            it[g] += 1
             pending = pending[~good]
             if pending.size == 0:
                 break
-            t[pending] *= 0.5
-        failed[act[pending]] = True
-        done = (norm <= tol) & ~failed
+            t[pending] *= 0.25
+            full[pending] = False
+        lam[act] = np.where(full, 0.1 * lam[act], np.maximum(10.0 * lam[act], 1e-6))
+        lam[act[pending]] = np.maximum(100.0 * lam[act[pending]], 1e-3)  # no decrease at all
+        lam[lam < 1e-12] = 0.0
+        done = rel <= tol  # accepted iterates have every ball converged
     return u, done, it, x
 
 
@@ -654,7 +666,7 @@ def _outputs(geo, loads, w, u, ok, it):
     sel = np.flatnonzero(ok)
     if sel.size:
         force, stiff, balls = _evaluate(geo, u[sel], w[sel] ** 2)
-        out["residual"][sel] = _measure(geo, loads[sel], force, balls)
+        out["residual"][sel] = _measure(geo, loads[sel], force, balls)[1]
         out["stiffness"][sel] = stiff
         qi, qo = balls["qi"], balls["qo"]
         vals = {"ball_load_inner": qi, "ball_load_outer": qo, "contact_angle_inner": balls["ai"],
