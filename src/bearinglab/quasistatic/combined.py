@@ -684,11 +684,12 @@ def _notes(geo, loads, w, out, ok):
     msgs = []
     sel = np.flatnonzero(ok & (w > 0))
     if sel.size:
-        qi, ao = out["ball_load_inner"][sel], out["contact_angle_outer"][sel]
-        thrust = np.abs(np.sum(qi * np.sin(out["contact_angle_inner"][sel]), axis=1))
-        lost = np.where(qi > 0, np.abs(ao), np.inf).min(axis=1)
-        msgs += light_load_warnings(thrust, lost, w[sel], geo.z, geo.d, geo.dm, geo.a0,
-                                    density=geo.mass / (math.pi * geo.d**3 / 6.0), case_index=sel)
+        qi, ai = out["ball_load_inner"][sel], out["contact_angle_inner"][sel]
+        thrust = np.abs(np.sum(qi * np.sin(ai), axis=1))
+        loaded = np.where(qi > 0, 1.0, np.nan)
+        msgs += light_load_warnings(thrust, ai * loaded, out["contact_angle_outer"][sel] * loaded, w[sel], geo.z,
+                                    geo.d, geo.dm, geo.a0, density=geo.mass / (math.pi * geo.d**3 / 6.0),
+                                    case_index=sel)
         mu = 2.0 * np.abs(out["gyroscopic_moment"][sel]) / (geo.d * out["ball_load_outer"][sel])
         mu = np.where(qi > 0, mu, 0.0)
         if geo.control == "outer" and np.any(mu > FRICTION_WARNING_LIMIT):
@@ -727,16 +728,17 @@ class LightLoad(NamedTuple):
     minimum_axial_load: np.ndarray  # the test-stand minimum [N]
 
 
-def light_load(axial_load, contact_angle_outer, shaft_speed, n_balls, ball_diameter, pitch_diameter, free_angle, *,
-               density=7850.0, friction_coefficient=STAND_FRICTION, outer_angle_fraction=OUTER_ANGLE_FRACTION):
+def light_load(axial_load, contact_angle_inner, contact_angle_outer, shaft_speed, n_balls, ball_diameter,
+               pitch_diameter, free_angle, *, density=7850.0, friction_coefficient=STAND_FRICTION,
+               outer_angle_fraction=OUTER_ANGLE_FRACTION):
     r"""Is the load too light for the speed? Gyroscopic slip and an outer contact angle driven to zero.
 
     Parameters
     ----------
     axial_load : array_like
         Axial load the bearing carries, sum of Q_i sin(alpha_i) over the balls. [N]
-    contact_angle_outer : array_like
-        Smallest outer contact angle of a loaded ball (magnitude). [rad]
+    contact_angle_inner, contact_angle_outer : array_like
+        Contact angles of a loaded ball (or of every ball, broadcast against the other inputs). [rad]
     shaft_speed : array_like
         Inner-ring speed. [rad/s]
     n_balls : int
@@ -764,18 +766,20 @@ def light_load(axial_load, contact_angle_outer, shaft_speed, n_balls, ball_diame
     Gyroscopic slip: the test-stand minimum axial load of spec 000 section 3,
     :func:`bearinglab.static.min_axial_load_gyroscopic` at the free angle (friction at the two contacts
     resists the gyroscopic moment while M_g <= mu Q D). The outer angle: at light thrust and high speed the
-    centrifugal force turns the outer contact towards the groove bottom (spec 004 section 7.1); below
-    ``outer_angle_fraction`` alpha0 the ball no longer has an angular contact at the outer ring. Neither
-    applies at rest, nor the angle criterion to a bearing with alpha0 = 0.
+    centrifugal force turns the outer contact towards the groove bottom while the inner contact angle
+    grows (spec 004 section 7.1): flagged where |alpha_o| < ``outer_angle_fraction`` alpha0 while
+    |alpha_i| > alpha0 (so that a small angle from a radial load is not flagged). Neither applies at
+    rest, nor the angle criterion to a bearing with alpha0 = 0.
 
     Examples
     --------
     >>> from bearinglab.units import RPM
-    >>> f = light_load(50.0, math.radians(0.05), 15000 * RPM, 16, 22.23e-3, 125.3e-3, math.radians(40))
+    >>> f = light_load(50.0, math.radians(60.0), math.radians(0.05), 15000 * RPM, 16, 22.23e-3, 125.3e-3, math.radians(40))
     >>> print(bool(f.gyroscopic_slip), bool(f.outer_angle_lost), f"{f.minimum_axial_load / 1e3:.0f} kN")
-    True True 110 kN
+    True True 113 kN
     """
     fa = as_float("axial_load", axial_load)
+    ai = as_float("contact_angle_inner", contact_angle_inner)
     ao = as_float("contact_angle_outer", contact_angle_outer)
     w = check_nonnegative("shaft_speed", shaft_speed, "rad/s")
     a0 = float(free_angle)
@@ -783,20 +787,20 @@ def light_load(axial_load, contact_angle_outer, shaft_speed, n_balls, ball_diame
                                                friction_coefficient=friction_coefficient, density=density)
     moving = w > 0
     slip = moving & (np.abs(fa) < minimum)
-    lost = moving & (a0 > 0) & (np.abs(ao) < outer_angle_fraction * a0)
+    lost = moving & (a0 > 0) & (np.abs(ao) < outer_angle_fraction * a0) & (np.abs(ai) > a0)
     return LightLoad(np.asarray(slip)[()], np.asarray(lost)[()], np.asarray(minimum)[()])
 
 
-def light_load_warnings(axial_load, contact_angle_outer, shaft_speed, n_balls, ball_diameter, pitch_diameter,
-                        free_angle, *, density=7850.0, case_index=None):
+def light_load_warnings(axial_load, contact_angle_inner, contact_angle_outer, shaft_speed, n_balls, ball_diameter,
+                        pitch_diameter, free_angle, *, density=7850.0, case_index=None):
     """Warning messages for loads too light for the speed (see :func:`light_load`).
 
     Parameters
     ----------
     axial_load : array_like
-        Axial load of the bearing. [N]
-    contact_angle_outer : array_like
-        Smallest outer contact angle of a loaded ball. [rad]
+        Axial load of the bearing, one per case. [N]
+    contact_angle_inner, contact_angle_outer : array_like
+        Contact angles, one per case or (cases, balls) for loaded balls (NaN for unloaded ones). [rad]
     shaft_speed : array_like
         Inner-ring speed. [rad/s]
     n_balls : int
@@ -820,14 +824,19 @@ def light_load_warnings(axial_load, contact_angle_outer, shaft_speed, n_balls, b
     Examples
     --------
     >>> from bearinglab.units import RPM
-    >>> m = light_load_warnings(50.0, math.radians(0.05), 15000 * RPM, 16, 22.23e-3, 125.3e-3, math.radians(40))
-    >>> print(len(m), m[1][:40])
-    2 light load: the outer contact angle is dr
+    >>> m = light_load_warnings(50.0, math.radians(60.0), math.radians(0.05), 15000 * RPM, 16, 22.23e-3, 125.3e-3, math.radians(40))
+    >>> print(len(m), m[1][:38])
+    2 light load: the outer contact angle is
     """
-    flags = light_load(axial_load, contact_angle_outer, shaft_speed, n_balls, ball_diameter, pitch_diameter,
-                       free_angle, density=density)
-    fa, slip, lost, fmin = np.broadcast_arrays(np.asarray(axial_load, dtype=float), *flags)
-    fa, slip, lost, fmin = (np.ravel(v) for v in (fa, slip, lost, fmin))
+    fa = np.ravel(as_float("axial_load", axial_load))
+    w = np.ravel(as_float("shaft_speed", shaft_speed))
+    ai, ao = (np.reshape(as_float(n, v), (max(fa.size, w.size), -1)) for n, v in
+              (("contact_angle_inner", contact_angle_inner), ("contact_angle_outer", contact_angle_outer)))
+    flags = light_load(fa[:, None], ai, ao, w[:, None], n_balls, ball_diameter, pitch_diameter, free_angle,
+                       density=density)
+    fa = np.broadcast_to(fa, w.shape) if fa.size < w.size else fa
+    slip, lost, fmin = np.any(flags.gyroscopic_slip, axis=1), np.any(flags.outer_angle_lost, axis=1), \
+        np.max(np.broadcast_to(flags.minimum_axial_load, flags.gyroscopic_slip.shape), axis=1)
     idx = np.arange(fa.size) if case_index is None else np.ravel(case_index)
     msgs = []
     if slip.any():
@@ -985,8 +994,8 @@ def combined_analysis(bearing, loads, shaft_speed=0.0, *, reduced_modulus=None, 
     >>> from bearinglab import catalog
     >>> from bearinglab.units import RPM
     >>> r = combined_analysis(catalog.get("B218"), [0, 0, 20e3, 0, 0], 10000 * RPM)
-    >>> print(np.degrees([r.contact_angle_inner[0], r.contact_angle_outer[0]]).round(3))
-    [49.306 32.482]
+    >>> print(f"{math.degrees(r.contact_angle_inner[0]):.3f} / {math.degrees(r.contact_angle_outer[0]):.3f} deg")
+    49.310 / 32.510 deg
     """
     options.setdefault("bearing_type", bearing.type)
     return load_distribution(loads, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
