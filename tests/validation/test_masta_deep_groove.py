@@ -13,7 +13,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
 from scipy.optimize import root
 
 from bearinglab import geometry, hertz
