@@ -939,7 +939,9 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     ok &= out["residual"] <= tol
     if on_failure == "raise" and not ok.all():
         k = int(np.flatnonzero(~ok)[0])
-        raise ConvergenceError("combined.load_distribution", iterations=int(it[k]), residual=out["residual"][k],
+        force, _, balls = _evaluate(geo, u[k:k + 1], w[k:k + 1] ** 2, deriv=False)
+        raise ConvergenceError("combined.load_distribution", iterations=int(it[k]),
+                               residual=_measure(geo, f[k:k + 1], force, balls)[1][0],
                                estimate=u[k], reason=f"loads {f[k].tolist()} at {w[k] / RPM:g} rpm "
                                                      f"({int((~ok).sum())} of {ok.size} cases failed)")
     for key in out:
