@@ -166,7 +166,7 @@ def _set_newton(geos, trans, offsets, loads, w2, tol, max_iter):
         du[~act] = 0.0
         t = np.ones(len(u))
         for _ls in range(30):
-            f_t, k_t, _, s_t = _set_evaluate(geos, trans, offsets, u + t[:, None] * du, w2)
+            f_t, _, _, s_t = _set_evaluate(geos, trans, offsets, u + t[:, None] * du, w2)
             n_t, r_t = measure(f_t, s_t)
             good = (n_t < norm) | (r_t <= tol) | ~act
             if good.all():
@@ -255,7 +255,7 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
         k = int(np.flatnonzero(~ok)[0])
         raise ConvergenceError("sets.set_analysis", iterations=int(it[k]), residual=rel[k], estimate=u[k],
                                reason=f"{int((~ok).sum())} of {ok.size} cases failed")
-    force, stiff, parts, _ = _set_evaluate(geos, trans, offsets, u, w2)
+    _, stiff, parts, _ = _set_evaluate(geos, trans, offsets, u, w2)
     per = []
     notes = []
     for j, (geo, t, off) in enumerate(zip(geos, trans, offsets, strict=True)):
