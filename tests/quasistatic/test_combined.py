@@ -315,3 +315,12 @@ def test_geometry_helpers():
     big_a = 0.05 * 11.5e-3
     assert_allclose(radial, big_a + 1e-6 * np.array([1, 0, -1, 0]), rtol=1e-14)
     assert_allclose(axial, 2e-6 - 43.5e-3 / 2 * 1e-4 * np.array([1, 0, -1, 0]), rtol=1e-12, atol=1e-20)
+
+
+def test_bench_paths_agree_on_a_small_input(load_bench):
+    bench = load_bench("combined")
+    loads = bench.cases(12, [1500, 1500, 1500, 15.0, 15.0], seed=3)
+    state = bench.batched(bench.DEEP, loads)
+    ref = bench.baseline(bench.DEEP, loads)()
+    assert state.converged.all()
+    assert_allclose(ref / UM_MRAD, state.displacement / UM_MRAD, rtol=0, atol=1e-8)
