@@ -17,7 +17,7 @@ $(STAMP): $(PY) pyproject.toml
 	@touch $@
 
 $(TSTAMP): $(PY) pyproject.toml
-	$(PY) -m pip install --quiet -e ".[test]"
+	$(PY) -m pip install --quiet -e ".[test,ross]"
 	@touch $@ $(STAMP)
 
 # every examples/demo_*.py runs a published worked example and writes under out/

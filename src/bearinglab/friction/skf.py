@@ -271,9 +271,12 @@ def _load_variables(fr, fa, n, dm, c, bearing_type, c0):
         with np.errstate(divide="ignore", invalid="ignore"):
             sin_af = np.sin(np.radians(24.6 * (fa / (c0 if c0 is not None else 1.0)) ** 0.24))
             axial = fa > 0
-            s = np.where(axial, sin_af, 1.0)
-            g_rr = c.r1 * dm**1.96 * np.where(axial, fr + c.r2 * fa / s, fr) ** 0.54
-            g_sl = np.where(axial, c.s1 * dm**-0.145 * (fr**5 + c.s2 * dm**1.5 * fa**4 / s) ** (1 / 3),
+            s = np.where(axial & (sin_af > 0), sin_af, 1.0)
+            # Fa / sin(alpha_F) ~ Fa^0.76 -> 0 as Fa -> 0; where sin(alpha_F) underflows, so does the ratio
+            fa_s = np.where(sin_af > 0, fa / s, 0.0)
+            fa4_s = np.where(sin_af > 0, fa**4 / s, 0.0)
+            g_rr = c.r1 * dm**1.96 * np.where(axial, fr + c.r2 * fa_s, fr) ** 0.54
+            g_sl = np.where(axial, c.s1 * dm**-0.145 * (fr**5 + c.s2 * dm**1.5 * fa4_s) ** (1 / 3),
                             c.s1 * dm**-0.26 * fr ** (5 / 3))
         return g_rr, g_sl
     fg_r = c.r3 * dm**4 * n**2

@@ -40,6 +40,14 @@ sweep                          a loads x speeds grid (``execution=parallel.Execu
 result_table                   the result as columns in engineering units (CSV, JSON)
 HighSpeedState
 
+Combined loads (submodules, imported with the package)
+------------------------------------------------------
+combined                       the 5-DOF inner ring under Fx, Fy, Fz, Mx, My, at rest and at speed: load
+                               distribution, contact angles and pressures per ball, tangent stiffness
+sets                           preloaded bearing sets (DB, DF, DT) on one shaft: distribution and stiffness
+rotordynamics                  speed-dependent kxx, kxy, kyx, kyy, kzz for ``ross.BearingElement``
+light_load                     light-load criteria at speed: gyroscopic slip and an outer angle near zero
+
 Conventions: the outer ring is fixed and the inner ring turns at ``shaft_speed`` >= 0 (the model is
 symmetric in the direction of rotation); the thrust acts on the inner ring. The gyroscopic moment M_g
 is a magnitude (>= 0) and the friction that resists it enters eqs. (5)-(7) with the physical sign of
@@ -59,6 +67,7 @@ References
 
 from __future__ import annotations
 
+from . import combined, light_load, rotordynamics, sets
 from .ball import (
     CONSTANTS,
     FRICTION_WARNING_LIMIT,
@@ -116,15 +125,19 @@ __all__ = [
     "attitude_angle",
     "ball_speeds",
     "centrifugal_force",
+    "combined",
     "contact_angles",
     "contact_stiffness",
     "friction_coefficient",
     "gyroscopic_moment",
     "high_speed_analysis",
+    "light_load",
     "printed_constants",
     "required_friction_coefficient",
     "residual",
     "result_table",
+    "rotordynamics",
+    "sets",
     "sign_change_thrust",
     "sweep",
     "zero_displacement_thrust",

@@ -1,0 +1,925 @@
+r"""Ball bearing under combined load: the five-degree-of-freedom load distribution, at rest and at speed.
+
+The inner ring carries the loads (F_x, F_y, F_z, M_x, M_y) and moves by (delta_x, delta_y, delta_z,
+theta_x, theta_y) relative to the fixed outer ring. Every ball has its own contact angles and loads;
+the ring is in equilibrium with all of them. At rest each ball is a Hertz spring between the two
+groove-curvature centres (the static contact of spec 000 / spec 004 section 5.3, ball by ball); at speed
+each ball has its own Jones-Harris equilibrium with centrifugal force and gyroscopic moment (spec 004
+eqs. 5-6 and 8-13), solved inside the ring iteration. Pure thrust reproduces
+:func:`bearinglab.quasistatic.contact_angles` and :func:`bearinglab.static.contact_angle_under_thrust`.
+
+Geometry
+--------
+ball_azimuths          psi_j = phi0 + 2 pi j / Z, from +x
+groove_offsets         inner groove-curvature centre relative to the outer one, per ball, for a displacement
+
+Load distribution
+-----------------
+load_distribution      displacement, ball loads, contact angles, pressures and 5 x 5 stiffness, batched
+combined_analysis      the same for a :class:`~bearinglab.bearing.BallBearing`
+equilibrium            ring residual and tangent stiffness at a given displacement (no solve)
+
+Warnings
+--------
+light_load, light_load_warnings   re-exported from :mod:`bearinglab.quasistatic.light_load`
+
+Conventions (see docs/theory/load_distribution.md): z is the bearing axis; ball j sits at
+psi_j = phi0 + 2 pi j/Z from +x. Displacements are those of the inner ring relative to the outer ring,
+measured from the concentric position: with a diametral clearance, a pure thrust first takes up half the
+axial play, A sin(alpha0), and that part is included in delta_z (MASTA's convention). The tilt arm and
+the moment arm are the pitch radius d_m/2 (ISO/TS 16281). Loads and displacements are ordered
+(x, y, z, theta_x, theta_y); the stiffness matrix is d(load)/d(displacement) in N/m, N/rad, N m/m and
+N m/rad. Unloaded balls carry zero load.
+
+References
+----------
+.. [1] A. B. Jones, "A general theory for elastically constrained ball and radial roller bearings under
+   arbitrary load and speed conditions," J. Basic Eng., vol. 82, no. 2, pp. 309-320, 1960,
+   doi:10.1115/1.3662587.
+.. [2] T. A. Harris and M. N. Kotzalas, *Advanced Concepts of Bearing Technology*, 5th ed., CRC Press,
+   2006, ch. 1 (distribution of internal loading) and ch. 3 (high-speed ball bearings),
+   doi:10.1201/9781420006582.
+.. [3] ISO/TS 16281:2008, Rolling bearings - Methods for calculating the modified reference rating life
+   for universally loaded bearings (displacement and load-distribution equations, pitch-radius arms).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numpy.polynomial import chebyshev as _cheb
+
+from .. import geometry, hertz
+from .._validate import as_float, check_integer, check_nonnegative, check_positive
+from ..errors import ConvergenceError, InputError
+from ..units import RPM
+from .ball import FRICTION_WARNING_LIMIT, RACEWAY_CONTROLS
+from .contact import contact_stiffness
+from .light_load import LightLoad, light_load, light_load_warnings
+
+__all__ = [
+    "BEARING_TYPES",
+    "STIFFNESS_AT",
+    "Equilibrium",
+    "LightLoad",
+    "LoadDistribution",
+    "ball_azimuths",
+    "combined_analysis",
+    "equilibrium",
+    "groove_offsets",
+    "light_load",
+    "light_load_warnings",
+    "load_distribution",
+]
+
+#: Bearing types: a deep-groove ("radial") bearing is loaded on both groove shoulders; an angular-contact
+#: bearing too, but a ball loaded at a negative contact angle (against its low shoulder) gives a warning.
+BEARING_TYPES = ("radial", "angular")
+#: Where the Hertz constants are evaluated: at each contact's operating angle (spec 004) or at the free
+#: contact angle alpha0 (ISO/TS 16281, spec 000's force characteristic).
+STIFFNESS_AT = ("operating", "free")
+
+# Defaults of the ring Newton (belong in bearinglab._solve, which this module does not own yet)
+TOL = 1e-12  # relative residual |F - F(u)| / max(|F|, sum of ball loads), moments divided by d_m/2
+MAX_ITER = 60  # ring Newton iterations per case (per continuation step at speed)
+_N_CHEB = 16  # Chebyshev nodes in cos(alpha) of the Hertz interpolants (analytic on [0, 1]; ~1e-13)
+_BALL_TOL = 1e-14  # ball Newton: |step| / D
+_BALL_MAX_ITER = 40
+_LINE_SEARCH = 8  # step cuts (by 4) of the ring Newton line search
+_LAM_MAX = 1e4  # Levenberg-Marquardt damping beyond which a case has failed
+_CONTINUATION = (1, 4, 16)  # equal steps in omega^2 tried for a case that fails at the full speed
+
+
+# --------------------------------------------------------------------------- geometry
+def ball_azimuths(n_balls, first_ball_angle=0.0):
+    """Azimuths of the balls, psi_j = phi0 + 2 pi j / Z, measured from +x towards +y.
+
+    Parameters
+    ----------
+    n_balls : int
+        Z. [-]
+    first_ball_angle : float, optional
+        phi0; 0 puts ball 0 on the +x load line. [rad]
+
+    Returns
+    -------
+    ndarray
+        psi, shape (Z,). [rad]
+
+    Examples
+    --------
+    >>> print(np.degrees(ball_azimuths(4)))
+    [  0.  90. 180. 270.]
+    """
+    z = int(check_integer("n_balls", n_balls, 1))
+    phi0 = float(as_float("first_ball_angle", first_ball_angle))
+    return phi0 + 2.0 * np.pi * np.arange(z) / z
+
+
+def _arms(psi, arm):
+    """Rows d(axial, radial offset)/d(displacement) of every ball, each (Z, 5)."""
+    c, s = np.cos(psi), np.sin(psi)
+    zero = np.zeros_like(psi)
+    axial = np.stack([zero, zero, np.ones_like(psi), arm * s, -arm * c], axis=1)
+    radial = np.stack([c, s, zero, zero, zero], axis=1)
+    return axial, radial
+
+
+def groove_offsets(displacement, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
+                   free_angle, *, first_ball_angle=0.0):
+    r"""Inner groove-curvature centre relative to the outer one, per ball, for a ring displacement.
+
+    Parameters
+    ----------
+    displacement : array_like
+        (..., 5): delta_x, delta_y, delta_z [m], theta_x, theta_y [rad] of the inner ring from the
+        concentric position.
+    n_balls : int
+        Z. [-]
+    ball_diameter : float
+        D. [m]
+    pitch_diameter : float
+        d_m. [m]
+    inner_conformity, outer_conformity : float
+        f_i, f_o. [-]
+    free_angle : float
+        alpha0 (from the clearance: cos alpha0 = 1 - e / (2 A)). [rad]
+    first_ball_angle : float, optional
+        phi0. [rad]
+
+    Returns
+    -------
+    axial, radial : ndarray
+        (..., Z) components in the plane of each ball. [m]
+
+    Notes
+    -----
+    Harris and Kotzalas [2]_ ch. 1 with the pitch radius as arm (ISO/TS 16281 [3]_):
+
+    .. math::
+        A_{z,j} = \delta_z + \tfrac{d_m}{2}(\theta_x\sin\psi_j - \theta_y\cos\psi_j),\qquad
+        A_{r,j} = A\cos\alpha_0 + \delta_x\cos\psi_j + \delta_y\sin\psi_j
+
+    with A = (f_i + f_o - 1) D. A ball is loaded where sqrt(A_z^2 + A_r^2) > A; its contact angle is
+    atan2(A_z, A_r).
+    """
+    u = as_float("displacement", displacement)
+    if u.shape[-1:] != (5,):
+        raise InputError(f"displacement must have a last axis of length 5, got shape {u.shape}")
+    geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
+                    None, None, first_ball_angle, "free", "outer", "radial", tables=False)
+    return (u @ geo.ja.T)[()], (geo.gr0 + u @ geo.jr.T)[()]
+
+
+# --------------------------------------------------------------------------- Hertz interpolants
+def _tables(d, dm, fi, fo, ep, a0, stiffness_at):
+    """Chebyshev coefficients in x = 2 cos(alpha) - 1 of ln K and ln(a* b*) of each race.
+
+    The exact Hertz solution is iterative; it is evaluated once per bearing on _N_CHEB nodes. With
+    ``stiffness_at="free"`` the series are constants (the values at alpha0).
+    """
+    def exact(c):
+        alpha = np.arccos(np.clip(c, 0.0, 1.0))
+        k = contact_stiffness(alpha, alpha, d, dm, fi, fo, ep)
+        ab = []
+        for race, f in (("inner", fi), ("outer", fo)):
+            curv = geometry.raceway_curvature(d, dm, f, alpha, race=race)
+            co = hertz.coefficients(curv.curvature_difference)
+            ab.append(np.log(co.a_star * co.b_star))
+        return np.log(k.inner), np.log(k.outer), ab[0], ab[1]
+
+    if stiffness_at == "free":
+        return [np.atleast_1d(np.asarray(v, dtype=float)) for v in exact(np.array([math.cos(a0)]))]
+    x = np.cos(np.pi * (np.arange(_N_CHEB) + 0.5) / _N_CHEB)
+    return [_cheb.chebfit(x, v, _N_CHEB - 1) for v in exact((x + 1.0) / 2.0)]
+
+
+def _hertz_k(coef, c):
+    """K and d ln K / d cos(alpha) from a series (a constant series has zero slope)."""
+    x = 2.0 * c - 1.0
+    if coef.size == 1:
+        return np.full_like(c, math.exp(coef[0])), np.zeros_like(c)
+    return np.exp(_cheb.chebval(x, coef)), 2.0 * _cheb.chebval(x, _cheb.chebder(coef))
+
+
+# --------------------------------------------------------------------------- the bearing
+class _Geometry(NamedTuple):
+    z: int
+    d: float
+    dm: float
+    fi: float
+    fo: float
+    a0: float
+    ep: float
+    mass: float  # ball mass [kg]
+    inertia: float  # J = m D^2 / 10 [kg m^2]
+    big_a: float  # A = B D
+    gr0: float  # A cos(alpha0), radial offset of the groove centres in the concentric position
+    ri: float  # (f_i - 0.5) D
+    ro: float  # (f_o - 0.5) D
+    psi: np.ndarray
+    ja: np.ndarray  # (Z, 5) d axial offset / d u
+    jr: np.ndarray  # (Z, 5) d radial offset / d u
+    jj: np.ndarray  # (2, 2, Z, 25) outer products J_p J_q^T per ball
+    tables: list | None  # ln K_i, ln K_o, ln(a*b*)_i, ln(a*b*)_o
+    lam: tuple  # (lambda_i, lambda_o)
+    control: str
+    kind: str
+    stiffness_at: str
+
+
+def _geometry(n_balls, d, dm, fi, fo, a0, ep, density, phi0, stiffness_at, control, kind, *, tables=True):
+    """Check one bearing's data and precompute what every evaluation needs."""
+    z = int(check_integer("n_balls", n_balls, 1))
+    d = float(check_positive("ball_diameter", d, "m"))
+    dm = float(geometry.pitch_ratio(d, dm, 0.0) and dm)  # checks d_m > D
+    big_a = float(geometry.total_curvature(fi, fo)) * d
+    a0 = float(as_float("free_angle", a0))
+    if not 0.0 <= a0 < math.pi / 2:
+        raise InputError(f"free_angle must be in [0, 90) [deg], got {math.degrees(a0):g}")
+    if stiffness_at not in STIFFNESS_AT:
+        raise InputError(f"stiffness_at must be one of {list(STIFFNESS_AT)}, got {stiffness_at!r}")
+    if control not in RACEWAY_CONTROLS:
+        raise InputError(f"raceway_control must be one of {list(RACEWAY_CONTROLS)}, got {control!r}")
+    if kind not in BEARING_TYPES:
+        raise InputError(f"bearing_type must be one of {list(BEARING_TYPES)}, got {kind!r}")
+    psi = ball_azimuths(z, phi0)
+    ja, jr = _arms(psi, dm / 2.0)
+    rows = (ja, jr)
+    jj = np.array([[np.einsum("zk,zl->zkl", p, q).reshape(z, 25) for q in rows] for p in rows])
+    mass = inertia = ep_f = np.nan
+    tab = None
+    if tables:
+        ep_f = float(check_positive("reduced_modulus", ep, "Pa"))
+        rho = float(check_positive("density", density, "kg/m^3"))
+        mass = rho * math.pi * d**3 / 6.0
+        inertia = mass * d**2 / 10.0
+        tab = _tables(d, dm, fi, fo, ep_f, a0, stiffness_at)
+    return _Geometry(z, d, dm, float(fi), float(fo), a0, ep_f, mass, inertia, big_a, big_a * math.cos(a0),
+                     (fi - 0.5) * d, (fo - 0.5) * d, psi, ja, jr, jj, tab, RACEWAY_CONTROLS[control], control,
+                     kind, stiffness_at)
+
+
+# --------------------------------------------------------------------------- balls at rest
+def _rest_balls(geo, ga, gr):
+    """Ball reaction on the inner ring and its 2 x 2 stiffness per ball, at rest (no ball unknowns).
+
+    Each ball is a spring between the groove-curvature centres: Q = K_n (rho - A)^1.5 along the line
+    between them, K_n = (K_i^-2/3 + K_o^-2/3)^-3/2 at that line's angle (spec 004 section 5.3).
+    """
+    rho = np.hypot(ga, gr)
+    s, c = ga / rho, gr / rho
+    ki, dli = _hertz_k(geo.tables[0], c)
+    ko, dlo = _hertz_k(geo.tables[1], c)
+    wi, wo = ki ** (-2.0 / 3.0), ko ** (-2.0 / 3.0)
+    kn = (wi + wo) ** -1.5
+    dlkn = (wi * dli + wo * dlo) / (wi + wo)  # d ln K_n / d cos(alpha)
+    defl = np.maximum(rho - geo.big_a, 0.0)
+    q = kn * defl**1.5
+    dq = 1.5 * kn * np.sqrt(defl)
+    q_a = -q * s * dlkn  # dQ/d alpha
+    # H = dQ n n^T + (Q_alpha / rho) n t^T + (Q / rho) t t^T, n = (s, c), t = (c, -s) in (axial, radial)
+    h = np.empty(ga.shape + (2, 2))
+    h[..., 0, 0] = dq * s * s + q_a / rho * s * c + q / rho * c * c
+    h[..., 0, 1] = dq * s * c - q_a / rho * s * s - q / rho * c * s
+    h[..., 1, 0] = dq * c * s + q_a / rho * c * c - q / rho * s * c
+    h[..., 1, 1] = dq * c * c - q_a / rho * c * s + q / rho * s * s
+    alpha = np.arctan2(ga, gr)
+    return {"pa": q * s, "pr": q * c, "h": h, "qi": q, "qo": q, "ai": alpha, "ao": alpha,
+            "ci": c, "co": c, "mg": np.zeros_like(q), "fc": np.zeros_like(q)}
+
+
+# --------------------------------------------------------------------------- balls at speed
+def _dynamics(si, ci, so, co, g, control, inertia, mass, dm):
+    """Centrifugal force and gyroscopic moment per omega^2 and their partials in (alpha_i, alpha_o).
+
+    Outer ring fixed: attitude (eq. 10), cage and spin speeds (eqs. 9, 13), F_c = m (d_m/2) omega_m^2
+    (eq. 8), M_g = J omega_R omega_m sin(beta) (eq. 12), signed with beta so that a ball loaded on the
+    other shoulder (negative angles) is the mirror image; :func:`bearinglab.quasistatic.ball_speeds`.
+    """
+    if control == "outer":  # tan beta = sin a_o / (cos a_o + D/d_m)
+        beta = np.arctan2(so, co + g)
+        b_i, b_o = 0.0, (1.0 + g * co) / (1.0 + 2.0 * g * co + g * g)
+    else:  # tan beta = sin a_i / (cos a_i - D/d_m)
+        beta = np.arctan2(si, ci - g)
+        b_i, b_o = (1.0 - g * ci) / (1.0 - 2.0 * g * ci + g * g), 0.0
+    sb, cb = np.sin(beta), np.cos(beta)
+    c_ob, s_ob = co * cb + so * sb, so * cb - co * sb  # cos, sin(alpha_o - beta)
+    c_ib, s_ib = ci * cb + si * sb, si * cb - ci * sb
+    p, r = (1.0 - g * ci) * c_ob, (1.0 + g * co) * c_ib
+    p_i, p_o = g * si * c_ob + (1.0 - g * ci) * s_ob * b_i, -(1.0 - g * ci) * s_ob * (1.0 - b_o)
+    r_i, r_o = -(1.0 + g * co) * s_ib * (1.0 - b_i), -g * so * c_ib + (1.0 + g * co) * s_ib * b_o
+    nn = (1.0 - g * ci) * (1.0 + g * co)
+    n_i, n_o = g * si * (1.0 + g * co), -(1.0 - g * ci) * g * so
+    den = p + r
+    cage, spin = p / den, nn / (g * den)
+    cage_i, cage_o = (p_i * r - p * r_i) / den**2, (p_o * r - p * r_o) / den**2
+    spin_i = (n_i * den - nn * (p_i + r_i)) / (g * den**2)
+    spin_o = (n_o * den - nn * (p_o + r_o)) / (g * den**2)
+    fc = mass * dm / 2.0 * cage**2
+    mg = inertia * spin * cage * sb
+    mg_i = inertia * (spin_i * cage * sb + spin * cage_i * sb + spin * cage * cb * b_i)
+    mg_o = inertia * (spin_o * cage * sb + spin * cage_o * sb + spin * cage * cb * b_o)
+    return fc, mass * dm * cage * cage_i, mass * dm * cage * cage_o, mg, mg_i, mg_o
+
+
+def _ball_state(geo, x, ga, gr, w2, deriv=True):
+    """Ball residual (eqs. 5-6), ring reaction and their partials for ball centres x = (axial, radial).
+
+    x is measured from the outer groove-curvature centre, (ga, gr) is the inner one. Returns a dict with
+    the residual ``b`` (..., 2) [N], the reaction on the inner ring (``pa``, ``pr``) and, if ``deriv``,
+    the partials ``b_x``, ``b_g``, ``p_x``, ``p_g`` (..., 2, 2).
+    """
+    ea, er = x[..., 0], x[..., 1]
+    ia, ir = ga - ea, gr - er
+    rho_o, rho_i = np.hypot(ea, er), np.hypot(ia, ir)
+    so, co = ea / rho_o, er / rho_o
+    si, ci = ia / rho_i, ir / rho_i
+    di, do = rho_i - geo.ri, rho_o - geo.ro
+    ki, dli = _hertz_k(geo.tables[0], ci)
+    ko, dlo = _hertz_k(geo.tables[1], co)
+    dip, dop = np.maximum(di, 0.0), np.maximum(do, 0.0)
+    qi, qo = ki * dip**1.5, ko * dop**1.5
+    lam_i, lam_o = geo.lam
+    lam_i = lam_i * (di > 0)  # friction at the inner contact needs contact
+    dyn = _dynamics(si, ci, so, co, geo.d / geo.dm, geo.control, geo.inertia, geo.mass, geo.dm)
+    fc, fc_i, fc_o, mg, mg_i, mg_o = (w2 * v for v in dyn)
+    m = mg / geo.d
+    ni, no, ti, to = (si, ci), (so, co), (ci, -si), (co, -so)
+    v = [lam_i * ti[k] - lam_o * to[k] for k in range(2)]
+    b = np.stack([qi * ni[k] - qo * no[k] + m * v[k] + (fc if k else 0.0) for k in range(2)], axis=-1)
+    pa = qi * si + m * lam_i * ci  # reaction of the ball on the inner ring is -(pa, pr)
+    pr = qi * ci - m * lam_i * si
+    out = {"b": b, "pa": pa, "pr": pr, "qi": qi, "qo": qo, "ai": np.arctan2(ia, ir), "ao": np.arctan2(ea, er),
+           "ci": ci, "co": co, "mg": mg, "fc": fc, "di": di, "do": do}
+    if not deriv:
+        return out
+    qi_a, qo_a = -qi * si * dli, -qo * so * dlo
+    qi_d, qo_d = 1.5 * ki * np.sqrt(dip), 1.5 * ko * np.sqrt(dop)
+    mi, mo = mg_i / geo.d, mg_o / geo.d
+    # partials in (alpha_i, alpha_o, delta_i, delta_o), component k = axial, radial
+    b_p = [[qi_a * ni[k] + qi * ti[k] + mi * v[k] - m * lam_i * ni[k] + (fc_i if k else 0.0),
+            -qo_a * no[k] - qo * to[k] + mo * v[k] + m * lam_o * no[k] + (fc_o if k else 0.0),
+            qi_d * ni[k], -qo_d * no[k]] for k in range(2)]
+    p_p = [[qi_a * ni[k] + qi * ti[k] + lam_i * (mi * ti[k] - m * ni[k]), lam_i * mo * ti[k], qi_d * ni[k], 0.0]
+           for k in range(2)]
+    # chain rule: d(alpha_i, alpha_o, delta_i, delta_o) / d x and / d g
+    dx = [[-ti[j] / rho_i for j in range(2)], [to[j] / rho_o for j in range(2)], [-ni[j] for j in range(2)],
+          [no[j] for j in range(2)]]
+    dg = [[ti[j] / rho_i for j in range(2)], [0.0, 0.0], [ni[j] for j in range(2)], [0.0, 0.0]]
+
+    def chain(parts, dvar):
+        return np.stack([np.stack([sum(parts[k][v] * dvar[v][j] for v in range(4)) for j in range(2)], axis=-1)
+                         for k in range(2)], axis=-2)
+
+    out.update(b_x=chain(b_p, dx), b_g=chain(b_p, dg), p_x=chain(p_p, dx), p_g=chain(p_p, dg))
+    return out
+
+
+def _solve2(a, b):
+    """Solve the 2 x 2 systems a x = b, stacked over the leading axes (b (..., 2) or (..., 2, k))."""
+    det = a[..., 0, 0] * a[..., 1, 1] - a[..., 0, 1] * a[..., 1, 0]
+    inv = np.stack([np.stack([a[..., 1, 1], -a[..., 0, 1]], -1), np.stack([-a[..., 1, 0], a[..., 0, 0]], -1)], -2)
+    inv = inv / det[..., None, None]
+    if b.ndim == a.ndim - 1:
+        return np.einsum("...ij,...j->...i", inv, b)
+    return inv @ b
+
+
+def _ball_start(geo, ga, gr, w2):
+    """A ball position to start from: on the line between the groove centres, pressed out by F_c."""
+    rho = np.hypot(ga, gr)
+    n = np.stack([ga / rho, gr / rho], axis=-1)
+    ki = _hertz_k(geo.tables[0], n[..., 1])[0]
+    ko = _hertz_k(geo.tables[1], n[..., 1])[0]
+    wi, wo = ki ** (-2.0 / 3.0), ko ** (-2.0 / 3.0)
+    total = rho - geo.big_a
+    fc = w2 * geo.mass * geo.dm / 2.0 * 0.25  # cage at about half the shaft speed
+    do = np.maximum(total * wo / (wi + wo), (fc / ko) ** (2.0 / 3.0))
+    return n * (geo.ro + do)[..., None]
+
+
+def _speed_balls(geo, ga, gr, w2, x0):
+    """Solve every ball's equilibrium (eqs. 5-6) for its centre, then the ring reaction and its stiffness.
+
+    Batched Newton on the 2 x 2 ball systems with step halving that keeps delta_o > 0; the ring stiffness
+    per ball is the Schur complement H = p_g - p_x b_x^-1 b_g (implicit function theorem).
+    Returns the ball dict (with ``x``, ``h`` and ``ok``).
+    """
+    x = x0.copy()
+    active = np.ones(ga.shape, dtype=bool)
+    for _ in range(_BALL_MAX_ITER):
+        st = _ball_state(geo, x, ga, gr, w2)
+        step = -_solve2(st["b_x"], st["b"])
+        step[~active] = 0.0
+        bad = ~np.all(np.isfinite(step), axis=-1)
+        step[bad] = 0.0
+        t = np.ones(ga.shape)
+        for _h in range(20):  # keep the ball on the outer raceway
+            trial = x + t[..., None] * step
+            lost = np.hypot(trial[..., 0], trial[..., 1]) <= geo.ro
+            if not lost.any():
+                break
+            t = np.where(lost, 0.5 * t, t)
+        x = x + t[..., None] * step
+        small = np.max(np.abs(step), axis=-1) <= _BALL_TOL * geo.d
+        active &= ~small
+        if not active.any():
+            break
+    st = _ball_state(geo, x, ga, gr, w2)
+    h = st["p_g"] - st["p_x"] @ _solve2(st["b_x"], st["b_g"])
+    fs = np.maximum(np.maximum(st["qo"], st["qi"]), 1e-300)
+    st.update(x=x, h=h, ok=~active & np.all(np.abs(st["b"]) <= 1e-9 * fs[..., None], axis=-1))
+    return st
+
+
+# --------------------------------------------------------------------------- the ring
+def _evaluate(geo, u, w2, x=None, deriv=True):
+    """Bearing reaction F(u) (the load in equilibrium with u), tangent stiffness dF/du and ball states.
+
+    ``w2`` (n,) is omega^2; cases with w2 = 0 use the closed-form balls at rest, the others solve their
+    balls starting from ``x`` (n, Z, 2) or from :func:`_ball_start`.
+    """
+    ga = u @ geo.ja.T
+    gr = geo.gr0 + u @ geo.jr.T
+    moving = w2 > 0
+    if not moving.any():
+        balls = _rest_balls(geo, ga, gr)
+        balls["ok"] = np.ones(ga.shape, dtype=bool)
+    else:
+        balls = _merge(geo, ga, gr, w2, moving, x)
+    force = balls["pa"] @ geo.ja + balls["pr"] @ geo.jr
+    stiff = None
+    if deriv:
+        h = balls["h"]
+        stiff = sum(h[..., p, q] @ geo.jj[p, q] for p in range(2) for q in range(2)).reshape(-1, 5, 5)
+    return force, stiff, balls
+
+
+def _merge(geo, ga, gr, w2, moving, x):
+    """Ball states of a batch with some cases at rest and some at speed."""
+    rest = _rest_balls(geo, ga, gr)
+    rest["ok"] = np.ones(ga.shape, dtype=bool)
+    mv = np.flatnonzero(moving)
+    x0 = _ball_start(geo, ga[mv], gr[mv], w2[mv, None]) if x is None else x[mv]
+    spd = _speed_balls(geo, ga[mv], gr[mv], w2[mv, None], x0)
+    out = {}
+    for key, val in rest.items():
+        merged = np.array(val, dtype=float if key != "ok" else bool, copy=True)
+        merged[mv] = spd[key]
+        out[key] = merged
+    xs = np.zeros(ga.shape + (2,))
+    xs[mv] = spd["x"]
+    out["x"] = xs
+    return out
+
+
+def _scaled(geo, vec):
+    """Loads or displacements with the moment (tilt) components divided (multiplied) by the arm."""
+    return vec * np.array([1.0, 1.0, 1.0, 2.0 / geo.dm, 2.0 / geo.dm])
+
+
+def _measure(geo, loads, force, balls):
+    """Residual norm |F - F(u)| (moments divided by d_m/2) [N] and the same relative to
+    max(|F|, sum of the ball reactions) [-]."""
+    res = np.linalg.norm(_scaled(geo, loads - force), axis=-1)
+    total = np.sum(np.hypot(balls["pa"], balls["pr"]), axis=-1)
+    scale = np.maximum(np.linalg.norm(_scaled(geo, loads), axis=-1), total)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return res, np.where(scale > 0, res / scale, res)
+
+
+def _thrust_offset(geo, per_ball, kn0):
+    """Axial offset of the groove centres at which Z balls at one angle carry Z per_ball axially (log bisection)."""
+    lo = np.full(per_ball.shape, math.log(geo.big_a * math.sin(geo.a0) + 1e-9 * geo.d))
+    hi = np.full(per_ball.shape, math.log(geo.big_a * math.sin(geo.a0) + geo.d))
+    for _ in range(30):  # a start only: 30 halvings of the bracket are plenty
+        mid = 0.5 * (lo + hi)
+        dz = np.exp(mid)
+        rho = np.hypot(dz, geo.gr0)
+        q = kn0 * np.maximum(rho - geo.big_a, 0.0) ** 1.5 * dz / rho
+        lo, hi = np.where(q < per_ball, mid, lo), np.where(q < per_ball, hi, mid)
+    return np.where(per_ball > 0, np.exp(0.5 * (lo + hi)), 0.0)
+
+
+def _start(geo, loads):
+    """Start of the ring Newton: thrust, radial load and moment each taken alone (Stribeck's 5/Z)."""
+    c0 = np.array([math.cos(geo.a0)])
+    ki, ko = (_hertz_k(t, c0)[0][0] for t in geo.tables[:2])
+    kn0 = (ki ** (-2.0 / 3.0) + ko ** (-2.0 / 3.0)) ** -1.5
+    fr = np.hypot(loads[:, 0], loads[:, 1])
+    mm = np.hypot(loads[:, 3], loads[:, 4])
+    dz = _thrust_offset(geo, np.abs(loads[:, 2]) / geo.z, kn0)
+    dr = np.where(fr > 0, geo.big_a - geo.gr0 + (5.0 * fr / geo.z / kn0) ** (2.0 / 3.0), 0.0)
+    tilt = _thrust_offset(geo, 2.0 * mm / (geo.dm / 2.0) / geo.z, kn0) / (geo.dm / 2.0)
+    u = np.zeros_like(loads)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        u[:, 0:2] = np.where(fr[:, None] > 0, loads[:, 0:2] / fr[:, None] * dr[:, None], 0.0)
+        u[:, 3:5] = np.where(mm[:, None] > 0, loads[:, 3:5] / mm[:, None] * tilt[:, None], 0.0)
+    u[:, 2] = np.sign(loads[:, 2]) * dz
+    return u
+
+
+def _step(geo, stiff, residual, lam):
+    """Levenberg-Marquardt step (K + lam max|diag K| I) du = r in scaled variables (lam = 0: Newton).
+
+    A K that is singular (fewer than three balls loaded, or none) gets a floor of 1e-14 max|diag K|.
+    """
+    sc = np.array([1.0, 1.0, 1.0, 2.0 / geo.dm, 2.0 / geo.dm])
+    ks = stiff * sc[None, :, None] * sc[None, None, :]
+    diag = np.max(np.abs(np.diagonal(ks, axis1=1, axis2=2)), axis=1)
+    diag = np.where(diag > 0, diag, 1.0)
+    ks = ks + (np.maximum(lam, 1e-14) * diag)[:, None, None] * np.eye(5)
+    return np.linalg.solve(ks, (residual * sc)[:, :, None])[:, :, 0] * sc
+
+
+def _newton(geo, loads, w2, u0, x0, tol, max_iter):
+    """Damped Newton (Levenberg-Marquardt) on the ring equilibrium, all cases together.
+
+    Each case has its own damping: it falls tenfold after a full step and rises when the line search
+    on |F - F(u)| has to cut the step. Returns u, converged, iterations and the ball centres at speed.
+    """
+    n = len(loads)
+    u = u0.copy()
+    it = np.zeros(n, dtype=int)
+    lam = np.zeros(n)
+    force, stiff, balls = _evaluate(geo, u, w2, x0)
+    norm, rel = _measure(geo, loads, force, balls)
+    done = (rel <= tol) & np.all(balls["ok"], axis=1)
+    x = balls.get("x")
+    for _ in range(max_iter):
+        act = np.flatnonzero(~done & (it < max_iter) & (lam <= _LAM_MAX))
+        if act.size == 0:
+            break
+        it[act] += 1
+        du = _step(geo, stiff[act], (loads - force)[act], lam[act])
+        # trust region: no groove centre moves by more than A / 2 in one step
+        move = np.maximum(np.max(np.abs(du @ geo.ja.T), axis=1), np.max(np.abs(du @ geo.jr.T), axis=1))
+        with np.errstate(divide="ignore"):
+            t = np.minimum(1.0, 0.5 * geo.big_a / move)
+        full = t == 1.0
+        pending = np.arange(act.size)
+        for _ls in range(_LINE_SEARCH):
+            sel = act[pending]
+            trial = u[sel] + t[pending, None] * du[pending]
+            f_t, k_t, b_t = _evaluate(geo, trial, w2[sel], None if x is None else x[sel])
+            n_t, r_t = _measure(geo, loads[sel], f_t, b_t)
+            good = ((n_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | (r_t <= tol)) & np.all(b_t["ok"], axis=1)
+            g = sel[good]
+            u[g], force[g], stiff[g], norm[g], rel[g] = trial[good], f_t[good], k_t[good], n_t[good], r_t[good]
+            if x is not None:
+                x[g] = b_t["x"][good]
+            pending = pending[~good]
+            if pending.size == 0:
+                break
+            t[pending] *= 0.25
+            full[pending] = False
+        lam[act] = np.where(full, 0.1 * lam[act], np.maximum(10.0 * lam[act], 1e-6))
+        lam[act[pending]] = np.maximum(100.0 * lam[act[pending]], 1e-3)  # no decrease at all
+        lam[lam < 1e-12] = 0.0
+        done = rel <= tol  # accepted iterates have every ball converged
+    return u, done, it, x
+
+
+def _solve(geo, loads, w2, tol, max_iter):
+    """Rest solution of every case, then the cases at speed from it (with continuation in omega^2)."""
+    n = len(loads)
+    zero_w = np.zeros(n)
+    u, ok, it, _ = _newton(geo, loads, zero_w, _start(geo, loads), None, tol, max_iter)
+    moving = np.flatnonzero((w2 > 0) & ok)
+    if moving.size == 0:
+        return u, ok, it
+    u_rest = u[moving].copy()
+    ok[moving] = False
+    pending = np.arange(moving.size)
+    for steps in _CONTINUATION:
+        sel = moving[pending]
+        us, xs, good = u_rest[pending].copy(), None, np.ones(pending.size, dtype=bool)
+        for k in range(1, steps + 1):
+            wk = w2[sel] * k / steps
+            ga, gr = us @ geo.ja.T, geo.gr0 + us @ geo.jr.T
+            xs = _ball_start(geo, ga, gr, wk[:, None]) if xs is None else xs
+            us, conv, itk, xs = _newton(geo, loads[sel], wk, us, xs, tol, max_iter)
+            it[sel] += itk
+            good &= conv
+        u[sel[good]], ok[sel[good]] = us[good], True
+        pending = pending[~good]
+        if pending.size == 0:
+            break
+    return u, ok, it
+
+
+# --------------------------------------------------------------------------- results
+class LoadDistribution(NamedTuple):
+    """Load distribution of a ball bearing under combined load (SI units).
+
+    Shapes: ``(...)`` is the broadcast shape of the load cases, Z the number of balls. Failed cases
+    (``converged`` False) carry NaN in every physical field.
+    """
+
+    loads: np.ndarray  # (..., 5) F_x, F_y, F_z [N], M_x, M_y [N m]
+    shaft_speed: np.ndarray  # (...) inner-ring speed [rad/s]
+    displacement: np.ndarray  # (..., 5) delta_x, delta_y, delta_z [m], theta_x, theta_y [rad]
+    azimuth: np.ndarray  # (Z,) psi_j [rad]
+    ball_load_inner: np.ndarray  # (..., Z) Q_i, 0 for an unloaded ball [N]
+    ball_load_outer: np.ndarray  # (..., Z) Q_o (at speed includes the centrifugal force) [N]
+    contact_angle_inner: np.ndarray  # (..., Z) alpha_i [rad]
+    contact_angle_outer: np.ndarray  # (..., Z) alpha_o [rad]
+    max_pressure_inner: np.ndarray  # (..., Z) p_max [Pa]
+    max_pressure_outer: np.ndarray  # (..., Z) [Pa]
+    centrifugal_force: np.ndarray  # (..., Z) F_c [N]
+    gyroscopic_moment: np.ndarray  # (..., Z) M_g, signed with the attitude angle [N m]
+    max_ball_load: np.ndarray  # (...) max over the balls of Q_i [N]
+    stiffness: np.ndarray  # (..., 5, 5) d load / d displacement [N/m, N/rad, N m/m, N m/rad]
+    converged: np.ndarray  # (...) bool
+    residual: np.ndarray  # (...) relative equilibrium residual [-]
+    iterations: np.ndarray  # (...) ring Newton iterations
+    warnings: tuple  # messages (light load, low-shoulder contact, friction), one per kind
+
+
+def _pressure(geo, q, alpha, race):
+    """p_max = 3 Q / (2 pi a b) with a b = (a* b*) (3 Q / (E' Sigma rho))^(2/3)."""
+    angle = np.full_like(alpha, geo.a0) if geo.stiffness_at == "free" else alpha
+    conf = geo.fi if race == "inner" else geo.fo
+    curv = geometry.raceway_curvature(geo.d, geo.dm, conf, angle, race=race)
+    coef = geo.tables[2 if race == "inner" else 3]
+    ab = _hertz_k(coef, np.cos(angle))[0] * np.cbrt(3.0 * q / (geo.ep * curv.curvature_sum)) ** 2
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(q > 0, 3.0 * q / (2.0 * np.pi * ab), 0.0)
+
+
+def _outputs(geo, loads, w, u, ok, it):
+    """Every field of :class:`LoadDistribution` (flat cases) from the converged displacements."""
+    n, z = len(loads), geo.z
+    nan = np.full((n, z), np.nan)
+    out = {k: nan.copy() for k in ("ball_load_inner", "ball_load_outer", "contact_angle_inner",
+                                   "contact_angle_outer", "max_pressure_inner", "max_pressure_outer",
+                                   "centrifugal_force", "gyroscopic_moment")}
+    out.update(displacement=np.where(ok[:, None], u, np.nan), stiffness=np.full((n, 5, 5), np.nan),
+               residual=np.full(n, np.nan), max_ball_load=np.full(n, np.nan))
+    sel = np.flatnonzero(ok)
+    if sel.size:
+        force, stiff, balls = _evaluate(geo, u[sel], w[sel] ** 2)
+        out["residual"][sel] = _measure(geo, loads[sel], force, balls)[1]
+        out["stiffness"][sel] = stiff
+        qi, qo = balls["qi"], balls["qo"]
+        vals = {"ball_load_inner": qi, "ball_load_outer": qo, "contact_angle_inner": balls["ai"],
+                "contact_angle_outer": balls["ao"], "centrifugal_force": balls["fc"],
+                "gyroscopic_moment": balls["mg"], "max_pressure_inner": _pressure(geo, qi, balls["ai"], "inner"),
+                "max_pressure_outer": _pressure(geo, qo, balls["ao"], "outer")}
+        for k, v in vals.items():
+            out[k][sel] = v
+        out["max_ball_load"][sel] = np.max(qi, axis=1)
+    return out
+
+
+def _notes(geo, loads, w, out, ok):
+    """The warnings of a solved batch (light load, low-shoulder contact, friction)."""
+    msgs = []
+    sel = np.flatnonzero(ok & (w > 0))
+    if sel.size:
+        qi, ai = out["ball_load_inner"][sel], out["contact_angle_inner"][sel]
+        thrust = np.abs(np.sum(qi * np.sin(ai), axis=1))
+        loaded = np.where(qi > 0, 1.0, np.nan)
+        msgs += light_load_warnings(thrust, ai * loaded, out["contact_angle_outer"][sel] * loaded, w[sel], geo.z,
+                                    geo.d, geo.dm, geo.a0, density=geo.mass / (math.pi * geo.d**3 / 6.0),
+                                    case_index=sel)
+        mu = 2.0 * np.abs(out["gyroscopic_moment"][sel]) / (geo.d * out["ball_load_outer"][sel])
+        mu = np.where(qi > 0, mu, 0.0)
+        if geo.control == "outer" and np.any(mu > FRICTION_WARNING_LIMIT):
+            k = int(np.argmax(np.max(mu, axis=1)))
+            msgs.append(f"outer-raceway control needs a friction coefficient up to {np.max(mu):.3g} > "
+                        f"{FRICTION_WARNING_LIMIT:g} (case {sel[k]}): the balls would spin or skid")
+    if geo.kind == "angular":
+        low = np.any((out["ball_load_inner"] > 0) & (out["contact_angle_inner"] < 0), axis=1) & ok
+        if low.any():
+            msgs.append(f"{int(low.sum())} case(s) load balls at a negative contact angle, against the low "
+                        f"shoulder of an angular-contact bearing (first: case {int(np.flatnonzero(low)[0])}); "
+                        "the model assumes a full groove there")
+    return tuple(msgs)
+
+
+def _flat_inputs(loads, shaft_speed):
+    f = as_float("loads", loads)
+    if f.shape[-1:] != (5,):
+        raise InputError(f"loads must have a last axis of length 5 (F_x, F_y, F_z, M_x, M_y), got shape {f.shape}")
+    if not np.all(np.isfinite(f)):
+        raise InputError("loads must be finite [N, N m]")
+    w = check_nonnegative("shaft_speed", shaft_speed, "rad/s")
+    if not np.all(np.isfinite(w)):
+        raise InputError("shaft_speed must be finite [rad/s]")
+    shape = np.broadcast_shapes(f.shape[:-1], w.shape)
+    return (np.ascontiguousarray(np.broadcast_to(f, shape + (5,)).reshape(-1, 5)),
+            np.broadcast_to(w, shape).ravel().astype(float), shape)
+
+
+# --------------------------------------------------------------------------- public solvers
+def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
+                      free_angle, reduced_modulus, density, *, first_ball_angle=0.0, stiffness_at="operating",
+                      raceway_control="outer", bearing_type="radial", on_failure="raise",
+                      tol=TOL, max_iter=MAX_ITER):
+    r"""Load distribution, displacement and stiffness of a ball bearing under combined load, at rest or at speed.
+
+    Parameters
+    ----------
+    loads : array_like
+        (..., 5): F_x, F_y, F_z [N], M_x, M_y [N m] on the inner ring.
+    shaft_speed : array_like
+        Inner-ring speed >= 0, outer ring fixed; broadcast against the cases of ``loads``. [rad/s]
+    n_balls : int
+        Z. [-]
+    ball_diameter : float
+        D. [m]
+    pitch_diameter : float
+        d_m > D. [m]
+    inner_conformity, outer_conformity : float
+        f_i, f_o. [-]
+    free_angle : float
+        alpha0 in [0, 90 deg), from the diametral clearance e by cos alpha0 = 1 - e / (2 A). [rad]
+    reduced_modulus : float
+        E' of the ball-ring pair. [Pa]
+    density : float
+        Ball density. [kg/m^3]
+    first_ball_angle : float, optional
+        phi0, azimuth of ball 0 from +x. [rad]
+    stiffness_at : {"operating", "free"}, optional
+        Hertz constants at each contact's operating angle (default, as spec 004) or at alpha0 (ISO/TS 16281;
+        then the stiffness matrix at rest is exactly symmetric).
+    raceway_control : {"outer", "inner"}, optional
+        Which raceway resists the gyroscopic moment (spec 004, lambda_i, lambda_o).
+    bearing_type : {"radial", "angular"}, optional
+        Only changes the warnings: an angular-contact bearing warns when a ball is loaded at a negative
+        contact angle (against its low shoulder).
+    on_failure : {"raise", "flag"}, optional
+        Raise :class:`~bearinglab.errors.ConvergenceError` if any case fails (default), or return NaN
+        and ``converged`` False for it.
+    tol : float, optional
+        Relative equilibrium residual below which a case is converged. [-]
+    max_iter : int, optional
+        Ring Newton iterations per case (and per continuation step).
+
+    Returns
+    -------
+    LoadDistribution
+
+    Raises
+    ------
+    ConvergenceError
+        With ``on_failure="raise"``, when a case does not converge.
+
+    Notes
+    -----
+    Geometry: :func:`groove_offsets`. At rest a ball with groove-centre distance rho carries
+    Q = K_n (rho - A)^1.5 along that line (K_n from the exact Hertz constants of both contacts,
+    :mod:`bearinglab.hertz`). At speed each ball solves eqs. (5)-(6) of spec 004 for its centre, with F_c,
+    M_g and the kinematics (8)-(13) at its own angles (Jones [1]_, Harris and Kotzalas [2]_ ch. 3); the
+    inner ring carries sum_j [Q_i n_i + (M_g/D) lambda_i t_i]. An unloaded ball keeps its kinematics.
+
+    The ring equilibrium F = F_bearing(u) is solved by damped Newton for all cases at once; its Jacobian
+    is the tangent stiffness, analytic: at rest sum_j J_j^T H_j J_j with H the 2 x 2 stiffness of ball j
+    in its plane, at speed the Schur complement of the ball equations (implicit function theorem). The
+    rest solution starts the speed solve, with continuation in omega^2 where the direct solve fails.
+    Zero load gives the concentric position. The returned stiffness is d(load)/d(displacement) at the
+    solution.
+
+    Examples
+    --------
+    >>> from bearinglab import hertz
+    >>> ep = hertz.reduced_modulus(210e9, 0.3, 210e9, 0.3)
+    >>> r = load_distribution([1000.0, 0, 0, 0, 0], 0.0, 7, 11.5e-3, 43.5e-3, 0.52, 0.53, 0.0, ep, 7850.0)
+    >>> print(f"{r.displacement[0] * 1e6:.4f} um, Q_max = {r.max_ball_load:.1f} N")
+    15.1102 um, Q_max = 619.6 N
+    """
+    f, w, shape = _flat_inputs(loads, shaft_speed)
+    if on_failure not in ("raise", "flag"):
+        raise InputError(f"on_failure must be one of ['raise', 'flag'], got {on_failure!r}")
+    check_positive("tol", tol, "-")
+    max_iter = int(check_integer("max_iter", max_iter, 1))
+    geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
+                    reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, bearing_type)
+    u, ok, it = _solve(geo, f, w**2, tol, max_iter)
+    out = _outputs(geo, f, w, u, ok, it)
+    ok &= out["residual"] <= tol
+    if on_failure == "raise" and not ok.all():
+        k = int(np.flatnonzero(~ok)[0])
+        force, _, balls = _evaluate(geo, u[k:k + 1], w[k:k + 1] ** 2, deriv=False)
+        raise ConvergenceError("combined.load_distribution", iterations=int(it[k]),
+                               residual=_measure(geo, f[k:k + 1], force, balls)[1][0],
+                               estimate=u[k], reason=f"loads {f[k].tolist()} at {w[k] / RPM:g} rpm "
+                                                     f"({int((~ok).sum())} of {ok.size} cases failed)")
+    for key in out:
+        out[key][~ok] = np.nan
+    notes = _notes(geo, f, w, out, ok)
+    if on_failure == "flag" and not ok.all():
+        notes += (f"{int((~ok).sum())} of {ok.size} cases did not converge (NaN, converged False)",)
+    z = geo.z
+    shaped = {k: v.reshape(shape + v.shape[1:])[()] for k, v in out.items()}
+    return LoadDistribution(loads=f.reshape(shape + (5,)), shaft_speed=w.reshape(shape)[()],
+                            azimuth=geo.psi, converged=ok.reshape(shape)[()], iterations=it.reshape(shape)[()],
+                            warnings=notes, **{k: shaped[k] for k in shaped if k in LoadDistribution._fields
+                                               and (k != "azimuth" or z)})
+
+
+def _bearing_args(bearing, reduced_modulus=None):
+    z, d, dm, fi, fo = bearing.require("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity",
+                                       "outer_conformity")
+    a0 = bearing.contact_angle if bearing.contact_angle is not None else 0.0
+    ep = bearing.reduced_modulus if reduced_modulus is None else reduced_modulus
+    return z, d, dm, fi, fo, a0, ep, bearing.ball_material.density
+
+
+def combined_analysis(bearing, loads, shaft_speed=0.0, *, reduced_modulus=None, **options):
+    """Load distribution of a :class:`~bearinglab.bearing.BallBearing` under combined load.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Needs n_balls, ball_diameter, pitch_diameter and both conformities; the free contact angle (or the
+        clearance that gives it; none means zero clearance, alpha0 = 0); materials give E' and the ball
+        density; ``type`` the bearing type.
+    loads : array_like
+        (..., 5): F_x, F_y, F_z [N], M_x, M_y [N m].
+    shaft_speed : array_like, optional
+        Inner-ring speed. [rad/s]
+    reduced_modulus : float, optional
+        E' instead of the one of the bearing's materials. [Pa]
+
+    Other Parameters
+    ----------------
+    **options
+        Passed to :func:`load_distribution` (``first_ball_angle``, ``stiffness_at``, ``on_failure``, ...).
+
+    Returns
+    -------
+    LoadDistribution
+
+    Examples
+    --------
+    >>> from bearinglab import catalog
+    >>> from bearinglab.units import RPM
+    >>> r = combined_analysis(catalog.get("B218"), [0, 0, 20e3, 0, 0], 10000 * RPM)
+    >>> print(f"{math.degrees(r.contact_angle_inner[0]):.3f} / {math.degrees(r.contact_angle_outer[0]):.3f} deg")
+    49.310 / 32.510 deg
+    """
+    options.setdefault("bearing_type", bearing.type)
+    return load_distribution(loads, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
+
+
+class Equilibrium(NamedTuple):
+    """Ring equilibrium at a given displacement."""
+
+    residual: np.ndarray  # (..., 5) load minus bearing reaction [N, N m]
+    stiffness: np.ndarray  # (..., 5, 5) tangent stiffness d reaction / d displacement
+    reaction: np.ndarray  # (..., 5) the load the bearing carries at this displacement [N, N m]
+
+
+def equilibrium(displacement, loads, shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity,
+                outer_conformity, free_angle, reduced_modulus, density, *, first_ball_angle=0.0,
+                stiffness_at="operating", raceway_control="outer"):
+    """Residual of the ring equilibrium and tangent stiffness at a given displacement (the balls solved).
+
+    Parameters
+    ----------
+    displacement : array_like
+        (..., 5) delta_x, delta_y, delta_z [m], theta_x, theta_y [rad].
+    loads : array_like
+        (..., 5) applied loads. [N, N m]
+    shaft_speed : array_like
+        Inner-ring speed. [rad/s]
+    n_balls : int
+        Z. [-]
+    ball_diameter : float
+        D. [m]
+    pitch_diameter : float
+        d_m. [m]
+    inner_conformity, outer_conformity : float
+        f_i, f_o. [-]
+    free_angle : float
+        alpha0. [rad]
+    reduced_modulus : float
+        E'. [Pa]
+    density : float
+        Ball density. [kg/m^3]
+    first_ball_angle : float, optional
+        phi0. [rad]
+    stiffness_at : {"operating", "free"}, optional
+        See :func:`load_distribution`.
+    raceway_control : {"outer", "inner"}, optional
+        See :func:`load_distribution`.
+
+    Returns
+    -------
+    Equilibrium
+        ``residual`` = loads - reaction, ``stiffness`` and ``reaction``.
+    """
+    u = as_float("displacement", displacement)
+    if u.shape[-1:] != (5,):
+        raise InputError(f"displacement must have a last axis of length 5, got shape {u.shape}")
+    f, w, shape = _flat_inputs(np.broadcast_to(loads, np.broadcast_shapes(np.shape(loads), u.shape)), shaft_speed)
+    uu = np.broadcast_to(u, shape + (5,)).reshape(-1, 5)
+    geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
+                    reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, "radial")
+    force, stiff, _ = _evaluate(geo, uu, w**2)
+    return Equilibrium((f - force).reshape(shape + (5,)), stiff.reshape(shape + (5, 5)), force.reshape(shape + (5,)))

@@ -1,0 +1,274 @@
+r"""Bearing sets: two or more ball bearings on one rigid shaft in a rigid housing, preloaded.
+
+Arrangements
+------------
+ARRANGEMENTS       "DB" back-to-back, "DF" face-to-face, "DT" tandem: the orientation of each bearing
+arrangement        orientations (+1 / -1) and axial positions of a set from its arrangement and spacing
+
+Solution
+--------
+set_analysis       shaft displacement, each bearing's load distribution and the set's 5 x 5 stiffness
+SetState           the result
+
+Conventions: the shaft carries (F_x, F_y, F_z, M_x, M_y) at the origin of z (the middle of the set) and
+moves by (delta_x, delta_y, delta_z, theta_x, theta_y) there. Bearing k sits at z_k; a bearing of
+orientation +1 takes thrust F_z > 0 on its inner ring (its contact line meets the axis at
+z_k - (d_m/2) tan(alpha), on the -z side); orientation -1 is its mirror image z -> -z. Back-to-back (DB):
+the contact lines diverge outwards (the bearing at +z has orientation -1); face-to-face (DF): they
+converge. Each bearing is solved by :mod:`bearinglab.quasistatic.combined` in its own frame.
+
+The preload is an axial interference: a ground spacer offset ``preload_displacement`` (shared equally
+by the bearings, in their own frames), or the interference that gives each group of like-oriented
+bearings the axial force ``preload`` at rest with no external load (the set is then assembled at rest;
+at speed the preload force changes, as in a real spindle with a rigid spacer).
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from .._validate import as_float, check_nonnegative, check_positive
+from ..errors import ConvergenceError, InputError
+from . import combined
+
+__all__ = ["ARRANGEMENTS", "SetState", "arrangement", "set_analysis"]
+
+#: Orientation of each bearing, listed from -z to +z, per arrangement of a pair.
+ARRANGEMENTS = {"DB": (1, -1), "DF": (-1, 1), "DT": (1, 1)}
+_MIRROR = np.array([1.0, 1.0, -1.0, -1.0, -1.0])  # z -> -z: displacements and loads of a mirrored bearing
+
+
+def arrangement(kind, spacing, n_bearings=2):
+    """Orientations and axial positions of a set of ``n_bearings`` with equal ``spacing``.
+
+    Parameters
+    ----------
+    kind : {"DB", "DF", "DT"} or sequence of +1/-1
+        Arrangement of a pair (for more bearings the first half takes the first orientation), or the
+        orientations themselves.
+    spacing : float
+        Axial distance between neighbouring bearing centres. [m]
+    n_bearings : int, optional
+        Number of bearings (with a named arrangement). [-]
+
+    Returns
+    -------
+    orientations, positions : ndarray
+        +1 / -1 per bearing and z_k [m], centred on z = 0.
+
+    Examples
+    --------
+    >>> o, z = arrangement("DB", 0.1)
+    >>> print(o, z)
+    [ 1 -1] [-0.05  0.05]
+    """
+    if isinstance(kind, str):
+        if kind not in ARRANGEMENTS:
+            raise InputError(f"arrangement must be one of {list(ARRANGEMENTS)} or a list of +1/-1, got {kind!r}")
+        first, second = ARRANGEMENTS[kind]
+        n = int(n_bearings)
+        orient = np.array([first] * ((n + 1) // 2) + [second] * (n // 2))
+    else:
+        orient = np.asarray(kind, dtype=int)
+        if not np.all(np.isin(orient, (-1, 1))):
+            raise InputError(f"orientations must be +1 or -1, got {list(kind)!r}")
+    s = float(check_nonnegative("spacing", spacing, "m"))
+    pos = s * (np.arange(orient.size) - (orient.size - 1) / 2.0)
+    return orient, pos
+
+
+def _transform(orientation, position):
+    """T with u_bearing = T u_shaft (own frame of the bearing)."""
+    t = np.eye(5)
+    t[0, 4] = position  # delta_x = delta_x + theta_y z
+    t[1, 3] = -position  # delta_y = delta_y - theta_x z
+    return (_MIRROR if orientation < 0 else np.ones(5))[:, None] * t
+
+
+class SetState(NamedTuple):
+    """A preloaded bearing set under shaft loads (SI)."""
+
+    loads: np.ndarray  # (..., 5) on the shaft at z = 0 [N, N m]
+    displacement: np.ndarray  # (..., 5) of the shaft at z = 0 [m, rad]
+    bearings: tuple  # one LoadDistribution-like dict per bearing, in its own frame
+    bearing_loads: np.ndarray  # (..., n, 5) load each bearing carries, shaft frame, reduced to z = 0 [N, N m]
+    stiffness: np.ndarray  # (..., 5, 5) of the set at z = 0
+    preload_displacement: float  # axial interference of the set [m]
+    converged: np.ndarray
+    residual: np.ndarray  # relative residual of the shaft equilibrium [-]
+    iterations: np.ndarray
+    warnings: tuple
+
+
+def _preload_offsets(geos, orient, preload, preload_displacement):
+    """Axial offset of each bearing in its own frame and the total interference."""
+    if preload_displacement is not None:
+        e = float(as_float("preload_displacement", preload_displacement))
+        return np.full(len(geos), e / len(geos)), e
+    fp = float(check_nonnegative("preload", preload, "N"))
+    if fp == 0.0:
+        return np.zeros(len(geos)), 0.0
+    if np.all(orient == orient[0]):
+        raise InputError("preload: a tandem set has no opposed bearing to preload against")
+    offsets = np.zeros(len(geos))
+    for k, geo in enumerate(geos):
+        share = fp / np.sum(orient == orient[k])
+        u, ok, _ = combined._solve(geo, np.array([[0.0, 0.0, share, 0.0, 0.0]]), np.zeros(1), combined.TOL,
+                                   combined.MAX_ITER)
+        if not ok[0]:
+            raise ConvergenceError("sets.set_analysis", iterations=combined.MAX_ITER, residual=np.nan,
+                                   estimate=u[0], reason=f"preload of bearing {k}")
+        offsets[k] = u[0, 2]
+    return offsets, float(offsets.sum())
+
+
+def _set_evaluate(geos, trans, offsets, u, w2):
+    """Reaction of the set on the shaft, its stiffness and each bearing's reaction (shaft frame)."""
+    force = np.zeros_like(u)
+    stiff = np.zeros(u.shape + (5,))
+    parts = []
+    scale = np.zeros(len(u))
+    for geo, t, off in zip(geos, trans, offsets, strict=True):
+        ub = u @ t.T
+        ub[:, 2] += off
+        f, k, balls = combined._evaluate(geo, ub, w2)
+        part = f @ t
+        parts.append(part)
+        force += part
+        stiff += t.T @ k @ t
+        scale += np.sum(np.hypot(balls["pa"], balls["pr"]), axis=-1)
+    return force, stiff, parts, scale
+
+
+def _set_newton(geos, trans, offsets, loads, w2, tol, max_iter):
+    """Damped Newton on the shaft equilibrium (all cases together)."""
+    arm = max(g.dm for g in geos) / 2.0
+    sc = np.array([1.0, 1.0, 1.0, 1.0 / arm, 1.0 / arm])
+    u = np.zeros_like(loads)
+    it = np.zeros(len(loads), dtype=int)
+
+    def measure(f, s):
+        res = np.linalg.norm((loads - f) * sc, axis=-1)
+        return res, res / np.maximum(np.maximum(np.linalg.norm(loads * sc, axis=-1), s), 1e-300)
+
+    force, stiff, _, tot = _set_evaluate(geos, trans, offsets, u, w2)
+    norm, rel = measure(force, tot)
+    for _ in range(max_iter):
+        act = rel > tol
+        if not act.any():
+            break
+        ks = stiff * sc[None, :, None] * sc[None, None, :]
+        diag = np.max(np.abs(np.diagonal(ks, axis1=1, axis2=2)), axis=1)
+        ks = ks + (1e-12 * np.where(diag > 0, diag, 1.0))[:, None, None] * np.eye(5)
+        du = np.linalg.solve(ks, ((loads - force) * sc)[:, :, None])[:, :, 0] * sc
+        du[~act] = 0.0
+        t = np.ones(len(u))
+        for _ls in range(30):
+            f_t, _, _, s_t = _set_evaluate(geos, trans, offsets, u + t[:, None] * du, w2)
+            n_t, r_t = measure(f_t, s_t)
+            good = (n_t < norm) | (r_t <= tol) | ~act
+            if good.all():
+                break
+            t = np.where(good, t, 0.25 * t)
+        u = u + t[:, None] * du
+        force, stiff, _, tot = _set_evaluate(geos, trans, offsets, u, w2)
+        norm, rel = measure(force, tot)
+        it += act
+    return u, rel <= tol, it, rel
+
+
+def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spacing=0.0, preload=0.0,
+                 preload_displacement=None, on_failure="raise", tol=combined.TOL, max_iter=combined.MAX_ITER,
+                 **options):
+    """Solve a preloaded set of ball bearings on a rigid shaft under the shaft's five loads.
+
+    Parameters
+    ----------
+    bearings : BallBearing or sequence of BallBearing
+        The bearings from -z to +z (one bearing is used twice for a pair).
+    loads : array_like
+        (..., 5): F_x, F_y, F_z [N], M_x, M_y [N m] on the shaft at the middle of the set.
+    shaft_speed : float, optional
+        Speed of the shaft (inner rings); one value for all cases. [rad/s]
+    arrangement_kind : {"DB", "DF", "DT"} or sequence of +1/-1, optional
+        See :func:`arrangement`.
+    spacing : float, optional
+        Distance between neighbouring bearing centres. [m]
+    preload : float, optional
+        Axial preload force of each group of like-oriented bearings at rest, no external load. [N]
+    preload_displacement : float, optional
+        Axial interference of the set instead (e.g. a ground spacer offset). [m]
+    on_failure : {"raise", "flag"}, optional
+        As in :func:`bearinglab.quasistatic.combined.load_distribution`.
+    tol : float, optional
+        Relative residual of the shaft equilibrium. [-]
+    max_iter : int, optional
+        Newton iterations.
+
+    Other Parameters
+    ----------------
+    **options
+        ``first_ball_angle``, ``stiffness_at``, ``raceway_control`` as in
+        :func:`~bearinglab.quasistatic.combined.load_distribution`.
+
+    Returns
+    -------
+    SetState
+
+    Notes
+    -----
+    Bearing k sees the shaft displacement at its position, u_k = T_k u (tilts move the inner ring
+    radially by theta z_k; a mirrored bearing sees z -> -z), plus its preload offset along its own axis.
+    The shaft is in equilibrium when F = sum_k T_k^T F_k(u_k); the set stiffness is
+    sum_k T_k^T K_k T_k with each bearing's analytic tangent stiffness K_k.
+
+    Examples
+    --------
+    >>> from bearinglab import catalog
+    >>> b = catalog.get("B218")
+    >>> s = set_analysis(b, [0, 0, 0, 0, 0], arrangement_kind="DB", spacing=0.1, preload=2000.0)
+    >>> print(f"{s.bearing_loads[0, 2]:.1f} N, {s.bearing_loads[1, 2]:.1f} N")
+    2000.0 N, -2000.0 N
+    """
+    bl = [bearings] if not isinstance(bearings, (list, tuple)) else list(bearings)
+    orient, pos = arrangement(arrangement_kind, spacing, 2 if len(bl) == 1 else len(bl))
+    bl = bl * len(orient) if len(bl) == 1 else bl
+    if len(bl) != len(orient):
+        raise InputError(f"bearings: {len(bl)} bearings for {len(orient)} orientations")
+    f = as_float("loads", loads)
+    if f.shape[-1:] != (5,):
+        raise InputError(f"loads must have a last axis of length 5, got shape {f.shape}")
+    shape = f.shape[:-1]
+    flat = f.reshape(-1, 5)
+    w = float(check_nonnegative("shaft_speed", shaft_speed, "rad/s"))
+    check_positive("tol", tol, "-")
+    geos = [combined._geometry(*combined._bearing_args(b), options.get("first_ball_angle", 0.0),
+                               options.get("stiffness_at", "operating"), options.get("raceway_control", "outer"),
+                               b.type) for b in bl]
+    trans = [_transform(o, z) for o, z in zip(orient, pos, strict=True)]
+    offsets, interference = _preload_offsets(geos, orient, preload, preload_displacement)
+    w2 = np.full(len(flat), w * w)
+    u, ok, it, rel = _set_newton(geos, trans, offsets, flat, w2, tol, int(max_iter))
+    if on_failure == "raise" and not ok.all():
+        k = int(np.flatnonzero(~ok)[0])
+        raise ConvergenceError("sets.set_analysis", iterations=int(it[k]), residual=rel[k], estimate=u[k],
+                               reason=f"{int((~ok).sum())} of {ok.size} cases failed")
+    _, stiff, parts, _ = _set_evaluate(geos, trans, offsets, u, w2)
+    per = []
+    notes = []
+    for j, (geo, t, off) in enumerate(zip(geos, trans, offsets, strict=True)):
+        ub = u @ t.T
+        ub[:, 2] += off
+        out = combined._outputs(geo, (ub * 0.0), np.full(len(flat), w), ub, ok, it)
+        out["displacement"] = np.where(ok[:, None], ub, np.nan)
+        notes += [f"bearing {j}: {m}" for m in combined._notes(geo, ub, np.full(len(flat), w), out, ok)]
+        per.append({k: v.reshape(shape + v.shape[1:]) for k, v in out.items() if k != "residual"})
+    bad = ~ok
+    u[bad], stiff[bad] = np.nan, np.nan
+    bearing_loads = np.stack(parts, axis=1)
+    bearing_loads[bad] = np.nan
+    return SetState(f, u.reshape(shape + (5,)), tuple(per), bearing_loads.reshape(shape + (len(bl), 5)),
+                    stiff.reshape(shape + (5, 5)), interference, ok.reshape(shape), rel.reshape(shape),
+                    it.reshape(shape), tuple(dict.fromkeys(notes)))

@@ -1,0 +1,78 @@
+"""Issue 11 section 4: preloaded bearing sets on a rigid shaft (quasistatic.sets)."""
+
+import math
+
+import numpy as np
+import pytest
+from numpy.testing import assert_allclose
+
+from bearinglab import catalog
+from bearinglab.bearing import BallBearing
+from bearinglab.errors import InputError
+from bearinglab.quasistatic import combined, sets
+from bearinglab.units import RPM
+
+B218 = catalog.get("B218")
+SPINDLE = BallBearing(n_balls=15, ball_diameter=7.938e-3, pitch_diameter=52.5e-3, inner_conformity=0.52,
+                      outer_conformity=0.53, contact_angle=math.radians(15), type="angular")
+
+
+@pytest.mark.parametrize("kind", ["DB", "DF"])
+def test_force_preload_is_carried_by_each_bearing_without_load(kind):
+    s = sets.set_analysis(SPINDLE, np.zeros(5), arrangement_kind=kind, spacing=0.06, preload=500.0)
+    assert s.converged
+    assert_allclose(np.abs(s.bearing_loads[:, 2]), 500.0, rtol=1e-9)
+    assert_allclose(s.bearing_loads.sum(axis=0), 0.0, atol=1e-7)
+    # each bearing alone under its preload: the same ball loads
+    single = combined.combined_analysis(SPINDLE, [0, 0, 500.0, 0, 0])
+    assert_allclose(s.bearings[0]["ball_load_inner"], single.ball_load_inner, rtol=1e-9)
+
+
+def test_db_pair_is_stiffer_in_tilt_than_df_at_the_same_preload():
+    k = {kind: sets.set_analysis(SPINDLE, np.zeros(5), arrangement_kind=kind, spacing=0.03, preload=500.0).stiffness
+         for kind in ("DB", "DF")}
+    assert k["DB"][3, 3] > 1.5 * k["DF"][3, 3] and k["DB"][4, 4] > 1.5 * k["DF"][4, 4]
+    assert_allclose(k["DB"][[0, 1, 2], [0, 1, 2]], k["DF"][[0, 1, 2], [0, 1, 2]], rtol=1e-9)  # same at the centre
+
+
+def test_displacement_preload_equals_the_force_preload_it_produces():
+    f = sets.set_analysis(SPINDLE, np.zeros(5), spacing=0.05, preload=300.0)
+    d = sets.set_analysis(SPINDLE, np.zeros(5), spacing=0.05, preload_displacement=f.preload_displacement)
+    assert_allclose(np.abs(d.bearing_loads[:, 2]), 300.0, rtol=1e-9)
+
+
+@pytest.mark.parametrize("w", [0.0, 12000 * RPM])
+def test_set_equilibrium_and_stiffness_against_finite_differences(w):
+    loads = np.array([400.0, -250.0, 300.0, 6.0, -4.0])
+    s = sets.set_analysis(SPINDLE, loads, w, spacing=0.05, preload=400.0)
+    assert s.converged and s.residual <= 1e-9
+    assert_allclose(s.bearing_loads.sum(axis=0), loads, rtol=0, atol=1e-8 * 400)
+    fd = np.zeros((5, 5))
+    for k in range(5):
+        h = np.zeros(5)
+        h[k] = 1e-3 * (10.0 if k < 3 else 0.2)
+        up = sets.set_analysis(SPINDLE, loads + h, w, spacing=0.05, preload=400.0, tol=1e-14).displacement
+        down = sets.set_analysis(SPINDLE, loads - h, w, spacing=0.05, preload=400.0, tol=1e-14).displacement
+        fd[:, k] = (up - down) / (2 * h[k])
+    compliance = np.linalg.inv(s.stiffness)
+    assert_allclose(fd, compliance, rtol=1e-5, atol=1e-6 * np.abs(compliance).max())
+
+
+def test_single_bearing_equivalence():
+    """A 'set' of one bearing at z = 0 without preload is the bearing itself."""
+    loads = [[500.0, 100.0, 800.0, 2.0, 1.0]]
+    s = sets.set_analysis([SPINDLE], loads, arrangement_kind=[1])
+    r = combined.combined_analysis(SPINDLE, loads)
+    assert_allclose(s.displacement, r.displacement, rtol=1e-9, atol=1e-15)
+    assert_allclose(s.stiffness, r.stiffness, rtol=1e-9)
+
+
+def test_arrangements_and_inputs():
+    o, z = sets.arrangement("DF", 0.1, 4)
+    assert o.tolist() == [-1, -1, 1, 1]
+    assert_allclose(z, [-0.15, -0.05, 0.05, 0.15])
+    with pytest.raises(InputError, match="arrangement must be one of"):
+        sets.arrangement("XX", 0.1)
+    with pytest.raises(InputError, match="tandem"):
+        sets.set_analysis(SPINDLE, np.zeros(5), arrangement_kind="DT", preload=100.0)
+
