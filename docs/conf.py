@@ -16,11 +16,11 @@ sys.path.insert(0, str(HERE.parent / "src"))
 sys.path.insert(0, str(HERE / "_ext"))
 os.environ.setdefault("MPLBACKEND", "Agg")
 
-import bearinglab  # noqa: E402
+import bearinglab
 
 project = "bearinglab"
 author = "bearinglab developers"
-copyright = "bearinglab developers"  # noqa: A001 (Sphinx's name)
+copyright = "bearinglab developers"
 release = version = bearinglab.__version__
 
 extensions = [
