@@ -40,8 +40,7 @@ extensions = [
 # - myst.header: BENCHMARKS.md (written by `make bench`, included as is) goes from # to ###.
 suppress_warnings = ["ref.citation", "myst.header"]
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
-exclude_patterns = ["_build", "_ext", "examples/README.md", "**/GALLERY_HEADER.rst", "auto_examples/*.ipynb",
-                    "auto_examples/*.py", "auto_examples/*.zip", "auto_examples/*.md5"]
+exclude_patterns = ["_build", "_ext", "examples/GALLERY_HEADER.rst"]
 
 # --- autodoc / numpydoc: one page per public module, members from __all__
 autodoc_member_order = "bysource"
