@@ -34,7 +34,7 @@ import typer
 
 from .. import __version__
 from ..errors import ConvergenceError, InputError
-from . import catalog, frequencies, friction, high_speed, runout, stand, sweep
+from . import catalog, frequencies, friction, high_speed, life, load, runout, stand, sweep
 
 __all__ = ["app", "main", "run"]
 
@@ -67,7 +67,7 @@ def _main_options(
     """Ball-bearing mechanics: test-stand contact angles, Hertz contact, friction torque, runout, high-speed model."""
 
 
-for _module in (catalog, stand, frequencies, sweep, high_speed, friction, runout):
+for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, friction, runout):
     for _name, _command in _module.COMMANDS.items():
         if isinstance(_command, typer.Typer):
             app.add_typer(_command, name=_name)
