@@ -10,6 +10,9 @@ frequencies                    characteristic frequencies and the spectral mask 
 sweep FILE                     a model over a grid of parameters (sweep files)        cli/sweep.py
 high-speed                     high-speed quasi-static model under thrust (spec 004)  cli/high_speed.py
 friction torque | lab | template   friction torque models and the friction-rig lab   cli/friction.py
+load-distribution              5-DOF load distribution, stiffness, ROSS file (issue 11) cli/load.py
+bearing-set                    preloaded DB/DF/DT sets on one shaft (issue 11)     cli/load.py
+life                           ISO 281 / ISO/TS 16281 lives, duty cycles (issue 12)  cli/life.py
 runout | runout monte-carlo    manufacturing errors -> inner-ring runout (spec 003)   cli/runout.py
 
 Each command module defines ``COMMANDS`` (command name -> function, or a Typer group); the options
