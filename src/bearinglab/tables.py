@@ -11,6 +11,9 @@ Column          one column: name, field of the result, unit label, conversion fa
 HIGH_SPEED      the columns of a :class:`bearinglab.quasistatic.HighSpeedState`
 AXIAL_ANGLE     the per-case columns of :func:`bearinglab.stand.stand_analysis`
 RUNOUT_GEOMETRY the fields of a runout geometry (:func:`bearinglab.runout.geometry_from_bearing`)
+BALLS           the per-ball columns of a combined-load distribution
+RATINGS, RATING_LIFE   the ratings and the lives of :func:`bearinglab.ratings.rating_life`
+SKF_TORQUE      the moments of :func:`bearinglab.friction.skf`
 KIND_UNITS      quantity kind -> (column suffix, factor from SI), for inputs given by kind
 
 Results -> columns
@@ -26,6 +29,11 @@ spectral_mask   the lines of a spectral mask -> columns (Hz and orders)
 bearing_summary every known field of a bearing and its derived quantities
 catalog_entry   the catalog-list row of a bearing
 runout_metrics  runout metrics -> ``{metric}_um`` values
+load_distribution   one case of a combined-load distribution -> displacements, stiffness, per-ball rows
+ball_columns    the per-ball columns of one case (deg, N, MPa)
+rating_life     a rating-life analysis -> its columns (N, Mrev, h, factors)
+ratings         a bearing's C, C0, Cu (N) and where each comes from
+skf_torque      the SKF model's moments -> N·mm, W and mu_sl
 significant     input values without the last-bit noise of a unit round trip
 
 Writers
@@ -48,10 +56,15 @@ from .units import KGF, RPM
 
 __all__ = [
     "AXIAL_ANGLE",
+    "BALLS",
     "HIGH_SPEED",
     "KIND_UNITS",
+    "RATINGS",
+    "RATING_LIFE",
     "RUNOUT_GEOMETRY",
+    "SKF_TORQUE",
     "Column",
+    "ball_columns",
     "bearing_summary",
     "catalog_entry",
     "columns",
@@ -61,10 +74,14 @@ __all__ = [
     "input_columns",
     "json_text",
     "json_value",
+    "load_distribution",
+    "rating_life",
+    "ratings",
     "record",
     "rows",
     "runout_metrics",
     "significant",
+    "skf_torque",
     "spectral_mask",
     "stand_load",
     "write_table",
@@ -498,3 +515,153 @@ def write_table(table, path, *, comments=()):
     Path
     """
     return write_columns(path, table, comments=comments)
+
+
+# ----------------------------------------------------------------------------- issues 11 and 12
+#: Per-ball columns of one case of :func:`bearinglab.quasistatic.combined.load_distribution`.
+BALLS = (
+    Column("azimuth_deg", "azimuth", "deg", _DEG),
+    Column("load_inner_N", "ball_load_inner", "N"),
+    Column("load_outer_N", "ball_load_outer", "N"),
+    Column("contact_angle_inner_deg", "contact_angle_inner", "deg", _DEG),
+    Column("contact_angle_outer_deg", "contact_angle_outer", "deg", _DEG),
+    Column("max_pressure_inner_MPa", "max_pressure_inner", "MPa", 1e-6),
+    Column("max_pressure_outer_MPa", "max_pressure_outer", "MPa", 1e-6),
+)
+
+#: Load ratings of a bearing (:class:`bearinglab.ratings.BearingRatings` or a rating-life result).
+RATINGS = (
+    Column("dynamic_load_rating_N", "dynamic_load_rating", "N"),
+    Column("static_load_rating_N", "static_load_rating", "N"),
+    Column("fatigue_load_limit_N", "fatigue_load_limit", "N"),
+)
+
+#: Per-case columns of :func:`bearinglab.ratings.rating_life` (Mrev: 10^6 revolutions).
+RATING_LIFE = (
+    Column("equivalent_dynamic_load_N", "equivalent_dynamic_load", "N"),
+    Column("basic_rating_life_Mrev", "basic_rating_life", "Mrev", 1e-6),
+    Column("basic_rating_life_h", "basic_rating_life_duration", "h", 1.0, 3600.0),
+    Column("reliability_factor", "reliability_factor", "-"),
+    Column("viscosity_ratio", "viscosity_ratio", "-"),
+    Column("life_modification_factor", "life_modification_factor", "-"),
+    Column("modified_rating_life_Mrev", "modified_rating_life", "Mrev", 1e-6),
+    Column("modified_rating_life_h", "modified_rating_life_duration", "h", 1.0, 3600.0),
+    Column("reference_rating_life_Mrev", "reference_rating_life", "Mrev", 1e-6),
+    Column("modified_reference_rating_life_Mrev", "modified_reference_rating_life", "Mrev", 1e-6),
+    Column("static_safety_factor", "static_safety_factor", "-"),
+)
+
+#: The moments of :func:`bearinglab.friction.skf` (an :class:`~bearinglab.friction.skf.SKFTorque`).
+SKF_TORQUE = (
+    Column("rolling_moment_Nmm", "rolling_moment", "N·mm", 1e3),
+    Column("sliding_moment_Nmm", "sliding_moment", "N·mm", 1e3),
+    Column("seal_moment_Nmm", "seal_moment", "N·mm", 1e3),
+    Column("drag_moment_Nmm", "drag_moment", "N·mm", 1e3),
+    Column("total_moment_Nmm", "total_moment", "N·mm", 1e3),
+    Column("power_loss_W", "power_loss", "W"),
+    Column("sliding_friction_coefficient", "sliding_friction_coefficient", "-"),
+)
+
+
+def _broadcast(cols):
+    """Columns of one length (scalars such as a rating repeated over the cases)."""
+    n = max(len(v) for v in cols.values())
+    return {k: np.broadcast_to(v, (n,)) for k, v in cols.items()}
+
+
+def ball_columns(result):
+    """The per-ball columns of one case of a combined-load distribution (:data:`BALLS`).
+
+    Parameters
+    ----------
+    result : LoadDistribution
+        One case (ball fields of shape (Z,)).
+
+    Returns
+    -------
+    dict
+        ``azimuth_deg``, ``load_inner_N``, ``load_outer_N``, ``contact_angle_inner_deg``,
+        ``contact_angle_outer_deg``, ``max_pressure_inner_MPa``, ``max_pressure_outer_MPa`` -> (Z,) arrays.
+    """
+    return columns(result, BALLS)
+
+
+def load_distribution(result):
+    """One case of a combined-load distribution in engineering units, JSON-ready.
+
+    Parameters
+    ----------
+    result : LoadDistribution
+        One case of :func:`bearinglab.quasistatic.combined.load_distribution` (or one bearing of a set,
+        any object with ``displacement`` (5,), ``stiffness`` (5, 5), the per-ball fields and
+        ``max_ball_load``).
+
+    Returns
+    -------
+    dict
+        ``displacement_x_um``, ``displacement_y_um``, ``displacement_z_um``, ``tilt_x_mrad``,
+        ``tilt_y_mrad``, ``stiffness_matrix`` (5 x 5 in SI: N/m, N/rad, N m/m, N m/rad), ``max_ball_load_N``,
+        ``converged``, ``residual``, ``iterations`` (those the result has) and ``balls`` (one dict per ball,
+        :func:`ball_columns`).
+    """
+    u = np.asarray(result.displacement, dtype=float)
+    out = {f"displacement_{a}_um": json_value(u[i] * 1e6) for i, a in enumerate("xyz")}
+    out.update(tilt_x_mrad=json_value(u[3] * 1e3), tilt_y_mrad=json_value(u[4] * 1e3),
+               stiffness_matrix=json_value(np.asarray(result.stiffness, dtype=float)),
+               max_ball_load_N=json_value(np.max(np.asarray(result.ball_load_inner, dtype=float))))
+    for name in ("converged", "residual", "iterations"):
+        if hasattr(result, name):
+            out[name] = json_value(getattr(result, name))
+    out["balls"] = rows(ball_columns(result))
+    return out
+
+
+def rating_life(result):
+    """A rating-life analysis as columns: the ratings (:data:`RATINGS`) and the lives (:data:`RATING_LIFE`).
+
+    Parameters
+    ----------
+    result : RatingLife
+        A result of :func:`bearinglab.ratings.rating_life` (one or more load cases).
+
+    Returns
+    -------
+    dict
+        Column name -> 1-D array, one row per load case (the ratings repeated): ``dynamic_load_rating_N``,
+        ..., ``basic_rating_life_Mrev``, ``basic_rating_life_h``, ..., ``static_safety_factor``. A life that
+        ISO 281 does not define (under a moment) is NaN.
+    """
+    return _broadcast({**columns(result, RATINGS), **columns(result, RATING_LIFE)})
+
+
+def ratings(result):
+    """The load ratings of a bearing and their sources, JSON-ready.
+
+    Parameters
+    ----------
+    result : BearingRatings
+        From :func:`bearinglab.ratings.bearing_ratings` (or a rating-life result).
+
+    Returns
+    -------
+    dict
+        ``dynamic_load_rating_N``, ``static_load_rating_N``, ``fatigue_load_limit_N`` and
+        ``rating_source`` (quantity -> ``"catalog"``, ``"ISO 281"``, ``"ISO 76"``, ...).
+    """
+    return {**record(result, RATINGS), "rating_source": dict(result.rating_source)}
+
+
+def skf_torque(result):
+    """The moments of the SKF model in N·mm, the power loss in W and mu_sl (:data:`SKF_TORQUE`).
+
+    Parameters
+    ----------
+    result : SKFTorque
+        From :func:`bearinglab.friction.skf` or :func:`~bearinglab.friction.skf.skf_for_bearing`.
+
+    Returns
+    -------
+    dict
+        Column name -> 1-D array, one row per case.
+    """
+    return _broadcast(columns(result, SKF_TORQUE))

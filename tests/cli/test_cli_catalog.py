@@ -121,3 +121,26 @@ def test_usage_errors(capsys, argv, text):
 def test_help(capsys):
     code, out, _err = run(capsys, "catalog", "--help")
     assert code == 0 and "list" in out and "show" in out
+
+
+def test_show_lists_the_ratings_with_their_source(capsys):
+    from bearinglab import ratings
+
+    code, out, err = run(capsys, "catalog", "show", "B218", "--json")
+    assert code == 0 and err == ""
+    doc = json.loads(out)
+    r = ratings.bearing_ratings(catalog.get("B218"))
+    assert doc["dynamic_load_rating_N"] == r.dynamic_load_rating
+    assert doc["static_load_rating_N"] == r.static_load_rating
+    assert doc["fatigue_load_limit_N"] == r.fatigue_load_limit
+    assert doc["rating_source"] == r.rating_source
+    code, out, err = run(capsys, "catalog", "show", "B218")
+    assert code == 0 and "dynamic_load_rating_N" in out
+
+
+def test_show_without_ball_set_keeps_catalog_ratings(capsys):
+    code, out, err = run(capsys, "catalog", "show", "18", "--json")
+    assert code == 0 and err == ""
+    doc = json.loads(out)
+    assert doc["static_load_rating_N"] == pytest.approx(1354.0)
+    assert doc["rating_source"] == {"static_load_rating": "catalog"} and doc["dynamic_load_rating_N"] is None

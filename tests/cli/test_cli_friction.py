@@ -198,7 +198,7 @@ def test_torque_human_output(capsys):
         (["-b", "101", "-R", "10 N", "--model", "two-term"], "f0: the two-term model needs --f0"),
         (
             ["-b", "101", "-R", "10 N", "--model", "three-term"],
-            r"model must be one of \['one-term', 'two-term', 'palmgren'\]",
+            r"model must be one of \['one-term', 'two-term', 'palmgren', 'skf'\]",
         ),
         (["-b", "101", "-R", "10 m"], "radial-load: '10 m' is a length, expected a force"),
         (["-b", "101", "-R", "-10 N"], "radial-load must be >= 0"),
@@ -399,3 +399,51 @@ def test_negative_cases_through_python_functions():
         rig.rig_loads(0.0, math.radians(45.0))
     with pytest.raises(InputError, match=r"tilt must be in \[0, 90\] \[deg\], got 95\.0"):
         rig.rig_equivalent_load(2.0, math.radians(95.0))
+
+
+# ----------------------------------------------------------------------------- SKF model (issue 12)
+SKF_KEYS = ("rolling_moment_Nmm", "sliding_moment_Nmm", "seal_moment_Nmm", "drag_moment_Nmm", "total_moment_Nmm",
+            "power_loss_W", "sliding_friction_coefficient")
+_SKF_61811 = ("friction", "torque", "--model", "skf", "-b", "61811-2RS1", "--radial-load", "6.51 N", "--speed",
+              "2000 rpm", "--viscosity", "30 cSt", "--lubrication", "grease")
+
+
+def test_skf_61811_pair_inside_the_measured_band(capsys):
+    code, out, err = run(capsys, *_SKF_61811, "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert set(SKF_KEYS) <= set(doc)
+    assert set(doc) - set(SKF_KEYS) == {"bearing", "type", "model", "lubrication", "viscosity_cSt", "radial_load_N",
+                                        "axial_load_N", "speed_rpm"}
+    pair = 2 * doc["total_moment_Nmm"] / 1e3  # N m, the measured pair (tests/validation/test_skf_61811.py)
+    assert 0.387 - 0.025 <= pair <= 0.387 + 0.025
+
+
+def test_skf_equals_the_library(capsys):
+    from bearinglab import catalog
+
+    args = [a if a not in ("2000 rpm", "grease") else {"2000 rpm": "6000 rpm", "grease": "oil-jet"}[a]
+            for a in _SKF_61811]
+    code, out, err = run(capsys, *args, "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    m = friction.skf_for_bearing(catalog.get("61811-2RS1"), 6.51, 0.0, 6000 * math.pi / 30, 30e-6,
+                                 lubrication="oil-jet")
+    assert doc["total_moment_Nmm"] == pytest.approx(m.total_moment * 1e3, rel=1e-12)
+    assert doc["power_loss_W"] == pytest.approx(m.power_loss, rel=1e-12)
+    assert doc["sliding_friction_coefficient"] == pytest.approx(m.sliding_friction_coefficient, rel=1e-12)
+
+
+def test_skf_table(capsys):
+    code, out, err = run(capsys, *_SKF_61811)
+    assert code == 0, err
+    assert "SKF model" in out and "M_seal" in out
+
+
+@pytest.mark.parametrize("args, name", [(("--lubrication", "oil-bath-low"), "oil bath"),
+                                        (("--viscosity", "30 kg"), "viscosity")])
+def test_skf_bad_input_is_one_line_and_exit_2(capsys, args, name):
+    code, _, err = run(capsys, *_SKF_61811, *args)
+    assert code == 2
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("bearinglab: error:") and name in lines[0]

@@ -42,7 +42,7 @@ def test_ratings_need_the_ball_set_or_the_catalog():
 
 def test_life_quantities_compose():
     r = _quiet(B6205, [[1000.0, 500.0, 300.0, 0, 0]], N, kinematic_viscosity=20e-6, contamination=0.5,
-               reliability=0.99)
+               reliability=0.99, load_distribution=False)
     fr = math.hypot(1000.0, 500.0)
     p = ratings.equivalent_dynamic_load(fr, 300.0, r.static_load_rating,
                                         static_load_factor=ratings.static_load_factor(7.94e-3, 39.04e-3))

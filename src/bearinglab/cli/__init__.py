@@ -10,6 +10,9 @@ frequencies                    characteristic frequencies and the spectral mask 
 sweep FILE                     a model over a grid of parameters (sweep files)        cli/sweep.py
 high-speed                     high-speed quasi-static model under thrust (spec 004)  cli/high_speed.py
 friction torque | lab | template   friction torque models and the friction-rig lab   cli/friction.py
+load-distribution              5-DOF load distribution, stiffness, ROSS file (issue 11) cli/load.py
+bearing-set                    preloaded DB/DF/DT sets on one shaft (issue 11)     cli/load.py
+life                           ISO 281 / ISO/TS 16281 lives, duty cycles (issue 12)  cli/life.py
 runout | runout monte-carlo    manufacturing errors -> inner-ring runout (spec 003)   cli/runout.py
 
 Each command module defines ``COMMANDS`` (command name -> function, or a Typer group); the options
@@ -34,7 +37,7 @@ import typer
 
 from .. import __version__
 from ..errors import ConvergenceError, InputError
-from . import catalog, frequencies, friction, high_speed, runout, stand, sweep
+from . import catalog, frequencies, friction, high_speed, life, load, runout, stand, sweep
 
 __all__ = ["app", "main", "run"]
 
@@ -67,7 +70,7 @@ def _main_options(
     """Ball-bearing mechanics: test-stand contact angles, Hertz contact, friction torque, runout, high-speed model."""
 
 
-for _module in (catalog, stand, frequencies, sweep, high_speed, friction, runout):
+for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, friction, runout):
     for _name, _command in _module.COMMANDS.items():
         if isinstance(_command, typer.Typer):
             app.add_typer(_command, name=_name)

@@ -188,3 +188,28 @@ def execution(description, executor=None, workers=None, chunk_size=None, *, memo
     bar = progress_bar(description, ex.executor) if progress else contextlib.nullcontext(None)
     with bar as report:
         yield dataclasses.replace(ex, progress=report)
+
+
+# ----------------------------------------------------------------------------- five loads (issues 11, 12)
+# The loads on the inner ring, (F_x, F_y, F_z, M_x, M_y); --radial-load and --axial-load are F_x and F_z.
+_LOADS = "Loads on the inner ring"
+FxOpt = Annotated[str | None, typer.Option("--fx", help="Radial force along x, e.g. '1 kN'.", rich_help_panel=_LOADS)]
+FyOpt = Annotated[str | None, typer.Option("--fy", help="Radial force along y, e.g. '200 N'.", rich_help_panel=_LOADS)]
+FzOpt = Annotated[str | None, typer.Option("--fz", help="Axial force (along the bearing axis), e.g. '500 N'.", rich_help_panel=_LOADS)]
+MxOpt = Annotated[str | None, typer.Option("--mx", help="Tilting moment about x, e.g. '1000 N*mm'.", rich_help_panel=_LOADS)]
+MyOpt = Annotated[str | None, typer.Option("--my", help="Tilting moment about y, e.g. '2 N*m'.", rich_help_panel=_LOADS)]
+RadialLoadOpt = Annotated[str | None, typer.Option("--radial-load", "-R", help="Same as --fx.", rich_help_panel=_LOADS)]
+AxialLoadOpt = Annotated[str | None, typer.Option("--axial-load", "-A", help="Same as --fz.", rich_help_panel=_LOADS)]
+
+
+def five_loads(fx=None, fy=None, fz=None, mx=None, my=None, radial_load=None, axial_load=None):
+    """(F_x, F_y, F_z, M_x, M_y) in N and N m from the load options (missing ones are 0)."""
+    if fx is not None and radial_load is not None:
+        raise InputError("radial-load: give --fx or --radial-load, not both")
+    if fz is not None and axial_load is not None:
+        raise InputError("axial-load: give --fz or --axial-load, not both")
+    fx = radial_load if fx is None else fx
+    fz = axial_load if fz is None else fz
+    names = (("fx", fx, "force"), ("fy", fy, "force"), ("fz", fz, "force"), ("mx", mx, "torque"),
+             ("my", my, "torque"))
+    return [0.0 if text is None else parse_quantity(text, kind, name) for name, text, kind in names]

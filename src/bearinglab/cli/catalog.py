@@ -12,7 +12,8 @@ from typing import Annotated
 import typer
 
 from .. import catalog as _catalog
-from .. import tables
+from .. import ratings, tables
+from ..errors import InputError
 from ._common import CatalogFile, JsonFlag, emit_json, table
 
 __all__ = ["COMMANDS"]
@@ -40,13 +41,28 @@ def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False):
 @catalog_app.command("show")
 def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name or alias.")],
                  catalog: CatalogFile = None, json_out: JsonFlag = False):
-    """Show one bearing with its derived geometry."""
-    info = tables.bearing_summary(_catalog.get(name, catalog=catalog))
+    """Show one bearing with its derived geometry and its ratings C, C0, Cu (catalog or computed)."""
+    b = _catalog.get(name, catalog=catalog)
+    info = tables.bearing_summary(b)
+    try:  # one set of ratings per bearing, whichever command asks (ratings.bearing_ratings)
+        info.update(tables.ratings(ratings.bearing_ratings(b)))
+    except InputError:  # neither catalog ratings nor the ball set to compute them
+        given = {k: getattr(b, k) for k in ("dynamic_load_rating", "static_load_rating", "fatigue_load_limit")}
+        info.update({f"{k}_N": v for k, v in given.items()})
+        info["rating_source"] = {k: "catalog" for k, v in given.items() if v is not None}
     if json_out:
         emit_json(info)
         return
     table(f"Bearing {info['designation']}", ["quantity", "value"],
-          [[k, _fmt(v, ".6g") if isinstance(v, float) else v] for k, v in info.items() if v is not None])
+          [[k, _value(k, v, info.get("rating_source") or {})] for k, v in info.items()
+           if v is not None and k != "rating_source"])
+
+
+def _value(key, value, sources):
+    """A cell of ``catalog show``; a rating carries its source (catalog, ISO 76, ISO 281 ...)."""
+    text = _fmt(value, ".6g") if isinstance(value, float) else value
+    src = sources.get(key.removesuffix("_N"))
+    return text if src is None else f"{text} ({src})"
 
 
 #: The ``catalog`` command group, as the application adds it.

@@ -1,6 +1,6 @@
 """Command line of the friction capability (spec 001): ``friction torque``, ``friction lab``, ``friction template``.
 
-torque     handbook friction torque of a bearing under combined load (one-term, two-term, Palmgren)
+torque     friction torque of a bearing under combined load (one-term, two-term, Palmgren; SKF four-term)
 lab        a measurement-session file -> the three tasks, cross-checks, conclusions and the HTML report
 template   a blank, commented measurement-session file to start a new session
 
@@ -41,7 +41,7 @@ friction_app = typer.Typer(
     help="Friction torque: handbook models and the friction-rig lab (spec 001).",
     no_args_is_help=True,
 )
-_MODELS = ("one-term", "two-term", "palmgren")
+_MODELS = ("one-term", "two-term", "palmgren", "skf")
 _PANEL = "Bearing data (override the catalog)"
 
 
@@ -135,7 +135,8 @@ def torque(
         typer.Option(
             "--model",
             "-m",
-            help="one-term (default) | two-term (needs --f0) | palmgren (needs --viscosity, --palmgren-f0).",
+            help="one-term (default) | two-term (needs --f0) | palmgren (needs --viscosity, --palmgren-f0) | "
+            "skf (needs --viscosity; --lubrication).",
         ),
     ] = "one-term",
     bearing: BearingName = None,
@@ -214,11 +215,26 @@ def torque(
             rich_help_panel="Handbook constants",
         ),
     ] = None,
+    lubrication: Annotated[
+        str,
+        typer.Option(
+            "--lubrication",
+            help="For --model skf: grease (default) | oil-air | oil-jet (oil bath is not modelled).",
+            rich_help_panel="Handbook constants",
+        ),
+    ] = "grease",
     json_out: JsonFlag = False,
 ):
-    """Handbook friction torque under combined load (spec 001 section 3): P0, T, T0 and T_F."""
+    """Friction torque under combined load: handbook models (spec 001 section 3: P0, T, T0 and T_F) or SKF's."""
     if model not in _MODELS:
         raise InputError(f"model must be one of {list(_MODELS)}, got {model!r}")
+    if model == "skf":
+        b = resolve_bearing(bearing, bearing_file, catalog, contact_angle=contact_angle) if (
+            bearing or bearing_file) else None
+        if b is None:
+            raise InputError("bearing: the skf model needs --bearing NAME or --bearing-file FILE (series, seals)")
+        _skf_torque(b, *_cases(radial_load, axial_load, speed), viscosity, lubrication, json_out)
+        return
     b = _friction_bearing(
         bearing,
         bearing_file,
@@ -268,6 +284,35 @@ def torque(
         emit_json({**info, **cases[0]} if len(cases) == 1 else {**info, "cases": cases})
         return
     _print_torque(b, model, info, cases)
+
+
+def _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out):
+    """The SKF four-term model (:func:`bearinglab.friction.skf_for_bearing`): moments, power loss, mu_sl."""
+    if viscosity is None:
+        raise InputError("viscosity: the skf model needs --viscosity (e.g. '30 cSt'; of the base oil for grease)")
+    if lubrication not in friction.LUBRICATION_METHODS:
+        hint = " (oil bath: its drag moment is not modelled)" if "bath" in lubrication else ""
+        raise InputError(f"lubrication must be one of {list(friction.LUBRICATION_METHODS)}, got "
+                         f"{lubrication!r}{hint}")
+    nu = parse_quantity(viscosity, "kinematic_viscosity", "viscosity")
+    m = friction.skf_for_bearing(b, fr, fa, n, nu, lubrication=lubrication)
+    moments = tables.rows(tables.skf_torque(m))
+    rpm = tables.significant(n / RPM)
+    cases = [{"radial_load_N": float(fr[i]), "axial_load_N": float(fa[i]), "speed_rpm": float(rpm[i]), **moments[i]}
+             for i in range(len(moments))]
+    info = {"bearing": b.designation, "type": b.type, "model": "skf", "lubrication": lubrication,
+            "viscosity_cSt": float(tables.significant(nu * 1e6)[0])}
+    if json_out:
+        emit_json({**info, **cases[0]} if len(cases) == 1 else {**info, "cases": cases})
+        return
+    table(f"Friction torque of {b.designation} ({b.type}), SKF model, {lubrication}",
+          ["F_r [N]", "F_a [N]", "n [rpm]", "M_rr [N·mm]", "M_sl [N·mm]", "M_seal [N·mm]", "M_drag [N·mm]",
+           "M [N·mm]", "P [W]", "μ_sl"],
+          [[f"{r['radial_load_N']:.6g}", f"{r['axial_load_N']:.6g}", f"{r['speed_rpm']:.6g}",
+            *(f"{r[k]:.6g}" for k in ("rolling_moment_Nmm", "sliding_moment_Nmm", "seal_moment_Nmm",
+                                       "drag_moment_Nmm", "total_moment_Nmm", "power_loss_W")),
+            f"{r['sliding_friction_coefficient']:.5f}"] for r in cases],
+          caption=f"ν = {info['viscosity_cSt']:g} mm²/s; SKF rolling, sliding, seal and drag moments")
 
 
 def _cases(radial_load, axial_load, speed):

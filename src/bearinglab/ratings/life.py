@@ -184,9 +184,30 @@ def _viscosity(kinematic_viscosity, lubricant):
     return lubrication.kinematic_viscosity(t, **lubricant)
 
 
+_GEOMETRY_FIELDS = ("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity")
+
+
+def _combined_at_rest(bearing, loads, shaft_speed):
+    """Ball loads of the combined-load model at rest with the Hertz constants at alpha0 (ISO/TS 16281)."""
+    from ..quasistatic import combined  # the ratings do not need the quasi-static package to import
+
+    return combined.combined_analysis(bearing, loads, 0.0, stiffness_at="free")
+
+
+def _nominal_angle(bearing):
+    """alpha0 of ISO/TS 16281's contact ratings: 0 for a deep-groove bearing (its angle from the clearance is
+    not a nominal angle; MASTA's reference lives with clearance imply 0), else the bearing's angle."""
+    return 0.0 if bearing.type == "radial" else (bearing.contact_angle or 0.0)
+
+
 def _contact_loads(load_distribution, bearing, loads, shaft_speed):
-    """(inner, outer) ball loads from a load-distribution callable, result or array; None if not given."""
-    if load_distribution is None:
+    """(inner, outer) ball loads from a load-distribution callable, result or array; None if not given.
+
+    ``None`` means the combined-load model when the bearing has the geometry it needs; ``False`` none.
+    """
+    if load_distribution is None and all(getattr(bearing, k) is not None for k in _GEOMETRY_FIELDS):
+        load_distribution = _combined_at_rest
+    if load_distribution is None or load_distribution is False:
         return None
     result = load_distribution(bearing, loads, shaft_speed) if callable(load_distribution) else load_distribution
     for inner, outer in (("ball_load_inner", "ball_load_outer"), ("contact_loads", "contact_loads")):
@@ -245,10 +266,13 @@ def rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None, contam
         0.90 to 0.9995 (a fraction). [-]
     ep_additives : bool
         Apply the EP-additive rule of ISO 281 clause 9.3.3.
-    load_distribution : callable, result or array_like, optional
+    load_distribution : callable, result, array_like or False, optional
         Per-ball loads for ISO/TS 16281: a callable ``f(bearing, loads, shaft_speed)`` or its result,
         with ``ball_load_inner`` / ``ball_load_outer`` or ``contact_loads`` (..., Z) attributes, or the
-        array of ball loads itself. Without it the reference lives are NaN. [N]
+        array of ball loads itself. [N] By default (None) the combined-load model at rest,
+        :func:`bearinglab.quasistatic.combined.combined_analysis` with the Hertz constants at the free
+        contact angle (ISO/TS 16281), when the bearing has its ball set and both conformities; ``False``
+        (or a bearing without them) leaves the reference lives NaN; the warning says so.
     rotating : {"inner", "outer"}
         Ring rotating relative to the load (ISO/TS 16281 equivalent loads).
     fatigue_method : {"precise", "simplified"}
@@ -265,7 +289,8 @@ def rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None, contam
     -----
     ISO 281:2007: :math:`L_{10} = (C/P)^3` (eq. (15)), :math:`L_{nm} = a_1 a_{ISO} L_{10}` (eq. (16));
     kappa with nu1 of eqs. (14)-(15) at the pitch diameter ((d + D)/2 when the ball set is unknown).
-    ISO/TS 16281:2008: L10r from the ball loads, and the modified reference life with a_ISO evaluated
+    ISO/TS 16281:2008: L10r from the ball loads (the contact ratings at the nominal angle, 0 for a
+    deep-groove bearing whatever its clearance), and the modified reference life with a_ISO evaluated
     at the equivalent reference load :math:`P_{ref} = C L_{10r}^{-1/3}` (L10r in 10^6 revolutions).
     The warnings are both raised (:class:`RatingWarning`) and returned.
 
@@ -309,13 +334,14 @@ def _rating_life(bearing, loads, shaft_speed, nu, contamination, reliability, ep
     a_ref = np.full(np.shape(fr), np.nan)
     balls = _contact_loads(load_distribution, bearing, loads, shaft_speed)
     if balls is None:
-        warnings.warn("no load distribution given: the ISO/TS 16281 reference lives are NaN", RatingWarning,
+        warnings.warn("no load distribution (the bearing's ball set and conformities are not known, or "
+                      "load_distribution=False): the ISO/TS 16281 reference lives are NaN", RatingWarning,
                       stacklevel=3)
     else:
         fi, fo = _conformities(bearing)
         l10r = reference.reference_rating_life(balls[0], r.dynamic_load_rating, bearing.require("ball_diameter"),
                                                bearing.require("pitch_diameter"), fi, fo,
-                                               bearing.contact_angle or 0.0, rotating=rotating,
+                                               _nominal_angle(bearing), rotating=rotating,
                                                outer_contact_loads=balls[1])
         with np.errstate(divide="ignore"):
             p_ref = r.dynamic_load_rating * (l10r / 1e6) ** (-1.0 / 3.0)

@@ -1,0 +1,231 @@
+"""Command line of the rating life (issue 12): ``life``.
+
+ISO 281 and ISO/TS 16281 lives of a bearing under (F_x, F_y, F_z, M_x, M_y) at a speed
+(:func:`bearinglab.ratings.rating_life`; the ball loads of the reference life from the combined-load
+model), or of a duty cycle (``--duty-cycle FILE``, :func:`bearinglab.ratings.duty_cycle_life`). The columns
+are :func:`bearinglab.tables.rating_life`. Where ISO 281's P is not defined (under a moment) its fields
+are null and a warning says why; the ISO/TS 16281 fields are still given.
+
+Duty-cycle file (TOML; the time shares sum to 1)::
+
+    [[step]]
+    fx = "2 kN"          # any of fx, fy, fz, mx, my (radial_load = fx, axial_load = fz)
+    fz = "500 N"
+    speed = "3000 rpm"
+    time = 0.6
+
+Commands
+--------
+COMMANDS   the ``life`` command, by name (the application adds it)
+"""
+
+from __future__ import annotations
+
+import re
+import tomllib
+import warnings
+from pathlib import Path
+from typing import Annotated
+
+import numpy as np
+import typer
+
+from .. import ratings, tables
+from ..errors import InputError
+from ..units import RPM, parse_quantity
+from ._common import (
+    AxialLoadOpt,
+    BallDiameter,
+    BallMaterial,
+    Balls,
+    BearingFile,
+    BearingName,
+    CatalogFile,
+    Clearance,
+    ContactAngle,
+    FxOpt,
+    FyOpt,
+    FzOpt,
+    InnerConformity,
+    InnerRadius,
+    JsonFlag,
+    MxOpt,
+    MyOpt,
+    OuterConformity,
+    OuterRadius,
+    PitchDiameter,
+    RadialLoadOpt,
+    console,
+    emit_json,
+    five_loads,
+    resolve_bearing,
+    table,
+)
+
+__all__ = ["COMMANDS"]
+
+_CONTAMINATION = {k.split("_")[0] if k != "very_severe_contamination" else "very-severe": k
+                  for k in ratings.CONTAMINATION_CLASSES}
+_LUBRICANT = "Lubricant and cleanliness"
+_ZERO_C = 273.15  # K at 0 degC
+_TEMPERATURE = re.compile(r"^\s*([-+]?\d+(?:\.\d*)?(?:[eE][-+]?\d+)?)\s*(°C|degC|C|K|°F|degF|F)\s*$")
+
+
+def _temperature(text):
+    """A temperature '70 degC', '343 K' or '158 degF' in K, above absolute zero."""
+    m = _TEMPERATURE.match(text or "")
+    if not m:
+        raise InputError(f"temperature must be a number with degC, K or degF (e.g. '70 degC'), got {text!r}")
+    v, unit = float(m.group(1)), m.group(2).lstrip("°").removeprefix("deg")
+    t = {"C": v + _ZERO_C, "K": v, "F": (v - 32.0) / 1.8 + _ZERO_C}[unit]
+    if not t > 0:
+        raise InputError(f"temperature must be above absolute zero (0 K = -273.15 degC), got {text!r}")
+    return t
+
+
+def _viscosity(viscosity, oil, viscosity_100, temperature):
+    """kinematic_viscosity or the oil options of :func:`bearinglab.ratings.rating_life`."""
+    if viscosity is not None:
+        if oil is not None or temperature is not None:
+            raise InputError("viscosity: give --viscosity, or --oil with --temperature, not both")
+        return {"kinematic_viscosity": parse_quantity(viscosity, "kinematic_viscosity", "viscosity")}
+    if oil is None or temperature is None:
+        raise InputError("viscosity: give --viscosity (e.g. '20 cSt'), or --oil VG68 with --viscosity-100 and "
+                         "--temperature")
+    m = re.fullmatch(r"(?:ISO\s*)?VG\s*(\d+)", oil.strip(), flags=re.IGNORECASE)
+    if not m or int(m.group(1)) not in ratings.ISO_VG_GRADES:
+        raise InputError(f"oil must be an ISO VG grade (VG{ratings.ISO_VG_GRADES[0]} ... "
+                         f"VG{ratings.ISO_VG_GRADES[-1]}), got {oil!r}")
+    if viscosity_100 is None:
+        raise InputError("viscosity-100: the oil's viscosity at 100 degC (data sheet) is needed with --oil, "
+                         "e.g. '8.7 cSt'")
+    return {"iso_vg": int(m.group(1)), "temperature": _temperature(temperature),
+            "viscosity_100": parse_quantity(viscosity_100, "kinematic_viscosity", "viscosity-100")}
+
+
+def _cleanliness(factor, name):
+    if factor is not None and name is not None:
+        raise InputError("contamination: give --contamination-factor or --contamination, not both")
+    if name is not None:
+        key = name.strip().lower().replace("_", "-")
+        if key not in _CONTAMINATION:
+            raise InputError(f"contamination must be one of {list(_CONTAMINATION)}, got {name!r}")
+        return _CONTAMINATION[key]
+    return 1.0 if factor is None else factor
+
+
+def _reliability(percent):
+    if not 90.0 <= percent <= 99.95:
+        raise InputError(f"reliability must be in [90, 99.95] [%], got {percent:g}")
+    return percent / 100.0
+
+
+def _duty_cycle(path):
+    """Loads (k, 5), speeds (k,) and time shares (k,) of a duty-cycle file."""
+    try:
+        doc = tomllib.loads(Path(path).read_text(encoding="utf-8"))
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"duty-cycle: {path}: {exc}") from None
+    steps = doc.get("step")
+    if not isinstance(steps, list) or not steps:
+        raise InputError(f"duty-cycle: {path}: needs [[step]] tables with loads, speed and time")
+    loads, speeds, times = [], [], []
+    for k, s in enumerate(steps):
+        unknown = set(s) - {"fx", "fy", "fz", "mx", "my", "radial_load", "axial_load", "speed", "time"}
+        if unknown or "speed" not in s or "time" not in s:
+            raise InputError(f"duty-cycle: step {k + 1} needs speed and time and takes fx, fy, fz, mx, my; got "
+                             f"{sorted(s)}")
+        loads.append(five_loads(*(s.get(n) for n in ("fx", "fy", "fz", "mx", "my", "radial_load", "axial_load"))))
+        speeds.append(parse_quantity(s["speed"], "speed", f"duty-cycle step {k + 1} speed"))
+        times.append(float(s["time"]))
+    return np.array(loads), np.array(speeds), np.array(times)
+
+
+def life(
+    fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
+    radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
+    speed: Annotated[str | None, typer.Option("--speed", "-n", help="Inner-ring speed, e.g. '3000 rpm'.")] = None,
+    viscosity: Annotated[str | None, typer.Option("--viscosity", help="Operating viscosity, e.g. '20 cSt'.", rich_help_panel=_LUBRICANT)] = None,
+    oil: Annotated[str | None, typer.Option("--oil", help="ISO VG grade, e.g. VG68 (with --viscosity-100 and --temperature).", rich_help_panel=_LUBRICANT)] = None,
+    viscosity_100: Annotated[str | None, typer.Option("--viscosity-100", help="The oil's viscosity at 100 degC, e.g. '8.7 cSt'.", rich_help_panel=_LUBRICANT)] = None,
+    temperature: Annotated[str | None, typer.Option("--temperature", help="Operating temperature, e.g. '70 degC'.", rich_help_panel=_LUBRICANT)] = None,
+    contamination_factor: Annotated[float | None, typer.Option("--contamination-factor", help="e_C in [0, 1] (default 1).", rich_help_panel=_LUBRICANT)] = None,
+    contamination: Annotated[str | None, typer.Option("--contamination", help="Cleanliness of ISO 281 table 13: " + " | ".join(_CONTAMINATION) + ".", rich_help_panel=_LUBRICANT)] = None,
+    reliability: Annotated[float, typer.Option("--reliability", help="Reliability in percent, 90 to 99.95.")] = 90.0,
+    duty_cycle: Annotated[Path | None, typer.Option("--duty-cycle", help="TOML file of [[step]] loads, speed and time share: the combined life.")] = None,
+    bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
+    balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
+    inner_groove_radius: InnerRadius = None, outer_groove_radius: OuterRadius = None,
+    inner_conformity: InnerConformity = None, outer_conformity: OuterConformity = None,
+    contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
+    json_out: JsonFlag = False,
+):
+    """Rating life (ISO 281, ISO/TS 16281): C, C0, Cu, P, L10, a_ISO, L_nm, L10r, L_nmr, s0; duty cycles."""
+    b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
+                        outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
+                        ball_material)
+    options = {**_viscosity(viscosity, oil, viscosity_100, temperature),
+               "contamination": _cleanliness(contamination_factor, contamination),
+               "reliability": _reliability(reliability)}
+    if duty_cycle is not None:
+        if any(x is not None for x in (fx, fy, fz, mx, my, radial_load, axial_load, speed)):
+            raise InputError("duty-cycle: the loads and speeds are in the file; give no --fx ... --speed")
+        _life_of_duty_cycle(b, *_duty_cycle(duty_cycle), options, json_out)
+        return
+    if speed is None:
+        raise InputError("speed: give the inner-ring speed, e.g. --speed '3000 rpm'")
+    n = parse_quantity(speed, "speed", "speed")
+    if not n > 0:
+        raise InputError(f"speed must be > 0 [rpm], got {n / RPM:g} rpm")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the analysis returns its warnings
+        r = ratings.rating_life(b, five_loads(fx, fy, fz, mx, my, radial_load, axial_load), n, **options)
+    doc = {**tables.rows(tables.rating_life(r))[0], "rating_source": r.rating_source, "warnings": list(r.warnings)}
+    doc = {k: doc[k] for k in _KEYS}
+    if json_out:
+        emit_json(doc)
+        return
+    _print(f"Rating life of {b.designation} at {n / RPM:g} rpm", doc)
+
+
+_KEYS = ("dynamic_load_rating_N", "static_load_rating_N", "fatigue_load_limit_N", "rating_source",
+         "equivalent_dynamic_load_N", "basic_rating_life_Mrev", "basic_rating_life_h", "reliability_factor",
+         "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev", "modified_rating_life_h",
+         "reference_rating_life_Mrev", "modified_reference_rating_life_Mrev", "static_safety_factor", "warnings")
+
+
+def _life_of_duty_cycle(b, loads, speeds, times, options, json_out):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        d = ratings.duty_cycle_life(b, loads, speeds, times, **options)
+    steps = tables.rows(tables.rating_life(d.steps))
+    hours = 2 * np.pi / d.mean_speed / 3600.0
+    doc = {**tables.ratings(d.steps), "reliability_factor": d.steps.reliability_factor,
+           "basic_rating_life_Mrev": d.basic_rating_life * 1e-6, "basic_rating_life_h": d.basic_rating_life * hours,
+           "modified_rating_life_Mrev": d.modified_rating_life * 1e-6,
+           "modified_rating_life_h": d.modified_rating_life * hours,
+           "reference_rating_life_Mrev": d.reference_rating_life * 1e-6,
+           "modified_reference_rating_life_Mrev": d.modified_reference_rating_life * 1e-6,
+           "mean_speed_rpm": d.mean_speed / RPM, "steps": steps, "warnings": list(d.steps.warnings)}
+    doc = tables.json_value(doc)
+    if json_out:
+        emit_json(doc)
+        return
+    _print(f"Duty cycle of {b.designation}: {len(steps)} steps, mean speed {doc['mean_speed_rpm']:g} rpm",
+           {k: v for k, v in doc.items() if k != "steps"})
+
+
+def _print(title, doc):
+    def fmt(v):
+        return "— (not defined)" if v is None else (f"{v:.6g}" if isinstance(v, float) else str(v))
+
+    src = doc["rating_source"]
+    rows = [[k, fmt(v) + (f"  ({src[k[:-2]]})" if k[:-2] in src else "")] for k, v in doc.items()
+            if k not in ("rating_source", "warnings")]
+    table(title, ["quantity", "value"], rows, caption="Mrev = 10^6 revolutions; --json for one JSON document")
+    for note in doc["warnings"]:
+        console.print(f"[yellow]warning:[/yellow] {note}", highlight=False)
+
+
+#: The ``life`` command, as the application adds it.
+COMMANDS = {"life": life}

@@ -1,0 +1,252 @@
+"""Command line of the combined-load model (issue 11): ``load-distribution`` and ``bearing-set``.
+
+``load-distribution`` solves one bearing under (F_x, F_y, F_z, M_x, M_y) at rest or at speed
+(:func:`bearinglab.quasistatic.combined.combined_analysis`): a table per ball, the displacement and the
+5 x 5 stiffness, a polar plot of the ball loads (``--plot``), and the ROSS coefficient file over a list of
+speeds (``--ross``, :mod:`bearinglab.quasistatic.rotordynamics`). ``bearing-set`` does the same for a
+preloaded DB / DF / DT set (:func:`bearinglab.quasistatic.sets.set_analysis`). The columns are
+:func:`bearinglab.tables.load_distribution`; the figure is :func:`bearinglab.plots.load_distribution.ball_loads`.
+
+Commands
+--------
+COMMANDS   the ``load-distribution`` and ``bearing-set`` commands, by name (the application adds them)
+"""
+
+from __future__ import annotations
+
+import math
+import types
+import warnings
+from pathlib import Path
+from typing import Annotated
+
+import numpy as np
+import typer
+
+from .. import catalog as _catalog
+from .. import plots, tables
+from ..errors import InputError
+from ..plots import load_distribution as load_plots
+from ..quasistatic import combined, rotordynamics, sets
+from ..units import RPM, parse_quantity, parse_values
+from ._common import (
+    AxialLoadOpt,
+    BallDiameter,
+    BallMaterial,
+    Balls,
+    BearingFile,
+    BearingName,
+    CatalogFile,
+    Clearance,
+    ContactAngle,
+    FxOpt,
+    FyOpt,
+    FzOpt,
+    InnerConformity,
+    InnerRadius,
+    JsonFlag,
+    MxOpt,
+    MyOpt,
+    OuterConformity,
+    OuterRadius,
+    PitchDiameter,
+    RadialLoadOpt,
+    check_directory,
+    choice,
+    console,
+    emit_json,
+    five_loads,
+    resolve_bearing,
+    table,
+)
+
+__all__ = ["COMMANDS"]
+
+SpeedOpt = Annotated[str, typer.Option("--speed", "-n", help="Inner-ring speed, e.g. '6000 rpm' (a list '0, 6000, 12000 rpm' with --ross).")]
+FirstBallOpt = Annotated[str, typer.Option("--first-ball-angle", help="Azimuth of ball 0 from +x, e.g. '0 deg'.")]
+StiffnessAtOpt = Annotated[str, typer.Option("--stiffness-at", help="operating (Hertz constants at each contact's angle; default) | free (at α0, ISO/TS 16281).")]
+PlotOpt = Annotated[Path | None, typer.Option("--plot", help="Polar plot of the ball loads into this PNG/PDF/SVG file.")]
+
+
+def _speeds(text, allow_list):
+    w = parse_values(text, "speed", "speed")
+    if np.any(~(w >= 0)):
+        raise InputError(f"speed must be >= 0 [rpm], got {float(w[~(w >= 0)][0]) / RPM:g} rpm")
+    if w.size > 1 and not allow_list:
+        raise InputError("speed: a list of speeds needs --ross FILE (one speed otherwise)")
+    return w
+
+
+def _solve(what, *args, **kwargs):
+    """Run a model; return its result and every warning raised on the way (as messages)."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        result = what(*args, **kwargs)
+    return result, [str(c.message) for c in caught]
+
+
+def _inputs(b, loads, speed, phi0):
+    """The inputs as used, in engineering units (echoed in the JSON)."""
+    fx, fy, fz, mx, my = loads
+    geo = {k: v for k, v in tables.bearing_summary(b).items()
+           if k in ("balls", "ball_diameter_mm", "pitch_diameter_mm", "inner_conformity", "outer_conformity",
+                    "contact_angle_deg", "ball_material", "ring_material", "type")}
+    geo["reduced_modulus_GPa"] = b.reduced_modulus / 1e9
+    return {"bearing": b.designation, "fx_N": fx, "fy_N": fy, "fz_N": fz, "mx_Nmm": mx * 1e3, "my_Nmm": my * 1e3,
+            "speed_rpm": float(tables.significant(speed / RPM)[0]), "first_ball_angle_deg": math.degrees(phi0),
+            "radial_clearance_um": None if b.radial_clearance is None else b.radial_clearance * 1e6,
+            "geometry": geo}
+
+
+def _case(r, k):
+    """Case k of a batched LoadDistribution (cases on the first axis), as an object with one case's fields."""
+    fields = {f: np.asarray(getattr(r, f))[k] for f in r._fields if f not in ("warnings", "azimuth")}
+    return types.SimpleNamespace(**fields, azimuth=r.azimuth, warnings=r.warnings)
+
+
+def load_distribution(
+    fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
+    radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
+    speed: SpeedOpt = "0 rpm", first_ball_angle: FirstBallOpt = "0 deg", stiffness_at: StiffnessAtOpt = "operating",
+    bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
+    balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
+    inner_groove_radius: InnerRadius = None, outer_groove_radius: OuterRadius = None,
+    inner_conformity: InnerConformity = None, outer_conformity: OuterConformity = None,
+    contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
+    plot: PlotOpt = None,
+    ross: Annotated[Path | None, typer.Option("--ross", help="Write the ROSS BearingElement coefficients (JSON, SI) over the --speed list to this file.")] = None,
+    json_out: JsonFlag = False,
+):
+    """Ball bearing under combined load (issue 11): displacement, ball loads, contact angles, pressures, stiffness."""
+    b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
+                        outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
+                        ball_material)
+    loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
+    w = _speeds(speed, ross is not None)
+    phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
+    choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
+    for path, what in ((plot, "plot"), (ross, "ross")):
+        if path is not None:
+            check_directory(path, what)
+    r, notes = _solve(combined.combined_analysis, b, np.broadcast_to(loads, w.shape + (5,)), w,
+                      first_ball_angle=phi0, stiffness_at=stiffness_at)
+    notes = list(dict.fromkeys([*r.warnings, *notes]))
+    docs = []
+    for k in range(w.size):
+        case = _case(r, k)
+        docs.append({**tables.load_distribution(case), "inputs": _inputs(b, loads, w[k], phi0), "warnings": notes})
+    if ross is not None:
+        rotordynamics.write_coefficients(rotordynamics.from_stiffness(np.reshape(r.stiffness, (-1, 5, 5)), w), ross)
+    if plot is not None:
+        title = f"Bearing {b.designation}: ball loads at {docs[0]['inputs']['speed_rpm']:g} rpm"
+        plots.save(load_plots.ball_loads(_case(r, 0), title=title), plot)
+    if json_out:
+        emit_json(docs[0] if w.size == 1 else docs)
+        return
+    for doc in docs:
+        _print_case(f"Bearing {b.designation} at {doc['inputs']['speed_rpm']:g} rpm", doc)
+    _print_notes(notes, plot, ross)
+
+
+def _f(x, spec):
+    return "—" if x is None else format(x, spec)
+
+
+def _print_case(title, doc):
+    table(f"{title}: ball loads", ["ball", "ψ [deg]", "Q_i [N]", "Q_o [N]", "α_i [deg]", "α_o [deg]",
+                                   "p_i [MPa]", "p_o [MPa]"],
+          [[str(j), _f(r["azimuth_deg"], ".2f"), _f(r["load_inner_N"], ".2f"), _f(r["load_outer_N"], ".2f"),
+            _f(r["contact_angle_inner_deg"], ".3f"), _f(r["contact_angle_outer_deg"], ".3f"),
+            _f(r["max_pressure_inner_MPa"], ".0f"), _f(r["max_pressure_outer_MPa"], ".0f")]
+           for j, r in enumerate(doc["balls"])])
+    rows = [["δ_x, δ_y, δ_z [µm]", ", ".join(_f(doc[f"displacement_{a}_um"], ".4f") for a in "xyz")],
+            ["θ_x, θ_y [mrad]", f"{_f(doc['tilt_x_mrad'], '.5f')}, {_f(doc['tilt_y_mrad'], '.5f')}"],
+            ["max ball load [N]", _f(doc["max_ball_load_N"], ".2f")]]
+    k = doc["stiffness_matrix"]
+    if k is not None and k[0][0] is not None:
+        rows += [["k_xx, k_yy, k_zz [N/µm]", ", ".join(f"{k[i][i] * 1e-6:.2f}" for i in range(3))],
+                 ["k_θx, k_θy [N·m/mrad]", ", ".join(f"{k[i][i] * 1e-3:.2f}" for i in (3, 4))]]
+    if "converged" in doc:
+        rows.append(["converged (iterations, residual)",
+                     f"{str(doc['converged']).lower()} ({doc['iterations']}, {_f(doc['residual'], '.1e')})"])
+    table(f"{title}: ring", ["quantity", "value"], rows, caption="--json for the full 5 × 5 stiffness matrix (SI)")
+
+
+def _print_notes(notes, *paths):
+    for note in notes:
+        console.print(f"[yellow]warning:[/yellow] {note}", highlight=False)
+    for path in paths:
+        if path is not None:
+            console.print(f"wrote {path}", highlight=False)
+
+
+def bearing_set(
+    bearing: Annotated[list[str], typer.Option("--bearing", "-b", help="Catalog name; once for every position, or once per bearing from -z to +z.", rich_help_panel="Bearing")],
+    catalog: CatalogFile = None,
+    arrangement: Annotated[str, typer.Option("--arrangement", help="DB (back-to-back) | DF (face-to-face) | DT (tandem).")] = "DB",
+    spacing: Annotated[str, typer.Option("--spacing", help="Distance between bearing centres, e.g. '100 mm'.")] = "0 mm",
+    preload: Annotated[str | None, typer.Option("--preload", help="Axial preload force at rest, e.g. '500 N'.")] = None,
+    preload_offset: Annotated[str | None, typer.Option("--preload-offset", help="Axial interference instead, e.g. '5 um'.")] = None,
+    fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
+    radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
+    speed: SpeedOpt = "0 rpm", first_ball_angle: FirstBallOpt = "0 deg", stiffness_at: StiffnessAtOpt = "operating",
+    plot: PlotOpt = None,
+    json_out: JsonFlag = False,
+):
+    """Preloaded bearing set (DB/DF/DT) on a rigid shaft: shaft displacement, each bearing's ball loads, set stiffness."""
+    bl = [_catalog.get(name, catalog=catalog) for name in bearing]
+    choice("arrangement", arrangement, tuple(sets.ARRANGEMENTS))
+    s = parse_quantity(spacing, "length", "spacing")
+    if preload is not None and preload_offset is not None:
+        raise InputError("preload: give --preload or --preload-offset, not both")
+    fp = 0.0 if preload is None else parse_quantity(preload, "force", "preload")
+    e = None if preload_offset is None else parse_quantity(preload_offset, "length", "preload-offset")
+    loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
+    w = float(_speeds(speed, False)[0])
+    phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
+    choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
+    if plot is not None:
+        check_directory(plot, "plot")
+    st, notes = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], loads, w, arrangement_kind=arrangement,
+                       spacing=s, preload=fp, preload_displacement=e, first_ball_angle=phi0, stiffness_at=stiffness_at)
+    notes = list(dict.fromkeys([*st.warnings, *notes]))
+    orient, pos = sets.arrangement(arrangement, s, len(st.bearings))
+    names = [b.designation for b in bl] * (len(st.bearings) if len(bl) == 1 else 1)
+    members = []
+    for k, part in enumerate(st.bearings):
+        bk = bl[k % len(bl)]
+        ns = types.SimpleNamespace(**part, azimuth=combined.ball_azimuths(bk.n_balls, phi0))
+        carried = st.bearing_loads[k]
+        members.append({"bearing": names[k], "orientation": int(orient[k]), "position_mm": float(pos[k] * 1e3),
+                        "loads": {"fx_N": carried[0], "fy_N": carried[1], "fz_N": carried[2],
+                                  "mx_Nmm": carried[3] * 1e3, "my_Nmm": carried[4] * 1e3},
+                        **tables.load_distribution(ns)})
+    doc = {**tables.load_distribution(_shaft(st)), "preload_offset_um": st.preload_displacement * 1e6,
+           "bearings": members,
+           "inputs": {**_inputs(bl[0], loads, w, phi0), "bearings": names, "arrangement": arrangement,
+                      "spacing_mm": s * 1e3, "preload_N": fp, "preload_offset_um": None if e is None else e * 1e6},
+           "warnings": notes}
+    del doc["balls"], doc["max_ball_load_N"]
+    if plot is not None:
+        plots.save(load_plots.ball_loads(types.SimpleNamespace(**st.bearings[0], azimuth=combined.ball_azimuths(
+            bl[0].n_balls, phi0)), title=f"Set {arrangement}: ball loads of bearing 0 ({names[0]})"), plot)
+    if json_out:
+        emit_json(tables.json_value(doc))
+        return
+    for k, m in enumerate(members):
+        _print_case(f"Bearing {k} ({m['bearing']}, orientation {m['orientation']:+d}, z = {m['position_mm']:g} mm)", m)
+    _print_case(f"Set {arrangement} of {len(members)}", {**doc, "balls": [], "max_ball_load_N": None})
+    _print_notes(notes, plot)
+
+
+def _shaft(st):
+    """The shaft of a set as the fields :func:`bearinglab.tables.load_distribution` reads."""
+    return types.SimpleNamespace(displacement=st.displacement, stiffness=st.stiffness, converged=st.converged,
+                                 residual=st.residual, iterations=st.iterations, ball_load_inner=np.zeros(1),
+                                 azimuth=np.zeros(0), ball_load_outer=np.zeros(0),
+                                 contact_angle_inner=np.zeros(0), contact_angle_outer=np.zeros(0),
+                                 max_pressure_inner=np.zeros(0), max_pressure_outer=np.zeros(0))
+
+
+#: The commands of this module, as the application adds them.
+COMMANDS = {"load-distribution": load_distribution, "bearing-set": bearing_set}

@@ -1,0 +1,121 @@
+"""``bearinglab load-distribution`` and ``bearing-set`` (issue 11): JSON keys, equality with the library,
+plots, the ROSS file and bad inputs."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from bearinglab import catalog
+from bearinglab.cli import main
+from bearinglab.quasistatic import combined, sets
+from bearinglab.units import RPM
+
+KEYS = ["displacement_x_um", "displacement_y_um", "displacement_z_um", "tilt_x_mrad", "tilt_y_mrad",
+        "stiffness_matrix", "max_ball_load_N", "converged", "residual", "iterations", "balls", "inputs", "warnings"]
+BALL_KEYS = ["azimuth_deg", "load_inner_N", "load_outer_N", "contact_angle_inner_deg", "contact_angle_outer_deg",
+             "max_pressure_inner_MPa", "max_pressure_outer_MPa"]
+
+
+def run(capsys, *args):
+    code = main(list(args))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def _one_line_error(err):
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    assert lines[0].startswith("bearinglab: error:") and "Traceback" not in err
+    return lines[0]
+
+
+def test_json_keys_and_the_library(capsys):
+    code, out, err = run(capsys, "load-distribution", "-b", "B218", "--fx", "5 kN", "--fz", "10 kN", "--my",
+                         "100000 N*mm", "--speed", "6000 rpm", "--first-ball-angle", "5 deg", "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert list(doc) == KEYS
+    assert len(doc["balls"]) == 16 and all(list(b) == BALL_KEYS for b in doc["balls"])
+    r = combined.combined_analysis(catalog.get("B218"), [5e3, 0, 10e3, 0, 100.0], 6000 * RPM,
+                                   first_ball_angle=math.radians(5))
+    assert doc["displacement_x_um"] == pytest.approx(r.displacement[0] * 1e6, rel=1e-12)
+    assert doc["tilt_y_mrad"] == pytest.approx(r.displacement[4] * 1e3, rel=1e-12)
+    np.testing.assert_allclose(doc["stiffness_matrix"], r.stiffness, rtol=1e-12)
+    got = [b["load_inner_N"] for b in doc["balls"]]
+    np.testing.assert_allclose(got, r.ball_load_inner, rtol=1e-12)
+    assert doc["balls"][1]["azimuth_deg"] == pytest.approx(5 + 22.5)
+    assert doc["max_ball_load_N"] == pytest.approx(r.max_ball_load, rel=1e-12)
+    assert doc["converged"] is True and doc["residual"] < 1e-12
+    inputs = doc["inputs"]
+    assert inputs["bearing"] == "B218" and inputs["my_Nmm"] == pytest.approx(1e5) and inputs["speed_rpm"] == 6000
+    assert inputs["first_ball_angle_deg"] == pytest.approx(5.0) and inputs["geometry"]["balls"] == 16
+    assert any("light load" in w for w in doc["warnings"])  # 10 kN at 6000 rpm is below the minimum
+
+
+def test_radial_load_is_fx_and_clearance_override(capsys):
+    args = ("load-distribution", "-b", "B218", "--speed", "0 rpm", "--radial-clearance", "50 um", "--json")
+    code, out, err = run(capsys, *args, "--radial-load", "3 kN", "--axial-load", "2 kN")
+    assert code == 0, err
+    code, out2, err = run(capsys, *args, "--fx", "3 kN", "--fz", "2 kN")
+    assert code == 0 and json.loads(out) == json.loads(out2)
+    assert json.loads(out)["inputs"]["radial_clearance_um"] == pytest.approx(50.0)
+
+
+def test_plot_and_ross_file(capsys, tmp_path):
+    png, ross = tmp_path / "loads.png", tmp_path / "ross.json"
+    code, out, err = run(capsys, "load-distribution", "-b", "B218", "--fz", "10 kN", "--fx", "2 kN", "--speed",
+                         "0, 6000, 12000 rpm", "--plot", str(png), "--ross", str(ross), "--json")
+    assert code == 0, err
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    docs = json.loads(out)
+    assert [d["inputs"]["speed_rpm"] for d in docs] == [0, 6000, 12000]
+    coef = json.loads(ross.read_text())
+    assert coef["frequency"] == pytest.approx([0.0, 6000 * RPM, 12000 * RPM])
+    assert coef["kxx"] == pytest.approx([d["stiffness_matrix"][0][0] for d in docs], rel=1e-12)
+
+
+def test_table_output(capsys):
+    code, out, err = run(capsys, "load-distribution", "-b", "B218", "--fx", "5 kN", "--fz", "10 kN")
+    assert code == 0, err
+    assert "ball loads" in out and "max ball load" in out
+
+
+@pytest.mark.parametrize("args, name", [
+    (["--fx", "5 kg"], "fx"),
+    (["--mx", "5 N"], "mx"),
+    (["--fx", "1 kN", "--radial-load", "1 kN"], "radial-load"),
+    (["--fx", "1 kN", "--speed", "0, 100 rpm"], "speed"),
+    (["--fx", "1 kN", "--stiffness-at", "later"], "stiffness-at"),
+])
+def test_bad_input_is_one_line_and_exit_2(capsys, args, name):
+    code, _, err = run(capsys, "load-distribution", "-b", "B218", *args)
+    assert code == 2
+    assert name in _one_line_error(err)
+
+
+def test_bearing_set_json_and_the_library(capsys, tmp_path):
+    png = tmp_path / "set.png"
+    code, out, err = run(capsys, "bearing-set", "-b", "B218", "--arrangement", "DB", "--spacing", "100 mm",
+                         "--preload", "2 kN", "--fx", "3 kN", "--my", "50 N*m", "--plot", str(png), "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    s = sets.set_analysis(catalog.get("B218"), [3e3, 0, 0, 0, 50.0], arrangement_kind="DB", spacing=0.1,
+                          preload=2e3)
+    np.testing.assert_allclose(doc["stiffness_matrix"], s.stiffness, rtol=1e-12)
+    assert doc["displacement_x_um"] == pytest.approx(s.displacement[0] * 1e6, rel=1e-12)
+    assert len(doc["bearings"]) == 2 and [b["orientation"] for b in doc["bearings"]] == [1, -1]
+    q = [b["load_inner_N"] for b in doc["bearings"][1]["balls"]]
+    np.testing.assert_allclose(q, s.bearings[1]["ball_load_inner"], rtol=1e-12)
+    assert png.read_bytes()[:4] == b"\x89PNG"
+
+
+def test_bearing_set_by_offset_and_bad_preload(capsys):
+    code, out, err = run(capsys, "bearing-set", "-b", "B218", "-b", "B218", "--preload-offset", "5 um", "--json")
+    assert code == 0, err
+    assert json.loads(out)["preload_offset_um"] == pytest.approx(5.0)
+    code, _, err = run(capsys, "bearing-set", "-b", "B218", "--preload", "1 kN", "--preload-offset", "5 um")
+    assert code == 2 and "preload" in _one_line_error(err)
+    code, _, err = run(capsys, "bearing-set", "-b", "B218", "--arrangement", "XX")
+    assert code == 2 and "arrangement" in _one_line_error(err)
