@@ -205,7 +205,17 @@ def quantity(key):
 
 
 def number(value):
-    """A value as the page shows it: floats to 6 significant digits, the rest as text."""
+    """A value as the page shows it: floats to 6 significant digits, the rest as text.
+
+    Parameters
+    ----------
+    value : object
+        A value of a command's JSON document.
+
+    Returns
+    -------
+    str
+    """
     if isinstance(value, bool) or value is None:
         return {True: "yes", False: "no", None: "—"}[value]
     if isinstance(value, float):
