@@ -14,7 +14,6 @@ import time
 from pathlib import Path
 
 import pytest
-
 import uvicorn
 from playwright.sync_api import sync_playwright
 
