@@ -26,26 +26,96 @@ def _cli_json(capsys, *argv):
     return out
 
 
-@pytest.mark.parametrize("endpoint, query, argv", [
-    ("high-speed", {"bearing": "B218", "axial_load": "20 kN", "speed": "10000 rpm"},
-     ["high-speed", "--bearing", "B218", "--axial-load", "20 kN", "--speed", "10000 rpm"]),
-    ("high-speed", {"bearing": "B218", "axial_load": "20 kN", "speed": "10000 rpm", "constants": "harris"},
-     ["high-speed", "--bearing", "B218", "--axial-load", "20 kN", "--speed", "10000 rpm", "--constants", "harris"]),
-    ("high-speed", {"bearing": "B218", "axial_load": "10kN; 20kN", "speed": "0 rpm; 10000 rpm"},
-     ["high-speed", "--bearing", "B218", "--axial-load", "10kN; 20kN", "--speed", "0 rpm; 10000 rpm"]),
-    ("axial-angle", {"bearing": "4-1006095", "axial_load": "2 kgf"},
-     ["axial-angle", "--bearing", "4-1006095", "--axial-load", "2 kgf"]),
-    ("axial-angle", {"bearing": "4-1006095", "axial_load": "2 kgf", "legacy": "true"},
-     ["axial-angle", "--bearing", "4-1006095", "--axial-load", "2 kgf", "--legacy"]),
-    ("frequencies", {"bearing": "6205-2RS", "speed": "1797 rpm"},
-     ["frequencies", "--bearing", "6205-2RS", "--speed", "1797 rpm"]),
-    ("frequencies", {"bearing": "6205-2RS", "speed": "1797 rpm", "mask": "true", "harmonics": "2"},
-     ["frequencies", "--bearing", "6205-2RS", "--speed", "1797 rpm", "--mask", "--harmonics", "2"]),
-    ("frequencies", {"balls": "9", "ball_diameter": "7.94 mm", "pitch_diameter": "39.04 mm",
-                     "contact_angle": "0 deg", "speed": "1797 rpm"},
-     ["frequencies", "--balls", "9", "--ball-diameter", "7.94 mm", "--pitch-diameter", "39.04 mm",
-      "--contact-angle", "0 deg", "--speed", "1797 rpm"]),
-])
+@pytest.mark.parametrize(
+    "endpoint, query, argv",
+    [
+        (
+            "high-speed",
+            {"bearing": "B218", "axial_load": "20 kN", "speed": "10000 rpm"},
+            ["high-speed", "--bearing", "B218", "--axial-load", "20 kN", "--speed", "10000 rpm"],
+        ),
+        (
+            "high-speed",
+            {"bearing": "B218", "axial_load": "20 kN", "speed": "10000 rpm", "constants": "harris"},
+            [
+                "high-speed",
+                "--bearing",
+                "B218",
+                "--axial-load",
+                "20 kN",
+                "--speed",
+                "10000 rpm",
+                "--constants",
+                "harris",
+            ],
+        ),
+        (
+            "high-speed",
+            {"bearing": "B218", "axial_load": "10kN; 20kN", "speed": "0 rpm; 10000 rpm"},
+            [
+                "high-speed",
+                "--bearing",
+                "B218",
+                "--axial-load",
+                "10kN; 20kN",
+                "--speed",
+                "0 rpm; 10000 rpm",
+            ],
+        ),
+        (
+            "axial-angle",
+            {"bearing": "4-1006095", "axial_load": "2 kgf"},
+            ["axial-angle", "--bearing", "4-1006095", "--axial-load", "2 kgf"],
+        ),
+        (
+            "axial-angle",
+            {"bearing": "4-1006095", "axial_load": "2 kgf", "legacy": "true"},
+            ["axial-angle", "--bearing", "4-1006095", "--axial-load", "2 kgf", "--legacy"],
+        ),
+        (
+            "frequencies",
+            {"bearing": "6205-2RS", "speed": "1797 rpm"},
+            ["frequencies", "--bearing", "6205-2RS", "--speed", "1797 rpm"],
+        ),
+        (
+            "frequencies",
+            {"bearing": "6205-2RS", "speed": "1797 rpm", "mask": "true", "harmonics": "2"},
+            [
+                "frequencies",
+                "--bearing",
+                "6205-2RS",
+                "--speed",
+                "1797 rpm",
+                "--mask",
+                "--harmonics",
+                "2",
+            ],
+        ),
+        (
+            "frequencies",
+            {
+                "balls": "9",
+                "ball_diameter": "7.94 mm",
+                "pitch_diameter": "39.04 mm",
+                "contact_angle": "0 deg",
+                "speed": "1797 rpm",
+            },
+            [
+                "frequencies",
+                "--balls",
+                "9",
+                "--ball-diameter",
+                "7.94 mm",
+                "--pitch-diameter",
+                "39.04 mm",
+                "--contact-angle",
+                "0 deg",
+                "--speed",
+                "1797 rpm",
+            ],
+        ),
+    ],
+)
 def test_api_answers_what_the_cli_prints(client, capsys, endpoint, query, argv):
     r = client.get(f"/api/{endpoint}", params=query)
     assert r.status_code == 200, r.text
@@ -55,24 +125,46 @@ def test_api_answers_what_the_cli_prints(client, capsys, endpoint, query, argv):
 
 def test_api_high_speed_reproduces_the_published_angles(client):
     # spec 004 section 7.1 (Harris's constants): 20 kN at 10 000 rpm -> 49.308 / 32.514 deg, 3 decimals printed
-    r = client.get("/api/high-speed", params={"bearing": "B218", "axial_load": "20 kN", "speed": "10000 rpm",
-                                               "constants": "harris"})
+    r = client.get(
+        "/api/high-speed",
+        params={
+            "bearing": "B218",
+            "axial_load": "20 kN",
+            "speed": "10000 rpm",
+            "constants": "harris",
+        },
+    )
     doc = r.json()
     assert doc["contact_angle_inner_deg"] == pytest.approx(49.308, abs=5e-4)
     assert doc["contact_angle_outer_deg"] == pytest.approx(32.514, abs=5e-4)
 
 
-@pytest.mark.parametrize("query, parameter, words", [
-    ({"bearing": "B218", "axial_load": "2,5 kN", "speed": "10000 rpm"}, "axial_load", "ambiguous"),
-    ({"bearing": "B218", "axial_load": "20 m", "speed": "10000 rpm"}, "axial_load", "force"),
-    ({"bearing": "B218", "axial_load": "-5 kN", "speed": "10000 rpm"}, "axial_load", "> 0"),
-    ({"bearing": "B218", "axial_load": "20 kN", "speed": "fast"}, "speed", "speed"),
-    ({"axial_load": "20 kN", "speed": "10000 rpm"}, "bearing", "bearing"),
-    ({"bearing": "NOPE", "axial_load": "20 kN", "speed": "10000 rpm"}, "bearing", "NOPE"),
-    ({"bearing": "B218", "speed": "10000 rpm"}, "axial_load", "axial-load"),
-    ({"bearing": "B218", "axial_load": "20 kN", "speed": "10000 rpm", "colour": "red"}, "colour", "unknown"),
-    ({"bearing": "B218", "axial_load": "20 kN", "speed": "1 rpm", "solver": "magic"}, "solver", "solver"),
-])
+@pytest.mark.parametrize(
+    "query, parameter, words",
+    [
+        (
+            {"bearing": "B218", "axial_load": "2,5 kN", "speed": "10000 rpm"},
+            "axial_load",
+            "ambiguous",
+        ),
+        ({"bearing": "B218", "axial_load": "20 m", "speed": "10000 rpm"}, "axial_load", "force"),
+        ({"bearing": "B218", "axial_load": "-5 kN", "speed": "10000 rpm"}, "axial_load", "> 0"),
+        ({"bearing": "B218", "axial_load": "20 kN", "speed": "fast"}, "speed", "speed"),
+        ({"axial_load": "20 kN", "speed": "10000 rpm"}, "bearing", "bearing"),
+        ({"bearing": "NOPE", "axial_load": "20 kN", "speed": "10000 rpm"}, "bearing", "NOPE"),
+        ({"bearing": "B218", "speed": "10000 rpm"}, "axial_load", "axial-load"),
+        (
+            {"bearing": "B218", "axial_load": "20 kN", "speed": "10000 rpm", "colour": "red"},
+            "colour",
+            "unknown",
+        ),
+        (
+            {"bearing": "B218", "axial_load": "20 kN", "speed": "1 rpm", "solver": "magic"},
+            "solver",
+            "solver",
+        ),
+    ],
+)
 def test_api_bad_input_is_422_naming_the_parameter(client, query, parameter, words):
     r = client.get("/api/high-speed", params=query)
     assert r.status_code == 422
@@ -81,15 +173,22 @@ def test_api_bad_input_is_422_naming_the_parameter(client, query, parameter, wor
     assert words in body["detail"] and "Traceback" not in r.text
 
 
-@pytest.mark.parametrize("option", ["csv", "plot", "bearing_file", "catalog", "executor", "workers", "json"])
+@pytest.mark.parametrize(
+    "option", ["csv", "plot", "bearing_file", "catalog", "executor", "workers", "json"]
+)
 def test_api_reaches_no_file_or_cluster_option(client, option):
-    r = client.get("/api/high-speed", params={"bearing": "B218", "axial_load": "20 kN", "speed": "1 rpm",
-                                               option: "/tmp/x.csv"})
+    r = client.get(
+        "/api/high-speed",
+        params={"bearing": "B218", "axial_load": "20 kN", "speed": "1 rpm", option: "/tmp/x.csv"},
+    )
     assert r.status_code == 422 and r.json()["parameter"] == option
 
 
 def test_api_flag_takes_true_or_false(client):
-    r = client.get("/api/axial-angle", params={"bearing": "4-1006095", "axial_load": "2 kgf", "legacy": "maybe"})
+    r = client.get(
+        "/api/axial-angle",
+        params={"bearing": "4-1006095", "axial_load": "2 kgf", "legacy": "maybe"},
+    )
     assert r.status_code == 422 and r.json()["parameter"] == "legacy"
 
 
@@ -113,8 +212,19 @@ def test_api_friction_answers_what_the_cli_prints(client, capsys):
     query = {"bearing": "101", "radial_load": "10 N", "axial_load": "5 N", "speed": "3000 rpm"}
     r = client.get("/api/friction", params=query)
     assert r.status_code == 200, r.text
-    assert r.text == _cli_json(capsys, "friction", "torque", "--bearing", "101", "--radial-load", "10 N",
-                               "--axial-load", "5 N", "--speed", "3000 rpm")
+    assert r.text == _cli_json(
+        capsys,
+        "friction",
+        "torque",
+        "--bearing",
+        "101",
+        "--radial-load",
+        "10 N",
+        "--axial-load",
+        "5 N",
+        "--speed",
+        "3000 rpm",
+    )
 
 
 def test_parameter_of_reads_the_cli_messages():
@@ -130,7 +240,14 @@ def test_parameter_of_reads_the_cli_messages():
 def test_page_has_the_form_and_the_catalog(client):
     r = client.get("/")
     assert r.status_code == 200
-    for name in ("B218", "6205-2RS", 'name="axial_load"', 'name="speed"', 'name="viscosity"', 'name="radial_load"'):
+    for name in (
+        "B218",
+        "6205-2RS",
+        'name="axial_load"',
+        'name="speed"',
+        'name="viscosity"',
+        'name="radial_load"',
+    ):
         assert name in r.text
     assert 'id="results"' not in r.text  # nothing computed before the form is sent
 
@@ -145,23 +262,36 @@ def test_page_shows_the_contact_angles(client):
 
 
 def test_page_constants_select_changes_the_model(client, capsys):
-    r = client.get("/", params={"bearing": "B218", "axial_load": "20 kN", "speed": "10000 rpm", "constants": "mass"})
-    doc = json.loads(_cli_json(capsys, "high-speed", "-b", "B218", "-F", "20 kN", "-n", "10000 rpm"))
+    r = client.get(
+        "/",
+        params={
+            "bearing": "B218",
+            "axial_load": "20 kN",
+            "speed": "10000 rpm",
+            "constants": "mass",
+        },
+    )
+    doc = json.loads(
+        _cli_json(capsys, "high-speed", "-b", "B218", "-F", "20 kN", "-n", "10000 rpm")
+    )
     assert f'id="contact-angle-inner">{doc["contact_angle_inner_deg"]:.3f}°<' in r.text
 
 
-@pytest.mark.parametrize("field, value, words", [
-    ("axial_load", "2,5 kN", "ambiguous"),
-    ("axial_load", "20 m", "force"),
-    ("speed", "20 kN", "speed"),
-    ("ball_diameter", "big", "ball-diameter"),
-])
+@pytest.mark.parametrize(
+    "field, value, words",
+    [
+        ("axial_load", "2,5 kN", "ambiguous"),
+        ("axial_load", "20 m", "force"),
+        ("speed", "20 kN", "speed"),
+        ("ball_diameter", "big", "ball-diameter"),
+    ],
+)
 def test_page_shows_a_bad_field_message_next_to_it(client, field, value, words):
     query = {"bearing": "B218", "axial_load": "20 kN", "speed": "10000 rpm", field: value}
     r = client.get("/", params=query)
     assert r.status_code == 200
     start = r.text.index(f'<p class="error" id="error-{field}">')
-    assert words in r.text[start:r.text.index("</p>", start)]
+    assert words in r.text[start : r.text.index("</p>", start)]
     assert "Traceback" not in r.text and 'File "' not in r.text
 
 

@@ -13,7 +13,7 @@ def test_serve_is_a_command_and_listens_on_localhost_by_default(monkeypatch, cap
     calls = []
     monkeypatch.setattr(uvicorn, "run", lambda app, **kw: calls.append((app, kw)))
     assert cli.main(["serve"]) == 0
-    (app, kw), = calls
+    ((app, kw),) = calls
     assert kw["host"] == "127.0.0.1" and kw["port"] == 8000
     assert {route.path for route in app.routes} >= {"/", "/api/{endpoint}"}
     assert "http://127.0.0.1:8000/" in capsys.readouterr().out
@@ -28,12 +28,17 @@ def test_serve_takes_host_and_port(monkeypatch, capsys):
 
 def test_serve_rejects_a_bad_port(capsys):
     assert cli.main(["serve", "--port", "70000"]) == 2
-    assert capsys.readouterr().err.strip() == "bearinglab: error: port must be in [0, 65535], got 70000"
+    assert (
+        capsys.readouterr().err.strip()
+        == "bearinglab: error: port must be in [0, 65535], got 70000"
+    )
 
 
 def test_the_command_line_does_not_import_the_web_framework():
     code = "import sys, bearinglab, bearinglab.cli; print(any(m.split('.')[0] in ('fastapi', 'uvicorn', 'starlette') for m in sys.modules))"
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    ).stdout
     assert out.strip() == "False"
 
 

@@ -155,9 +155,9 @@ def run_json(argv) -> JsonRun:
         code = main([*argv, "--json"])
     lines = [line for line in err.getvalue().splitlines() if line.startswith(_ERROR)]
     if code != 0:
-        message = lines[-1][len(_ERROR):] if lines else (err.getvalue().strip().splitlines() or ["failed"])[-1]
-        return JsonRun(code, None, message)
-    return JsonRun(0, json.loads(out.getvalue()), "")
+        last = (err.getvalue().strip().splitlines() or ["failed"])[-1]
+        return JsonRun(code, None, lines[-1][len(_ERROR) :] if lines else last)
+    return JsonRun(0, json.loads(out.getvalue()) if out.getvalue().strip() else None, "")
 
 
 def run():

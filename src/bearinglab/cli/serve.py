@@ -21,7 +21,9 @@ __all__ = ["COMMANDS"]
 
 
 def serve(
-    host: Annotated[str, typer.Option("--host", help="Address to listen on (default: this machine only).")] = "127.0.0.1",
+    host: Annotated[
+        str, typer.Option("--host", help="Address to listen on (default: this machine only).")
+    ] = "127.0.0.1",
     port: Annotated[int, typer.Option("--port", "-p", help="TCP port.")] = 8000,
 ):
     """The local web calculator and its JSON API (/api/high-speed, /api/axial-angle, ...)."""
@@ -32,8 +34,12 @@ def serve(
 
         from ..web import create_app
     except ImportError as exc:  # the extra is missing: one line, no traceback
-        raise InputError(f"serve: needs the web extra (pip install 'bearinglab[web]'): {exc}") from None
-    console.print(f"bearinglab calculator on http://{host}:{port}/ (Ctrl+C to stop)", highlight=False)
+        raise InputError(
+            f"serve: needs the web extra (pip install 'bearinglab[web]'): {exc}"
+        ) from None
+    console.print(
+        f"bearinglab calculator on http://{host}:{port}/ (Ctrl+C to stop)", highlight=False
+    )
     uvicorn.run(create_app(), host=host, port=port, log_level="warning")
 
 

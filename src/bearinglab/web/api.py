@@ -37,8 +37,19 @@ ENDPOINTS = {
 }
 
 # not reachable from the web: files (read or written), clusters, output format, help
-_HIDDEN = {"json", "help", "csv", "plot", "out", "catalog", "bearing-file", "executor", "workers",
-           "chunk-size", "version"}
+_HIDDEN = {
+    "json",
+    "help",
+    "csv",
+    "plot",
+    "out",
+    "catalog",
+    "bearing-file",
+    "executor",
+    "workers",
+    "chunk-size",
+    "version",
+}
 _TRUE, _FALSE = {"true", "1", "yes", "on"}, {"false", "0", "no", "off", ""}
 
 
@@ -114,7 +125,10 @@ def error_body(detail, parameter=None, error="input"):
     return {"detail": detail, "parameter": parameter, "error": error}
 
 
-_NAMED = (re.compile(r"'?--([a-z][a-z0-9-]*)"), re.compile(r"^([a-z][a-z0-9-]*)(?::| must | needs )"))
+_NAMED = (
+    re.compile(r"'?--([a-z][a-z0-9-]*)"),
+    re.compile(r"^([a-z][a-z0-9-]*)(?::| must | needs )"),
+)
 
 
 def parameter_of(message, known=()):
@@ -159,21 +173,38 @@ def call(endpoint, query):
     """
     known = options(endpoint)
     if not known:
-        return ApiResult(404, error_body(f"{endpoint}: not available in this version", None, "not-found"))
+        return ApiResult(
+            404, error_body(f"{endpoint}: not available in this version", None, "not-found")
+        )
     unknown = sorted(set(query) - set(known))
     if unknown:
-        return ApiResult(422, error_body(f"{unknown[0]}: unknown parameter of /api/{endpoint}; valid: "
-                                         f"{', '.join(sorted(known))}", unknown[0]))
+        return ApiResult(
+            422,
+            error_body(
+                f"{unknown[0]}: unknown parameter of /api/{endpoint}; valid: "
+                f"{', '.join(sorted(known))}",
+                unknown[0],
+            ),
+        )
     argv = list(ENDPOINTS[endpoint])
     for name, value in query.items():
         option, flag = known[name]
         if not flag:
-            argv.append(f"{option}={value}")  # '=' keeps a value such as '-5 kN' from reading as an option
+            argv.append(
+                f"{option}={value}"
+            )  # '=' keeps a value such as '-5 kN' from reading as an option
         elif value.strip().lower() in _TRUE:
             argv.append(option)
         elif value.strip().lower() not in _FALSE:
-            return ApiResult(422, error_body(f"{name}: expected true or false, got {value!r}", name))
-    run = cli.run_json(argv)
+            return ApiResult(
+                422, error_body(f"{name}: expected true or false, got {value!r}", name)
+            )
+    try:
+        run = cli.run_json(argv)
+    except ValueError as exc:  # a library check the command does not turn into its one-line error
+        return ApiResult(422, error_body(str(exc), parameter_of(str(exc), known)))
+    except Exception as exc:  # noqa: BLE001 -- an answer names the failure, never shows a traceback
+        return ApiResult(500, error_body(f"{type(exc).__name__}: {exc}", None, "failed"))
     if run.exit_code == 0:
         return ApiResult(200, run.document)
     if run.exit_code not in (2, 3):

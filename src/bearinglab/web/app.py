@@ -41,7 +41,9 @@ def create_app():
     fastapi.FastAPI
         Serve it with ``uvicorn`` (``bearinglab serve``) or test it with ``fastapi.testclient``.
     """
-    app = FastAPI(title="bearinglab", version=__version__, docs_url=None, redoc_url=None, openapi_url=None)
+    app = FastAPI(
+        title="bearinglab", version=__version__, docs_url=None, redoc_url=None, openapi_url=None
+    )
     app.mount("/static", StaticFiles(directory=_HERE / "static"), name="static")
     templates = Jinja2Templates(directory=_HERE / "templates")
     templates.env.filters["number"] = page.number
@@ -50,23 +52,53 @@ def create_app():
     @app.get("/api/{endpoint}")
     def endpoint(endpoint: str, request: Request):
         if endpoint not in api.ENDPOINTS:
-            return _json(404, api.error_body(f"{endpoint}: no such endpoint; valid: "
-                                             f"{', '.join(api.ENDPOINTS)}", None, "not-found"))
+            return _json(
+                404,
+                api.error_body(
+                    f"{endpoint}: no such endpoint; valid: {', '.join(api.ENDPOINTS)}",
+                    None,
+                    "not-found",
+                ),
+            )
         return _json(*api.call(endpoint, dict(request.query_params)))
 
     @app.get("/", response_class=HTMLResponse)
     def calculator(request: Request):
         values = {"bearing": request.query_params.get("bearing", "")}
-        values.update({f.name: request.query_params.get(f.name, "") for f in page.FIELDS.values() if not f.choices})
+        values.update(
+            {
+                f.name: request.query_params.get(f.name, "")
+                for f in page.FIELDS.values()
+                if not f.choices
+            }
+        )
         submitted = any(v.strip() for v in values.values()) or "bearing" in request.query_params
-        values.update({f.name: request.query_params.get(f.name, f.choices[0])
-                       for f in page.FIELDS.values() if f.choices})
+        values.update(
+            {
+                f.name: request.query_params.get(f.name, f.choices[0])
+                for f in page.FIELDS.values()
+                if f.choices
+            }
+        )
         results, field_errors = page.compute(values) if submitted else ([], {})
-        return templates.TemplateResponse(request, "index.html", {
-            "version": __version__, "names": catalog.names(), "values": values, "fields": page.FIELDS,
-            "results": results, "errors": field_errors, "submitted": submitted,
-            "geometry_open": not values["bearing"] or any(
-                values[f.name] or f.name in field_errors for f in page.FIELDS.values() if f.group == "geometry"),
-        })
+        return templates.TemplateResponse(
+            request,
+            "index.html",
+            {
+                "version": __version__,
+                "names": catalog.names(),
+                "values": values,
+                "fields": page.FIELDS,
+                "results": results,
+                "errors": field_errors,
+                "submitted": submitted,
+                "geometry_open": not values["bearing"]
+                or any(
+                    values[f.name] or f.name in field_errors
+                    for f in page.FIELDS.values()
+                    if f.group == "geometry"
+                ),
+            },
+        )
 
     return app

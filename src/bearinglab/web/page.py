@@ -40,21 +40,24 @@ class Field(NamedTuple):
 
 
 #: The form fields, by query name; the geometry fields override the catalog bearing's.
-FIELDS = {f.name: f for f in (
-    Field("axial_load", "Axial load", "20 kN", "loads"),
-    Field("radial_load", "Radial load", "0 kN", "loads"),
-    Field("speed", "Shaft speed", "10000 rpm", "loads"),
-    Field("viscosity", "Lubricant viscosity", "20 cSt", "loads"),
-    # the published B218 results (spec 004 section 7) use Harris's constants; the CLI's default is 'mass'
-    Field("constants", "High-speed constants", "", "loads", ("harris", "mass", "paper")),
-    Field("balls", "Balls", "16", "geometry"),
-    Field("ball_diameter", "Ball diameter", "22.225 mm", "geometry"),
-    Field("pitch_diameter", "Pitch diameter", "125.26 mm", "geometry"),
-    Field("inner_conformity", "Inner conformity r/D", "0.52", "geometry"),
-    Field("outer_conformity", "Outer conformity r/D", "0.52", "geometry"),
-    Field("contact_angle", "Free contact angle", "40 deg", "geometry"),
-    Field("ball_material", "Ball material", "steel", "geometry"),
-)}
+FIELDS = {
+    f.name: f
+    for f in (
+        Field("axial_load", "Axial load", "20 kN", "loads"),
+        Field("radial_load", "Radial load", "0 kN", "loads"),
+        Field("speed", "Shaft speed", "10000 rpm", "loads"),
+        Field("viscosity", "Lubricant viscosity", "20 cSt", "loads"),
+        # the published B218 results (spec 004 section 7) use Harris's constants; the CLI's default is 'mass'
+        Field("constants", "High-speed constants", "", "loads", ("harris", "mass", "paper")),
+        Field("balls", "Balls", "16", "geometry"),
+        Field("ball_diameter", "Ball diameter", "22.225 mm", "geometry"),
+        Field("pitch_diameter", "Pitch diameter", "125.26 mm", "geometry"),
+        Field("inner_conformity", "Inner conformity r/D", "0.52", "geometry"),
+        Field("outer_conformity", "Outer conformity r/D", "0.52", "geometry"),
+        Field("contact_angle", "Free contact angle", "40 deg", "geometry"),
+        Field("ball_material", "Ball material", "steel", "geometry"),
+    )
+}
 
 
 class Section(NamedTuple):
@@ -68,12 +71,27 @@ class Section(NamedTuple):
 
 
 SECTIONS = (
-    Section("high-speed", "Contact angles at speed", "high-speed", {},
-            "Quasi-static model under thrust (Jones/Harris); the radial load does not enter."),
-    Section("axial-angle", "Contact angle at rest", "axial-angle", {},
-            "Operating contact angle under the axial load, at rest (test-stand method)."),
-    Section("frequencies", "Defect frequencies", "frequencies", {},
-            "Characteristic frequencies at the operating contact angle under the axial load."),
+    Section(
+        "high-speed",
+        "Contact angles at speed",
+        "high-speed",
+        {},
+        "Quasi-static model under thrust (Jones/Harris); the radial load does not enter.",
+    ),
+    Section(
+        "axial-angle",
+        "Contact angle at rest",
+        "axial-angle",
+        {},
+        "Operating contact angle under the axial load, at rest (test-stand method).",
+    ),
+    Section(
+        "frequencies",
+        "Defect frequencies",
+        "frequencies",
+        {},
+        "Characteristic frequencies at the operating contact angle under the axial load.",
+    ),
     Section("load-distribution", "Load distribution and stiffness", "load-distribution", {}, ""),
     Section("life", "Rating life", "life", {}, ""),
     Section("friction", "Friction torque", "friction", {"model": "skf"}, "SKF model."),
@@ -116,7 +134,11 @@ def figure_svg(endpoint, query):
         path = Path(tmp) / "figure.svg"
         argv = list(api.ENDPOINTS[endpoint])
         argv += [f"--{k.replace('_', '-')}={v}" for k, v in query.items()] + [f"--plot={path}"]
-        if cli.run_json(argv).exit_code != 0 or not path.exists():
+        try:
+            drawn = cli.run_json(argv).exit_code == 0 and path.exists()
+        except Exception:  # noqa: BLE001 -- a figure that fails is left out; the numbers stand
+            drawn = False
+        if not drawn:
             return ""
         svg = path.read_text(encoding="utf-8")
     start = svg.find("<svg")
@@ -131,8 +153,11 @@ def _high_speed_map(query):
     except (InputError, KeyError):
         return ""
     step = fa / 10.0
-    sweep = dict(query, axial_load=f"{step:.6g}N:{20 * step:.6g}N:{step:.6g}N",
-                 speed=f"0 rpm; {query['speed']}" if n > 0 else query["speed"])
+    sweep = dict(
+        query,
+        axial_load=f"{step:.6g}N:{20 * step:.6g}N:{step:.6g}N",
+        speed=f"0 rpm; {query['speed']}" if n > 0 else query["speed"],
+    )
     return figure_svg("high-speed", sweep)
 
 
@@ -154,13 +179,12 @@ def compute(values):
     results, field_errors = [], {}
     for section in SECTIONS:
         if not api.options(section.endpoint):
-            results.append(Result(section, None, "Not available in this version of bearinglab.", ""))
+            results.append(
+                Result(section, None, "Not available in this version of bearinglab.", "")
+            )
             continue
         query = _argv_values(section.endpoint, values, section.extra)
-        try:
-            status, doc = api.call(section.endpoint, query)
-        except Exception as exc:  # noqa: BLE001 -- a page shows a message, never a traceback
-            status, doc = 500, api.error_body(f"{type(exc).__name__}: {exc}", None, "failed")
+        status, doc = api.call(section.endpoint, query)  # never raises: errors come as a body
         if status != 200:
             name = doc.get("parameter")
             if name in FIELDS or name == "bearing":
@@ -177,13 +201,35 @@ def compute(values):
 def _plot_options(endpoint):
     """The file options of the command (the web API hides them; the page uses ``--plot`` for figures)."""
     command = api._command(api.ENDPOINTS[endpoint])
-    return {o[2:] for p in getattr(command, "params", ()) for o in getattr(p, "opts", ()) if o.startswith("--")}
+    return {
+        o[2:]
+        for p in getattr(command, "params", ())
+        for o in getattr(p, "opts", ())
+        if o.startswith("--")
+    }
 
 
-_UNITS = (("_N_per_um", "N/µm"), ("_Nmm", "N·mm"), ("_Nm", "N·m"), ("_kN", "kN"), ("_N", "N"), ("_deg", "°"),
-          ("_rpm", "rpm"), ("_Hz", "Hz"), ("_hz", "Hz"), ("_mm", "mm"), ("_um", "µm"), ("_MPa", "MPa"),
-          ("_GPa", "GPa"), ("_h", "h"), ("_s", "s"), ("_kgf", "kgf"), ("_cSt", "cSt"), ("_percent", "%"),
-          ("_order", "× shaft"))
+_UNITS = (
+    ("_N_per_um", "N/µm"),
+    ("_Nmm", "N·mm"),
+    ("_Nm", "N·m"),
+    ("_kN", "kN"),
+    ("_N", "N"),
+    ("_deg", "°"),
+    ("_rpm", "rpm"),
+    ("_Hz", "Hz"),
+    ("_hz", "Hz"),
+    ("_mm", "mm"),
+    ("_um", "µm"),
+    ("_MPa", "MPa"),
+    ("_GPa", "GPa"),
+    ("_h", "h"),
+    ("_s", "s"),
+    ("_kgf", "kgf"),
+    ("_cSt", "cSt"),
+    ("_percent", "%"),
+    ("_order", "× shaft"),
+)
 
 
 def quantity(key):
