@@ -18,7 +18,7 @@ $(STAMP): $(PY) pyproject.toml
 	@touch $@
 
 $(TSTAMP): $(PY) pyproject.toml
-	$(PY) -m pip install --quiet -e ".[test,ross]"
+	$(PY) -m pip install --quiet -e ".[test,ross,webtest]"
 	@touch $@ $(STAMP)
 
 # every examples/demo_*.py runs a published worked example and writes under out/

@@ -70,7 +70,9 @@ def _third_party_imports():
 def _declared():
     project = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]
     names = set()
-    for req in project["dependencies"]:  # "dask[distributed]>=2024.1" declares dask and distributed
+    # bearinglab.web and `serve` import the web extra's packages (FastAPI, uvicorn), nothing else does
+    for req in project["dependencies"] + project["optional-dependencies"]["web"]:
+        # "dask[distributed]>=2024.1" declares dask and distributed
         m = re.match(r"([A-Za-z0-9_.-]+)(?:\[([^\]]*)\])?", req)
         names.add(m.group(1).lower().replace("-", "_"))
         names.update(e.strip() for e in (m.group(2) or "").split(",") if e.strip())

@@ -25,21 +25,28 @@ prints one line and exits with code 3. No traceback reaches the user.
 
 Functions
 ---------
-main   run the command line with a list of arguments; returns the exit code
-run    the console-script entry point (``bearinglab``): ``sys.exit(main())``
+main       run the command line with a list of arguments; returns the exit code
+run        the console-script entry point (``bearinglab``): ``sys.exit(main())``
+run_json   run one command with ``--json`` in-process; its exit code, document and error line (the
+           web API's adapter, :mod:`bearinglab.web`)
 """
 
 from __future__ import annotations
 
+import contextlib
+import io
+import json
 import sys
+import threading
+from typing import NamedTuple
 
 import typer
 
 from .. import __version__
 from ..errors import ConvergenceError, InputError
-from . import catalog, frequencies, friction, high_speed, life, load, runout, stand, sweep
+from . import catalog, frequencies, friction, high_speed, life, load, runout, serve, stand, sweep
 
-__all__ = ["app", "main", "run"]
+__all__ = ["JsonRun", "app", "main", "run", "run_json"]
 
 # typer >= 0.20 vendors click and raises its own exception classes, older typer raises click's: the
 # usage error is the base class named so of typer's BadParameter either way (click is not a dependency).
@@ -70,7 +77,7 @@ def _main_options(
     """Ball-bearing mechanics: test-stand contact angles, Hertz contact, friction torque, runout, high-speed model."""
 
 
-for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, friction, runout):
+for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, friction, runout, serve):
     for _name, _command in _module.COMMANDS.items():
         if isinstance(_command, typer.Typer):
             app.add_typer(_command, name=_name)
@@ -112,6 +119,48 @@ def main(argv=None) -> int:
         print(f"bearinglab: error: {exc.filename or ''}: {exc.strerror}", file=sys.stderr)
         return 2
     return rv if isinstance(rv, int) else 0
+
+
+class JsonRun(NamedTuple):
+    """What :func:`run_json` gives back."""
+
+    exit_code: int
+    """0 on success, 2 for invalid input, 3 for a solve that did not converge."""
+    document: object
+    """The JSON document the command printed (parsed), or None when it failed."""
+    error: str
+    """The one-line message on failure, without the ``bearinglab: error:`` prefix; '' on success."""
+
+
+_CAPTURE = threading.Lock()  # redirecting stdout and stderr is process-wide: one command at a time
+_ERROR = "bearinglab: error: "
+
+
+def run_json(argv) -> JsonRun:
+    """Run one command with ``--json`` in this process and capture what it prints.
+
+    The web API (:mod:`bearinglab.web`) answers with exactly what ``bearinglab ... --json`` prints, by
+    running the command through this function.
+
+    Parameters
+    ----------
+    argv : list of str
+        The command words and options, without ``--json`` (e.g. ``["high-speed", "--bearing=B218",
+        "--axial-load=20 kN", "--speed=10000 rpm"]``).
+
+    Returns
+    -------
+    JsonRun
+        The exit code, the parsed document (None on failure) and the one-line error message.
+    """
+    out, err = io.StringIO(), io.StringIO()
+    with _CAPTURE, contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = main([*argv, "--json"])
+    lines = [line for line in err.getvalue().splitlines() if line.startswith(_ERROR)]
+    if code != 0:
+        last = (err.getvalue().strip().splitlines() or ["failed"])[-1]
+        return JsonRun(code, None, lines[-1][len(_ERROR) :] if lines else last)
+    return JsonRun(0, json.loads(out.getvalue()) if out.getvalue().strip() else None, "")
 
 
 def run():
