@@ -42,9 +42,11 @@ suppress_warnings = ["ref.citation", "myst.header"]
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 exclude_patterns = ["_build", "_ext", "examples/GALLERY_HEADER.rst"]
 
-# --- autodoc / numpydoc: one page per public module, members from __all__
+# --- autodoc / numpydoc: one page per public module or package (docs/api/). Each object is documented
+# once, on the page of the module that defines it: every page lists its members explicitly (a package
+# page names only what the package itself defines), so no default ``members`` option here (a default
+# ``True`` would override a page's explicit member list).
 autodoc_member_order = "bysource"
-autodoc_default_options = {"members": True}
 numpydoc_show_class_members = False
 numpydoc_class_members_toctree = False
 numpydoc_xref_param_type = False
