@@ -32,7 +32,8 @@ extensions = [
     "sphinx_gallery.gen_gallery",
     "sphinx_click",
     "sphinx_copybutton",
-    "docstring_fixes",  # docs/_ext: plain-text docstring conventions -> valid reST (see there)
+    "docstring_fixes",  # docs/_ext: topic lists of module docstrings -> literal blocks (see there)
+    "reexports",  # docs/_ext: a reference to a re-exported name goes to the page of its definition
 ]
 # Silenced, each for one reason:
 # - ref.citation: a module docstring lists the references its functions cite; numpydoc renames the
