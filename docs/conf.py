@@ -32,7 +32,8 @@ extensions = [
     "sphinx_gallery.gen_gallery",
     "sphinx_click",
     "sphinx_copybutton",
-    "docstring_fixes",  # docs/_ext: plain-text docstring conventions -> valid reST (see there)
+    "docstring_fixes",  # docs/_ext: topic lists of module docstrings -> literal blocks (see there)
+    "reexports",  # docs/_ext: a reference to a re-exported name goes to the page of its definition
 ]
 # Silenced, each for one reason:
 # - ref.citation: a module docstring lists the references its functions cite; numpydoc renames the
@@ -42,9 +43,11 @@ suppress_warnings = ["ref.citation", "myst.header"]
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 exclude_patterns = ["_build", "_ext", "examples/GALLERY_HEADER.rst"]
 
-# --- autodoc / numpydoc: one page per public module, members from __all__
+# --- autodoc / numpydoc: one page per public module or package (docs/api/). Each object is documented
+# once, on the page of the module that defines it: every page lists its members explicitly (a package
+# page names only what the package itself defines), so no default ``members`` option here (a default
+# ``True`` would override a page's explicit member list).
 autodoc_member_order = "bysource"
-autodoc_default_options = {"members": True}
 numpydoc_show_class_members = False
 numpydoc_class_members_toctree = False
 numpydoc_xref_param_type = False

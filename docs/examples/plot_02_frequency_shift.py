@@ -12,12 +12,12 @@ import math
 import matplotlib.pyplot as plt
 import numpy as np
 
-from bearinglab import catalog, kinematics, static
+from bearinglab import catalog, kinematics, stand
 from bearinglab.units import KGF
 
 b = catalog.get("4-1006095")
 shaft = 2 * math.pi * 50.0  # 3000 rpm in rad/s
-r = static.stand_analysis(b, 2 * KGF)
+r = stand.stand_analysis(b, 2 * KGF)
 s = kinematics.frequency_shift(shaft, b.ball_diameter, b.pitch_diameter, b.n_balls,
                                b.contact_angle, r.contact_angle)
 for name in ("ftf", "bpfo", "bpfi", "bsf"):
@@ -28,7 +28,7 @@ for name in ("ftf", "bpfo", "bpfi", "bsf"):
 # %%
 # The shift over stand loads: one vectorized call for the angles, one for the frequencies.
 loads = np.linspace(0.1, 10.0, 100) * KGF
-alpha = static.operating_contact_angle(loads, r.constants.force_characteristic, r.free_angle)
+alpha = stand.operating_contact_angle(loads, r.constants.force_characteristic, r.free_angle)
 shift = kinematics.frequency_shift(shaft, b.ball_diameter, b.pitch_diameter, b.n_balls,
                                    b.contact_angle, alpha).shift_percent
 

@@ -46,7 +46,7 @@ from . import (
     units,
 )
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 __all__ = [
     "__version__",
     "bearing",

@@ -377,9 +377,9 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
     free_angle : array_like
         alpha0, in (0, 90 deg). [rad]
     xtol : float, optional
-        Converged where |Delta x| < xtol. [rad]
+        Converged where abs(Delta x) < xtol. [rad]
     ftol_percent : float, optional
-        ... or where |F_a,k - F_a| / F_a < ftol_percent. [%]
+        ... or where abs(F_a,k - F_a) / F_a < ftol_percent. [%]
     max_iter : int, optional
         Iteration limit.
 
@@ -478,9 +478,9 @@ def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, re
         Legacy mode: angles from x with pi = 3.14 and truncated seconds, F cut to three kgf decimals
         in the Newton step, as the paper computed (spec 000 section 8).
     xtol : float, optional
-        Converged where |Delta x| < xtol. [rad]
+        Converged where abs(Delta x) < xtol. [rad]
     ftol_percent : float, optional
-        ... or where |Delta_k| < ftol_percent. [%]
+        ... or where abs(Delta_k) < ftol_percent. [%]
     max_iter : int, optional
         Iteration limit.
     max_rows : int, optional

@@ -209,7 +209,7 @@ def contact_angle_under_thrust(axial_load, n_balls, ball_diameter, pitch_diamete
         Evaluate K_i, K_e at the loaded angle (spec 004, the default) or at alpha0 (which is spec 000's
         force characteristic C* = Z K_n (B D)^1.5 with exact Hertz).
     xtol : float, optional
-        Converged where |Delta alpha| < xtol. [rad]
+        Converged where abs(Delta alpha) < xtol. [rad]
     max_iter : int, optional
         Iteration limit.
 

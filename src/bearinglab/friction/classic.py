@@ -631,7 +631,7 @@ def palmgren(kinematic_viscosity, shaft_speed, mean_diameter, palmgren_factor):
 
     Notes
     -----
-    Palmgren [2]_: M0 = 1e-7 f0 (nu n)^(2/3) d_m^3 for nu n >= 2000 and 160e-7 f0 d_m^3 below, with
+    Palmgren (module reference [2]): M0 = 1e-7 f0 (nu n)^(2/3) d_m^3 for nu n >= 2000 and 160e-7 f0 d_m^3 below, with
     M0 in N*mm, nu in cSt (mm^2/s), n in rpm and d_m in mm; the inputs and the output are converted
     here, once. For nu n >= 2000 it equals the speed term (3.5) of spec 001 with
     ``speed_term_factor = speed_term_factor_from_palmgren(palmgren_factor, kinematic_viscosity)``.

@@ -88,7 +88,7 @@ CONSTANTS = {
 #: Raceway-control assumptions: lambda_i, lambda_e of eqs. (5)-(7).
 RACEWAY_CONTROLS = {"outer": (0.0, 2.0), "inner": (2.0, 0.0)}
 #: Implied friction coefficient 2 M_g/(D Q_e) above which outer-raceway control is implausible: lubricated
-#: (EHL) traction coefficients rarely exceed about 0.1 (Harris and Kotzalas [3]_, ch. 4).
+#: (EHL) traction coefficients rarely exceed about 0.1 (Harris and Kotzalas, module reference [3], ch. 4).
 FRICTION_WARNING_LIMIT = 0.1
 
 
@@ -206,7 +206,7 @@ def gyroscopic_moment(ball_spin_speed, cage_speed, attitude_angle, ball_mass, ba
     Returns
     -------
     ndarray
-        M_g = J |omega_R omega_m| sin(beta), J = m D^2/10. [N m]
+        M_g = J abs(omega_R omega_m) sin(beta), J = m D^2/10. [N m]
 
     Notes
     -----
@@ -262,8 +262,8 @@ def attitude_angle(contact_angle_inner, contact_angle_outer, ball_diameter, pitc
     Notes
     -----
     Outer-raceway control: :math:`\tan\beta = \sin\alpha_e/(\cos\alpha_e + D/d_m)`, equal to the
-    paper's :math:`\sin\alpha_e\cos\alpha_e/(\cos^2\alpha_e + \gamma_e)`. Inner-raceway control (Harris
-    [3]_): :math:`\tan\beta = \sin\alpha_i/(\cos\alpha_i - D/d_m)`.
+    paper's :math:`\sin\alpha_e\cos\alpha_e/(\cos^2\alpha_e + \gamma_e)`. Inner-raceway control (Harris,
+    module reference [3]): :math:`\tan\beta = \sin\alpha_i/(\cos\alpha_i - D/d_m)`.
 
     Examples
     --------

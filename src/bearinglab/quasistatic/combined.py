@@ -156,7 +156,7 @@ def groove_offsets(displacement, n_balls, ball_diameter, pitch_diameter, inner_c
 
     Notes
     -----
-    Harris and Kotzalas [2]_ ch. 1 with the pitch radius as arm (ISO/TS 16281 [3]_):
+    Harris and Kotzalas (module reference [2]) ch. 1 with the pitch radius as arm (ISO/TS 16281, [3]):
 
     .. math::
         A_{z,j} = \delta_z + \tfrac{d_m}{2}(\theta_x\sin\psi_j - \theta_y\cos\psi_j),\qquad
@@ -774,7 +774,7 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     Geometry: :func:`groove_offsets`. At rest a ball with groove-centre distance rho carries
     Q = K_n (rho - A)^1.5 along that line (K_n from the exact Hertz constants of both contacts,
     :mod:`bearinglab.hertz`). At speed each ball solves eqs. (5)-(6) of spec 004 for its centre, with F_c,
-    M_g and the kinematics (8)-(13) at its own angles (Jones [1]_, Harris and Kotzalas [2]_ ch. 3); the
+    M_g and the kinematics (8)-(13) at its own angles (Jones [1], Harris and Kotzalas [2] ch. 3, module references); the
     inner ring carries sum_j [Q_i n_i + (M_g/D) lambda_i t_i]. An unloaded ball keeps its kinematics.
 
     The ring equilibrium F = F_bearing(u) is solved by damped Newton for all cases at once; its Jacobian

@@ -74,8 +74,8 @@ def light_load(axial_load, contact_angle_inner, contact_angle_outer, shaft_speed
     :func:`bearinglab.stand.min_axial_load_gyroscopic` at the free angle (friction at the two contacts
     resists the gyroscopic moment while M_g <= mu Q D). The outer angle: at light thrust and high speed the
     centrifugal force turns the outer contact towards the groove bottom while the inner contact angle
-    grows (spec 004 section 7.1): flagged where |alpha_o| < ``outer_angle_fraction`` alpha0 while
-    |alpha_i| > alpha0 (so that a small angle from a radial load is not flagged). Neither applies at
+    grows (spec 004 section 7.1): flagged where abs(alpha_o) < ``outer_angle_fraction`` alpha0 while
+    abs(alpha_i) > alpha0 (so that a small angle from a radial load is not flagged). Neither applies at
     rest, nor the angle criterion to a bearing with alpha0 = 0.
 
     Examples

@@ -11,9 +11,10 @@ rating_life            every life quantity for loads (Fx, Fy, Fz, Mx, My), speed
 duty_cycle_life        the combined life of a duty cycle (Palmgren-Miner)
 miner_life             Palmgren-Miner combination of lives at given revolution shares
 
-The analysis composes the functions of :mod:`.static`, :mod:`.dynamic`, :mod:`.lubrication` and
-:mod:`.reference`, so each number it reports can be had from them. SI throughout: N, N m, rad/s, m^2/s,
-K; lives in revolutions and their durations in seconds.
+The analysis composes the functions of :mod:`~bearinglab.ratings.static`,
+:mod:`~bearinglab.ratings.dynamic`, :mod:`~bearinglab.ratings.lubrication` and
+:mod:`~bearinglab.ratings.reference`, so each number it reports can be had from them. SI throughout:
+N, N m, rad/s, m^2/s, K; lives in revolutions and their durations in seconds.
 """
 
 from __future__ import annotations
