@@ -8,6 +8,7 @@ load_bearing_file   a single-bearing TOML file -> BallBearing
 builtin             the built-in catalog
 get                 look a bearing up by name or alias (built-ins, then user catalogs)
 names               the names of all bearings visible
+read_toml           any TOML input file: UTF-8 (a byte-order mark is skipped), errors naming the file
 
 File format (quantities are strings with units)::
 
@@ -49,7 +50,9 @@ from .bearing import MATERIALS, STEEL, BallBearing, Material
 from .errors import CatalogError, InputError
 from .units import parse_quantity
 
-__all__ = ["ENV_VAR", "bearing_from_table", "builtin", "get", "load_bearing_file", "load_catalog", "names"]
+__all__ = [
+    "ENV_VAR", "bearing_from_table", "builtin", "get", "load_bearing_file", "load_catalog", "names", "read_toml",
+]
 
 ENV_VAR = "BEARINGLAB_CATALOG"
 
@@ -210,17 +213,57 @@ def bearing_from_table(table, *, name="", file=None, materials=None):
         raise CatalogError(f"{where}, field {file_key!r}: {msg}") from None
 
 
-def _read_toml(path):
+def read_toml(path):
+    """Read a TOML input file: UTF-8 text, with or without a byte-order mark.
+
+    Parameters
+    ----------
+    path : str or Path
+        The file; it is only read.
+
+    Returns
+    -------
+    dict
+        The parsed document.
+
+    Raises
+    ------
+    CatalogError
+        Naming the file: it does not exist, cannot be read, is not UTF-8 text (Latin-1, UTF-16, binary)
+        or is not valid TOML.
+
+    Examples
+    --------
+    >>> read_toml("no-such-file.toml")
+    Traceback (most recent call last):
+    ...
+    bearinglab.errors.CatalogError: no-such-file.toml: no such file
+    """
     path = Path(path)
     try:
-        with open(path, "rb") as fh:
-            return tomllib.load(fh)
+        data = path.read_bytes()
     except FileNotFoundError:
         raise CatalogError(f"{path}: no such file") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise CatalogError(f"{path}: not valid TOML: {exc}") from None
+    except IsADirectoryError:
+        raise CatalogError(f"{path}: is a directory, not a file") from None
     except OSError as exc:
         raise CatalogError(f"{path}: cannot read: {exc.strerror}") from None
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        raise CatalogError(f"{path}: the file is UTF-16 text; save it as UTF-8")
+    try:
+        text = data.decode("utf-8-sig")  # a byte-order mark is simply skipped
+    except UnicodeDecodeError as exc:
+        raise CatalogError(f"{path}: not a UTF-8 text file (byte {exc.start} is {data[exc.start]:#04x}); "
+                           "save it as UTF-8") from None
+    if "\x00" in text:
+        raise CatalogError(f"{path}: not a text file (it holds NUL bytes)")
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CatalogError(f"{path}: not valid TOML: {exc}") from None
+
+
+_read_toml = read_toml
 
 
 def _entries(doc, file):

@@ -1,0 +1,79 @@
+"""Issue 15: no tracebacks, no silently wrong numbers. Each test drives the command line in-process and
+checks the exit code and the one-line message (input files in other encodings, plot suffixes, ...)."""
+
+import pytest
+
+from bearinglab.cli import main
+
+ERRORS_EXAMPLE = "examples/runout/example1_oversize_ball.toml"
+BEARING_FILE = (
+    '[bearings."X"]\nballs = 9\nball_diameter = "7.938 mm"\npitch_diameter = "38.5 mm"\n'
+    'inner_conformity = 0.52\nouter_conformity = 0.53\ncontact_angle = "15 deg"\n'
+)
+
+
+def run(capsys, *args):
+    """Exit code, stdout and stderr of one in-process run."""
+    code = main([str(a) for a in args])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def one_line_error(code, err, *, exit_code=2):
+    assert code == exit_code, err
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("bearinglab: error: "), err
+    assert "Traceback" not in err
+    return lines[0]
+
+
+# ----------------------------------------------------------------------------- item 2: encodings
+ENCODINGS = {
+    "latin1": ('title = "Kugellager für hohe Drehzahl"\n'.encode("latin-1"), "not a UTF-8 text file"),
+    "utf16": (BEARING_FILE.encode("utf-16"), "UTF-16"),
+    "binary": (bytes(range(256)), "not a UTF-8 text file"),
+    "nul": (b"x = 1\n\x00\x00", "not a text file"),
+}
+
+
+def _commands(path):
+    return {
+        "catalog list --catalog": ["catalog", "list", "--catalog", path],
+        "--bearing-file": ["axial-angle", "--bearing-file", path, "-F", "1 kN"],
+        "runout --errors": ["runout", "--errors", path],
+        "runout --geometry": ["runout", "--errors", ERRORS_EXAMPLE, "--geometry", path],
+        "sweep": ["sweep", path],
+    }
+
+
+@pytest.mark.parametrize("encoding", sorted(ENCODINGS))
+@pytest.mark.parametrize("command", sorted(_commands("x")))
+def test_input_file_not_utf8_is_one_line(tmp_path, capsys, encoding, command):
+    data, message = ENCODINGS[encoding]
+    path = tmp_path / "input.toml"
+    path.write_bytes(data)
+    line = one_line_error(*run(capsys, *_commands(path)[command])[::2])
+    assert message in line and str(path) in line
+
+
+@pytest.mark.parametrize("encoding", sorted(ENCODINGS))
+def test_catalog_environment_variable_not_utf8(tmp_path, capsys, monkeypatch, encoding):
+    path = tmp_path / "cat.toml"
+    path.write_bytes(ENCODINGS[encoding][0])
+    monkeypatch.setenv("BEARINGLAB_CATALOG", str(path))
+    line = one_line_error(*run(capsys, "axial-angle", "-b", "B218", "-F", "1 kN")[::2])
+    assert ENCODINGS[encoding][1] in line
+
+
+def test_byte_order_mark_is_read(tmp_path, capsys):
+    path = tmp_path / "bom.toml"
+    path.write_bytes(b"\xef\xbb\xbf" + BEARING_FILE.encode())
+    code, out, err = run(capsys, "axial-angle", "--bearing-file", path, "-F", "1 kN", "--json")
+    assert code == 0, err
+    code, out, err = run(capsys, "catalog", "list", "--catalog", path)
+    assert code == 0 and "X" in out, err
+
+
+def test_directory_as_input_file(tmp_path, capsys):
+    line = one_line_error(*run(capsys, "sweep", tmp_path)[::2])
+    assert "directory" in line
