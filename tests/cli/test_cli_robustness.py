@@ -77,3 +77,23 @@ def test_byte_order_mark_is_read(tmp_path, capsys):
 def test_directory_as_input_file(tmp_path, capsys):
     line = one_line_error(*run(capsys, "sweep", tmp_path)[::2])
     assert "directory" in line
+
+
+# ----------------------------------------------------------------------------- item 3: output files
+@pytest.mark.parametrize("name", ["map.txt", "map.csv", "map"])
+def test_high_speed_plot_suffix_checked_before_solving(tmp_path, capsys, monkeypatch, name):
+    from bearinglab import quasistatic
+
+    def no_solve(*a, **k):  # the suffix is checked before anything is computed
+        raise AssertionError("solved before the suffix was checked")
+
+    monkeypatch.setattr(quasistatic, "sweep", no_solve)
+    line = one_line_error(*run(capsys, "high-speed", "-b", "B218", "-F", "5kN:10kN:5kN", "-n", "3000 rpm",
+                               "--plot", tmp_path / name)[::2])
+    assert "plot" in line and ".png" in line
+
+
+def test_output_file_that_is_a_directory(tmp_path, capsys):
+    line = one_line_error(*run(capsys, "high-speed", "-b", "B218", "-F", "5 kN", "-n", "3000 rpm",
+                               "--csv", tmp_path)[::2])
+    assert "is a directory" in line

@@ -4,7 +4,7 @@ Bearing options  BearingName, BearingFile, CatalogFile and the inline geometry; 
 Execution        ExecutorOpt, WorkersOpt, ChunkSizeOpt; execution (one parallel.Execution with the
                  command's progress bar)
 Output           console, emit_json (one JSON document on stdout), table (a rich table), emit_csv
-Input checks     choice, check_directory
+Input checks     choice, check_directory, check_output (directory and suffix of an output file)
 
 The command modules import these; none of them imports the package ``bearinglab.cli`` itself, so the
 application is built on import without a cycle.
@@ -165,6 +165,23 @@ def check_directory(path: Path, what: str) -> None:
     """An output file's directory must exist (a typo must not create a tree of directories)."""
     if not Path(path).parent.is_dir():
         raise InputError(f"{what}: directory {str(Path(path).parent)!r} does not exist")
+
+
+#: Figure formats the ``--plot FILE`` options accept (matplotlib's writers without extra packages).
+FIGURE_SUFFIXES = (".png", ".pdf", ".svg", ".eps", ".ps", ".jpg", ".jpeg", ".tif", ".tiff")
+
+
+def check_output(path, what, suffixes=None):
+    """An output file, checked before anything is computed: its directory exists, it is not a
+    directory itself, and its suffix is one of ``suffixes`` (if given)."""
+    path = Path(path)
+    check_directory(path, what)
+    if path.is_dir():
+        raise InputError(f"{what}: {str(path)!r} is a directory; give a file name")
+    if suffixes is not None and path.suffix.lower() not in suffixes:
+        raise InputError(f"{what}: {str(path)!r} must end in one of {', '.join(suffixes)}, "
+                         f"got {path.suffix or 'no suffix'!r}")
+    return path
 
 
 def choice(name, value, choices):

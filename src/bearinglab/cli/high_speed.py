@@ -27,6 +27,7 @@ from ..errors import InputError, ValidityWarning
 from ..plots import high_speed as high_speed_plots
 from ..units import RPM, parse_quantity, parse_values
 from ._common import (
+    FIGURE_SUFFIXES,
     BallDiameter,
     BallMaterial,
     Balls,
@@ -44,7 +45,7 @@ from ._common import (
     OuterRadius,
     PitchDiameter,
     WorkersOpt,
-    check_directory,
+    check_output,
     choice,
     console,
     emit_csv,
@@ -86,9 +87,10 @@ def high_speed(
     loads, speeds = _grid(axial_load, speed)
     if plot is not None and (loads.size < 2 or speeds.size < 1):
         raise InputError("plot: needs a sweep over at least two thrusts (e.g. --axial-load 2.5kN:45kN:2.5kN)")
-    for path, what in ((csv_file, "csv"), (plot, "plot")):
-        if path is not None:
-            check_directory(path, what)
+    if csv_file is not None:
+        check_output(csv_file, "csv")
+    if plot is not None:
+        check_output(plot, "plot", FIGURE_SUFFIXES)
     single = loads.size == 1 and speeds.size == 1
     with execution("solving", executor, workers, chunk_size, progress=not single) as ex:
         state, notes = _solve(b, loads, speeds, options, ex)
