@@ -93,8 +93,8 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
     elif radial_clearance is not None:
         changes["radial_clearance"] = parse_quantity(radial_clearance, "length", "radial-clearance")
         changes["contact_angle"] = None
-    elif "inner_conformity" in changes or "outer_conformity" in changes:
-        # new conformities keep the angle and re-derive the clearance
+    elif {"inner_conformity", "outer_conformity", "ball_diameter"} & set(changes):
+        # a new ball or new grooves keep the angle and re-derive the clearance
         changes["radial_clearance"] = None
     if ball_material is not None:
         key = ball_material.lower().replace("-", "_")
