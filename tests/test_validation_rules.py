@@ -8,8 +8,8 @@ from bearinglab import catalog
 from bearinglab.bearing import BallBearing, max_balls
 from bearinglab.errors import CatalogError, InputError
 
-B218 = dict(n_balls=16, ball_diameter=22.23e-3, pitch_diameter=125.3e-3, inner_conformity=0.5232,
-            outer_conformity=0.5232)
+B218 = {"n_balls": 16, "ball_diameter": 22.23e-3, "pitch_diameter": 125.3e-3, "inner_conformity": 0.5232,
+            "outer_conformity": 0.5232}
 
 
 def _chord_fits(z, d, dm):

@@ -99,7 +99,7 @@ def max_balls(ball_diameter, pitch_diameter):
     >>> max_balls(7.938e-3, 38.5e-3)
     15
     """
-    return int(math.floor(math.pi / math.asin(min(ball_diameter / pitch_diameter, 1.0)) + 1e-9))
+    return math.floor(math.pi / math.asin(min(ball_diameter / pitch_diameter, 1.0)) + 1e-9)
 
 
 def _positive(name, value, unit, *, optional=True):
