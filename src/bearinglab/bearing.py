@@ -159,6 +159,9 @@ class BallBearing:
         Number of sealed sides, 0, 1 or 2.
     seal_diameter : float
         Seal counterface diameter d_s (SKF: the shoulder diameter the lip runs on). [m]
+    inner_shoulder_height, outer_shoulder_height : float
+        Height of the raceway shoulder on the loaded side above the groove bottom, for the check of a
+        truncated contact ellipse (:mod:`bearinglab.limits`; a default fraction of D when not given). [m]
 
     Examples
     --------
@@ -190,6 +193,8 @@ class BallBearing:
     seal: str | None = None
     seals: int | None = None
     seal_diameter: float | None = None
+    inner_shoulder_height: float | None = None
+    outer_shoulder_height: float | None = None
 
     def __post_init__(self):
         if self.n_balls is not None and (
@@ -198,7 +203,8 @@ class BallBearing:
             raise InputError(f"n_balls must be an integer >= 1 [-], got {self.n_balls!r}")
         for name, unit in (("ball_diameter", "m"), ("pitch_diameter", "m"), ("bore", "m"),
                            ("outside_diameter", "m"), ("width", "m"), ("static_load_rating", "N"),
-                           ("dynamic_load_rating", "N"), ("fatigue_load_limit", "N"), ("seal_diameter", "m")):
+                           ("dynamic_load_rating", "N"), ("fatigue_load_limit", "N"), ("seal_diameter", "m"),
+                           ("inner_shoulder_height", "m"), ("outer_shoulder_height", "m")):
             _positive(name, getattr(self, name), unit)
         for name in ("inner_conformity", "outer_conformity"):
             f = getattr(self, name)
@@ -233,6 +239,7 @@ class BallBearing:
         if self.radial_clearance is not None:
             _positive("radial_clearance", self.radial_clearance, "m", optional=False)
         self._check_fit()
+        self._check_shoulders()
         has_f = self.inner_conformity is not None and self.outer_conformity is not None and self.ball_diameter is not None
         if self.contact_angle is not None and self.radial_clearance is not None and has_f:
             self._check_angle_matches_clearance()
@@ -270,6 +277,14 @@ class BallBearing:
             raise InputError(f"{what} must be < outside_diameter [mm] (the balls run inside the outer ring), "
                              f"got {(dm + (d or 0.0)) * 1e3:g} mm with outside_diameter = "
                              f"{self.outside_diameter * 1e3:g} mm")
+
+    def _check_shoulders(self):
+        """A shoulder lies between the groove bottom and the ball centre: 0 < h < f D."""
+        for race in ("inner", "outer"):
+            h, f = getattr(self, f"{race}_shoulder_height"), getattr(self, f"{race}_conformity")
+            if h is not None and f is not None and self.ball_diameter is not None and not h < f * self.ball_diameter:
+                raise InputError(f"{race}_shoulder_height must be < the groove radius {f * self.ball_diameter * 1e3:.4g} "
+                                 f"mm [mm] (a shoulder lower than the groove's centre), got {h * 1e3:g} mm")
 
     def _check_angle_matches_clearance(self):
         """A contact angle given together with a clearance must be the one the clearance implies."""

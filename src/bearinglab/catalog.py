@@ -29,6 +29,8 @@ File format (quantities are strings with units)::
     seal = "RS1"                              # seal type, seals (sealed sides, 0-2),
     seals = 2                                 # seal_diameter (seal counterface d_s)
     seal_diameter = "59.5 mm"
+    inner_shoulder_height = "6.7 mm"          # optional: shoulder heights above the groove bottom, for
+    outer_shoulder_height = "6.7 mm"          # the truncation check (bearinglab.limits)
 
 Materials: ``ball_material`` / ``ring_material`` name a built-in material (steel, silicon_nitride) or a
 ``[materials."NAME"]`` table of the same file (``elastic_modulus``, ``poisson_ratio``, ``density``);
@@ -57,14 +59,15 @@ __all__ = [
 ENV_VAR = "BEARINGLAB_CATALOG"
 
 _LENGTHS = ("ball_diameter", "pitch_diameter", "bore", "outside_diameter", "width", "radial_clearance",
-            "seal_diameter")
+            "seal_diameter", "inner_shoulder_height", "outer_shoulder_height")
 _FORCES = ("static_load_rating", "dynamic_load_rating", "fatigue_load_limit")
 _KNOWN = {
     "balls", "ball_diameter", "pitch_diameter", "inner_groove_radius", "outer_groove_radius",
     "inner_conformity", "outer_conformity", "contact_angle", "radial_clearance", "bore",
     "outside_diameter", "width", "type", "static_load_rating", "ball_material", "ring_material",
     "source", "aliases", "hertz_table", "designation", "dynamic_load_rating", "fatigue_load_limit",
-    "series", "seal", "seals", "seal_diameter", "elastic_modulus", "poisson_ratio",
+    "series", "seal", "seals", "seal_diameter", "elastic_modulus", "poisson_ratio", "inner_shoulder_height",
+    "outer_shoulder_height",
 }
 _MATERIAL_KEYS = {"elastic_modulus": "pressure", "poisson_ratio": "dimensionless", "density": "density"}
 

@@ -97,3 +97,40 @@ def test_output_file_that_is_a_directory(tmp_path, capsys):
     line = one_line_error(*run(capsys, "high-speed", "-b", "B218", "-F", "5 kN", "-n", "3000 rpm",
                                "--csv", tmp_path)[::2])
     assert "is a directory" in line
+
+
+# ----------------------------------------------------------------------------- item 6: plausibility
+def _json(capsys, *args):
+    import json
+
+    code, out, err = run(capsys, *args, "--json")
+    assert code == 0, err
+    return json.loads(out)
+
+
+def test_absurd_thrust_warns_in_json_and_in_the_table(capsys):
+    args = ("high-speed", "-b", "B218", "-F", "1e9 N", "-n", "3000 rpm")
+    doc = _json(capsys, *args)
+    text = " | ".join(doc["warnings"])
+    for expected in ("exceeds the ISO 76 limit of 4200 MPa", "exceeds C0", "% of the ball diameter",
+                     "runs over the shoulder"):
+        assert expected in text
+    code, out, _ = run(capsys, *args)
+    assert code == 0 and "warning:" in out and "4200 MPa" in " ".join(out.split())
+
+
+def test_light_load_at_speed_warns(capsys):
+    """Issue 11: B218 at 0.05 kN and 15 000 rpm (alpha_e = 0.05 deg) must not pass without a word."""
+    doc = _json(capsys, "high-speed", "-b", "B218", "-F", "0.05 kN", "-n", "15000 rpm")
+    text = " | ".join(doc["warnings"])
+    assert "gyroscopic slip" in text and "outer contact angle is driven to zero" in text
+
+
+def test_moderate_load_at_rest_has_no_warning(capsys):
+    doc = _json(capsys, "high-speed", "-b", "B218", "-F", "20 kN", "-n", "0 rpm")
+    assert doc["warnings"] == []
+
+
+def test_sweep_json_carries_warnings(capsys):
+    doc = _json(capsys, "high-speed", "-b", "B218", "-F", "20kN,1e8N", "-n", "0 rpm, 3000 rpm")
+    assert len(doc["cases"]) == 4 and any("2 of 4 case(s)" in w for w in doc["warnings"])

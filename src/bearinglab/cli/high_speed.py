@@ -22,7 +22,7 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from .. import plots, quasistatic, tables
+from .. import limits, plots, quasistatic, tables
 from ..errors import InputError, ValidityWarning
 from ..plots import high_speed as high_speed_plots
 from ..units import RPM, parse_quantity, parse_values
@@ -94,6 +94,7 @@ def high_speed(
     single = loads.size == 1 and speeds.size == 1
     with execution("solving", executor, workers, chunk_size, progress=not single) as ex:
         state, notes = _solve(b, loads, speeds, options, ex)
+    notes += limits.high_speed_warnings(b, state)
     cols = tables.high_speed(state)
     if csv_file is not None:
         emit_csv(csv_file, cols)
@@ -108,7 +109,8 @@ def high_speed(
             emit_json(dict(rows[0], bearing=b.designation, constants=constants, raceway_control=raceway_control,
                            gyroscopic_sign=gyroscopic_sign, solver=solver, warnings=notes))
         else:
-            emit_json(rows)
+            emit_json({"bearing": b.designation, "constants": constants, "raceway_control": raceway_control,
+                       "gyroscopic_sign": gyroscopic_sign, "solver": solver, "cases": rows, "warnings": notes})
         return
     if single:
         _print_single(b, rows[0], options)
