@@ -9,7 +9,8 @@ static_load_warnings        the static equivalent load P0 above the basic static
 deflection_warnings         an elastic approach comparable to the ball (Hertz needs small strains)
 truncation_warnings         a contact ellipse that runs over the raceway shoulder
 viscosity_ratio_warnings    kappa = nu / nu1 below 0.1 (ISO 281: the life model is not valid)
-high_speed_warnings         all of the above (and the light-load criteria) for a high-speed state
+contact_warnings            all of the above for a bearing under thrust (ball loads and angles)
+high_speed_warnings         contact_warnings and the light-load criteria for a high-speed state
 
 Constants
 ---------
@@ -30,6 +31,7 @@ __all__ = [
     "MINIMUM_VISCOSITY_RATIO",
     "SHOULDER_HEIGHT_FRACTION",
     "contact_pressure_warnings",
+    "contact_warnings",
     "deflection_warnings",
     "high_speed_warnings",
     "static_load_warnings",
@@ -221,6 +223,57 @@ def _shoulder(bearing, race):
     return (SHOULDER_HEIGHT_FRACTION * bearing.ball_diameter, True) if h is None else (h, False)
 
 
+def contact_warnings(bearing, axial_load, ball_load_inner, ball_load_outer, contact_angle_inner,
+                     contact_angle_outer):
+    """Every plausibility warning of a bearing under thrust, from its ball loads and contact angles.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing (ball set, conformities, materials; C0 from the catalog or ISO 76 where known).
+    axial_load : array_like
+        F_a of each case. [N]
+    ball_load_inner, ball_load_outer : array_like
+        Q_i, Q_e of each case. [N]
+    contact_angle_inner, contact_angle_outer : array_like
+        alpha_i, alpha_e of each case. [rad]
+
+    Returns
+    -------
+    list of str
+        Contact pressure, static load (P0 of the thrust against C0), deflection and ellipse truncation
+        at both raceways; cases with NaN (failed) are skipped.
+    """
+    from . import geometry, hertz, ratings
+
+    d, dm = bearing.ball_diameter, bearing.pitch_diameter
+    fa = np.ravel(as_float("axial_load", axial_load))
+    ok = np.isfinite(fa) & np.isfinite(np.ravel(ball_load_inner)) & np.isfinite(np.ravel(ball_load_outer))
+    if not ok.any():
+        return []
+    msgs, contacts = [], {}
+    for race, q, alpha in (("inner", ball_load_inner, contact_angle_inner),
+                           ("outer", ball_load_outer, contact_angle_outer)):
+        f = bearing.inner_conformity if race == "inner" else bearing.outer_conformity
+        q, alpha = np.ravel(q)[ok], np.ravel(alpha)[ok]
+        curv = geometry.raceway_curvature(d, dm, f, alpha, race=race)
+        contacts[race] = (alpha, f, hertz.point_contact(q, curv.curvature_sum, curv.curvature_difference,
+                                                        bearing.reduced_modulus))
+        msgs += contact_pressure_warnings(contacts[race][2].p_max, where=f"{race} contact")
+    try:
+        c0 = ratings.bearing_ratings(bearing).static_load_rating
+        msgs += static_load_warnings(ratings.static_equivalent_load(0.0, fa[ok], bearing.contact_angle,
+                                                                    bearing_type=bearing.type), c0)
+    except (ValueError, ArithmeticError):  # no rating for this geometry (angle outside ISO 76 table 1)
+        pass
+    for race, (_alpha, _f, pc) in contacts.items():
+        msgs += deflection_warnings(pc.delta, d, where=f"{race} contact")
+    for race, (alpha, f, pc) in contacts.items():
+        h, assumed = _shoulder(bearing, race)
+        msgs += truncation_warnings(alpha, pc.a, f * d, h, where=f"{race} contact", assumed=assumed)
+    return msgs
+
+
 def high_speed_warnings(bearing, state):
     """Every plausibility warning of a high-speed state under thrust (spec 004).
 
@@ -234,42 +287,21 @@ def high_speed_warnings(bearing, state):
     Returns
     -------
     list of str
-        Contact pressure, static load (P0 of the thrust against C0, where C0 is known or computable),
-        deflection, ellipse truncation at both raceways, and the light-load criteria
+        :func:`contact_warnings` of the converged cases, and the light-load criteria
         (:func:`bearinglab.quasistatic.light_load.light_load_warnings`).
     """
-    from . import geometry, hertz, ratings
     from .quasistatic.light_load import light_load_warnings
 
-    d, dm = bearing.ball_diameter, bearing.pitch_diameter
     ok = np.ravel(np.asarray(state.converged, dtype=bool))
-    fa = np.ravel(state.axial_load)[ok]
-    msgs = []
-    for race in ("inner", "outer"):
-        msgs += contact_pressure_warnings(np.ravel(getattr(state, f"max_pressure_{race}"))[ok],
-                                          where=f"{race} contact")
-    try:
-        c0 = ratings.bearing_ratings(bearing).static_load_rating
-        p0 = ratings.static_equivalent_load(0.0, fa, bearing.contact_angle, bearing_type=bearing.type)
-    except (ValueError, ArithmeticError):  # no rating for this geometry (angle outside ISO 76 table 1)
-        c0 = None
-    if c0 is not None and fa.size:
-        msgs += static_load_warnings(p0, c0)
-    for race in ("inner", "outer"):
-        msgs += deflection_warnings(np.ravel(getattr(state, f"deflection_{race}"))[ok], d, where=f"{race} contact")
-    for race in ("inner", "outer"):
-        f = bearing.inner_conformity if race == "inner" else bearing.outer_conformity
-        alpha = np.ravel(getattr(state, f"contact_angle_{race}"))[ok]
-        q = np.ravel(getattr(state, f"ball_load_{race}"))[ok]
-        if not alpha.size:
-            continue
-        curv = geometry.raceway_curvature(d, dm, f, alpha, race=race)
-        pc = hertz.point_contact(q, curv.curvature_sum, curv.curvature_difference, bearing.reduced_modulus)
-        h, assumed = _shoulder(bearing, race)
-        msgs += truncation_warnings(alpha, pc.a, f * d, h, where=f"{race} contact", assumed=assumed)
-    w = np.ravel(state.shaft_speed)[ok]
-    if fa.size:
-        msgs += light_load_warnings(fa, np.ravel(state.contact_angle_inner)[ok], np.ravel(state.contact_angle_outer)[ok],
-                                    w, bearing.n_balls, d, dm, bearing.contact_angle,
-                                    density=bearing.ball_material.density)
+    if not ok.any():
+        return []
+
+    def pick(name):
+        return np.ravel(getattr(state, name))[ok]
+
+    msgs = contact_warnings(bearing, pick("axial_load"), pick("ball_load_inner"), pick("ball_load_outer"),
+                            pick("contact_angle_inner"), pick("contact_angle_outer"))
+    msgs += light_load_warnings(pick("axial_load"), pick("contact_angle_inner"), pick("contact_angle_outer"),
+                                pick("shaft_speed"), bearing.n_balls, bearing.ball_diameter, bearing.pitch_diameter,
+                                bearing.contact_angle, density=bearing.ball_material.density)
     return msgs

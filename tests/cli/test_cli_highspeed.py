@@ -118,12 +118,14 @@ def test_sweep_table_and_failed_case_does_not_stop_it(capsys):
     assert failed and all(r["contact_angle_inner_deg"] is None for r in failed)
 
 
-def test_single_failed_case_exits_3_with_one_line(capsys):
+def test_single_case_without_physical_solution_exits_2_with_one_line(capsys):
+    """Issue 15 item 16: no physical solution is an impossible input (2), not a weak solver (3)."""
     code, out, err = run(capsys, "high-speed", "-b", "B218", "-F", "300 N", "-n", "15000 rpm",
                          "--raceway-control", "inner", "--json")
-    assert code == 3 and out == ""
+    assert code == 2 and out == ""
     line = _one_line_error(err)
     assert "leaves the inner raceway" in line and "thrust too small for the speed" in line
+    assert "quasistatic." not in line  # no internal function names
 
 
 def test_friction_warning_goes_to_stderr_with_json(capsys):

@@ -134,3 +134,33 @@ def test_moderate_load_at_rest_has_no_warning(capsys):
 def test_sweep_json_carries_warnings(capsys):
     doc = _json(capsys, "high-speed", "-b", "B218", "-F", "20kN,1e8N", "-n", "0 rpm, 3000 rpm")
     assert len(doc["cases"]) == 4 and any("2 of 4 case(s)" in w for w in doc["warnings"])
+
+
+# ----------------------------------------------------------------------------- item 16: messages, exit codes
+@pytest.mark.parametrize("extra, message", [
+    (["--x0", "-1"], "x0 must be in (0, 1.36136) [rad]"),
+    (["--x0", "nan"], "x0 must be in"),
+    (["--rows", "0"], "rows must be an integer >= 1"),
+])
+def test_axial_angle_impossible_start_is_input_error(capsys, extra, message):
+    line = one_line_error(*run(capsys, "axial-angle", "-b", "4-1006095", "-F", "2 kgf", *extra)[::2])
+    assert message in line and "stand." not in line and "nan)" not in line
+
+
+def test_axial_angle_absurd_load_converges_and_warns(capsys):
+    import json
+
+    code, out, err = run(capsys, "axial-angle", "-b", "4-1006095", "-F", "1e12 N", "--json")
+    assert code == 0 and err == ""
+    doc = json.loads(out)
+    assert 12 < doc["operating_contact_angle_deg"] < 90 and any("ISO 76" in w for w in doc["warnings"])
+
+
+def test_convergence_error_summary_has_no_function_name_nor_nan():
+    from bearinglab.errors import ConvergenceError
+
+    e = ConvergenceError("stand.iteration_table", iterations=0, residual=float("nan"), estimate=0.0,
+                         reason="the angle left (alpha0, 90 deg)")
+    assert e.summary == "no convergence after 0 iterations: the angle left (alpha0, 90 deg)"
+    p = ConvergenceError("x.y", iterations=3, residual=1e-3, estimate=0.0, reason="the ball leaves", physical=True)
+    assert p.summary == "the ball leaves (no convergence after 3 iterations (|residual| = 0.001))"

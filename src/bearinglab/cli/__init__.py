@@ -17,8 +17,9 @@ every command shares (bearing, execution, JSON) and the output helpers are in ``
 no command module imports this package. Importing this package builds the whole application: :data:`app` lists every
 command, for the console script, ``python -m bearinglab``, test runners and documentation tools alike.
 
-Errors in the input print one line on stderr and exit with code 2; a solver that does not converge
-prints one line and exits with code 3. No traceback reaches the user.
+Errors in the input print one line on stderr and exit with code 2, as do inputs for which the model
+has no physical solution (a ball leaving its raceway); a solver that does not converge prints one line
+and exits with code 3. No traceback reaches the user, and numpy's floating-point warnings are not shown.
 
 Functions
 ---------
@@ -29,6 +30,7 @@ run    the console-script entry point (``bearinglab``): ``sys.exit(main())``
 from __future__ import annotations
 
 import sys
+import warnings
 
 import typer
 
@@ -86,10 +88,14 @@ def main(argv=None) -> int:
     Returns
     -------
     int
-        0 on success, 2 for invalid input (one line on stderr), 3 for a solve that did not converge.
+        0 on success, 2 for invalid or physically impossible input (one line on stderr), 3 for a solve
+        that did not converge.
     """
     try:
-        rv = app(args=argv, prog_name="bearinglab", standalone_mode=False)
+        with warnings.catch_warnings():
+            # numpy's floating-point warnings are no message for a user: every result is checked finite
+            warnings.simplefilter("ignore", RuntimeWarning)
+            rv = app(args=argv, prog_name="bearinglab", standalone_mode=False)
     except _USAGE_ERRORS as exc:
         if exc.format_message():  # empty after no_args_is_help has printed the help
             print(f"bearinglab: error: {exc.format_message()}", file=sys.stderr)
@@ -99,9 +105,9 @@ def main(argv=None) -> int:
     except typer.Abort:
         print("bearinglab: aborted", file=sys.stderr)
         return 1
-    except ConvergenceError as exc:
-        print(f"bearinglab: error: {exc}", file=sys.stderr)
-        return 3
+    except ConvergenceError as exc:  # no physical solution: the input is impossible (2); else the solver (3)
+        print(f"bearinglab: error: {exc.summary}", file=sys.stderr)
+        return 2 if exc.physical else 3
     except InputError as exc:
         print(f"bearinglab: error: {exc}", file=sys.stderr)
         return 2

@@ -3,7 +3,8 @@
 Bearing options  BearingName, BearingFile, CatalogFile and the inline geometry; resolve_bearing
 Execution        ExecutorOpt, WorkersOpt, ChunkSizeOpt; execution (one parallel.Execution with the
                  command's progress bar)
-Output           console, emit_json (one JSON document on stdout), table (a rich table), emit_csv
+Output           console, emit_json (one JSON document on stdout), table (a rich table), emit_csv,
+                 print_warnings
 Input checks     choice, check_directory, check_output (directory and suffix of an output file)
 
 The command modules import these; none of them imports the package ``bearinglab.cli`` itself, so the
@@ -152,6 +153,12 @@ def table(title, columns, rows, *, caption=None, wide=False):
         Console(width=max(console.width, 200), highlight=False).print(t)
     else:
         console.print(t)
+
+
+def print_warnings(notes):
+    """Print the plausibility and validity warnings of a result (yellow), after its tables."""
+    for note in notes:
+        console.print(f"[yellow]warning:[/yellow] {escape(note)}", highlight=False)
 
 
 def emit_csv(path, columns, what="csv"):

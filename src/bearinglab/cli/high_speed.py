@@ -51,6 +51,7 @@ from ._common import (
     emit_csv,
     emit_json,
     execution,
+    print_warnings,
     resolve_bearing,
     table,
 )
@@ -116,8 +117,7 @@ def high_speed(
         _print_single(b, rows[0], options)
     else:
         _print_sweep(b, rows, options)
-    for note in notes:
-        console.print(f"[yellow]warning:[/yellow] {note}", highlight=False)
+    print_warnings(notes)
     for path in (csv_file, plot):
         if path is not None:
             console.print(f"wrote {path}", highlight=False)

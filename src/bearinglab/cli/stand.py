@@ -13,7 +13,7 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from .. import stand, tables
+from .. import limits, stand, tables
 from ..errors import InputError
 from ..units import KGF, format_dms, parse_values, to_dms, to_rpm
 from ._common import (
@@ -33,6 +33,7 @@ from ._common import (
     PitchDiameter,
     console,
     emit_json,
+    print_warnings,
     resolve_bearing,
     table,
 )
@@ -68,6 +69,8 @@ def axial_angle(
         raise InputError(f"hertz must be one of ['exact', 'table'], got {hertz!r}")
     if elastic_constant not in ("materials", "paper"):
         raise InputError(f"elastic-constant must be one of ['materials', 'paper'], got {elastic_constant!r}")
+    if rows is not None and rows < 1:
+        raise InputError(f"rows must be an integer >= 1 [-], got {rows}")
     loads = parse_values(axial_load, "force", "axial-load")
     if np.any(~(loads > 0)):
         raise InputError(f"axial-load must be > 0 [N], got {float(loads[~(loads > 0)][0])!r} N")
@@ -77,6 +80,7 @@ def axial_angle(
     r = stand.stand_analysis(b, loads[0] if scalar else loads, hertz=hertz, reproduce_print=legacy, x0=x0,
                               max_rows=max_rows, elastic_constant=elastic_constant)
     c = r.constants
+    notes = limits.contact_warnings(b, r.axial_load, r.ball_load, r.ball_load, r.contact_angle, r.contact_angle)
     base = {
         "bearing": b.designation,
         "hertz": hertz,
@@ -109,6 +113,7 @@ def axial_angle(
             "ball_load_N": float(r.ball_load), "ball_load_kgf": float(r.ball_load) / KGF,
             "converged": True,
             "legacy": legacy,
+            "warnings": notes,
             "iterations": [{"k": row.k, "x_rad": row.x, "contact_angle_deg": math.degrees(row.contact_angle),
                             "contact_angle_dms": _angle_row(row, legacy),
                             "axial_displacement_ratio": row.axial_displacement_ratio,
@@ -119,10 +124,11 @@ def axial_angle(
             emit_json(out)
             return
         _print_single(b, c, out, hertz, legacy)
+        print_warnings(notes)
         return
     cases = [dict(row, converged=True) for row in tables.rows(tables.columns(r, tables.AXIAL_ANGLE))]
     if json_out:
-        emit_json(dict(base, cases=cases))
+        emit_json(dict(base, cases=cases, warnings=notes))
         return
     cstar = np.broadcast_to(c.force_characteristic_kgf, len(cases))
     if np.ndim(c.force_characteristic_kgf) == 0:  # C* at alpha0: one value for all loads, in the title
@@ -134,6 +140,7 @@ def axial_angle(
           [[f"{x['axial_load_kgf']:.4g}", f"{x['axial_load_N']:.4g}", f"{x['operating_contact_angle_deg']:.5f}",
             f"{x['axial_displacement_ratio']:.6f}", f"{x['axial_displacement_mm'] * 1e3:.3f}", f"{x['ball_load_N']:.4g}",
             *e] for x, e in zip(cases, extra)])
+    print_warnings(notes)
 
 
 def _print_single(b, c, out, hertz, legacy):
