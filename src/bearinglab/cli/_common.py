@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import contextlib
 import dataclasses
+import re
 import sys
 from pathlib import Path
 from typing import Annotated
@@ -22,6 +23,7 @@ from typing import Annotated
 import typer
 from rich.console import Console
 from rich.markup import escape
+from rich.measure import Measurement
 from rich.table import Table
 
 from .. import catalog as _catalog
@@ -138,21 +140,49 @@ def emit_json(obj):
     sys.stdout.write(tables.json_text(obj))
 
 
+# a cell that is a number (with its sign, exponent, unit marks or a D°M'S" angle): never shortened
+_NUMBER_CELL = re.compile(r"^[-+−]?[\d.,]+(?:[eE][-+]?\d+)?(?:[°'\"′″]\d*[.\d]*)*[\"″]?(?:\s*[%×]?\s*[-+]?[\d.eE]*)*$|^[—-]?$")
+
+
+def _rich_table(title, columns, cells, caption, numeric):
+    t = Table(title=escape(title), caption=caption and escape(caption), header_style="bold")
+    for i, col in enumerate(columns):
+        t.add_column(escape(col), justify="left" if i == 0 else "right", no_wrap=numeric[i],
+                     overflow="fold")
+    for row in cells:
+        t.add_row(*row)
+    return t
+
+
 def table(title, columns, rows, *, caption=None, wide=False):
     """Print a rich table; ``columns`` are header strings, ``rows`` lists of already formatted cells.
 
-    ``wide`` never truncates a cell: the table grows wider than the terminal rather than showing a
-    number as '0.34…'.
+    A number is never shortened ('0.34…'): number columns do not wrap, text columns wrap. A table
+    that still does not fit is printed wider than the console when the output is a file or a pipe,
+    and stacked (one small quantity/value table per row) on a terminal. ``wide`` prints it wide on a
+    terminal too.
     """
-    t = Table(title=escape(title), caption=caption and escape(caption), header_style="bold")
-    for i, col in enumerate(columns):
-        t.add_column(escape(col), justify="left" if i == 0 else "right", no_wrap=wide)
-    for row in rows:
-        t.add_row(*[escape(str(c)) for c in row])
-    if wide:
-        Console(width=max(console.width, 200), highlight=False).print(t)
-    else:
+    cells = [[escape(str(c)) for c in row] for row in rows]
+    numeric = [all(_NUMBER_CELL.match(row[i].strip()) for row in cells if i < len(row))
+               for i in range(len(columns))]
+    t = _rich_table(title, columns, cells, caption, numeric)
+    # the narrowest the table may be: number columns whole, text columns down to their longest word
+    def word(text):
+        return max(text.split() or [""], key=len)
+
+    narrow = _rich_table("", [c if numeric[i] else word(c) for i, c in enumerate(columns)],
+                         [[c if numeric[i] else word(c) for i, c in enumerate(row)] for row in cells], None, numeric)
+    need = Measurement.get(console, console.options.update(width=10**4), narrow).maximum
+    if need <= console.width:
         console.print(t)
+    elif wide or not console.is_terminal:
+        Console(file=console.file, width=Measurement.get(console, console.options.update(width=10**4), t).maximum,
+                highlight=False, force_terminal=console.is_terminal, no_color=console.no_color).print(t)
+    else:
+        for k, row in enumerate(cells, 1):
+            label = f"{title} ({k} of {len(cells)})" if len(cells) > 1 else title
+            console.print(_rich_table(label, ["quantity", "value"], list(zip(map(escape, columns), row)),
+                                      caption if k == len(cells) else None, [False, True]))
 
 
 def print_warnings(notes):
