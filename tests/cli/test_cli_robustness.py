@@ -164,3 +164,33 @@ def test_convergence_error_summary_has_no_function_name_nor_nan():
     assert e.summary == "no convergence after 0 iterations: the angle left (alpha0, 90 deg)"
     p = ConvergenceError("x.y", iterations=3, residual=1e-3, estimate=0.0, reason="the ball leaves", physical=True)
     assert p.summary == "the ball leaves (no convergence after 3 iterations (|residual| = 0.001))"
+
+
+# ----------------------------------------------------------------------------- item 9: inputs echoed
+def test_override_is_in_the_title_and_the_json(capsys):
+    doc = _json(capsys, "axial-angle", "-b", "4-1006095", "--balls", "9", "-F", "2 kgf")
+    assert doc["bearing"] == "4-1006095 (balls 9)" and doc["catalog_bearing"] == "4-1006095"
+    assert doc["overrides"] == {"balls": 9} and doc["geometry"]["balls"] == 9
+    assert doc["geometry"]["inner_groove_radius_mm"] == pytest.approx(1.05)
+    code, out, _ = run(capsys, "axial-angle", "-b", "4-1006095", "--balls", "9", "-F", "2 kgf")
+    assert code == 0 and "Bearing 4-1006095 (balls 9)" in " ".join(out.split())
+
+
+@pytest.mark.parametrize("args", [
+    ["axial-angle", "-b", "B218", "-F", "2 kgf"],
+    ["axial-angle", "-b", "B218", "-F", "1kN,2kN"],
+    ["stand-load", "-b", "B218", "-n", "3000 rpm"],
+    ["frequencies", "-b", "B218", "-n", "3000 rpm"],
+    ["high-speed", "-b", "B218", "-F", "5 kN", "-n", "3000 rpm"],
+    ["high-speed", "-b", "B218", "-F", "5kN, 10kN", "-n", "3000 rpm"],
+    ["sweep", "examples/sweep/stand_geometry_variants.toml"],
+])
+def test_every_result_echoes_the_geometry_used(capsys, args):
+    doc = _json(capsys, *args)
+    assert doc["bearing"] and doc["geometry"]["ball_diameter_mm"] > 0 and doc["geometry"]["balls"] >= 1
+
+
+@pytest.mark.parametrize("speed", ["10000 1/min", "10000 r/min", "3000 rpm", "50 Hz"])
+def test_echoed_speed_has_no_float_noise(capsys, speed):
+    doc = _json(capsys, "high-speed", "-b", "B218", "-F", "5 kN", "-n", speed)
+    assert repr(doc["speed_rpm"]) in ("10000.0", "3000.0")

@@ -5,6 +5,7 @@ Execution        ExecutorOpt, WorkersOpt, ChunkSizeOpt; execution (one parallel.
                  command's progress bar)
 Output           console, emit_json (one JSON document on stdout), table (a rich table), emit_csv,
                  print_warnings
+Inputs echoed    inputs_echo (the bearing as used, the overrides, the quantities given)
 Input checks     choice, check_directory, check_output (directory and suffix of an output file)
 
 The command modules import these; none of them imports the package ``bearinglab.cli`` itself, so the
@@ -15,8 +16,10 @@ from __future__ import annotations
 
 import contextlib
 import dataclasses
+import math
 import re
 import sys
+import weakref
 from pathlib import Path
 from typing import Annotated
 
@@ -108,7 +111,65 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
         if not (bearing or bearing_file):
             raise InputError("bearing: give --bearing NAME, --bearing-file FILE or the inline geometry (--balls, --ball-diameter, ...)")
         return base
-    return dataclasses.replace(base, **changes)
+    given = {"balls": balls, "ball-diameter": ball_diameter, "pitch-diameter": pitch_diameter,
+             "inner-groove-radius": inner_groove_radius, "outer-groove-radius": outer_groove_radius,
+             "inner-conformity": inner_conformity, "outer-conformity": outer_conformity,
+             "contact-angle": contact_angle, "radial-clearance": radial_clearance, "ball-material": ball_material}
+    overrides = {k: v for k, v in given.items() if v is not None}
+    label = ", ".join(f"{k} {v}" for k, v in overrides.items())
+    if base.designation != "inline":  # the title and the JSON say that the named bearing was changed
+        changes["designation"] = f"{base.designation} ({label})"
+    b = dataclasses.replace(base, **changes)
+    _OVERRIDES[b] = {"catalog_bearing": base.designation, "overrides": overrides}
+    return b
+
+
+_OVERRIDES = weakref.WeakKeyDictionary()  # bearing -> the catalog bearing and the options that changed it
+
+
+def _clean(value):
+    """A float without the noise of unit conversions (3000.0000000000005 -> 3000.0): 15 digits."""
+    if isinstance(value, float) and math.isfinite(value):
+        return float(f"{value:.15g}")
+    if isinstance(value, dict):
+        return {k: _clean(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_clean(v) for v in value]
+    return value
+
+
+def inputs_echo(bearing, **quantities):
+    """The inputs a result was computed from, for its JSON: the bearing as used and what was given.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing actually used (after the inline options, from :func:`resolve_bearing`).
+    **quantities
+        The loads, speeds and options given, already in engineering units with the unit in the name
+        (``axial_load_N=...``, ``speed_rpm=...``).
+
+    Returns
+    -------
+    dict
+        ``bearing`` (the designation; a changed catalog bearing says what changed), ``geometry``
+        (every known field and derived quantity, :func:`bearinglab.tables.bearing_summary`),
+        ``overrides`` (option -> text as given, and ``catalog_bearing``) where options changed a named
+        bearing, then the quantities. Floats carry 15 significant digits, so that a unit conversion
+        does not show as noise (``3000.0000000000005`` rpm); results are never rounded.
+    """
+    geometry = {k: v for k, v in tables.bearing_summary(bearing).items()
+                if v is not None and k not in ("designation", "source")}
+    out = {"bearing": bearing.designation, "geometry": geometry}
+    try:
+        extra = _OVERRIDES.get(bearing)
+    except TypeError:  # an unhashable bearing cannot have been resolved here
+        extra = None
+    if extra and extra["overrides"]:
+        out["catalog_bearing"] = extra["catalog_bearing"]
+        out["overrides"] = dict(extra["overrides"])
+    out.update(quantities)
+    return _clean(out)
 
 
 def _stderr_console():

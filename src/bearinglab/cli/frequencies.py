@@ -36,6 +36,7 @@ from ._common import (
     console,
     emit_csv,
     emit_json,
+    inputs_echo,
     resolve_bearing,
     table,
 )
@@ -193,11 +194,8 @@ def _frequencies(b, w_in, w_out, fa, hertz, elastic_constant):
     """Frequencies at the nominal angle, or at the operating angle under ``fa`` with the shift; and
     the angle [rad] they are at."""
     z, d, dm, a0 = b.require("n_balls", "ball_diameter", "pitch_diameter", "contact_angle")
-    out = {
-        "bearing": b.designation,
-        "speed_rpm": w_in / _HZ * 60.0,
-        "outer_speed_rpm": w_out / _HZ * 60.0,
-    }
+    out = inputs_echo(b, speed_rpm=w_in / _HZ * 60.0, outer_speed_rpm=w_out / _HZ * 60.0,
+                      elastic_constant=elastic_constant)
     shaft_hz = w_in / _HZ
     if fa is not None:
         if not fa > 0:

@@ -51,6 +51,7 @@ from ._common import (
     emit_csv,
     emit_json,
     execution,
+    inputs_echo,
     print_warnings,
     resolve_bearing,
     table,
@@ -106,12 +107,15 @@ def high_speed(
     if json_out:
         for note in notes:  # stdout stays one JSON document
             print(f"bearinglab: warning: {note}", file=sys.stderr)
-        if single:
-            emit_json(dict(rows[0], bearing=b.designation, constants=constants, raceway_control=raceway_control,
-                           gyroscopic_sign=gyroscopic_sign, solver=solver, warnings=notes))
+        echo = inputs_echo(b, constants=constants, raceway_control=raceway_control, gyroscopic_sign=gyroscopic_sign,
+                           solver=solver, reduced_modulus_GPa=None if reduced_modulus is None else
+                           options["reduced_modulus"] / 1e9)
+        if single:  # the inputs as given, without the noise of the unit conversions
+            echo.update(inputs_echo(b, axial_load_kN=float(loads[0]) / 1e3, speed_rpm=float(speeds[0]) / RPM))
+            emit_json(dict(rows[0], **echo, warnings=notes))
         else:
-            emit_json({"bearing": b.designation, "constants": constants, "raceway_control": raceway_control,
-                       "gyroscopic_sign": gyroscopic_sign, "solver": solver, "cases": rows, "warnings": notes})
+            emit_json(dict(echo, axial_load_kN=list(loads / 1e3), speed_rpm=list(speeds / RPM), cases=rows,
+                           warnings=notes))
         return
     if single:
         _print_single(b, rows[0], options)

@@ -375,7 +375,7 @@ def runout_command(
             "csv: --csv writes a trajectory; give --revolutions N (and --steps-per-rev M)"
         )
     if not sequence:
-        _single(g, e, angle, refine, cage_ratio, plot, json_out)
+        _single(g, e, angle, refine, cage_ratio, plot, json_out, errors)
         return
     revs = 3 if revolutions is None else revolutions
     steps = 360 if steps_per_rev is None else steps_per_rev
@@ -403,7 +403,8 @@ def runout_command(
     spec = runout.runout_spectrum(d.x, d.y, d.z, steps)
     lines = runout.spectrum_lines(spec, t.cage_ratio)
     info = _sequence_dict(t, lines)
-    info["geometry"] = _geometry_dict(g)
+    info.update(errors_file=str(errors), start_angle_deg=math.degrees(t.rotation_angle.flat[0]), refine=refine,
+                geometry=_geometry_dict(g))
     if csv_out is not None:
         _atomic_write(csv_out, _trajectory_csv(t))
         info["csv"] = str(csv_out)
@@ -429,12 +430,12 @@ def _reject_options_before(ctx):
         )
 
 
-def _single(g, e, angle, refine, cage_ratio, plot, json_out):
+def _single(g, e, angle, refine, cage_ratio, plot, json_out, errors):
     """The displacement at one rotation angle: compute, draw, print."""
     psi = 0.0 if angle is None else parse_quantity(angle, "angle", "angle", default_unit="deg")
     d = runout.initial_displacement(psi, g, e, refine=refine, cage_ratio=cage_ratio)
     info = _single_dict(d, g)
-    info["geometry"] = _geometry_dict(g)
+    info.update(errors_file=str(errors), refine=refine, cage_ratio=cage_ratio, geometry=_geometry_dict(g))
     if plot is not None:
         info["figures"] = [str(p) for p in _runout_figures().save_single(d, plot)]
     if json_out:

@@ -33,6 +33,7 @@ from ._common import (
     PitchDiameter,
     console,
     emit_json,
+    inputs_echo,
     print_warnings,
     resolve_bearing,
     table,
@@ -81,10 +82,9 @@ def axial_angle(
                               max_rows=max_rows, elastic_constant=elastic_constant)
     c = r.constants
     notes = limits.contact_warnings(b, r.axial_load, r.ball_load, r.ball_load, r.contact_angle, r.contact_angle)
-    base = {
-        "bearing": b.designation,
-        "hertz": hertz,
-        "elastic_constant": elastic_constant,
+    base = inputs_echo(b, axial_load_N=list(map(float, np.atleast_1d(loads))) if not scalar else float(loads[0]),
+                       hertz=hertz, elastic_constant=elastic_constant, legacy=legacy, x0_rad=x0, rows=rows)
+    base.update({
         "elastic_constant_cm2_per_kgf_2_3": c.elastic_constant_paper,
         "contact_angle_initial_deg": math.degrees(r.free_angle),
         "gamma": c.gamma,
@@ -98,7 +98,7 @@ def axial_angle(
         "c_outer_cm2_per_kgf_2_3": c.approach_outer_paper,
         "load_deflection_constant_kgf": c.force_characteristic_kgf,
         "load_deflection_constant_N": c.force_characteristic,
-    }
+    })
     if scalar:
         out = dict(base)
         out.update({
@@ -181,7 +181,8 @@ def stand_load(
     res = stand.min_axial_load(speeds, z, d, dm, a)
     rows = tables.rows(tables.stand_load(speeds, res))
     if json_out:
-        emit_json(dict(rows[0], bearing=b.designation, contact_angle_deg=math.degrees(a)) if len(rows) == 1 else rows)
+        echo = inputs_echo(b, contact_angle_deg=math.degrees(a))
+        emit_json(dict(echo, **rows[0]) if len(rows) == 1 else dict(echo, cases=rows))
         return
     table(f"Bearing {b.designation}: axial load on the stand (α = {math.degrees(a):g}°)",
           ["speed [rpm]", "min [kgf]", "min [N]", "max +20 % [kgf]", "max [N]"],
