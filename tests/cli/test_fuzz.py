@@ -142,6 +142,9 @@ GOOD = {
     "radial_clearance": ["9 um", "20 um"], "ball_material": ["steel", "silicon_nitride"],
     "reduced_modulus": ["228 GPa"], "memory_limit": ["1GiB"],
 }
+# options whose default makes a run long (200 Monte Carlo samples, 3 x 360 positions): always given,
+# mostly with a small value, so that the examples stay fast
+SMALL = ("samples", "steps_per_rev", "revolutions")
 # options that make a command run at all: drawn more often than the others
 LIKELY = ("bearing", "errors", "file", "name")
 # the inline geometry: any one of them changes the bearing, so they are drawn rarely
@@ -157,6 +160,8 @@ def _argv(draw, path, command, workdir):
             continue
         kind = _kind(param)
         chance = 80 if param.name in LIKELY else (6 if kind == "input" or param.name in INLINE else 25)
+        if param.name in SMALL:
+            chance = 100
         if not param.required and draw(st.integers(0, 99)) >= chance:
             continue
         good = draw(st.integers(0, 99)) < 90
