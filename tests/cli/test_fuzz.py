@@ -9,8 +9,9 @@ garbage, and files of random bytes. Only three outcomes are allowed:
 * exit 3 with one line (a genuine non-convergence).
 
 No traceback, no numpy warning, nothing else. The value pools keep every run small (a few cases per
-command) so that the CI run (derandomized, see tests/conftest.py) of about 2400 examples stays within
-a minute and a half.
+command), and the slow commands get fewer examples, so that the CI run (derandomized, see
+tests/conftest.py) of over 2000 examples stays near a minute and a half on two workers.
+``BEARINGLAB_FUZZ_EXAMPLES`` sets the examples per command (default 220) for a longer local hunt.
 """
 
 import os
@@ -27,7 +28,9 @@ from bearinglab.cli import app, main
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
-EXAMPLES_PER_COMMAND = int(os.environ.get("BEARINGLAB_FUZZ_EXAMPLES", "200"))
+EXAMPLES_PER_COMMAND = int(os.environ.get("BEARINGLAB_FUZZ_EXAMPLES", "220"))
+# commands whose runs take 10 to 50 times longer (plots, reports, sweeps, sequences): fewer examples
+SLOW = {("sweep",): 4, ("friction", "lab"): 8, ("runout",): 2, ("runout", "monte-carlo"): 2}
 
 
 def _commands():
@@ -36,9 +39,8 @@ def _commands():
 
     def walk(cmd, path):
         subs = getattr(cmd, "commands", None)
-        if subs is None or getattr(cmd, "invoke_without_command", False):
-            if path:
-                out.append((tuple(path), cmd))
+        if (subs is None or getattr(cmd, "invoke_without_command", False)) and path:
+            out.append((tuple(path), cmd))
         for name, sub in (subs or {}).items():
             walk(sub, [*path, name])
 
@@ -126,7 +128,7 @@ GOOD = {
     "radial_load": ["1 kN", "0 N", "500 N"],
     "speed": ["3000 rpm", "0 rpm", "15000 rpm", "50 Hz", "10000 1/min", "0,3000rpm"],
     "outer_speed": ["0 rpm", "100 rpm"],
-    "bearing": ["B218", "4-1006095", "6205-2RS", "7218B", "18", "61811-2RS1"],
+    "bearing": ["B218", "4-1006095", "7218B"],
     "name": ["B218", "7218B", "4-1006095", "18"],
     "hertz": ["exact", "table"], "elastic_constant": ["materials", "paper"],
     "solver": ["newton", "angle-iteration"], "raceway_control": ["outer", "inner"],
@@ -145,6 +147,8 @@ GOOD = {
 # options whose default makes a run long (200 Monte Carlo samples, 3 x 360 positions): always given,
 # mostly with a small value, so that the examples stay fast
 SMALL = ("samples", "steps_per_rev", "revolutions")
+# an option of a new command not in GOOD: one of these may fit (a number, or a quantity of some kind)
+ANY_GOOD = ["1", "0.5", "2", "2 kN", "3000 rpm", "20 cSt", "0.07 N*mm", "12 deg", "8 mm", "B218"]
 # options that make a command run at all: drawn more often than the others
 LIKELY = ("bearing", "errors", "file", "name")
 # the inline geometry: any one of them changes the bearing, so they are drawn rarely
@@ -171,8 +175,8 @@ def _argv(draw, path, command, workdir):
             value = draw(_input_file(workdir, good, path[0], param.name))
         elif kind == "output":
             value = str(workdir / draw(st.sampled_from(OUTPUT_NAMES)))
-        elif good and param.name in GOOD:
-            value = draw(st.sampled_from(GOOD[param.name]))
+        elif good:
+            value = draw(st.sampled_from(GOOD.get(param.name, ANY_GOOD)))
         else:
             value = draw(st.sampled_from(QUANTITIES + NUMBERS + NAMES))
         if param.param_type_name == "argument":
@@ -206,7 +210,7 @@ def test_fuzz_command(path, tmp_path_factory, capsys, monkeypatch):
     monkeypatch.setenv("COLUMNS", "80")
     command = COMMANDS[path]
 
-    @settings(max_examples=EXAMPLES_PER_COMMAND, deadline=None, database=None,
+    @settings(max_examples=EXAMPLES_PER_COMMAND // SLOW.get(path, 1), deadline=None, database=None,
               suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
                                      HealthCheck.function_scoped_fixture])
     @given(argv=_argv(path, command, workdir))
@@ -226,4 +230,4 @@ def test_every_command_is_fuzzed():
     names = {" ".join(p) for p in COMMANDS}
     for expected in ("axial-angle", "high-speed", "runout", "runout monte-carlo", "catalog list", "sweep"):
         assert expected in names
-    assert len(COMMANDS) * EXAMPLES_PER_COMMAND >= 2000
+    assert sum(EXAMPLES_PER_COMMAND // SLOW.get(p, 1) for p in COMMANDS) >= 2000
