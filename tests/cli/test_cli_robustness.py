@@ -194,3 +194,27 @@ def test_every_result_echoes_the_geometry_used(capsys, args):
 def test_echoed_speed_has_no_float_noise(capsys, speed):
     doc = _json(capsys, "high-speed", "-b", "B218", "-F", "5 kN", "-n", speed)
     assert repr(doc["speed_rpm"]) in ("10000.0", "3000.0")
+
+
+# ----------------------------------------------------------------------------- item 10: sign change
+def test_plot_marks_the_library_sign_change(capsys, monkeypatch, tmp_path):
+    import numpy as np
+
+    from bearinglab import catalog, quasistatic
+    from bearinglab.plots import high_speed as figures
+    from bearinglab.units import RPM
+
+    seen = {}
+    real = figures.plot_map
+
+    def spy(state, **kw):
+        seen.update(kw)
+        return real(state, **kw)
+
+    monkeypatch.setattr(figures, "plot_map", spy)
+    code, _, err = run(capsys, "high-speed", "-b", "B218", "-F", "2.5kN:10kN:2.5kN", "-n", "0 rpm, 6000 rpm",
+                       "--plot", tmp_path / "map.png")
+    assert code == 0, err
+    expected = quasistatic.sign_change_thrust(catalog.get("B218"), np.array([0.0, 6000 * RPM]))
+    np.testing.assert_allclose(seen["sign_change"], expected, rtol=1e-9)
+    assert 2.5e3 < seen["sign_change"][1] < 10e3  # inside the grid, where the figure marks it

@@ -23,7 +23,7 @@ import numpy as np
 import typer
 
 from .. import limits, plots, quasistatic, tables
-from ..errors import InputError, ValidityWarning
+from ..errors import ConvergenceError, InputError, ValidityWarning
 from ..plots import high_speed as high_speed_plots
 from ..units import RPM, parse_quantity, parse_values
 from ._common import (
@@ -101,7 +101,8 @@ def high_speed(
     if csv_file is not None:
         emit_csv(csv_file, cols)
     if plot is not None:
-        fig = high_speed_plots.plot_map(state, title=f"Bearing {b.designation}: high-speed contact angles under thrust")
+        fig = high_speed_plots.plot_map(state, title=f"Bearing {b.designation}: high-speed contact angles under thrust",
+                                        sign_change=_sign_change(b, speeds, options, notes))
         plots.save(fig, plot)
     rows = tables.rows(cols)
     if json_out:
@@ -166,6 +167,18 @@ def _solve(bearing, loads, speeds, options, ex):
                 ex = dataclasses.replace(ex, chunk_size=_CHUNK)  # small enough chunks for the bar to move
             state = quasistatic.sweep(bearing, loads, speeds, execution=ex, **options)
     return state, [str(c.message) for c in caught if issubclass(c.category, ValidityWarning)]
+
+
+def _sign_change(bearing, speeds, options, notes):
+    """The thrust at which delta_a changes sign per speed, from the library's solve (not the grid); None
+    (the figure then interpolates on the grid) with a note if it does not converge."""
+    try:
+        return quasistatic.sign_change_thrust(
+            bearing, speeds, reduced_modulus=options["reduced_modulus"], constants=options["constants"],
+            raceway_control=options["raceway_control"], gyroscopic_sign=options["gyroscopic_sign"])
+    except (ConvergenceError, InputError) as exc:
+        notes.append(f"plot: the delta_a sign change is interpolated on the grid ({exc})")
+        return None
 
 
 def _f(x, spec):
