@@ -195,6 +195,8 @@ def _sequence_dict(t, lines):
         {
             "component": ln.component,
             "order": ln.order,
+            "bin_order": ln.bin_order,
+            "resolution": ln.resolution,
             "amplitude_um": _um(ln.amplitude),
             "label": ln.label,
             "source": ln.source,
@@ -463,11 +465,14 @@ def _print_sequence(info, t, lines, revs, steps, refine):
     if lines:
         table(
             "Spectral lines",
-            ["component", "order", "amplitude [µm]", "line", "source"],
+            ["component", "order", "bin", "amplitude [µm]", "line", "source"],
             [
-                [ln.component, f"{ln.order:.4f}", f"{_um(ln.amplitude):.6f}", ln.label, ln.source]
+                [ln.component, f"{ln.order:.4f}", f"{ln.bin_order:.4f}", f"{_um(ln.amplitude):.6f}", ln.label,
+                 ln.source]
                 for ln in lines
             ],
+            caption=f"order: the line's true order p·κ + q; bin: the spectrum bin it was found in "
+                    f"(resolution 1/revolutions = {lines[0].resolution:.4g})",
         )
     for key in ("csv", "figures"):
         if key in info:
