@@ -8,6 +8,7 @@ load_bearing_file   a single-bearing TOML file -> BallBearing
 builtin             the built-in catalog
 get                 look a bearing up by name or alias (built-ins, then user catalogs)
 names               the names of all bearings visible
+aliases             the aliases of each name (for listings)
 read_toml           any TOML input file: UTF-8 (a byte-order mark is skipped), errors naming the file
 
 File format (quantities are strings with units)::
@@ -53,7 +54,7 @@ from .errors import CatalogError, InputError
 from .units import parse_quantity
 
 __all__ = [
-    "ENV_VAR", "bearing_from_table", "builtin", "get", "load_bearing_file", "load_catalog", "names", "read_toml",
+    "ENV_VAR", "aliases", "bearing_from_table", "builtin", "get", "load_bearing_file", "load_catalog", "names", "read_toml",
 ]
 
 ENV_VAR = "BEARINGLAB_CATALOG"
@@ -395,6 +396,36 @@ def get(name, *, catalog=None):
     if str(name).lower() in folded:
         return entries[folded[str(name).lower()]]
     raise CatalogError(f"bearing: unknown name {name!r}; known: {', '.join(sorted(entries))}")
+
+
+def aliases(*, catalog=None):
+    """The aliases of the bearings visible, and the name each stands for.
+
+    Parameters
+    ----------
+    catalog : str, Path or list, optional
+        User catalog file(s), in addition to ``BEARINGLAB_CATALOG`` and the built-ins.
+
+    Returns
+    -------
+    dict
+        ``{name: [alias, ...]}`` for the names that have aliases, the aliases sorted.
+
+    Examples
+    --------
+    >>> aliases()["B218"]
+    ['7218B']
+    """
+    entries = _all(catalog)
+    first = {}
+    for name in names(catalog=catalog):
+        first[id(entries[name])] = name
+    out = {}
+    for key, b in entries.items():
+        name = first.get(id(b))
+        if name is not None and key != name:
+            out.setdefault(name, []).append(key)
+    return {k: sorted(v) for k, v in out.items()}
 
 
 def names(*, catalog=None):

@@ -12,9 +12,13 @@ viscosity_ratio_warnings    kappa = nu / nu1 below 0.1 (ISO 281: the life model 
 contact_warnings            all of the above for a bearing under thrust (ball loads and angles)
 high_speed_warnings         contact_warnings and the light-load criteria for a high-speed state
 
+Guards (errors, not warnings)
+-----------------------------
+check_speed                 a speed no ball bearing can run (d_m n above MAX_SPEED_FACTOR)
+
 Constants
 ---------
-ISO76_CONTACT_PRESSURE, DEFLECTION_FRACTION, SHOULDER_HEIGHT_FRACTION, MINIMUM_VISCOSITY_RATIO
+MAX_SPEED_FACTOR, ISO76_CONTACT_PRESSURE, DEFLECTION_FRACTION, SHOULDER_HEIGHT_FRACTION, MINIMUM_VISCOSITY_RATIO
 """
 
 from __future__ import annotations
@@ -28,8 +32,10 @@ from ._validate import as_float
 __all__ = [
     "DEFLECTION_FRACTION",
     "ISO76_CONTACT_PRESSURE",
+    "MAX_SPEED_FACTOR",
     "MINIMUM_VISCOSITY_RATIO",
     "SHOULDER_HEIGHT_FRACTION",
+    "check_speed",
     "contact_pressure_warnings",
     "contact_warnings",
     "deflection_warnings",
@@ -49,8 +55,52 @@ DEFLECTION_FRACTION = 0.01
 #: An assumption (typical of angular-contact rings), not a standard value: give the bearing's own
 #: ``inner_shoulder_height`` / ``outer_shoulder_height`` for a real check. [-]
 SHOULDER_HEIGHT_FRACTION = 0.35
+#: The speed factor d_m n above which no ball bearing runs: ten times the about 3.5e6 mm/min of the
+#: fastest hybrid spindle bearings. An input guard (an error), not a model limit. [mm/min]
+MAX_SPEED_FACTOR = 3.5e7
 #: ISO 281:2007 clause 9.3.3: the life modification factor is not defined below kappa = 0.1. [-]
 MINIMUM_VISCOSITY_RATIO = 0.1
+
+
+def check_speed(speed, pitch_diameter, name="speed"):
+    """Reject a speed that no ball bearing of this size can run.
+
+    Parameters
+    ----------
+    speed : array_like
+        Ring speeds, magnitudes count. [rad/s]
+    pitch_diameter : float
+        d_m. [m]
+    name : str, optional
+        The parameter's name for the message.
+
+    Returns
+    -------
+    ndarray
+        The speeds.
+
+    Raises
+    ------
+    InputError
+        Where d_m |n| exceeds :data:`MAX_SPEED_FACTOR`.
+
+    Examples
+    --------
+    >>> check_speed([1e12 * 2 * math.pi / 60], 0.1253)
+    Traceback (most recent call last):
+    ...
+    bearinglab.errors.InputError: speed must be <= 279330 [rpm] for d_m = 125.3 mm (d_m n <= 3.5e+07 mm/min), got 1e+12 rpm
+    """
+    from .errors import InputError
+
+    w = np.ravel(as_float(name, speed))
+    rpm = np.abs(w) * 60.0 / (2.0 * math.pi)
+    limit = MAX_SPEED_FACTOR / (pitch_diameter * 1e3)
+    bad = rpm > limit
+    if bad.any():
+        raise InputError(f"{name} must be <= {limit:.6g} [rpm] for d_m = {pitch_diameter * 1e3:g} mm (d_m n <= "
+                         f"{MAX_SPEED_FACTOR:g} mm/min), got {rpm[bad][0]:.6g} rpm")
+    return w
 
 
 def _count(bad):

@@ -218,3 +218,35 @@ def test_plot_marks_the_library_sign_change(capsys, monkeypatch, tmp_path):
     expected = quasistatic.sign_change_thrust(catalog.get("B218"), np.array([0.0, 6000 * RPM]))
     np.testing.assert_allclose(seen["sign_change"], expected, rtol=1e-9)
     assert 2.5e3 < seen["sign_change"][1] < 10e3  # inside the grid, where the figure marks it
+
+
+# ----------------------------------------------------------------------------- items 17, 18: guard-rails
+@pytest.mark.parametrize("args, message", [
+    (["runout", "--errors", ERRORS_EXAMPLE, "--revolutions", "1", "--cage-ratio", "1.5"], "cage-ratio must be in (0, 1)"),
+    (["runout", "--errors", ERRORS_EXAMPLE, "--steps-per-rev", "2"], "steps-per-rev must be an integer >= 4"),
+    (["runout", "monte-carlo", "-b", "B218", "--steps-per-rev", "2"], "steps-per-rev must be an integer >= 4"),
+    (["high-speed", "-b", "B218", "-F", "1 kN", "-n", "1e12 rpm"], "speed must be <= 279330 [rpm]"),
+    (["stand-load", "-b", "B218", "-n", "1e12 rpm"], "speed must be <= 279330 [rpm]"),
+    (["frequencies", "-b", "B218", "-n", "1e12 rpm"], "speed must be <= 279330 [rpm]"),
+    (["frequencies", "-b", "B218", "--speed=-3000 rpm"], "speed must be >= 0 [rpm]"),
+    (["stand-load", "-b", "B218", "--speed=-3000 rpm"], "speed must be >= 0 [rpm]"),
+    (["high-speed", "-b", "B218", "-F", "1 kN", "--speed=-3000 rpm"], "speed must be >= 0 [rpm]"),
+])
+def test_guard_rails(capsys, args, message):
+    line = one_line_error(*run(capsys, *args)[::2])
+    assert message in line
+
+
+def test_errors_name_the_target_not_the_temporary_file():
+    from bearinglab.cli import _target_name
+
+    assert _target_name("/x/.s.toml.ab12_Z9q.tmp") == "/x/s.toml"
+    assert _target_name("/x/.map.png.k3j4h5g6.png") == "/x/map.png"
+    assert _target_name("/x/plain.csv") == "/x/plain.csv"
+
+
+def test_catalog_aliases():
+    from bearinglab import catalog
+
+    assert catalog.aliases()["B218"] == ["7218B"]
+    assert "7218B" not in catalog.aliases()

@@ -29,8 +29,10 @@ run    the console-script entry point (``bearinglab``): ``sys.exit(main())``
 
 from __future__ import annotations
 
+import re
 import sys
 import warnings
+from pathlib import Path
 
 import typer
 import typer.main
@@ -89,6 +91,19 @@ def _click_command():
     return _CLICK["app"]
 
 
+# the temporary file of an atomic write (bearinglab._io.atomic_output): ".NAME.RANDOM.SUFFIX" -> NAME
+_TEMPORARY = re.compile(r"^\.(?P<name>.+)\.[A-Za-z0-9_]{8}\.[A-Za-z0-9]+$")
+
+
+def _target_name(filename):
+    """The file the user named, not the temporary file an atomic write was using when it failed."""
+    if not filename:
+        return ""
+    path = Path(str(filename))
+    m = _TEMPORARY.match(path.name)
+    return str(path.with_name(m.group("name"))) if m else str(path)
+
+
 def main(argv=None) -> int:
     """Run the command line; return the exit code instead of raising (tests call this).
 
@@ -124,7 +139,7 @@ def main(argv=None) -> int:
         print(f"bearinglab: error: {exc}", file=sys.stderr)
         return 2
     except OSError as exc:
-        print(f"bearinglab: error: {exc.filename or ''}: {exc.strerror}", file=sys.stderr)
+        print(f"bearinglab: error: {_target_name(exc.filename)}: {exc.strerror or exc}", file=sys.stderr)
         return 2
     return rv if isinstance(rv, int) else 0
 

@@ -87,6 +87,7 @@ def high_speed(
                         ball_material)
     options = _model_options(solver, raceway_control, constants, gyroscopic_sign, reduced_modulus)
     loads, speeds = _grid(axial_load, speed)
+    limits.check_speed(speeds, b.require("pitch_diameter"))
     if plot is not None and (loads.size < 2 or speeds.size < 1):
         raise InputError("plot: needs a sweep over at least two thrusts (e.g. --axial-load 2.5kN:45kN:2.5kN)")
     if csv_file is not None:

@@ -38,6 +38,14 @@ from ._common import (
 __all__ = ["COMMANDS"]
 
 UM = 1e-6
+MIN_STEPS_PER_REV = 4  # positions per revolution below which no line of the spectrum is resolved
+
+
+def _check_cage_ratio(cage_ratio):
+    """kappa = cage speed / inner-ring speed lies in (0, 1): the cage turns with the shaft, slower."""
+    if cage_ratio is not None and not 0.0 < cage_ratio < 1.0:
+        raise InputError(f"cage-ratio must be in (0, 1) [-] (the cage turns slower than the inner ring; "
+                         f"(1 - gamma)/2 is about 0.4), got {cage_ratio!r}")
 
 GeometryFile = Annotated[
     Path | None,
@@ -363,6 +371,7 @@ def runout_command(
         raise InputError(
             "errors: give the error file with --errors FILE (see examples/runout/README.md)"
         )
+    _check_cage_ratio(cage_ratio)
     g, theta1 = _geometry(geometry, bearing, catalog, first_ball_angle)
     g, e = runout.files.load_error_file(errors, g)
     if theta1 is not None:
@@ -381,8 +390,11 @@ def runout_command(
         return
     revs = 3 if revolutions is None else revolutions
     steps = 360 if steps_per_rev is None else steps_per_rev
-    if revs < 1 or steps < 2:
-        raise InputError(f"revolutions must be >= 1 and steps-per-rev >= 2, got {revs} and {steps}")
+    if revs < 1:
+        raise InputError(f"revolutions must be an integer >= 1 [-], got {revs}")
+    if steps < MIN_STEPS_PER_REV:
+        raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-] (the once-per-revolution "
+                         f"line needs at least four positions per revolution), got {steps}")
     t = runout.rotation_sequence(
         g,
         e,
@@ -538,6 +550,9 @@ def monte_carlo_command(
         raise InputError("geometry: give --geometry FILE or --bearing NAME")
     if samples < 2:
         raise InputError(f"samples must be >= 2 [-], got {samples}")
+    _check_cage_ratio(cage_ratio)
+    if steps_per_rev < MIN_STEPS_PER_REV:
+        raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-], got {steps_per_rev}")
     _check_write_worst(write_worst, worst_by, worst_dir)
     grade = runout.ball_grade(ball_grade)
     rings = runout.ring_class(ring_class)

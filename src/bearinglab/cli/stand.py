@@ -178,6 +178,7 @@ def stand_load(
     if np.any(speeds < 0):
         raise InputError(f"speed must be >= 0 [rpm], got {float(to_rpm(speeds[speeds < 0][0]))!r} rpm")
     z, d, dm, a = b.require("n_balls", "ball_diameter", "pitch_diameter", "contact_angle")
+    limits.check_speed(speeds, dm)
     res = stand.min_axial_load(speeds, z, d, dm, a)
     rows = tables.rows(tables.stand_load(speeds, res))
     if json_out:

@@ -23,7 +23,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .._solve import RUNOUT_REFINE_MAX_ITER, RUNOUT_REFINE_TOL
-from .._validate import check_finite, check_integer
+from .._validate import check_finite, check_integer, check_open_interval
 from ..errors import InputError
 from .contact import Displacement, initial_displacement
 
@@ -262,7 +262,7 @@ def rotation_sequence(
     kappa = (
         geometry.cage_ratio
         if cage_ratio is None
-        else float(check_finite("cage_ratio", cage_ratio, "-"))
+        else float(check_open_interval("cage_ratio", cage_ratio, 0.0, 1.0, "-"))  # the cage turns slower
     )
     disp = initial_displacement(
         psi,
