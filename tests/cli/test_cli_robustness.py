@@ -250,3 +250,15 @@ def test_catalog_aliases():
 
     assert catalog.aliases()["B218"] == ["7218B"]
     assert "7218B" not in catalog.aliases()
+
+
+@pytest.mark.parametrize("args", [
+    ["high-speed", "-b", "B218", "-F", "5 kN", "-n", "3000 rpm"],
+    ["high-speed", "-b", "B218", "-F", "5kN, 10kN", "-n", "3000 rpm"],
+    ["axial-angle", "-b", "4-1006095", "-F", "2 kgf"],
+    ["axial-angle", "-b", "4-1006095", "-F", "1kgf:3kgf:1kgf"],
+])
+def test_printed_displacements_are_in_micrometres(capsys, args):
+    code, out, err = run(capsys, *args)
+    assert code == 0, err
+    assert "µm" in out and "δ_a [mm]" not in out and "δ_a mm" not in out

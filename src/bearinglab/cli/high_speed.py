@@ -199,7 +199,9 @@ def _print_single(b, r, options):
         ["ball-pass frequency [Hz]", _f(r["bpfi_Hz"], ".2f"), _f(r["bpfo_Hz"], ".2f")],
     ], caption=caption)
     table("Ball and ring", ["quantity", "value"], [
-        ["axial displacement δ_a [mm]", _f(r["axial_displacement_mm"], ".5f")],
+        # printed tables give displacements in µm in every command (JSON and CSV keep the _mm column)
+        ["axial displacement δ_a [µm]", _f(None if r["axial_displacement_mm"] is None
+                                           else r["axial_displacement_mm"] * 1e3, ".2f")],
         ["axial stiffness dF_a/dδ_a [N/µm]", _f(r["axial_stiffness_N_per_um"], ".2f")],
         ["centrifugal force F_c [N]", _f(r["centrifugal_force_N"], ".1f")],
         ["gyroscopic moment M_g [N·mm]", _f(r["gyroscopic_moment_Nmm"], ".1f")],
