@@ -262,3 +262,14 @@ def test_printed_displacements_are_in_micrometres(capsys, args):
     code, out, err = run(capsys, *args)
     assert code == 0, err
     assert "µm" in out and "δ_a [mm]" not in out and "δ_a mm" not in out
+
+
+@pytest.mark.parametrize("args", [
+    ["runout", "--errors", ERRORS_EXAMPLE, "--revolutions", "1", "--csv", "{tmp}/missing/t.csv"],
+    ["runout", "monte-carlo", "-b", "B218", "--samples", "2", "--samples-csv", "{tmp}/missing/s.csv"],
+    ["high-speed", "-b", "B218", "-F", "5 kN", "-n", "3000 rpm", "--csv", "{tmp}/missing/h.csv"],
+    ["frequencies", "-b", "B218", "-n", "3000 rpm", "--csv", "{tmp}/missing/f.csv"],
+])
+def test_no_command_creates_a_missing_output_directory(capsys, tmp_path, args):
+    line = one_line_error(*run(capsys, *[a.format(tmp=tmp_path) for a in args])[::2])
+    assert "does not exist" in line and not (tmp_path / "missing").exists()

@@ -29,6 +29,7 @@ from ._common import (
     ExecutorOpt,
     JsonFlag,
     WorkersOpt,
+    check_output,
     console,
     emit_json,
     execution,
@@ -110,8 +111,7 @@ def _geometry(geometry_file, bearing, catalog_file, first_ball_angle):
 
 
 def _atomic_write(path, text):
-    """Write a whole file or nothing, creating its directory."""
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    """Write a whole file or nothing; its directory must exist (checked before the computation)."""
     write_text(path, text)
 
 
@@ -372,6 +372,8 @@ def runout_command(
             "errors: give the error file with --errors FILE (see examples/runout/README.md)"
         )
     _check_cage_ratio(cage_ratio)
+    if csv_out is not None:
+        check_output(csv_out, "csv")
     g, theta1 = _geometry(geometry, bearing, catalog, first_ball_angle)
     g, e = runout.files.load_error_file(errors, g)
     if theta1 is not None:
@@ -551,6 +553,8 @@ def monte_carlo_command(
     if samples < 2:
         raise InputError(f"samples must be >= 2 [-], got {samples}")
     _check_cage_ratio(cage_ratio)
+    if samples_csv is not None:
+        check_output(samples_csv, "samples-csv")
     if steps_per_rev < MIN_STEPS_PER_REV:
         raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-], got {steps_per_rev}")
     _check_write_worst(write_worst, worst_by, worst_dir)
