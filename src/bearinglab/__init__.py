@@ -22,6 +22,7 @@ tables      results -> engineering-unit columns; the CSV, Parquet and JSON write
 plots       all figures (matplotlib, loaded on first use); functions return Figures
 cli         the command line (imported on its own: ``bearinglab.cli``, ``python -m bearinglab``)
 ratings     load ratings and rating life: ISO 76, ISO 281, ISO/TS 16281
+limits      plausibility limits: warnings for results beyond ISO 76, C0, Hertz, the shoulder, light load
 """
 
 from . import (
@@ -33,6 +34,7 @@ from . import (
     hertz,
     kinematics,
     lab,
+    limits,
     parallel,
     plots,
     quasistatic,
@@ -57,6 +59,7 @@ __all__ = [
     "hertz",
     "kinematics",
     "lab",
+    "limits",
     "parallel",
     "plots",
     "quasistatic",

@@ -10,6 +10,7 @@ MATERIALS         name -> Material, for input files and the command line
 Bearings
 --------
 BallBearing       validated, frozen internal geometry, envelope and materials of a ball bearing
+max_balls         the most balls of a diameter that fit on a pitch circle
 
 The dataclasses only check and pass fields on; the physics is in :mod:`bearinglab.geometry`,
 :mod:`bearinglab.hertz` and the model modules.
@@ -26,7 +27,10 @@ import numpy as np
 from . import geometry, hertz
 from .errors import InputError
 
-__all__ = ["MATERIALS", "SILICON_NITRIDE", "STEEL", "BallBearing", "Material"]
+__all__ = [
+    "ANGLE_CLEARANCE_TOLERANCE", "CLEARANCE_TOLERANCE", "MATERIALS", "SILICON_NITRIDE", "STEEL", "BallBearing",
+    "Material", "max_balls",
+]
 
 
 @dataclass(frozen=True)
@@ -67,6 +71,35 @@ SILICON_NITRIDE = Material("silicon nitride", 3.10e11, 0.26, 3200.0)
 MATERIALS = {"steel": STEEL, "silicon_nitride": SILICON_NITRIDE, "si3n4": SILICON_NITRIDE}
 
 _TYPES = ("radial", "angular")
+#: A contact angle given with a clearance may differ from the one the clearance implies by this much
+#: (rounding of the printed values) [rad] ...
+ANGLE_CLEARANCE_TOLERANCE = math.radians(0.05)
+#: ... or the clearance from the one the angle implies by this fraction (the printed digits). [-]
+CLEARANCE_TOLERANCE = 0.005
+
+
+def max_balls(ball_diameter, pitch_diameter):
+    """The most balls of diameter D that fit on a pitch circle d_m without overlapping.
+
+    Parameters
+    ----------
+    ball_diameter : float
+        D. [m]
+    pitch_diameter : float
+        d_m > D. [m]
+
+    Returns
+    -------
+    int
+        floor(pi / arcsin(D / d_m)): neighbouring centres are a chord d_m sin(pi / Z) apart, which must
+        be at least D (a full complement with no cage). [-]
+
+    Examples
+    --------
+    >>> max_balls(7.938e-3, 38.5e-3)
+    15
+    """
+    return math.floor(math.pi / math.asin(min(ball_diameter / pitch_diameter, 1.0)) + 1e-9)
 
 
 def _positive(name, value, unit, *, optional=True):
@@ -126,6 +159,9 @@ class BallBearing:
         Number of sealed sides, 0, 1 or 2.
     seal_diameter : float
         Seal counterface diameter d_s (SKF: the shoulder diameter the lip runs on). [m]
+    inner_shoulder_height, outer_shoulder_height : float
+        Height of the raceway shoulder on the loaded side above the groove bottom, for the check of a
+        truncated contact ellipse (:mod:`bearinglab.limits`; a default fraction of D when not given). [m]
 
     Examples
     --------
@@ -157,6 +193,8 @@ class BallBearing:
     seal: str | None = None
     seals: int | None = None
     seal_diameter: float | None = None
+    inner_shoulder_height: float | None = None
+    outer_shoulder_height: float | None = None
 
     def __post_init__(self):
         if self.n_balls is not None and (
@@ -165,12 +203,14 @@ class BallBearing:
             raise InputError(f"n_balls must be an integer >= 1 [-], got {self.n_balls!r}")
         for name, unit in (("ball_diameter", "m"), ("pitch_diameter", "m"), ("bore", "m"),
                            ("outside_diameter", "m"), ("width", "m"), ("static_load_rating", "N"),
-                           ("dynamic_load_rating", "N"), ("fatigue_load_limit", "N"), ("seal_diameter", "m")):
+                           ("dynamic_load_rating", "N"), ("fatigue_load_limit", "N"), ("seal_diameter", "m"),
+                           ("inner_shoulder_height", "m"), ("outer_shoulder_height", "m")):
             _positive(name, getattr(self, name), unit)
         for name in ("inner_conformity", "outer_conformity"):
             f = getattr(self, name)
             if f is not None and not (isinstance(f, (int, float, np.floating)) and 0.5 < f < 10.0):
-                raise InputError(f"{name} must be in (0.5, 10) [-], got {f!r}")
+                raise InputError(f"{name} must be in (0.5, 10) [-], got {f!r} (the groove radius f D must "
+                                 "exceed the ball radius D/2)")
         if (
             self.ball_diameter is not None
             and self.pitch_diameter is not None
@@ -198,7 +238,11 @@ class BallBearing:
                 raise InputError(f"contact_angle must be in [0, 90) [deg], got {math.degrees(a) if isinstance(a, (int, float)) else a!r}")
         if self.radial_clearance is not None:
             _positive("radial_clearance", self.radial_clearance, "m", optional=False)
+        self._check_fit()
+        self._check_shoulders()
         has_f = self.inner_conformity is not None and self.outer_conformity is not None and self.ball_diameter is not None
+        if self.contact_angle is not None and self.radial_clearance is not None and has_f:
+            self._check_angle_matches_clearance()
         if self.contact_angle is None and self.radial_clearance is not None:
             if not has_f:
                 raise InputError("radial_clearance needs both groove conformities and the ball diameter to give a contact angle")
@@ -213,6 +257,49 @@ class BallBearing:
             e = float(geometry.radial_clearance(self.contact_angle, self.ball_diameter,
                                                 self.inner_conformity, self.outer_conformity))
             object.__setattr__(self, "radial_clearance", e)
+
+    def _check_fit(self):
+        """The balls fit on the pitch circle, and the ball set fits between bore and outside diameter."""
+        z, d, dm = self.n_balls, self.ball_diameter, self.pitch_diameter
+        if z is not None and d is not None and dm is not None and z > 1:
+            z_max = max_balls(d, dm)
+            if z > z_max:
+                raise InputError(
+                    f"n_balls must be <= {z_max} [-] for balls of {d * 1e3:g} mm on a {dm * 1e3:g} mm pitch "
+                    f"diameter (neighbouring balls would overlap: the pitch circle holds at most {z_max}), "
+                    f"got {z}")
+        if dm is not None and self.bore is not None and not dm - (d or 0.0) > self.bore:
+            what = "pitch_diameter - ball_diameter" if d else "pitch_diameter"
+            raise InputError(f"{what} must be > bore [mm] (the balls run outside the bore), got "
+                             f"{(dm - (d or 0.0)) * 1e3:g} mm with bore = {self.bore * 1e3:g} mm")
+        if dm is not None and self.outside_diameter is not None and not dm + (d or 0.0) < self.outside_diameter:
+            what = "pitch_diameter + ball_diameter" if d else "pitch_diameter"
+            raise InputError(f"{what} must be < outside_diameter [mm] (the balls run inside the outer ring), "
+                             f"got {(dm + (d or 0.0)) * 1e3:g} mm with outside_diameter = "
+                             f"{self.outside_diameter * 1e3:g} mm")
+
+    def _check_shoulders(self):
+        """A shoulder lies between the groove bottom and the ball centre: 0 < h < f D."""
+        for race in ("inner", "outer"):
+            h, f = getattr(self, f"{race}_shoulder_height"), getattr(self, f"{race}_conformity")
+            if h is not None and f is not None and self.ball_diameter is not None and not h < f * self.ball_diameter:
+                raise InputError(f"{race}_shoulder_height must be < the groove radius {f * self.ball_diameter * 1e3:.4g} "
+                                 f"mm [mm] (a shoulder lower than the groove's centre), got {h * 1e3:g} mm")
+
+    def _check_angle_matches_clearance(self):
+        """A contact angle given together with a clearance must be the one the clearance implies."""
+        implied = float(geometry.free_contact_angle(
+            min(self.radial_clearance, 4.0 * self.groove_distance * (1 - 1e-15)), self.ball_diameter,
+            self.inner_conformity, self.outer_conformity))
+        e = float(geometry.radial_clearance(self.contact_angle, self.ball_diameter, self.inner_conformity,
+                                            self.outer_conformity))
+        if abs(implied - self.contact_angle) > ANGLE_CLEARANCE_TOLERANCE and \
+                abs(e - self.radial_clearance) > CLEARANCE_TOLERANCE * self.radial_clearance:
+            raise InputError(
+                f"contact_angle and radial_clearance disagree: the clearance "
+                f"{self.radial_clearance * 1e6:.4g} um gives {math.degrees(implied):.4g} deg with these groove "
+                f"radii, not {math.degrees(self.contact_angle):.4g} deg (which needs "
+                f"{e * 1e6:.4g} um); give one of them")
 
     # ------------------------------------------------------------------ constructors
     @classmethod

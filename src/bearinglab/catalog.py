@@ -8,6 +8,8 @@ load_bearing_file   a single-bearing TOML file -> BallBearing
 builtin             the built-in catalog
 get                 look a bearing up by name or alias (built-ins, then user catalogs)
 names               the names of all bearings visible
+aliases             the aliases of each name (for listings)
+read_toml           any TOML input file: UTF-8 (a byte-order mark is skipped), errors naming the file
 
 File format (quantities are strings with units)::
 
@@ -28,6 +30,8 @@ File format (quantities are strings with units)::
     seal = "RS1"                              # seal type, seals (sealed sides, 0-2),
     seals = 2                                 # seal_diameter (seal counterface d_s)
     seal_diameter = "59.5 mm"
+    inner_shoulder_height = "6.7 mm"          # optional: shoulder heights above the groove bottom, for
+    outer_shoulder_height = "6.7 mm"          # the truncation check (bearinglab.limits)
 
 Materials: ``ball_material`` / ``ring_material`` name a built-in material (steel, silicon_nitride) or a
 ``[materials."NAME"]`` table of the same file (``elastic_modulus``, ``poisson_ratio``, ``density``);
@@ -49,19 +53,22 @@ from .bearing import MATERIALS, STEEL, BallBearing, Material
 from .errors import CatalogError, InputError
 from .units import parse_quantity
 
-__all__ = ["ENV_VAR", "bearing_from_table", "builtin", "get", "load_bearing_file", "load_catalog", "names"]
+__all__ = [
+    "ENV_VAR", "aliases", "bearing_from_table", "builtin", "get", "load_bearing_file", "load_catalog", "names", "read_toml",
+]
 
 ENV_VAR = "BEARINGLAB_CATALOG"
 
 _LENGTHS = ("ball_diameter", "pitch_diameter", "bore", "outside_diameter", "width", "radial_clearance",
-            "seal_diameter")
+            "seal_diameter", "inner_shoulder_height", "outer_shoulder_height")
 _FORCES = ("static_load_rating", "dynamic_load_rating", "fatigue_load_limit")
 _KNOWN = {
     "balls", "ball_diameter", "pitch_diameter", "inner_groove_radius", "outer_groove_radius",
     "inner_conformity", "outer_conformity", "contact_angle", "radial_clearance", "bore",
     "outside_diameter", "width", "type", "static_load_rating", "ball_material", "ring_material",
     "source", "aliases", "hertz_table", "designation", "dynamic_load_rating", "fatigue_load_limit",
-    "series", "seal", "seals", "seal_diameter", "elastic_modulus", "poisson_ratio",
+    "series", "seal", "seals", "seal_diameter", "elastic_modulus", "poisson_ratio", "inner_shoulder_height",
+    "outer_shoulder_height",
 }
 _MATERIAL_KEYS = {"elastic_modulus": "pressure", "poisson_ratio": "dimensionless", "density": "density"}
 
@@ -210,17 +217,57 @@ def bearing_from_table(table, *, name="", file=None, materials=None):
         raise CatalogError(f"{where}, field {file_key!r}: {msg}") from None
 
 
-def _read_toml(path):
+def read_toml(path):
+    """Read a TOML input file: UTF-8 text, with or without a byte-order mark.
+
+    Parameters
+    ----------
+    path : str or Path
+        The file; it is only read.
+
+    Returns
+    -------
+    dict
+        The parsed document.
+
+    Raises
+    ------
+    CatalogError
+        Naming the file: it does not exist, cannot be read, is not UTF-8 text (Latin-1, UTF-16, binary)
+        or is not valid TOML.
+
+    Examples
+    --------
+    >>> read_toml("no-such-file.toml")
+    Traceback (most recent call last):
+    ...
+    bearinglab.errors.CatalogError: no-such-file.toml: no such file
+    """
     path = Path(path)
     try:
-        with open(path, "rb") as fh:
-            return tomllib.load(fh)
+        data = path.read_bytes()
     except FileNotFoundError:
         raise CatalogError(f"{path}: no such file") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise CatalogError(f"{path}: not valid TOML: {exc}") from None
+    except IsADirectoryError:
+        raise CatalogError(f"{path}: is a directory, not a file") from None
     except OSError as exc:
         raise CatalogError(f"{path}: cannot read: {exc.strerror}") from None
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        raise CatalogError(f"{path}: the file is UTF-16 text; save it as UTF-8")
+    try:
+        text = data.decode("utf-8-sig")  # a byte-order mark is simply skipped
+    except UnicodeDecodeError as exc:
+        raise CatalogError(f"{path}: not a UTF-8 text file (byte {exc.start} is {data[exc.start]:#04x}); "
+                           "save it as UTF-8") from None
+    if "\x00" in text:
+        raise CatalogError(f"{path}: not a text file (it holds NUL bytes)")
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CatalogError(f"{path}: not valid TOML: {exc}") from None
+
+
+_read_toml = read_toml
 
 
 def _entries(doc, file):
@@ -349,6 +396,36 @@ def get(name, *, catalog=None):
     if str(name).lower() in folded:
         return entries[folded[str(name).lower()]]
     raise CatalogError(f"bearing: unknown name {name!r}; known: {', '.join(sorted(entries))}")
+
+
+def aliases(*, catalog=None):
+    """The aliases of the bearings visible, and the name each stands for.
+
+    Parameters
+    ----------
+    catalog : str, Path or list, optional
+        User catalog file(s), in addition to ``BEARINGLAB_CATALOG`` and the built-ins.
+
+    Returns
+    -------
+    dict
+        ``{name: [alias, ...]}`` for the names that have aliases, the aliases sorted.
+
+    Examples
+    --------
+    >>> aliases()["B218"]
+    ['7218B']
+    """
+    entries = _all(catalog)
+    first = {}
+    for name in names(catalog=catalog):
+        first[id(entries[name])] = name
+    out = {}
+    for key, b in entries.items():
+        name = first.get(id(b))
+        if name is not None and key != name:
+            out.setdefault(name, []).append(key)
+    return {k: sorted(v) for k, v in out.items()}
 
 
 def names(*, catalog=None):

@@ -40,18 +40,30 @@ class ConvergenceError(RuntimeError):
         Residual at the last iterate.
     estimate : ndarray or float
         The last iterate; never to be used as a result.
+    reason : str
+        The physical reason, where one is known.
+    physical : bool
+        True when the equations have no physical solution for these inputs (a ball leaving a raceway,
+        an angle leaving its range): the input is impossible, not the solver weak.
+    summary : str
+        The message without the name of the internal function (for the command line).
     """
 
-    def __init__(self, where, *, iterations, residual, estimate, reason=""):
+    def __init__(self, where, *, iterations, residual, estimate, reason="", physical=False):
         self.where = where
         self.iterations = int(iterations)
         self.residual = residual
         self.estimate = estimate
-        worst = np.nanmax(np.abs(np.atleast_1d(np.asarray(residual, dtype=float))))
-        msg = f"{where}: no convergence after {self.iterations} iterations (|residual| = {worst:.3g})"
+        self.reason = reason
+        self.physical = bool(physical)
+        res = np.abs(np.atleast_1d(np.asarray(residual, dtype=float)))
+        res = res[np.isfinite(res)]
+        self.summary = f"no convergence after {self.iterations} iterations"
+        if res.size:
+            self.summary += f" (|residual| = {res.max():.3g})"
         if reason:
-            msg += f": {reason}"
-        super().__init__(msg)
+            self.summary = f"{reason} ({self.summary})" if physical else f"{self.summary}: {reason}"
+        super().__init__(f"{where}: {self.summary}")
 
 
 class ValidityWarning(UserWarning):

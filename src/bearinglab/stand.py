@@ -500,7 +500,15 @@ def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, re
     fa = float(check_positive("axial_load", axial_load, "N"))
     cs = float(check_positive("force_characteristic", force_characteristic, "N"))
     a0 = float(_angle("free_angle", free_angle))
-    x = float(first_approximation(fa / cs, a0)) if x0 is None else float(x0)
+    if x0 is None:  # eq. (3) can overshoot 90 deg at absurd loads: start half-way there at most
+        x = min(float(first_approximation(fa / cs, a0)), 0.5 * (math.pi / 2 - a0))
+    else:
+        x = float(x0)
+        if not 0.0 < x < math.pi / 2 - a0:
+            raise InputError(f"x0 must be in (0, {math.pi / 2 - a0:.6g}) [rad] (the start alpha0 + x0 between the "
+                             f"free angle and 90 deg), got {x0!r}")
+    if max_rows is not None and not (isinstance(max_rows, int) and max_rows >= 1):
+        raise InputError(f"max_rows must be an integer >= 1 [-], got {max_rows!r}")
     rows = []
     limit = max_iter if max_rows is None else max_rows
     settled = False  # the previous step was below xtol: this row is the converged one
@@ -517,6 +525,8 @@ def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, re
         if max_rows is None and (settled or abs(error) < ftol_percent):
             return rows
         dx = float(_newton_step(fa, step_thrust, alpha, a0))
+        while not a0 < a0 + x + dx < math.pi / 2 and abs(dx) > xtol:  # keep the iterate in (alpha0, 90 deg)
+            dx *= 0.5
         settled = abs(dx) < xtol
         x += dx
     if max_rows is None:

@@ -30,7 +30,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import tomllib
 from collections.abc import Callable
 from pathlib import Path
 from typing import NamedTuple
@@ -301,12 +300,7 @@ def load_sweep(path):
         Naming the file, the table and the field.
     """
     path = Path(path)
-    try:
-        doc = tomllib.loads(path.read_text())
-    except FileNotFoundError:
-        raise CatalogError(f"{path}: no such file") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise CatalogError(f"{path}: not valid TOML: {exc}") from None
+    doc = catalog.read_toml(path)
     name = doc.get("model")
     if name not in MODELS:
         _fail(path, "model", f"must be one of {sorted(MODELS)}, got {name!r}")

@@ -207,8 +207,8 @@ def test_torque_human_output(capsys):
             "viscosity: the palmgren model needs --viscosity",
         ),
         (
-            ["--type", "angular", "--contact-angle", "25 deg", "--bore", "8 mm", "-R", "1 N"],
-            "contact_angle must be one of the Table 1 angles",
+            ["--type", "angular", "--contact-angle", "27 deg", "--bore", "8 mm", "-R", "1 N"],
+            "contact_angle must be one of the Table 1 or ISO 76 angles",
         ),
         (["-R", "1 N"], "bearing: give --bearing NAME"),
         (["-b", "nosuch", "-R", "1 N"], "unknown name 'nosuch'"),

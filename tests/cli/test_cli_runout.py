@@ -85,6 +85,7 @@ def test_refine_json(capsys):
 
 def test_sequence_json(capsys, tmp_path):
     csv_path = tmp_path / "sub" / "trajectory.csv"
+    (tmp_path / "sub").mkdir()  # an output's directory must exist (issue 15 item 17)
     code, out, err = run(
         capsys,
         "runout",
@@ -268,7 +269,7 @@ def test_monte_carlo_text_and_bearing(capsys):
         (["runout", "--errors", EX3, "--bearing", "7218B", "--geometry", MC], "not both"),
         (["runout", "--errors", EX3, "--bearing", "nosuch"], "unknown name 'nosuch'"),
         (["runout", "--errors", EX3, "--csv", "x.csv"], "--csv writes a trajectory"),
-        (["runout", "--errors", EX3, "--revolutions", "0"], "revolutions must be >= 1"),
+        (["runout", "--errors", EX3, "--revolutions", "0"], "revolutions must be an integer >= 1"),
         (["runout", "--errors", EX3, "monte-carlo"], "--errors given before 'monte-carlo'"),
         (["runout", "monte-carlo"], "give --geometry FILE or --bearing NAME"),
         (

@@ -41,11 +41,18 @@ def test_table1_radial_row_and_vectorized_angles():
 
 def test_table1_rejects_untabulated_angle_unless_factors_given():
     with pytest.raises(
-        InputError, match=r"contact_angle must be one of the Table 1 angles .* got 25\.0"
+        InputError, match=r"contact_angle must be one of the Table 1 or ISO 76 angles .* got 27\.0"
     ):
-        friction.static_load_factors("angular", 25 * DEG)
+        friction.static_load_factors("angular", 27 * DEG)
     with pytest.raises(InputError, match="contact_angle must be one of the Table 1"):
-        friction.equivalent_static_load(100.0, 50.0, bearing_type="angular", contact_angle=25 * DEG)
+        friction.equivalent_static_load(100.0, 50.0, bearing_type="angular", contact_angle=27 * DEG)
+
+
+def test_iso76_standard_angles_take_the_iso_row():
+    """Issue 15 item 12: 15, 25 and 40 deg bearings get X0/Y0 of ISO 76:2006 table 1."""
+    got = friction.static_load_factors("angular", np.radians([15.0, 25.0, 40.0, 45.0]))
+    assert_allclose(got.radial_factor, 0.5, rtol=0, atol=0)
+    assert_allclose(got.axial_factor, [0.46, 0.38, 0.26, 0.22], rtol=0, atol=0)  # ISO 76 table 1
     p0 = friction.equivalent_static_load(
         100.0,
         50.0,

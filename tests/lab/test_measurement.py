@@ -256,7 +256,7 @@ def test_inline_bearing_and_handbook_overrides(tmp_path):
 def test_angular_bearing_outside_table1_needs_x0_y0(tmp_path):
     text = S1_TEXT.replace(
         'catalog = "18"',
-        'type = "angular"\ncontact_angle = "25 deg"\nbore = "8 mm"\n'
+        'type = "angular"\ncontact_angle = "27 deg"\nbore = "8 mm"\n'
         'outside_diameter = "19 mm"\nstatic_load_rating = "1354 N"',
     )
     path = write_session(tmp_path, toml=text)
@@ -264,7 +264,7 @@ def test_angular_bearing_outside_table1_needs_x0_y0(tmp_path):
     with pytest.raises(
         InputError,
         match=rf"line {line}, field 'bearing\.contact_angle': contact_angle must be one of "
-        r"the Table 1 angles .* or give x0 and y0 in \[handbook\]",
+        r"the Table 1 or ISO 76 angles .* or give x0 and y0 in \[handbook\]",
     ):
         measurement.read_session(path)
     s = measurement.read_session(

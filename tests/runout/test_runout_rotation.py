@@ -167,3 +167,13 @@ def test_cage_override_changes_the_ball_motion(g):
     # ball 1 drives the ring away from itself: the centre sits opposite ball 1
     ang = np.arctan2(t.displacement.y, t.displacement.x)
     assert_allclose(np.cos(ang - (t.displacement.ball_angle[:, 0] + np.pi)), 1.0, atol=1e-9)
+
+
+def test_spectrum_line_is_labelled_at_its_true_order():
+    """Issue 15 item 11: kappa = 0.436 over three revolutions sits in the bin 1/3; the line is at 0.436."""
+    n = 64
+    psi = 2 * np.pi * np.arange(3 * n) / n
+    sp = R.runout_spectrum(0 * psi, 0 * psi, np.cos(0.436 * psi), n)
+    (line,) = [ln for ln in R.spectrum_lines(sp, 0.436) if ln.component == "axial"]
+    assert line.label == "κ" and line.order == pytest.approx(0.436, abs=1e-15)
+    assert line.bin_order == pytest.approx(1 / 3) and line.resolution == pytest.approx(1 / 3)

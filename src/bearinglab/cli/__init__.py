@@ -20,8 +20,9 @@ every command shares (bearing, execution, JSON) and the output helpers are in ``
 no command module imports this package. Importing this package builds the whole application: :data:`app` lists every
 command, for the console script, ``python -m bearinglab``, test runners and documentation tools alike.
 
-Errors in the input print one line on stderr and exit with code 2; a solver that does not converge
-prints one line and exits with code 3. No traceback reaches the user.
+Errors in the input print one line on stderr and exit with code 2, as do inputs for which the model
+has no physical solution (a ball leaving its raceway); a solver that does not converge prints one line
+and exits with code 3. No traceback reaches the user, and numpy's floating-point warnings are not shown.
 
 Functions
 ---------
@@ -36,11 +37,15 @@ from __future__ import annotations
 import contextlib
 import io
 import json
+import re
 import sys
 import threading
+import warnings
+from pathlib import Path
 from typing import NamedTuple
 
 import typer
+import typer.main
 
 from .. import __version__
 from ..errors import ConvergenceError, InputError
@@ -85,6 +90,30 @@ for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, fric
             app.command(_name)(_command)
 
 
+_CLICK = {}
+
+
+def _click_command():
+    """The click command of :data:`app`, built once: typer builds it anew on every call, which costs more
+    than most commands (about 60 % of a run). Commands are registered on import, before any run."""
+    if "app" not in _CLICK:
+        _CLICK["app"] = typer.main.get_command(app)
+    return _CLICK["app"]
+
+
+# the temporary file of an atomic write (bearinglab._io.atomic_output): ".NAME.RANDOM.SUFFIX" -> NAME
+_TEMPORARY = re.compile(r"^\.(?P<name>.+)\.[A-Za-z0-9_]{8}\.[A-Za-z0-9]+$")
+
+
+def _target_name(filename):
+    """The file the user named, not the temporary file an atomic write was using when it failed."""
+    if not filename:
+        return ""
+    path = Path(str(filename))
+    m = _TEMPORARY.match(path.name)
+    return str(path.with_name(m.group("name"))) if m else str(path)
+
+
 def main(argv=None) -> int:
     """Run the command line; return the exit code instead of raising (tests call this).
 
@@ -96,10 +125,14 @@ def main(argv=None) -> int:
     Returns
     -------
     int
-        0 on success, 2 for invalid input (one line on stderr), 3 for a solve that did not converge.
+        0 on success, 2 for invalid or physically impossible input (one line on stderr), 3 for a solve
+        that did not converge.
     """
     try:
-        rv = app(args=argv, prog_name="bearinglab", standalone_mode=False)
+        with warnings.catch_warnings():
+            # numpy's floating-point warnings are no message for a user: every result is checked finite
+            warnings.simplefilter("ignore", RuntimeWarning)
+            rv = _click_command().main(args=argv, prog_name="bearinglab", standalone_mode=False)
     except _USAGE_ERRORS as exc:
         if exc.format_message():  # empty after no_args_is_help has printed the help
             print(f"bearinglab: error: {exc.format_message()}", file=sys.stderr)
@@ -109,14 +142,14 @@ def main(argv=None) -> int:
     except typer.Abort:
         print("bearinglab: aborted", file=sys.stderr)
         return 1
-    except ConvergenceError as exc:
-        print(f"bearinglab: error: {exc}", file=sys.stderr)
-        return 3
+    except ConvergenceError as exc:  # no physical solution: the input is impossible (2); else the solver (3)
+        print(f"bearinglab: error: {exc.summary}", file=sys.stderr)
+        return 2 if exc.physical else 3
     except InputError as exc:
         print(f"bearinglab: error: {exc}", file=sys.stderr)
         return 2
     except OSError as exc:
-        print(f"bearinglab: error: {exc.filename or ''}: {exc.strerror}", file=sys.stderr)
+        print(f"bearinglab: error: {_target_name(exc.filename)}: {exc.strerror or exc}", file=sys.stderr)
         return 2
     return rv if isinstance(rv, int) else 0
 

@@ -3,8 +3,10 @@
 Bearing options  BearingName, BearingFile, CatalogFile and the inline geometry; resolve_bearing
 Execution        ExecutorOpt, WorkersOpt, ChunkSizeOpt; execution (one parallel.Execution with the
                  command's progress bar)
-Output           console, emit_json (one JSON document on stdout), table (a rich table), emit_csv
-Input checks     choice, check_directory
+Output           console, emit_json (one JSON document on stdout), table (a rich table), emit_csv,
+                 print_warnings
+Inputs echoed    inputs_echo (the bearing as used, the overrides, the quantities given)
+Input checks     choice, check_directory, check_output (directory and suffix of an output file)
 
 The command modules import these; none of them imports the package ``bearinglab.cli`` itself, so the
 application is built on import without a cycle.
@@ -14,13 +16,17 @@ from __future__ import annotations
 
 import contextlib
 import dataclasses
+import math
+import re
 import sys
+import weakref
 from pathlib import Path
 from typing import Annotated
 
 import typer
 from rich.console import Console
 from rich.markup import escape
+from rich.measure import Measurement
 from rich.table import Table
 
 from .. import catalog as _catalog
@@ -93,8 +99,8 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
     elif radial_clearance is not None:
         changes["radial_clearance"] = parse_quantity(radial_clearance, "length", "radial-clearance")
         changes["contact_angle"] = None
-    elif "inner_conformity" in changes or "outer_conformity" in changes:
-        # new conformities keep the angle and re-derive the clearance
+    elif {"inner_conformity", "outer_conformity", "ball_diameter"} & set(changes):
+        # a new ball or new grooves keep the angle and re-derive the clearance
         changes["radial_clearance"] = None
     if ball_material is not None:
         key = ball_material.lower().replace("-", "_")
@@ -105,7 +111,65 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
         if not (bearing or bearing_file):
             raise InputError("bearing: give --bearing NAME, --bearing-file FILE or the inline geometry (--balls, --ball-diameter, ...)")
         return base
-    return dataclasses.replace(base, **changes)
+    given = {"balls": balls, "ball-diameter": ball_diameter, "pitch-diameter": pitch_diameter,
+             "inner-groove-radius": inner_groove_radius, "outer-groove-radius": outer_groove_radius,
+             "inner-conformity": inner_conformity, "outer-conformity": outer_conformity,
+             "contact-angle": contact_angle, "radial-clearance": radial_clearance, "ball-material": ball_material}
+    overrides = {k: v for k, v in given.items() if v is not None}
+    label = ", ".join(f"{k} {v}" for k, v in overrides.items())
+    if base.designation != "inline":  # the title and the JSON say that the named bearing was changed
+        changes["designation"] = f"{base.designation} ({label})"
+    b = dataclasses.replace(base, **changes)
+    _OVERRIDES[b] = {"catalog_bearing": base.designation, "overrides": overrides}
+    return b
+
+
+_OVERRIDES = weakref.WeakKeyDictionary()  # bearing -> the catalog bearing and the options that changed it
+
+
+def _clean(value):
+    """A float without the noise of unit conversions (3000.0000000000005 -> 3000.0): 15 digits."""
+    if isinstance(value, float) and math.isfinite(value):
+        return float(f"{value:.15g}")
+    if isinstance(value, dict):
+        return {k: _clean(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_clean(v) for v in value]
+    return value
+
+
+def inputs_echo(bearing, **quantities):
+    """The inputs a result was computed from, for its JSON: the bearing as used and what was given.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing actually used (after the inline options, from :func:`resolve_bearing`).
+    **quantities
+        The loads, speeds and options given, already in engineering units with the unit in the name
+        (``axial_load_N=...``, ``speed_rpm=...``).
+
+    Returns
+    -------
+    dict
+        ``bearing`` (the designation; a changed catalog bearing says what changed), ``geometry``
+        (every known field and derived quantity, :func:`bearinglab.tables.bearing_summary`),
+        ``overrides`` (option -> text as given, and ``catalog_bearing``) where options changed a named
+        bearing, then the quantities. Floats carry 15 significant digits, so that a unit conversion
+        does not show as noise (``3000.0000000000005`` rpm); results are never rounded.
+    """
+    geometry = {k: v for k, v in tables.bearing_summary(bearing).items()
+                if v is not None and k not in ("designation", "source")}
+    out = {"bearing": bearing.designation, "geometry": geometry}
+    try:
+        extra = _OVERRIDES.get(bearing)
+    except TypeError:  # an unhashable bearing cannot have been resolved here
+        extra = None
+    if extra and extra["overrides"]:
+        out["catalog_bearing"] = extra["catalog_bearing"]
+        out["overrides"] = dict(extra["overrides"])
+    out.update(quantities)
+    return _clean(out)
 
 
 def _stderr_console():
@@ -137,21 +201,55 @@ def emit_json(obj):
     sys.stdout.write(tables.json_text(obj))
 
 
+# a cell that is a number (with its sign, exponent, unit marks or a D°M'S" angle): never shortened
+_NUMBER_CELL = re.compile(r"^[-+−]?[\d.,]+(?:[eE][-+]?\d+)?(?:[°'\"′″]\d*[.\d]*)*[\"″]?(?:\s*[%×]?\s*[-+]?[\d.eE]*)*$|^[—-]?$")
+
+
+def _rich_table(title, columns, cells, caption, numeric):
+    t = Table(title=escape(title), caption=caption and escape(caption), header_style="bold")
+    for i, col in enumerate(columns):
+        t.add_column(escape(col), justify="left" if i == 0 else "right", no_wrap=numeric[i],
+                     overflow="fold")
+    for row in cells:
+        t.add_row(*row)
+    return t
+
+
 def table(title, columns, rows, *, caption=None, wide=False):
     """Print a rich table; ``columns`` are header strings, ``rows`` lists of already formatted cells.
 
-    ``wide`` never truncates a cell: the table grows wider than the terminal rather than showing a
-    number as '0.34…'.
+    A number is never shortened ('0.34…'): number columns do not wrap, text columns wrap. A table
+    that still does not fit is printed wider than the console when the output is a file or a pipe,
+    and stacked (one small quantity/value table per row) on a terminal. ``wide`` prints it wide on a
+    terminal too.
     """
-    t = Table(title=escape(title), caption=caption and escape(caption), header_style="bold")
-    for i, col in enumerate(columns):
-        t.add_column(escape(col), justify="left" if i == 0 else "right", no_wrap=wide)
-    for row in rows:
-        t.add_row(*[escape(str(c)) for c in row])
-    if wide:
-        Console(width=max(console.width, 200), highlight=False).print(t)
-    else:
+    cells = [[escape(str(c)) for c in row] for row in rows]
+    numeric = [all(_NUMBER_CELL.match(row[i].strip()) for row in cells if i < len(row))
+               for i in range(len(columns))]
+    t = _rich_table(title, columns, cells, caption, numeric)
+    # the narrowest the table may be: number columns whole, text columns down to their longest word
+    def word(text):
+        return max(text.split() or [""], key=len)
+
+    narrow = _rich_table("", [c if numeric[i] else word(c) for i, c in enumerate(columns)],
+                         [[c if numeric[i] else word(c) for i, c in enumerate(row)] for row in cells], None, numeric)
+    need = Measurement.get(console, console.options.update(width=10**4), narrow).maximum
+    if need <= console.width:
         console.print(t)
+    elif wide or not console.is_terminal:
+        Console(file=console.file, width=Measurement.get(console, console.options.update(width=10**4), t).maximum,
+                highlight=False, force_terminal=console.is_terminal, no_color=console.no_color).print(t)
+    else:
+        for k, row in enumerate(cells, 1):
+            label = f"{title} ({k} of {len(cells)})" if len(cells) > 1 else title
+            console.print(_rich_table(label, ["quantity", "value"], list(zip(map(escape, columns), row)),
+                                      caption if k == len(cells) else None, [False, True]))
+
+
+def print_warnings(notes):
+    """Print the plausibility and validity warnings of a result (yellow), after its tables."""
+    for note in notes:
+        console.print(f"[yellow]warning:[/yellow] {escape(note)}", highlight=False)
 
 
 def emit_csv(path, columns, what="csv"):
@@ -165,6 +263,23 @@ def check_directory(path: Path, what: str) -> None:
     """An output file's directory must exist (a typo must not create a tree of directories)."""
     if not Path(path).parent.is_dir():
         raise InputError(f"{what}: directory {str(Path(path).parent)!r} does not exist")
+
+
+#: Figure formats the ``--plot FILE`` options accept (matplotlib's writers without extra packages).
+FIGURE_SUFFIXES = (".png", ".pdf", ".svg", ".eps", ".ps", ".jpg", ".jpeg", ".tif", ".tiff")
+
+
+def check_output(path, what, suffixes=None):
+    """An output file, checked before anything is computed: its directory exists, it is not a
+    directory itself, and its suffix is one of ``suffixes`` (if given)."""
+    path = Path(path)
+    check_directory(path, what)
+    if path.is_dir():
+        raise InputError(f"{what}: {str(path)!r} is a directory; give a file name")
+    if suffixes is not None and path.suffix.lower() not in suffixes:
+        raise InputError(f"{what}: {str(path)!r} must end in one of {', '.join(suffixes)}, "
+                         f"got {path.suffix or 'no suffix'!r}")
+    return path
 
 
 def choice(name, value, choices):

@@ -14,7 +14,7 @@ from typing import Annotated
 
 import typer
 
-from .. import kinematics, stand, tables
+from .. import kinematics, limits, stand, tables
 from ..errors import InputError
 from ..units import KGF, format_dms, parse_quantity
 from ._common import (
@@ -36,6 +36,7 @@ from ._common import (
     console,
     emit_csv,
     emit_json,
+    inputs_echo,
     resolve_bearing,
     table,
 )
@@ -172,6 +173,9 @@ def _read(speed, outer_speed, axial_load, hertz, harmonics, sidebands, band):
         raise InputError(f"hertz must be one of ['exact', 'table'], got {hertz!r}")
 
     w_in = parse_quantity(speed, "speed", "speed")
+    if w_in < 0:  # one convention in every command: --speed is the inner ring's, >= 0
+        raise InputError(f"speed must be >= 0 [rpm] (the inner-ring speed; give --outer-speed a negative value "
+                         f"for rings turning against each other), got {w_in / _HZ * 60:g} rpm")
     w_out = parse_quantity(outer_speed, "speed", "outer-speed")
     if w_in == w_out:
         raise InputError(
@@ -193,11 +197,9 @@ def _frequencies(b, w_in, w_out, fa, hertz, elastic_constant):
     """Frequencies at the nominal angle, or at the operating angle under ``fa`` with the shift; and
     the angle [rad] they are at."""
     z, d, dm, a0 = b.require("n_balls", "ball_diameter", "pitch_diameter", "contact_angle")
-    out = {
-        "bearing": b.designation,
-        "speed_rpm": w_in / _HZ * 60.0,
-        "outer_speed_rpm": w_out / _HZ * 60.0,
-    }
+    limits.check_speed([w_in, w_out], dm)
+    out = inputs_echo(b, speed_rpm=w_in / _HZ * 60.0, outer_speed_rpm=w_out / _HZ * 60.0,
+                      elastic_constant=elastic_constant)
     shaft_hz = w_in / _HZ
     if fa is not None:
         if not fa > 0:

@@ -22,11 +22,12 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from .. import plots, quasistatic, tables
-from ..errors import InputError, ValidityWarning
+from .. import limits, plots, quasistatic, tables
+from ..errors import ConvergenceError, InputError, ValidityWarning
 from ..plots import high_speed as high_speed_plots
 from ..units import RPM, parse_quantity, parse_values
 from ._common import (
+    FIGURE_SUFFIXES,
     BallDiameter,
     BallMaterial,
     Balls,
@@ -44,12 +45,14 @@ from ._common import (
     OuterRadius,
     PitchDiameter,
     WorkersOpt,
-    check_directory,
+    check_output,
     choice,
     console,
     emit_csv,
     emit_json,
     execution,
+    inputs_echo,
+    print_warnings,
     resolve_bearing,
     table,
 )
@@ -84,36 +87,43 @@ def high_speed(
                         ball_material)
     options = _model_options(solver, raceway_control, constants, gyroscopic_sign, reduced_modulus)
     loads, speeds = _grid(axial_load, speed)
+    limits.check_speed(speeds, b.require("pitch_diameter"))
     if plot is not None and (loads.size < 2 or speeds.size < 1):
         raise InputError("plot: needs a sweep over at least two thrusts (e.g. --axial-load 2.5kN:45kN:2.5kN)")
-    for path, what in ((csv_file, "csv"), (plot, "plot")):
-        if path is not None:
-            check_directory(path, what)
+    if csv_file is not None:
+        check_output(csv_file, "csv")
+    if plot is not None:
+        check_output(plot, "plot", FIGURE_SUFFIXES)
     single = loads.size == 1 and speeds.size == 1
     with execution("solving", executor, workers, chunk_size, progress=not single) as ex:
         state, notes = _solve(b, loads, speeds, options, ex)
+    notes += limits.high_speed_warnings(b, state)
     cols = tables.high_speed(state)
     if csv_file is not None:
         emit_csv(csv_file, cols)
     if plot is not None:
-        fig = high_speed_plots.plot_map(state, title=f"Bearing {b.designation}: high-speed contact angles under thrust")
+        fig = high_speed_plots.plot_map(state, title=f"Bearing {b.designation}: high-speed contact angles under thrust",
+                                        sign_change=_sign_change(b, speeds, options, notes))
         plots.save(fig, plot)
     rows = tables.rows(cols)
     if json_out:
         for note in notes:  # stdout stays one JSON document
             print(f"bearinglab: warning: {note}", file=sys.stderr)
-        if single:
-            emit_json(dict(rows[0], bearing=b.designation, constants=constants, raceway_control=raceway_control,
-                           gyroscopic_sign=gyroscopic_sign, solver=solver, warnings=notes))
+        echo = inputs_echo(b, constants=constants, raceway_control=raceway_control, gyroscopic_sign=gyroscopic_sign,
+                           solver=solver, reduced_modulus_GPa=None if reduced_modulus is None else
+                           options["reduced_modulus"] / 1e9)
+        if single:  # the inputs as given, without the noise of the unit conversions
+            echo.update(inputs_echo(b, axial_load_kN=float(loads[0]) / 1e3, speed_rpm=float(speeds[0]) / RPM))
+            emit_json(dict(rows[0], **echo, warnings=notes))
         else:
-            emit_json(rows)
+            emit_json(dict(echo, axial_load_kN=list(loads / 1e3), speed_rpm=list(speeds / RPM), cases=rows,
+                           warnings=notes))
         return
     if single:
         _print_single(b, rows[0], options)
     else:
         _print_sweep(b, rows, options)
-    for note in notes:
-        console.print(f"[yellow]warning:[/yellow] {note}", highlight=False)
+    print_warnings(notes)
     for path in (csv_file, plot):
         if path is not None:
             console.print(f"wrote {path}", highlight=False)
@@ -160,6 +170,18 @@ def _solve(bearing, loads, speeds, options, ex):
     return state, [str(c.message) for c in caught if issubclass(c.category, ValidityWarning)]
 
 
+def _sign_change(bearing, speeds, options, notes):
+    """The thrust at which delta_a changes sign per speed, from the library's solve (not the grid); None
+    (the figure then interpolates on the grid) with a note if it does not converge."""
+    try:
+        return quasistatic.sign_change_thrust(
+            bearing, speeds, reduced_modulus=options["reduced_modulus"], constants=options["constants"],
+            raceway_control=options["raceway_control"], gyroscopic_sign=options["gyroscopic_sign"])
+    except (ConvergenceError, InputError) as exc:
+        notes.append(f"plot: the delta_a sign change is interpolated on the grid ({exc})")
+        return None
+
+
 def _f(x, spec):
     return "—" if x is None else format(x, spec)
 
@@ -177,7 +199,9 @@ def _print_single(b, r, options):
         ["ball-pass frequency [Hz]", _f(r["bpfi_Hz"], ".2f"), _f(r["bpfo_Hz"], ".2f")],
     ], caption=caption)
     table("Ball and ring", ["quantity", "value"], [
-        ["axial displacement δ_a [mm]", _f(r["axial_displacement_mm"], ".5f")],
+        # printed tables give displacements in µm in every command (JSON and CSV keep the _mm column)
+        ["axial displacement δ_a [µm]", _f(None if r["axial_displacement_mm"] is None
+                                           else r["axial_displacement_mm"] * 1e3, ".2f")],
         ["axial stiffness dF_a/dδ_a [N/µm]", _f(r["axial_stiffness_N_per_um"], ".2f")],
         ["centrifugal force F_c [N]", _f(r["centrifugal_force_N"], ".1f")],
         ["gyroscopic moment M_g [N·mm]", _f(r["gyroscopic_moment_Nmm"], ".1f")],

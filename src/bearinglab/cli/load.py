@@ -30,6 +30,7 @@ from ..plots import load_distribution as load_plots
 from ..quasistatic import combined, rotordynamics, sets
 from ..units import RPM, parse_quantity, parse_values
 from ._common import (
+    FIGURE_SUFFIXES,
     AxialLoadOpt,
     BallDiameter,
     BallMaterial,
@@ -51,7 +52,7 @@ from ._common import (
     OuterRadius,
     PitchDiameter,
     RadialLoadOpt,
-    check_directory,
+    check_output,
     choice,
     console,
     emit_json,
@@ -114,7 +115,7 @@ def load_distribution(
     inner_conformity: InnerConformity = None, outer_conformity: OuterConformity = None,
     contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
     plot: PlotOpt = None,
-    ross: Annotated[Path | None, typer.Option("--ross", help="Write the ROSS BearingElement coefficients (JSON, SI) over the --speed list to this file.")] = None,
+    ross: Annotated[Path | None, typer.Option("--ross", help="Write the ROSS BearingElement coefficients (JSON, SI) over the --speed list to this .json file.")] = None,
     json_out: JsonFlag = False,
 ):
     """Ball bearing under combined load (issue 11): displacement, ball loads, contact angles, pressures, stiffness."""
@@ -125,9 +126,10 @@ def load_distribution(
     w = _speeds(speed, ross is not None)
     phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
     choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
-    for path, what in ((plot, "plot"), (ross, "ross")):
-        if path is not None:
-            check_directory(path, what)
+    if plot is not None:
+        check_output(plot, "plot", FIGURE_SUFFIXES)
+    if ross is not None:
+        check_output(ross, "ross", (".json",))
     r, notes = _solve(combined.combined_analysis, b, np.broadcast_to(loads, w.shape + (5,)), w,
                       first_ball_angle=phi0, stiffness_at=stiffness_at)
     notes = list(dict.fromkeys([*r.warnings, *notes]))
@@ -206,7 +208,7 @@ def bearing_set(
     phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
     choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
     if plot is not None:
-        check_directory(plot, "plot")
+        check_output(plot, "plot", FIGURE_SUFFIXES)
     st, notes = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], loads, w, arrangement_kind=arrangement,
                        spacing=s, preload=fp, preload_displacement=e, first_ball_angle=phi0, stiffness_at=stiffness_at)
     notes = list(dict.fromkeys([*st.warnings, *notes]))

@@ -29,6 +29,7 @@ from ._common import (
     ExecutorOpt,
     JsonFlag,
     WorkersOpt,
+    check_output,
     console,
     emit_json,
     execution,
@@ -38,6 +39,14 @@ from ._common import (
 __all__ = ["COMMANDS"]
 
 UM = 1e-6
+MIN_STEPS_PER_REV = 4  # positions per revolution below which no line of the spectrum is resolved
+
+
+def _check_cage_ratio(cage_ratio):
+    """kappa = cage speed / inner-ring speed lies in (0, 1): the cage turns with the shaft, slower."""
+    if cage_ratio is not None and not 0.0 < cage_ratio < 1.0:
+        raise InputError(f"cage-ratio must be in (0, 1) [-] (the cage turns slower than the inner ring; "
+                         f"(1 - gamma)/2 is about 0.4), got {cage_ratio!r}")
 
 GeometryFile = Annotated[
     Path | None,
@@ -102,8 +111,7 @@ def _geometry(geometry_file, bearing, catalog_file, first_ball_angle):
 
 
 def _atomic_write(path, text):
-    """Write a whole file or nothing, creating its directory."""
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    """Write a whole file or nothing; its directory must exist (checked before the computation)."""
     write_text(path, text)
 
 
@@ -195,6 +203,8 @@ def _sequence_dict(t, lines):
         {
             "component": ln.component,
             "order": ln.order,
+            "bin_order": ln.bin_order,
+            "resolution": ln.resolution,
             "amplitude_um": _um(ln.amplitude),
             "label": ln.label,
             "source": ln.source,
@@ -361,6 +371,9 @@ def runout_command(
         raise InputError(
             "errors: give the error file with --errors FILE (see examples/runout/README.md)"
         )
+    _check_cage_ratio(cage_ratio)
+    if csv_out is not None:
+        check_output(csv_out, "csv")
     g, theta1 = _geometry(geometry, bearing, catalog, first_ball_angle)
     g, e = runout.files.load_error_file(errors, g)
     if theta1 is not None:
@@ -375,12 +388,15 @@ def runout_command(
             "csv: --csv writes a trajectory; give --revolutions N (and --steps-per-rev M)"
         )
     if not sequence:
-        _single(g, e, angle, refine, cage_ratio, plot, json_out)
+        _single(g, e, angle, refine, cage_ratio, plot, json_out, errors)
         return
     revs = 3 if revolutions is None else revolutions
     steps = 360 if steps_per_rev is None else steps_per_rev
-    if revs < 1 or steps < 2:
-        raise InputError(f"revolutions must be >= 1 and steps-per-rev >= 2, got {revs} and {steps}")
+    if revs < 1:
+        raise InputError(f"revolutions must be an integer >= 1 [-], got {revs}")
+    if steps < MIN_STEPS_PER_REV:
+        raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-] (the once-per-revolution "
+                         f"line needs at least four positions per revolution), got {steps}")
     t = runout.rotation_sequence(
         g,
         e,
@@ -403,7 +419,8 @@ def runout_command(
     spec = runout.runout_spectrum(d.x, d.y, d.z, steps)
     lines = runout.spectrum_lines(spec, t.cage_ratio)
     info = _sequence_dict(t, lines)
-    info["geometry"] = _geometry_dict(g)
+    info.update(errors_file=str(errors), start_angle_deg=math.degrees(t.rotation_angle.flat[0]), refine=refine,
+                geometry=_geometry_dict(g))
     if csv_out is not None:
         _atomic_write(csv_out, _trajectory_csv(t))
         info["csv"] = str(csv_out)
@@ -429,12 +446,12 @@ def _reject_options_before(ctx):
         )
 
 
-def _single(g, e, angle, refine, cage_ratio, plot, json_out):
+def _single(g, e, angle, refine, cage_ratio, plot, json_out, errors):
     """The displacement at one rotation angle: compute, draw, print."""
     psi = 0.0 if angle is None else parse_quantity(angle, "angle", "angle", default_unit="deg")
     d = runout.initial_displacement(psi, g, e, refine=refine, cage_ratio=cage_ratio)
     info = _single_dict(d, g)
-    info["geometry"] = _geometry_dict(g)
+    info.update(errors_file=str(errors), refine=refine, cage_ratio=cage_ratio, geometry=_geometry_dict(g))
     if plot is not None:
         info["figures"] = [str(p) for p in _runout_figures().save_single(d, plot)]
     if json_out:
@@ -462,11 +479,14 @@ def _print_sequence(info, t, lines, revs, steps, refine):
     if lines:
         table(
             "Spectral lines",
-            ["component", "order", "amplitude [µm]", "line", "source"],
+            ["component", "order", "bin", "amplitude [µm]", "line", "source"],
             [
-                [ln.component, f"{ln.order:.4f}", f"{_um(ln.amplitude):.6f}", ln.label, ln.source]
+                [ln.component, f"{ln.order:.4f}", f"{ln.bin_order:.4f}", f"{_um(ln.amplitude):.6f}", ln.label,
+                 ln.source]
                 for ln in lines
             ],
+            caption=f"order: the line's true order p·κ + q; bin: the spectrum bin it was found in "
+                    f"(resolution 1/revolutions = {lines[0].resolution:.4g})",
         )
     for key in ("csv", "figures"):
         if key in info:
@@ -532,6 +552,11 @@ def monte_carlo_command(
         raise InputError("geometry: give --geometry FILE or --bearing NAME")
     if samples < 2:
         raise InputError(f"samples must be >= 2 [-], got {samples}")
+    _check_cage_ratio(cage_ratio)
+    if samples_csv is not None:
+        check_output(samples_csv, "samples-csv")
+    if steps_per_rev < MIN_STEPS_PER_REV:
+        raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-], got {steps_per_rev}")
     _check_write_worst(write_worst, worst_by, worst_dir)
     grade = runout.ball_grade(ball_grade)
     rings = runout.ring_class(ring_class)

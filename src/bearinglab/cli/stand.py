@@ -13,7 +13,7 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from .. import stand, tables
+from .. import limits, stand, tables
 from ..errors import InputError
 from ..units import KGF, format_dms, parse_values, to_dms, to_rpm
 from ._common import (
@@ -33,6 +33,8 @@ from ._common import (
     PitchDiameter,
     console,
     emit_json,
+    inputs_echo,
+    print_warnings,
     resolve_bearing,
     table,
 )
@@ -68,6 +70,8 @@ def axial_angle(
         raise InputError(f"hertz must be one of ['exact', 'table'], got {hertz!r}")
     if elastic_constant not in ("materials", "paper"):
         raise InputError(f"elastic-constant must be one of ['materials', 'paper'], got {elastic_constant!r}")
+    if rows is not None and rows < 1:
+        raise InputError(f"rows must be an integer >= 1 [-], got {rows}")
     loads = parse_values(axial_load, "force", "axial-load")
     if np.any(~(loads > 0)):
         raise InputError(f"axial-load must be > 0 [N], got {float(loads[~(loads > 0)][0])!r} N")
@@ -77,10 +81,10 @@ def axial_angle(
     r = stand.stand_analysis(b, loads[0] if scalar else loads, hertz=hertz, reproduce_print=legacy, x0=x0,
                               max_rows=max_rows, elastic_constant=elastic_constant)
     c = r.constants
-    base = {
-        "bearing": b.designation,
-        "hertz": hertz,
-        "elastic_constant": elastic_constant,
+    notes = limits.contact_warnings(b, r.axial_load, r.ball_load, r.ball_load, r.contact_angle, r.contact_angle)
+    base = inputs_echo(b, axial_load_N=list(map(float, np.atleast_1d(loads))) if not scalar else float(loads[0]),
+                       hertz=hertz, elastic_constant=elastic_constant, legacy=legacy, x0_rad=x0, rows=rows)
+    base.update({
         "elastic_constant_cm2_per_kgf_2_3": c.elastic_constant_paper,
         "contact_angle_initial_deg": math.degrees(r.free_angle),
         "gamma": c.gamma,
@@ -94,7 +98,7 @@ def axial_angle(
         "c_outer_cm2_per_kgf_2_3": c.approach_outer_paper,
         "load_deflection_constant_kgf": c.force_characteristic_kgf,
         "load_deflection_constant_N": c.force_characteristic,
-    }
+    })
     if scalar:
         out = dict(base)
         out.update({
@@ -109,6 +113,7 @@ def axial_angle(
             "ball_load_N": float(r.ball_load), "ball_load_kgf": float(r.ball_load) / KGF,
             "converged": True,
             "legacy": legacy,
+            "warnings": notes,
             "iterations": [{"k": row.k, "x_rad": row.x, "contact_angle_deg": math.degrees(row.contact_angle),
                             "contact_angle_dms": _angle_row(row, legacy),
                             "axial_displacement_ratio": row.axial_displacement_ratio,
@@ -119,10 +124,11 @@ def axial_angle(
             emit_json(out)
             return
         _print_single(b, c, out, hertz, legacy)
+        print_warnings(notes)
         return
     cases = [dict(row, converged=True) for row in tables.rows(tables.columns(r, tables.AXIAL_ANGLE))]
     if json_out:
-        emit_json(dict(base, cases=cases))
+        emit_json(dict(base, cases=cases, warnings=notes))
         return
     cstar = np.broadcast_to(c.force_characteristic_kgf, len(cases))
     if np.ndim(c.force_characteristic_kgf) == 0:  # C* at alpha0: one value for all loads, in the title
@@ -134,6 +140,7 @@ def axial_angle(
           [[f"{x['axial_load_kgf']:.4g}", f"{x['axial_load_N']:.4g}", f"{x['operating_contact_angle_deg']:.5f}",
             f"{x['axial_displacement_ratio']:.6f}", f"{x['axial_displacement_mm'] * 1e3:.3f}", f"{x['ball_load_N']:.4g}",
             *e] for x, e in zip(cases, extra)])
+    print_warnings(notes)
 
 
 def _print_single(b, c, out, hertz, legacy):
@@ -171,10 +178,12 @@ def stand_load(
     if np.any(speeds < 0):
         raise InputError(f"speed must be >= 0 [rpm], got {float(to_rpm(speeds[speeds < 0][0]))!r} rpm")
     z, d, dm, a = b.require("n_balls", "ball_diameter", "pitch_diameter", "contact_angle")
+    limits.check_speed(speeds, dm)
     res = stand.min_axial_load(speeds, z, d, dm, a)
     rows = tables.rows(tables.stand_load(speeds, res))
     if json_out:
-        emit_json(dict(rows[0], bearing=b.designation, contact_angle_deg=math.degrees(a)) if len(rows) == 1 else rows)
+        echo = inputs_echo(b, contact_angle_deg=math.degrees(a))
+        emit_json(dict(echo, **rows[0]) if len(rows) == 1 else dict(echo, cases=rows))
         return
     table(f"Bearing {b.designation}: axial load on the stand (α = {math.degrees(a):g}°)",
           ["speed [rpm]", "min [kgf]", "min [N]", "max +20 % [kgf]", "max [N]"],

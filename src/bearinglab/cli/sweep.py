@@ -24,6 +24,7 @@ from ._common import (
     console,
     emit_json,
     execution,
+    inputs_echo,
     table,
 )
 
@@ -49,8 +50,9 @@ def sweep(
     failed = int(n - np.count_nonzero(cols["converged"]))
     if target is not None:
         _sweep.write_table(cols, target)
-    summary = {"model": spec.model.name, "bearing": spec.bearing.designation, "cases": n, "failed": failed,
-               "executor": ex.executor, "output": None if target is None else str(target)}
+    summary = dict(inputs_echo(spec.bearing, sweep_file=str(file), model=spec.model.name,
+                               constants=spec.constants),
+                   cases=n, failed=failed, executor=ex.executor, output=None if target is None else str(target))
     if json_out:
         emit_json(dict(summary, results=tables.rows(cols)))
         return

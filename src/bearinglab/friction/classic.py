@@ -174,8 +174,9 @@ def static_load_factors(bearing_type="radial", contact_angle=None):
     bearing_type : {"radial", "angular"}
         Deep-groove (radial) or angular-contact single-row ball bearing. [-]
     contact_angle : array_like, optional
-        Contact angle of an angular-contact bearing; must be one of the tabulated 18, 20, 26, 30 or
-        36 deg. Ignored for a radial bearing. [rad]
+        Contact angle of an angular-contact bearing; one of the tabulated 18, 20, 26, 30 or 36 deg of
+        Table 1, or one of the standard angles 15, 25, 35, 40, 45 deg of ISO 76:2006 table 1. Ignored
+        for a radial bearing. [rad]
 
     Returns
     -------
@@ -185,12 +186,13 @@ def static_load_factors(bearing_type="radial", contact_angle=None):
     Raises
     ------
     InputError
-        Unknown type, or an angular-contact angle that is not in Table 1 (spec 001 section 3.1
-        forbids interpolation; give x0 and y0 explicitly to the load functions instead).
+        Unknown type, or an angular-contact angle in neither table (spec 001 section 3.1 forbids
+        interpolation; give x0 and y0 explicitly to the load functions instead).
 
     Notes
     -----
-    Spec 001 section 3.1, Table 1.
+    Spec 001 section 3.1, Table 1; the angles it lacks from ISO 76:2006 table 1 (X0 = 0.5 and
+    Y0 = 0.46, 0.38, 0.29, 0.26, 0.22 at 15, 25, 35, 40, 45 deg).
 
     Examples
     --------
@@ -198,6 +200,8 @@ def static_load_factors(bearing_type="radial", contact_angle=None):
     StaticLoadFactors(radial_factor=0.6, axial_factor=0.5)
     >>> [float(v) for v in static_load_factors("angular", np.radians(26.0))]
     [0.5, 0.37]
+    >>> [float(v) for v in static_load_factors("angular", np.radians(40.0))]
+    [0.5, 0.26]
     """
     _check_type(bearing_type)
     if bearing_type == "radial":
@@ -209,11 +213,19 @@ def static_load_factors(bearing_type="radial", contact_angle=None):
         hit = np.abs(deg - angle) <= _ANGLE_TOL_DEG
         x0 = np.where(hit, x, x0)
         y0 = np.where(hit, y, y0)
+    # the standard angles of ISO 76:2006 table 1 that spec 001's table lacks (15, 25, 35, 40, 45 deg;
+    # at 20 and 30 deg both tables agree): the ISO row, not an interpolation
+    from ..ratings.static import _ANGULAR_ANGLES_DEG, _ANGULAR_X0, _ANGULAR_Y0
+
+    for angle, y in zip(_ANGULAR_ANGLES_DEG, _ANGULAR_Y0):
+        hit = np.isnan(x0) & (np.abs(deg - angle) <= _ANGLE_TOL_DEG)
+        x0 = np.where(hit, _ANGULAR_X0, x0)
+        y0 = np.where(hit, y, y0)
     missing = np.isnan(x0)
     if missing.any():
-        rows = ", ".join(f"{a:g}" for a in ANGULAR_STATIC_FACTORS)
+        rows = ", ".join(f"{a:g}" for a in sorted({*ANGULAR_STATIC_FACTORS, *_ANGULAR_ANGLES_DEG}))
         raise InputError(
-            f"contact_angle must be one of the Table 1 angles ({rows}) [deg] unless x0 and y0 "
+            f"contact_angle must be one of the Table 1 or ISO 76 angles ({rows}) [deg] unless x0 and y0 "
             f"are given explicitly, got {float(deg[missing].flat[0])!r}"
         )
     return StaticLoadFactors(_scalar(x0), _scalar(y0))

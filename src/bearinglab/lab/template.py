@@ -119,9 +119,14 @@ def template(*, bearing=None):
         block = _BEARING_BLANK
     else:
         b = _catalog.get(bearing)
+
+        def known(value, scale, unit):  # a catalog entry may lack the envelope or C0 (B218, 4-1006095)
+            return "not in the catalog" if value is None else f"{value * scale:g} {unit}"
+
+        dm = None if b.bore is None or b.outside_diameter is None else b.mean_diameter
         block = (
-            f'catalog = "{bearing}"          # {b.type}, d = {b.bore * 1e3:g} mm, d_m = '
-            f"{b.mean_diameter * 1e3:g} mm, C0 = {b.static_load_rating:g} N\n"
+            f'catalog = "{bearing}"          # {b.type}, d = {known(b.bore, 1e3, "mm")}, d_m = '
+            f"{known(dm, 1e3, 'mm')}, C0 = {known(b.static_load_rating, 1.0, 'N')}\n"
             "# Fields given here override the catalog (type, contact_angle, bore, mean_diameter,\n"
             "# outside_diameter, static_load_rating)."
         )

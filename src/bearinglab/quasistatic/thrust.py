@@ -62,7 +62,9 @@ __all__ = [
     "zero_displacement_thrust",
 ]
 
-_SWEEP_CHUNK_SIZE = 20_000  # cases per chunk of sweep() when the execution does not say
+_SWEEP_CHUNK_SIZE = 20_000
+# statuses that mean the inputs have no physical solution (not a weak solver): the ball leaves a raceway
+_NO_SOLUTION = ("inner_contact_lost", "outer_contact_lost", "angle_out_of_range")  # cases per chunk of sweep() when the execution does not say
 
 # --------------------------------------------------------------------------- results
 class HighSpeedState(NamedTuple):
@@ -289,7 +291,8 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
                                residual=out["residual"][k] if np.isfinite(out["residual"][k]) else np.inf,
                                estimate=v[k] * model.d[k],
                                reason=f"{_STATUS_TEXT[status[k]]} at F_a = {model.fa[k]:g} N, "
-                                      f"{wf[k] / RPM:g} rpm ({failed.size} of {n} cases failed)")
+                                      f"{wf[k] / RPM:g} rpm ({failed.size} of {n} cases failed)",
+                               physical=STATUS[status[k]] in _NO_SOLUTION)
     high = ok & (out["friction_coefficient"] > friction_limit)
     if high.any():
         k = np.flatnonzero(high)[0]

@@ -22,12 +22,12 @@ from __future__ import annotations
 
 import json
 import math
-import tomllib
 from pathlib import Path
 
 import numpy as np
 
 from .._io import write_text
+from ..catalog import read_toml
 from ..errors import CatalogError, InputError
 from ..units import parse_quantity
 from .deviations import (
@@ -122,28 +122,7 @@ class _Ctx:
 
 def _load(ctx):
     """The parsed TOML document of ``ctx.path``; every failure is a CatalogError naming the file."""
-    try:
-        with open(ctx.path, "rb") as fh:
-            return tomllib.load(fh)
-    except FileNotFoundError:
-        raise CatalogError(f"{ctx.path}: no such file") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise CatalogError(f"{ctx.path}: not valid TOML: {exc}") from None
-    except OSError as exc:
-        raise CatalogError(f"{ctx.path}: cannot read: {exc.strerror}") from None
-
-
-def _load(ctx):
-    """The parsed TOML document of ``ctx.path``; every failure is a CatalogError naming the file."""
-    try:
-        with open(ctx.path, "rb") as fh:
-            return tomllib.load(fh)
-    except FileNotFoundError:
-        raise CatalogError(f"{ctx.path}: no such file") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise CatalogError(f"{ctx.path}: not valid TOML: {exc}") from None
-    except OSError as exc:
-        raise CatalogError(f"{ctx.path}: cannot read: {exc.strerror}") from None
+    return read_toml(ctx.path)
 
 
 def load_error_file(path, geometry=None):

@@ -23,7 +23,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .._solve import RUNOUT_REFINE_MAX_ITER, RUNOUT_REFINE_TOL
-from .._validate import check_finite, check_integer
+from .._validate import check_finite, check_integer, check_open_interval
 from ..errors import InputError
 from .contact import Displacement, initial_displacement
 
@@ -262,7 +262,7 @@ def rotation_sequence(
     kappa = (
         geometry.cage_ratio
         if cage_ratio is None
-        else float(check_finite("cage_ratio", cage_ratio, "-"))
+        else float(check_open_interval("cage_ratio", cage_ratio, 0.0, 1.0, "-"))  # the cage turns slower
     )
     disp = initial_displacement(
         psi,
@@ -366,6 +366,8 @@ class SpectrumLine(NamedTuple):
     shaft_harmonic: int  # q in p kappa + q
     source: str  # "cage" (q = 0), "ring" (p = 0, synchronous), "cage+ring" or "unassigned"
     label: str  # e.g. "16κ", "1×", "16κ−1×"
+    bin_order: float = float("nan")  # the order of the spectrum bin the line was found in [-]
+    resolution: float = float("nan")  # bin spacing 1/N_revs: the bin order is within half of it [-]
 
 
 def _label(p, q):
@@ -412,7 +414,9 @@ def spectrum_lines(
     Cage lines (q = 0) come from the balls and from the fixed outer ring; ring lines (p = 0) are
     synchronous (inner-ring errors carried round with the shaft); the others mix both. A line is
     assigned to the simplest combination within half the resolution 1/N_revs; with few revolutions
-    several combinations can fit and the simplest is taken, so use many revolutions for spectra.
+    several combinations can fit and the simplest is taken, so use many revolutions for spectra. The
+    line's ``order`` is the true order p kappa + q of its combination (``bin_order`` is the bin it was
+    found in, within ``resolution``/2 of it); an unassigned line keeps its bin order.
 
     Examples
     --------
@@ -456,9 +460,10 @@ def spectrum_lines(
                 pi, qi = np.unravel_index(c.argmin(), c.shape)
                 pp, qq = int(p[pi, 0]), int(q[0, qi])
                 src = "cage" if qq == 0 else ("ring" if pp == 0 else "cage+ring")
-                out.append(SpectrumLine(name, float(f), float(a[i]), pp, qq, src, _label(pp, qq)))
+                out.append(SpectrumLine(name, float(pp * kappa + qq), float(a[i]), pp, qq, src, _label(pp, qq),
+                                        float(f), float(res)))
             else:
                 out.append(
-                    SpectrumLine(name, float(f), float(a[i]), 0, 0, "unassigned", f"{f:.4g}×")
+                    SpectrumLine(name, float(f), float(a[i]), 0, 0, "unassigned", f"{f:.4g}×", float(f), float(res))
                 )
     return tuple(out)

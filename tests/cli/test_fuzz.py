@@ -1,0 +1,235 @@
+"""Issue 15: a fuzz test of the whole command line.
+
+Every command of the application (found by walking the typer app, so a new command is fuzzed without
+a line here) is run in-process with random options: values with and without units, lists, ranges,
+garbage, and files of random bytes. Only three outcomes are allowed:
+
+* exit 0, and no ``nan`` or ``inf`` in what was printed;
+* exit 2 with one line ``bearinglab: error: ...`` on stderr (invalid or impossible input);
+* exit 3 with one line (a genuine non-convergence).
+
+No traceback, no numpy warning, nothing else. The value pools keep every run small (a few cases per
+command), and the slow commands get fewer examples, so that the CI run (derandomized, see
+tests/conftest.py) of over 2000 examples stays near a minute and a half on two workers.
+``BEARINGLAB_FUZZ_EXAMPLES`` sets the examples per command (default 220) for a longer local hunt.
+"""
+
+import os
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+import typer.main
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from bearinglab.cli import app, main
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLES = ROOT / "examples"
+EXAMPLES_PER_COMMAND = int(os.environ.get("BEARINGLAB_FUZZ_EXAMPLES", "220"))
+# commands whose runs take 10 to 50 times longer (plots, reports, sweeps, sequences): fewer examples
+SLOW = {("sweep",): 4, ("friction", "lab"): 8, ("runout",): 2, ("runout", "monte-carlo"): 2}
+
+
+def _commands():
+    """(path of names, click command) for every leaf command and every group that runs on its own."""
+    out = []
+
+    def walk(cmd, path):
+        subs = getattr(cmd, "commands", None)
+        if (subs is None or getattr(cmd, "invoke_without_command", False)) and path:
+            out.append((tuple(path), cmd))
+        for name, sub in (subs or {}).items():
+            walk(sub, [*path, name])
+
+    walk(typer.main.get_command(app), [])
+    return out
+
+
+# commands that do not return (a server): not fuzzed in-process
+NOT_FUZZED = {("serve",)}
+COMMANDS = {p: c for p, c in _commands() if p not in NOT_FUZZED}
+
+QUANTITIES = [
+    "2 kgf", "19.6 N", "20 kN", "0.05 kN", "1e9 N", "-5 N", "0 N", "1e-30 N", "2,5 kN", "1 kN, 5 kN",
+    "1kN:3kN:1kN", "3000 rpm", "0 rpm", "-3000 rpm", "10000 1/min", "50 Hz", "1e12 rpm", "15000 RPM",
+    "12 deg", "40 deg", "95 deg", "-1 deg", "14°28'03\"", "0.21 rad", "2 mm", "7.938 mm", "38.5 mm", "0 mm",
+    "-2 mm", "1e300 mm", "9 um", "100 um", "2 m", "208 GPa", "0.07 N*mm", "20 cSt", "2 %", "0.52", "0.5",
+    "nan", "inf", "-inf", "1e309", "", " ", "abc", "2 3 kgf", "1 000 N", "kgf", "2 kgf kgf", ";", ":", ",",
+    "1:2", "1kN:0kN:1kN", "0,3000,6000rpm", "é", "\x00", "--json",
+]
+NUMBERS = ["-1", "0", "1", "2", "3", "7", "9", "16", "0.5", "0.52", "1.5", "-0.5", "1e9", "nan", "inf", "x"]
+NAMES = ["B218", "7218B", "4-1006095", "6205-2RS", "18", "61811-2RS1", "b218", "no-such-bearing", "", "G5",
+         "P4", "newton", "outer", "mass", "harris", "exact", "table", "paper", "materials", "serial", "bogus",
+         "steel", "silicon_nitride", "radial_ptp_max", "palmgren", "one-term"]
+RUNOUT_FILES = [EXAMPLES / "runout" / "example1_oversize_ball.toml", EXAMPLES / "runout" / "example4_tilt.toml"]
+BEARING_FILE = ('[bearings."X"]\nballs = 9\nball_diameter = "7.938 mm"\npitch_diameter = "38.5 mm"\n'
+                'inner_conformity = 0.52\nouter_conformity = 0.53\ncontact_angle = "15 deg"\n')
+# the valid files of an input option, by the command's first word and the parameter's name
+VALID_FILES = {
+    ("runout", "errors"): RUNOUT_FILES, ("runout", "geometry"): RUNOUT_FILES,
+    ("sweep", "file"): [EXAMPLES / "sweep" / "stand_geometry_variants.toml"],
+    ("friction", "file"): [EXAMPLES / "friction" / "s0_direct.toml", EXAMPLES / "friction" / "s1_readings.toml"],
+}
+OUTPUT_NAMES = ["out.csv", "out.png", "out.txt", "out.parquet", "missing/out.csv", "out", "out.json", "."]
+# the words of an option's name that make it a file or directory the command reads or writes
+INPUT_WORDS = ("file", "catalog", "errors", "geometry")
+OUTPUT_WORDS = ("csv", "plot", "out", "dir")
+NOT_FINITE = re.compile(r"(?<![\w.])(nan|inf|-inf|infinity)(?![\w])", re.IGNORECASE)
+
+
+def _kind(param):
+    name = (param.name or "").lower()
+    if getattr(param, "is_flag", False):
+        return "flag"
+    if "csv" in name or "plot" in name or name in ("out", "output") or name.endswith("_dir"):
+        return "output"
+    if any(w in name for w in INPUT_WORDS) or (param.param_type_name == "argument" and name == "file"):
+        return "input"
+    return "value"
+
+
+@st.composite
+def _input_file(draw, workdir, good, command, name):
+    choice = "valid" if good else draw(st.sampled_from(["bytes", "text", "missing", "directory"]))
+    if choice == "valid":  # a copy: a command may write where an input was expected (friction template)
+        if (command, name) in VALID_FILES:
+            source = draw(st.sampled_from(VALID_FILES[(command, name)]))
+            for sibling in source.parent.iterdir():  # with the files it names (measurement CSVs)
+                shutil.copy(sibling, workdir / sibling.name)
+            return str(workdir / source.name)
+        path = workdir / "bearing.toml"  # a catalog or a bearing file
+        path.write_text(BEARING_FILE, encoding="utf-8")
+        return str(path)
+    if choice == "missing":
+        return str(workdir / "no-such-file.toml")
+    if choice == "directory":
+        return str(workdir)
+    path = workdir / f"in{draw(st.integers(0, 3))}.toml"
+    if choice == "bytes":
+        path.write_bytes(draw(st.binary(max_size=200)))
+    else:
+        lines = draw(st.lists(st.sampled_from([
+            '[bearings."X"]', "balls = 40", 'ball_diameter = "7.938 mm"', 'pitch_diameter = "38.5 mm"',
+            'contact_angle = "40 deg"', 'radial_clearance = "100 um"', "inner_conformity = 0.52",
+            "outer_conformity = 0.53", 'model = "high-speed"', 'bearing = "B218"', "[parameters]",
+            'axial_load = "1kN:3kN:1kN"', 'speed = "3000 rpm"', "[geometry]", "balls = 16", "[errors.balls]",
+            "diameter = [2, 0]", "x = ", "[[", 'title = "t"', "[output]", 'file = "o.csv"', "output = 3",
+            "[execution]", 'chunk_size = "x"', "chunk_size = 0", 'executor = "bogus"', "model = 3",
+        ]), max_size=12))
+        path.write_text("\n".join(lines), encoding="utf-8")
+    return str(path)
+
+
+# values that make sense for an option (by its parameter name): most draws take one of these, so that
+# the commands get past their input checks and compute; the rest come from the whole random pool
+GOOD = {
+    "axial_load": ["2 kgf", "1 kN", "20 kN", "5kN,20kN", "1kN:3kN:1kN", "0.05 kN"],
+    "radial_load": ["1 kN", "0 N", "500 N"],
+    "speed": ["3000 rpm", "0 rpm", "15000 rpm", "50 Hz", "10000 1/min", "0,3000rpm"],
+    "outer_speed": ["0 rpm", "100 rpm"],
+    "bearing": ["B218", "4-1006095", "7218B"],
+    "name": ["B218", "7218B", "4-1006095", "18"],
+    "hertz": ["exact", "table"], "elastic_constant": ["materials", "paper"],
+    "solver": ["newton", "angle-iteration"], "raceway_control": ["outer", "inner"],
+    "constants": ["mass", "harris", "paper"], "gyroscopic_sign": ["physical", "reversed"],
+    "executor": ["serial"], "workers": ["1"], "chunk_size": ["1", "50"],
+    "revolutions": ["1", "2"], "steps_per_rev": ["36", "90"], "samples": ["2", "5"], "seed": ["0", "7"],
+    "max_order": ["3", "15"], "angle": ["0", "10 deg"], "start_angle": ["0 deg", "5 deg"],
+    "first_ball_angle": ["0 deg", "3 deg"], "cage_ratio": ["0.4", "0.45"], "ball_grade": ["G5", "G10"],
+    "ring_class": ["P4", "P5"], "write_worst": ["1"], "worst_by": ["radial_ptp_max"],
+    "harmonics": ["1", "3"], "sidebands": ["0", "1"], "band": ["2 %", "1%"], "x0": ["0.04"], "rows": ["1", "2"],
+    "balls": ["7", "9", "16"], "ball_diameter": ["2 mm", "7.938 mm"], "pitch_diameter": ["8.7355 mm", "38.5 mm"],
+    "inner_conformity": ["0.52"], "outer_conformity": ["0.53"], "contact_angle": ["12 deg", "40 deg"],
+    "radial_clearance": ["9 um", "20 um"], "ball_material": ["steel", "silicon_nitride"],
+    "reduced_modulus": ["228 GPa"], "memory_limit": ["1GiB"],
+}
+# options whose default makes a run long (200 Monte Carlo samples, 3 x 360 positions): always given,
+# mostly with a small value, so that the examples stay fast
+SMALL = ("samples", "steps_per_rev", "revolutions")
+# an option of a new command not in GOOD: one of these may fit (a number, or a quantity of some kind)
+ANY_GOOD = ["1", "0.5", "2", "2 kN", "3000 rpm", "20 cSt", "0.07 N*mm", "12 deg", "8 mm", "B218"]
+# options that make a command run at all: drawn more often than the others
+LIKELY = ("bearing", "errors", "file", "name")
+# the inline geometry: any one of them changes the bearing, so they are drawn rarely
+INLINE = ("balls", "ball_diameter", "pitch_diameter", "inner_groove_radius", "outer_groove_radius",
+          "inner_conformity", "outer_conformity", "contact_angle", "radial_clearance", "ball_material")
+
+
+@st.composite
+def _argv(draw, path, command, workdir):
+    args = list(path)
+    for param in command.params:
+        if param.name in ("help",):
+            continue
+        kind = _kind(param)
+        chance = 80 if param.name in LIKELY else (6 if kind == "input" or param.name in INLINE else 25)
+        if param.name in SMALL:
+            chance = 100
+        if not param.required and draw(st.integers(0, 99)) >= chance:
+            continue
+        good = draw(st.integers(0, 99)) < 90
+        if kind == "flag":
+            value = None
+        elif kind == "input":
+            value = draw(_input_file(workdir, good, path[0], param.name))
+        elif kind == "output":
+            value = str(workdir / draw(st.sampled_from(OUTPUT_NAMES)))
+        elif good:
+            value = draw(st.sampled_from(GOOD.get(param.name, ANY_GOOD)))
+        else:
+            value = draw(st.sampled_from(QUANTITIES + NUMBERS + NAMES))
+        if param.param_type_name == "argument":
+            args.append(value)
+            continue
+        if kind == "flag":  # --json, or one of --progress/--no-progress
+            args.append(draw(st.sampled_from(list(param.opts) + list(param.secondary_opts or []))))
+            continue
+        args.append(param.opts[0])
+        if value is not None:
+            args.append(value)
+    return args
+
+
+def _check_outcome(argv, code, out, err):
+    where = f"bearinglab {' '.join(map(repr, argv))}"
+    assert "Traceback" not in err and "Warning:" not in err, f"{where}\n{err}"
+    if code == 0:
+        assert not NOT_FINITE.search(out), f"{where}: a non-finite number in the output\n{out}"
+        return
+    assert code in (2, 3), f"{where}: exit {code}\n{err}"
+    lines = [ln for ln in err.splitlines() if ln.strip() and not ln.startswith("bearinglab: warning:")]
+    assert len(lines) == 1 and lines[0].startswith("bearinglab: error: "), f"{where}: exit {code}\n{err}"
+
+
+@pytest.mark.parametrize("path", sorted(COMMANDS), ids=lambda p: "-".join(p))
+def test_fuzz_command(path, tmp_path_factory, capsys, monkeypatch):
+    workdir = tmp_path_factory.mktemp("fuzz")
+    monkeypatch.chdir(workdir)  # commands that write next to the working directory write here
+    monkeypatch.delenv("BEARINGLAB_CATALOG", raising=False)
+    monkeypatch.setenv("COLUMNS", "80")
+    command = COMMANDS[path]
+
+    @settings(max_examples=EXAMPLES_PER_COMMAND // SLOW.get(path, 1), deadline=None, database=None,
+              suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
+                                     HealthCheck.function_scoped_fixture])
+    @given(argv=_argv(path, command, workdir))
+    def run(argv):
+        try:
+            code = main(argv)
+        finally:
+            out, err = capsys.readouterr()
+            for child in workdir.iterdir():  # a clean directory for the next example
+                shutil.rmtree(child) if child.is_dir() else child.unlink()
+        _check_outcome(argv, code, out, err)
+
+    run()
+
+
+def test_every_command_is_fuzzed():
+    names = {" ".join(p) for p in COMMANDS}
+    for expected in ("axial-angle", "high-speed", "runout", "runout monte-carlo", "catalog list", "sweep"):
+        assert expected in names
+    assert sum(EXAMPLES_PER_COMMAND // SLOW.get(p, 1) for p in COMMANDS) >= 2000
