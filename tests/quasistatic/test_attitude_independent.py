@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 
 from bearinglab import quasistatic
@@ -26,11 +26,13 @@ def _construction(contact_angle, ball_diameter, pitch_diameter, race):
     tangent = np.array([normal[1], -normal[0]])
     # point + s tangent = (x, 0): two unknowns (s, x)
     _, x = np.linalg.solve(np.array([[tangent[0], -1.0], [tangent[1], 0.0]]), -point)
-    spin_axis = centre - np.array([x, 0.0])
-    return math.atan2(abs(spin_axis[1]), abs(spin_axis[0]))
+    # the spin axis runs from (x, 0) to the ball centre; beta is its angle from the +x (bearing) axis,
+    # above 90 deg when the inner contact's tangent meets the axis behind the ball (cos a_i < D/d_m)
+    return math.atan2(centre[1], x - centre[0])  # measured toward the side of the contact
 
 
 @given(ai=st.floats(0.15, 1.3), ae=st.floats(0.15, 1.3), ratio=st.floats(0.08, 0.3))
+@example(ai=1.28125, ae=1.0, ratio=0.296875)  # cos a_i < D/d_m: beta above 90 deg
 def test_inner_raceway_control_matches_the_geometric_construction(ai, ae, ratio):
     d, dm = ratio * 0.1, 0.1
     got = quasistatic.attitude_angle(ai, ae, d, dm, raceway_control="inner")
