@@ -15,7 +15,7 @@ The algorithm is the one of :func:`bearinglab.stand.operating_contact_angle`, el
 the same first approximation, the same increment, the same halving of a step that leaves
 (alpha0, 90 deg), the same tolerances; a case stops as soon as it has converged (the numpy path
 iterates every case until the last one has), so the two agree to the tolerance (checked by
-bench/axial_angle.py and tests/test_bench_axial_angle.py).
+bench/axial_angle.py and tests/test_bench_scripts.py).
 """
 
 from __future__ import annotations
