@@ -6,7 +6,7 @@ STAMP  := $(VENV)/.installed
 TSTAMP := $(VENV)/.installed-test
 DSTAMP := $(VENV)/.installed-docs
 
-.PHONY: demo test lint docs bench clean
+.PHONY: demo test lint docs bench mutants clean
 
 $(PY):
 	@command -v $(PYTHON) >/dev/null 2>&1 || { echo "$(PYTHON) not found; set PYTHON=python3" >&2; exit 1; }
@@ -41,8 +41,28 @@ $(DSTAMP): $(PY) pyproject.toml
 docs: $(DSTAMP)
 	MPLBACKEND=Agg $(VENV)/bin/sphinx-build -W --keep-going -b html docs docs/_build/html
 
-bench: $(STAMP)
+BSTAMP := $(VENV)/.installed-bench
+$(BSTAMP): $(PY) pyproject.toml
+	$(PY) -m pip install --quiet -e ".[bench]"
+	@touch $@ $(STAMP)
+
+# every bench/*.py against its fair baseline and the compiled limit; rewrites BENCHMARKS.md's table
+bench: $(BSTAMP)
 	$(PY) bench/run_all.py
 
+MSTAMP := $(VENV)/.installed-mutation
+$(MSTAMP): $(TSTAMP)
+	$(PY) -m pip install --quiet -e ".[test,mutation]"
+	@touch $@
+
+# mutation testing of the physics modules ([tool.mutmut] in pyproject.toml), at most MUTANTS_BUDGET
+# seconds; not part of CI: run it before resolving an issue that touches physics (TESTING.md)
+MUTANTS_BUDGET ?= 1200
+mutants: $(MSTAMP)
+	-CI=1 timeout $(MUTANTS_BUDGET) $(VENV)/bin/mutmut run --max-children 2  # CI=1: derandomized hypothesis
+	$(VENV)/bin/mutmut results --all true > mutants-results.txt || $(VENV)/bin/mutmut results > mutants-results.txt
+	@grep -c "killed" mutants-results.txt || true
+	@echo "surviving mutants: $(VENV)/bin/mutmut results; one of them: $(VENV)/bin/mutmut show NAME"
+
 clean:
-	rm -rf $(VENV) out build *.egg-info src/*.egg-info docs/_build docs/auto_examples docs/sg_execution_times.rst
+	rm -rf $(VENV) mutants mutants-results.txt out build *.egg-info src/*.egg-info docs/_build docs/auto_examples docs/sg_execution_times.rst

@@ -186,7 +186,7 @@ def evaluation_cost(bearing, state, speed):
 def main(n_rest=N_REST, n_base=N_BASE, n_speed=N_SPEED, n_speed_base=N_SPEED_BASE, repeat=3):
     loads = cases(n_rest, [1500, 1500, 1500, 15.0, 15.0])
     t_batch, state = best_of(lambda: batched(DEEP, loads), repeat)
-    t_base, ref = best_of(baseline(DEEP, loads[:n_base]), max(1, repeat - 2))
+    t_base, ref = best_of(baseline(DEEP, loads[:n_base]), repeat)
     diff = np.nanmax(np.abs(state.displacement[:n_base] - ref) / [1e-6, 1e-6, 1e-6, 1e-3, 1e-3])
     rate, base_rate = n_rest / t_batch, n_base / t_base
     t_eval = evaluation_cost(DEEP, state, 0.0)
@@ -198,8 +198,8 @@ def main(n_rest=N_REST, n_base=N_BASE, n_speed=N_SPEED, n_speed_base=N_SPEED_BAS
     w = 12000 * RPM
     sl = cases(n_speed, [4e3, 4e3, 4e3, 80.0, 80.0], seed=1)
     sl[:, 2] = np.abs(sl[:, 2]) + 5e3  # an angular-contact bearing at speed needs its thrust
-    t_sb, s_state = best_of(lambda: batched(B218, sl, w), max(1, repeat - 1))
-    t_sbase, s_ref = best_of(baseline_speed(B218, sl[:n_speed_base], w), 1)
+    t_sb, s_state = best_of(lambda: batched(B218, sl, w), repeat)
+    t_sbase, s_ref = best_of(baseline_speed(B218, sl[:n_speed_base], w), repeat)
     s_diff = np.nanmax(np.abs(s_state.displacement[:n_speed_base] - s_ref) / [1e-6, 1e-6, 1e-6, 1e-3, 1e-3])
     s_rate, s_base = n_speed / t_sb, n_speed_base / t_sbase
     s_eval = evaluation_cost(B218, s_state, w)
@@ -210,7 +210,8 @@ def main(n_rest=N_REST, n_base=N_BASE, n_speed=N_SPEED, n_speed_base=N_SPEED_BAS
     print(f"RESULT combined_rest cases_per_s={rate:.4g} baseline_cases_per_s={base_rate:.4g} "
           f"ratio={rate / base_rate:.4g} solve_over_residual_eval={t_batch / t_eval:.3g}")
     print(f"RESULT combined_speed cases_per_s={s_rate:.4g} baseline_cases_per_s={s_base:.4g} "
-          f"ratio={s_rate / s_base:.4g} solve_over_residual_eval={t_sb / s_eval:.3g}")
+          f"ratio={s_rate / s_base:.4g} solve_over_residual_eval={t_sb / s_eval:.3g} "
+          "baseline_label=per-case_library_calls_(not_a_fair_scalar_baseline)")
     ok = state.converged.all() and s_state.converged.all() and diff < 1e-6 and s_diff < 1e-6
     return 0 if ok else 1
 

@@ -7,7 +7,11 @@ and analytic Jacobian (:func:`bearinglab.quasistatic.residual`'s kernel), starte
 solution (with continuation in 1500-rpm steps where the direct solve fails; the static starts of the
 baseline are computed outside its timing, which favours the baseline). Prints cases/s, the ratio,
 the largest difference between the two, and the cost of the whole solve in units of one batched
-residual-plus-Jacobian evaluation of all cases.
+residual-plus-Jacobian evaluation of all cases. Both paths: best of ``REPEAT`` runs.
+
+The baseline is labelled as what it is: it calls the library's batched kernel on one-element arrays
+(about 0.5 ms a call, mostly Chebyshev evaluations of the Hertz coefficients), so it is slower than a
+scalar solver written in plain ``math`` would be; that fair baseline is still to be written (issue 14).
 """
 
 from __future__ import annotations
@@ -23,6 +27,7 @@ from bearinglab.units import RPM
 
 N_LOADS = N_SPEEDS = 100
 N_BASELINE = 300
+REPEAT = 3
 OPTIONS = {"constants": "harris", "on_failure": "flag", "friction_limit": np.inf}
 B218 = catalog.get("B218")
 GEO = quasistatic._bearing_args(B218)
@@ -81,10 +86,10 @@ def baseline(fa, n, starts=None):
 
 
 
-def main():
-    fa, n = grid()
+def main(n_loads=N_LOADS, n_speeds=N_SPEEDS, n_baseline=N_BASELINE, repeat=REPEAT):
+    fa, n = grid(n_loads, n_speeds)
     total = fa.size
-    t_batch, state = best_of(lambda: batched(fa, n), 5)
+    t_batch, state = best_of(lambda: batched(fa, n), repeat)
     # one batched residual + Jacobian evaluation of the same cases, at the solution
     model, _ = quasistatic._prepare(fa.ravel(), *GEO, "outer", 1, OPTIONS["constants"])
     idx = np.arange(total)
@@ -94,24 +99,24 @@ def main():
     t_public, _ = best_of(lambda: quasistatic.residual(v.reshape(fa.shape + (5,)), fa, n, *GEO,
                                                        constants=OPTIONS["constants"]), 5)
     rng = np.random.default_rng(0)
-    sample = rng.choice(total, N_BASELINE, replace=False)
+    sample = rng.choice(total, n_baseline, replace=False)
     starts = static_starts(fa.ravel()[sample])
-    t_base, ref = best_of(lambda: baseline(fa.ravel()[sample], n.ravel()[sample], starts), 1)
-    rate, base_rate = total / t_batch, N_BASELINE / t_base
+    t_base, ref = best_of(lambda: baseline(fa.ravel()[sample], n.ravel()[sample], starts), repeat)
+    rate, base_rate = total / t_batch, n_baseline / t_base
     got = np.stack([state.contact_angle_inner.ravel()[sample], state.contact_angle_outer.ravel()[sample]], axis=1)
     diff = np.nanmax(np.abs(got - ref))
     failed_base = int(np.isnan(ref[:, 0]).sum())
-    print(f"218 map: {N_LOADS} thrusts x {N_SPEEDS} speeds = {total} cases, {int((~state.converged).sum())} failed, "
+    print(f"218 map: {n_loads} thrusts x {n_speeds} speeds = {total} cases, {int((~state.converged).sum())} failed, "
           f"Newton iterations per case: mean {state.iterations.mean():.2f}, max {state.iterations.max()}")
     print(f"batched Newton    : {total:>6d} cases in {t_batch:8.3f} s = {rate:10.4g} cases/s")
-    print(f"per-case fsolve   : {N_BASELINE:>6d} cases in {t_base:8.3f} s = {base_rate:10.4g} cases/s "
+    print(f"per-case fsolve   : {n_baseline:>6d} cases in {t_base:8.3f} s = {base_rate:10.4g} cases/s "
           f"({failed_base} not converged)")
     print(f"one batched residual+Jacobian of all cases: {t_eval * 1e3:.2f} ms (kernel), "
           f"{t_public * 1e3:.2f} ms (public quasistatic.residual incl. input checks and Hertz tables)")
     print(f"whole solve = {t_batch / t_eval:.1f} x kernel evaluation = {t_batch / t_public:.1f} x public evaluation")
     print(f"max |alpha_newton - alpha_fsolve| = {diff:.2e} rad")
     print(f"RESULT high_speed cases_per_s={rate:.4g} baseline_cases_per_s={base_rate:.4g} ratio={rate / base_rate:.4g} "
-          f"solve_over_residual_eval={t_batch / t_eval:.3g}")
+          f"solve_over_residual_eval={t_batch / t_eval:.3g} baseline_label=per-case_fsolve_on_the_library_kernel")
     return 0 if diff < 1e-9 and failed_base == 0 and state.converged.all() else 1
 
 

@@ -35,17 +35,24 @@ def run(script):
     return proc.returncode, results
 
 
-def main():
-    scripts = sorted(p for p in HERE.glob("*.py") if p.name != Path(__file__).name and not p.name.startswith("_"))
+def main(argv=()):
+    """Run the scripts (``--skip NAME`` leaves one out, e.g. the 10-minute scaling study)."""
+    skip = {argv[i + 1] for i, a in enumerate(argv[:-1]) if a == "--skip"}
+    scripts = sorted(p for p in HERE.glob("*.py") if p.name != Path(__file__).name and not p.name.startswith("_")
+                     and p.stem not in skip)
     rows, failed = [], []
     for script in scripts:
         code, results = run(script)
         if code != 0 or not results:
-            failed.append(script.name)
+            failed.append(script.name)  # its numbers are not worth printing: left out of the table
+            continue
         rows += [(script.name, name, f) for name, f in results]
     stamp = _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%d %H:%M UTC")
     lines = [BEGIN, (f"Last `make bench`: {stamp}, Python {platform.python_version()}, {os.cpu_count()} cores. "
-                     "Each table: the batched path and its per-case baseline, measured in the same run."), ""]
+                     "Each table: the batched path and its per-case baseline, measured in the same run, "
+                     "each the best of several runs."), ""]
+    if skip:
+        lines[-1:-1] = [f"Not run this time: {', '.join(sorted(skip))} (see its section below).", ""]
     for script, name, f in rows:  # one table per model
         # a script may name its two paths (batched_label=2_workers); underscores read as spaces
         batched = f.get("batched_label", "batched").replace("_", " ")
@@ -58,7 +65,7 @@ def main():
         lines += [f"| {k} | {v} |" for k, v in other]
         lines.append("")
     if failed:
-        lines.append(f"Failed or printed no RESULT line: {', '.join(failed)}")
+        lines.append(f"Left out (failed its own checks or printed no RESULT line): {', '.join(failed)}")
     lines.append(END)
     bench_md = ROOT / "BENCHMARKS.md"
     text = bench_md.read_text() if bench_md.exists() else "# Benchmarks\n"
@@ -75,4 +82,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(sys.argv[1:]))

@@ -303,6 +303,7 @@ def test_non_convergence_raises_or_is_flagged():
     ({"loads": [np.nan, 0, 0, 0, 0]}, "loads must be finite"),
 ])
 def test_invalid_inputs_name_the_parameter(kwargs, match):
+    kwargs = dict(kwargs)  # a copy: the parameters are shared between runs in one process (mutmut)
     args = {"loads": [100.0, 0, 0, 0, 0], "shaft_speed": 0.0}
     args.update({k: kwargs.pop(k) for k in list(kwargs) if k in args})
     with pytest.raises(InputError, match=match):

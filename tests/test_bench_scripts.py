@@ -1,0 +1,65 @@
+"""Smoke tests of the benchmark scripts under bench/ that have no smoke test next to their model.
+
+The benchmarks themselves are not run by the tests (``make bench``); here each script's paths run on a
+few cases and must agree. The others: tests/lab/test_fits.py (friction_fits), tests/runout/
+test_runout_contact.py (runout), tests/quasistatic/test_thrust.py (high_speed),
+tests/quasistatic/test_combined.py (combined), tests/ratings/test_rating_life.py (life),
+tests/friction/test_skf.py (skf_friction).
+"""
+
+import sys
+
+import pytest
+from numpy.testing import assert_allclose
+
+
+def test_axial_angle_paths_agree_case_by_case(load_bench):
+    bench = load_bench("axial_angle")
+    m = bench.measure(n_batch=300, n_baseline=50, n_brentq=10, repeat=1)
+    assert m["diff"] < 1e-12 and m["diff_brentq"] < 1e-10
+    if "compiled_rate" in m:  # numba (the bench extra) installed
+        assert m["diff_compiled"] < 1e-12
+
+
+def test_axial_angle_main_prints_a_result_line(load_bench, capsys):
+    bench = load_bench("axial_angle")
+    assert bench.main(n_batch=200, n_baseline=20, n_brentq=5, repeat=1) == 0
+    line = [x for x in capsys.readouterr().out.splitlines() if x.startswith("RESULT axial_angle ")]
+    assert len(line) == 1 and "baseline_label=fair_scalar" in line[0]
+
+
+def test_friction_fits_fair_and_former_baselines_agree(load_bench):
+    bench = load_bench("friction_fits")
+    t, speed, groups = bench.cases(30, seed=5)
+    f0, tf = bench.batched(t, speed, groups)
+    for fit in (bench.baseline, bench.linregress_baseline):
+        f0_ref, tf_ref = fit(t, speed, 30)
+        assert_allclose(f0, f0_ref, rtol=1e-9)
+        assert_allclose(tf, tf_ref, rtol=1e-9)
+
+
+def test_scaling_study_is_importable_and_names_its_parts(load_bench, monkeypatch):
+    monkeypatch.setattr(sys, "argv", ["scaling.py", "10"])
+    bench = load_bench("scaling")  # the study needs a dask cluster and minutes: only its parts here
+    assert callable(bench.study) and callable(bench.main)
+
+
+def test_run_all_leaves_a_failed_script_out_of_the_table(load_bench, tmp_path, monkeypatch):
+    bench = load_bench("run_all")
+    (tmp_path / "bench").mkdir()
+    good, bad = tmp_path / "bench" / "good.py", tmp_path / "bench" / "bad.py"
+    good.write_text("print('RESULT good cases_per_s=10 baseline_cases_per_s=1 ratio=10')\n")
+    bad.write_text("import sys\nprint('RESULT bad cases_per_s=1e9 baseline_cases_per_s=1 ratio=1e9')\nsys.exit(1)\n")
+    (tmp_path / "BENCHMARKS.md").write_text("# B\n\n<!-- results:begin -->\nold\n<!-- results:end -->\n")
+    monkeypatch.setattr(bench, "HERE", tmp_path / "bench")
+    monkeypatch.setattr(bench, "ROOT", tmp_path)
+    monkeypatch.setattr(bench, "__file__", str(tmp_path / "bench" / "run_all.py"))
+    assert bench.main() == 1
+    text = (tmp_path / "BENCHMARKS.md").read_text()
+    assert "### good" in text and "1e9" not in text and "### bad" not in text
+    assert "Left out" in text and "bad.py" in text and "old" not in text
+
+
+@pytest.mark.parametrize("name", ["combined", "life", "skf_friction", "runout", "high_speed"])
+def test_every_script_has_a_main(load_bench, name):
+    assert callable(load_bench(name).main)
