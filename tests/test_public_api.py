@@ -48,3 +48,27 @@ def test_private_names_stay_out_of_all():
         mod = importlib.import_module(module)
         leaked = [n for n in mod.__all__ if n.startswith("_") and n != "__version__"]
         assert not leaked, f"{module}.__all__ exports private names {leaked}"
+
+
+def test_every_public_module_is_registered():
+    # a new public module joins the register, so that its names are pinned from then on
+    unregistered = sorted(set(_public_modules()) - set(PINNED))
+    assert not unregistered, (f"public modules missing from tests/data/public_api.json: {unregistered}; "
+                              "run `python tests/test_public_api.py --update` and review the diff")
+
+
+def _update():
+    """Add every public module's current ``__all__`` to the register (names are only ever added)."""
+    register = {m: list(names) for m, names in PINNED.items()}
+    for module in _public_modules():
+        names = set(register.get(module, [])) | set(importlib.import_module(module).__all__)
+        register[module] = sorted(names)
+    path = Path(__file__).parent / "data" / "public_api.json"
+    path.write_text(json.dumps(dict(sorted(register.items())), indent=1) + "\n", encoding="utf-8")
+
+
+if __name__ == "__main__":
+    import sys
+
+    if sys.argv[1:] == ["--update"]:
+        _update()
