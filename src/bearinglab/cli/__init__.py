@@ -64,13 +64,15 @@ def _version(value: bool):
         raise typer.Exit()
 
 
+_HELP_NAMES = ["-h", "--help"]
+
 app = typer.Typer(
     name="bearinglab",
     help="Ball-bearing mechanics: test-stand contact angles, Hertz contact, friction torque, runout, high-speed model.",
     no_args_is_help=True,
     pretty_exceptions_enable=False,
     add_completion=False,
-    context_settings={"help_option_names": ["-h", "--help"]},
+    context_settings={"help_option_names": _HELP_NAMES},
 )
 
 
@@ -97,8 +99,26 @@ def _click_command():
     """The click command of :data:`app`, built once: typer builds it anew on every call, which costs more
     than most commands (about 60 % of a run). Commands are registered on import, before any run."""
     if "app" not in _CLICK:
-        _CLICK["app"] = typer.main.get_command(app)
+        _CLICK["app"] = _tidy(typer.main.get_command(app))
     return _CLICK["app"]
+
+
+def _tidy(root):
+    """Flags show no type in the help (typer prints ``<bool>`` after ``--json``, ``--help``); the help
+    option is False unless given, so that a group passing its arguments on to a command (``bearinglab
+    high-speed --help``) does not run typer's value coercion, which imports pydantic (0.15 s)."""
+    stack = [root]
+    while stack:
+        command = stack.pop()
+        ctx = command.context_class(command, info_name=command.name, help_option_names=_HELP_NAMES)
+        help_option = command.get_help_option(ctx)
+        if help_option is not None:
+            help_option.default = False
+        for param in [*command.params, help_option]:
+            if getattr(param, "is_flag", False):
+                param.metavar = ""
+        stack.extend(getattr(command, "commands", {}).values())
+    return root
 
 
 # the temporary file of an atomic write (bearinglab._io.atomic_output): ".NAME.RANDOM.SUFFIX" -> NAME

@@ -9,7 +9,9 @@ Inputs echoed    inputs_echo (the bearing as used, the overrides, the quantities
 Input checks     choice, check_directory, check_output (directory and suffix of an output file)
 
 The command modules import these; none of them imports the package ``bearinglab.cli`` itself, so the
-application is built on import without a cycle.
+application is built on import without a cycle. The physics (numpy, scipy, pint, matplotlib) is imported
+inside the functions that compute, never at the top of a command module: ``bearinglab --help`` builds
+every command without it (``tests/cli/test_cli_startup.py``).
 """
 
 from __future__ import annotations
@@ -21,7 +23,7 @@ import re
 import sys
 import weakref
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 from rich.console import Console
@@ -29,11 +31,10 @@ from rich.markup import escape
 from rich.measure import Measurement
 from rich.table import Table
 
-from .. import catalog as _catalog
-from .. import parallel, tables
-from ..bearing import MATERIALS, BallBearing
 from ..errors import InputError
-from ..units import parse_quantity
+
+if TYPE_CHECKING:
+    from ..bearing import BallBearing
 
 __all__: list[str] = []  # private to the command line
 
@@ -67,6 +68,10 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
                     inner_conformity=None, outer_conformity=None, contact_angle=None,
                     radial_clearance=None, ball_material=None) -> BallBearing:
     """The bearing named, read from a file, or given inline; inline options override named fields."""
+    from .. import catalog as _catalog
+    from ..bearing import MATERIALS, BallBearing
+    from ..units import parse_quantity
+
     if bearing and bearing_file:
         raise InputError("bearing: give --bearing or --bearing-file, not both")
     if bearing:
@@ -158,6 +163,8 @@ def inputs_echo(bearing, **quantities):
         bearing, then the quantities. Floats carry 15 significant digits, so that a unit conversion
         does not show as noise (``3000.0000000000005`` rpm); results are never rounded.
     """
+    from .. import tables
+
     geometry = {k: v for k, v in tables.bearing_summary(bearing).items()
                 if v is not None and k not in ("designation", "source")}
     out = {"bearing": bearing.designation, "geometry": geometry}
@@ -198,6 +205,8 @@ def progress_bar(description, executor="serial"):
 
 def emit_json(obj):
     """Print one JSON document on stdout (NaN and inf become null; :func:`bearinglab.tables.json_text`)."""
+    from .. import tables
+
     sys.stdout.write(tables.json_text(obj))
 
 
@@ -254,6 +263,8 @@ def print_warnings(notes):
 
 def emit_csv(path, columns, what="csv"):
     """Write ``columns`` as CSV to ``path`` (whole or not at all); the directory must exist."""
+    from .. import tables
+
     path = Path(path)
     check_directory(path, what)
     tables.write_table(columns, path)
@@ -298,6 +309,8 @@ def execution(description, executor=None, workers=None, chunk_size=None, *, memo
     command's progress report: a rich bar (serial) or dask's bar (distributed) on a terminal, none
     otherwise or with ``progress=False``.
     """
+    from .. import parallel
+
     ex = parallel.Execution(executor=executor or "serial", workers=workers, chunk_size=chunk_size,
                             memory_limit=memory_limit)
     bar = progress_bar(description, ex.executor) if progress else contextlib.nullcontext(None)
@@ -319,6 +332,8 @@ AxialLoadOpt = Annotated[str | None, typer.Option("--axial-load", "-A", help="Sa
 
 def five_loads(fx=None, fy=None, fz=None, mx=None, my=None, radial_load=None, axial_load=None):
     """(F_x, F_y, F_z, M_x, M_y) in N and N m from the load options (missing ones are 0)."""
+    from ..units import parse_quantity
+
     if fx is not None and radial_load is not None:
         raise InputError("radial-load: give --fx or --radial-load, not both")
     if fz is not None and axial_load is not None:

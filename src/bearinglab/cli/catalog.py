@@ -5,14 +5,10 @@ Commands
 COMMANDS   the ``catalog`` command group, by name (the application adds it)
 """
 
-from __future__ import annotations
-
 from typing import Annotated
 
 import typer
 
-from .. import catalog as _catalog
-from .. import ratings, tables
 from ..errors import InputError
 from ._common import CatalogFile, JsonFlag, emit_json, table
 
@@ -28,6 +24,8 @@ def _fmt(x, spec="g"):
 @catalog_app.command("list")
 def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False):
     """List the bearings known."""
+    from .. import catalog as _catalog
+    from .. import tables
     rows = [tables.catalog_entry(name, _catalog.get(name, catalog=catalog))
             for name in _catalog.names(catalog=catalog)]
     if json_out:
@@ -42,6 +40,8 @@ def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False):
 def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name or alias.")],
                  catalog: CatalogFile = None, json_out: JsonFlag = False):
     """Show one bearing with its derived geometry and its ratings C, C0, Cu (catalog or computed)."""
+    from .. import catalog as _catalog
+    from .. import ratings, tables
     b = _catalog.get(name, catalog=catalog)
     info = tables.bearing_summary(b)
     try:  # one set of ratings per bearing, whichever command asks (ratings.bearing_ratings)

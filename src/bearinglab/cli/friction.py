@@ -9,20 +9,14 @@ Commands
 COMMANDS   the ``friction`` command group, by name (the application adds it)
 """
 
-from __future__ import annotations
-
 import dataclasses
 import sys
 from pathlib import Path
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from .. import friction, tables
-from ..bearing import BallBearing
 from ..errors import InputError
-from ..units import RPM, parse_quantity, parse_values
 from ._common import (
     BearingFile,
     BearingName,
@@ -56,6 +50,9 @@ def _friction_bearing(
     mean_diameter,
     static_load_rating,
 ):
+    from .. import friction
+    from ..bearing import BallBearing
+    from ..units import parse_quantity
     if bearing or bearing_file:
         base = resolve_bearing(bearing, bearing_file, catalog, contact_angle=contact_angle)
     else:
@@ -108,6 +105,9 @@ def table(title, columns, rows, *, caption=None):
 
 
 def _case_values(text, kind, name):
+    import numpy as np
+
+    from ..units import parse_values
     values = parse_values(text, kind, name)
     if np.any(~(values >= 0)):
         raise InputError(f"{name} must be >= 0, got {float(values[~(values >= 0)][0])!r} (SI)")
@@ -226,6 +226,10 @@ def torque(
     json_out: JsonFlag = False,
 ):
     """Friction torque under combined load: handbook models (spec 001 section 3: P0, T, T0 and T_F) or SKF's."""
+    import numpy as np
+
+    from .. import friction, tables
+    from ..units import RPM
     if model not in _MODELS:
         raise InputError(f"model must be one of {list(_MODELS)}, got {model!r}")
     if model == "skf":
@@ -288,6 +292,8 @@ def torque(
 
 def _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out):
     """The SKF four-term model (:func:`bearinglab.friction.skf_for_bearing`): moments, power loss, mu_sl."""
+    from .. import friction, tables
+    from ..units import RPM, parse_quantity
     if viscosity is None:
         raise InputError("viscosity: the skf model needs --viscosity (e.g. '30 cSt'; of the base oil for grease)")
     if lubrication not in friction.LUBRICATION_METHODS:
@@ -317,6 +323,7 @@ def _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out):
 
 def _cases(radial_load, axial_load, speed):
     """The radial loads, axial loads and speeds (SI), broadcast to one length."""
+    import numpy as np
     fr = _case_values(radial_load, "force", "radial-load")
     fa = _case_values(axial_load, "force", "axial-load")
     n = _case_values(speed, "speed", "speed")
@@ -330,6 +337,9 @@ def _cases(radial_load, axial_load, speed):
 
 def _one_term(b, p0, mu, info):
     """Speed and load terms of the one-term model (the whole torque is the load term)."""
+    import numpy as np
+
+    from .. import friction
     d = b.require("bore")
     mu_used = friction.handbook_friction_coefficient(b.type) if mu is None else mu
     total = np.atleast_1d(friction.one_term(p0, d, bearing_type=b.type, reduced_friction_coefficient=mu))
@@ -339,6 +349,10 @@ def _one_term(b, p0, mu, info):
 
 def _two_term(b, model, angle, p0, n, f, c, f0, viscosity, palmgren_f0, info):
     """Speed and load terms of the two-term and the Palmgren model; the constants used go to ``info``."""
+    import numpy as np
+
+    from .. import friction
+    from ..units import parse_quantity
     dm = b.mean_diameter
     c0 = b.require("static_load_rating")
     f_used, c_used = f, c

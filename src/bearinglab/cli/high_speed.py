@@ -11,21 +11,15 @@ Commands
 COMMANDS   the ``high-speed`` command, by name (the application adds it)
 """
 
-from __future__ import annotations
-
 import dataclasses
 import sys
 import warnings
 from pathlib import Path
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from .. import limits, plots, quasistatic, tables
 from ..errors import ConvergenceError, InputError, ValidityWarning
-from ..plots import high_speed as high_speed_plots
-from ..units import RPM, parse_quantity, parse_values
 from ._common import (
     FIGURE_SUFFIXES,
     BallDiameter,
@@ -82,6 +76,9 @@ def high_speed(
     json_out: JsonFlag = False,
 ):
     """High-speed angular-contact bearing under thrust (spec 004): α_i, α_e, δ_a, loads, F_c, M_g, speeds."""
+    from .. import limits, plots, tables
+    from ..plots import high_speed as high_speed_plots
+    from ..units import RPM
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)
@@ -131,6 +128,8 @@ def high_speed(
 
 def _model_options(solver, raceway_control, constants, gyroscopic_sign, reduced_modulus):
     """The options of :func:`bearinglab.quasistatic.high_speed_analysis`, checked."""
+    from .. import quasistatic
+    from ..units import parse_quantity
     choice("solver", solver, ("newton", "angle-iteration"))
     choice("raceway-control", raceway_control, tuple(quasistatic.RACEWAY_CONTROLS))
     choice("constants", constants, tuple(quasistatic.CONSTANTS))
@@ -146,6 +145,9 @@ def _model_options(solver, raceway_control, constants, gyroscopic_sign, reduced_
 
 def _grid(axial_load, speed):
     """The thrusts and speeds given (SI), checked."""
+    import numpy as np
+
+    from ..units import RPM, parse_values
     loads = parse_values(axial_load, "force", "axial-load")
     speeds = parse_values(speed, "speed", "speed")
     if np.any(~(loads > 0)):
@@ -159,6 +161,7 @@ def _grid(axial_load, speed):
 def _solve(bearing, loads, speeds, options, ex):
     """One case (:func:`quasistatic.high_speed_analysis`) or the grid (:func:`quasistatic.sweep`) in chunks on
     the chosen executor; returns the state and the validity warnings raised on the way."""
+    from .. import quasistatic
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", ValidityWarning)
         if loads.size == 1 and speeds.size == 1:
@@ -173,6 +176,7 @@ def _solve(bearing, loads, speeds, options, ex):
 def _sign_change(bearing, speeds, options, notes):
     """The thrust at which delta_a changes sign per speed, from the library's solve (not the grid); None
     (the figure then interpolates on the grid) with a note if it does not converge."""
+    from .. import quasistatic
     try:
         return quasistatic.sign_change_thrust(
             bearing, speeds, reduced_modulus=options["reduced_modulus"], constants=options["constants"],

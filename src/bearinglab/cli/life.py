@@ -19,20 +19,15 @@ Commands
 COMMANDS   the ``life`` command, by name (the application adds it)
 """
 
-from __future__ import annotations
-
 import re
 import tomllib
 import warnings
 from pathlib import Path
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from .. import ratings, tables
 from ..errors import InputError
-from ..units import RPM, parse_quantity
 from ._common import (
     AxialLoadOpt,
     BallDiameter,
@@ -64,8 +59,12 @@ from ._common import (
 
 __all__ = ["COMMANDS"]
 
+# the keys of bearinglab.ratings.CONTAMINATION_CLASSES, spelled out for the help text (the help is built
+# without importing the model; tests/cli/test_cli_startup.py checks that the two agree)
+_CONTAMINATION_CLASSES = ("extreme_cleanliness", "high_cleanliness", "normal_cleanliness", "slight_contamination",
+                          "typical_contamination", "severe_contamination", "very_severe_contamination")
 _CONTAMINATION = {k.split("_")[0] if k != "very_severe_contamination" else "very-severe": k
-                  for k in ratings.CONTAMINATION_CLASSES}
+                  for k in _CONTAMINATION_CLASSES}
 _LUBRICANT = "Lubricant and cleanliness"
 _ZERO_C = 273.15  # K at 0 degC
 _TEMPERATURE = re.compile(r"^\s*([-+]?\d+(?:\.\d*)?(?:[eE][-+]?\d+)?)\s*(°C|degC|C|K|°F|degF|F)\s*$")
@@ -85,6 +84,8 @@ def _temperature(text):
 
 def _viscosity(viscosity, oil, viscosity_100, temperature):
     """kinematic_viscosity or the oil options of :func:`bearinglab.ratings.rating_life`."""
+    from .. import ratings
+    from ..units import parse_quantity
     if viscosity is not None:
         if oil is not None or temperature is not None:
             raise InputError("viscosity: give --viscosity, or --oil with --temperature, not both")
@@ -122,6 +123,9 @@ def _reliability(percent):
 
 def _duty_cycle(path):
     """Loads (k, 5), speeds (k,) and time shares (k,) of a duty-cycle file."""
+    import numpy as np
+
+    from ..units import parse_quantity
     try:
         doc = tomllib.loads(Path(path).read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as exc:
@@ -161,6 +165,8 @@ def life(
     json_out: JsonFlag = False,
 ):
     """Rating life (ISO 281, ISO/TS 16281): C, C0, Cu, P, L10, a_ISO, L_nm, L10r, L_nmr, s0; duty cycles."""
+    from .. import ratings, tables
+    from ..units import RPM, parse_quantity
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)
@@ -195,6 +201,10 @@ _KEYS = ("dynamic_load_rating_N", "static_load_rating_N", "fatigue_load_limit_N"
 
 
 def _life_of_duty_cycle(b, loads, speeds, times, options, json_out):
+    import numpy as np
+
+    from .. import ratings, tables
+    from ..units import RPM
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         d = ratings.duty_cycle_life(b, loads, speeds, times, **options)

@@ -12,23 +12,15 @@ Commands
 COMMANDS   the ``load-distribution`` and ``bearing-set`` commands, by name (the application adds them)
 """
 
-from __future__ import annotations
-
 import math
 import types
 import warnings
 from pathlib import Path
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from .. import catalog as _catalog
-from .. import plots, tables
 from ..errors import InputError
-from ..plots import load_distribution as load_plots
-from ..quasistatic import combined, rotordynamics, sets
-from ..units import RPM, parse_quantity, parse_values
 from ._common import (
     FIGURE_SUFFIXES,
     AxialLoadOpt,
@@ -70,6 +62,9 @@ PlotOpt = Annotated[Path | None, typer.Option("--plot", help="Polar plot of the 
 
 
 def _speeds(text, allow_list):
+    import numpy as np
+
+    from ..units import RPM, parse_values
     w = parse_values(text, "speed", "speed")
     if np.any(~(w >= 0)):
         raise InputError(f"speed must be >= 0 [rpm], got {float(w[~(w >= 0)][0]) / RPM:g} rpm")
@@ -88,6 +83,8 @@ def _solve(what, *args, **kwargs):
 
 def _inputs(b, loads, speed, phi0):
     """The inputs as used, in engineering units (echoed in the JSON)."""
+    from .. import tables
+    from ..units import RPM
     fx, fy, fz, mx, my = loads
     geo = {k: v for k, v in tables.bearing_summary(b).items()
            if k in ("balls", "ball_diameter_mm", "pitch_diameter_mm", "inner_conformity", "outer_conformity",
@@ -101,6 +98,7 @@ def _inputs(b, loads, speed, phi0):
 
 def _case(r, k):
     """Case k of a batched LoadDistribution (cases on the first axis), as an object with one case's fields."""
+    import numpy as np
     fields = {f: np.asarray(getattr(r, f))[k] for f in r._fields if f not in ("warnings", "azimuth")}
     return types.SimpleNamespace(**fields, azimuth=r.azimuth, warnings=r.warnings)
 
@@ -119,6 +117,12 @@ def load_distribution(
     json_out: JsonFlag = False,
 ):
     """Ball bearing under combined load (issue 11): displacement, ball loads, contact angles, pressures, stiffness."""
+    import numpy as np
+
+    from .. import plots, tables
+    from ..plots import load_distribution as load_plots
+    from ..quasistatic import combined, rotordynamics
+    from ..units import parse_quantity
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)
@@ -196,6 +200,11 @@ def bearing_set(
     json_out: JsonFlag = False,
 ):
     """Preloaded bearing set (DB/DF/DT) on a rigid shaft: shaft displacement, each bearing's ball loads, set stiffness."""
+    from .. import catalog as _catalog
+    from .. import plots, tables
+    from ..plots import load_distribution as load_plots
+    from ..quasistatic import combined, sets
+    from ..units import parse_quantity
     bl = [_catalog.get(name, catalog=catalog) for name in bearing]
     choice("arrangement", arrangement, tuple(sets.ARRANGEMENTS))
     s = parse_quantity(spacing, "length", "spacing")
@@ -243,6 +252,7 @@ def bearing_set(
 
 def _shaft(st):
     """The shaft of a set as the fields :func:`bearinglab.tables.load_distribution` reads."""
+    import numpy as np
     return types.SimpleNamespace(displacement=st.displacement, stiffness=st.stiffness, converged=st.converged,
                                  residual=st.residual, iterations=st.iterations, ball_load_inner=np.zeros(1),
                                  azimuth=np.zeros(0), ball_load_outer=np.zeros(0),

@@ -5,17 +5,12 @@ Commands
 COMMANDS   the ``axial-angle`` and ``stand-load`` commands, by name (the application adds them)
 """
 
-from __future__ import annotations
-
 import math
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from .. import limits, stand, tables
 from ..errors import InputError
-from ..units import KGF, format_dms, parse_values, to_dms, to_rpm
 from ._common import (
     BallDiameter,
     BallMaterial,
@@ -43,6 +38,7 @@ __all__ = ["COMMANDS"]
 
 
 def _angle_row(row, legacy):
+    from ..units import format_dms, to_dms
     d, m, s = to_dms(row.contact_angle, truncate=legacy)
     dms = f"{d}°{m:02d}'{s:02.0f}\"" if legacy else format_dms(row.contact_angle)
     return dms
@@ -63,6 +59,10 @@ def axial_angle(
     json_out: JsonFlag = False,
 ):
     """Operating contact angle under axial load (spec 000): C*, x0, Newton iterations, displacement."""
+    import numpy as np
+
+    from .. import limits, stand, tables
+    from ..units import KGF, format_dms, parse_values
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)
@@ -171,6 +171,10 @@ def stand_load(
     json_out: JsonFlag = False,
 ):
     """Minimum axial load against gyroscopic slip on a test stand, and the +20 % maximum (spec 000 §3)."""
+    import numpy as np
+
+    from .. import limits, stand, tables
+    from ..units import parse_values, to_rpm
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)

@@ -5,16 +5,11 @@ Commands
 COMMANDS   the ``sweep`` command, by name (the application adds it)
 """
 
-from __future__ import annotations
-
 from pathlib import Path
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from .. import sweep as _sweep
-from .. import tables
 from ..errors import InputError
 from ._common import (
     ChunkSizeOpt,
@@ -39,6 +34,10 @@ def sweep(
     json_out: JsonFlag = False,
 ):
     """Evaluate a model over the Cartesian product of parameter values; write the cases as CSV or Parquet."""
+    import numpy as np
+
+    from .. import sweep as _sweep
+    from .. import tables
     spec = _sweep.load_sweep(file)
     target = out or spec.output
     if target is not None and Path(target).suffix not in (".csv", ".parquet"):
