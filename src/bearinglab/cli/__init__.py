@@ -134,6 +134,46 @@ def _target_name(filename):
     return str(path.with_name(m.group("name"))) if m else str(path)
 
 
+# library parameter names -> the option that gives them, where the two differ
+_OPTION_OF = {"n-balls": "balls", "kinematic-viscosity": "viscosity"}
+_LEADING_NAME = re.compile(r"^([A-Za-z][A-Za-z0-9_-]*)(?=:| must | needs | is | has )")
+
+
+def _typed_options(argv):
+    """The long names of the options typed in ``argv`` (``-F 2kN`` and ``--axial-load=2kN`` ->
+    ``--axial-load``), looked up in the command the words name."""
+    command, typed = _click_command(), set()
+    for word in map(str, argv):
+        sub = getattr(command, "commands", {}).get(word)
+        if sub is not None:
+            command = sub
+            continue
+        if not word.startswith("-") or word == "-":
+            continue
+        key = word.split("=", 1)[0] if word.startswith("--") else word[:2]
+        for param in getattr(command, "params", ()):
+            if key in (*param.opts, *param.secondary_opts):
+                typed.add(next((o for o in param.opts if o.startswith("--")), key))
+    return typed
+
+
+def _name_option(message, argv):
+    """The message of an InputError, naming the option as the user typed it: a message that opens with
+    a parameter's name (``axial-load must be > 0``, ``n_balls must be <= 15``, ``plot: ...``) opens with
+    the option (``--axial-load``, ``--balls``, ``--plot``) when the user gave that option. A name the
+    user did not type (a field of a catalog or input file) is left as it is."""
+    m = _LEADING_NAME.match(message)
+    if not m:
+        return message
+    name = m.group(1).replace("_", "-")
+    option = "--" + _OPTION_OF.get(name, name)
+    try:
+        typed = _typed_options(argv)
+    except Exception:  # noqa: BLE001 -- naming the option is a courtesy: never lose the message itself
+        return message
+    return option + message[m.end():] if option in typed else message
+
+
 def main(argv=None) -> int:
     """Run the command line; return the exit code instead of raising (tests call this).
 
@@ -166,7 +206,8 @@ def main(argv=None) -> int:
         print(f"bearinglab: error: {exc.summary}", file=sys.stderr)
         return 2 if exc.physical else 3
     except InputError as exc:
-        print(f"bearinglab: error: {exc}", file=sys.stderr)
+        print(f"bearinglab: error: {_name_option(str(exc), sys.argv[1:] if argv is None else argv)}",
+              file=sys.stderr)
         return 2
     except OSError as exc:
         print(f"bearinglab: error: {_target_name(exc.filename)}: {exc.strerror or exc}", file=sys.stderr)

@@ -6,7 +6,8 @@ Execution        ExecutorOpt, WorkersOpt, ChunkSizeOpt; execution (one parallel.
 Output           console, emit_json (one JSON document on stdout), table (a rich table), emit_csv,
                  print_warnings
 Inputs echoed    inputs_echo (the bearing as used, the overrides, the quantities given)
-Input checks     choice, check_directory, check_output (directory and suffix of an output file)
+Input checks     choice, check_directory, check_output (directory and suffix of an output file),
+                 check_input (an input file exists), parse_speeds (one rule for every speed option)
 
 The command modules import these; none of them imports the package ``bearinglab.cli`` itself, so the
 application is built on import without a cycle. The physics (numpy, scipy, pint, matplotlib) is imported
@@ -293,6 +294,35 @@ def check_output(path, what, suffixes=None):
     return path
 
 
+def check_input(path, what):
+    """An input file, checked before anything is read: it exists and is a file (the message names the
+    option, ``what``)."""
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"{what}: {str(path)!r} does not exist")
+    if path.is_dir():
+        raise InputError(f"{what}: {str(path)!r} is a directory; give a file name")
+    return path
+
+
+def parse_speeds(text, name="speed", *, pitch_diameter=None, zero=True, what="the inner-ring speed"):
+    """The speeds of a speed option [rad/s]: one convention for every command. A speed is a magnitude,
+    >= 0 (> 0 with ``zero=False``, where a zero speed has no meaning, e.g. a life in hours), and below
+    the d_m n that no ball bearing of the size runs (:func:`bearinglab.limits.check_speed`) when the
+    pitch diameter is given. The message gives the offending value in rpm."""
+    from .. import limits
+    from ..units import RPM, parse_values
+
+    w = parse_values(text, "speed", name)
+    bad = ~(w >= 0) if zero else ~(w > 0)
+    if bad.any():
+        raise InputError(f"{name} must be {'>=' if zero else '>'} 0 [rpm] ({what}, a magnitude), got "
+                         f"{float(w[bad][0]) / RPM:g} rpm")
+    if pitch_diameter is not None:
+        limits.check_speed(w, pitch_diameter, name)
+    return w
+
+
 def choice(name, value, choices):
     """``value`` if it is one of ``choices``; otherwise an InputError listing them."""
     if value not in choices:
@@ -338,8 +368,8 @@ def five_loads(fx=None, fy=None, fz=None, mx=None, my=None, radial_load=None, ax
         raise InputError("radial-load: give --fx or --radial-load, not both")
     if fz is not None and axial_load is not None:
         raise InputError("axial-load: give --fz or --axial-load, not both")
-    fx = radial_load if fx is None else fx
-    fz = axial_load if fz is None else fz
-    names = (("fx", fx, "force"), ("fy", fy, "force"), ("fz", fz, "force"), ("mx", mx, "torque"),
-             ("my", my, "torque"))
+    names = (("fx" if radial_load is None else "radial-load", radial_load if fx is None else fx, "force"),
+             ("fy", fy, "force"),
+             ("fz" if axial_load is None else "axial-load", axial_load if fz is None else fz, "force"),
+             ("mx", mx, "torque"), ("my", my, "torque"))
     return [0.0 if text is None else parse_quantity(text, kind, name) for name, text, kind in names]
