@@ -158,20 +158,21 @@ def _typed_options(argv):
 
 
 def _name_option(message, argv):
-    """The message of an InputError, naming the option as the user typed it: a message that opens with
-    a parameter's name (``axial-load must be > 0``, ``n_balls must be <= 15``, ``plot: ...``) opens with
-    the option (``--axial-load``, ``--balls``, ``--plot``) when the user gave that option. A name the
-    user did not type (a field of a catalog or input file) is left as it is."""
+    """The message of an InputError, naming the option the user typed: a message that opens with a
+    library parameter's name (``n_balls must be <= 15``, ``kinematic_viscosity must be > 0``) opens with
+    the option's (``balls must ...``, ``viscosity must ...``: the long option without its dashes, as
+    every message of the command line and the web API's parameter names) when the user gave that
+    option. A name the user did not type (a field of a catalog or input file) is left as it is."""
     m = _LEADING_NAME.match(message)
     if not m:
         return message
     name = m.group(1).replace("_", "-")
-    option = "--" + _OPTION_OF.get(name, name)
+    option = _OPTION_OF.get(name, name)
     try:
         typed = _typed_options(argv)
     except Exception:  # noqa: BLE001 -- naming the option is a courtesy: never lose the message itself
         return message
-    return option + message[m.end():] if option in typed else message
+    return option + message[m.end():] if "--" + option in typed else message
 
 
 def main(argv=None) -> int:

@@ -7,7 +7,8 @@ Output           console, emit_json (one JSON document on stdout), table (a rich
                  print_warnings
 Inputs echoed    inputs_echo (the bearing as used, the overrides, the quantities given)
 Input checks     choice, check_directory, check_output (directory and suffix of an output file),
-                 check_input (an input file exists), parse_speeds (one rule for every speed option)
+                 check_input (an input file exists), parse_speeds (one rule for every speed option),
+                 parse_viscosity
 
 The command modules import these; none of them imports the package ``bearinglab.cli`` itself, so the
 application is built on import without a cycle. The physics (numpy, scipy, pint, matplotlib) is imported
@@ -321,6 +322,16 @@ def parse_speeds(text, name="speed", *, pitch_diameter=None, zero=True, what="th
     if pitch_diameter is not None:
         limits.check_speed(w, pitch_diameter, name)
     return w
+
+
+def parse_viscosity(text, name="viscosity"):
+    """A kinematic viscosity option [m^2/s], > 0 (the message in cSt, the unit of oil data sheets)."""
+    from ..units import parse_quantity
+
+    nu = parse_quantity(text, "kinematic_viscosity", name)
+    if not nu > 0:
+        raise InputError(f"{name} must be > 0 [cSt], got {float(nu) * 1e6:.6g} cSt")
+    return nu
 
 
 def choice(name, value, choices):
