@@ -300,7 +300,7 @@ def check_input(path, what):
     option, ``what``)."""
     path = Path(path)
     if not path.exists():
-        raise InputError(f"{what}: {str(path)!r} does not exist")
+        raise InputError(f"{what}: {path}: no such file")
     if path.is_dir():
         raise InputError(f"{what}: {str(path)!r} is a directory; give a file name")
     return path
