@@ -110,10 +110,11 @@ def high_speed(
                            solver=solver, reduced_modulus_GPa=None if reduced_modulus is None else
                            options["reduced_modulus"] / 1e9)
         if single:  # the inputs as given, without the noise of the unit conversions
-            echo.update(inputs_echo(b, axial_load_kN=float(loads[0]) / 1e3, speed_rpm=float(speeds[0]) / RPM))
+            echo.update(inputs_echo(b, axial_load_N=float(loads[0]), speed_rpm=float(speeds[0]) / RPM))
             emit_json(dict(rows[0], **echo, warnings=notes))
         else:
-            emit_json(dict(echo, axial_load_kN=list(loads / 1e3), speed_rpm=list(speeds / RPM), cases=rows,
+            emit_json(dict(echo, **inputs_echo(b, axial_load_N=loads.tolist(), speed_rpm=(speeds / RPM).tolist()),
+                           cases=rows,
                            warnings=notes))
         return
     if single:
@@ -194,7 +195,7 @@ def _print_single(b, r, options):
     caption = (f"{options['raceway_control']}-raceway control, constants {options['constants']}, "
                f"{'physical' if options['gyroscopic_sign'] > 0 else 'reversed'} gyroscopic sign, "
                f"solver {options['method']} ({r['method']}, {r['iterations']} iterations, residual {_f(r['residual'], '.2e')})")
-    table(f"Bearing {b.designation}: F_a = {r['axial_load_kN']:g} kN at {r['speed_rpm']:g} rpm", ["quantity", "inner", "outer"], [
+    table(f"Bearing {b.designation}: F_a = {r['axial_load_N'] / 1e3:g} kN at {r['speed_rpm']:g} rpm", ["quantity", "inner", "outer"], [
         ["contact angle [deg]", _f(r["contact_angle_inner_deg"], ".4f"), _f(r["contact_angle_outer_deg"], ".4f")],
         ["static contact angle α_s [deg]", _f(r["static_contact_angle_deg"], ".4f"), ""],
         ["ball load Q [N]", _f(r["ball_load_inner_N"], ".1f"), _f(r["ball_load_outer_N"], ".1f")],
@@ -204,8 +205,7 @@ def _print_single(b, r, options):
     ], caption=caption)
     table("Ball and ring", ["quantity", "value"], [
         # printed tables give displacements in µm in every command (JSON and CSV keep the _mm column)
-        ["axial displacement δ_a [µm]", _f(None if r["axial_displacement_mm"] is None
-                                           else r["axial_displacement_mm"] * 1e3, ".2f")],
+        ["axial displacement δ_a [µm]", _f(r["axial_displacement_um"], ".2f")],
         ["axial stiffness dF_a/dδ_a [N/µm]", _f(r["axial_stiffness_N_per_um"], ".2f")],
         ["centrifugal force F_c [N]", _f(r["centrifugal_force_N"], ".1f")],
         ["gyroscopic moment M_g [N·mm]", _f(r["gyroscopic_moment_Nmm"], ".1f")],
@@ -223,9 +223,9 @@ def _print_sweep(b, rows, options):
                f"{options['constants']}, solver {options['method']}; --json or --csv for every output")
     table(f"Bearing {b.designation}: high-speed contact angles under thrust",
           ["F_a kN", "n rpm", "α_i °", "α_e °", "δ_a µm", "Q_i N", "Q_e N", "M_g N·mm", "status"],
-          [[f"{r['axial_load_kN']:g}", f"{r['speed_rpm']:g}", _f(r["contact_angle_inner_deg"], ".3f"),
+          [[f"{r['axial_load_N'] / 1e3:g}", f"{r['speed_rpm']:g}", _f(r["contact_angle_inner_deg"], ".3f"),
             _f(r["contact_angle_outer_deg"], ".3f"),
-            _f(None if r["axial_displacement_mm"] is None else r["axial_displacement_mm"] * 1e3, ".2f"),
+            _f(r["axial_displacement_um"], ".2f"),
             _f(r["ball_load_inner_N"], ".0f"), _f(r["ball_load_outer_N"], ".0f"),
             _f(r["gyroscopic_moment_Nmm"], ".0f"), r["status"]] for r in rows], caption=caption)
 

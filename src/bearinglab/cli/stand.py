@@ -109,7 +109,7 @@ def axial_angle(
             "operating_contact_angle_dms": format_dms(r.contact_angle),
             "contact_angle_increment_deg": math.degrees(r.contact_angle - r.free_angle),
             "axial_displacement_ratio": float(r.axial_displacement_ratio),
-            "axial_displacement_mm": float(r.axial_displacement) * 1e3,
+            "axial_displacement_um": float(r.axial_displacement) * 1e6,
             "ball_load_N": float(r.ball_load), "ball_load_kgf": float(r.ball_load) / KGF,
             "converged": True,
             "legacy": legacy,
@@ -138,7 +138,7 @@ def axial_angle(
     table(f"Bearing {b.designation}: operating contact angle ({title})",
           ["F_a [kgf]", "F_a [N]", "α [deg]", "ξ_a", "δ_a [µm]", "ball load [N]", *head],
           [[f"{x['axial_load_kgf']:.4g}", f"{x['axial_load_N']:.4g}", f"{x['operating_contact_angle_deg']:.5f}",
-            f"{x['axial_displacement_ratio']:.6f}", f"{x['axial_displacement_mm'] * 1e3:.3f}", f"{x['ball_load_N']:.4g}",
+            f"{x['axial_displacement_ratio']:.6f}", f"{x['axial_displacement_um']:.3f}", f"{x['ball_load_N']:.4g}",
             *e] for x, e in zip(cases, extra)])
     print_warnings(notes)
 
@@ -157,7 +157,7 @@ def _print_single(b, c, out, hertz, legacy):
             f"{i['axial_displacement_ratio']:.7f}", f"{i['axial_load_kgf']:.5f}", f"{i['error_percent']:.3g}"]
            for i in out["iterations"]])
     console.print(f"operating contact angle {out['operating_contact_angle_deg']:.6f}° ({out['operating_contact_angle_dms']}), "
-                  f"+{out['contact_angle_increment_deg']:.4f}° over α0; axial displacement {out['axial_displacement_mm'] * 1e3:.3f} µm; "
+                  f"+{out['contact_angle_increment_deg']:.4f}° over α0; axial displacement {out['axial_displacement_um']:.3f} µm; "
                   f"ball load {out['ball_load_N']:.4g} N ({out['ball_load_kgf']:.4g} kgf)", highlight=False)
 
 
