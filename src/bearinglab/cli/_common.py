@@ -7,6 +7,7 @@ Output           console, emit_json (one JSON document on stdout), table (a rich
                  print_warnings
 Inputs echoed    inputs_echo (the bearing as used, the overrides, the quantities given)
 Input checks     choice, check_directory, check_output (directory and suffix of an output file),
+                 check_output_directory (its parent exists),
                  check_input (an input file exists), parse_speeds (one rule for every speed option),
                  parse_viscosity
 
@@ -292,6 +293,16 @@ def check_output(path, what, suffixes=None):
     if suffixes is not None and path.suffix.lower() not in suffixes:
         raise InputError(f"{what}: {str(path)!r} must end in one of {', '.join(suffixes)}, "
                          f"got {path.suffix or 'no suffix'!r}")
+    return path
+
+
+def check_output_directory(path, what):
+    """An output directory, checked before anything is computed: the command creates it (or replaces what
+    it wrote there before), but its parent must exist, as the directory of an output file must."""
+    path = Path(path)
+    check_directory(path, what)
+    if path.exists() and not path.is_dir():
+        raise InputError(f"{what}: {str(path)!r} is a file; give a directory")
     return path
 
 

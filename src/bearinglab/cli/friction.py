@@ -523,6 +523,8 @@ def lab(
     from .. import report
     from ..lab import analysis, measurement
 
+    if out is not None:
+        check_output_directory(out, "out")
     session = measurement.read_session(file)
     result = analysis.analyse(session)
     files = report.write_report(result, out) if out is not None else None

@@ -23,6 +23,7 @@ from ._common import (
     JsonFlag,
     WorkersOpt,
     check_output,
+    check_output_directory,
     console,
     emit_json,
     execution,
@@ -386,6 +387,8 @@ def runout_command(
     _check_cage_ratio(cage_ratio)
     if csv_out is not None:
         check_output(csv_out, "csv")
+    if plot is not None:
+        check_output_directory(plot, "plot")
     g, theta1 = _geometry(geometry, bearing, catalog, first_ball_angle)
     g, e = runout.files.load_error_file(errors, g)
     if theta1 is not None:
@@ -570,6 +573,9 @@ def monte_carlo_command(
     _check_cage_ratio(cage_ratio)
     if samples_csv is not None:
         check_output(samples_csv, "samples-csv")
+    for option, directory in (("plot", plot), ("worst-dir", worst_dir)):
+        if directory is not None:
+            check_output_directory(directory, option)
     if steps_per_rev < MIN_STEPS_PER_REV:
         raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-], got {steps_per_rev}")
     _check_write_worst(write_worst, worst_by, worst_dir)

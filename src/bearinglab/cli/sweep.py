@@ -10,12 +10,12 @@ from typing import Annotated
 
 import typer
 
-from ..errors import InputError
 from ._common import (
     ChunkSizeOpt,
     ExecutorOpt,
     JsonFlag,
     WorkersOpt,
+    check_output,
     console,
     emit_json,
     execution,
@@ -40,8 +40,8 @@ def sweep(
     from .. import tables
     spec = _sweep.load_sweep(file)
     target = out or spec.output
-    if target is not None and Path(target).suffix not in (".csv", ".parquet"):
-        raise InputError(f"out must end in .csv or .parquet, got {str(target)!r}")
+    if target is not None:  # checked before the sweep runs: the directory exists, the suffix is known
+        check_output(target, "out" if out is not None else "output", (".csv", ".parquet"))
     with execution(f"sweep {spec.model.name}", executor or spec.executor, workers, chunk_size,
                    memory_limit=memory_limit) as ex:
         cols = _sweep.run_sweep(spec, execution=ex)
