@@ -23,6 +23,7 @@ from ._common import (
     CatalogFile,
     ContactAngle,
     JsonFlag,
+    check_output_directory,
     console,
     emit_json,
     inputs_echo,
