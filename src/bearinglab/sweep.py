@@ -153,6 +153,7 @@ def _evaluate_axial_angle(axial_load, **cases):
         q[idx] = fa[idx] / (s["n_balls"] * np.sin(a))
         da[idx] = static.axial_displacement_ratio(a, s["contact_angle"]) * bd
     return {"operating_contact_angle_deg": np.degrees(angle), "load_deflection_constant_kgf": cstar / KGF,
+            "load_deflection_constant_N": cstar,
             "axial_displacement_um": da * 1e6, "ball_load_N": q, "converged": ok, "failure": reason}
 
 

@@ -349,7 +349,7 @@ def stand_load(shaft_speed, result):
         ``max_axial_load_N``: 1-D arrays.
     """
     lo, hi = np.atleast_1d(result.minimum), np.atleast_1d(result.maximum)
-    return {"speed_rpm": np.ravel(shaft_speed) / RPM, "min_axial_load_kgf": lo / KGF, "min_axial_load_N": lo,
+    return {"speed_rpm": significant(np.ravel(shaft_speed) / RPM), "min_axial_load_kgf": lo / KGF, "min_axial_load_N": lo,
             "max_axial_load_kgf": hi / KGF, "max_axial_load_N": hi}
 
 

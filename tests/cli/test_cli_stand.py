@@ -103,7 +103,7 @@ BAD = [
     (["axial-angle", "-b", "no-such-bearing", "-F", "2 kgf"], r"unknown name 'no-such-bearing'; known: .*B218"),
     (["axial-angle", "-b", "B218", "-F", "2 kgf", "--hertz", "table"], r"no tabulated Hertz coefficients"),
     (["stand-load", "-b", "4-1006095", "--speed", "3000 N"], r"speed: '3000 N' is a force, expected a speed"),
-    (["stand-load", "-b", "4-1006095", "--speed", "-3000 rpm"], r"speed must be >= 0 \[rpm\], got -3000"),
+    (["stand-load", "-b", "4-1006095", "--speed", "-3000 rpm"], r"speed must be >= 0 \[rpm\].*, got -3000 rpm"),
     (["stand-load", "-b", "1000095", "--speed", "3000 rpm"], r"n_balls of '1000095' is not known"),
 ]
 

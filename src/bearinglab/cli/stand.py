@@ -29,6 +29,7 @@ from ._common import (
     console,
     emit_json,
     inputs_echo,
+    parse_speeds,
     print_warnings,
     resolve_bearing,
     table,
@@ -171,18 +172,13 @@ def stand_load(
     json_out: JsonFlag = False,
 ):
     """Minimum axial load against gyroscopic slip on a test stand, and the +20 % maximum (spec 000 §3)."""
-    import numpy as np
 
-    from .. import limits, stand, tables
-    from ..units import parse_values, to_rpm
+    from .. import stand, tables
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)
-    speeds = parse_values(speed, "speed", "speed")
-    if np.any(speeds < 0):
-        raise InputError(f"speed must be >= 0 [rpm], got {float(to_rpm(speeds[speeds < 0][0]))!r} rpm")
     z, d, dm, a = b.require("n_balls", "ball_diameter", "pitch_diameter", "contact_angle")
-    limits.check_speed(speeds, dm)
+    speeds = parse_speeds(speed, pitch_diameter=dm)
     res = stand.min_axial_load(speeds, z, d, dm, a)
     rows = tables.rows(tables.stand_load(speeds, res))
     if json_out:
