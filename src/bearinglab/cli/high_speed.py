@@ -46,6 +46,7 @@ from ._common import (
     emit_json,
     execution,
     inputs_echo,
+    parse_speeds,
     print_warnings,
     resolve_bearing,
     table,
@@ -148,15 +149,11 @@ def _grid(axial_load, speed):
     """The thrusts and speeds given (SI), checked."""
     import numpy as np
 
-    from ..units import RPM, parse_values
+    from ..units import parse_values
     loads = parse_values(axial_load, "force", "axial-load")
-    speeds = parse_values(speed, "speed", "speed")
     if np.any(~(loads > 0)):
         raise InputError(f"axial-load must be > 0 [N], got {float(loads[~(loads > 0)][0])!r} N")
-    if np.any(~(speeds >= 0)):
-        raise InputError(f"speed must be >= 0 [rpm] (the inner-ring speed as a magnitude), got "
-                         f"{float(speeds[~(speeds >= 0)][0]) / RPM:g} rpm")
-    return loads, speeds
+    return loads, parse_speeds(speed)
 
 
 def _solve(bearing, loads, speeds, options, ex):
