@@ -18,6 +18,7 @@ import csv
 import json
 import re
 import shlex
+from pathlib import Path
 
 import pytest
 
@@ -315,3 +316,15 @@ def test_printed_displacements_are_in_um(capsys, argv):
     assert code == 0, err
     units = re.findall(r"(?:δ\S*|displacement)[^\n│┃]*?(?:\[|\s)(µm|um|mm)\b", out)
     assert units and set(units) == {"µm"}, units
+
+
+def test_profile_csv_rows_are_counted_from_1(capsys, tmp_path):
+    """Item 18: a bad row of a measured profile is named by its line in the file, counted from 1."""
+    source = Path("examples/runout")
+    (tmp_path / "measured_profile.toml").write_text((source / "measured_profile.toml").read_text())
+    lines = (source / "inner_roundness.csv").read_text().splitlines()
+    first_data = next(k for k, line in enumerate(lines) if line and not line.startswith("#"))
+    lines[first_data + 1] = "10, abc"  # the second data row
+    (tmp_path / "inner_roundness.csv").write_text("\n".join(lines) + "\n")
+    line = one_line(*run(capsys, ["runout", "--errors", tmp_path / "measured_profile.toml"])[::2])
+    assert line.endswith(f"got '10, abc' on line {first_data + 2}"), line
