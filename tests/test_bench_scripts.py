@@ -4,7 +4,7 @@ The benchmarks themselves are not run by the tests (``make bench``); here each s
 few cases and must agree. The others: tests/lab/test_fits.py (friction_fits), tests/runout/
 test_runout_contact.py (runout), tests/quasistatic/test_thrust.py (high_speed),
 tests/quasistatic/test_combined.py (combined), tests/ratings/test_rating_life.py (life),
-tests/friction/test_skf.py (skf_friction).
+tests/friction/test_skf.py (skf_friction); cli_help has its smoke test here.
 """
 
 import sys
@@ -58,6 +58,15 @@ def test_run_all_leaves_a_failed_script_out_of_the_table(load_bench, tmp_path, m
     text = (tmp_path / "BENCHMARKS.md").read_text()
     assert "### good" in text and "1e9" not in text and "### bad" not in text
     assert "Left out" in text and "bad.py" in text and "old" not in text
+
+
+def test_cli_help_times_the_help_and_prints_a_result_line(load_bench, capsys):
+    bench = load_bench("cli_help")
+    assert bench.main(repeat=1) == 0
+    out = capsys.readouterr().out
+    line = [x for x in out.splitlines() if x.startswith("RESULT cli_help ")]
+    assert len(line) == 1 and "seconds=" in line[0] and "within_goal=" in line[0]
+    assert "bearinglab high-speed --help" in out and "0.3 s goal" in out
 
 
 @pytest.mark.parametrize("name", ["combined", "life", "skf_friction", "runout", "high_speed"])

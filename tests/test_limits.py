@@ -38,3 +38,24 @@ def test_shoulder_above_the_groove_centre_rejected():
     b = catalog.get("B218")
     with pytest.raises(ValueError, match="inner_shoulder_height must be <"):
         b.replace(inner_shoulder_height=b.ball_diameter, contact_angle=b.contact_angle)
+
+
+def test_combined_warnings_of_a_pure_thrust_equal_those_under_thrust():
+    """Under a pure thrust every ball carries F_a / (Z sin alpha): the combined-load checks (per ball, P0 from
+    F_r and F_a) must say what the thrust checks say, case for case."""
+    b = catalog.get("7218B")
+    alpha, fa = math.radians(40.0), 400e3
+    q = fa / (b.n_balls * math.sin(alpha))
+    thrust = limits.contact_warnings(b, [fa], [q], [q], [alpha], [alpha])
+    balls = [q] * b.n_balls
+    combined = limits.combined_warnings(b, [0.0, 0.0, fa, 0.0, 0.0], balls, balls, [alpha] * b.n_balls,
+                                        [alpha] * b.n_balls)
+    assert thrust and [m.split("(")[0] for m in combined] == [m.split("(")[0] for m in thrust]
+    assert any("ISO 76" in m for m in combined) and any("C0" in m for m in combined)
+
+
+def test_combined_warnings_skip_unloaded_balls_and_light_loads():
+    b = catalog.get("7218B")
+    z = b.n_balls
+    q = [100.0] + [0.0] * (z - 1)
+    assert limits.combined_warnings(b, [100.0, 0, 0, 0, 0], q, q, [0.7] + [math.nan] * (z - 1), [0.7] * z) == []

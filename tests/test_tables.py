@@ -23,13 +23,13 @@ def test_quasistatic_result_table_is_the_tables_one(b218_grid):
     """One place turns a high-speed state into columns: the old quasistatic spelling answers with it."""
     got, ref = tables.high_speed(b218_grid), quasistatic.result_table(b218_grid)
     assert list(got) == list(ref) == [c.name for c in tables.HIGH_SPEED]
-    assert list(ref)[:2] == ["axial_load_kN", "speed_rpm"]  # the CLI's column order, pinned by its tests too
+    assert list(ref)[:2] == ["axial_load_N", "speed_rpm"]  # the CLI's column order, pinned by its tests too
 
 
 def test_high_speed_units(b218_grid):
     cols = tables.high_speed(b218_grid)
     s = b218_grid
-    assert cols["axial_load_kN"].tolist() == [5.0, 5.0, 20.0, 20.0]  # inputs without round-trip noise
+    assert cols["axial_load_N"].tolist() == [5e3, 5e3, 20e3, 20e3]  # inputs without round-trip noise
     assert cols["speed_rpm"].tolist() == [0.0, 6000.0, 0.0, 6000.0]
     assert cols["contact_angle_inner_deg"] == pytest.approx(np.degrees(s.contact_angle_inner).ravel(), rel=1e-15)
     assert cols["gyroscopic_moment_Nmm"] == pytest.approx(s.gyroscopic_moment.ravel() * 1000.0, rel=1e-15)
@@ -49,10 +49,10 @@ def test_axial_angle_columns_match_the_analysis():
     r = static.stand_analysis(catalog.get("4-1006095"), loads)
     cols = tables.columns(r, tables.AXIAL_ANGLE)
     assert list(cols) == ["axial_load_N", "axial_load_kgf", "operating_contact_angle_deg",
-                          "axial_displacement_ratio", "axial_displacement_mm", "ball_load_N"]
+                          "axial_displacement_ratio", "axial_displacement_um", "ball_load_N"]
     assert cols["axial_load_kgf"] == pytest.approx([1.0, 2.0, 5.0], rel=1e-15)
     assert cols["operating_contact_angle_deg"] == pytest.approx(np.degrees(r.contact_angle), rel=1e-15)
-    assert cols["axial_displacement_mm"] == pytest.approx(r.axial_displacement * 1e3, rel=1e-15)
+    assert cols["axial_displacement_um"] == pytest.approx(r.axial_displacement * 1e6, rel=1e-15)
 
 
 def test_stand_load_columns():

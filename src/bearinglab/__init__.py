@@ -23,30 +23,13 @@ plots       all figures (matplotlib, loaded on first use); functions return Figu
 cli         the command line (imported on its own: ``bearinglab.cli``, ``python -m bearinglab``)
 ratings     load ratings and rating life: ISO 76, ISO 281, ISO/TS 16281
 limits      plausibility limits: warnings for results beyond ISO 76, C0, Hertz, the shoulder, light load
+
+The submodules are imported on first use (PEP 562): ``import bearinglab`` is instant, and
+``bearinglab.hertz`` imports :mod:`bearinglab.hertz` the first time it is named, so that the command
+line can start (``bearinglab --help``) without importing scipy or matplotlib.
 """
 
-from . import (
-    bearing,
-    catalog,
-    errors,
-    friction,
-    geometry,
-    hertz,
-    kinematics,
-    lab,
-    limits,
-    parallel,
-    plots,
-    quasistatic,
-    ratings,
-    report,
-    runout,
-    stand,
-    static,
-    sweep,
-    tables,
-    units,
-)
+import importlib
 
 __version__ = "0.2.0"
 __all__ = [
@@ -72,3 +55,14 @@ __all__ = [
     "tables",
     "units",
 ]
+
+
+def __getattr__(name):
+    """Import a submodule the first time it is named (PEP 562): ``bearinglab.hertz.point_contact``."""
+    if name in __all__ and name != "__version__":
+        return importlib.import_module(f".{name}", __name__)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))

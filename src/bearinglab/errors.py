@@ -13,8 +13,6 @@ ValidityWarning   an input outside the range a model or fit was derived on
 
 from __future__ import annotations
 
-import numpy as np
-
 __all__ = ["CatalogError", "ConvergenceError", "InputError", "ValidityWarning"]
 
 
@@ -56,6 +54,8 @@ class ConvergenceError(RuntimeError):
         self.estimate = estimate
         self.reason = reason
         self.physical = bool(physical)
+        import numpy as np  # here, not at the top: the command line imports this module before numpy
+
         res = np.abs(np.atleast_1d(np.asarray(residual, dtype=float)))
         res = res[np.isfinite(res)]
         self.summary = f"no convergence after {self.iterations} iterations"

@@ -10,6 +10,7 @@ deflection_warnings         an elastic approach comparable to the ball (Hertz ne
 truncation_warnings         a contact ellipse that runs over the raceway shoulder
 viscosity_ratio_warnings    kappa = nu / nu1 below 0.1 (ISO 281: the life model is not valid)
 contact_warnings            all of the above for a bearing under thrust (ball loads and angles)
+combined_warnings           all of the above for a bearing under combined load (its load distribution)
 high_speed_warnings         contact_warnings and the light-load criteria for a high-speed state
 
 Guards (errors, not warnings)
@@ -36,6 +37,7 @@ __all__ = [
     "MINIMUM_VISCOSITY_RATIO",
     "SHOULDER_HEIGHT_FRACTION",
     "check_speed",
+    "combined_warnings",
     "contact_pressure_warnings",
     "contact_warnings",
     "deflection_warnings",
@@ -273,6 +275,47 @@ def _shoulder(bearing, race):
     return (SHOULDER_HEIGHT_FRACTION * bearing.ball_diameter, True) if h is None else (h, False)
 
 
+def _contact_checks(bearing, ball_loads):
+    """Pressure, deflection and truncation warnings of loaded balls: ``ball_loads`` is a sequence of
+    (race, Q, alpha) with flat arrays (unloaded balls, Q = 0 or NaN, are skipped). Returns the pressure
+    messages and the deflection and truncation messages (in this order in the reports)."""
+    from . import geometry, hertz
+
+    d, dm = bearing.ball_diameter, bearing.pitch_diameter
+    pressure, contacts = [], {}
+    for race, q, alpha in ball_loads:
+        q, alpha = np.ravel(q), np.ravel(alpha)
+        loaded = (q > 0) & np.isfinite(alpha)
+        if not loaded.any():
+            continue
+        q, alpha = q[loaded], alpha[loaded]
+        f = bearing.inner_conformity if race == "inner" else bearing.outer_conformity
+        curv = geometry.raceway_curvature(d, dm, f, alpha, race=race)
+        contacts[race] = (alpha, f, hertz.point_contact(q, curv.curvature_sum, curv.curvature_difference,
+                                                        bearing.reduced_modulus))
+        pressure += contact_pressure_warnings(contacts[race][2].p_max, where=f"{race} contact")
+    shape = []
+    for race, (_alpha, _f, pc) in contacts.items():
+        shape += deflection_warnings(pc.delta, d, where=f"{race} contact")
+    for race, (alpha, f, pc) in contacts.items():
+        h, assumed = _shoulder(bearing, race)
+        shape += truncation_warnings(alpha, pc.a, f * d, h, where=f"{race} contact", assumed=assumed)
+    return pressure, shape
+
+
+def _static_checks(bearing, radial_load, axial_load):
+    """P0 of ISO 76 against C0, where the bearing has a static rating (catalog or ISO 76)."""
+    from . import ratings
+
+    try:
+        c0 = ratings.bearing_ratings(bearing).static_load_rating
+        angle = bearing.contact_angle or 0.0
+        return static_load_warnings(ratings.static_equivalent_load(np.abs(radial_load), np.abs(axial_load), angle,
+                                                                   bearing_type=bearing.type), c0)
+    except (ValueError, ArithmeticError, TypeError):  # no rating for this geometry (angle outside ISO 76)
+        return []
+
+
 def contact_warnings(bearing, axial_load, ball_load_inner, ball_load_outer, contact_angle_inner,
                      contact_angle_outer):
     """Every plausibility warning of a bearing under thrust, from its ball loads and contact angles.
@@ -294,34 +337,58 @@ def contact_warnings(bearing, axial_load, ball_load_inner, ball_load_outer, cont
         Contact pressure, static load (P0 of the thrust against C0), deflection and ellipse truncation
         at both raceways; cases with NaN (failed) are skipped.
     """
-    from . import geometry, hertz, ratings
-
-    d, dm = bearing.ball_diameter, bearing.pitch_diameter
     fa = np.ravel(as_float("axial_load", axial_load))
     ok = np.isfinite(fa) & np.isfinite(np.ravel(ball_load_inner)) & np.isfinite(np.ravel(ball_load_outer))
     if not ok.any():
         return []
-    msgs, contacts = [], {}
-    for race, q, alpha in (("inner", ball_load_inner, contact_angle_inner),
-                           ("outer", ball_load_outer, contact_angle_outer)):
-        f = bearing.inner_conformity if race == "inner" else bearing.outer_conformity
-        q, alpha = np.ravel(q)[ok], np.ravel(alpha)[ok]
-        curv = geometry.raceway_curvature(d, dm, f, alpha, race=race)
-        contacts[race] = (alpha, f, hertz.point_contact(q, curv.curvature_sum, curv.curvature_difference,
-                                                        bearing.reduced_modulus))
-        msgs += contact_pressure_warnings(contacts[race][2].p_max, where=f"{race} contact")
-    try:
-        c0 = ratings.bearing_ratings(bearing).static_load_rating
-        msgs += static_load_warnings(ratings.static_equivalent_load(0.0, fa[ok], bearing.contact_angle,
-                                                                    bearing_type=bearing.type), c0)
-    except (ValueError, ArithmeticError):  # no rating for this geometry (angle outside ISO 76 table 1)
-        pass
-    for race, (_alpha, _f, pc) in contacts.items():
-        msgs += deflection_warnings(pc.delta, d, where=f"{race} contact")
-    for race, (alpha, f, pc) in contacts.items():
-        h, assumed = _shoulder(bearing, race)
-        msgs += truncation_warnings(alpha, pc.a, f * d, h, where=f"{race} contact", assumed=assumed)
-    return msgs
+    pressure, shape = _contact_checks(bearing, [
+        ("inner", np.ravel(ball_load_inner)[ok], np.ravel(contact_angle_inner)[ok]),
+        ("outer", np.ravel(ball_load_outer)[ok], np.ravel(contact_angle_outer)[ok])])
+    return pressure + _static_checks(bearing, 0.0, fa[ok]) + shape
+
+
+def combined_warnings(bearing, loads, ball_load_inner, ball_load_outer, contact_angle_inner,
+                      contact_angle_outer):
+    """Every plausibility warning of a bearing under combined load, from its load distribution.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing (ball set, conformities, materials; C0 from the catalog or ISO 76 where known).
+    loads : array_like
+        (..., 5): F_x, F_y, F_z [N], M_x, M_y [N m] of each case.
+    ball_load_inner, ball_load_outer : array_like
+        (..., Z): Q_i, Q_o of every ball, 0 (or NaN) for an unloaded ball. [N]
+    contact_angle_inner, contact_angle_outer : array_like
+        (..., Z): alpha_i, alpha_o of every ball. [rad]
+
+    Returns
+    -------
+    list of str
+        Contact pressure above ISO 76's 4200 MPa, P0 (ISO 76, from F_r = hypot(F_x, F_y) and F_a = |F_z|;
+        a moment is not part of P0) above C0, a deflection comparable to the ball and a contact ellipse
+        over the shoulder, at every loaded ball of the converged cases. The light-load criteria at speed
+        are the analysis's own (:func:`bearinglab.quasistatic.combined.combined_analysis` warnings).
+
+    Examples
+    --------
+    >>> from bearinglab import catalog
+    >>> b = catalog.get("7218B")
+    >>> combined_warnings(b, [0, 0, 1e6, 0, 0], [60e3] * 16, [60e3] * 16, [0.7] * 16, [0.7] * 16)[0]
+    'inner contact: maximum contact pressure 5034 MPa exceeds the ISO 76 limit of 4200 MPa (16 of 16 loaded balls): permanent deformation of the raceways'
+    """
+    f = np.reshape(as_float("loads", loads), (-1, 5))
+    q_i, q_o = np.reshape(ball_load_inner, (len(f), -1)), np.reshape(ball_load_outer, (len(f), -1))
+    ok = np.all(np.isfinite(f), axis=1) & np.any(np.isfinite(q_i), axis=1)
+    if not ok.any():
+        return []
+    a_i = np.reshape(contact_angle_inner, q_i.shape)
+    a_o = np.reshape(contact_angle_outer, q_o.shape)
+    pressure, shape = _contact_checks(bearing, [("inner", q_i[ok], a_i[ok]), ("outer", q_o[ok], a_o[ok])])
+    static = _static_checks(bearing, np.hypot(f[ok, 0], f[ok, 1]), f[ok, 2])
+    per_ball = [m.replace(" case(s))", " loaded balls)").replace(" case(s),", " loaded balls,")
+                for m in pressure + shape]  # counted over the loaded balls, not the cases
+    return per_ball[:len(pressure)] + static + per_ball[len(pressure):]
 
 
 def high_speed_warnings(bearing, state):

@@ -153,7 +153,8 @@ def _evaluate_axial_angle(axial_load, **cases):
         q[idx] = fa[idx] / (s["n_balls"] * np.sin(a))
         da[idx] = static.axial_displacement_ratio(a, s["contact_angle"]) * bd
     return {"operating_contact_angle_deg": np.degrees(angle), "load_deflection_constant_kgf": cstar / KGF,
-            "axial_displacement_mm": da * 1e3, "ball_load_N": q, "converged": ok, "failure": reason}
+            "load_deflection_constant_N": cstar,
+            "axial_displacement_um": da * 1e6, "ball_load_N": q, "converged": ok, "failure": reason}
 
 
 def _evaluate_stand_load(speed, **cases):
@@ -215,7 +216,7 @@ def _evaluate_high_speed(axial_load, speed, bearing, **options):
     # the same columns and dtypes in every chunk, even one without a valid case: floats, or objects
     # for the columns that have no unit factor (converged, iterations, status, method)
     cols = {c.name: _nan(fa.size) if c.factor is not None else np.full(fa.size, None, dtype=object)
-            for c in tables.HIGH_SPEED if c.name not in ("axial_load_kN", "speed_rpm")}
+            for c in tables.HIGH_SPEED if c.name not in ("axial_load_N", "speed_rpm")}
     idx = np.flatnonzero(ok)
     if idx.size:
         with warnings.catch_warnings():  # per-case validity is in the columns (friction_coefficient)

@@ -127,12 +127,12 @@ class Column(NamedTuple):
 
 #: Columns of a :class:`bearinglab.quasistatic.HighSpeedState` (spec 004), in the order printed.
 HIGH_SPEED = (
-    Column("axial_load_kN", "axial_load", "kN", 1e-3),
+    Column("axial_load_N", "axial_load", "N"),
     Column("speed_rpm", "shaft_speed", "rpm", 1.0 / RPM),
     Column("contact_angle_inner_deg", "contact_angle_inner", "deg", _DEG),
     Column("contact_angle_outer_deg", "contact_angle_outer", "deg", _DEG),
     Column("static_contact_angle_deg", "static_contact_angle", "deg", _DEG),
-    Column("axial_displacement_mm", "axial_displacement", "mm", 1e3),
+    Column("axial_displacement_um", "axial_displacement", "µm", 1e6),
     Column("ball_load_inner_N", "ball_load_inner", "N"),
     Column("ball_load_outer_N", "ball_load_outer", "N"),
     Column("deflection_inner_um", "deflection_inner", "µm", 1e6),
@@ -161,7 +161,7 @@ AXIAL_ANGLE = (
     Column("axial_load_kgf", "axial_load", "kgf", 1.0, KGF),
     Column("operating_contact_angle_deg", "contact_angle", "deg", _DEG),
     Column("axial_displacement_ratio", "axial_displacement_ratio", "-"),
-    Column("axial_displacement_mm", "axial_displacement", "mm", 1e3),
+    Column("axial_displacement_um", "axial_displacement", "µm", 1e6),
     Column("ball_load_N", "ball_load", "N"),
 )
 
@@ -301,11 +301,11 @@ def high_speed(state):
     -------
     dict
         Column name -> 1-D ndarray, the names and order of :data:`HIGH_SPEED` (``contact_angle_inner_deg``,
-        ``axial_displacement_mm``, ``gyroscopic_moment_Nmm``, ...). The inputs (thrust and speed) are
+        ``axial_displacement_um``, ``gyroscopic_moment_Nmm``, ...). The inputs (thrust and speed) are
         rounded to 12 significant digits.
     """
     cols = columns(state, HIGH_SPEED)
-    for name in ("axial_load_kN", "speed_rpm"):  # inputs: drop the last-bit noise of the unit round trip
+    for name in ("axial_load_N", "speed_rpm"):  # inputs: drop the last-bit noise of the unit round trip
         cols[name] = significant(cols[name])
     return cols
 
@@ -349,7 +349,7 @@ def stand_load(shaft_speed, result):
         ``max_axial_load_N``: 1-D arrays.
     """
     lo, hi = np.atleast_1d(result.minimum), np.atleast_1d(result.maximum)
-    return {"speed_rpm": np.ravel(shaft_speed) / RPM, "min_axial_load_kgf": lo / KGF, "min_axial_load_N": lo,
+    return {"speed_rpm": significant(np.ravel(shaft_speed) / RPM), "min_axial_load_kgf": lo / KGF, "min_axial_load_N": lo,
             "max_axial_load_kgf": hi / KGF, "max_axial_load_N": hi}
 
 

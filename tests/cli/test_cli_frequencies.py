@@ -253,7 +253,7 @@ def test_inline_geometry(capsys):
                 "--speed",
                 "3000 rpm",
             ],
-            r"n_balls must be an integer >= 1",
+            r"balls must be an integer >= 1",
         ),
         (
             [
@@ -268,7 +268,7 @@ def test_inline_geometry(capsys):
                 "--speed",
                 "3000 rpm",
             ],
-            r"pitch_diameter must be > ball_diameter",
+            r"pitch-diameter must be > ball_diameter",
         ),
         (
             [
@@ -283,7 +283,7 @@ def test_inline_geometry(capsys):
                 "--speed",
                 "3000 rpm",
             ],
-            r"ball_diameter must be > 0",
+            r"ball-diameter must be > 0",
         ),
         (
             [
@@ -298,7 +298,7 @@ def test_inline_geometry(capsys):
                 "--speed",
                 "3000 rpm",
             ],
-            r"contact_angle must be in \[0, 90\)",
+            r"contact-angle must be in \[0, 90\)",
         ),
         (
             [
@@ -317,7 +317,7 @@ def test_inline_geometry(capsys):
                 "--speed",
                 "3000 rpm",
             ],
-            r"inner_conformity must be in \(0.5, 10\)",
+            r"inner-conformity must be in \(0.5, 10\)",
         ),
         (
             [
@@ -336,7 +336,7 @@ def test_inline_geometry(capsys):
                 "--speed",
                 "3000 rpm",
             ],
-            r"radial_clearance must be in \(0, 0.32\) \[mm\] to give a real contact angle, got 0.5 mm",
+            r"radial-clearance must be in \(0, 0.32\) \[mm\] to give a real contact angle, got 0.5 mm",
         ),
         (["--speed", "3000 rpm"], r"bearing: give --bearing NAME"),
     ],

@@ -12,7 +12,7 @@ from bearinglab import catalog, quasistatic
 from bearinglab.cli import main
 from bearinglab.units import RPM
 
-KEYS = ("contact_angle_inner_deg", "contact_angle_outer_deg", "axial_displacement_mm", "ball_load_inner_N",
+KEYS = ("contact_angle_inner_deg", "contact_angle_outer_deg", "axial_displacement_um", "ball_load_inner_N",
         "ball_load_outer_N", "centrifugal_force_N", "gyroscopic_moment_Nmm", "attitude_angle_deg", "cage_speed_rpm",
         "ball_spin_speed_rpm", "converged", "residual")
 #: the reduced modulus of spec 004's rounded K prefactor 2.15e5 N/mm^1.5 (see tests/validation/test_high_speed_218.py)
@@ -40,7 +40,7 @@ def test_single_case_json_reproduces_section_7(capsys):
     assert set(KEYS) <= set(doc)
     assert doc["contact_angle_inner_deg"] == pytest.approx(49.308, abs=1e-3)
     assert doc["contact_angle_outer_deg"] == pytest.approx(32.514, abs=1e-3)
-    assert doc["axial_displacement_mm"] == pytest.approx(21.36e-3, abs=5e-6)  # printed 21.36 um
+    assert doc["axial_displacement_um"] == pytest.approx(21.36, abs=5e-3)  # printed 21.36 um
     assert doc["ball_load_inner_N"] == pytest.approx(1648.6, abs=0.05)
     assert doc["ball_load_outer_N"] == pytest.approx(2113.7, abs=0.05)
     assert doc["centrifugal_force_N"] == pytest.approx(635.0, abs=0.05)
@@ -92,9 +92,9 @@ def test_sweep_json_array_csv_and_plot(capsys, tmp_path):
     assert isinstance(rows, list) and len(rows) == 18 * 5
     assert all(set(KEYS) <= set(r) for r in rows)
     assert all(r["converged"] for r in rows)
-    by_case = {(r["axial_load_kN"], r["speed_rpm"]): r for r in rows}
+    by_case = {(r["axial_load_N"] / 1e3, r["speed_rpm"]): r for r in rows}
     assert by_case[(45.0, 15000.0)]["contact_angle_inner_deg"] == pytest.approx(50.746, abs=1e-3)
-    assert by_case[(2.5, 6000.0)]["axial_displacement_mm"] == pytest.approx(-81.41e-3, abs=5e-6)
+    assert by_case[(2.5, 6000.0)]["axial_displacement_um"] == pytest.approx(-81.41, abs=5e-3)
     with csv_file.open() as fh:
         table = list(csv.DictReader(fh))
     assert len(table) == 90
@@ -111,7 +111,7 @@ def test_sweep_table_and_failed_case_does_not_stop_it(capsys):
     code, out, _ = run(capsys, "high-speed", "-b", "B218", "-F", "300N,20kN", "-n", "3000, 15000rpm",
                        "--raceway-control", "inner", "--json")
     rows = json.loads(out)["cases"]
-    status = {(r["axial_load_kN"], r["speed_rpm"]): r["status"] for r in rows}
+    status = {(r["axial_load_N"] / 1e3, r["speed_rpm"]): r["status"] for r in rows}
     assert status[(0.3, 15000.0)] == "inner_contact_lost"
     assert status[(20.0, 3000.0)] == "ok"
     failed = [r for r in rows if not r["converged"]]

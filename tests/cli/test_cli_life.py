@@ -14,7 +14,7 @@ from bearinglab.units import RPM
 KEYS = ["dynamic_load_rating_N", "static_load_rating_N", "fatigue_load_limit_N", "rating_source",
         "equivalent_dynamic_load_N", "basic_rating_life_Mrev", "basic_rating_life_h", "reliability_factor",
         "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev", "modified_rating_life_h",
-        "reference_rating_life_Mrev", "modified_reference_rating_life_Mrev", "static_safety_factor", "warnings"]
+        "reference_rating_life_Mrev", "modified_reference_rating_life_Mrev", "static_safety_factor", "inputs", "warnings"]
 
 #: the MASTA deep-groove bearing of tests/data/masta_iso16281.csv (E = 210 GPa, nu = 0.3, C = 23.4 kN)
 MASTA = """

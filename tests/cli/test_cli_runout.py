@@ -274,7 +274,7 @@ def test_monte_carlo_text_and_bearing(capsys):
         (["runout", "monte-carlo"], "give --geometry FILE or --bearing NAME"),
         (
             ["runout", "monte-carlo", "--geometry", MC, "--ball-grade", "G7"],
-            "ball_grade must be one of",
+            "ball-grade must be one of",
         ),
         (["runout", "monte-carlo", "--geometry", MC, "--samples", "1"], "samples must be >= 2"),
     ],

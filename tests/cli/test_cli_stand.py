@@ -20,7 +20,7 @@ def test_axial_angle_json_reproduces_print(capsys):
     assert code == 0, err
     doc = json.loads(out)
     for key in ("contact_angle_initial_deg", "load_deflection_constant_kgf", "operating_contact_angle_deg",
-                "axial_displacement_ratio", "axial_displacement_mm", "ball_load_N", "converged", "iterations"):
+                "axial_displacement_ratio", "axial_displacement_um", "ball_load_N", "converged", "iterations"):
         assert key in doc
     assert doc["contact_angle_initial_deg"] == pytest.approx(12.0)
     assert doc["load_deflection_constant_kgf"] == pytest.approx(7792.357, abs=1e-3)
@@ -88,14 +88,14 @@ def test_stand_load_json(capsys):
 
 BAD = [
     (["axial-angle", "--balls", "0", "--ball-diameter", "2 mm", "--pitch-diameter", "8.7 mm", "--inner-conformity", "0.52",
-      "--outer-conformity", "0.53", "--contact-angle", "12 deg", "-F", "2 kgf"], r"n_balls must be an integer >= 1"),
-    (["axial-angle", "-b", "4-1006095", "--ball-diameter", "-2 mm", "-F", "2 kgf"], r"ball_diameter must be > 0 \[m\], got -0.002"),
-    (["axial-angle", "-b", "4-1006095", "--inner-conformity", "0.5", "-F", "2 kgf"], r"inner_conformity must be in \(0.5, 10\) \[-\], got 0.5"),
-    (["axial-angle", "-b", "4-1006095", "--pitch-diameter", "1.5 mm", "-F", "2 kgf"], r"pitch_diameter must be > ball_diameter \[mm\], got 1.5 mm"),
-    (["axial-angle", "-b", "4-1006095", "--radial-clearance", "0.5 mm", "-F", "2 kgf"], r"radial_clearance must be in \(0, 0.42\) \[mm\].*got 0.5 mm"),
-    (["axial-angle", "-b", "4-1006095", "--radial-clearance", "0.9 mm", "-F", "2 kgf"], r"radial_clearance must be in \(0, 0.84\) \[mm\] to give a real contact angle, got 0.9 mm"),
-    (["axial-angle", "-b", "4-1006095", "--contact-angle", "0 deg", "-F", "2 kgf"], r"contact_angle must be in \(0, 90\) \[deg\]"),
-    (["axial-angle", "-b", "4-1006095", "--contact-angle", "95 deg", "-F", "2 kgf"], r"contact_angle must be in \[0, 90\) \[deg\], got 95"),
+      "--outer-conformity", "0.53", "--contact-angle", "12 deg", "-F", "2 kgf"], r"balls must be an integer >= 1"),
+    (["axial-angle", "-b", "4-1006095", "--ball-diameter", "-2 mm", "-F", "2 kgf"], r"ball-diameter must be > 0 \[m\], got -0.002"),
+    (["axial-angle", "-b", "4-1006095", "--inner-conformity", "0.5", "-F", "2 kgf"], r"inner-conformity must be in \(0.5, 10\) \[-\], got 0.5"),
+    (["axial-angle", "-b", "4-1006095", "--pitch-diameter", "1.5 mm", "-F", "2 kgf"], r"pitch-diameter must be > ball_diameter \[mm\], got 1.5 mm"),
+    (["axial-angle", "-b", "4-1006095", "--radial-clearance", "0.5 mm", "-F", "2 kgf"], r"radial-clearance must be in \(0, 0.42\) \[mm\].*got 0.5 mm"),
+    (["axial-angle", "-b", "4-1006095", "--radial-clearance", "0.9 mm", "-F", "2 kgf"], r"radial-clearance must be in \(0, 0.84\) \[mm\] to give a real contact angle, got 0.9 mm"),
+    (["axial-angle", "-b", "4-1006095", "--contact-angle", "0 deg", "-F", "2 kgf"], r"contact-angle must be in \(0, 90\) \[deg\]"),
+    (["axial-angle", "-b", "4-1006095", "--contact-angle", "95 deg", "-F", "2 kgf"], r"contact-angle must be in \[0, 90\) \[deg\], got 95"),
     (["axial-angle", "-b", "4-1006095", "-F", "0 N"], r"axial-load must be > 0 \[N\], got 0.0"),
     (["axial-angle", "-b", "4-1006095", "-F", "-2 kgf"], r"axial-load must be > 0 \[N\]"),
     (["axial-angle", "-b", "4-1006095", "-F", "2 m"], r"axial-load: '2 m' is a length, expected a force"),
@@ -103,7 +103,7 @@ BAD = [
     (["axial-angle", "-b", "no-such-bearing", "-F", "2 kgf"], r"unknown name 'no-such-bearing'; known: .*B218"),
     (["axial-angle", "-b", "B218", "-F", "2 kgf", "--hertz", "table"], r"no tabulated Hertz coefficients"),
     (["stand-load", "-b", "4-1006095", "--speed", "3000 N"], r"speed: '3000 N' is a force, expected a speed"),
-    (["stand-load", "-b", "4-1006095", "--speed", "-3000 rpm"], r"speed must be >= 0 \[rpm\], got -3000"),
+    (["stand-load", "-b", "4-1006095", "--speed", "-3000 rpm"], r"speed must be >= 0 \[rpm\].*, got -3000 rpm"),
     (["stand-load", "-b", "1000095", "--speed", "3000 rpm"], r"n_balls of '1000095' is not known"),
 ]
 

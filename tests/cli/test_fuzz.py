@@ -30,7 +30,7 @@ ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
 EXAMPLES_PER_COMMAND = int(os.environ.get("BEARINGLAB_FUZZ_EXAMPLES", "220"))
 # commands whose runs take 10 to 50 times longer (plots, reports, sweeps, sequences): fewer examples
-SLOW = {("sweep",): 4, ("friction", "lab"): 8, ("runout",): 2, ("runout", "monte-carlo"): 2}
+SLOW = {("sweep",): 4, ("friction", "lab"): 8, ("runout",): 3, ("runout", "monte-carlo"): 2, ("bearing-set",): 6}
 
 
 def _commands():
@@ -63,7 +63,8 @@ QUANTITIES = [
 NUMBERS = ["-1", "0", "1", "2", "3", "7", "9", "16", "0.5", "0.52", "1.5", "-0.5", "1e9", "nan", "inf", "x"]
 NAMES = ["B218", "7218B", "4-1006095", "6205-2RS", "18", "61811-2RS1", "b218", "no-such-bearing", "", "G5",
          "P4", "newton", "outer", "mass", "harris", "exact", "table", "paper", "materials", "serial", "bogus",
-         "steel", "silicon_nitride", "radial_ptp_max", "palmgren", "one-term"]
+         "steel", "silicon_nitride", "radial_ptp_max", "palmgren", "one-term", "skf", "grease", "oil-bath", "DB",
+         "XX", "free", "VG68", "VG7000", "dirty", "normal"]
 RUNOUT_FILES = [EXAMPLES / "runout" / "example1_oversize_ball.toml", EXAMPLES / "runout" / "example4_tilt.toml"]
 BEARING_FILE = ('[bearings."X"]\nballs = 9\nball_diameter = "7.938 mm"\npitch_diameter = "38.5 mm"\n'
                 'inner_conformity = 0.52\nouter_conformity = 0.53\ncontact_angle = "15 deg"\n')
@@ -145,14 +146,27 @@ GOOD = {
     "inner_conformity": ["0.52"], "outer_conformity": ["0.53"], "contact_angle": ["12 deg", "40 deg"],
     "radial_clearance": ["9 um", "20 um"], "ball_material": ["steel", "silicon_nitride"],
     "reduced_modulus": ["228 GPa"], "memory_limit": ["1GiB"],
+    # load-distribution, bearing-set, life, friction torque (all its models), catalog show
+    "fx": ["1 kN", "0 N", "-500 N", "5 kN"], "fy": ["0 N", "300 N"], "fz": ["1 kN", "0 N", "-2 kN", "10 kN"],
+    "mx": ["0 N*m", "50 N*m"], "my": ["0 N*m", "-20 N*m"], "stiffness_at": ["operating", "free"],
+    "arrangement": ["DB", "DF", "DT"], "spacing": ["0 mm", "100 mm"], "preload": ["500 N", "2 kN"],
+    "preload_offset": ["5 um", "0 um"], "model": ["one-term", "two-term", "palmgren", "skf", "skf"],
+    "viscosity": ["20 cSt", "2 cSt", "100 cSt"], "lubrication": ["grease", "oil-air", "oil-jet"],
+    "oil": ["VG68", "VG32"], "viscosity_100": ["8.7 cSt"], "temperature": ["70 degC", "40 degC"],
+    "contamination_factor": ["0.5", "1"], "contamination": ["normal", "severe"], "reliability": ["90", "99"],
+    "f0": ["2e-7"], "palmgren_f0": ["1.5"], "mu": ["0.0015"],
 }
+# the commands that need a bearing with catalog ratings or an SKF series draw these too
+GOOD_BEARINGS = {"friction": ["6205-2RS", "61811-2RS1", "101", "18"], "life": ["6205-2RS", "B218", "7218B"],
+                 "catalog": ["6205-2RS", "61811-2RS1", "101"]}
 # options whose default makes a run long (200 Monte Carlo samples, 3 x 360 positions): always given,
 # mostly with a small value, so that the examples stay fast
 SMALL = ("samples", "steps_per_rev", "revolutions")
 # an option of a new command not in GOOD: one of these may fit (a number, or a quantity of some kind)
 ANY_GOOD = ["1", "0.5", "2", "2 kN", "3000 rpm", "20 cSt", "0.07 N*mm", "12 deg", "8 mm", "B218"]
 # options that make a command run at all: drawn more often than the others
-LIKELY = ("bearing", "errors", "file", "name")
+LIKELY = ("bearing", "errors", "file", "name", "viscosity")
+LIKELY_FOR = {"life": ("speed",)}  # an optional option that a command needs to compute
 # the inline geometry: any one of them changes the bearing, so they are drawn rarely
 INLINE = ("balls", "ball_diameter", "pitch_diameter", "inner_groove_radius", "outer_groove_radius",
           "inner_conformity", "outer_conformity", "contact_angle", "radial_clearance", "ball_material")
@@ -165,7 +179,7 @@ def _argv(draw, path, command, workdir):
         if param.name in ("help",):
             continue
         kind = _kind(param)
-        chance = 80 if param.name in LIKELY else (6 if kind == "input" or param.name in INLINE else 25)
+        chance = 80 if param.name in LIKELY or param.name in LIKELY_FOR.get(path[0], ()) else (6 if kind == "input" or param.name in INLINE else 25)
         if param.name in SMALL:
             chance = 100
         if not param.required and draw(st.integers(0, 99)) >= chance:
@@ -178,7 +192,10 @@ def _argv(draw, path, command, workdir):
         elif kind == "output":
             value = str(workdir / draw(st.sampled_from(OUTPUT_NAMES)))
         elif good:
-            value = draw(st.sampled_from(GOOD.get(param.name, ANY_GOOD)))
+            pool = GOOD.get(param.name, ANY_GOOD)
+            if param.name in ("bearing", "name"):
+                pool = pool + GOOD_BEARINGS.get(path[0], [])
+            value = draw(st.sampled_from(pool))
         else:
             value = draw(st.sampled_from(QUANTITIES + NUMBERS + NAMES))
         if param.param_type_name == "argument":
@@ -230,6 +247,7 @@ def test_fuzz_command(path, tmp_path_factory, capsys, monkeypatch):
 
 def test_every_command_is_fuzzed():
     names = {" ".join(p) for p in COMMANDS}
-    for expected in ("axial-angle", "high-speed", "runout", "runout monte-carlo", "catalog list", "sweep"):
+    for expected in ("axial-angle", "high-speed", "runout", "runout monte-carlo", "catalog list", "sweep",
+                     "load-distribution", "bearing-set", "life", "friction torque", "catalog show"):
         assert expected in names
     assert sum(EXAMPLES_PER_COMMAND // SLOW.get(p, 1) for p in COMMANDS) >= 2000

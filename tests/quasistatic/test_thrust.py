@@ -185,10 +185,10 @@ def test_friction_warning_when_outer_control_needs_too_much_friction():
 def test_result_table_units():
     s = quasistatic.sweep(B218, [20e3], [10000 * RPM], constants="harris")
     t = quasistatic.result_table(s)
-    assert t["axial_load_kN"][0] == 20.0 and t["speed_rpm"][0] == 10000.0
+    assert t["axial_load_N"][0] == 20e3 and t["speed_rpm"][0] == 10000.0
     assert t["contact_angle_inner_deg"][0] == pytest.approx(math.degrees(s.contact_angle_inner[0, 0]))
     assert t["gyroscopic_moment_Nmm"][0] == pytest.approx(s.gyroscopic_moment[0, 0] * 1e3)
-    assert t["axial_displacement_mm"][0] == pytest.approx(s.axial_displacement[0, 0] * 1e3)
+    assert t["axial_displacement_um"][0] == pytest.approx(s.axial_displacement[0, 0] * 1e6)
     assert t["status"][0] == "ok" and t["converged"][0]
 
 

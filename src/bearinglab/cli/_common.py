@@ -6,10 +6,15 @@ Execution        ExecutorOpt, WorkersOpt, ChunkSizeOpt; execution (one parallel.
 Output           console, emit_json (one JSON document on stdout), table (a rich table), emit_csv,
                  print_warnings
 Inputs echoed    inputs_echo (the bearing as used, the overrides, the quantities given)
-Input checks     choice, check_directory, check_output (directory and suffix of an output file)
+Input checks     choice, check_directory, check_output (directory and suffix of an output file),
+                 check_output_directory (its parent exists),
+                 check_input (an input file exists), parse_speeds (one rule for every speed option),
+                 parse_viscosity
 
 The command modules import these; none of them imports the package ``bearinglab.cli`` itself, so the
-application is built on import without a cycle.
+application is built on import without a cycle. The physics (numpy, scipy, pint, matplotlib) is imported
+inside the functions that compute, never at the top of a command module: ``bearinglab --help`` builds
+every command without it (``tests/cli/test_cli_startup.py``).
 """
 
 from __future__ import annotations
@@ -21,7 +26,7 @@ import re
 import sys
 import weakref
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 from rich.console import Console
@@ -29,11 +34,10 @@ from rich.markup import escape
 from rich.measure import Measurement
 from rich.table import Table
 
-from .. import catalog as _catalog
-from .. import parallel, tables
-from ..bearing import MATERIALS, BallBearing
 from ..errors import InputError
-from ..units import parse_quantity
+
+if TYPE_CHECKING:
+    from ..bearing import BallBearing
 
 __all__: list[str] = []  # private to the command line
 
@@ -67,6 +71,10 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
                     inner_conformity=None, outer_conformity=None, contact_angle=None,
                     radial_clearance=None, ball_material=None) -> BallBearing:
     """The bearing named, read from a file, or given inline; inline options override named fields."""
+    from .. import catalog as _catalog
+    from ..bearing import MATERIALS, BallBearing
+    from ..units import parse_quantity
+
     if bearing and bearing_file:
         raise InputError("bearing: give --bearing or --bearing-file, not both")
     if bearing:
@@ -158,6 +166,8 @@ def inputs_echo(bearing, **quantities):
         bearing, then the quantities. Floats carry 15 significant digits, so that a unit conversion
         does not show as noise (``3000.0000000000005`` rpm); results are never rounded.
     """
+    from .. import tables
+
     geometry = {k: v for k, v in tables.bearing_summary(bearing).items()
                 if v is not None and k not in ("designation", "source")}
     out = {"bearing": bearing.designation, "geometry": geometry}
@@ -198,6 +208,8 @@ def progress_bar(description, executor="serial"):
 
 def emit_json(obj):
     """Print one JSON document on stdout (NaN and inf become null; :func:`bearinglab.tables.json_text`)."""
+    from .. import tables
+
     sys.stdout.write(tables.json_text(obj))
 
 
@@ -254,6 +266,8 @@ def print_warnings(notes):
 
 def emit_csv(path, columns, what="csv"):
     """Write ``columns`` as CSV to ``path`` (whole or not at all); the directory must exist."""
+    from .. import tables
+
     path = Path(path)
     check_directory(path, what)
     tables.write_table(columns, path)
@@ -282,6 +296,55 @@ def check_output(path, what, suffixes=None):
     return path
 
 
+def check_output_directory(path, what):
+    """An output directory, checked before anything is computed: the command creates it (or replaces what
+    it wrote there before), but its parent must exist, as the directory of an output file must."""
+    path = Path(path)
+    check_directory(path, what)
+    if path.exists() and not path.is_dir():
+        raise InputError(f"{what}: {str(path)!r} is a file; give a directory")
+    return path
+
+
+def check_input(path, what):
+    """An input file, checked before anything is read: it exists and is a file (the message names the
+    option, ``what``)."""
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"{what}: {path}: no such file")
+    if path.is_dir():
+        raise InputError(f"{what}: {str(path)!r} is a directory; give a file name")
+    return path
+
+
+def parse_speeds(text, name="speed", *, pitch_diameter=None, zero=True, what="the inner-ring speed"):
+    """The speeds of a speed option [rad/s]: one convention for every command. A speed is a magnitude,
+    >= 0 (> 0 with ``zero=False``, where a zero speed has no meaning, e.g. a life in hours), and below
+    the d_m n that no ball bearing of the size runs (:func:`bearinglab.limits.check_speed`) when the
+    pitch diameter is given. The message gives the offending value in rpm."""
+    from .. import limits
+    from ..units import RPM, parse_values
+
+    w = parse_values(text, "speed", name)
+    bad = ~(w >= 0) if zero else ~(w > 0)
+    if bad.any():
+        raise InputError(f"{name} must be {'>=' if zero else '>'} 0 [rpm] ({what}, a magnitude), got "
+                         f"{float(w[bad][0]) / RPM:g} rpm")
+    if pitch_diameter is not None:
+        limits.check_speed(w, pitch_diameter, name)
+    return w
+
+
+def parse_viscosity(text, name="viscosity"):
+    """A kinematic viscosity option [m^2/s], > 0 (the message in cSt, the unit of oil data sheets)."""
+    from ..units import parse_quantity
+
+    nu = parse_quantity(text, "kinematic_viscosity", name)
+    if not nu > 0:
+        raise InputError(f"{name} must be > 0 [cSt], got {float(nu) * 1e6:.6g} cSt")
+    return nu
+
+
 def choice(name, value, choices):
     """``value`` if it is one of ``choices``; otherwise an InputError listing them."""
     if value not in choices:
@@ -298,6 +361,8 @@ def execution(description, executor=None, workers=None, chunk_size=None, *, memo
     command's progress report: a rich bar (serial) or dask's bar (distributed) on a terminal, none
     otherwise or with ``progress=False``.
     """
+    from .. import parallel
+
     ex = parallel.Execution(executor=executor or "serial", workers=workers, chunk_size=chunk_size,
                             memory_limit=memory_limit)
     bar = progress_bar(description, ex.executor) if progress else contextlib.nullcontext(None)
@@ -319,12 +384,14 @@ AxialLoadOpt = Annotated[str | None, typer.Option("--axial-load", "-A", help="Sa
 
 def five_loads(fx=None, fy=None, fz=None, mx=None, my=None, radial_load=None, axial_load=None):
     """(F_x, F_y, F_z, M_x, M_y) in N and N m from the load options (missing ones are 0)."""
+    from ..units import parse_quantity
+
     if fx is not None and radial_load is not None:
         raise InputError("radial-load: give --fx or --radial-load, not both")
     if fz is not None and axial_load is not None:
         raise InputError("axial-load: give --fz or --axial-load, not both")
-    fx = radial_load if fx is None else fx
-    fz = axial_load if fz is None else fz
-    names = (("fx", fx, "force"), ("fy", fy, "force"), ("fz", fz, "force"), ("mx", mx, "torque"),
-             ("my", my, "torque"))
+    names = (("fx" if radial_load is None else "radial-load", radial_load if fx is None else fx, "force"),
+             ("fy", fy, "force"),
+             ("fz" if axial_load is None else "axial-load", axial_load if fz is None else fz, "force"),
+             ("mx", mx, "torque"), ("my", my, "torque"))
     return [0.0 if text is None else parse_quantity(text, kind, name) for name, text, kind in names]

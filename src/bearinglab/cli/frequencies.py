@@ -5,8 +5,6 @@ Commands
 COMMANDS   the ``frequencies`` command, by name (the application adds it)
 """
 
-from __future__ import annotations
-
 import math
 import re
 from pathlib import Path
@@ -14,9 +12,7 @@ from typing import Annotated
 
 import typer
 
-from .. import kinematics, limits, stand, tables
 from ..errors import InputError
-from ..units import KGF, format_dms, parse_quantity
 from ._common import (
     BallDiameter,
     BallMaterial,
@@ -169,6 +165,7 @@ def frequencies(
 
 def _read(speed, outer_speed, axial_load, hertz, harmonics, sidebands, band):
     """The options in SI, checked: ring speeds, axial load (or None), band as a fraction."""
+    from ..units import parse_quantity
     if hertz not in ("exact", "table"):
         raise InputError(f"hertz must be one of ['exact', 'table'], got {hertz!r}")
 
@@ -196,6 +193,8 @@ def _read(speed, outer_speed, axial_load, hertz, harmonics, sidebands, band):
 def _frequencies(b, w_in, w_out, fa, hertz, elastic_constant):
     """Frequencies at the nominal angle, or at the operating angle under ``fa`` with the shift; and
     the angle [rad] they are at."""
+    from .. import kinematics, limits, stand, tables
+    from ..units import KGF, format_dms
     z, d, dm, a0 = b.require("n_balls", "ball_diameter", "pitch_diameter", "contact_angle")
     limits.check_speed([w_in, w_out], dm)
     out = inputs_echo(b, speed_rpm=w_in / _HZ * 60.0, outer_speed_rpm=w_out / _HZ * 60.0,
@@ -229,6 +228,7 @@ def _frequencies(b, w_in, w_out, fa, hertz, elastic_constant):
 
 def _mask(b, w_in, w_out, angle, harmonics, sidebands, band_fraction):
     """The lines of the spectral mask at the angle of the frequencies (Hz and orders)."""
+    from .. import kinematics, tables
     z, d, dm = b.require("n_balls", "ball_diameter", "pitch_diameter")
     m = kinematics.spectral_mask(
         w_in,
@@ -246,6 +246,7 @@ def _mask(b, w_in, w_out, angle, harmonics, sidebands, band_fraction):
 
 def _print(b, out, mask_rows):
     """The frequencies (and the shift under load) as tables; the mask too if ``mask_rows`` is given."""
+    from .. import kinematics
     loaded = "axial_load_N" in out
     shaft_hz, outer_hz = out["shaft_hz"], out["outer_hz"]
     speeds = f"shaft {out['speed_rpm']:g} rpm = {shaft_hz:.6g} Hz"

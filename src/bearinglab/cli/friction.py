@@ -9,28 +9,27 @@ Commands
 COMMANDS   the ``friction`` command group, by name (the application adds it)
 """
 
-from __future__ import annotations
-
 import dataclasses
 import sys
 from pathlib import Path
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from .. import friction, tables
-from ..bearing import BallBearing
 from ..errors import InputError
-from ..units import RPM, parse_quantity, parse_values
 from ._common import (
     BearingFile,
     BearingName,
     CatalogFile,
     ContactAngle,
     JsonFlag,
+    check_output_directory,
     console,
     emit_json,
+    inputs_echo,
+    parse_speeds,
+    parse_viscosity,
+    print_warnings,
     resolve_bearing,
 )
 from ._common import table as _table
@@ -56,6 +55,9 @@ def _friction_bearing(
     mean_diameter,
     static_load_rating,
 ):
+    from .. import friction
+    from ..bearing import BallBearing
+    from ..units import parse_quantity
     if bearing or bearing_file:
         base = resolve_bearing(bearing, bearing_file, catalog, contact_angle=contact_angle)
     else:
@@ -108,9 +110,12 @@ def table(title, columns, rows, *, caption=None):
 
 
 def _case_values(text, kind, name):
+    import numpy as np
+
+    from ..units import parse_values
     values = parse_values(text, kind, name)
-    if np.any(~(values >= 0)):
-        raise InputError(f"{name} must be >= 0, got {float(values[~(values >= 0)][0])!r} (SI)")
+    if np.any(~(values >= 0)):  # a force: its magnitude (P0 takes |F_r| and |F_a|)
+        raise InputError(f"{name} must be >= 0 [N], got {float(values[~(values >= 0)][0]):g} N")
     return values
 
 
@@ -226,6 +231,10 @@ def torque(
     json_out: JsonFlag = False,
 ):
     """Friction torque under combined load: handbook models (spec 001 section 3: P0, T, T0 and T_F) or SKF's."""
+    import numpy as np
+
+    from .. import friction, tables
+    from ..units import RPM
     if model not in _MODELS:
         raise InputError(f"model must be one of {list(_MODELS)}, got {model!r}")
     if model == "skf":
@@ -233,7 +242,9 @@ def torque(
             bearing or bearing_file) else None
         if b is None:
             raise InputError("bearing: the skf model needs --bearing NAME or --bearing-file FILE (series, seals)")
-        _skf_torque(b, *_cases(radial_load, axial_load, speed), viscosity, lubrication, json_out)
+        fr, fa, n = _cases(radial_load, axial_load, speed)
+        _check_speed(b, n)
+        _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out)
         return
     b = _friction_bearing(
         bearing,
@@ -247,6 +258,7 @@ def torque(
         static_load_rating,
     )
     fr, fa, n = _cases(radial_load, axial_load, speed)
+    _check_speed(b, n)
     angle = b.contact_angle if b.type == "angular" else None
     if b.type == "angular" and angle is None and (x0 is None or y0 is None):
         raise InputError(
@@ -261,6 +273,7 @@ def torque(
         x0_used = float(x_tab) if x0 is None else x0
         y0_used = float(y_tab) if y0 is None else y0
     info = {"bearing": b.designation, "type": b.type, "model": model, "x0": x0_used, "y0": y0_used}
+    notes = _static_warnings(b, p0)
     if model == "one-term":
         speed_term, load_term = _one_term(b, p0, mu, info)
     else:
@@ -280,30 +293,80 @@ def torque(
         }
         for i in range(p0.size)
     ]
+    echo = {"inputs": _echo(b, fr, fa, n, model=model, mu=mu, x0=x0, y0=y0, f=f, c=c, f0=f0,
+                            viscosity_cSt=None if viscosity is None else _viscosity_cst(viscosity),
+                            palmgren_f0=palmgren_f0), "warnings": notes}
     if json_out:
-        emit_json({**info, **cases[0]} if len(cases) == 1 else {**info, "cases": cases})
+        emit_json({**info, **cases[0], **echo} if len(cases) == 1 else {**info, "cases": cases, **echo})
         return
     _print_torque(b, model, info, cases)
+    print_warnings(notes)
+
+
+def _check_speed(b, n):
+    """The speed guard (d_m n), with the pitch diameter or the handbook's mean diameter, where known."""
+    from .. import limits
+
+    dm = b.pitch_diameter if b.pitch_diameter is not None else (
+        b.mean_diameter if b.bore is not None and b.outside_diameter is not None else None)
+    if dm is not None:
+        limits.check_speed(n, dm)
+
+
+def _static_warnings(b, p0):
+    """P0 of ISO 76 against C0 (bearinglab.limits), where the bearing has a static rating."""
+    from .. import limits
+
+    c0 = b.static_load_rating
+    if c0 is None:
+        try:
+            from .. import ratings
+
+            c0 = ratings.bearing_ratings(b).static_load_rating
+        except (ValueError, ArithmeticError):  # no ball set to compute C0 from
+            return []
+    return limits.static_load_warnings(p0, c0)
+
+
+def _viscosity_cst(text):
+    return parse_viscosity(text) * 1e6
+
+
+def _echo(b, fr, fa, n, **options):
+    """The inputs as used (:func:`inputs_echo`): the bearing, the loads and speeds, the model's options."""
+    from ..units import RPM
+
+    one = fr.size == 1
+    def value(x, scale=1.0):
+        return float(x[0]) * scale if one else [v * scale for v in x.tolist()]
+
+    return inputs_echo(b, radial_load_N=value(fr), axial_load_N=value(fa), speed_rpm=value(n, 1.0 / RPM),
+                       **{k: v for k, v in options.items() if v is not None})
 
 
 def _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out):
     """The SKF four-term model (:func:`bearinglab.friction.skf_for_bearing`): moments, power loss, mu_sl."""
+    from .. import friction, tables
+    from ..units import RPM
     if viscosity is None:
         raise InputError("viscosity: the skf model needs --viscosity (e.g. '30 cSt'; of the base oil for grease)")
     if lubrication not in friction.LUBRICATION_METHODS:
         hint = " (oil bath: its drag moment is not modelled)" if "bath" in lubrication else ""
         raise InputError(f"lubrication must be one of {list(friction.LUBRICATION_METHODS)}, got "
                          f"{lubrication!r}{hint}")
-    nu = parse_quantity(viscosity, "kinematic_viscosity", "viscosity")
+    nu = parse_viscosity(viscosity)
     m = friction.skf_for_bearing(b, fr, fa, n, nu, lubrication=lubrication)
+    notes = _skf_warnings(b, fr, fa)
     moments = tables.rows(tables.skf_torque(m))
     rpm = tables.significant(n / RPM)
     cases = [{"radial_load_N": float(fr[i]), "axial_load_N": float(fa[i]), "speed_rpm": float(rpm[i]), **moments[i]}
              for i in range(len(moments))]
     info = {"bearing": b.designation, "type": b.type, "model": "skf", "lubrication": lubrication,
             "viscosity_cSt": float(tables.significant(nu * 1e6)[0])}
+    echo = {"inputs": _echo(b, fr, fa, n, model="skf", lubrication=lubrication, viscosity_cSt=nu * 1e6),
+            "warnings": notes}
     if json_out:
-        emit_json({**info, **cases[0]} if len(cases) == 1 else {**info, "cases": cases})
+        emit_json({**info, **cases[0], **echo} if len(cases) == 1 else {**info, "cases": cases, **echo})
         return
     table(f"Friction torque of {b.designation} ({b.type}), SKF model, {lubrication}",
           ["F_r [N]", "F_a [N]", "n [rpm]", "M_rr [N·mm]", "M_sl [N·mm]", "M_seal [N·mm]", "M_drag [N·mm]",
@@ -313,13 +376,27 @@ def _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out):
                                        "drag_moment_Nmm", "total_moment_Nmm", "power_loss_W")),
             f"{r['sliding_friction_coefficient']:.5f}"] for r in cases],
           caption=f"ν = {info['viscosity_cSt']:g} mm²/s; SKF rolling, sliding, seal and drag moments")
+    print_warnings(notes)
+
+
+def _skf_warnings(b, fr, fa):
+    """P0 of ISO 76 (from F_r, F_a) against C0, where the bearing has its ratings."""
+    from .. import ratings
+
+    try:
+        angle = b.contact_angle or 0.0
+        p0 = ratings.static_equivalent_load(fr, fa, angle, bearing_type=b.type)
+    except (ValueError, ArithmeticError):  # an angle outside ISO 76's table: no P0
+        return []
+    return _static_warnings(b, p0)
 
 
 def _cases(radial_load, axial_load, speed):
     """The radial loads, axial loads and speeds (SI), broadcast to one length."""
+    import numpy as np
     fr = _case_values(radial_load, "force", "radial-load")
     fa = _case_values(axial_load, "force", "axial-load")
-    n = _case_values(speed, "speed", "speed")
+    n = parse_speeds(speed)
     sizes = {v.size for v in (fr, fa, n) if v.size > 1}
     if len(sizes) > 1:
         raise InputError(
@@ -330,6 +407,9 @@ def _cases(radial_load, axial_load, speed):
 
 def _one_term(b, p0, mu, info):
     """Speed and load terms of the one-term model (the whole torque is the load term)."""
+    import numpy as np
+
+    from .. import friction
     d = b.require("bore")
     mu_used = friction.handbook_friction_coefficient(b.type) if mu is None else mu
     total = np.atleast_1d(friction.one_term(p0, d, bearing_type=b.type, reduced_friction_coefficient=mu))
@@ -339,6 +419,9 @@ def _one_term(b, p0, mu, info):
 
 def _two_term(b, model, angle, p0, n, f, c, f0, viscosity, palmgren_f0, info):
     """Speed and load terms of the two-term and the Palmgren model; the constants used go to ``info``."""
+    import numpy as np
+
+    from .. import friction
     dm = b.mean_diameter
     c0 = b.require("static_load_rating")
     f_used, c_used = f, c
@@ -371,7 +454,7 @@ def _two_term(b, model, angle, p0, n, f, c, f0, viscosity, palmgren_f0, info):
                 "viscosity: the palmgren model needs --viscosity (e.g. '20 cSt') and --palmgren-f0 "
                 "(e.g. 2)"
             )
-        nu = parse_quantity(viscosity, "kinematic_viscosity", "viscosity")
+        nu = parse_viscosity(viscosity)
         speed_term = np.atleast_1d(friction.palmgren(nu, n, dm, palmgren_f0))
         info.update(
             {
@@ -441,6 +524,8 @@ def lab(
     from .. import report
     from ..lab import analysis, measurement
 
+    if out is not None:
+        check_output_directory(out, "out")
     session = measurement.read_session(file)
     result = analysis.analyse(session)
     files = report.write_report(result, out) if out is not None else None

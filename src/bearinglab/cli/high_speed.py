@@ -11,21 +11,15 @@ Commands
 COMMANDS   the ``high-speed`` command, by name (the application adds it)
 """
 
-from __future__ import annotations
-
 import dataclasses
 import sys
 import warnings
 from pathlib import Path
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from .. import limits, plots, quasistatic, tables
 from ..errors import ConvergenceError, InputError, ValidityWarning
-from ..plots import high_speed as high_speed_plots
-from ..units import RPM, parse_quantity, parse_values
 from ._common import (
     FIGURE_SUFFIXES,
     BallDiameter,
@@ -52,6 +46,7 @@ from ._common import (
     emit_json,
     execution,
     inputs_echo,
+    parse_speeds,
     print_warnings,
     resolve_bearing,
     table,
@@ -82,6 +77,9 @@ def high_speed(
     json_out: JsonFlag = False,
 ):
     """High-speed angular-contact bearing under thrust (spec 004): α_i, α_e, δ_a, loads, F_c, M_g, speeds."""
+    from .. import limits, plots, tables
+    from ..plots import high_speed as high_speed_plots
+    from ..units import RPM
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)
@@ -113,10 +111,11 @@ def high_speed(
                            solver=solver, reduced_modulus_GPa=None if reduced_modulus is None else
                            options["reduced_modulus"] / 1e9)
         if single:  # the inputs as given, without the noise of the unit conversions
-            echo.update(inputs_echo(b, axial_load_kN=float(loads[0]) / 1e3, speed_rpm=float(speeds[0]) / RPM))
+            echo.update(inputs_echo(b, axial_load_N=float(loads[0]), speed_rpm=float(speeds[0]) / RPM))
             emit_json(dict(rows[0], **echo, warnings=notes))
         else:
-            emit_json(dict(echo, axial_load_kN=list(loads / 1e3), speed_rpm=list(speeds / RPM), cases=rows,
+            emit_json(dict(echo, **inputs_echo(b, axial_load_N=loads.tolist(), speed_rpm=(speeds / RPM).tolist()),
+                           cases=rows,
                            warnings=notes))
         return
     if single:
@@ -131,6 +130,8 @@ def high_speed(
 
 def _model_options(solver, raceway_control, constants, gyroscopic_sign, reduced_modulus):
     """The options of :func:`bearinglab.quasistatic.high_speed_analysis`, checked."""
+    from .. import quasistatic
+    from ..units import parse_quantity
     choice("solver", solver, ("newton", "angle-iteration"))
     choice("raceway-control", raceway_control, tuple(quasistatic.RACEWAY_CONTROLS))
     choice("constants", constants, tuple(quasistatic.CONSTANTS))
@@ -146,19 +147,19 @@ def _model_options(solver, raceway_control, constants, gyroscopic_sign, reduced_
 
 def _grid(axial_load, speed):
     """The thrusts and speeds given (SI), checked."""
+    import numpy as np
+
+    from ..units import parse_values
     loads = parse_values(axial_load, "force", "axial-load")
-    speeds = parse_values(speed, "speed", "speed")
     if np.any(~(loads > 0)):
         raise InputError(f"axial-load must be > 0 [N], got {float(loads[~(loads > 0)][0])!r} N")
-    if np.any(~(speeds >= 0)):
-        raise InputError(f"speed must be >= 0 [rpm] (the inner-ring speed as a magnitude), got "
-                         f"{float(speeds[~(speeds >= 0)][0]) / RPM:g} rpm")
-    return loads, speeds
+    return loads, parse_speeds(speed)
 
 
 def _solve(bearing, loads, speeds, options, ex):
     """One case (:func:`quasistatic.high_speed_analysis`) or the grid (:func:`quasistatic.sweep`) in chunks on
     the chosen executor; returns the state and the validity warnings raised on the way."""
+    from .. import quasistatic
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", ValidityWarning)
         if loads.size == 1 and speeds.size == 1:
@@ -173,6 +174,7 @@ def _solve(bearing, loads, speeds, options, ex):
 def _sign_change(bearing, speeds, options, notes):
     """The thrust at which delta_a changes sign per speed, from the library's solve (not the grid); None
     (the figure then interpolates on the grid) with a note if it does not converge."""
+    from .. import quasistatic
     try:
         return quasistatic.sign_change_thrust(
             bearing, speeds, reduced_modulus=options["reduced_modulus"], constants=options["constants"],
@@ -190,7 +192,7 @@ def _print_single(b, r, options):
     caption = (f"{options['raceway_control']}-raceway control, constants {options['constants']}, "
                f"{'physical' if options['gyroscopic_sign'] > 0 else 'reversed'} gyroscopic sign, "
                f"solver {options['method']} ({r['method']}, {r['iterations']} iterations, residual {_f(r['residual'], '.2e')})")
-    table(f"Bearing {b.designation}: F_a = {r['axial_load_kN']:g} kN at {r['speed_rpm']:g} rpm", ["quantity", "inner", "outer"], [
+    table(f"Bearing {b.designation}: F_a = {r['axial_load_N'] / 1e3:g} kN at {r['speed_rpm']:g} rpm", ["quantity", "inner", "outer"], [
         ["contact angle [deg]", _f(r["contact_angle_inner_deg"], ".4f"), _f(r["contact_angle_outer_deg"], ".4f")],
         ["static contact angle α_s [deg]", _f(r["static_contact_angle_deg"], ".4f"), ""],
         ["ball load Q [N]", _f(r["ball_load_inner_N"], ".1f"), _f(r["ball_load_outer_N"], ".1f")],
@@ -200,8 +202,7 @@ def _print_single(b, r, options):
     ], caption=caption)
     table("Ball and ring", ["quantity", "value"], [
         # printed tables give displacements in µm in every command (JSON and CSV keep the _mm column)
-        ["axial displacement δ_a [µm]", _f(None if r["axial_displacement_mm"] is None
-                                           else r["axial_displacement_mm"] * 1e3, ".2f")],
+        ["axial displacement δ_a [µm]", _f(r["axial_displacement_um"], ".2f")],
         ["axial stiffness dF_a/dδ_a [N/µm]", _f(r["axial_stiffness_N_per_um"], ".2f")],
         ["centrifugal force F_c [N]", _f(r["centrifugal_force_N"], ".1f")],
         ["gyroscopic moment M_g [N·mm]", _f(r["gyroscopic_moment_Nmm"], ".1f")],
@@ -219,9 +220,9 @@ def _print_sweep(b, rows, options):
                f"{options['constants']}, solver {options['method']}; --json or --csv for every output")
     table(f"Bearing {b.designation}: high-speed contact angles under thrust",
           ["F_a kN", "n rpm", "α_i °", "α_e °", "δ_a µm", "Q_i N", "Q_e N", "M_g N·mm", "status"],
-          [[f"{r['axial_load_kN']:g}", f"{r['speed_rpm']:g}", _f(r["contact_angle_inner_deg"], ".3f"),
+          [[f"{r['axial_load_N'] / 1e3:g}", f"{r['speed_rpm']:g}", _f(r["contact_angle_inner_deg"], ".3f"),
             _f(r["contact_angle_outer_deg"], ".3f"),
-            _f(None if r["axial_displacement_mm"] is None else r["axial_displacement_mm"] * 1e3, ".2f"),
+            _f(r["axial_displacement_um"], ".2f"),
             _f(r["ball_load_inner_N"], ".0f"), _f(r["ball_load_outer_N"], ".0f"),
             _f(r["gyroscopic_moment_Nmm"], ".0f"), r["status"]] for r in rows], caption=caption)
 

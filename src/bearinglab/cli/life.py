@@ -19,20 +19,15 @@ Commands
 COMMANDS   the ``life`` command, by name (the application adds it)
 """
 
-from __future__ import annotations
-
 import re
 import tomllib
 import warnings
 from pathlib import Path
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from .. import ratings, tables
 from ..errors import InputError
-from ..units import RPM, parse_quantity
 from ._common import (
     AxialLoadOpt,
     BallDiameter,
@@ -55,17 +50,25 @@ from ._common import (
     OuterRadius,
     PitchDiameter,
     RadialLoadOpt,
-    console,
+    check_input,
     emit_json,
     five_loads,
+    inputs_echo,
+    parse_speeds,
+    parse_viscosity,
+    print_warnings,
     resolve_bearing,
     table,
 )
 
 __all__ = ["COMMANDS"]
 
+# the keys of bearinglab.ratings.CONTAMINATION_CLASSES, spelled out for the help text (the help is built
+# without importing the model; tests/cli/test_cli_startup.py checks that the two agree)
+_CONTAMINATION_CLASSES = ("extreme_cleanliness", "high_cleanliness", "normal_cleanliness", "slight_contamination",
+                          "typical_contamination", "severe_contamination", "very_severe_contamination")
 _CONTAMINATION = {k.split("_")[0] if k != "very_severe_contamination" else "very-severe": k
-                  for k in ratings.CONTAMINATION_CLASSES}
+                  for k in _CONTAMINATION_CLASSES}
 _LUBRICANT = "Lubricant and cleanliness"
 _ZERO_C = 273.15  # K at 0 degC
 _TEMPERATURE = re.compile(r"^\s*([-+]?\d+(?:\.\d*)?(?:[eE][-+]?\d+)?)\s*(°C|degC|C|K|°F|degF|F)\s*$")
@@ -85,10 +88,11 @@ def _temperature(text):
 
 def _viscosity(viscosity, oil, viscosity_100, temperature):
     """kinematic_viscosity or the oil options of :func:`bearinglab.ratings.rating_life`."""
+    from .. import ratings
     if viscosity is not None:
         if oil is not None or temperature is not None:
             raise InputError("viscosity: give --viscosity, or --oil with --temperature, not both")
-        return {"kinematic_viscosity": parse_quantity(viscosity, "kinematic_viscosity", "viscosity")}
+        return {"kinematic_viscosity": parse_viscosity(viscosity, "viscosity")}
     if oil is None or temperature is None:
         raise InputError("viscosity: give --viscosity (e.g. '20 cSt'), or --oil VG68 with --viscosity-100 and "
                          "--temperature")
@@ -100,7 +104,7 @@ def _viscosity(viscosity, oil, viscosity_100, temperature):
         raise InputError("viscosity-100: the oil's viscosity at 100 degC (data sheet) is needed with --oil, "
                          "e.g. '8.7 cSt'")
     return {"iso_vg": int(m.group(1)), "temperature": _temperature(temperature),
-            "viscosity_100": parse_quantity(viscosity_100, "kinematic_viscosity", "viscosity-100")}
+            "viscosity_100": parse_viscosity(viscosity_100, "viscosity-100")}
 
 
 def _cleanliness(factor, name):
@@ -111,6 +115,8 @@ def _cleanliness(factor, name):
         if key not in _CONTAMINATION:
             raise InputError(f"contamination must be one of {list(_CONTAMINATION)}, got {name!r}")
         return _CONTAMINATION[key]
+    if factor is not None and not 0.0 <= factor <= 1.0:
+        raise InputError(f"contamination-factor must be in [0, 1] [-] (e_C of ISO 281 table 13), got {factor:g}")
     return 1.0 if factor is None else factor
 
 
@@ -122,6 +128,9 @@ def _reliability(percent):
 
 def _duty_cycle(path):
     """Loads (k, 5), speeds (k,) and time shares (k,) of a duty-cycle file."""
+    import numpy as np
+
+    from ..units import parse_quantity
     try:
         doc = tomllib.loads(Path(path).read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as exc:
@@ -161,6 +170,8 @@ def life(
     json_out: JsonFlag = False,
 ):
     """Rating life (ISO 281, ISO/TS 16281): C, C0, Cu, P, L10, a_ISO, L_nm, L10r, L_nmr, s0; duty cycles."""
+    from .. import limits, ratings, tables
+    from ..units import RPM
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)
@@ -170,31 +181,76 @@ def life(
     if duty_cycle is not None:
         if any(x is not None for x in (fx, fy, fz, mx, my, radial_load, axial_load, speed)):
             raise InputError("duty-cycle: the loads and speeds are in the file; give no --fx ... --speed")
-        _life_of_duty_cycle(b, *_duty_cycle(duty_cycle), options, json_out)
+        _life_of_duty_cycle(b, *_duty_cycle(check_input(duty_cycle, "duty-cycle")), options, json_out)
         return
     if speed is None:
         raise InputError("speed: give the inner-ring speed, e.g. --speed '3000 rpm'")
-    n = parse_quantity(speed, "speed", "speed")
-    if not n > 0:
-        raise InputError(f"speed must be > 0 [rpm], got {n / RPM:g} rpm")
+    n = float(parse_speeds(speed, zero=False, pitch_diameter=_size(b))[0])
+    loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
+    dist = _distribution(b, loads)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the analysis returns its warnings
-        r = ratings.rating_life(b, five_loads(fx, fy, fz, mx, my, radial_load, axial_load), n, **options)
-    doc = {**tables.rows(tables.rating_life(r))[0], "rating_source": r.rating_source, "warnings": list(r.warnings)}
+        r = ratings.rating_life(b, loads, n, **options, **({} if dist is None else {"load_distribution": dist}))
+    notes = list(r.warnings)
+    if dist is not None:
+        notes += limits.combined_warnings(b, loads, dist.ball_load_inner, dist.ball_load_outer,
+                                          dist.contact_angle_inner, dist.contact_angle_outer)
+    doc = {**tables.rows(tables.rating_life(r))[0], "rating_source": r.rating_source,
+           "inputs": _echo(b, options, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
+                           my_Nmm=loads[4] * 1e3, speed_rpm=n / RPM),
+           "warnings": list(dict.fromkeys(notes))}
     doc = {k: doc[k] for k in _KEYS}
     if json_out:
         emit_json(doc)
         return
-    _print(f"Rating life of {b.designation} at {n / RPM:g} rpm", doc)
+    _print(f"Rating life of {b.designation} at {doc['inputs']['speed_rpm']:g} rpm", doc)
+
+
+def _size(b):
+    """d_m of the speed guard: the pitch diameter, else the mean of bore and outside diameter."""
+    if b.pitch_diameter is not None:
+        return b.pitch_diameter
+    return b.mean_diameter if b.bore is not None and b.outside_diameter is not None else None
+
+
+def _distribution(b, loads):
+    """The load distribution of ISO/TS 16281 (the combined-load model at rest, Hertz constants at the free
+    angle: what :func:`bearinglab.ratings.rating_life` uses by default), computed here so that the
+    plausibility limits see the ball loads; None without the ball set."""
+    from ..quasistatic import combined
+
+    if any(getattr(b, k) is None for k in ("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity",
+                                           "outer_conformity")):
+        return None
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the life analysis reports what matters to it
+        return combined.combined_analysis(b, loads, 0.0, stiffness_at="free")
+
+
+def _echo(b, options, **quantities):
+    """The inputs as used (:func:`inputs_echo`): the bearing, the loads and speed, lubricant and cleanliness."""
+    lube = {k: v for k, v in options.items() if k not in ("contamination", "reliability")}
+    if "kinematic_viscosity" in lube:
+        lube = {"viscosity_cSt": lube["kinematic_viscosity"] * 1e6}
+    else:
+        lube = {"oil": f"VG{lube['iso_vg']}", "temperature_degC": lube["temperature"] - _ZERO_C,
+                "viscosity_100_cSt": lube["viscosity_100"] * 1e6}
+    c = options["contamination"]
+    return inputs_echo(b, **quantities, **lube, contamination=c, reliability_percent=options["reliability"] * 100)
 
 
 _KEYS = ("dynamic_load_rating_N", "static_load_rating_N", "fatigue_load_limit_N", "rating_source",
          "equivalent_dynamic_load_N", "basic_rating_life_Mrev", "basic_rating_life_h", "reliability_factor",
          "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev", "modified_rating_life_h",
-         "reference_rating_life_Mrev", "modified_reference_rating_life_Mrev", "static_safety_factor", "warnings")
+         "reference_rating_life_Mrev", "modified_reference_rating_life_Mrev", "static_safety_factor", "inputs",
+         "warnings")
 
 
 def _life_of_duty_cycle(b, loads, speeds, times, options, json_out):
+    import numpy as np
+
+    from .. import ratings, tables
+    from ..units import RPM
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         d = ratings.duty_cycle_life(b, loads, speeds, times, **options)
@@ -206,13 +262,17 @@ def _life_of_duty_cycle(b, loads, speeds, times, options, json_out):
            "modified_rating_life_h": d.modified_rating_life * hours,
            "reference_rating_life_Mrev": d.reference_rating_life * 1e-6,
            "modified_reference_rating_life_Mrev": d.modified_reference_rating_life * 1e-6,
-           "mean_speed_rpm": d.mean_speed / RPM, "steps": steps, "warnings": list(d.steps.warnings)}
+           "mean_speed_rpm": d.mean_speed / RPM, "steps": steps,
+           "inputs": _echo(b, options, steps=[{"fx_N": f[0], "fy_N": f[1], "fz_N": f[2], "mx_Nmm": f[3] * 1e3,
+                                                "my_Nmm": f[4] * 1e3, "speed_rpm": w / RPM, "time": t}
+                                               for f, w, t in zip(loads.tolist(), speeds.tolist(), times.tolist())]),
+           "warnings": list(d.steps.warnings)}
     doc = tables.json_value(doc)
     if json_out:
         emit_json(doc)
         return
     _print(f"Duty cycle of {b.designation}: {len(steps)} steps, mean speed {doc['mean_speed_rpm']:g} rpm",
-           {k: v for k, v in doc.items() if k != "steps"})
+           {k: v for k, v in doc.items() if k not in ("steps", "inputs")})
 
 
 def _print(title, doc):
@@ -221,10 +281,9 @@ def _print(title, doc):
 
     src = doc["rating_source"]
     rows = [[k, fmt(v) + (f"  ({src[k[:-2]]})" if k[:-2] in src else "")] for k, v in doc.items()
-            if k not in ("rating_source", "warnings")]
+            if k not in ("rating_source", "warnings", "inputs")]
     table(title, ["quantity", "value"], rows, caption="Mrev = 10^6 revolutions; --json for one JSON document")
-    for note in doc["warnings"]:
-        console.print(f"[yellow]warning:[/yellow] {note}", highlight=False)
+    print_warnings(doc["warnings"])
 
 
 #: The ``life`` command, as the application adds it.

@@ -12,23 +12,15 @@ Commands
 COMMANDS   the ``load-distribution`` and ``bearing-set`` commands, by name (the application adds them)
 """
 
-from __future__ import annotations
-
 import math
 import types
 import warnings
 from pathlib import Path
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from .. import catalog as _catalog
-from .. import plots, tables
 from ..errors import InputError
-from ..plots import load_distribution as load_plots
-from ..quasistatic import combined, rotordynamics, sets
-from ..units import RPM, parse_quantity, parse_values
 from ._common import (
     FIGURE_SUFFIXES,
     AxialLoadOpt,
@@ -57,6 +49,9 @@ from ._common import (
     console,
     emit_json,
     five_loads,
+    inputs_echo,
+    parse_speeds,
+    print_warnings,
     resolve_bearing,
     table,
 )
@@ -69,10 +64,8 @@ StiffnessAtOpt = Annotated[str, typer.Option("--stiffness-at", help="operating (
 PlotOpt = Annotated[Path | None, typer.Option("--plot", help="Polar plot of the ball loads into this PNG/PDF/SVG file.")]
 
 
-def _speeds(text, allow_list):
-    w = parse_values(text, "speed", "speed")
-    if np.any(~(w >= 0)):
-        raise InputError(f"speed must be >= 0 [rpm], got {float(w[~(w >= 0)][0]) / RPM:g} rpm")
+def _speeds(text, allow_list, bearing):
+    w = parse_speeds(text, pitch_diameter=bearing.require("pitch_diameter"))
     if w.size > 1 and not allow_list:
         raise InputError("speed: a list of speeds needs --ross FILE (one speed otherwise)")
     return w
@@ -86,21 +79,38 @@ def _solve(what, *args, **kwargs):
     return result, [str(c.message) for c in caught]
 
 
-def _inputs(b, loads, speed, phi0):
-    """The inputs as used, in engineering units (echoed in the JSON)."""
+def _inputs(b, loads, speed, phi0, **options):
+    """The inputs as used, in engineering units (echoed in the JSON; :func:`inputs_echo`)."""
+    from ..units import RPM
+
     fx, fy, fz, mx, my = loads
-    geo = {k: v for k, v in tables.bearing_summary(b).items()
-           if k in ("balls", "ball_diameter_mm", "pitch_diameter_mm", "inner_conformity", "outer_conformity",
-                    "contact_angle_deg", "ball_material", "ring_material", "type")}
-    geo["reduced_modulus_GPa"] = b.reduced_modulus / 1e9
-    return {"bearing": b.designation, "fx_N": fx, "fy_N": fy, "fz_N": fz, "mx_Nmm": mx * 1e3, "my_Nmm": my * 1e3,
-            "speed_rpm": float(tables.significant(speed / RPM)[0]), "first_ball_angle_deg": math.degrees(phi0),
-            "radial_clearance_um": None if b.radial_clearance is None else b.radial_clearance * 1e6,
-            "geometry": geo}
+    return inputs_echo(b, fx_N=fx, fy_N=fy, fz_N=fz, mx_Nmm=mx * 1e3, my_Nmm=my * 1e3, speed_rpm=float(speed) / RPM,
+                       first_ball_angle_deg=math.degrees(phi0), **options,
+                       radial_clearance_um=None if b.radial_clearance is None else b.radial_clearance * 1e6,
+                       reduced_modulus_GPa=b.reduced_modulus / 1e9)
+
+
+def _warnings(b, loads, r, notes):
+    """The analysis's warnings, those raised on the way and the plausibility limits (bearinglab.limits)."""
+    import numpy as np
+
+    from .. import limits
+
+    z = np.shape(r.ball_load_inner)[-1]
+    ok = np.ravel(np.asarray(getattr(r, "converged", True), dtype=bool)) & np.ones(np.size(loads) // 5, bool)
+    if ok.any():
+        def pick(name):
+            return np.reshape(getattr(r, name), (-1, z))[ok]
+
+        notes = [*notes, *limits.combined_warnings(b, np.reshape(loads, (-1, 5))[ok], pick("ball_load_inner"),
+                                                   pick("ball_load_outer"), pick("contact_angle_inner"),
+                                                   pick("contact_angle_outer"))]
+    return list(dict.fromkeys(notes))
 
 
 def _case(r, k):
     """Case k of a batched LoadDistribution (cases on the first axis), as an object with one case's fields."""
+    import numpy as np
     fields = {f: np.asarray(getattr(r, f))[k] for f in r._fields if f not in ("warnings", "azimuth")}
     return types.SimpleNamespace(**fields, azimuth=r.azimuth, warnings=r.warnings)
 
@@ -119,24 +129,31 @@ def load_distribution(
     json_out: JsonFlag = False,
 ):
     """Ball bearing under combined load (issue 11): displacement, ball loads, contact angles, pressures, stiffness."""
+    import numpy as np
+
+    from .. import plots, tables
+    from ..plots import load_distribution as load_plots
+    from ..quasistatic import combined, rotordynamics
+    from ..units import parse_quantity
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)
     loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
-    w = _speeds(speed, ross is not None)
+    w = _speeds(speed, ross is not None, b)
     phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
     choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
     if plot is not None:
         check_output(plot, "plot", FIGURE_SUFFIXES)
     if ross is not None:
         check_output(ross, "ross", (".json",))
-    r, notes = _solve(combined.combined_analysis, b, np.broadcast_to(loads, w.shape + (5,)), w,
-                      first_ball_angle=phi0, stiffness_at=stiffness_at)
-    notes = list(dict.fromkeys([*r.warnings, *notes]))
+    cases = np.broadcast_to(loads, w.shape + (5,))
+    r, notes = _solve(combined.combined_analysis, b, cases, w, first_ball_angle=phi0, stiffness_at=stiffness_at)
+    notes = _warnings(b, cases, r, [*r.warnings, *notes])
     docs = []
     for k in range(w.size):
         case = _case(r, k)
-        docs.append({**tables.load_distribution(case), "inputs": _inputs(b, loads, w[k], phi0), "warnings": notes})
+        docs.append({**tables.load_distribution(case),
+                     "inputs": _inputs(b, loads, w[k], phi0, stiffness_at=stiffness_at), "warnings": notes})
     if ross is not None:
         rotordynamics.write_coefficients(rotordynamics.from_stiffness(np.reshape(r.stiffness, (-1, 5, 5)), w), ross)
     if plot is not None:
@@ -147,7 +164,8 @@ def load_distribution(
         return
     for doc in docs:
         _print_case(f"Bearing {b.designation} at {doc['inputs']['speed_rpm']:g} rpm", doc)
-    _print_notes(notes, plot, ross)
+    print_warnings(notes)
+    _print_written(plot, ross)
 
 
 def _f(x, spec):
@@ -174,9 +192,7 @@ def _print_case(title, doc):
     table(f"{title}: ring", ["quantity", "value"], rows, caption="--json for the full 5 × 5 stiffness matrix (SI)")
 
 
-def _print_notes(notes, *paths):
-    for note in notes:
-        console.print(f"[yellow]warning:[/yellow] {note}", highlight=False)
+def _print_written(*paths):
     for path in paths:
         if path is not None:
             console.print(f"wrote {path}", highlight=False)
@@ -196,6 +212,13 @@ def bearing_set(
     json_out: JsonFlag = False,
 ):
     """Preloaded bearing set (DB/DF/DT) on a rigid shaft: shaft displacement, each bearing's ball loads, set stiffness."""
+    import numpy as np
+
+    from .. import catalog as _catalog
+    from .. import plots, tables
+    from ..plots import load_distribution as load_plots
+    from ..quasistatic import combined, sets
+    from ..units import parse_quantity
     bl = [_catalog.get(name, catalog=catalog) for name in bearing]
     choice("arrangement", arrangement, tuple(sets.ARRANGEMENTS))
     s = parse_quantity(spacing, "length", "spacing")
@@ -204,7 +227,7 @@ def bearing_set(
     fp = 0.0 if preload is None else parse_quantity(preload, "force", "preload")
     e = None if preload_offset is None else parse_quantity(preload_offset, "length", "preload-offset")
     loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
-    w = float(_speeds(speed, False)[0])
+    w = float(_speeds(speed, False, bl[0])[0])
     phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
     choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
     if plot is not None:
@@ -219,14 +242,17 @@ def bearing_set(
         bk = bl[k % len(bl)]
         ns = types.SimpleNamespace(**part, azimuth=combined.ball_azimuths(bk.n_balls, phi0))
         carried = st.bearing_loads[k]
+        if bool(np.all(st.converged)):
+            notes += [f"bearing {k}: {m}" for m in _warnings(bk, carried, ns, [])]
         members.append({"bearing": names[k], "orientation": int(orient[k]), "position_mm": float(pos[k] * 1e3),
                         "loads": {"fx_N": carried[0], "fy_N": carried[1], "fz_N": carried[2],
                                   "mx_Nmm": carried[3] * 1e3, "my_Nmm": carried[4] * 1e3},
                         **tables.load_distribution(ns)})
     doc = {**tables.load_distribution(_shaft(st)), "preload_offset_um": st.preload_displacement * 1e6,
            "bearings": members,
-           "inputs": {**_inputs(bl[0], loads, w, phi0), "bearings": names, "arrangement": arrangement,
-                      "spacing_mm": s * 1e3, "preload_N": fp, "preload_offset_um": None if e is None else e * 1e6},
+           "inputs": {**_inputs(bl[0], loads, w, phi0, stiffness_at=stiffness_at), "bearings": names,
+                      "arrangement": arrangement, "spacing_mm": s * 1e3, "preload_N": fp,
+                      "preload_offset_um": None if e is None else e * 1e6},
            "warnings": notes}
     del doc["balls"], doc["max_ball_load_N"]
     if plot is not None:
@@ -238,11 +264,13 @@ def bearing_set(
     for k, m in enumerate(members):
         _print_case(f"Bearing {k} ({m['bearing']}, orientation {m['orientation']:+d}, z = {m['position_mm']:g} mm)", m)
     _print_case(f"Set {arrangement} of {len(members)}", {**doc, "balls": [], "max_ball_load_N": None})
-    _print_notes(notes, plot)
+    print_warnings(notes)
+    _print_written(plot)
 
 
 def _shaft(st):
     """The shaft of a set as the fields :func:`bearinglab.tables.load_distribution` reads."""
+    import numpy as np
     return types.SimpleNamespace(displacement=st.displacement, stiffness=st.stiffness, converged=st.converged,
                                  residual=st.residual, iterations=st.iterations, ball_load_inner=np.zeros(1),
                                  azimuth=np.zeros(0), ball_load_outer=np.zeros(0),

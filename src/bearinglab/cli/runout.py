@@ -9,20 +9,13 @@ Commands
 COMMANDS   the ``runout`` command group (with ``monte-carlo``), by name (the application adds it)
 """
 
-from __future__ import annotations
-
 import math
 from pathlib import Path
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from .. import catalog as _catalog
-from .. import runout, tables
-from .._io import csv_text, write_text
 from ..errors import CatalogError, ConvergenceError, InputError
-from ..units import parse_quantity
 from ._common import (
     BearingName,
     CatalogFile,
@@ -30,6 +23,7 @@ from ._common import (
     JsonFlag,
     WorkersOpt,
     check_output,
+    check_output_directory,
     console,
     emit_json,
     execution,
@@ -40,6 +34,9 @@ __all__ = ["COMMANDS"]
 
 UM = 1e-6
 MIN_STEPS_PER_REV = 4  # positions per revolution below which no line of the spectrum is resolved
+# bearinglab.runout.METRICS, spelled out for the help text (the help is built without importing the
+# model; tests/cli/test_cli_startup.py checks that the two agree)
+_METRICS = ("radial_ptp_x", "radial_ptp_y", "radial_ptp_max", "axial_ptp", "dz_mean")
 
 
 def _check_cage_ratio(cage_ratio):
@@ -88,6 +85,9 @@ def _runout_figures():
 # ----------------------------------------------------------------------------- helpers
 def _geometry(geometry_file, bearing, catalog_file, first_ball_angle):
     """The geometry given by --geometry or --bearing (None when neither is given)."""
+    from .. import catalog as _catalog
+    from .. import runout
+    from ..units import parse_quantity
     if geometry_file and bearing:
         raise InputError("geometry: give --geometry FILE or --bearing NAME, not both")
     theta1 = (
@@ -112,6 +112,7 @@ def _geometry(geometry_file, bearing, catalog_file, first_ball_angle):
 
 def _atomic_write(path, text):
     """Write a whole file or nothing; its directory must exist (checked before the computation)."""
+    from .._io import write_text
     write_text(path, text)
 
 
@@ -120,14 +121,17 @@ def _um(v):
 
 
 def _metrics_dict(m):
+    from .. import runout, tables
     return tables.runout_metrics(m, runout.METRICS)
 
 
 def _geometry_dict(g):
+    from .. import tables
     return tables.record(g, tables.RUNOUT_GEOMETRY)
 
 
 def _single_dict(d, g):
+    import numpy as np
     c = d.contact
     st = d.shifts
     balls = []
@@ -184,6 +188,7 @@ def _single_dict(d, g):
 
 
 def _sequence_dict(t, lines):
+    import numpy as np
     d = t.displacement
     out = {
         "mode": "sequence",
@@ -226,6 +231,9 @@ def _sequence_dict(t, lines):
 
 
 def _trajectory_csv(t):
+    import numpy as np
+
+    from .._io import csv_text
     d = t.displacement
     rows = [
         [
@@ -287,6 +295,7 @@ def _print_single(info):
 
 
 def _print_metrics(title, rows):
+    from .. import runout
     table(
         title,
         ["metric", *[r[0] for r in rows]],
@@ -364,6 +373,10 @@ def runout_command(
     Give the errors with --errors FILE and the geometry in that file's [geometry] table, with --geometry
     FILE or with --bearing NAME. `runout monte-carlo --help` for the tolerance-class study.
     """
+    import numpy as np
+
+    from .. import runout
+    from ..units import parse_quantity
     if ctx.invoked_subcommand is not None:
         _reject_options_before(ctx)
         return
@@ -374,6 +387,8 @@ def runout_command(
     _check_cage_ratio(cage_ratio)
     if csv_out is not None:
         check_output(csv_out, "csv")
+    if plot is not None:
+        check_output_directory(plot, "plot")
     g, theta1 = _geometry(geometry, bearing, catalog, first_ball_angle)
     g, e = runout.files.load_error_file(errors, g)
     if theta1 is not None:
@@ -448,6 +463,8 @@ def _reject_options_before(ctx):
 
 def _single(g, e, angle, refine, cage_ratio, plot, json_out, errors):
     """The displacement at one rotation angle: compute, draw, print."""
+    from .. import runout
+    from ..units import parse_quantity
     psi = 0.0 if angle is None else parse_quantity(angle, "angle", "angle", default_unit="deg")
     d = runout.initial_displacement(psi, g, e, refine=refine, cage_ratio=cage_ratio)
     info = _single_dict(d, g)
@@ -533,7 +550,7 @@ def monte_carlo_command(
     ] = None,
     worst_by: Annotated[
         str,
-        typer.Option("--worst-by", help="Metric ranking --write-worst: " + ", ".join(runout.METRICS)),
+        typer.Option("--worst-by", help="Metric ranking --write-worst: " + ", ".join(_METRICS)),
     ] = "radial_ptp_max",
     worst_dir: Annotated[
         Path | None,
@@ -547,6 +564,7 @@ def monte_carlo_command(
     plot: PlotDir = None,
 ):
     """Runout statistics over random bearings of a ball grade and a ring class (spec 003 section 11)."""
+    from .. import runout
     g, _ = _geometry(geometry, bearing, catalog, None)
     if g is None:
         raise InputError("geometry: give --geometry FILE or --bearing NAME")
@@ -555,6 +573,9 @@ def monte_carlo_command(
     _check_cage_ratio(cage_ratio)
     if samples_csv is not None:
         check_output(samples_csv, "samples-csv")
+    for option, directory in (("plot", plot), ("worst-dir", worst_dir)):
+        if directory is not None:
+            check_output_directory(directory, option)
     if steps_per_rev < MIN_STEPS_PER_REV:
         raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-], got {steps_per_rev}")
     _check_write_worst(write_worst, worst_by, worst_dir)
@@ -593,6 +614,9 @@ def monte_carlo_command(
 
 def _monte_carlo_info(r, g, grade, rings, samples, seed, steps_per_rev, revolutions, max_order):
     """The inputs and the summary statistics of a Monte Carlo study, in µm."""
+    import numpy as np
+
+    from .. import runout
     info = {
         "samples": samples,
         "seed": seed,
@@ -622,6 +646,8 @@ def _monte_carlo_info(r, g, grade, rings, samples, seed, steps_per_rev, revoluti
 
 def _samples_csv(r, grade, rings, seed, samples, revolutions, steps_per_rev, max_order):
     """The per-sample metrics as CSV text."""
+    from .. import runout
+    from .._io import csv_text
     s = r.samples
     rows = [
         [
@@ -652,6 +678,7 @@ def _samples_csv(r, grade, rings, seed, samples, revolutions, steps_per_rev, max
 
 def _print_monte_carlo(info, grade, rings, samples, seed):
     """The summary table and the files written."""
+    from .. import runout
     table(
         f"Monte Carlo {grade.name} / {rings.name}: {samples} samples, seed {seed} (µm)",
         ["metric", "mean", "std", "median", "p95", "max"],
@@ -670,6 +697,7 @@ def _print_monte_carlo(info, grade, rings, samples, seed):
 
 def _check_write_worst(count, metric, directory):
     """The --write-worst options, checked before the study runs."""
+    from .. import runout
     if count is not None and count < 1:
         raise InputError(f"write-worst must be >= 1 [-], got {count}")
     if metric not in runout.METRICS:

@@ -8,8 +8,6 @@ Commands
 COMMANDS   the ``serve`` command, by name (the application adds it)
 """
 
-from __future__ import annotations
-
 from typing import Annotated
 
 import typer

@@ -5,17 +5,12 @@ Commands
 COMMANDS   the ``axial-angle`` and ``stand-load`` commands, by name (the application adds them)
 """
 
-from __future__ import annotations
-
 import math
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from .. import limits, stand, tables
 from ..errors import InputError
-from ..units import KGF, format_dms, parse_values, to_dms, to_rpm
 from ._common import (
     BallDiameter,
     BallMaterial,
@@ -34,6 +29,7 @@ from ._common import (
     console,
     emit_json,
     inputs_echo,
+    parse_speeds,
     print_warnings,
     resolve_bearing,
     table,
@@ -43,6 +39,7 @@ __all__ = ["COMMANDS"]
 
 
 def _angle_row(row, legacy):
+    from ..units import format_dms, to_dms
     d, m, s = to_dms(row.contact_angle, truncate=legacy)
     dms = f"{d}°{m:02d}'{s:02.0f}\"" if legacy else format_dms(row.contact_angle)
     return dms
@@ -63,6 +60,10 @@ def axial_angle(
     json_out: JsonFlag = False,
 ):
     """Operating contact angle under axial load (spec 000): C*, x0, Newton iterations, displacement."""
+    import numpy as np
+
+    from .. import limits, stand, tables
+    from ..units import KGF, format_dms, parse_values
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)
@@ -109,7 +110,7 @@ def axial_angle(
             "operating_contact_angle_dms": format_dms(r.contact_angle),
             "contact_angle_increment_deg": math.degrees(r.contact_angle - r.free_angle),
             "axial_displacement_ratio": float(r.axial_displacement_ratio),
-            "axial_displacement_mm": float(r.axial_displacement) * 1e3,
+            "axial_displacement_um": float(r.axial_displacement) * 1e6,
             "ball_load_N": float(r.ball_load), "ball_load_kgf": float(r.ball_load) / KGF,
             "converged": True,
             "legacy": legacy,
@@ -138,7 +139,7 @@ def axial_angle(
     table(f"Bearing {b.designation}: operating contact angle ({title})",
           ["F_a [kgf]", "F_a [N]", "α [deg]", "ξ_a", "δ_a [µm]", "ball load [N]", *head],
           [[f"{x['axial_load_kgf']:.4g}", f"{x['axial_load_N']:.4g}", f"{x['operating_contact_angle_deg']:.5f}",
-            f"{x['axial_displacement_ratio']:.6f}", f"{x['axial_displacement_mm'] * 1e3:.3f}", f"{x['ball_load_N']:.4g}",
+            f"{x['axial_displacement_ratio']:.6f}", f"{x['axial_displacement_um']:.3f}", f"{x['ball_load_N']:.4g}",
             *e] for x, e in zip(cases, extra)])
     print_warnings(notes)
 
@@ -157,7 +158,7 @@ def _print_single(b, c, out, hertz, legacy):
             f"{i['axial_displacement_ratio']:.7f}", f"{i['axial_load_kgf']:.5f}", f"{i['error_percent']:.3g}"]
            for i in out["iterations"]])
     console.print(f"operating contact angle {out['operating_contact_angle_deg']:.6f}° ({out['operating_contact_angle_dms']}), "
-                  f"+{out['contact_angle_increment_deg']:.4f}° over α0; axial displacement {out['axial_displacement_mm'] * 1e3:.3f} µm; "
+                  f"+{out['contact_angle_increment_deg']:.4f}° over α0; axial displacement {out['axial_displacement_um']:.3f} µm; "
                   f"ball load {out['ball_load_N']:.4g} N ({out['ball_load_kgf']:.4g} kgf)", highlight=False)
 
 
@@ -171,14 +172,13 @@ def stand_load(
     json_out: JsonFlag = False,
 ):
     """Minimum axial load against gyroscopic slip on a test stand, and the +20 % maximum (spec 000 §3)."""
+
+    from .. import stand, tables
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)
-    speeds = parse_values(speed, "speed", "speed")
-    if np.any(speeds < 0):
-        raise InputError(f"speed must be >= 0 [rpm], got {float(to_rpm(speeds[speeds < 0][0]))!r} rpm")
     z, d, dm, a = b.require("n_balls", "ball_diameter", "pitch_diameter", "contact_angle")
-    limits.check_speed(speeds, dm)
+    speeds = parse_speeds(speed, pitch_diameter=dm)
     res = stand.min_axial_load(speeds, z, d, dm, a)
     rows = tables.rows(tables.stand_load(speeds, res))
     if json_out:

@@ -5,22 +5,17 @@ Commands
 COMMANDS   the ``sweep`` command, by name (the application adds it)
 """
 
-from __future__ import annotations
-
 from pathlib import Path
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from .. import sweep as _sweep
-from .. import tables
-from ..errors import InputError
 from ._common import (
     ChunkSizeOpt,
     ExecutorOpt,
     JsonFlag,
     WorkersOpt,
+    check_output,
     console,
     emit_json,
     execution,
@@ -39,10 +34,14 @@ def sweep(
     json_out: JsonFlag = False,
 ):
     """Evaluate a model over the Cartesian product of parameter values; write the cases as CSV or Parquet."""
+    import numpy as np
+
+    from .. import sweep as _sweep
+    from .. import tables
     spec = _sweep.load_sweep(file)
     target = out or spec.output
-    if target is not None and Path(target).suffix not in (".csv", ".parquet"):
-        raise InputError(f"out must end in .csv or .parquet, got {str(target)!r}")
+    if target is not None:  # checked before the sweep runs: the directory exists, the suffix is known
+        check_output(target, "out" if out is not None else "output", (".csv", ".parquet"))
     with execution(f"sweep {spec.model.name}", executor or spec.executor, workers, chunk_size,
                    memory_limit=memory_limit) as ex:
         cols = _sweep.run_sweep(spec, execution=ex)

@@ -594,7 +594,7 @@ def result_table(state):
     -------
     dict
         Column name -> 1-D ndarray; the names carry the unit (``contact_angle_inner_deg``,
-        ``axial_displacement_mm``, ``gyroscopic_moment_Nmm``, ...).
+        ``axial_displacement_um``, ``gyroscopic_moment_Nmm``, ...).
     """
     from .. import tables  # the one place where results become engineering-unit columns
 

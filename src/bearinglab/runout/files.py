@@ -327,7 +327,7 @@ def _read_series(table, name, ctx):
                 ctx.fail(
                     name,
                     "profile",
-                    f"{file}: expected two numeric columns 'angle, deviation': {exc}",
+                    f"{file}: expected two numeric columns 'angle, deviation'{_bad_line(file, exc)}",
                 )
             if data.shape[1] != 2:
                 ctx.fail(
@@ -446,6 +446,23 @@ def _read_errors(doc, n, ctx):
 
 
 # ----------------------------------------------------------------------------- writing
+def _bad_line(file, exc):
+    """Where a profile file stops being two numeric columns: its line, counted from 1 as an editor shows it
+    (numpy's own message counts the data rows from 0)."""
+    try:
+        for number, line in enumerate(Path(file).read_text(encoding="utf-8").splitlines(), 1):
+            text = line.split("#", 1)[0].strip()
+            if not text:
+                continue
+            try:
+                [float(x) for x in text.split(",")]
+            except ValueError:
+                return f", got {line.strip()!r} on line {number}"
+    except (OSError, UnicodeDecodeError):
+        pass
+    return f": {exc}"
+
+
 def _toml_float(value):
     """A float as TOML, to the last bit (Python's repr is the shortest string that reads back equal)."""
     return repr(float(value))
