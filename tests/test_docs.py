@@ -79,3 +79,31 @@ def test_no_api_page_for_a_module_that_does_not_exist():
     pages = {str(p.relative_to(DOCS / "api").with_suffix("")).replace("/", ".") for p in (DOCS / "api").rglob("*.rst")}
     gone = pages - set(PUBLIC) - {"index"}
     assert not gone, f"docs/api has pages for modules that do not exist: {sorted(gone)}"
+
+
+def _automodules():
+    """(page, module, listed members or None for all) of every automodule directive under docs/api."""
+    out = []
+    for page in sorted((DOCS / "api").rglob("*.rst")):
+        text = page.read_text(encoding="utf-8")
+        for match in re.finditer(r"^\.\. automodule:: (\S+)\n((?:   :.*\n)*)", text, re.MULTILINE):
+            members = re.search(r":members:(.*)", match.group(2))
+            listed = None if members is None else {m.strip() for m in members.group(1).split(",") if m.strip()}
+            out.append((page.relative_to(DOCS.parent).as_posix(), match.group(1), listed))
+    return out
+
+
+@pytest.mark.parametrize("page, module, listed", _automodules(), ids=lambda v: v if isinstance(v, str) else "")
+def test_api_page_lists_every_function_and_class_its_module_defines(page, module, listed):
+    """A page that lists its members explicitly names every public function and class defined in its
+    module (one defined elsewhere and re-exported is documented on its own module's page). A page
+    without ``:members:`` shows the module's docstring only; it is meant for modules that define no
+    function or class (packages that re-export, the command modules)."""
+    import importlib
+
+    mod = importlib.import_module(module)
+    own = {n for n in mod.__all__ if getattr(getattr(mod, n), "__module__", None) == module}
+    if listed is None:
+        assert not own, f"{page} documents none of {sorted(own)}: add them to a :members: list"
+    elif listed:  # ':members:' with no list documents everything
+        assert own <= listed, f"{page} does not list {sorted(own - listed)}"
