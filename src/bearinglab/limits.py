@@ -84,7 +84,7 @@ def check_speed(speed, pitch_diameter, name="speed"):
     Raises
     ------
     InputError
-        Where d_m |n| exceeds :data:`MAX_SPEED_FACTOR`.
+        Where d_m abs(n) exceeds :data:`MAX_SPEED_FACTOR`.
 
     Examples
     --------

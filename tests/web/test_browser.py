@@ -136,3 +136,36 @@ def test_browser_phone_width_and_print(browser, base_url):
     pages = re.findall(rb"/Type\s*/Page[^s]", (ARTIFACTS / "web-b218-report.pdf").read_bytes())
     assert len(pages) == 1  # a one-page report
     context.close()
+
+
+_OVERFLOW = """() => {
+  const form = document.querySelector('form');
+  const wide = [...form.querySelectorAll('input, select, button, label, .error, legend, summary, .hint')]
+    .filter(e => e.getBoundingClientRect().right > window.innerWidth + 0.5)
+    .map(e => e.id || e.tagName);
+  return {page: document.documentElement.scrollWidth, form: form.scrollWidth - form.clientWidth, wide};
+}"""
+
+
+@pytest.mark.parametrize(
+    "query, shot",
+    [
+        ("", "web-form-390.png"),
+        ("?bearing=&balls=16&ball_diameter=22.225+mm&axial_load=2%2C5+kN&speed=fast", "web-form-errors-390.png"),
+    ],
+)
+def test_browser_form_fits_a_phone(browser, base_url, query, shot):
+    """At 390 px (a phone) the form does not scroll sideways: empty, and with the geometry open and
+    long field messages next to their fields."""
+    context = browser.new_context(viewport={"width": 390, "height": 844}, device_scale_factor=2)
+    phone = context.new_page()
+    phone.goto(base_url + "/" + query)
+    phone.evaluate("document.querySelector('details.geometry').open = true")
+    if query:
+        assert phone.locator("#error-axial_load").is_visible()
+    fit = phone.evaluate(_OVERFLOW)
+    assert fit["page"] <= 390 and fit["form"] <= 0 and not fit["wide"], fit
+    ARTIFACTS.mkdir(exist_ok=True)
+    phone.locator("form").screenshot(path=ARTIFACTS / shot)
+    assert (ARTIFACTS / shot).stat().st_size > 10_000
+    context.close()

@@ -42,7 +42,7 @@ def ball_loads(result, *, title=None):
     psi = np.asarray(result.azimuth, dtype=float)
     qi = np.nan_to_num(np.asarray(result.ball_load_inner, dtype=float))
     qo = np.nan_to_num(np.asarray(result.ball_load_outer, dtype=float))
-    fig = figure(figsize=(5.2, 5.2))
+    fig = figure(figsize=(5.2, 5.8))
     ax = fig.add_subplot(projection="polar")
     for k, (a, q) in enumerate(zip(psi, qi, strict=True)):
         ax.plot([a, a], [0.0, q], color="#1f5fa8", lw=2.5, label="inner contact" if k == 0 else None)
@@ -51,8 +51,9 @@ def ball_loads(result, *, title=None):
     ax.plot(loop, np.append(qi, qi[0]), color="#1f5fa8", lw=0.8, alpha=0.5)
     ax.set_rlabel_position(112.5)
     ax.set_ylim(0.0, max(float(np.max(qi, initial=0.0)), float(np.max(qo, initial=0.0)), 1e-9) * 1.1)
-    ax.legend(loc="upper left", bbox_to_anchor=(-0.12, 1.02), fontsize="small", frameon=False,
-              title="ball load [N], azimuth from +x", title_fontsize="small")
+    # below the polar axes, outside them (constrained layout makes room): never over the plot
+    fig.legend(loc="outside lower center", ncols=2, fontsize="small", frameon=False,
+               title="ball load [N], azimuth from +x", title_fontsize="small")
     if title:
         ax.set_title(title, fontsize="medium")
     return fig

@@ -48,6 +48,8 @@ def create_app():
     templates = Jinja2Templates(directory=_HERE / "templates")
     templates.env.filters["number"] = page.number
     templates.env.globals["quantity"] = page.quantity
+    templates.env.globals["scales"] = page.scales
+    templates.env.globals["column_scales"] = page.column_scales
 
     @app.get("/api/{endpoint}")
     def endpoint(endpoint: str, request: Request):

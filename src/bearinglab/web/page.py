@@ -12,11 +12,14 @@ SECTIONS     the sections, in the order shown
 compute      form values -> the sections' results and the field messages
 figure_svg   a command's own figure (its ``--plot`` option) as inline SVG
 quantity     a result key with its unit suffix -> a readable label and unit
-number       a value as the page shows it
+number       a value as the page shows it: 6 significant digits, float noise as 0
+scales       the largest value of each unit in a document (what counts as noise next to it)
+column_scales  the same per column of a table of rows
 """
 
 from __future__ import annotations
 
+import math
 import tempfile
 from pathlib import Path
 from typing import NamedTuple
@@ -26,7 +29,20 @@ from ..errors import InputError
 from ..units import parse_quantity
 from . import api
 
-__all__ = ["FIELDS", "SECTIONS", "Result", "Section", "compute", "figure_svg", "number", "quantity"]
+__all__ = [
+    "DIGITS",
+    "FIELDS",
+    "NOISE",
+    "SECTIONS",
+    "Result",
+    "Section",
+    "column_scales",
+    "compute",
+    "figure_svg",
+    "number",
+    "quantity",
+    "scales",
+]
 
 
 class Field(NamedTuple):
@@ -215,12 +231,17 @@ def _plot_options(endpoint):
 
 
 _UNITS = (
+    ("_cm2_per_kgf_2_3", "cm²/kgf^⅔"),
     ("_N_per_um", "N/µm"),
+    ("_per_mm", "1/mm"),
     ("_Nmm", "N·mm"),
     ("_Nm", "N·m"),
     ("_kN", "kN"),
     ("_N", "N"),
     ("_deg", "°"),
+    ("_dms", "° ′ ″"),
+    ("_mrad", "mrad"),
+    ("_rad", "rad"),
     ("_rpm", "rpm"),
     ("_Hz", "Hz"),
     ("_hz", "Hz"),
@@ -228,8 +249,10 @@ _UNITS = (
     ("_um", "µm"),
     ("_MPa", "MPa"),
     ("_GPa", "GPa"),
+    ("_Mrev", "10⁶ rev"),
     ("_h", "h"),
     ("_s", "s"),
+    ("_W", "W"),
     ("_kgf", "kgf"),
     ("_cSt", "cSt"),
     ("_percent", "%"),
@@ -255,20 +278,92 @@ def quantity(key):
     return key.replace("_", " "), ""
 
 
-def number(value):
-    """A value as the page shows it: floats to 6 significant digits, the rest as text.
+#: Significant digits the page shows (the JSON API keeps every digit).
+DIGITS = 6
+#: A value below this fraction of the largest value of its unit in the same table is float noise
+#: (3.5e-14 µm next to 696 µm, the off-axis displacement of a symmetric load) and is shown as 0.
+NOISE = 1e-9
+_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+def number(value, scale=0.0):
+    """A value as the page shows it: floats to :data:`DIGITS` significant digits, noise as 0.
 
     Parameters
     ----------
     value : object
         A value of a command's JSON document.
+    scale : float, optional
+        The largest magnitude of the values of the same unit in the same table
+        (:func:`scales`); a float below :data:`NOISE` times it is shown as ``0``.
 
     Returns
     -------
     str
+        ``3000`` for 3000.0000000000005, ``1.06553 × 10⁶`` for 1065532.66, ``yes``/``no`` for flags,
+        ``—`` for a missing value.
+
+    Examples
+    --------
+    >>> number(3000.0000000000005), number(12449.999999999998), number(3.45e-14, 696.3)
+    ('3000', '12450', '0')
+    >>> number(31344565.19), number(-2.5e-7), number(True), number(None)
+    ('3.13446 × 10⁷', '-2.5 × 10⁻⁷', 'yes', '—')
     """
     if isinstance(value, bool) or value is None:
         return {True: "yes", False: "no", None: "—"}[value]
-    if isinstance(value, float):
-        return f"{value:.6g}"
-    return str(value)
+    if not isinstance(value, float) or not math.isfinite(value):
+        return str(value)
+    if abs(value) <= NOISE * scale or value == 0.0:
+        return "0"  # also -0.0
+    text = f"{value:.{DIGITS}g}"
+    if "e" not in text:
+        return text
+    mantissa, exponent = text.split("e")
+    return f"{mantissa} × 10{str(int(exponent)).translate(_SUPERSCRIPT)}"
+
+
+def _magnitude(value):
+    return abs(value) if isinstance(value, float) and math.isfinite(value) else 0.0
+
+
+def scales(document):
+    """The :func:`number` scale of each value of a document: the largest magnitude of its unit there.
+
+    Parameters
+    ----------
+    document : mapping
+        A command's JSON document (its scalar values; nested values are left out).
+
+    Returns
+    -------
+    dict
+        Key -> scale; 0 for dimensionless values (a residual of 1e-15 is not noise) and non-numbers.
+
+    Examples
+    --------
+    >>> scales({"displacement_x_um": 83.6, "displacement_y_um": 3e-14, "residual": 1e-15})
+    {'displacement_x_um': 83.6, 'displacement_y_um': 83.6, 'residual': 0.0}
+    """
+    largest = {}
+    for key, value in document.items():
+        unit = quantity(key)[1]
+        if unit:
+            largest[unit] = max(largest.get(unit, 0.0), _magnitude(value))
+    return {key: largest.get(quantity(key)[1], 0.0) for key in document}
+
+
+def column_scales(rows):
+    """The :func:`number` scale of each column of a table of rows: its largest magnitude.
+
+    Parameters
+    ----------
+    rows : list of mapping
+        One dict per row, all with the same keys.
+
+    Returns
+    -------
+    dict
+        Column key -> scale.
+    """
+    return {key: max((_magnitude(row.get(key)) for row in rows), default=0.0) for key in rows[0]} if rows else {}
