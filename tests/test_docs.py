@@ -15,7 +15,8 @@ import pytest
 
 import bearinglab
 
-DOCS = Path(__file__).resolve().parents[1] / "docs"
+ROOT = Path(__file__).resolve().parents[1]
+DOCS = ROOT / "docs"
 
 
 def _modules():
@@ -107,3 +108,15 @@ def test_api_page_lists_every_function_and_class_its_module_defines(page, module
         assert not own, f"{page} documents none of {sorted(own)}: add them to a :members: list"
     elif listed:  # ':members:' with no list documents everything
         assert own <= listed, f"{page} does not list {sorted(own - listed)}"
+
+
+_LINK = re.compile(r"\]\((?!https?:|mailto:|#)([^)\s#]+)(?:#[^)]*)?\)")
+
+
+@pytest.mark.parametrize("page", ["README.md", *sorted(str(p.relative_to(ROOT)) for p in (ROOT / "docs").rglob("*.md")
+                                                 if "_build" not in p.parts and "auto_examples" not in p.parts)])
+def test_relative_links_resolve(page):
+    # a link to a page that was renamed (.md -> .rst) or moved must fail here, not on a reader
+    text = (ROOT / page).read_text(encoding="utf-8")
+    broken = [t for t in _LINK.findall(text) if not ((ROOT / page).parent / t).exists()]
+    assert not broken, f"{page} links to missing files: {broken}"

@@ -35,7 +35,7 @@ def test_high_speed_units(b218_grid):
     assert cols["gyroscopic_moment_Nmm"] == pytest.approx(s.gyroscopic_moment.ravel() * 1000.0, rel=1e-15)
     assert cols["deflection_outer_um"] == pytest.approx(s.deflection_outer.ravel() / 1e-6, rel=1e-15)
     assert cols["max_pressure_inner_MPa"] == pytest.approx(s.max_pressure_inner.ravel() / 1e6, rel=1e-15)
-    assert cols["bpfi_Hz"] == pytest.approx(s.bpfi.ravel() / (2 * math.pi), rel=1e-15)
+    assert cols["bpfi_hz"] == pytest.approx(s.bpfi.ravel() / (2 * math.pi), rel=1e-15)
 
 
 @given(st.floats(-1e9, 1e9, allow_nan=False))

@@ -254,6 +254,7 @@ def documents():
 def test_json_keys_carry_one_unit_per_quantity(documents, name):
     keys = [k for k, _ in _items(documents[name])]
     assert not [k for k in keys if k.endswith("_kN")], "forces are in N"
+    assert not [k for k in keys if k.endswith("_Hz")], "frequencies are _hz in every command"
     lengths = [k for k in keys if re.search(r"(displacement|deflection|approach|clearance|preload_offset)_[a-z]+$", k)
                and not k.endswith("_ratio")]
     assert all(k.endswith("_um") for k in lengths), lengths

@@ -62,7 +62,7 @@ def test_scales_group_values_by_unit():
         ("curvature_sum_inner_per_mm", "curvature sum inner", "1/mm"),
         ("axial_stiffness_N_per_um", "axial stiffness", "N/µm"),
         ("first_approximation_rad", "first approximation", "rad"),
-        ("bpfo_Hz", "bpfo", "Hz"),
+        ("bpfo_hz", "bpfo", "Hz"),
         ("viscosity_ratio", "viscosity ratio", ""),
     ],
 )

@@ -198,7 +198,7 @@ def _print_single(b, r, options):
         ["ball load Q [N]", _f(r["ball_load_inner_N"], ".1f"), _f(r["ball_load_outer_N"], ".1f")],
         ["deflection δ [µm]", _f(r["deflection_inner_um"], ".3f"), _f(r["deflection_outer_um"], ".3f")],
         ["max contact pressure [MPa]", _f(r["max_pressure_inner_MPa"], ".0f"), _f(r["max_pressure_outer_MPa"], ".0f")],
-        ["ball-pass frequency [Hz]", _f(r["bpfi_Hz"], ".2f"), _f(r["bpfo_Hz"], ".2f")],
+        ["ball-pass frequency [Hz]", _f(r["bpfi_hz"], ".2f"), _f(r["bpfo_hz"], ".2f")],
     ], caption=caption)
     table("Ball and ring", ["quantity", "value"], [
         # printed tables give displacements in µm in every command (JSON and CSV keep the _mm column)

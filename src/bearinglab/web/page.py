@@ -243,7 +243,6 @@ _UNITS = (
     ("_mrad", "mrad"),
     ("_rad", "rad"),
     ("_rpm", "rpm"),
-    ("_Hz", "Hz"),
     ("_hz", "Hz"),
     ("_mm", "mm"),
     ("_um", "µm"),
