@@ -44,10 +44,10 @@ from ..errors import InputError
 from ._compat import renamed_field, warn_renamed
 
 __all__ = [
+    "SKF_FIT_PARAMETERS",
     "LineFit",
     "LoadDependenceFit",
     "ReducedFrictionCoefficientFit",
-    "SKF_FIT_PARAMETERS",
     "SKFFrictionFit",
     "SpeedDependenceFit",
     "ThroughOriginFit",
@@ -648,7 +648,7 @@ def skf_friction(torque, radial_load, axial_load, shaft_speed, kinematic_viscosi
              full.sliding_friction_coefficient)
     shape = np.broadcast(*parts).shape
     t, m_rr, g_sl, other, mu_model = (np.broadcast_to(p, shape).ravel() for p in parts)
-    x, y, index, n, labels = _prepare(g_sl, t - other, groups, "sliding_variable", "torque")
+    _x, y, index, n, labels = _prepare(g_sl, t - other, groups, "sliding_variable", "torque")
     count = np.bincount(index, minlength=n)
     mu_mean = np.bincount(index, weights=mu_model, minlength=n) / count
     nan = np.full(n, np.nan)
