@@ -91,3 +91,21 @@ def test_life_scales_with_load_to_minus_three(p, k):
 def test_life_at_zero_load_is_infinite():
     with np.errstate(divide="ignore"):
         assert ratings.basic_rating_life(1000.0, 0.0) == math.inf
+
+
+@pytest.mark.parametrize("deg", [20.0, 25.0, 30.0, 35.0, 40.0, 45.0])
+def test_angular_contact_limit_e_is_where_the_two_loads_meet(deg):
+    # ISO 281 table 3: e is the ratio Fa/Fr at which P = X Fr + Y Fa equals P = Fr, e = (1 - X)/Y, to the
+    # two decimals printed (checks the X, Y and e columns against each other, row by row)
+    x, y, e = ratings.dynamic_load_factors(1.0, 10.0, 1e5, math.radians(deg), bearing_type="angular")
+    assert e == pytest.approx((1 - x) / y, abs=0.005 + 1e-12)
+
+
+def test_deep_groove_f0_matches_skf_calculation_factor_of_6205():
+    # SKF product data of the 6205 (PUB BU/P1 17000, product table; also SKF's web page as parsed by two
+    # public tools, issue 12): calculation factor f0 = 14, printed as an integer. ISO 76 from the 6205
+    # ball set of the catalog (9 x 7.94 mm on 39.04 mm) must round to it.
+    from bearinglab import catalog
+
+    b = catalog.get("6205-2RS")
+    assert round(float(ratings.static_load_factor(b.ball_diameter, b.pitch_diameter))) == 14

@@ -103,3 +103,14 @@ def test_iso_vg_and_temperature():
 def test_viscosity_ratio():
     nu1 = ratings.rated_viscosity(1500 * RPM, 0.04)
     assert ratings.viscosity_ratio(2 * nu1, 1500 * RPM, 0.04) == pytest.approx(2.0, rel=1e-14)
+
+
+@pytest.mark.parametrize("kappa", [0.4, 1.0])
+@pytest.mark.parametrize("ratio", [0.02, 0.1, 0.3])
+def test_a_iso_is_continuous_where_its_branches_meet(kappa, ratio):
+    # the three (c, p) pairs of eq. (B.4) are fitted pieces of one curve: they must meet at kappa = 0.4
+    # and 1 to the digits printed (5 significant digits of c and p: a relative step below 1e-4). A wrong
+    # digit (one public transcription prints p = 0.019087 for 0.4 <= kappa < 1) breaks this by ~20 %.
+    below = ratings.life_modification_factor(kappa * (1 - 1e-12), 1.0, ratio, 1.0)
+    above = ratings.life_modification_factor(kappa, 1.0, ratio, 1.0)
+    assert above == pytest.approx(below, rel=1e-3)

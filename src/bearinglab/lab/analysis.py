@@ -8,10 +8,12 @@ LabResult        the results (SI), with the session they came from
 RowValues        the converted values of every row
 Task1, Task2, Task3, Indicators
                  the fits of each task with their cross-checks, and I1-I7
+Task4            the fit of the SKF four-term model (sessions with an [skf] table)
 
 Grouping. T4 rows are grouped by (tilt, speed-column label): one task-1 and one task-3 fit per
 group, at the column speed = the mean n of its rows (section 6.1). T5 rows are grouped by (mass,
-tilt): one task-2 fit per group. All groups of a task are fitted at once (:mod:`.fits`).
+tilt): one task-2 fit per group. Task 4 (the SKF model, when the session has an [skf] table) fits
+all rows, T4 and T5, grouped by tilt. All groups of a task are fitted at once (:mod:`.fits`).
 
 Every number here can be had from :mod:`bearinglab.friction`, :mod:`.rig`, :mod:`.calibration` and
 :mod:`.fits` directly; this module only composes them. The tables, plot data, conclusions and the
@@ -42,6 +44,7 @@ __all__ = [
     "Task1",
     "Task2",
     "Task3",
+    "Task4",
     "analyse",
 ]
 
@@ -154,6 +157,35 @@ class Task3(NamedTuple):
     """Row indices of each group."""
 
 
+class Task4(NamedTuple):
+    """Task 4 per tilt: the SKF four-term model fitted to all rows (mu_sl and/or a scale on M_rr)."""
+
+    tilt: np.ndarray
+    """[rad]"""
+    fit: str
+    """What was fitted: ``"sliding"``, ``"rolling"`` or ``"both"``."""
+    sliding_friction_coefficient: np.ndarray
+    """mu_sl fitted (NaN with fit = "rolling"). [-]"""
+    sliding_friction_coefficient_standard_error: np.ndarray
+    """[-]"""
+    rolling_scale: np.ndarray
+    """k on the model's rolling moment (1 with fit = "sliding"). [-]"""
+    rolling_scale_standard_error: np.ndarray
+    """[-]"""
+    model_sliding_friction_coefficient: np.ndarray
+    """Mean over the group of the model's own mu_sl. [-]"""
+    residual_rms: np.ndarray
+    """[N*m]"""
+    count: np.ndarray
+    """Number of rows. [-]"""
+    mean_torque: np.ndarray
+    """Mean measured T of the group. [N*m]"""
+    model_residual_rms: np.ndarray
+    """RMS of measured minus the unfitted model's torque (mu_sl of the model, k = 1). [N*m]"""
+    rows: tuple
+    """Row indices of each group."""
+
+
 class Indicators(NamedTuple):
     """The conclusion indicators of spec 001 section 7.5 (SI; ratios dimensionless)."""
 
@@ -194,6 +226,8 @@ class LabResult:
     """Task 3 (empty arrays without T4 rows)."""
     indicators: Indicators
     """I1-I7."""
+    task4: Task4 | None = None
+    """Task 4 (None without an [skf] table in the session)."""
 
 
 # ----------------------------------------------------------------------------- analysis
@@ -240,8 +274,9 @@ def analyse(session):
     task2 = _task2(session, rows, g5, f2, g4.tilt, f3.load_term_factor)
     task3 = _task3(session, g4, f3, mean_f0)
     c = session.handbook.load_term_exponent
+    task4 = _task4(session, rows) if session.skf is not None else None
     return LabResult(
-        session, rows, task1, task2, task3, _indicators(task1, task2, task3, c, mean_f0)
+        session, rows, task1, task2, task3, _indicators(task1, task2, task3, c, mean_f0), task4
     )
 
 
@@ -479,6 +514,38 @@ def _task3(session, groups, f3, mean_f0):
         f3.load_term_factor / session.handbook.load_term_factor - 1.0,
         mean_f0 * unit_t0,
         tuple(groups.members),
+    )
+
+
+def _task4(session, rows):
+    """Task 4: the SKF model fitted to every row, one group per tilt (fits.skf_friction)."""
+    from ..friction.skf import skf
+
+    b, settings, r = session.bearing, session.skf, session.rows
+    gid, members = _groups([r.tilt], np.ones(r.tilt.size, dtype=bool))
+    loads = (rows.radial_load, rows.axial_load, rows.shaft_speed, settings.kinematic_viscosity,
+             b.bore, b.outside_diameter)
+    options = settings.model_options(b)
+    try:
+        f4 = fits.skf_friction(rows.torque, *loads, fit=settings.fit, groups=gid, **options)
+        unfitted = rows.torque - skf(*loads, **options).total_moment
+    except InputError as exc:
+        where = _where_rows(session, members[exc.group]) if hasattr(exc, "group") else session.source
+        raise InputError(f"{where} (task 4, the SKF model): {exc}") from None
+    m = np.bincount(gid, minlength=len(members))
+    return Task4(
+        np.array([r.tilt[k[0]] for k in members]),
+        settings.fit,
+        f4.sliding_friction_coefficient,
+        f4.sliding_friction_coefficient_standard_error,
+        f4.rolling_scale,
+        f4.rolling_scale_standard_error,
+        f4.model_sliding_friction_coefficient,
+        f4.residual_rms,
+        f4.count,
+        np.bincount(gid, weights=rows.torque, minlength=len(members)) / m,
+        np.sqrt(np.bincount(gid, weights=unfitted**2, minlength=len(members)) / m),
+        tuple(members),
     )
 
 

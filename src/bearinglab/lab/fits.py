@@ -10,6 +10,7 @@ Tasks
 reduced_friction_coefficient  task 1: mu of T = mu P0 d / 2 through the origin, eq. (6.1)
 speed_dependence              task 2: f0 and T_F of T = f0 d_m^3 n^(2/3) + T_F, eq. (6.2)
 load_dependence               task 3: f and T0 of T = T0 + f P0 (P0/C0)^e d_m, eqs. (6.2)-(6.3)
+skf_friction                  task 4: mu_sl and/or a scale on M_rr of the SKF four-term model
 
 Deprecated names (they warn; removed after one release): ``friction_coefficient`` (now
 :func:`reduced_friction_coefficient`), ``FrictionCoefficientFit`` (now
@@ -43,13 +44,16 @@ from ..errors import InputError
 from ._compat import renamed_field, warn_renamed
 
 __all__ = [
+    "SKF_FIT_PARAMETERS",
     "LineFit",
     "LoadDependenceFit",
     "ReducedFrictionCoefficientFit",
+    "SKFFrictionFit",
     "SpeedDependenceFit",
     "ThroughOriginFit",
     "load_dependence",
     "reduced_friction_coefficient",
+    "skf_friction",
     "speed_dependence",
     "straight_line",
     "through_origin",
@@ -514,3 +518,151 @@ def load_dependence(
         shown_unit=" N",
     )  # (6.2)
     return _pack(LoadDependenceFit, labels, f, t0, se_f, se_t0, rms, m, residuals=r)
+
+
+# ----------------------------------------------------------------------------- task 4: the SKF model
+SKF_FIT_PARAMETERS = ("sliding", "rolling", "both")
+
+
+class SKFFrictionFit(NamedTuple):
+    """Fit of the SKF four-term model T = k M_rr + mu_sl G_sl + M_seal + M_drag, per group."""
+
+    sliding_friction_coefficient: float | np.ndarray
+    """mu_sl fitted (``fit="sliding"`` or ``"both"``); NaN with ``fit="rolling"``, where the model's own
+    mu_sl of every point is used. [-]"""
+    rolling_scale: float | np.ndarray
+    """k, the factor on the model's rolling moment Phi_ish Phi_rs M_rr (``fit="rolling"`` or
+    ``"both"``); 1 with ``fit="sliding"``. [-]"""
+    sliding_friction_coefficient_standard_error: float | np.ndarray
+    """Standard error of mu_sl; NaN where not fitted or without redundancy. [-]"""
+    rolling_scale_standard_error: float | np.ndarray
+    """Standard error of k; NaN where not fitted or without redundancy. [-]"""
+    model_sliding_friction_coefficient: float | np.ndarray
+    """Mean over the group's points of the model's mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL. [-]"""
+    residual_rms: float | np.ndarray
+    """sqrt(mean(r_i^2)). [N*m]"""
+    count: int | np.ndarray
+    """Number of points m."""
+    residuals: np.ndarray
+    """Measured minus fitted torque at every point (input order). [N*m]"""
+
+
+def _two_regressors(x, z, y, index, n_groups, labels):
+    """Least squares y = a x + b z (no intercept) per group -> (a, b, se_a, se_b, rms, m, r)."""
+    m = np.bincount(index, minlength=n_groups).astype(float)
+
+    def total(w):
+        return np.bincount(index, weights=w, minlength=n_groups)
+
+    sxx, szz, sxz, sxy, szy = total(x * x), total(z * z), total(x * z), total(x * y), total(z * y)
+    det = sxx * szz - sxz**2
+    flat = ~(det > 1e-12 * sxx * szz)  # G_sl and M_rr proportional over the group: not separable
+    if flat.any():
+        k = int(np.argmax(flat))
+        raise _degenerate(
+            "task 4: {group} cannot separate mu_sl from the scale on M_rr: the sliding variable G_sl "
+            f"and the rolling moment M_rr are proportional over its {int(m[k])} point(s); vary the "
+            "load and the speed, or fit one of them (fit='sliding' or 'rolling')",
+            labels,
+            k,
+        )
+    a = (szz * sxy - sxz * szy) / det
+    b = (sxx * szy - sxz * sxy) / det
+    r = y - a[index] * x - b[index] * z
+    ssr = total(r * r)
+    dof = m - 2.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s2 = np.where(dof > 0, ssr / np.where(dof > 0, dof, 1.0), np.nan)
+        se_a, se_b = np.sqrt(s2 * szz / det), np.sqrt(s2 * sxx / det)
+    return a, b, se_a, se_b, np.sqrt(ssr / m), m.astype(int), r
+
+
+def skf_friction(torque, radial_load, axial_load, shaft_speed, kinematic_viscosity, bore,
+                 outside_diameter, *, fit="sliding", groups=None, **model):
+    r"""Task 4: fit mu_sl and/or a scale on the rolling moment of the SKF four-term model to rig data.
+
+    Parameters
+    ----------
+    torque : array_like
+        Measured friction torque T_i. [N*m]
+    radial_load, axial_load : array_like
+        Fr and Fa of each point. [N]
+    shaft_speed : array_like
+        n of each point. [rad/s]
+    kinematic_viscosity : array_like
+        nu at the operating temperature (of the base oil for grease). [m^2/s]
+    bore, outside_diameter : array_like
+        d and D of the test bearing. [m]
+    fit : {"sliding", "rolling", "both"}
+        What is fitted: mu_sl (with the model's rolling moment), a factor k on the rolling moment (with
+        the model's mu_sl), or both. [-]
+    groups : array_like, optional
+        Group label of every point; one fit per distinct label. [-]
+    **model : optional
+        The model's options, passed to :func:`bearinglab.friction.skf.skf` (``series`` or
+        ``constants``, ``bearing_type``, ``lubrication``, ``static_load_rating``, seals, ...).
+
+    Returns
+    -------
+    SKFFrictionFit
+        Scalars without ``groups``, arrays ordered like ``numpy.unique(groups)`` with it.
+
+    Raises
+    ------
+    InputError
+        An unknown ``fit``; with ``fit="both"``, a group whose G_sl and M_rr are proportional (the two
+        cannot be told apart). The exception carries ``group``, the offending label.
+
+    Notes
+    -----
+    The SKF model is linear in both unknowns:
+    :math:`T = k\,\Phi_{ish}\Phi_{rs} G_{rr}(\nu n)^{0.6} + \mu_{sl} G_{sl} + M_{seal} + M_{drag}`
+    (SKF Rolling bearings catalogue, Friction). The model's parts are computed by
+    :func:`bearinglab.friction.skf.skf` (G_sl as its sliding moment at mu_sl = 1) and the unknowns
+    found by ordinary least squares without intercept, all groups at once. Standard errors come from
+    the OLS covariance with s^2 = sum(r_i^2)/(m - p), p the number of fitted parameters; NaN where
+    m = p.
+
+    Examples
+    --------
+    Torques made by the model itself with mu_sl = 0.08 are fitted back to it:
+
+    >>> from bearinglab.friction.skf import skf
+    >>> fr, n = np.array([50.0, 100.0, 200.0]), np.array([100.0, 200.0, 300.0])
+    >>> t = skf(fr, 0.0, n, 30e-6, 25e-3, 52e-3, series="62", sliding_friction_coefficient=0.08)
+    >>> fit = skf_friction(t.total_moment, fr, 0.0, n, 30e-6, 25e-3, 52e-3, series="62")
+    >>> print(f"{fit.sliding_friction_coefficient:.6f}")
+    0.080000
+    """
+    from ..friction.skf import skf as _skf  # the lab's physics lives in bearinglab.friction
+
+    if fit not in SKF_FIT_PARAMETERS:
+        raise InputError(f"fit must be one of {list(SKF_FIT_PARAMETERS)}, got {fit!r}")
+    if "sliding_friction_coefficient" in model:
+        raise InputError("sliding_friction_coefficient is what task 4 fits; do not give it")
+    t = check_finite("torque", torque, "N*m")
+    args = (radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside_diameter)
+    full = _skf(*args, **model)
+    unit = _skf(*args, sliding_friction_coefficient=1.0, **model)  # its sliding moment is G_sl
+    parts = (t, full.rolling_moment, unit.sliding_moment, full.seal_moment + full.drag_moment,
+             full.sliding_friction_coefficient)
+    shape = np.broadcast(*parts).shape
+    t, m_rr, g_sl, other, mu_model = (np.broadcast_to(p, shape).ravel() for p in parts)
+    _x, y, index, n, labels = _prepare(g_sl, t - other, groups, "sliding_variable", "torque")
+    count = np.bincount(index, minlength=n)
+    mu_mean = np.bincount(index, weights=mu_model, minlength=n) / count
+    nan = np.full(n, np.nan)
+    if fit == "both":
+        mu, k, se_mu, se_k, rms, m, r = _two_regressors(g_sl, m_rr, y, index, n, labels)
+    elif fit == "sliding":
+        mu, _a, se_mu, _sa, rms, m, r = _stats(
+            g_sl, y - m_rr, index, n, labels, intercept=False, what="task 4", x_name="load"
+        )
+        k, se_k = np.ones(n), nan
+    else:
+        k, _a, se_k, _sa, rms, m, r = _stats(
+            m_rr, y - mu_model * g_sl, index, n, labels, intercept=False, what="task 4",
+            x_name="speed (a rolling moment)"
+        )
+        mu, se_mu = nan, nan
+    return _pack(SKFFrictionFit, labels, mu, k, se_mu, se_k, mu_mean, rms, m, residuals=r)

@@ -9,6 +9,7 @@ Data
 ----
 Session            everything a session holds: bearing, handbook constants, rig, calibration, rows
 Handbook           the handbook constants in force (Table 1, Table 2, mu), with the overrides named
+SKFSettings        the optional [skf] table: lubricant and model options of task 4 (the SKF model fit)
 Rows               the measurement rows as arrays (SI), with their file line numbers
 SERIES             the row series, T4 and T5
 
@@ -22,6 +23,8 @@ Format (one file; quantities are strings with units; see ``examples/friction/REA
     [bearing]      catalog = "18"  and/or  designation, type, contact_angle, bore,
                    mean_diameter or outside_diameter, static_load_rating
     [handbook]     optional overrides: x0, y0, mu, f, c (plain numbers)
+    [skf]          optional, turns on task 4: viscosity = "30 mm^2/s", lubrication, fit,
+                   series (or r1, r2, s1, s2 [, r3, s3]), ehl (mu_EHL)
     [rig]          tare_mass = "0 kg", gravity = "9.81 m/s^2"
     [calibration.speed], [calibration.torque_1], [calibration.torque_2]
                    unit = "rpm" | "N*mm" ...;  points = [[reading, value], ...]
@@ -54,6 +57,7 @@ from ..units import parse_quantity
 from ._compat import renamed_field
 from ._rows import SERIES, Rows, read_rows
 from .calibration import Calibration, calibration_table
+from .fits import SKF_FIT_PARAMETERS
 from .rig import GRAVITY
 from .template import FORMAT, template, write_template
 
@@ -62,6 +66,7 @@ __all__ = [
     "SERIES",
     "Handbook",
     "Rows",
+    "SKFSettings",
     "Session",
     "parse_session",
     "read_session",
@@ -69,8 +74,9 @@ __all__ = [
     "write_template",
 ]
 
+_SKF_CONSTANT_KEYS = ("r1", "r2", "s1", "s2", "r3", "s3")
 _KNOWN = {
-    (): {"format", "session", "bearing", "handbook", "rig", "calibration", "measurements"},
+    (): {"format", "session", "bearing", "handbook", "skf", "rig", "calibration", "measurements"},
     ("session",): {"title", "date", "operator", "rig", "lubricant", "notes"},
     ("bearing",): {
         "catalog",
@@ -83,6 +89,7 @@ _KNOWN = {
         "static_load_rating",
     },
     ("handbook",): {"x0", "y0", "mu", "f", "c"},
+    ("skf",): {"viscosity", "lubrication", "fit", "series", "ehl", *_SKF_CONSTANT_KEYS},
     ("rig",): {"tare_mass", "gravity"},
     ("calibration",): {"speed", "torque_1", "torque_2"},
     ("calibration", "speed"): {"unit", "points"},
@@ -118,6 +125,35 @@ class Handbook(NamedTuple):
     )
 
 
+class SKFSettings(NamedTuple):
+    """The ``[skf]`` table of a session: what task 4 (the fit of the SKF four-term model) needs."""
+
+    kinematic_viscosity: float
+    """nu at the test temperature (of the base oil for grease). [m^2/s]"""
+    lubrication: str
+    """``"grease"``, ``"oil-air"`` or ``"oil-jet"`` (K_rs of the model)."""
+    fit: str
+    """What is fitted: ``"sliding"`` (mu_sl), ``"rolling"`` (a scale on M_rr) or ``"both"``."""
+    series: str | None
+    """Deep-groove series of the SKF constants (None when ``constants`` are given)."""
+    constants: object | None
+    """:class:`bearinglab.friction.SKFConstants` given in the file, or None."""
+    ehl_coefficient: float
+    """mu_EHL of the lubricant (0.05 for mineral oils). [-]"""
+
+    def model_options(self, bearing):
+        """Keyword arguments of :func:`bearinglab.friction.skf.skf` for ``bearing``."""
+        kw = {"bearing_type": bearing.type, "lubrication": self.lubrication,
+              "ehl_coefficient": self.ehl_coefficient}
+        if bearing.static_load_rating is not None:
+            kw["static_load_rating"] = bearing.static_load_rating
+        if self.constants is not None:
+            kw["constants"] = self.constants
+        else:
+            kw["series"] = self.series
+        return kw
+
+
 @dataclass(frozen=True)
 class Session:
     """One measurement session: the bearing, the handbook constants, the rig, calibration and rows."""
@@ -140,6 +176,8 @@ class Session:
     """The session file."""
     rows_source: str = "<session>"
     """The file the rows are in (the session file or its CSV)."""
+    skf: SKFSettings | None = None
+    """The ``[skf]`` table (task 4), or None when the file has none."""
 
 
 # ----------------------------------------------------------------------------- locating keys in TOML text
@@ -320,6 +358,7 @@ def parse_session(text, *, source="<session>", base_dir=None):
     info = {k: str(v) for k, v in _table(doc, ("session",), ctx).items()}
     bearing = _bearing(_table(doc, ("bearing",), ctx), ctx)
     handbook = _handbook(_table(doc, ("handbook",), ctx), bearing, ctx)
+    skf = _skf_settings(doc["skf"], bearing, ctx) if "skf" in doc else None
     rig = _table(doc, ("rig",), ctx)
     tare = _quantity(rig, ("rig", "tare_mass"), "mass", ctx, default=0.0)
     if tare < 0:
@@ -339,6 +378,7 @@ def parse_session(text, *, source="<session>", base_dir=None):
         info=info,
         source=source,
         rows_source=rows_source,
+        skf=skf,
     )
 
 
@@ -484,6 +524,45 @@ def _bearing_fields(table, base, ctx):
     elif kw.get("type", base.type) != base.type:  # the catalog angle belongs to the old type
         kw["contact_angle"], kw["radial_clearance"] = None, None
     return kw
+
+
+def _skf_settings(table, bearing, ctx):
+    """The [skf] table -> SKFSettings (task 4)."""
+    table = _table({"skf": table}, ("skf",), ctx)
+    if "viscosity" not in table:
+        raise ctx.error(("skf", "viscosity"), 'is required for task 4, e.g. viscosity = "30 mm^2/s"')
+    nu = _quantity(table, ("skf", "viscosity"), "kinematic_viscosity", ctx)
+    if not nu > 0:
+        raise ctx.error(("skf", "viscosity"), f"must be > 0 [mm^2/s], got {nu * 1e6!r}")
+    choices = {"lubrication": (friction.LUBRICATION_METHODS, "grease"),
+               "fit": (SKF_FIT_PARAMETERS, "sliding")}
+    picked = {}
+    for key, (valid, default) in choices.items():
+        picked[key] = table.get(key, default)
+        if picked[key] not in valid:
+            raise ctx.error(("skf", key), f"must be one of {list(valid)}, got {picked[key]!r}")
+    numbers = {}
+    for key in (*_SKF_CONSTANT_KEYS, "ehl"):
+        if key in table:
+            v = table[key]
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not (v >= 0 and math.isfinite(v)):
+                raise ctx.error(("skf", key), f"must be a plain number >= 0 [-], got {v!r}")
+            numbers[key] = float(v)
+    given = [k for k in _SKF_CONSTANT_KEYS[:4] if k in numbers]
+    constants, series = None, None
+    if given:
+        if len(given) < 4 or "series" in table:
+            raise ctx.error(("skf", given[0]), "give all of r1, r2, s1, s2 (and r3, s3 for angular "
+                                               "contact), or a series, not both")
+        constants = friction.SKFConstants(*(numbers.get(k, 0.0) for k in _SKF_CONSTANT_KEYS[:4]),
+                                          r3=numbers.get("r3", 0.0), s3=numbers.get("s3", 0.0))
+    else:
+        try:
+            series = (friction.series_constants(table["series"]) and str(table["series"])
+                      if "series" in table else friction.bearing_series(bearing.designation))
+        except InputError as exc:
+            raise ctx.error(("skf", "series"), f"{exc}; or give r1, r2, s1, s2") from None
+    return SKFSettings(nu, picked["lubrication"], picked["fit"], series, constants, numbers.get("ehl", 0.05))
 
 
 def _handbook(table, bearing, ctx):

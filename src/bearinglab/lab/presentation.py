@@ -447,7 +447,12 @@ def conclusions(result):
     list of str
         One paragraph per indicator that the data allow; the wording uses :data:`WORDING_THRESHOLD`.
     """
-    return _task1_conclusions(result) + _task2_conclusions(result) + _task3_conclusions(result)
+    return (
+        _task1_conclusions(result)
+        + _task2_conclusions(result)
+        + _task3_conclusions(result)
+        + _task4_conclusions(result)
+    )
 
 
 def _task1_conclusions(result):
@@ -549,6 +554,31 @@ def _task2_conclusions(result):
     return out
 
 
+def _task4_conclusions(result):
+    """Task 4: the fitted mu_sl / scale on M_rr against the SKF model's own values."""
+    t4 = result.task4
+    if t4 is None:
+        return []
+    out = []
+    for k in range(t4.tilt.size):
+        parts = []
+        if t4.fit in ("sliding", "both"):
+            mu, se = t4.sliding_friction_coefficient[k], t4.sliding_friction_coefficient_standard_error[k]
+            model = t4.model_sliding_friction_coefficient[k]
+            parts.append(f"μ_sl = {mu:.4g} ± {se:.2g} (the model's μ_sl: {model:.4g}, {_pct(mu / model - 1)})")
+        if t4.fit in ("rolling", "both"):
+            parts.append(
+                f"scale on M_rr k = {t4.rolling_scale[k]:.4g} ± {t4.rolling_scale_standard_error[k]:.2g}"
+            )
+        share = t4.residual_rms[k] / t4.mean_torque[k]
+        out.append(
+            f"Task 4, SKF four-term model (β = {_deg(t4.tilt[k])}°, {int(t4.count[k])} rows): "
+            f"{'; '.join(parts)}. Residual RMS {t4.residual_rms[k] / _MM:.4g} N·mm = {_share(share)} of the "
+            f"mean torque; the unfitted model misses by {t4.model_residual_rms[k] / _MM:.4g} N·mm RMS."
+        )
+    return out
+
+
 def _task3_conclusions(result):
     """I6 (f against speed and the handbook), I7 (speed term against (3.5)), T0 against task 2."""
     ind, hb, t3 = result.indicators, result.session.handbook, result.task3
@@ -612,7 +642,8 @@ def to_dict(result):
     -------
     dict
         Keys ``format``, ``source``, ``session``, ``bearing``, ``handbook``, ``rig``, ``rows``, ``task1``,
-        ``task2``, ``task3``, ``mean_f0``, ``indicators``, ``tables``, ``plots`` and ``conclusions``.
+        ``task2``, ``task3``, ``task4`` (the SKF model fit; empty without an ``[skf]`` table), ``mean_f0``,
+        ``indicators``, ``tables``, ``plots`` and ``conclusions``.
     """
     s = result.session
     task1, task2, task3 = _task1_dicts(result), _task2_dicts(result), _task3_dicts(result)
@@ -629,6 +660,7 @@ def to_dict(result):
         "task1": task1,
         "task2": task2,
         "task3": task3,
+        "task4": _task4_dicts(result),
         "mean_f0": _f(result.indicators.mean_speed_term_factor),
         "indicators": _indicator_dicts(result, task1, task3),
         "tables": [
@@ -767,6 +799,29 @@ def _task3_dicts(result):
             "lines": _lines(result, t3.rows[k]),
         }
         for k in range(t3.tilt.size)
+    ]
+
+
+def _task4_dicts(result):
+    t4 = result.task4
+    if t4 is None:
+        return []
+    return [
+        {
+            "tilt_deg": _sig(math.degrees(t4.tilt[k])),
+            "fitted": t4.fit,
+            "mu_sl": _f(t4.sliding_friction_coefficient[k]),
+            "mu_sl_standard_error": _f(t4.sliding_friction_coefficient_standard_error[k]),
+            "rolling_scale": float(t4.rolling_scale[k]),
+            "rolling_scale_standard_error": _f(t4.rolling_scale_standard_error[k]),
+            "mu_sl_model": float(t4.model_sliding_friction_coefficient[k]),
+            "residual_rms_Nmm": float(t4.residual_rms[k] / _MM),
+            "model_residual_rms_Nmm": float(t4.model_residual_rms[k] / _MM),
+            "mean_torque_Nmm": float(t4.mean_torque[k] / _MM),
+            "n_points": int(t4.count[k]),
+            "lines": _lines(result, t4.rows[k]),
+        }
+        for k in range(t4.tilt.size)
     ]
 
 

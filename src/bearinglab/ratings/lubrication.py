@@ -56,7 +56,9 @@ _WALTHER_MIN_CST = 2.0  # ASTM D341: the plain Z = nu + 0.7 holds down to 2 mm^2
 # ISO 3448 viscosity grades (mid-point kinematic viscosity at 40 degC in mm^2/s = the grade number)
 ISO_VG_GRADES = (2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500, 2200, 3200)
 
-# ISO 281:2007 table 13: cleanliness class -> e_C range (low, high) for Dpw < 100 mm and Dpw >= 100 mm
+# ISO 281:2007 table 13: cleanliness class -> e_C range (low, high) for Dpw < 100 mm and Dpw >= 100 mm.
+# Checked (issue 12): identical in two independent public implementations (one of them SKF's eta_c table,
+# which has the same classes and ranges).
 CONTAMINATION_CLASSES = {
     "extreme_cleanliness": ((1.0, 1.0), (1.0, 1.0)),
     "high_cleanliness": ((0.6, 0.8), (0.8, 0.9)),
@@ -68,7 +70,8 @@ CONTAMINATION_CLASSES = {
 }
 _CLASS_PITCH = 0.1  # m: the two columns of table 13
 
-# ISO 281:2007 eq. (B.4) (ball bearings): (kappa range, c, p) of a_ISO = 0.1 [1 - (2.5671 - c/kappa^p)^0.83
+# ISO 281:2007 eq. (B.4) (ball bearings): (kappa range, c, p) of a_ISO (checked, issue 12: the pieces meet at
+# kappa = 0.4 and 1 to 1e-4, tests/ratings/test_lubrication.py) = 0.1 [1 - (2.5671 - c/kappa^p)^0.83
 # (e_C Cu / P)^(1/3)]^-9.3
 _AISO_BALL = ((0.1, 0.4, 2.2649, 0.054381), (0.4, 1.0, 1.9987, 0.19087), (1.0, 4.0, 1.9987, 0.071739))
 AISO_CAP = 50.0
@@ -216,6 +219,7 @@ def rated_viscosity(shaft_speed, pitch_diameter):
     """
     n = check_positive("shaft_speed", shaft_speed, "rad/s") / _RPM
     dm = check_positive("pitch_diameter", pitch_diameter, "m") / _MM
+    # eqs. (14)-(15); the same two branches in an independent public ISO 281 implementation (issue 12)
     nu1 = np.where(n < 1000.0, 45000.0 * n**-0.83 * dm**-0.5, 4500.0 * n**-0.5 * dm**-0.5)
     return (nu1 * _CST)[()]
 

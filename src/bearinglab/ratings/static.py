@@ -75,7 +75,11 @@ _ISO_INNER, _ISO_OUTER = 0.52, 0.53  # ISO 76 table 2 footnote: groove radii 0.5
 # usual minimum s0 of ball bearings under normal conditions (ISO 76:2006 annex A, guideline values)
 MINIMUM_STATIC_SAFETY = 1.0
 
-# ISO 76:2006 table 1, single-row ball bearings: (X0, Y0); angular contact by contact angle [deg]
+# ISO 76:2006 table 1, single-row ball bearings: (X0, Y0); angular contact by contact angle [deg].
+# Checked (issue 12): X0 = 0.6, Y0 = 0.5 of deep groove also in SKF's catalogue (P0 = 0.6 Fr + 0.5 Fa,
+# P0 >= Fr) and in an independent implementation; X0 = 0.5 of angular contact likewise. The Y0 of angular
+# contact by angle are not confirmed by a public source (one public implementation uses 0.22 cot(alpha),
+# the rule of tapered roller bearings, which agrees only at 40-45 deg).
 _RADIAL_X0_Y0 = (0.6, 0.5)
 _ANGULAR_ANGLES_DEG = np.array([15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 45.0])
 _ANGULAR_Y0 = np.array([0.46, 0.42, 0.38, 0.33, 0.29, 0.26, 0.22])
@@ -129,7 +133,9 @@ def static_load_factor(ball_diameter, pitch_diameter, contact_angle=0.0, *,
 
     where :math:`Q_i, Q_e` are the loads at which the exact Hertz pressure of the inner and outer
     raceway contacts reaches 4200 MPa (steel, E = 207 GPa, nu = 0.3). With the conformities 0.52 /
-    0.53 this reproduces ISO 76 table 2 (14.7 at gamma = 0, 16.4 at 0.10, 14.0 at 0.20) to its digit.
+    0.53 this reproduces all 26 rows of ISO 76 table 2 (gamma = 0 to 0.40; 14.7 at 0, 16.4 at 0.10,
+    14.0 at 0.20, 9.4 at 0.40) to its printed digit (tests/data/iso76_f0.csv), and SKF's calculation
+    factor f0 = 14 of the 6205.
 
     Examples
     --------

@@ -89,9 +89,9 @@ def _write_table(directory, name, columns, rows):
 
 
 def _coefficient_tables(d):
-    """(name, columns, rows) of task1.csv, task2.csv, task3.csv from the results dict."""
+    """(name, columns, rows) of task1.csv ... task4.csv from the results dict (tasks that were run)."""
     out = []
-    for name in ("task1", "task2", "task3"):
+    for name in ("task1", "task2", "task3", "task4"):
         rows = d[name]
         if not rows:
             continue

@@ -265,10 +265,11 @@ def _coefficient_tables(d):
         _records_table(_TASK1_TITLE, d["task1"], _TASK1_COLUMNS),
         _records_table(_TASK2_TITLE, d["task2"], _TASK2_COLUMNS),
         _records_table(_TASK3_TITLE, d["task3"], _TASK3_COLUMNS),
+        _records_table(_TASK4_TITLE, d["task4"], _TASK4_COLUMNS),
     ]
     parts.append(
         "<p>Standard errors from the least-squares covariance with m − p degrees of freedom (p = 1 for "
-        "task 1, 2 for tasks 2 and 3); “n/a” where m = p. The intercepts T_F (n → 0) and T0 (P0 → 0) are "
+        "task 1, 2 for tasks 2 and 3, the number of fitted parameters for task 4); “n/a” where m = p. The intercepts T_F (n → 0) and T0 (P0 → 0) are "
         "extrapolations (spec 001 section 8.14).</p>"
     )
     return "".join(parts)
@@ -342,4 +343,18 @@ _TASK3_COLUMNS = (
         ".6e",
         _field("torque_speed_term_with_task2_f0_Nmm"),
     ),
+)
+_TASK4_TITLE = (
+    "Task 4: SKF four-term model T = k·M_rr + μ_sl·G_sl + M_seal (least squares, all rows of a tilt)"
+)
+_TASK4_COLUMNS = (
+    ("β [deg]", "g", _field("tilt_deg")),
+    ("fitted", "", _field("fitted")),
+    ("μ_sl ± s.e.", "", lambda r: _pm(r["mu_sl"], r["mu_sl_standard_error"], ".4f")),
+    ("k on M_rr ± s.e.", "", lambda r: _pm(r["rolling_scale"], r["rolling_scale_standard_error"], ".4f")),
+    ("μ_sl of the model", ".4f", _field("mu_sl_model")),
+    ("m", "d", _field("n_points")),
+    ("residual RMS [N·mm]", ".4e", _field("residual_rms_Nmm")),
+    ("RMS of the unfitted model [N·mm]", ".4e", _field("model_residual_rms_Nmm")),
+    ("mean T [N·mm]", ".6f", _field("mean_torque_Nmm")),
 )
