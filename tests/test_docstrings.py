@@ -158,3 +158,34 @@ def test_a_mismatch_is_detected():
 
     assert signature_parameters(g) == ["a"]
     assert variadic_parameters(g) == {"*rest", "**options"}
+
+
+# reStructuredText reads |name| as a substitution: in a rendered docstring it fails the -W docs build
+_SUBSTITUTION = re.compile(r"(?<![|`\w\\])\|[A-Za-z_][^|\n`]*\|(?![|`\w])")
+_LITERALS = re.compile(r"``.*?``|:math:`[^`]*`|`[^`]*`", re.DOTALL)
+
+
+def _rendered_docstrings():
+    for name in _public_modules():
+        module = importlib.import_module(name)
+        yield name, module.__doc__
+        for attr in getattr(module, "__all__", []):
+            obj = getattr(module, attr, None)
+            if getattr(obj, "__module__", None) != name:
+                continue
+            yield f"{name}.{attr}", getattr(obj, "__doc__", None)
+            if inspect.isclass(obj):
+                for member, value in vars(obj).items():
+                    if not member.startswith("_") and callable(value):
+                        yield f"{name}.{attr}.{member}", value.__doc__
+
+
+def test_rendered_docstrings_have_no_stray_substitutions():
+    found = [(where, m.group(0)) for where, doc in _rendered_docstrings() if doc
+             for m in _SUBSTITUTION.finditer(_LITERALS.sub("", doc))]
+    assert not found, f"|...| is a substitution in reST; write abs(...) or use :math: {found}"
+
+
+def test_stray_substitution_is_found():
+    assert _SUBSTITUTION.search(_LITERALS.sub("", "F_a = |F_z|; ``|x|`` and :math:`|y|` are fine"))
+    assert not _SUBSTITUTION.search(_LITERALS.sub("", "``|x|`` and :math:`|y|` and | table | cell"))

@@ -365,7 +365,7 @@ def combined_warnings(bearing, loads, ball_load_inner, ball_load_outer, contact_
     Returns
     -------
     list of str
-        Contact pressure above ISO 76's 4200 MPa, P0 (ISO 76, from F_r = hypot(F_x, F_y) and F_a = |F_z|;
+        Contact pressure above ISO 76's 4200 MPa, P0 (ISO 76, from F_r = hypot(F_x, F_y) and F_a = abs(F_z);
         a moment is not part of P0) above C0, a deflection comparable to the ball and a contact ellipse
         over the shoulder, at every loaded ball of the converged cases. The light-load criteria at speed
         are the analysis's own (:func:`bearinglab.quasistatic.combined.combined_analysis` warnings).

@@ -6,9 +6,9 @@ analyse          Session -> LabResult: per-row speed, torque, loads and P0; the 
                  cross-checks of section 6.5; the indicators I1-I7 of section 7.5
 LabResult        the results (SI), with the session they came from
 RowValues        the converted values of every row
-Task1, Task2, Task3, Indicators
-                 the fits of each task with their cross-checks, and I1-I7
-Task4            the fit of the SKF four-term model (sessions with an [skf] table)
+Task1, Task2, Task3, Task4, Indicators
+                 the fits of each task with their cross-checks (task 4: the SKF four-term model,
+                 sessions with an [skf] table), and I1-I7
 
 Grouping. T4 rows are grouped by (tilt, speed-column label): one task-1 and one task-3 fit per
 group, at the column speed = the mean n of its rows (section 6.1). T5 rows are grouped by (mass,
