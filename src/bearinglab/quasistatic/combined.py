@@ -83,13 +83,16 @@ STIFFNESS_AT = ("operating", "free")
 
 # Defaults of the ring Newton (belong in bearinglab._solve, which this module does not own yet)
 TOL = 1e-12  # relative residual |F - F(u)| / max(|F|, sum of ball loads), moments divided by d_m/2
-MAX_ITER = 60  # ring Newton iterations per case (per continuation step at speed)
+MAX_ITER = 100  # ring Newton iterations per case (per continuation step at speed)
 _N_CHEB = 16  # Chebyshev nodes in cos(alpha) of the Hertz interpolants (analytic on [0, 1]; ~1e-13)
 _BALL_TOL = 1e-14  # ball Newton: |step| / D
 _BALL_MAX_ITER = 40
 _LINE_SEARCH = 8  # step cuts (by 4) of the ring Newton line search
 _LAM_MAX = 1e4  # Levenberg-Marquardt damping beyond which a case has failed
-_CONTINUATION = (1, 4, 16)  # equal steps in omega^2 tried for a case that fails at the full speed
+_CONTINUATION = (1, 4, 16)
+_EPS = np.finfo(float).eps
+_RESOLVABLE = 1e-9  # issue 11: every returned case in equilibrium to 1e-9 relative, rounding or not
+_NOISE = 4.0  # a residual within this many rounding floors (see _measure) is converged  # equal steps in omega^2 tried for a case that fails at the full speed
 
 
 # --------------------------------------------------------------------------- geometry
@@ -288,7 +291,7 @@ def _rest_balls(geo, ga, gr):
     h[..., 1, 1] = dq * c * c - q_a / rho * c * s + q / rho * s * s
     alpha = np.arctan2(ga, gr)
     return {"pa": q * s, "pr": q * c, "h": h, "qi": q, "qo": q, "ai": alpha, "ao": alpha,
-            "ci": c, "co": c, "mg": np.zeros_like(q), "fc": np.zeros_like(q)}
+            "ci": c, "co": c, "mg": np.zeros_like(q), "fc": np.zeros_like(q), "noise": dq * _EPS * rho}
 
 
 # --------------------------------------------------------------------------- balls at speed
@@ -353,7 +356,8 @@ def _ball_state(geo, x, ga, gr, w2, deriv=True):
     pa = qi * si + m * lam_i * ci  # reaction of the ball on the inner ring is -(pa, pr)
     pr = qi * ci - m * lam_i * si
     out = {"b": b, "pa": pa, "pr": pr, "qi": qi, "qo": qo, "ai": np.arctan2(ia, ir), "ao": np.arctan2(ea, er),
-           "ci": ci, "co": co, "mg": mg, "fc": fc, "di": di, "do": do}
+           "ci": ci, "co": co, "mg": mg, "fc": fc, "di": di, "do": do,
+           "noise": 1.5 * ki * np.sqrt(dip) * _EPS * rho_i}
     if not deriv:
         return out
     qi_a, qo_a = -qi * si * dli, -qo * so * dlo
@@ -406,8 +410,14 @@ def _speed_balls(geo, ga, gr, w2, x0):
 
     Batched Newton on the 2 x 2 ball systems with step halving that keeps delta_o > 0; the ring stiffness
     per ball is the Schur complement H = p_g - p_x b_x^-1 b_g (implicit function theorem).
-    Returns the ball dict (with ``x``, ``h`` and ``ok``).
+    Returns the ball dict (with ``x``, ``h`` and ``ok``). A trial ring position can put a ball where its
+    kinematics are singular (inf or NaN): such a ball is not ``ok``, and the ring line search rejects it.
     """
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        return _speed_balls_newton(geo, ga, gr, w2, x0)
+
+
+def _speed_balls_newton(geo, ga, gr, w2, x0):
     x = x0.copy()
     active = np.ones(ga.shape, dtype=bool)
     for _ in range(_BALL_MAX_ITER):
@@ -482,13 +492,19 @@ def _scaled(geo, vec):
 
 
 def _measure(geo, loads, force, balls):
-    """Residual norm |F - F(u)| (moments divided by d_m/2) [N] and the same relative to
-    max(|F|, sum of the ball reactions) [-]."""
+    """Residual norm |F - F(u)| (moments divided by d_m/2) [N], the same relative to
+    max(|F|, sum of the ball reactions) [-], and the relative residual rounding alone leaves [-].
+
+    The floor: a ball's deflection rho - A is a difference of two lengths of order A, so Q carries a
+    rounding error of about dQ/d(delta) eps rho; under very light loads (deflections of a few nm) this
+    exceeds the default tolerance, and no iteration can do better.
+    """
     res = np.linalg.norm(_scaled(geo, loads - force), axis=-1)
     total = np.sum(np.hypot(balls["pa"], balls["pr"]), axis=-1)
     scale = np.maximum(np.linalg.norm(_scaled(geo, loads), axis=-1), total)
+    noise = _NOISE * np.sum(balls["noise"], axis=-1)
     with np.errstate(invalid="ignore", divide="ignore"):
-        return res, np.where(scale > 0, res / scale, res)
+        return res, np.where(scale > 0, res / scale, res), np.minimum(np.where(scale > 0, noise / scale, 0.0), _RESOLVABLE)
 
 
 def _thrust_offset(geo, per_ball, kn0):
@@ -546,8 +562,8 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter):
     it = np.zeros(n, dtype=int)
     lam = np.zeros(n)
     force, stiff, balls = _evaluate(geo, u, w2, x0)
-    norm, rel = _measure(geo, loads, force, balls)
-    done = (rel <= tol) & np.all(balls["ok"], axis=1)
+    norm, rel, floor = _measure(geo, loads, force, balls)
+    done = (rel <= np.maximum(tol, floor)) & np.all(balls["ok"], axis=1)
     x = balls.get("x")
     for _ in range(max_iter):
         act = np.flatnonzero(~done & (it < max_iter) & (lam <= _LAM_MAX))
@@ -565,10 +581,12 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter):
             sel = act[pending]
             trial = u[sel] + t[pending, None] * du[pending]
             f_t, k_t, b_t = _evaluate(geo, trial, w2[sel], None if x is None else x[sel])
-            n_t, r_t = _measure(geo, loads[sel], f_t, b_t)
-            good = ((n_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | (r_t <= tol)) & np.all(b_t["ok"], axis=1)
+            n_t, r_t, fl_t = _measure(geo, loads[sel], f_t, b_t)
+            conv_t = r_t <= np.maximum(tol, fl_t)
+            good = ((n_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | conv_t) & np.all(b_t["ok"], axis=1)
             g = sel[good]
             u[g], force[g], stiff[g], norm[g], rel[g] = trial[good], f_t[good], k_t[good], n_t[good], r_t[good]
+            floor[g] = fl_t[good]
             if x is not None:
                 x[g] = b_t["x"][good]
             pending = pending[~good]
@@ -576,10 +594,12 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter):
                 break
             t[pending] *= 0.25
             full[pending] = False
-        lam[act] = np.where(full, 0.1 * lam[act], np.maximum(10.0 * lam[act], 1e-6))
+        # a step the line search had to shorten keeps its damping: raising it there starves the soft
+        # directions of a ring near a mechanism and the Newton crawls (issue 11, ANGULAR under -230, 83, 1/64 N)
+        lam[act] = np.where(full, 0.1 * lam[act], lam[act])
         lam[act[pending]] = np.maximum(100.0 * lam[act[pending]], 1e-3)  # no decrease at all
         lam[lam < 1e-12] = 0.0
-        done = rel <= tol  # accepted iterates have every ball converged
+        done = rel <= np.maximum(tol, floor)  # accepted iterates have every ball converged
     return u, done, it, x
 
 
@@ -658,11 +678,11 @@ def _outputs(geo, loads, w, u, ok, it):
                                    "contact_angle_outer", "max_pressure_inner", "max_pressure_outer",
                                    "centrifugal_force", "gyroscopic_moment")}
     out.update(displacement=np.where(ok[:, None], u, np.nan), stiffness=np.full((n, 5, 5), np.nan),
-               residual=np.full(n, np.nan), max_ball_load=np.full(n, np.nan))
+               residual=np.full(n, np.nan), floor=np.zeros(n), max_ball_load=np.full(n, np.nan))
     sel = np.flatnonzero(ok)
     if sel.size:
         force, stiff, balls = _evaluate(geo, u[sel], w[sel] ** 2)
-        out["residual"][sel] = _measure(geo, loads[sel], force, balls)[1]
+        out["residual"][sel], out["floor"][sel] = _measure(geo, loads[sel], force, balls)[1:]
         out["stiffness"][sel] = stiff
         qi, qo = balls["qi"], balls["qo"]
         vals = {"ball_load_inner": qi, "ball_load_outer": qo, "contact_angle_inner": balls["ai"],
@@ -799,27 +819,78 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     max_iter = int(check_integer("max_iter", max_iter, 1))
     geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
                     reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, bearing_type)
-    u, ok, it = _solve(geo, f, w**2, tol, max_iter)
+    u, ok, it = np.full(f.shape, np.nan), np.zeros(len(f), dtype=bool), np.zeros(len(f), dtype=int)
+    possible = np.flatnonzero(~_impossible(geo, f))
+    u[possible], ok[possible], it[possible] = _solve(geo, f[possible], w[possible] ** 2, tol, max_iter)
     out = _outputs(geo, f, w, u, ok, it)
-    ok &= out["residual"] <= tol
-    if on_failure == "raise" and not ok.all():
-        k = int(np.flatnonzero(~ok)[0])
-        force, _, balls = _evaluate(geo, u[k:k + 1], w[k:k + 1] ** 2, deriv=False)
-        raise ConvergenceError("combined.load_distribution", iterations=int(it[k]),
-                               residual=_measure(geo, f[k:k + 1], force, balls)[1][0],
-                               estimate=u[k], reason=f"loads {f[k].tolist()} at {w[k] / RPM:g} rpm "
-                                                     f"({int((~ok).sum())} of {ok.size} cases failed)")
+    ok &= out["residual"] <= np.maximum(tol, out.pop("floor"))
+    if not ok.all():
+        failures = _failures(geo, f, w, u, ok)
+        if on_failure == "raise":
+            k, (reason, physical) = next(iter(failures.items()))
+            force, _, balls = _evaluate(geo, np.nan_to_num(u[k:k + 1]), w[k:k + 1] ** 2, deriv=False)
+            raise ConvergenceError("combined.load_distribution", iterations=int(it[k]),
+                                   residual=_measure(geo, f[k:k + 1], force, balls)[1][0], estimate=u[k],
+                                   physical=physical,
+                                   reason=f"loads {f[k].tolist()} at {w[k] / RPM:g} rpm: {reason} "
+                                          f"({int((~ok).sum())} of {ok.size} cases failed)")
     for key in out:
         out[key][~ok] = np.nan
     notes = _notes(geo, f, w, out, ok)
-    if on_failure == "flag" and not ok.all():
-        notes += (f"{int((~ok).sum())} of {ok.size} cases did not converge (NaN, converged False)",)
+    if not ok.all():
+        notes += _failure_notes(failures)
     z = geo.z
     shaped = {k: v.reshape(shape + v.shape[1:])[()] for k, v in out.items()}
     return LoadDistribution(loads=f.reshape(shape + (5,)), shaft_speed=w.reshape(shape)[()],
                             azimuth=geo.psi, converged=ok.reshape(shape)[()], iterations=it.reshape(shape)[()],
                             warnings=notes, **{k: shaped[k] for k in shaped if k in LoadDistribution._fields
                                                and (k != "azimuth" or z)})
+
+
+def _impossible(geo, loads):
+    """Cases without a physical solution: a negative thrust on a single angular-contact bearing."""
+    return (loads[:, 2] < 0) if geo.kind == "angular" else np.zeros(len(loads), dtype=bool)
+
+
+def _failures(geo, loads, w, u, ok):
+    """{case: (reason, physical)} for every failed case, in case order, judged at the last rest iterate."""
+    bad = np.flatnonzero(~ok)
+    imp = _impossible(geo, loads[bad])
+    solved = bad[~imp & np.all(np.isfinite(u[bad]), axis=1)]
+    loaded, inv_cond, floor = (np.zeros(len(loads)) for _ in range(3))
+    if solved.size:
+        force, stiff, balls = _evaluate(geo, u[solved], np.zeros(solved.size))
+        loaded[solved] = np.sum(balls["qi"] > 0, axis=1)
+        sc = np.array([1.0, 1.0, 1.0, 2.0 / geo.dm, 2.0 / geo.dm])
+        sv = np.linalg.svd(stiff * sc[:, None] * sc[None, :], compute_uv=False)
+        inv_cond[solved] = sv[:, -1] / np.maximum(sv[:, 0], 1e-300)
+        floor[solved] = _measure(geo, loads[solved], force, balls)[2]
+    out = {}
+    for k, impossible in zip(bad, imp, strict=True):
+        if impossible:
+            out[k] = (f"F_z = {loads[k, 2]:.6g} N < 0 on a single angular-contact bearing loads the balls "
+                      "against its low shoulder: there is no equilibrium (turn the bearing round, or mount "
+                      "it in a set)", True)
+        elif floor[k] >= _RESOLVABLE:
+            out[k] = ("loads too light to resolve: ball deflections are so small against the groove distance "
+                      f"that rounding alone leaves a relative residual above {_RESOLVABLE:g}", False)
+        elif k in solved and (loaded[k] <= 3 or inv_cond[k] < 1e-4):
+            out[k] = (f"{int(loaded[k])} of {geo.z} balls in contact and a nearly singular stiffness: these "
+                      "loads move the inner ring through its clearance almost as a mechanism, which the "
+                      "bearing alone hardly resists (add thrust or preload, or solve the bearing in a set)",
+                      False)
+        else:
+            out[k] = ("the ring Newton iteration stalled", False)
+    return out
+
+
+def _failure_notes(failures):
+    """One warning per kind of failure, with its count and first case."""
+    kinds = {}
+    for k, (reason, physical) in failures.items():
+        kinds.setdefault(physical or reason, []).append(k)
+    return tuple(f"{len(ks)} case(s) not converged (NaN, converged False; first: case {ks[0]}): "
+                 f"{failures[ks[0]][0]}" for ks in kinds.values())
 
 
 def _bearing_args(bearing, reduced_modulus=None):
