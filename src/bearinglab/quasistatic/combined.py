@@ -199,12 +199,14 @@ def _tables(d, dm, fi, fo, ep, a0, stiffness_at):
     return [_cheb.chebfit(x, v, _N_CHEB - 1) for v in exact((x + 1.0) / 2.0)]
 
 
-def _hertz_k(coef, c):
-    """K and d ln K / d cos(alpha) from a series (a constant series has zero slope)."""
+def _hertz_k(coef, c, slope=None):
+    """K and d ln K / d cos(alpha) from a series (a constant series has zero slope); ``slope`` is the
+    derivative series (:func:`numpy.polynomial.chebyshev.chebder`), precomputed per bearing."""
     x = 2.0 * c - 1.0
     if coef.size == 1:
         return np.full_like(c, math.exp(coef[0])), np.zeros_like(c)
-    return np.exp(_cheb.chebval(x, coef)), 2.0 * _cheb.chebval(x, _cheb.chebder(coef))
+    slope = _cheb.chebder(coef) if slope is None else slope
+    return np.exp(_cheb.chebval(x, coef)), 2.0 * _cheb.chebval(x, slope)
 
 
 # --------------------------------------------------------------------------- the bearing
@@ -231,6 +233,7 @@ class _Geometry(NamedTuple):
     control: str
     kind: str
     stiffness_at: str
+    slopes: tuple = (None, None)  # chebder of tables[0], tables[1] (the ball Newton evaluates them often)
 
 
 def _geometry(n_balls, d, dm, fi, fo, a0, ep, density, phi0, stiffness_at, control, kind, *, tables=True):
@@ -262,7 +265,8 @@ def _geometry(n_balls, d, dm, fi, fo, a0, ep, density, phi0, stiffness_at, contr
         tab = _tables(d, dm, fi, fo, ep_f, a0, stiffness_at)
     return _Geometry(z, d, dm, float(fi), float(fo), a0, ep_f, mass, inertia, big_a, big_a * math.cos(a0),
                      (fi - 0.5) * d, (fo - 0.5) * d, psi, ja, jr, jj, tab, RACEWAY_CONTROLS[control], control,
-                     kind, stiffness_at)
+                     kind, stiffness_at, tuple(_cheb.chebder(t) if t.size > 1 else None for t in tab[:2])
+                     if tab is not None else (None, None))
 
 
 # --------------------------------------------------------------------------- balls at rest
@@ -274,8 +278,8 @@ def _rest_balls(geo, ga, gr):
     """
     rho = np.hypot(ga, gr)
     s, c = ga / rho, gr / rho
-    ki, dli = _hertz_k(geo.tables[0], c)
-    ko, dlo = _hertz_k(geo.tables[1], c)
+    ki, dli = _hertz_k(geo.tables[0], c, geo.slopes[0])
+    ko, dlo = _hertz_k(geo.tables[1], c, geo.slopes[1])
     wi, wo = ki ** (-2.0 / 3.0), ko ** (-2.0 / 3.0)
     kn = (wi + wo) ** -1.5
     dlkn = (wi * dli + wo * dlo) / (wi + wo)  # d ln K_n / d cos(alpha)
@@ -341,8 +345,8 @@ def _ball_state(geo, x, ga, gr, w2, deriv=True):
     so, co = ea / rho_o, er / rho_o
     si, ci = ia / rho_i, ir / rho_i
     di, do = rho_i - geo.ri, rho_o - geo.ro
-    ki, dli = _hertz_k(geo.tables[0], ci)
-    ko, dlo = _hertz_k(geo.tables[1], co)
+    ki, dli = _hertz_k(geo.tables[0], ci, geo.slopes[0])
+    ko, dlo = _hertz_k(geo.tables[1], co, geo.slopes[1])
     dip, dop = np.maximum(di, 0.0), np.maximum(do, 0.0)
     qi, qo = ki * dip**1.5, ko * dop**1.5
     lam_i, lam_o = geo.lam
@@ -367,18 +371,21 @@ def _ball_state(geo, x, ga, gr, w2, deriv=True):
     b_p = [[qi_a * ni[k] + qi * ti[k] + mi * v[k] - m * lam_i * ni[k] + (fc_i if k else 0.0),
             -qo_a * no[k] - qo * to[k] + mo * v[k] + m * lam_o * no[k] + (fc_o if k else 0.0),
             qi_d * ni[k], -qo_d * no[k]] for k in range(2)]
-    p_p = [[qi_a * ni[k] + qi * ti[k] + lam_i * (mi * ti[k] - m * ni[k]), lam_i * mo * ti[k], qi_d * ni[k], 0.0]
-           for k in range(2)]
     # chain rule: d(alpha_i, alpha_o, delta_i, delta_o) / d x and / d g
     dx = [[-ti[j] / rho_i for j in range(2)], [to[j] / rho_o for j in range(2)], [-ni[j] for j in range(2)],
           [no[j] for j in range(2)]]
-    dg = [[ti[j] / rho_i for j in range(2)], [0.0, 0.0], [ni[j] for j in range(2)], [0.0, 0.0]]
 
     def chain(parts, dvar):
         return np.stack([np.stack([sum(parts[k][v] * dvar[v][j] for v in range(4)) for j in range(2)], axis=-1)
                          for k in range(2)], axis=-2)
 
-    out.update(b_x=chain(b_p, dx), b_g=chain(b_p, dg), p_x=chain(p_p, dx), p_g=chain(p_p, dg))
+    out["b_x"] = chain(b_p, dx)
+    if deriv == "x":  # the ball Newton needs no more
+        return out
+    p_p = [[qi_a * ni[k] + qi * ti[k] + lam_i * (mi * ti[k] - m * ni[k]), lam_i * mo * ti[k], qi_d * ni[k], 0.0]
+           for k in range(2)]
+    dg = [[ti[j] / rho_i for j in range(2)], [0.0, 0.0], [ni[j] for j in range(2)], [0.0, 0.0]]
+    out.update(b_g=chain(b_p, dg), p_x=chain(p_p, dx), p_g=chain(p_p, dg))
     return out
 
 
@@ -418,26 +425,29 @@ def _speed_balls(geo, ga, gr, w2, x0):
 
 
 def _speed_balls_newton(geo, ga, gr, w2, x0):
-    x = x0.copy()
-    active = np.ones(ga.shape, dtype=bool)
+    # the balls still iterating, flattened: converged balls drop out of the work (each ball is independent)
+    x = x0.reshape(-1, 2).copy()
+    gaf, grf, w2f = ga.ravel(), gr.ravel(), np.broadcast_to(w2, ga.shape).ravel()
+    act = np.arange(gaf.size)
     for _ in range(_BALL_MAX_ITER):
-        st = _ball_state(geo, x, ga, gr, w2)
+        xa = x[act]
+        st = _ball_state(geo, xa, gaf[act], grf[act], w2f[act], deriv="x")
         step = -_solve2(st["b_x"], st["b"])
-        step[~active] = 0.0
-        bad = ~np.all(np.isfinite(step), axis=-1)
-        step[bad] = 0.0
-        t = np.ones(ga.shape)
+        step[~np.all(np.isfinite(step), axis=-1)] = 0.0
+        t = np.ones(act.size)
         for _h in range(20):  # keep the ball on the outer raceway
-            trial = x + t[..., None] * step
-            lost = np.hypot(trial[..., 0], trial[..., 1]) <= geo.ro
+            trial = xa + t[:, None] * step
+            lost = np.hypot(trial[:, 0], trial[:, 1]) <= geo.ro
             if not lost.any():
                 break
             t = np.where(lost, 0.5 * t, t)
-        x = x + t[..., None] * step
-        small = np.max(np.abs(step), axis=-1) <= _BALL_TOL * geo.d
-        active &= ~small
-        if not active.any():
+        x[act] = xa + t[:, None] * step
+        act = act[np.max(np.abs(step), axis=-1) > _BALL_TOL * geo.d]
+        if act.size == 0:
             break
+    active = np.zeros(gaf.size, dtype=bool)
+    active[act] = True
+    active, x = active.reshape(ga.shape), x.reshape(ga.shape + (2,))
     st = _ball_state(geo, x, ga, gr, w2)
     h = st["p_g"] - st["p_x"] @ _solve2(st["b_x"], st["b_g"])
     fs = np.maximum(np.maximum(st["qo"], st["qi"]), 1e-300)
