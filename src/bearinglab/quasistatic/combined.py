@@ -449,9 +449,10 @@ def _speed_balls_newton(geo, ga, gr, w2, x0):
     active[act] = True
     active, x = active.reshape(ga.shape), x.reshape(ga.shape + (2,))
     st = _ball_state(geo, x, ga, gr, w2)
-    h = st["p_g"] - st["p_x"] @ _solve2(st["b_x"], st["b_g"])
+    dxdg = -_solve2(st["b_x"], st["b_g"])  # d x / d g of every ball (implicit function theorem)
+    h = st["p_g"] + st["p_x"] @ dxdg
     fs = np.maximum(np.maximum(st["qo"], st["qi"]), 1e-300)
-    st.update(x=x, h=h, ok=~active & np.all(np.abs(st["b"]) <= 1e-9 * fs[..., None], axis=-1))
+    st.update(x=x, h=h, dxdg=dxdg, ok=~active & np.all(np.abs(st["b"]) <= 1e-9 * fs[..., None], axis=-1))
     return st
 
 
@@ -480,19 +481,19 @@ def _evaluate(geo, u, w2, x=None, deriv=True):
 
 def _merge(geo, ga, gr, w2, moving, x):
     """Ball states of a batch with some cases at rest and some at speed."""
-    rest = _rest_balls(geo, ga, gr)
-    rest["ok"] = np.ones(ga.shape, dtype=bool)
     mv = np.flatnonzero(moving)
     x0 = _ball_start(geo, ga[mv], gr[mv], w2[mv, None]) if x is None else x[mv]
     spd = _speed_balls(geo, ga[mv], gr[mv], w2[mv, None], x0)
+    if mv.size == len(ga):
+        return spd
+    rest = _rest_balls(geo, ga, gr)
+    rest["ok"] = np.ones(ga.shape, dtype=bool)
+    rest["x"], rest["dxdg"] = np.zeros(ga.shape + (2,)), np.zeros(ga.shape + (2, 2))
     out = {}
     for key, val in rest.items():
         merged = np.array(val, dtype=float if key != "ok" else bool, copy=True)
         merged[mv] = spd[key]
         out[key] = merged
-    xs = np.zeros(ga.shape + (2,))
-    xs[mv] = spd["x"]
-    out["x"] = xs
     return out
 
 
@@ -561,6 +562,15 @@ def _step(geo, stiff, residual, lam):
     return np.linalg.solve(ks, (residual * sc)[:, :, None])[:, :, 0] * sc
 
 
+def _predict(geo, x, dxdg, du):
+    """Ball centres at a trial ring position, to first order from the accepted ones (dx/dg from the ball
+    equations); a ball the prediction would lift off its outer raceway starts where it was."""
+    dg = np.stack([du @ geo.ja.T, du @ geo.jr.T], axis=-1)
+    xp = x + np.einsum("nzij,nzj->nzi", dxdg, dg)
+    keep = (np.hypot(xp[..., 0], xp[..., 1]) > geo.ro) & np.all(np.isfinite(xp), axis=-1)
+    return np.where(keep[..., None], xp, x)
+
+
 def _newton(geo, loads, w2, u0, x0, tol, max_iter):
     """Damped Newton (Levenberg-Marquardt) on the ring equilibrium, all cases together.
 
@@ -574,7 +584,7 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter):
     force, stiff, balls = _evaluate(geo, u, w2, x0)
     norm, rel, floor = _measure(geo, loads, force, balls)
     done = (rel <= np.maximum(tol, floor)) & np.all(balls["ok"], axis=1)
-    x = balls.get("x")
+    x, dxdg = balls.get("x"), balls.get("dxdg")
     for _ in range(max_iter):
         act = np.flatnonzero(~done & (it < max_iter) & (lam <= _LAM_MAX))
         if act.size == 0:
@@ -590,7 +600,8 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter):
         for _ls in range(_LINE_SEARCH):
             sel = act[pending]
             trial = u[sel] + t[pending, None] * du[pending]
-            f_t, k_t, b_t = _evaluate(geo, trial, w2[sel], None if x is None else x[sel])
+            f_t, k_t, b_t = _evaluate(geo, trial, w2[sel], None if x is None else
+                                      _predict(geo, x[sel], dxdg[sel], trial - u[sel]))
             n_t, r_t, fl_t = _measure(geo, loads[sel], f_t, b_t)
             conv_t = r_t <= np.maximum(tol, fl_t)
             good = ((n_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | conv_t) & np.all(b_t["ok"], axis=1)
@@ -598,7 +609,7 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter):
             u[g], force[g], stiff[g], norm[g], rel[g] = trial[good], f_t[good], k_t[good], n_t[good], r_t[good]
             floor[g] = fl_t[good]
             if x is not None:
-                x[g] = b_t["x"][good]
+                x[g], dxdg[g] = b_t["x"][good], b_t["dxdg"][good]
             pending = pending[~good]
             if pending.size == 0:
                 break
