@@ -758,13 +758,16 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     raceway_control : {"outer", "inner"}, optional
         Which raceway resists the gyroscopic moment (spec 004, lambda_i, lambda_o).
     bearing_type : {"radial", "angular"}, optional
-        Only changes the warnings: an angular-contact bearing warns when a ball is loaded at a negative
-        contact angle (against its low shoulder).
+        An angular-contact bearing warns when a ball is loaded at a negative contact angle (against its
+        low shoulder), and refuses a negative thrust F_z < 0 as physically impossible (``physical``
+        :class:`~bearinglab.errors.ConvergenceError`, or flagged).
     on_failure : {"raise", "flag"}, optional
         Raise :class:`~bearinglab.errors.ConvergenceError` if any case fails (default), or return NaN
         and ``converged`` False for it.
     tol : float, optional
-        Relative equilibrium residual below which a case is converged. [-]
+        Relative equilibrium residual below which a case is converged; under loads so light that rounding
+        of the ball deflections (rho - A, with rho ~ A) leaves more, four times that rounding floor, up
+        to 1e-9 (issue 11). [-]
     max_iter : int, optional
         Ring Newton iterations per case (and per continuation step).
 
@@ -775,7 +778,10 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     Raises
     ------
     ConvergenceError
-        With ``on_failure="raise"``, when a case does not converge.
+        With ``on_failure="raise"``, when a case does not converge or has no solution; its reason says
+        why (negative thrust on an angular-contact bearing, loads too light to resolve, a ring that moves
+        through its clearance almost as a mechanism, or a stalled iteration). With ``on_failure="flag"``
+        the same reasons are in ``warnings``.
 
     Notes
     -----
