@@ -424,3 +424,37 @@ def friction_coefficient(gyroscopic_moment, ball_load_outer, ball_diameter):
     warnings.warn("quasistatic.friction_coefficient is deprecated, use quasistatic.required_friction_coefficient",
                   DeprecationWarning, stacklevel=2)
     return required_friction_coefficient(gyroscopic_moment, ball_load_outer, ball_diameter)
+
+
+# --------------------------------------------------------------------------- for the combined-load model
+def _dynamics(si, ci, so, co, g, control, inertia, mass, dm):
+    """Centrifugal force and gyroscopic moment per omega^2 and their partials in (alpha_i, alpha_o).
+
+    Outer ring fixed: attitude (eq. 10), cage and spin speeds (eqs. 9, 13), F_c = m (d_m/2) omega_m^2
+    (eq. 8), M_g = J omega_R omega_m sin(beta) (eq. 12), signed with beta so that a ball loaded on the
+    other shoulder (negative angles) is the mirror image; :func:`bearinglab.quasistatic.ball_speeds`.
+    """
+    if control == "outer":  # tan beta = sin a_o / (cos a_o + D/d_m)
+        beta = np.arctan2(so, co + g)
+        b_i, b_o = 0.0, (1.0 + g * co) / (1.0 + 2.0 * g * co + g * g)
+    else:  # tan beta = sin a_i / (cos a_i - D/d_m)
+        beta = np.arctan2(si, ci - g)
+        b_i, b_o = (1.0 - g * ci) / (1.0 - 2.0 * g * ci + g * g), 0.0
+    sb, cb = np.sin(beta), np.cos(beta)
+    c_ob, s_ob = co * cb + so * sb, so * cb - co * sb  # cos, sin(alpha_o - beta)
+    c_ib, s_ib = ci * cb + si * sb, si * cb - ci * sb
+    p, r = (1.0 - g * ci) * c_ob, (1.0 + g * co) * c_ib
+    p_i, p_o = g * si * c_ob + (1.0 - g * ci) * s_ob * b_i, -(1.0 - g * ci) * s_ob * (1.0 - b_o)
+    r_i, r_o = -(1.0 + g * co) * s_ib * (1.0 - b_i), -g * so * c_ib + (1.0 + g * co) * s_ib * b_o
+    nn = (1.0 - g * ci) * (1.0 + g * co)
+    n_i, n_o = g * si * (1.0 + g * co), -(1.0 - g * ci) * g * so
+    den = p + r
+    cage, spin = p / den, nn / (g * den)
+    cage_i, cage_o = (p_i * r - p * r_i) / den**2, (p_o * r - p * r_o) / den**2
+    spin_i = (n_i * den - nn * (p_i + r_i)) / (g * den**2)
+    spin_o = (n_o * den - nn * (p_o + r_o)) / (g * den**2)
+    fc = mass * dm / 2.0 * cage**2
+    mg = inertia * spin * cage * sb
+    mg_i = inertia * (spin_i * cage * sb + spin * cage_i * sb + spin * cage * cb * b_i)
+    mg_o = inertia * (spin_o * cage * sb + spin * cage_o * sb + spin * cage * cb * b_o)
+    return fc, mass * dm * cage * cage_i, mass * dm * cage * cage_o, mg, mg_i, mg_o

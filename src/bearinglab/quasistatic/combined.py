@@ -55,7 +55,7 @@ from .. import geometry, hertz
 from .._validate import as_float, check_integer, check_nonnegative, check_positive
 from ..errors import ConvergenceError, InputError
 from ..units import RPM
-from .ball import FRICTION_WARNING_LIMIT, RACEWAY_CONTROLS
+from .ball import FRICTION_WARNING_LIMIT, RACEWAY_CONTROLS, _dynamics
 from .contact import contact_stiffness
 from .light_load import LightLoad, light_load, light_load_warnings
 
@@ -83,13 +83,16 @@ STIFFNESS_AT = ("operating", "free")
 
 # Defaults of the ring Newton (belong in bearinglab._solve, which this module does not own yet)
 TOL = 1e-12  # relative residual |F - F(u)| / max(|F|, sum of ball loads), moments divided by d_m/2
-MAX_ITER = 60  # ring Newton iterations per case (per continuation step at speed)
+MAX_ITER = 100  # ring Newton iterations per case (per continuation step at speed)
 _N_CHEB = 16  # Chebyshev nodes in cos(alpha) of the Hertz interpolants (analytic on [0, 1]; ~1e-13)
 _BALL_TOL = 1e-14  # ball Newton: |step| / D
 _BALL_MAX_ITER = 40
 _LINE_SEARCH = 8  # step cuts (by 4) of the ring Newton line search
 _LAM_MAX = 1e4  # Levenberg-Marquardt damping beyond which a case has failed
-_CONTINUATION = (1, 4, 16)  # equal steps in omega^2 tried for a case that fails at the full speed
+_CONTINUATION = (1, 4, 16)
+_EPS = np.finfo(float).eps
+_RESOLVABLE = 1e-9  # issue 11: every returned case in equilibrium to 1e-9 relative, rounding or not
+_NOISE = 4.0  # a residual within this many rounding floors (see _measure) is converged  # equal steps in omega^2 tried for a case that fails at the full speed
 
 
 # --------------------------------------------------------------------------- geometry
@@ -196,12 +199,14 @@ def _tables(d, dm, fi, fo, ep, a0, stiffness_at):
     return [_cheb.chebfit(x, v, _N_CHEB - 1) for v in exact((x + 1.0) / 2.0)]
 
 
-def _hertz_k(coef, c):
-    """K and d ln K / d cos(alpha) from a series (a constant series has zero slope)."""
+def _hertz_k(coef, c, slope=None):
+    """K and d ln K / d cos(alpha) from a series (a constant series has zero slope); ``slope`` is the
+    derivative series (:func:`numpy.polynomial.chebyshev.chebder`), precomputed per bearing."""
     x = 2.0 * c - 1.0
     if coef.size == 1:
         return np.full_like(c, math.exp(coef[0])), np.zeros_like(c)
-    return np.exp(_cheb.chebval(x, coef)), 2.0 * _cheb.chebval(x, _cheb.chebder(coef))
+    slope = _cheb.chebder(coef) if slope is None else slope
+    return np.exp(_cheb.chebval(x, coef)), 2.0 * _cheb.chebval(x, slope)
 
 
 # --------------------------------------------------------------------------- the bearing
@@ -228,6 +233,7 @@ class _Geometry(NamedTuple):
     control: str
     kind: str
     stiffness_at: str
+    slopes: tuple = (None, None)  # chebder of tables[0], tables[1] (the ball Newton evaluates them often)
 
 
 def _geometry(n_balls, d, dm, fi, fo, a0, ep, density, phi0, stiffness_at, control, kind, *, tables=True):
@@ -259,7 +265,8 @@ def _geometry(n_balls, d, dm, fi, fo, a0, ep, density, phi0, stiffness_at, contr
         tab = _tables(d, dm, fi, fo, ep_f, a0, stiffness_at)
     return _Geometry(z, d, dm, float(fi), float(fo), a0, ep_f, mass, inertia, big_a, big_a * math.cos(a0),
                      (fi - 0.5) * d, (fo - 0.5) * d, psi, ja, jr, jj, tab, RACEWAY_CONTROLS[control], control,
-                     kind, stiffness_at)
+                     kind, stiffness_at, tuple(_cheb.chebder(t) if t.size > 1 else None for t in tab[:2])
+                     if tab is not None else (None, None))
 
 
 # --------------------------------------------------------------------------- balls at rest
@@ -271,8 +278,8 @@ def _rest_balls(geo, ga, gr):
     """
     rho = np.hypot(ga, gr)
     s, c = ga / rho, gr / rho
-    ki, dli = _hertz_k(geo.tables[0], c)
-    ko, dlo = _hertz_k(geo.tables[1], c)
+    ki, dli = _hertz_k(geo.tables[0], c, geo.slopes[0])
+    ko, dlo = _hertz_k(geo.tables[1], c, geo.slopes[1])
     wi, wo = ki ** (-2.0 / 3.0), ko ** (-2.0 / 3.0)
     kn = (wi + wo) ** -1.5
     dlkn = (wi * dli + wo * dlo) / (wi + wo)  # d ln K_n / d cos(alpha)
@@ -288,43 +295,10 @@ def _rest_balls(geo, ga, gr):
     h[..., 1, 1] = dq * c * c - q_a / rho * c * s + q / rho * s * s
     alpha = np.arctan2(ga, gr)
     return {"pa": q * s, "pr": q * c, "h": h, "qi": q, "qo": q, "ai": alpha, "ao": alpha,
-            "ci": c, "co": c, "mg": np.zeros_like(q), "fc": np.zeros_like(q)}
+            "ci": c, "co": c, "mg": np.zeros_like(q), "fc": np.zeros_like(q), "noise": dq * _EPS * rho}
 
 
 # --------------------------------------------------------------------------- balls at speed
-def _dynamics(si, ci, so, co, g, control, inertia, mass, dm):
-    """Centrifugal force and gyroscopic moment per omega^2 and their partials in (alpha_i, alpha_o).
-
-    Outer ring fixed: attitude (eq. 10), cage and spin speeds (eqs. 9, 13), F_c = m (d_m/2) omega_m^2
-    (eq. 8), M_g = J omega_R omega_m sin(beta) (eq. 12), signed with beta so that a ball loaded on the
-    other shoulder (negative angles) is the mirror image; :func:`bearinglab.quasistatic.ball_speeds`.
-    """
-    if control == "outer":  # tan beta = sin a_o / (cos a_o + D/d_m)
-        beta = np.arctan2(so, co + g)
-        b_i, b_o = 0.0, (1.0 + g * co) / (1.0 + 2.0 * g * co + g * g)
-    else:  # tan beta = sin a_i / (cos a_i - D/d_m)
-        beta = np.arctan2(si, ci - g)
-        b_i, b_o = (1.0 - g * ci) / (1.0 - 2.0 * g * ci + g * g), 0.0
-    sb, cb = np.sin(beta), np.cos(beta)
-    c_ob, s_ob = co * cb + so * sb, so * cb - co * sb  # cos, sin(alpha_o - beta)
-    c_ib, s_ib = ci * cb + si * sb, si * cb - ci * sb
-    p, r = (1.0 - g * ci) * c_ob, (1.0 + g * co) * c_ib
-    p_i, p_o = g * si * c_ob + (1.0 - g * ci) * s_ob * b_i, -(1.0 - g * ci) * s_ob * (1.0 - b_o)
-    r_i, r_o = -(1.0 + g * co) * s_ib * (1.0 - b_i), -g * so * c_ib + (1.0 + g * co) * s_ib * b_o
-    nn = (1.0 - g * ci) * (1.0 + g * co)
-    n_i, n_o = g * si * (1.0 + g * co), -(1.0 - g * ci) * g * so
-    den = p + r
-    cage, spin = p / den, nn / (g * den)
-    cage_i, cage_o = (p_i * r - p * r_i) / den**2, (p_o * r - p * r_o) / den**2
-    spin_i = (n_i * den - nn * (p_i + r_i)) / (g * den**2)
-    spin_o = (n_o * den - nn * (p_o + r_o)) / (g * den**2)
-    fc = mass * dm / 2.0 * cage**2
-    mg = inertia * spin * cage * sb
-    mg_i = inertia * (spin_i * cage * sb + spin * cage_i * sb + spin * cage * cb * b_i)
-    mg_o = inertia * (spin_o * cage * sb + spin * cage_o * sb + spin * cage * cb * b_o)
-    return fc, mass * dm * cage * cage_i, mass * dm * cage * cage_o, mg, mg_i, mg_o
-
-
 def _ball_state(geo, x, ga, gr, w2, deriv=True):
     """Ball residual (eqs. 5-6), ring reaction and their partials for ball centres x = (axial, radial).
 
@@ -338,8 +312,8 @@ def _ball_state(geo, x, ga, gr, w2, deriv=True):
     so, co = ea / rho_o, er / rho_o
     si, ci = ia / rho_i, ir / rho_i
     di, do = rho_i - geo.ri, rho_o - geo.ro
-    ki, dli = _hertz_k(geo.tables[0], ci)
-    ko, dlo = _hertz_k(geo.tables[1], co)
+    ki, dli = _hertz_k(geo.tables[0], ci, geo.slopes[0])
+    ko, dlo = _hertz_k(geo.tables[1], co, geo.slopes[1])
     dip, dop = np.maximum(di, 0.0), np.maximum(do, 0.0)
     qi, qo = ki * dip**1.5, ko * dop**1.5
     lam_i, lam_o = geo.lam
@@ -353,7 +327,8 @@ def _ball_state(geo, x, ga, gr, w2, deriv=True):
     pa = qi * si + m * lam_i * ci  # reaction of the ball on the inner ring is -(pa, pr)
     pr = qi * ci - m * lam_i * si
     out = {"b": b, "pa": pa, "pr": pr, "qi": qi, "qo": qo, "ai": np.arctan2(ia, ir), "ao": np.arctan2(ea, er),
-           "ci": ci, "co": co, "mg": mg, "fc": fc, "di": di, "do": do}
+           "ci": ci, "co": co, "mg": mg, "fc": fc, "di": di, "do": do,
+           "noise": 1.5 * ki * np.sqrt(dip) * _EPS * rho_i}
     if not deriv:
         return out
     qi_a, qo_a = -qi * si * dli, -qo * so * dlo
@@ -363,18 +338,21 @@ def _ball_state(geo, x, ga, gr, w2, deriv=True):
     b_p = [[qi_a * ni[k] + qi * ti[k] + mi * v[k] - m * lam_i * ni[k] + (fc_i if k else 0.0),
             -qo_a * no[k] - qo * to[k] + mo * v[k] + m * lam_o * no[k] + (fc_o if k else 0.0),
             qi_d * ni[k], -qo_d * no[k]] for k in range(2)]
-    p_p = [[qi_a * ni[k] + qi * ti[k] + lam_i * (mi * ti[k] - m * ni[k]), lam_i * mo * ti[k], qi_d * ni[k], 0.0]
-           for k in range(2)]
     # chain rule: d(alpha_i, alpha_o, delta_i, delta_o) / d x and / d g
     dx = [[-ti[j] / rho_i for j in range(2)], [to[j] / rho_o for j in range(2)], [-ni[j] for j in range(2)],
           [no[j] for j in range(2)]]
-    dg = [[ti[j] / rho_i for j in range(2)], [0.0, 0.0], [ni[j] for j in range(2)], [0.0, 0.0]]
 
     def chain(parts, dvar):
         return np.stack([np.stack([sum(parts[k][v] * dvar[v][j] for v in range(4)) for j in range(2)], axis=-1)
                          for k in range(2)], axis=-2)
 
-    out.update(b_x=chain(b_p, dx), b_g=chain(b_p, dg), p_x=chain(p_p, dx), p_g=chain(p_p, dg))
+    out["b_x"] = chain(b_p, dx)
+    if deriv == "x":  # the ball Newton needs no more
+        return out
+    p_p = [[qi_a * ni[k] + qi * ti[k] + lam_i * (mi * ti[k] - m * ni[k]), lam_i * mo * ti[k], qi_d * ni[k], 0.0]
+           for k in range(2)]
+    dg = [[ti[j] / rho_i for j in range(2)], [0.0, 0.0], [ni[j] for j in range(2)], [0.0, 0.0]]
+    out.update(b_g=chain(b_p, dg), p_x=chain(p_p, dx), p_g=chain(p_p, dg))
     return out
 
 
@@ -406,32 +384,42 @@ def _speed_balls(geo, ga, gr, w2, x0):
 
     Batched Newton on the 2 x 2 ball systems with step halving that keeps delta_o > 0; the ring stiffness
     per ball is the Schur complement H = p_g - p_x b_x^-1 b_g (implicit function theorem).
-    Returns the ball dict (with ``x``, ``h`` and ``ok``).
+    Returns the ball dict (with ``x``, ``h`` and ``ok``). A trial ring position can put a ball where its
+    kinematics are singular (inf or NaN): such a ball is not ``ok``, and the ring line search rejects it.
     """
-    x = x0.copy()
-    active = np.ones(ga.shape, dtype=bool)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        return _speed_balls_newton(geo, ga, gr, w2, x0)
+
+
+def _speed_balls_newton(geo, ga, gr, w2, x0):
+    # the balls still iterating, flattened: converged balls drop out of the work (each ball is independent)
+    x = x0.reshape(-1, 2).copy()
+    gaf, grf, w2f = ga.ravel(), gr.ravel(), np.broadcast_to(w2, ga.shape).ravel()
+    act = np.arange(gaf.size)
     for _ in range(_BALL_MAX_ITER):
-        st = _ball_state(geo, x, ga, gr, w2)
+        xa = x[act]
+        st = _ball_state(geo, xa, gaf[act], grf[act], w2f[act], deriv="x")
         step = -_solve2(st["b_x"], st["b"])
-        step[~active] = 0.0
-        bad = ~np.all(np.isfinite(step), axis=-1)
-        step[bad] = 0.0
-        t = np.ones(ga.shape)
+        step[~np.all(np.isfinite(step), axis=-1)] = 0.0
+        t = np.ones(act.size)
         for _h in range(20):  # keep the ball on the outer raceway
-            trial = x + t[..., None] * step
-            lost = np.hypot(trial[..., 0], trial[..., 1]) <= geo.ro
+            trial = xa + t[:, None] * step
+            lost = np.hypot(trial[:, 0], trial[:, 1]) <= geo.ro
             if not lost.any():
                 break
             t = np.where(lost, 0.5 * t, t)
-        x = x + t[..., None] * step
-        small = np.max(np.abs(step), axis=-1) <= _BALL_TOL * geo.d
-        active &= ~small
-        if not active.any():
+        x[act] = xa + t[:, None] * step
+        act = act[np.max(np.abs(step), axis=-1) > _BALL_TOL * geo.d]
+        if act.size == 0:
             break
+    active = np.zeros(gaf.size, dtype=bool)
+    active[act] = True
+    active, x = active.reshape(ga.shape), x.reshape(ga.shape + (2,))
     st = _ball_state(geo, x, ga, gr, w2)
-    h = st["p_g"] - st["p_x"] @ _solve2(st["b_x"], st["b_g"])
+    dxdg = -_solve2(st["b_x"], st["b_g"])  # d x / d g of every ball (implicit function theorem)
+    h = st["p_g"] + st["p_x"] @ dxdg
     fs = np.maximum(np.maximum(st["qo"], st["qi"]), 1e-300)
-    st.update(x=x, h=h, ok=~active & np.all(np.abs(st["b"]) <= 1e-9 * fs[..., None], axis=-1))
+    st.update(x=x, h=h, dxdg=dxdg, ok=~active & np.all(np.abs(st["b"]) <= 1e-9 * fs[..., None], axis=-1))
     return st
 
 
@@ -460,19 +448,19 @@ def _evaluate(geo, u, w2, x=None, deriv=True):
 
 def _merge(geo, ga, gr, w2, moving, x):
     """Ball states of a batch with some cases at rest and some at speed."""
-    rest = _rest_balls(geo, ga, gr)
-    rest["ok"] = np.ones(ga.shape, dtype=bool)
     mv = np.flatnonzero(moving)
     x0 = _ball_start(geo, ga[mv], gr[mv], w2[mv, None]) if x is None else x[mv]
     spd = _speed_balls(geo, ga[mv], gr[mv], w2[mv, None], x0)
+    if mv.size == len(ga):
+        return spd
+    rest = _rest_balls(geo, ga, gr)
+    rest["ok"] = np.ones(ga.shape, dtype=bool)
+    rest["x"], rest["dxdg"] = np.zeros(ga.shape + (2,)), np.zeros(ga.shape + (2, 2))
     out = {}
     for key, val in rest.items():
         merged = np.array(val, dtype=float if key != "ok" else bool, copy=True)
         merged[mv] = spd[key]
         out[key] = merged
-    xs = np.zeros(ga.shape + (2,))
-    xs[mv] = spd["x"]
-    out["x"] = xs
     return out
 
 
@@ -482,13 +470,19 @@ def _scaled(geo, vec):
 
 
 def _measure(geo, loads, force, balls):
-    """Residual norm |F - F(u)| (moments divided by d_m/2) [N] and the same relative to
-    max(|F|, sum of the ball reactions) [-]."""
+    """Residual norm |F - F(u)| (moments divided by d_m/2) [N], the same relative to
+    max(|F|, sum of the ball reactions) [-], and the relative residual rounding alone leaves [-].
+
+    The floor: a ball's deflection rho - A is a difference of two lengths of order A, so Q carries a
+    rounding error of about dQ/d(delta) eps rho; under very light loads (deflections of a few nm) this
+    exceeds the default tolerance, and no iteration can do better.
+    """
     res = np.linalg.norm(_scaled(geo, loads - force), axis=-1)
     total = np.sum(np.hypot(balls["pa"], balls["pr"]), axis=-1)
     scale = np.maximum(np.linalg.norm(_scaled(geo, loads), axis=-1), total)
+    noise = _NOISE * np.sum(balls["noise"], axis=-1)
     with np.errstate(invalid="ignore", divide="ignore"):
-        return res, np.where(scale > 0, res / scale, res)
+        return res, np.where(scale > 0, res / scale, res), np.minimum(np.where(scale > 0, noise / scale, 0.0), _RESOLVABLE)
 
 
 def _thrust_offset(geo, per_ball, kn0):
@@ -535,6 +529,15 @@ def _step(geo, stiff, residual, lam):
     return np.linalg.solve(ks, (residual * sc)[:, :, None])[:, :, 0] * sc
 
 
+def _predict(geo, x, dxdg, du):
+    """Ball centres at a trial ring position, to first order from the accepted ones (dx/dg from the ball
+    equations); a ball the prediction would lift off its outer raceway starts where it was."""
+    dg = np.stack([du @ geo.ja.T, du @ geo.jr.T], axis=-1)
+    xp = x + np.einsum("nzij,nzj->nzi", dxdg, dg)
+    keep = (np.hypot(xp[..., 0], xp[..., 1]) > geo.ro) & np.all(np.isfinite(xp), axis=-1)
+    return np.where(keep[..., None], xp, x)
+
+
 def _newton(geo, loads, w2, u0, x0, tol, max_iter):
     """Damped Newton (Levenberg-Marquardt) on the ring equilibrium, all cases together.
 
@@ -546,9 +549,9 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter):
     it = np.zeros(n, dtype=int)
     lam = np.zeros(n)
     force, stiff, balls = _evaluate(geo, u, w2, x0)
-    norm, rel = _measure(geo, loads, force, balls)
-    done = (rel <= tol) & np.all(balls["ok"], axis=1)
-    x = balls.get("x")
+    norm, rel, floor = _measure(geo, loads, force, balls)
+    done = (rel <= np.maximum(tol, floor)) & np.all(balls["ok"], axis=1)
+    x, dxdg = balls.get("x"), balls.get("dxdg")
     for _ in range(max_iter):
         act = np.flatnonzero(~done & (it < max_iter) & (lam <= _LAM_MAX))
         if act.size == 0:
@@ -564,22 +567,27 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter):
         for _ls in range(_LINE_SEARCH):
             sel = act[pending]
             trial = u[sel] + t[pending, None] * du[pending]
-            f_t, k_t, b_t = _evaluate(geo, trial, w2[sel], None if x is None else x[sel])
-            n_t, r_t = _measure(geo, loads[sel], f_t, b_t)
-            good = ((n_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | (r_t <= tol)) & np.all(b_t["ok"], axis=1)
+            f_t, k_t, b_t = _evaluate(geo, trial, w2[sel], None if x is None else
+                                      _predict(geo, x[sel], dxdg[sel], trial - u[sel]))
+            n_t, r_t, fl_t = _measure(geo, loads[sel], f_t, b_t)
+            conv_t = r_t <= np.maximum(tol, fl_t)
+            good = ((n_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | conv_t) & np.all(b_t["ok"], axis=1)
             g = sel[good]
             u[g], force[g], stiff[g], norm[g], rel[g] = trial[good], f_t[good], k_t[good], n_t[good], r_t[good]
+            floor[g] = fl_t[good]
             if x is not None:
-                x[g] = b_t["x"][good]
+                x[g], dxdg[g] = b_t["x"][good], b_t["dxdg"][good]
             pending = pending[~good]
             if pending.size == 0:
                 break
             t[pending] *= 0.25
             full[pending] = False
-        lam[act] = np.where(full, 0.1 * lam[act], np.maximum(10.0 * lam[act], 1e-6))
+        # a step the line search had to shorten keeps its damping: raising it there starves the soft
+        # directions of a ring near a mechanism and the Newton crawls (issue 11, ANGULAR under -230, 83, 1/64 N)
+        lam[act] = np.where(full, 0.1 * lam[act], lam[act])
         lam[act[pending]] = np.maximum(100.0 * lam[act[pending]], 1e-3)  # no decrease at all
         lam[lam < 1e-12] = 0.0
-        done = rel <= tol  # accepted iterates have every ball converged
+        done = rel <= np.maximum(tol, floor)  # accepted iterates have every ball converged
     return u, done, it, x
 
 
@@ -658,11 +666,11 @@ def _outputs(geo, loads, w, u, ok, it):
                                    "contact_angle_outer", "max_pressure_inner", "max_pressure_outer",
                                    "centrifugal_force", "gyroscopic_moment")}
     out.update(displacement=np.where(ok[:, None], u, np.nan), stiffness=np.full((n, 5, 5), np.nan),
-               residual=np.full(n, np.nan), max_ball_load=np.full(n, np.nan))
+               residual=np.full(n, np.nan), floor=np.zeros(n), max_ball_load=np.full(n, np.nan))
     sel = np.flatnonzero(ok)
     if sel.size:
         force, stiff, balls = _evaluate(geo, u[sel], w[sel] ** 2)
-        out["residual"][sel] = _measure(geo, loads[sel], force, balls)[1]
+        out["residual"][sel], out["floor"][sel] = _measure(geo, loads[sel], force, balls)[1:]
         out["stiffness"][sel] = stiff
         qi, qo = balls["qi"], balls["qo"]
         vals = {"ball_load_inner": qi, "ball_load_outer": qo, "contact_angle_inner": balls["ai"],
@@ -750,13 +758,16 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     raceway_control : {"outer", "inner"}, optional
         Which raceway resists the gyroscopic moment (spec 004, lambda_i, lambda_o).
     bearing_type : {"radial", "angular"}, optional
-        Only changes the warnings: an angular-contact bearing warns when a ball is loaded at a negative
-        contact angle (against its low shoulder).
+        An angular-contact bearing warns when a ball is loaded at a negative contact angle (against its
+        low shoulder), and refuses a negative thrust F_z < 0 as physically impossible (``physical``
+        :class:`~bearinglab.errors.ConvergenceError`, or flagged).
     on_failure : {"raise", "flag"}, optional
         Raise :class:`~bearinglab.errors.ConvergenceError` if any case fails (default), or return NaN
         and ``converged`` False for it.
     tol : float, optional
-        Relative equilibrium residual below which a case is converged. [-]
+        Relative equilibrium residual below which a case is converged; under loads so light that rounding
+        of the ball deflections (rho - A, with rho ~ A) leaves more, four times that rounding floor, up
+        to 1e-9 (issue 11). [-]
     max_iter : int, optional
         Ring Newton iterations per case (and per continuation step).
 
@@ -767,7 +778,10 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     Raises
     ------
     ConvergenceError
-        With ``on_failure="raise"``, when a case does not converge.
+        With ``on_failure="raise"``, when a case does not converge or has no solution; its reason says
+        why (negative thrust on an angular-contact bearing, loads too light to resolve, a ring that moves
+        through its clearance almost as a mechanism, or a stalled iteration). With ``on_failure="flag"``
+        the same reasons are in ``warnings``.
 
     Notes
     -----
@@ -799,27 +813,78 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     max_iter = int(check_integer("max_iter", max_iter, 1))
     geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
                     reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, bearing_type)
-    u, ok, it = _solve(geo, f, w**2, tol, max_iter)
+    u, ok, it = np.full(f.shape, np.nan), np.zeros(len(f), dtype=bool), np.zeros(len(f), dtype=int)
+    possible = np.flatnonzero(~_impossible(geo, f))
+    u[possible], ok[possible], it[possible] = _solve(geo, f[possible], w[possible] ** 2, tol, max_iter)
     out = _outputs(geo, f, w, u, ok, it)
-    ok &= out["residual"] <= tol
-    if on_failure == "raise" and not ok.all():
-        k = int(np.flatnonzero(~ok)[0])
-        force, _, balls = _evaluate(geo, u[k:k + 1], w[k:k + 1] ** 2, deriv=False)
-        raise ConvergenceError("combined.load_distribution", iterations=int(it[k]),
-                               residual=_measure(geo, f[k:k + 1], force, balls)[1][0],
-                               estimate=u[k], reason=f"loads {f[k].tolist()} at {w[k] / RPM:g} rpm "
-                                                     f"({int((~ok).sum())} of {ok.size} cases failed)")
+    ok &= out["residual"] <= np.maximum(tol, out.pop("floor"))
+    if not ok.all():
+        failures = _failures(geo, f, w, u, ok)
+        if on_failure == "raise":
+            k, (reason, physical) = next(iter(failures.items()))
+            force, _, balls = _evaluate(geo, np.nan_to_num(u[k:k + 1]), w[k:k + 1] ** 2, deriv=False)
+            raise ConvergenceError("combined.load_distribution", iterations=int(it[k]),
+                                   residual=_measure(geo, f[k:k + 1], force, balls)[1][0], estimate=u[k],
+                                   physical=physical,
+                                   reason=f"loads {f[k].tolist()} at {w[k] / RPM:g} rpm: {reason} "
+                                          f"({int((~ok).sum())} of {ok.size} cases failed)")
     for key in out:
         out[key][~ok] = np.nan
     notes = _notes(geo, f, w, out, ok)
-    if on_failure == "flag" and not ok.all():
-        notes += (f"{int((~ok).sum())} of {ok.size} cases did not converge (NaN, converged False)",)
+    if not ok.all():
+        notes += _failure_notes(failures)
     z = geo.z
     shaped = {k: v.reshape(shape + v.shape[1:])[()] for k, v in out.items()}
     return LoadDistribution(loads=f.reshape(shape + (5,)), shaft_speed=w.reshape(shape)[()],
                             azimuth=geo.psi, converged=ok.reshape(shape)[()], iterations=it.reshape(shape)[()],
                             warnings=notes, **{k: shaped[k] for k in shaped if k in LoadDistribution._fields
                                                and (k != "azimuth" or z)})
+
+
+def _impossible(geo, loads):
+    """Cases without a physical solution: a negative thrust on a single angular-contact bearing."""
+    return (loads[:, 2] < 0) if geo.kind == "angular" else np.zeros(len(loads), dtype=bool)
+
+
+def _failures(geo, loads, w, u, ok):
+    """{case: (reason, physical)} for every failed case, in case order, judged at the last rest iterate."""
+    bad = np.flatnonzero(~ok)
+    imp = _impossible(geo, loads[bad])
+    solved = bad[~imp & np.all(np.isfinite(u[bad]), axis=1)]
+    loaded, inv_cond, floor = (np.zeros(len(loads)) for _ in range(3))
+    if solved.size:
+        force, stiff, balls = _evaluate(geo, u[solved], np.zeros(solved.size))
+        loaded[solved] = np.sum(balls["qi"] > 0, axis=1)
+        sc = np.array([1.0, 1.0, 1.0, 2.0 / geo.dm, 2.0 / geo.dm])
+        sv = np.linalg.svd(stiff * sc[:, None] * sc[None, :], compute_uv=False)
+        inv_cond[solved] = sv[:, -1] / np.maximum(sv[:, 0], 1e-300)
+        floor[solved] = _measure(geo, loads[solved], force, balls)[2]
+    out = {}
+    for k, impossible in zip(bad, imp, strict=True):
+        if impossible:
+            out[k] = ((f"F_z = {loads[k, 2]:.6g} N < 0 on a single angular-contact bearing loads the balls "
+                       "against its low shoulder: there is no equilibrium (turn the bearing round, or mount "
+                       "it in a set)"), True)
+        elif floor[k] >= _RESOLVABLE:
+            out[k] = (("loads too light to resolve: ball deflections are so small against the groove distance "
+                       f"that rounding alone leaves a relative residual above {_RESOLVABLE:g}"), False)
+        elif k in solved and (loaded[k] <= 3 or inv_cond[k] < 1e-4):
+            out[k] = ((f"{int(loaded[k])} of {geo.z} balls in contact and a nearly singular stiffness: these "
+                       "loads move the inner ring through its clearance almost as a mechanism, which the "
+                       "bearing alone hardly resists (add thrust or preload, or solve the bearing in a set)"),
+                      False)
+        else:
+            out[k] = ("the ring Newton iteration stalled", False)
+    return out
+
+
+def _failure_notes(failures):
+    """One warning per kind of failure, with its count and first case."""
+    kinds = {}
+    for k, (reason, physical) in failures.items():
+        kinds.setdefault(physical or reason, []).append(k)
+    return tuple(f"{len(ks)} case(s) not converged (NaN, converged False; first: case {ks[0]}): "
+                 f"{failures[ks[0]][0]}" for ks in kinds.values())
 
 
 def _bearing_args(bearing, reduced_modulus=None):

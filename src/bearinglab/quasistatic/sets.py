@@ -264,7 +264,7 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
         out = combined._outputs(geo, (ub * 0.0), np.full(len(flat), w), ub, ok, it)
         out["displacement"] = np.where(ok[:, None], ub, np.nan)
         notes += [f"bearing {j}: {m}" for m in combined._notes(geo, ub, np.full(len(flat), w), out, ok)]
-        per.append({k: v.reshape(shape + v.shape[1:]) for k, v in out.items() if k != "residual"})
+        per.append({k: v.reshape(shape + v.shape[1:]) for k, v in out.items() if k not in ("residual", "floor")})
     bad = ~ok
     u[bad], stiff[bad] = np.nan, np.nan
     bearing_loads = np.stack(parts, axis=1)
