@@ -58,7 +58,7 @@ def _functions(jit):
 
     @jit
     def gauss5(a, b):
-        """x with a x = b; a is a flat row-major 5 x 5 list; NaN if singular."""
+        """x with a x = b (tuples); a is flat row-major 5 x 5; NaN if singular."""
         m = [0.0] * 30
         for i in range(5):
             for j in range(5):
@@ -70,7 +70,7 @@ def _functions(jit):
                 if abs(m[6 * r + c]) > abs(m[6 * p + c]):
                     p = r
             if m[6 * p + c] == 0.0:
-                return [math.nan] * 5
+                return (math.nan, math.nan, math.nan, math.nan, math.nan)
             if p != c:
                 for k in range(6):
                     m[6 * c + k], m[6 * p + k] = m[6 * p + k], m[6 * c + k]
@@ -84,7 +84,7 @@ def _functions(jit):
             for k in range(r + 1, 5):
                 s -= m[6 * r + k] * x[k]
             x[r] = s / m[6 * r + r]
-        return x
+        return (x[0], x[1], x[2], x[3], x[4])
 
     @jit
     def evaluate(v, w2, fa, par, kti, dti, kto, dto):
@@ -138,39 +138,37 @@ def _functions(jit):
         m_hat = sign * inertia * spin * cage * sb / d  # M_g / (D omega^2), eq. (12)
         ax_t, rad_t = li * ci - le * ce, li * si - le * se
         m = w2 * m_hat
-        r = [(rho_i - (fi - 0.5) * d - di) / d, (rho_e - (fo - 0.5) * d - de) / d,
+        r = ((rho_i - (fi - 0.5) * d - di) / d, (rho_e - (fo - 0.5) * d - de) / d,
              (qi * si - qe * se + m * ax_t) / fs,  # eq. (5)
              (qi * ci - qe * ce - m * rad_t + w2 * fc_hat) / fs,  # eq. (6)
-             (qi * si + m * li * ci - fa / z) / fs]  # eq. (7) / Z
-        r_w2 = [0.0, 0.0, m_hat * ax_t / fs, (-m_hat * rad_t + fc_hat) / fs, m_hat * li * ci / fs]
+             (qi * si + m * li * ci - fa / z) / fs)  # eq. (7) / Z
+        r_w2 = (0.0, 0.0, m_hat * ax_t / fs, (-m_hat * rad_t + fc_hat) / fs, m_hat * li * ci / fs)
         # partials of the force balances in (alpha_i, alpha_e, delta_i, delta_e)
         m_i = w2 * sign * inertia * (spin_i * cage * sb + spin * cage_i * sb + spin * cage * cb * db_i) / d
         m_e = w2 * sign * inertia * (spin_e * cage * sb + spin * cage_e * sb + spin * cage * cb * db_e) / d
         fc_i, fc_e = w2 * mass_c * dm * cage * cage_i, w2 * mass_c * dm * cage * cage_e
         qi_a, qe_a = -qi * si * dlki, -qe * se * dlke
         qi_d, qe_d = 1.5 * ki * math.sqrt(dip), 1.5 * ke * math.sqrt(dep)
-        df = [qi_a * si + qi * ci + m_i * ax_t - m * li * si, -qe_a * se - qe * ce + m_e * ax_t + m * le * se,
-              qi_d * si, -qe_d * se,
-              qi_a * ci - qi * si - m_i * rad_t - m * li * ci + fc_i,
-              -qe_a * ce + qe * se - m_e * rad_t + m * le * ce + fc_e, qi_d * ci, -qe_d * ce,
-              qi_a * si + qi * ci + m_i * li * ci - m * li * si, m_e * li * ci, qi_d * si, 0.0]
+        # rows (alpha_i, alpha_e, delta_i, delta_e) of eqs. (5), (6), (7), times D / fs
+        sd = d / fs
+        a3, b3 = (qi_a * si + qi * ci + m_i * ax_t - m * li * si) * sd, (-qe_a * se - qe * ce + m_e * ax_t
+                                                                          + m * le * se) * sd
+        a4 = (qi_a * ci - qi * si - m_i * rad_t - m * li * ci + fc_i) * sd
+        b4 = (-qe_a * ce + qe * se - m_e * rad_t + m * le * ce + fc_e) * sd
+        a5, b5 = (qi_a * si + qi * ci + m_i * li * ci - m * li * si) * sd, m_e * li * ci * sd
         dai0, dai1, dai2 = -ci / rho_i, si / rho_i, ci / rho_i  # d alpha_i / d(x1, x2, delta_a)
         dae0, dae1 = ce / rho_e, -se / rho_e
-        jac = [-si, -ci, -1.0, 0.0, si, se, ce, 0.0, -1.0, 0.0] + [0.0] * 15
-        for k in range(3):
-            a_, b_, c_, e_ = df[4 * k] / fs, df[4 * k + 1] / fs, df[4 * k + 2] / fs, df[4 * k + 3] / fs
-            jac[10 + 5 * k] = (a_ * dai0 + b_ * dae0) * d
-            jac[11 + 5 * k] = (a_ * dai1 + b_ * dae1) * d
-            jac[12 + 5 * k] = c_ * d
-            jac[13 + 5 * k] = e_ * d
-            jac[14 + 5 * k] = a_ * dai2 * d
+        jac = (-si, -ci, -1.0, 0.0, si, se, ce, 0.0, -1.0, 0.0,
+               a3 * dai0 + b3 * dae0, a3 * dai1 + b3 * dae1, qi_d * si * sd, -qe_d * se * sd, a3 * dai2,
+               a4 * dai0 + b4 * dae0, a4 * dai1 + b4 * dae1, qi_d * ci * sd, -qe_d * ce * sd, a4 * dai2,
+               a5 * dai0 + b5 * dae0, a5 * dai1 + b5 * dae1, qi_d * si * sd, 0.0, a5 * dai2)
         return r, jac, r_w2, code, ai, ae
 
     @jit
     def solve_one(fa, w_target, v0, par, kti, dti, kto, dto, tol, max_iter, stage_max, max_loops):
-        """One case: (v [5], status, Newton iterations, alpha_i, alpha_e)."""
-        v = [v0[0], v0[1], v0[2], v0[3], v0[4]]
-        v_ok, v_base, step, tangent = v[:], v[:], [0.0] * 5, [0.0] * 5
+        """One case: (v (5-tuple), status, Newton iterations, alpha_i, alpha_e)."""
+        v = (v0[0], v0[1], v0[2], v0[3], v0[4])
+        v_ok, v_base, step, tangent = v, v, (0.0, 0.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0, 0.0)
         w_ok, w_cur, h = 0.0, 0.0, w_target
         h_min = max(w_target * 1e-6, 1e-3)
         iters, k_stage, t, norm_prev, last_bad = 0, 0, 1.0, math.inf, _NOCONV
@@ -185,8 +183,8 @@ def _functions(jit):
             if valid and norm < tol:
                 if w_cur >= w_target:
                     return v, _OK, iters, ai, ae
-                tangent = gauss5(jac, [-x for x in r_w2])  # dv / d(omega^2)
-                v_ok, w_ok = v[:], w_cur
+                tangent = gauss5(jac, (-r_w2[0], -r_w2[1], -r_w2[2], -r_w2[3], -r_w2[4]))  # dv / d(omega^2)
+                v_ok, w_ok = v, w_cur
                 if k_stage <= 4 and w_cur > 0:
                     h = 2.0 * h  # no largest speed step (speed_step None)
                 advance = True
@@ -195,13 +193,13 @@ def _functions(jit):
                 if k_stage >= stage_max or iters >= max_iter:
                     cut = True
                 else:
-                    dv = gauss5(jac, [-x for x in r])
+                    dv = gauss5(jac, (-r[0], -r[1], -r[2], -r[3], -r[4]))
                     if not (math.isfinite(dv[0]) and math.isfinite(dv[1]) and math.isfinite(dv[2])
                             and math.isfinite(dv[3]) and math.isfinite(dv[4])):
                         cut = True
                     else:
-                        v_base, step, norm_prev, t = v[:], dv, norm, 1.0
-                        v = [v[i] + dv[i] for i in range(5)]
+                        v_base, step, norm_prev, t = v, dv, norm, 1.0
+                        v = (v[0] + dv[0], v[1] + dv[1], v[2] + dv[2], v[3] + dv[3], v[4] + dv[4])
                         k_stage += 1
                         iters += 1
             elif k_stage > 0:  # step halving from the previous iterate
@@ -210,7 +208,8 @@ def _functions(jit):
                 if t < 1.0 / 1024.0:
                     cut = True
                 else:
-                    v = [v_base[i] + t * step[i] for i in range(5)]
+                    v = (v_base[0] + t * step[0], v_base[1] + t * step[1], v_base[2] + t * step[2],
+                         v_base[3] + t * step[3], v_base[4] + t * step[4])
             else:  # the predictor is not usable
                 advance = False
                 cut = True
@@ -227,9 +226,11 @@ def _functions(jit):
             if advance:  # next continuation step from the last converged point, tangent predictor
                 w_new = min(w_ok + h, w_target)
                 inc = w_new * w_new - w_ok * w_ok
-                v = [v_ok[i] + inc * tangent[i] for i in range(5)]
+                x1 = v_ok[0] + inc * tangent[0]
                 if v_ok[0] > 0:  # X1 > 0 extrapolated multiplicatively
-                    v[0] = v_ok[0] * math.exp(min(inc * tangent[0] / v_ok[0], 50.0))
+                    x1 = v_ok[0] * math.exp(min(inc * tangent[0] / v_ok[0], 50.0))
+                v = (x1, v_ok[1] + inc * tangent[1], v_ok[2] + inc * tangent[2], v_ok[3] + inc * tangent[3],
+                     v_ok[4] + inc * tangent[4])
                 w_cur, k_stage, norm_prev, t = w_new, 0, math.inf, 1.0
         return v, _NOCONV, iters, math.nan, math.nan
 
