@@ -1,10 +1,11 @@
-"""Smoke tests of the benchmark scripts under bench/ that have no smoke test next to their model.
+"""Smoke tests of the benchmark scripts under bench/.
 
 The benchmarks themselves are not run by the tests (``make bench``); here each script's paths run on a
-few cases and must agree. The others: tests/lab/test_fits.py (friction_fits), tests/runout/
-test_runout_contact.py (runout), tests/quasistatic/test_thrust.py (high_speed),
-tests/quasistatic/test_combined.py (combined), tests/ratings/test_rating_life.py (life),
-tests/friction/test_skf.py (skf_friction).
+few cases and must agree (axial_angle, friction_fits, high_speed and its scalar and compiled kernels,
+combined at speed, run_all, scaling). More next to their models: tests/lab/test_fits.py
+(friction_fits), tests/runout/test_runout_contact.py (runout), tests/quasistatic/test_thrust.py
+(high_speed), tests/quasistatic/test_combined.py (combined at rest), tests/ratings/test_rating_life.py
+(life), tests/friction/test_skf.py (skf_friction).
 """
 
 import sys
@@ -58,6 +59,34 @@ def test_run_all_leaves_a_failed_script_out_of_the_table(load_bench, tmp_path, m
     text = (tmp_path / "BENCHMARKS.md").read_text()
     assert "### good" in text and "1e9" not in text and "### bad" not in text
     assert "Left out" in text and "bad.py" in text and "old" not in text
+
+
+def test_high_speed_fair_baseline_and_batched_agree_case_by_case(load_bench):
+    bench = load_bench("high_speed")
+    m = bench.measure(n_loads=4, n_speeds=5, n_baseline=20, n_former=3, repeat=1)
+    assert m["failed"] == m["failed_base"] == m["failed_former"] == 0
+    assert m["diff"] < 1e-12 and m["diff_former"] < 1e-9
+    if "compiled_rate" in m:  # numba (the bench extra) installed
+        assert m["diff_compiled"] < 1e-12
+
+
+def test_high_speed_scalar_solver_takes_the_same_newton_steps(load_bench):
+    bench = load_bench("high_speed")
+    kernels = load_bench("_kernels_highspeed")
+    fa, n = bench.grid(3, 4)
+    state = bench.batched(fa, n)
+    solve = kernels.solver(*kernels.bearing_parameters(bench.GEO, constants=bench.OPTIONS["constants"]))
+    for f, w, v, it in zip(fa.ravel(), n.ravel(), bench.static_starts(fa.ravel()), state.iterations.ravel(),
+                           strict=True):
+        _v, status, iterations, _ai, _ae = solve(float(f), float(w), v.tolist())
+        assert status == 0 and iterations == it
+
+
+def test_high_speed_main_prints_a_result_line(load_bench, capsys):
+    bench = load_bench("high_speed")
+    assert bench.main(n_loads=3, n_speeds=3, n_baseline=9, n_former=2, repeat=1) == 0
+    line = [x for x in capsys.readouterr().out.splitlines() if x.startswith("RESULT high_speed ")]
+    assert len(line) == 1 and "baseline_label=fair_scalar" in line[0] and "former_fsolve_ratio" in line[0]
 
 
 @pytest.mark.parametrize("name", ["combined", "life", "skf_friction", "runout", "high_speed"])
