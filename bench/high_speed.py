@@ -23,10 +23,10 @@ from __future__ import annotations
 
 import sys
 
-import numpy as np
-from _timing import best_of
 import _kernels
 import _kernels_highspeed as _hs
+import numpy as np
+from _timing import best_of
 from scipy.optimize import fsolve
 
 from bearinglab import catalog, quasistatic

@@ -10,8 +10,11 @@ combined at speed, run_all, scaling). More next to their models: tests/lab/test_
 
 import sys
 
+import numpy as np
 import pytest
 from numpy.testing import assert_allclose
+
+UM_MRAD = np.array([1e-6, 1e-6, 1e-6, 1e-3, 1e-3])  # displacements in um, tilts in mrad
 
 
 def test_axial_angle_paths_agree_case_by_case(load_bench):
@@ -92,3 +95,25 @@ def test_high_speed_main_prints_a_result_line(load_bench, capsys):
 @pytest.mark.parametrize("name", ["combined", "life", "skf_friction", "runout", "high_speed"])
 def test_every_script_has_a_main(load_bench, name):
     assert callable(load_bench(name).main)
+
+
+def test_combined_compiled_limit_takes_the_same_steps_as_the_batched_path(load_bench):
+    bench = load_bench("combined")
+    kernels = load_bench("_kernels")
+    if not kernels.available():
+        pytest.skip("numba (the bench extra) is not installed")
+    loads = bench.cases(16, [1500, 1500, 1500, 15.0, 15.0], seed=4)
+    state = bench.batched(bench.DEEP, loads)
+    u, iterations = bench.compiled(bench.DEEP, loads)
+    assert state.converged.all() and (iterations == state.iterations).all()
+    assert_allclose(u / UM_MRAD, state.displacement / UM_MRAD, rtol=0, atol=1e-10)  # um, mrad
+
+
+def test_combined_at_speed_baseline_agrees_with_the_batched_path(load_bench):
+    bench = load_bench("combined")
+    loads = bench.cases(3, [4e3, 4e3, 4e3, 80.0, 80.0], seed=1)
+    loads[:, 2] = np.abs(loads[:, 2]) + 5e3
+    state = bench.batched(bench.B218, loads, 12000 * bench.RPM)
+    ref = bench.baseline_speed(bench.B218, loads, 12000 * bench.RPM)()
+    assert state.converged.all()
+    assert_allclose(ref / UM_MRAD, state.displacement / UM_MRAD, rtol=0, atol=1e-8)
