@@ -109,11 +109,20 @@ def test_combined_compiled_limit_takes_the_same_steps_as_the_batched_path(load_b
     assert_allclose(u / UM_MRAD, state.displacement / UM_MRAD, rtol=0, atol=1e-10)  # um, mrad
 
 
-def test_combined_at_speed_baseline_agrees_with_the_batched_path(load_bench):
+def test_combined_fair_baseline_at_speed_agrees_with_the_batched_path(load_bench):
     bench = load_bench("combined")
-    loads = bench.cases(3, [4e3, 4e3, 4e3, 80.0, 80.0], seed=1)
-    loads[:, 2] = np.abs(loads[:, 2]) + 5e3
-    state = bench.batched(bench.B218, loads, 12000 * bench.RPM)
-    ref = bench.baseline_speed(bench.B218, loads, 12000 * bench.RPM)()
+    loads = bench.speed_cases(3)
+    state = bench.batched(bench.B218, loads, bench.SPEED)
     assert state.converged.all()
-    assert_allclose(ref / UM_MRAD, state.displacement / UM_MRAD, rtol=0, atol=1e-8)
+    for run in (bench.baseline_speed, bench.library_speed):  # the fair scalar baseline and the former one
+        ref = run(bench.B218, loads, bench.SPEED)()
+        assert_allclose(ref / UM_MRAD, state.displacement / UM_MRAD, rtol=0, atol=1e-9)  # um, mrad
+
+
+def test_combined_main_prints_both_result_lines(load_bench, capsys, monkeypatch):
+    bench = load_bench("combined")
+    monkeypatch.setattr(bench._kernels, "available", lambda: False)  # compiling the speed kernel takes ~40 s
+    assert bench.main(n_rest=20, n_base=5, n_speed=4, n_speed_base=2, n_speed_former=1, repeat=1) == 0
+    lines = [x for x in capsys.readouterr().out.splitlines() if x.startswith("RESULT combined_")]
+    assert [x.split()[1] for x in lines] == ["combined_rest", "combined_speed"]
+    assert all("baseline_label=fair_scalar" in x for x in lines) and "former_library_per_case_ratio" in lines[1]
