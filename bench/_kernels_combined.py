@@ -1,14 +1,20 @@
-r"""The 5-DOF combined-load model at rest, one case at a time, compiled: the compiled limit of bench/combined.py.
+r"""The 5-DOF combined-load model one case at a time: the fair scalar baseline and the compiled limit.
 
-Not part of the library. The per-case algorithm is the fair scalar baseline of bench/combined.py
-(``scalar_solver``) written so that numba compiles it (flat lists and tuples, no closures over Python
-objects): each ball a spring between the groove-curvature centres, Q = K_n (rho - A)^1.5 with K_n from
+Not part of the library. The per-case algorithms, written once in plain Python with ``math`` so that
+numba also compiles them (flat lists and tuples): run by CPython they are the fair scalar baselines of
+bench/combined.py, compiled (``@njit(parallel=True)`` over cases) the compiled limits.
+
+At rest: each ball a spring between the groove-curvature centres, Q = K_n (rho - A)^1.5 with K_n from
 the exact Hertz interpolants at the line's angle; ring Newton with the analytic tangent stiffness (sum
 over balls of J^T H J), Levenberg-Marquardt damping, a trust region of A/2 per step, a line search of 8
 cuts by 4, the same tolerance (relative residual 1e-12, moments divided by d_m/2), the same start.
+At speed: the rest solution, then continuation in omega^2 (1, 4 or 16 steps); every ball's equilibrium
+(spec 004 eqs. (5)-(6) with F_c, M_g and the raceway control) by a 2 x 2 Newton, the ball's ring
+stiffness as the Schur complement p_g - p_x b_x^-1 b_g, the same ring Newton.
 
 Functions
 ---------
+rest_solver      one case at rest in plain Python: the fair scalar baseline at rest
 speed_solver     one case at speed in plain Python: the fair scalar baseline at speed
 compiled         all cases at rest (loads (n, 5), starts (n, 5)) by ``@njit(parallel=True)`` over cases
 compiled_speed   all cases at speed, the same way
@@ -19,8 +25,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from _kernels_common import scalar_helpers
 
-__all__ = ["compiled", "compiled_speed", "speed_solver"]
+__all__ = ["compiled", "compiled_speed", "rest_solver", "speed_solver"]
 
 _COMPILED = _COMPILED_SPEED = None
 
@@ -28,41 +35,29 @@ _COMPILED = _COMPILED_SPEED = None
 def _functions(jit):
     """The per-case functions, each wrapped by ``jit`` (numba.njit)."""
 
-    @jit
-    def cheb(c, x):  # Clenshaw's recurrence
-        b1 = 0.0
-        b2 = 0.0
-        for j in range(len(c) - 1, 0, -1):
-            b1, b2 = c[j] + 2.0 * x * b1 - b2, b1
-        return c[0] + x * b1 - b2
+    cheb, gauss5 = scalar_helpers(jit)
 
     @jit
-    def gauss5(a, b):
-        """x with a x = b; a flat row-major 5 x 5 list, b a 5-list; partial pivoting."""
-        m = [0.0] * 30
+    def lm_step(k, f, loads, lam, sc, cs, sn, arm, big_a):
+        """Levenberg-Marquardt step (K + lam max|diag K| I) du = F - f in scaled variables, and its
+        trust-region fraction t (no groove centre moves by more than A/2)."""
+        dmax = 0.0
+        for i in range(5):
+            dmax = max(dmax, abs(k[6 * i] * sc[i] * sc[i]))
+        if dmax == 0.0:
+            dmax = 1.0
+        a = [0.0] * 25
         for i in range(5):
             for j in range(5):
-                m[6 * i + j] = a[5 * i + j]
-            m[6 * i + 5] = b[i]
-        for c in range(5):
-            p = c
-            for r in range(c + 1, 5):
-                if abs(m[6 * r + c]) > abs(m[6 * p + c]):
-                    p = r
-            if p != c:
-                for k in range(6):
-                    m[6 * c + k], m[6 * p + k] = m[6 * p + k], m[6 * c + k]
-            for r in range(c + 1, 5):
-                f = m[6 * r + c] / m[6 * c + c]
-                for k in range(c, 6):
-                    m[6 * r + k] -= f * m[6 * c + k]
-        x = [0.0] * 5
-        for r in range(4, -1, -1):
-            s = m[6 * r + 5]
-            for k in range(r + 1, 5):
-                s -= m[6 * r + k] * x[k]
-            x[r] = s / m[6 * r + r]
-        return x
+                a[5 * i + j] = k[5 * i + j] * sc[i] * sc[j]
+            a[6 * i] += max(lam, 1e-14) * dmax
+        g = gauss5(a, [(loads[i] - f[i]) * sc[i] for i in range(5)])
+        du = [g[i] * sc[i] for i in range(5)]
+        move = 0.0
+        for b in range(len(cs)):
+            c, s = cs[b], sn[b]
+            move = max(move, abs(du[2] + arm * (du[3] * s - du[4] * c)), abs(du[0] * c + du[1] * s))
+        return du, (min(1.0, 0.5 * big_a / move) if move > 0 else 1.0)
 
     @jit
     def evaluate(u, cs, sn, arm, big_a, gr0, ci, dci, co, dco):
@@ -122,25 +117,7 @@ def _functions(jit):
         for it in range(max_iter):
             if rel <= tol:
                 return u, it
-            dmax = 0.0
-            for i in range(5):
-                dmax = max(dmax, abs(k[6 * i] * sc[i] * sc[i]))
-            if dmax == 0.0:
-                dmax = 1.0
-            a = [0.0] * 25
-            for i in range(5):
-                for j in range(5):
-                    a[5 * i + j] = k[5 * i + j] * sc[i] * sc[j]
-                a[6 * i] += max(lam, 1e-14) * dmax
-            rhs = [(loads[i] - f[i]) * sc[i] for i in range(5)]
-            du = gauss5(a, rhs)
-            for i in range(5):
-                du[i] *= sc[i]
-            move = 0.0
-            for b in range(len(cs)):
-                c, s = cs[b], sn[b]
-                move = max(move, abs(du[2] + arm * (du[3] * s - du[4] * c)), abs(du[0] * c + du[1] * s))
-            t = min(1.0, 0.5 * big_a / move) if move > 0 else 1.0
+            du, t = lm_step(k, f, loads, lam, sc, cs, sn, arm, big_a)
             full = t == 1.0
             accepted = False
             for _ls in range(8):
@@ -297,24 +274,7 @@ def _functions(jit):
         it = 0
         while not done and it < max_iter and lam <= lam_max:
             it += 1
-            dmax = 0.0
-            for i in range(5):
-                dmax = max(dmax, abs(k[6 * i] * sc[i] * sc[i]))
-            if dmax == 0.0:
-                dmax = 1.0
-            a = [0.0] * 25
-            for i in range(5):
-                for j in range(5):
-                    a[5 * i + j] = k[5 * i + j] * sc[i] * sc[j]
-                a[6 * i] += max(lam, 1e-14) * dmax
-            du = gauss5(a, [(loads[i] - f[i]) * sc[i] for i in range(5)])
-            for i in range(5):
-                du[i] *= sc[i]
-            move = 0.0
-            for b in range(len(cs)):
-                c, s = cs[b], sn[b]
-                move = max(move, abs(du[2] + arm * (du[3] * s - du[4] * c)), abs(du[0] * c + du[1] * s))
-            t = min(1.0, 0.5 * big_a / move) if move > 0 else 1.0
+            du, t = lm_step(k, f, loads, lam, sc, cs, sn, arm, big_a)
             full = t == 1.0
             accepted = False
             for _ls in range(8):
@@ -384,6 +344,17 @@ def _tables(geo):
     cheb = np.polynomial.chebyshev
     ci, co = (np.asarray(t, dtype=float) for t in geo.tables[:2])
     return ci, cheb.chebder(ci), co, cheb.chebder(co)
+
+
+def rest_solver(geo, *, tol, max_iter):
+    """``solve(loads, start) -> (u, iterations)`` for one case at rest, in plain Python (the fair baseline)."""
+    args = (list(np.cos(geo.psi)), list(np.sin(geo.psi)), geo.dm / 2.0, geo.big_a, geo.gr0,
+            *([float(x) for x in t] for t in _tables(geo)))
+
+    def solve(loads, start):
+        return _PY_REST(loads, start, *args, tol, max_iter)
+
+    return solve
 
 
 def speed_solver(geo, *, tol, max_iter, lam_max, ball_tol, ball_max_iter, continuation):

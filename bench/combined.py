@@ -27,7 +27,6 @@ cases at the solution.
 
 from __future__ import annotations
 
-import math
 import sys
 
 import _kernels
@@ -62,128 +61,21 @@ def batched(bearing, loads, speed=0.0):
     return combined.combined_analysis(bearing, loads, speed, on_failure="flag")
 
 
-# ------------------------------------------------------------------ scalar baseline (plain Python)
-def _cheb(coef, x):
-    b1 = b2 = 0.0
-    for c in reversed(coef[1:]):
-        b1, b2 = c + 2.0 * x * b1 - b2, b1
-    return coef[0] + x * b1 - b2
-
-
-def _cheb_der(coef):
-    return [float(v) for v in np.polynomial.chebyshev.chebder(coef)]
-
-
-def _gauss(a, b):
-    """Solve a 5 x 5 system by elimination with partial pivoting (lists)."""
-    n = len(b)
-    m = [row[:] + [b[i]] for i, row in enumerate(a)]
-    for c in range(n):
-        p = max(range(c, n), key=lambda r: abs(m[r][c]))
-        m[c], m[p] = m[p], m[c]
-        for r in range(c + 1, n):
-            f = m[r][c] / m[c][c]
-            for k in range(c, n + 1):
-                m[r][k] -= f * m[c][k]
-    x = [0.0] * n
-    for r in range(n - 1, -1, -1):
-        x[r] = (m[r][n] - sum(m[r][k] * x[k] for k in range(r + 1, n))) / m[r][r]
-    return x
-
-
-def scalar_solver(bearing, tol=combined.TOL, max_iter=combined.MAX_ITER):
-    """A per-case solver of the rest model, built once per bearing."""
-    geo = combined._geometry(*combined._bearing_args(bearing), 0.0, "operating", "outer", "radial")
-    ci, co = [float(v) for v in geo.tables[0]], [float(v) for v in geo.tables[1]]
-    dci, dco = _cheb_der(geo.tables[0]), _cheb_der(geo.tables[1])
-    arm, big_a, gr0 = geo.dm / 2.0, geo.big_a, geo.gr0
-    balls = [(math.cos(p), math.sin(p)) for p in geo.psi]
-    sc = [1.0, 1.0, 1.0, 1.0 / arm, 1.0 / arm]
-
-    def evaluate(u):
-        f, k, total = [0.0] * 5, [[0.0] * 5 for _ in range(5)], 0.0
-        for c, s in balls:
-            ga = u[2] + arm * (u[3] * s - u[4] * c)
-            gr = gr0 + u[0] * c + u[1] * s
-            rho = math.hypot(ga, gr)
-            if rho <= big_a:
-                continue
-            sa, ca = ga / rho, gr / rho
-            x = 2.0 * ca - 1.0
-            ki, ko = math.exp(_cheb(ci, x)), math.exp(_cheb(co, x))
-            wi, wo = ki ** (-2.0 / 3.0), ko ** (-2.0 / 3.0)
-            kn = (wi + wo) ** -1.5
-            dl = (wi * 2.0 * _cheb(dci, x) + wo * 2.0 * _cheb(dco, x)) / (wi + wo)
-            d = rho - big_a
-            q, dq = kn * d**1.5, 1.5 * kn * math.sqrt(d)
-            qa = -q * sa * dl
-            h = [[dq * sa * sa + qa / rho * sa * ca + q / rho * ca * ca,
-                  dq * sa * ca - qa / rho * sa * sa - q / rho * ca * sa],
-                 [dq * ca * sa + qa / rho * ca * ca - q / rho * sa * ca,
-                  dq * ca * ca - qa / rho * ca * sa + q / rho * sa * sa]]
-            ja = (0.0, 0.0, 1.0, arm * s, -arm * c)
-            jr = (c, s, 0.0, 0.0, 0.0)
-            rows = (ja, jr)
-            for i in range(5):
-                f[i] += q * sa * ja[i] + q * ca * jr[i]
-                for j in range(5):
-                    k[i][j] += sum(rows[p][i] * h[p][r] * rows[r][j] for p in range(2) for r in range(2))
-            total += q
-        return f, k, total
-
-    def norms(loads, f, total):
-        res = math.sqrt(sum(((loads[i] - f[i]) * sc[i]) ** 2 for i in range(5)))
-        scale = max(math.sqrt(sum((loads[i] * sc[i]) ** 2 for i in range(5))), total)
-        return res, res / scale if scale > 0 else res
-
-    def solve(loads, start):
-        u = list(start)
-        f, k, total = evaluate(u)
-        norm, rel = norms(loads, f, total)
-        lam = 0.0
-        for _ in range(max_iter):
-            if rel <= tol:
-                return u
-            dmax = max(abs(k[i][i] * sc[i] * sc[i]) for i in range(5)) or 1.0
-            a = [[k[i][j] * sc[i] * sc[j] + (max(lam, 1e-14) * dmax if i == j else 0.0) for j in range(5)]
-                 for i in range(5)]
-            du = [v * sc[i] for i, v in enumerate(_gauss(a, [(loads[i] - f[i]) * sc[i] for i in range(5)]))]
-            move = max(max(abs(du[2] + arm * (du[3] * s - du[4] * c)), abs(du[0] * c + du[1] * s)) for c, s in balls)
-            t = min(1.0, 0.5 * big_a / move) if move > 0 else 1.0
-            full = t == 1.0
-            for _ls in range(8):
-                trial = [u[i] + t * du[i] for i in range(5)]
-                f_t, k_t, tot_t = evaluate(trial)
-                n_t, r_t = norms(loads, f_t, tot_t)
-                if n_t < norm * (1.0 - 1e-4 * t) or r_t <= tol:
-                    u, f, k, norm, rel = trial, f_t, k_t, n_t, r_t
-                    break
-                t *= 0.25
-                full = False
-            else:
-                lam = max(100.0 * lam, 1e-3)
-                continue
-            lam = 0.1 * lam if full else max(10.0 * lam, 1e-6)
-            lam = 0.0 if lam < 1e-12 else lam
-        return [math.nan] * 5
-
-    return geo, solve
-
-
 def baseline(bearing, loads):
     """Per-case scalar solves; starts computed outside the timed loop."""
-    geo, solve = scalar_solver(bearing)
+    geo = combined._geometry(*combined._bearing_args(bearing), 0.0, "operating", "outer", "radial")
+    solve = _kernels_combined.rest_solver(geo, tol=combined.TOL, max_iter=combined.MAX_ITER)
     starts = combined._start(geo, np.asarray(loads, dtype=float)).tolist()
     rows = np.asarray(loads, dtype=float).tolist()
 
     def run():
-        return np.array([solve(f, s) for f, s in zip(rows, starts, strict=True)])
+        return np.array([solve(f, s)[0] for f, s in zip(rows, starts, strict=True)])
 
     return run
 
 
 def compiled(bearing, loads):
-    """The compiled limit at rest: the same per-case algorithm as ``scalar_solver``, numba over cases.
+    """The compiled limit at rest: the same per-case algorithm as ``baseline``, numba over cases.
 
     The starts (the library's start formula, numpy) are computed inside, as in the batched path.
     """
