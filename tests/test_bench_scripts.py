@@ -1,16 +1,20 @@
-"""Smoke tests of the benchmark scripts under bench/ that have no smoke test next to their model.
+"""Smoke tests of the benchmark scripts under bench/.
 
 The benchmarks themselves are not run by the tests (``make bench``); here each script's paths run on a
-few cases and must agree. The others: tests/lab/test_fits.py (friction_fits), tests/runout/
-test_runout_contact.py (runout), tests/quasistatic/test_thrust.py (high_speed),
-tests/quasistatic/test_combined.py (combined), tests/ratings/test_rating_life.py (life),
-tests/friction/test_skf.py (skf_friction); cli_help has its smoke test here.
+few cases and must agree (axial_angle, friction_fits, high_speed and its scalar and compiled kernels,
+combined at speed, run_all, scaling). More next to their models: tests/lab/test_fits.py
+(friction_fits), tests/runout/test_runout_contact.py (runout), tests/quasistatic/test_thrust.py
+(high_speed), tests/quasistatic/test_combined.py (combined at rest), tests/ratings/test_rating_life.py
+(life), tests/friction/test_skf.py (skf_friction); cli_help has its smoke test here.
 """
 
 import sys
 
+import numpy as np
 import pytest
 from numpy.testing import assert_allclose
+
+UM_MRAD = np.array([1e-6, 1e-6, 1e-6, 1e-3, 1e-3])  # displacements in um, tilts in mrad
 
 
 def test_axial_angle_paths_agree_case_by_case(load_bench):
@@ -69,6 +73,65 @@ def test_cli_help_times_the_help_and_prints_a_result_line(load_bench, capsys):
     assert "bearinglab high-speed --help" in out and "0.3 s goal" in out
 
 
+def test_high_speed_fair_baseline_and_batched_agree_case_by_case(load_bench):
+    bench = load_bench("high_speed")
+    m = bench.measure(n_loads=4, n_speeds=5, n_baseline=20, n_former=3, repeat=1)
+    assert m["failed"] == m["failed_base"] == m["failed_former"] == 0
+    assert m["diff"] < 1e-12 and m["diff_former"] < 1e-9
+    if "compiled_rate" in m:  # numba (the bench extra) installed
+        assert m["diff_compiled"] < 1e-12
+
+
+def test_high_speed_scalar_solver_takes_the_same_newton_steps(load_bench):
+    bench = load_bench("high_speed")
+    kernels = load_bench("_kernels_highspeed")
+    fa, n = bench.grid(3, 4)
+    state = bench.batched(fa, n)
+    solve = kernels.solver(*kernels.bearing_parameters(bench.GEO, constants=bench.OPTIONS["constants"]))
+    for f, w, v, it in zip(fa.ravel(), n.ravel(), bench.static_starts(fa.ravel()), state.iterations.ravel(),
+                           strict=True):
+        _v, status, iterations, _ai, _ae = solve(float(f), float(w), v.tolist())
+        assert status == 0 and iterations == it
+
+
+def test_high_speed_main_prints_a_result_line(load_bench, capsys):
+    bench = load_bench("high_speed")
+    assert bench.main(n_loads=3, n_speeds=3, n_baseline=9, n_former=2, repeat=1) == 0
+    line = [x for x in capsys.readouterr().out.splitlines() if x.startswith("RESULT high_speed ")]
+    assert len(line) == 1 and "baseline_label=fair_scalar" in line[0] and "former_fsolve_ratio" in line[0]
+
+
 @pytest.mark.parametrize("name", ["combined", "life", "skf_friction", "runout", "high_speed"])
 def test_every_script_has_a_main(load_bench, name):
     assert callable(load_bench(name).main)
+
+
+def test_combined_compiled_limit_takes_the_same_steps_as_the_batched_path(load_bench):
+    bench = load_bench("combined")
+    kernels = load_bench("_kernels")
+    if not kernels.available():
+        pytest.skip("numba (the bench extra) is not installed")
+    loads = bench.cases(16, [1500, 1500, 1500, 15.0, 15.0], seed=4)
+    state = bench.batched(bench.DEEP, loads)
+    u, iterations = bench.compiled(bench.DEEP, loads)
+    assert state.converged.all() and (iterations == state.iterations).all()
+    assert_allclose(u / UM_MRAD, state.displacement / UM_MRAD, rtol=0, atol=1e-10)  # um, mrad
+
+
+def test_combined_fair_baseline_at_speed_agrees_with_the_batched_path(load_bench):
+    bench = load_bench("combined")
+    loads = bench.speed_cases(3)
+    state = bench.batched(bench.B218, loads, bench.SPEED)
+    assert state.converged.all()
+    for run in (bench.baseline_speed, bench.library_speed):  # the fair scalar baseline and the former one
+        ref = run(bench.B218, loads, bench.SPEED)()
+        assert_allclose(ref / UM_MRAD, state.displacement / UM_MRAD, rtol=0, atol=1e-9)  # um, mrad
+
+
+def test_combined_main_prints_both_result_lines(load_bench, capsys, monkeypatch):
+    bench = load_bench("combined")
+    monkeypatch.setattr(bench._kernels, "available", lambda: False)  # compiling the speed kernel takes ~40 s
+    assert bench.main(n_rest=20, n_base=5, n_speed=4, n_speed_base=2, n_speed_former=1, repeat=1) == 0
+    lines = [x for x in capsys.readouterr().out.splitlines() if x.startswith("RESULT combined_")]
+    assert [x.split()[1] for x in lines] == ["combined_rest", "combined_speed"]
+    assert all("baseline_label=fair_scalar" in x for x in lines) and "former_library_per_case_ratio" in lines[1]
