@@ -89,10 +89,10 @@ _BALL_TOL = 1e-14  # ball Newton: |step| / D
 _BALL_MAX_ITER = 40
 _LINE_SEARCH = 8  # step cuts (by 4) of the ring Newton line search
 _LAM_MAX = 1e4  # Levenberg-Marquardt damping beyond which a case has failed
-_CONTINUATION = (1, 4, 16)
+_CONTINUATION = (1, 4, 16)  # equal steps in omega^2 tried for a case that fails at the full speed
 _EPS = np.finfo(float).eps
 _RESOLVABLE = 1e-9  # issue 11: every returned case in equilibrium to 1e-9 relative, rounding or not
-_NOISE = 4.0  # a residual within this many rounding floors (see _measure) is converged  # equal steps in omega^2 tried for a case that fails at the full speed
+_NOISE = 4.0  # a residual within this many rounding floors (see _measure) is converged
 
 
 # --------------------------------------------------------------------------- geometry
