@@ -309,7 +309,7 @@ def read_session(path):
     >>> s = parse_session(template(bearing="18"), source="new.toml")
     Traceback (most recent call last):
     ...
-    bearinglab.errors.InputError: new.toml, line 64, field 'measurements.csv': no measurement rows (only the header)
+    bearinglab.errors.InputError: new.toml, line 71, field 'measurements.csv': no measurement rows (only the header)
     """
     path = Path(path)
     try:

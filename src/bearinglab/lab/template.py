@@ -47,6 +47,13 @@ notes = ""
 # f = 0.0009
 # c = 0.55
 
+# Optional task 4: the SKF four-term model fitted to the rows (examples/friction/skf_6205.toml).
+# [skf]
+# viscosity = "30 mm^2/s"   # operating viscosity of the oil (of the base oil for grease), required
+# lubrication = "grease"    # grease | oil-air | oil-jet
+# series = "62"             # bearing series of the SKF constants (or r1, r2, s1, s2 as numbers)
+# fit = "sliding"           # sliding (mu_sl) | rolling (a scale on M_rr) | both
+
 [rig]
 tare_mass = "0 kg"        # added to every Q (housing, holder); the source uses 0
 gravity = "9.81 m/s^2"    # the source's value
