@@ -25,6 +25,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+
 from bearinglab.quasistatic._compiled import scalar_helpers
 
 __all__ = ["compiled", "compiled_speed", "rest_solver", "speed_solver"]
