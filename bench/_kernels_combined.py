@@ -25,7 +25,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from _kernels_common import scalar_helpers
+
+from bearinglab.quasistatic._compiled import scalar_helpers
 
 __all__ = ["compiled", "compiled_speed", "rest_solver", "speed_solver"]
 

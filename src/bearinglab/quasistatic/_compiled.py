@@ -1,0 +1,323 @@
+r"""The compiled fast path of the high-speed Newton solve (spec 004 section 5.1), one case at a time.
+
+The same equations and the same solver as :mod:`~bearinglab.quasistatic.equations` and
+:mod:`~bearinglab.quasistatic.continuation`, written in scalar form (``math``, tuples) so that numba can
+compile them, and run over the cases in parallel:
+
+- unknowns v = (X1, X2, delta_i, delta_e, delta_a) / D; groove-curvature centres eqs. (1)-(2), the two
+  geometric closures and the force balances (5), (6), (7)/Z, scaled as in the batched path;
+- kinematics eqs. (9), (10), (13) (outer- or inner-raceway control), F_c eq. (8), M_g eq. (12);
+- K_i, K_e from the exact Hertz solution through the same Chebyshev interpolants in cos(alpha) that the
+  batched path builds once per bearing (:func:`~bearinglab.quasistatic.contact._hertz_tables`), summed by
+  Clenshaw's recurrence;
+- the analytic Jacobian and a 5 x 5 Gaussian elimination with partial pivoting;
+- the same continuation in omega^2: tangent predictor (X1 extrapolated multiplicatively), first step to
+  the target speed (or ``speed_step``), steps cut by 4 where Newton fails and doubled after an easy step,
+  Armijo step halving, the same tolerance and iteration limits, the same status codes.
+
+It takes the same Newton steps as the batched path, case by case (tests/quasistatic/test_compiled.py
+checks the iterations, the statuses and the unknowns to 1e-12). Each case is independent of the others,
+so the result does not depend on the batch or the chunk it is solved in. Nothing here is public:
+:func:`bearinglab.quasistatic.contact_angles` calls :func:`solve` when its ``engine`` allows it.
+numba is imported by this module only; without it the functions run as plain Python.
+
+Functions
+---------
+available        True if numba imports (the compiled path can run)
+scalar_helpers   ``(cheb, gauss5)`` in plain Python, each wrapped by a given ``jit``
+plain_solver     ``solve_one`` with every helper in plain Python (bench/high_speed.py's fair baseline)
+case_parameters  the per-case constants and Hertz tables of a prepared model, as the kernel takes them
+solve            all cases of a prepared model by the compiled kernel: ``(v, status, iterations)``
+
+References
+----------
+.. [1] Zhao Chunjiang, Cui Guohua, Wang Guoqiang, Huang Qingxue and Zhang Fangping, "Precise definition
+   of the contact-angle field of a high-speed angular-contact ball bearing under axial load,"
+   Transactions of the CSAM, vol. 39, no. 12, pp. 154-156, 209, 2008 (spec 004 of this project).
+.. [2] W. H. Press, S. A. Teukolsky, W. T. Vetterling and B. P. Flannery, *Numerical Recipes*, 3rd ed.,
+   Cambridge University Press, 2007, sections 2.1 (Gaussian elimination) and 5.8 (Clenshaw's recurrence).
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+import types
+
+import numpy as np
+
+from .. import _solve
+from .equations import _ANGLE_OUT, _INNER_LOST, _NOCONV, _OK, _OUTER_LOST
+
+try:
+    import numba
+except ImportError:  # the numpy path is used instead (contact_angles(engine="auto"))
+    numba = None
+
+__all__ = ["available", "case_parameters", "plain_solver", "scalar_helpers", "solve"]
+
+
+def available():
+    """True if numba imports, so that the compiled kernel can run."""
+    return numba is not None
+
+
+def _jit(func):
+    """numba.njit with the compiled code cached next to this module (one compilation per install)."""
+    return func if numba is None else numba.njit(cache=True)(func)
+
+
+def _py(func):
+    return getattr(func, "py_func", func)
+
+
+@_jit
+def cheb(c, x):
+    """Sum of the Chebyshev series ``c`` at x (Clenshaw's recurrence)."""
+    b1 = 0.0
+    b2 = 0.0
+    for j in range(len(c) - 1, 0, -1):
+        b1, b2 = c[j] + 2.0 * x * b1 - b2, b1
+    return c[0] + x * b1 - b2
+
+
+@_jit
+def gauss5(a, b):
+    """x (a 5-tuple) with a x = b; a flat row-major 5 x 5, partial pivoting; NaN if singular."""
+    m = [0.0] * 30
+    for i in range(5):
+        for j in range(5):
+            m[6 * i + j] = a[5 * i + j]
+        m[6 * i + 5] = b[i]
+    for c in range(5):
+        p = c
+        for r in range(c + 1, 5):
+            if abs(m[6 * r + c]) > abs(m[6 * p + c]):
+                p = r
+        if m[6 * p + c] == 0.0:
+            return (math.nan, math.nan, math.nan, math.nan, math.nan)
+        if p != c:
+            for k in range(6):
+                m[6 * c + k], m[6 * p + k] = m[6 * p + k], m[6 * c + k]
+        for r in range(c + 1, 5):
+            f = m[6 * r + c] / m[6 * c + c]
+            for k in range(c, 6):
+                m[6 * r + k] -= f * m[6 * c + k]
+    x = [0.0] * 5
+    for r in range(4, -1, -1):
+        s = m[6 * r + 5]
+        for k in range(r + 1, 5):
+            s -= m[6 * r + k] * x[k]
+        x[r] = s / m[6 * r + r]
+    return (x[0], x[1], x[2], x[3], x[4])
+
+
+def scalar_helpers(jit):
+    """Clenshaw's sum of a Chebyshev series and a 5 x 5 Gaussian elimination, each wrapped by ``jit``."""
+    return jit(_py(cheb)), jit(_py(gauss5))
+
+
+@_jit
+def kinematics(si, ci, se, ce, ai, ae, g, inner_control):
+    """beta, cage and spin ratios of eqs. (9), (10), (13), and their partials in (alpha_i, alpha_e)."""
+    if inner_control > 0.0:
+        beta = math.atan2(si, ci - g)
+        db_i, db_e = (1.0 - g * ci) / (1.0 - 2.0 * g * ci + g * g), 0.0
+    else:
+        beta = math.atan2(se, ce + g)
+        db_i, db_e = 0.0, (1.0 + g * ce) / (1.0 + 2.0 * g * ce + g * g)
+    gi, ge = g * ci, g * ce
+    ceb, seb = math.cos(ae - beta), math.sin(ae - beta)
+    cib, sib = math.cos(ai - beta), math.sin(ai - beta)
+    pp, rr = (1.0 - gi) * ceb, (1.0 + ge) * cib
+    den = pp + rr
+    nn = (1.0 - gi) * (1.0 + ge)
+    cage, spin = pp / den, nn / (g * den)
+    dp_i = g * si * ceb + (1.0 - gi) * seb * db_i
+    dp_e = -(1.0 - gi) * seb * (1.0 - db_e)
+    dr_i = -(1.0 + ge) * sib * (1.0 - db_i)
+    dr_e = -g * se * cib + (1.0 + ge) * sib * db_e
+    den2 = den * den
+    cage_i, cage_e = (dp_i * rr - pp * dr_i) / den2, (dp_e * rr - pp * dr_e) / den2
+    spin_i = (g * si * (1.0 + ge) * den - nn * (dp_i + dr_i)) / (g * den2)
+    spin_e = (-(1.0 - gi) * g * se * den - nn * (dp_e + dr_e)) / (g * den2)
+    return beta, db_i, db_e, cage, spin, cage_i, cage_e, spin_i, spin_e
+
+
+@_jit
+def evaluate(v, w2, fa, par, kti, dti, kto, dto):
+    """Residuals r (5), Jacobian (25, row-major, w.r.t. v), dr/d(omega^2) (5), status, alpha_i, alpha_e."""
+    z, d, dm, fi, fo, ax0, az, mass_c, inertia = par[0], par[1], par[2], par[3], par[4], par[5], par[6], \
+        par[7], par[8]
+    li, le, sign, inner_control = par[9], par[10], par[11], par[12]
+    fs = max(fa / z, 1.0)
+    x1, x2, di, de, da = v[0] * d, v[1] * d, v[2] * d, v[3] * d, v[4] * d
+    px, pz = ax0 + da - x1, az - x2  # inner groove centre minus ball centre, eqs. (1)-(2)
+    rho_i, rho_e = math.hypot(px, pz), math.hypot(x1, x2)
+    si, ci, se, ce = px / rho_i, pz / rho_i, x1 / rho_e, x2 / rho_e
+    ai, ae = math.atan2(px, pz), math.atan2(x1, x2)
+    code = _OK
+    if not (0.0 < ai < 0.5 * math.pi and 0.0 < ae < 0.5 * math.pi):
+        code = _ANGLE_OUT
+    if not de > 0.0:
+        code = _OUTER_LOST
+    if not di > 0.0:
+        code = _INNER_LOST
+    beta, db_i, db_e, cage, spin, cage_i, cage_e, spin_i, spin_e = kinematics(si, ci, se, ce, ai, ae, d / dm,
+                                                                              inner_control)
+    # contact loads, eqs. (14)-(21), through the Hertz interpolants
+    ki, dlki = math.exp(cheb(kti, 2.0 * ci - 1.0)), cheb(dti, 2.0 * ci - 1.0)
+    ke, dlke = math.exp(cheb(kto, 2.0 * ce - 1.0)), cheb(dto, 2.0 * ce - 1.0)
+    dip, dep = max(di, 0.0), max(de, 0.0)
+    qi, qe = ki * dip * math.sqrt(dip), ke * dep * math.sqrt(dep)
+    fc_hat = mass_c * dm / 2.0 * cage * cage  # F_c / omega^2, eq. (8)
+    sb, cb = math.sin(beta), math.cos(beta)
+    m_hat = sign * inertia * spin * cage * sb / d  # M_g / (D omega^2), eq. (12)
+    ax_t, rad_t = li * ci - le * ce, li * si - le * se
+    m = w2 * m_hat
+    r = ((rho_i - (fi - 0.5) * d - di) / d, (rho_e - (fo - 0.5) * d - de) / d,
+         (qi * si - qe * se + m * ax_t) / fs,  # eq. (5)
+         (qi * ci - qe * ce - m * rad_t + w2 * fc_hat) / fs,  # eq. (6)
+         (qi * si + m * li * ci - fa / z) / fs)  # eq. (7) / Z
+    r_w2 = (0.0, 0.0, m_hat * ax_t / fs, (-m_hat * rad_t + fc_hat) / fs, m_hat * li * ci / fs)
+    # partials of the force balances in (alpha_i, alpha_e, delta_i, delta_e)
+    m_i = w2 * sign * inertia * (spin_i * cage * sb + spin * cage_i * sb + spin * cage * cb * db_i) / d
+    m_e = w2 * sign * inertia * (spin_e * cage * sb + spin * cage_e * sb + spin * cage * cb * db_e) / d
+    fc_i, fc_e = w2 * mass_c * dm * cage * cage_i, w2 * mass_c * dm * cage * cage_e
+    qi_a, qe_a = -qi * si * dlki, -qe * se * dlke
+    qi_d, qe_d = 1.5 * ki * math.sqrt(dip), 1.5 * ke * math.sqrt(dep)
+    # rows (alpha_i, alpha_e, delta_i, delta_e) of eqs. (5), (6), (7), times D / fs
+    sd = d / fs
+    a3 = (qi_a * si + qi * ci + m_i * ax_t - m * li * si) * sd
+    b3 = (-qe_a * se - qe * ce + m_e * ax_t + m * le * se) * sd
+    a4 = (qi_a * ci - qi * si - m_i * rad_t - m * li * ci + fc_i) * sd
+    b4 = (-qe_a * ce + qe * se - m_e * rad_t + m * le * ce + fc_e) * sd
+    a5, b5 = (qi_a * si + qi * ci + m_i * li * ci - m * li * si) * sd, m_e * li * ci * sd
+    dai0, dai1, dai2 = -ci / rho_i, si / rho_i, ci / rho_i  # d alpha_i / d(x1, x2, delta_a)
+    dae0, dae1 = ce / rho_e, -se / rho_e
+    jac = (-si, -ci, -1.0, 0.0, si, se, ce, 0.0, -1.0, 0.0,
+           a3 * dai0 + b3 * dae0, a3 * dai1 + b3 * dae1, qi_d * si * sd, -qe_d * se * sd, a3 * dai2,
+           a4 * dai0 + b4 * dae0, a4 * dai1 + b4 * dae1, qi_d * ci * sd, -qe_d * ce * sd, a4 * dai2,
+           a5 * dai0 + b5 * dae0, a5 * dai1 + b5 * dae1, qi_d * si * sd, 0.0, a5 * dai2)
+    return r, jac, r_w2, code, ai, ae
+
+
+@_jit
+def solve_one(fa, w_target, v0, par, kti, dti, kto, dto, tol, max_iter, h_max):
+    """One case: (v (5-tuple), status, Newton iterations, alpha_i, alpha_e); ``h_max`` inf: no largest step."""
+    v = (v0[0], v0[1], v0[2], v0[3], v0[4])
+    v_ok, v_base, step, tangent = v, v, (0.0, 0.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0, 0.0)
+    w_ok, w_cur, h = 0.0, 0.0, min(w_target, h_max)
+    h_min = max(w_target * 1e-6, 1e-3)
+    iters, k_stage, t, norm_prev, last_bad = 0, 0, 1.0, math.inf, _NOCONV
+    for _loop in range(_solve.QUASISTATIC_MAX_LOOPS):
+        r, jac, r_w2, code, ai, ae = evaluate(v, w_cur * w_cur, fa, par, kti, dti, kto, dto)
+        norm = math.sqrt(r[0] ** 2 + r[1] ** 2 + r[2] ** 2 + r[3] ** 2 + r[4] ** 2)
+        valid = code == _OK and math.isfinite(norm)
+        if not valid:
+            last_bad = code
+        cut, advance = False, False
+        if valid and norm < tol:
+            if w_cur >= w_target:
+                return v, _OK, iters, ai, ae
+            tangent = gauss5(jac, (-r_w2[0], -r_w2[1], -r_w2[2], -r_w2[3], -r_w2[4]))  # dv / d(omega^2)
+            v_ok, w_ok = v, w_cur
+            if k_stage <= 4 and w_cur > 0:
+                h = 2.0 * h  # grow after an easy step
+            h = min(h, h_max)
+            advance = True
+        elif valid and norm <= norm_prev * (1.0 - 1e-4 * t):
+            if k_stage >= _solve.QUASISTATIC_STAGE_MAX_ITER or iters >= max_iter:
+                cut = True
+            else:
+                dv = gauss5(jac, (-r[0], -r[1], -r[2], -r[3], -r[4]))
+                if not (math.isfinite(dv[0]) and math.isfinite(dv[1]) and math.isfinite(dv[2])
+                        and math.isfinite(dv[3]) and math.isfinite(dv[4])):
+                    cut = True
+                else:
+                    v_base, step, norm_prev, t = v, dv, norm, 1.0
+                    v = (v[0] + dv[0], v[1] + dv[1], v[2] + dv[2], v[3] + dv[3], v[4] + dv[4])
+                    k_stage += 1
+                    iters += 1
+        elif k_stage > 0:  # step halving from the previous iterate
+            t *= 0.5
+            if t < 1.0 / 1024.0:
+                cut = True
+            else:
+                v = (v_base[0] + t * step[0], v_base[1] + t * step[1], v_base[2] + t * step[2],
+                     v_base[3] + t * step[3], v_base[4] + t * step[4])
+        else:  # the predictor is not usable
+            cut = True
+        if cut:  # retry with a quarter of the speed step, or give up
+            h = 0.25 * (w_cur - w_ok)
+            if iters >= max_iter:
+                return v, _NOCONV, iters, math.nan, math.nan
+            if h < h_min:
+                return v, last_bad, iters, math.nan, math.nan
+            advance = True
+        if advance:  # next continuation step from the last converged point, tangent predictor
+            w_new = min(w_ok + h, w_target)
+            inc = w_new * w_new - w_ok * w_ok
+            x1 = v_ok[0] + inc * tangent[0]
+            if v_ok[0] > 0:  # X1 > 0 extrapolated multiplicatively
+                x1 = v_ok[0] * math.exp(min(inc * tangent[0] / v_ok[0], 50.0))
+            v = (x1, v_ok[1] + inc * tangent[1], v_ok[2] + inc * tangent[2], v_ok[3] + inc * tangent[3],
+                 v_ok[4] + inc * tangent[4])
+            w_cur, k_stage, norm_prev, t = w_new, 0, math.inf, 1.0
+    return v, _NOCONV, iters, math.nan, math.nan
+
+
+_JITTED = ("cheb", "gauss5", "kinematics", "evaluate", "solve_one")
+
+
+def plain_solver():
+    """``solve_one`` with every helper it calls in plain Python (numba or not): the fair scalar baseline."""
+    space = dict(globals())
+    for name in _JITTED:
+        func = _py(space[name])
+        space[name] = types.FunctionType(func.__code__, space, name, func.__defaults__)
+    return space["solve_one"]
+
+
+_prange = range if numba is None else numba.prange
+
+
+def _loop(fa, w, v0, par, gid, kti, dti, kto, dto, tol, max_iter, h_max, v, status, iters):
+    for k in _prange(fa.size):  # parallel over the cases (each case is independent of the others)
+        g = gid[k]
+        vk, status[k], iters[k], _ai, _ae = solve_one(fa[k], w[k], v0[k], par[k], kti[g], dti[g], kto[g], dto[g],
+                                                      tol, max_iter, h_max)
+        for j in range(5):
+            v[k, j] = vk[j]
+
+
+if numba is not None:
+    _loop = numba.njit(parallel=True, cache=True)(_loop)
+_LOCK = threading.Lock()  # numba's default (workqueue) threading layer does not allow concurrent launches
+
+
+def case_parameters(model):
+    """``(par, gid, tables)``: per-case constants (n, 13), geometry index (n,), Hertz series (4 x (G, m))."""
+    cols = [model.z, model.d, model.dm, model.fi, model.fo, model.ax0, model.az, model.mass_c, model.inertia]
+    n = model.fa.size
+    par = np.column_stack(cols + [np.full(n, x) for x in (model.lam_i, model.lam_e, model.sign,
+                                                          1.0 if model.control == "inner" else 0.0)])
+    tables = [np.ascontiguousarray(np.atleast_2d(t), dtype=float) for t in (*model.t_inner["k"], *model.t_outer["k"])]
+    return np.ascontiguousarray(par, dtype=float), np.ascontiguousarray(model.gid, dtype=np.int64), tables
+
+
+def solve(model, w_target, v0, *, tol, max_iter, speed_step):
+    """All cases of ``model`` by the compiled kernel: unknowns (n, 5), status codes, Newton iterations.
+
+    The counterpart of :func:`~bearinglab.quasistatic.continuation._newton` on ``idx = arange(n)``.
+    """
+    par, gid, tables = case_parameters(model)
+    n = model.fa.size
+    v = np.empty((n, 5))
+    status, iters = np.empty(n, dtype=np.int64), np.empty(n, dtype=np.int64)
+    h_max = math.inf if speed_step is None else float(speed_step)
+    with _LOCK:
+        _loop(np.ascontiguousarray(model.fa, dtype=float), np.ascontiguousarray(w_target, dtype=float),
+              np.ascontiguousarray(v0, dtype=float), par, gid, *tables, float(tol), int(max_iter), h_max, v,
+              status, iters)
+    return v, status, iters
