@@ -50,9 +50,11 @@ def test_chunking_and_local_cluster_give_identical_results(sweep_file):
         got = sweep.run_sweep(spec, **kw)
         for k in ref:
             assert np.array_equal(ref[k], got[k], equal_nan=ref[k].dtype.kind == "f"), k
-    small = sweep.run_sweep(spec, chunk_size=1)
-    # Newton stops when every case of a chunk has converged, so other chunkings agree to the tolerance
-    np.testing.assert_allclose(small["operating_contact_angle_deg"], ref["operating_contact_angle_deg"], atol=1e-10)
+    # each case's Newton stops on its own convergence, so any chunking gives the same bits
+    for size in (1, 5):
+        small = sweep.run_sweep(spec, chunk_size=size)
+        for k in ref:
+            assert np.array_equal(ref[k], small[k], equal_nan=ref[k].dtype.kind == "f"), (size, k)
 
 
 def test_outputs_written_whole_csv_and_parquet(sweep_file, tmp_path):

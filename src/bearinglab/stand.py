@@ -416,6 +416,9 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
     x0 = first_approximation(fa / cs, a0)
     alpha = np.minimum(a0 + x0, 0.5 * (a0 + np.pi / 2))  # x0 can overshoot 90 deg at absurd loads
     alpha = np.array(np.broadcast_to(alpha, np.broadcast_shapes(fa.shape, cs.shape, a0.shape)), dtype=float)
+    # A converged case is frozen (its step set to zero) while the others go on, so that each case takes
+    # exactly the steps it would take alone: the result does not depend on the batch or chunk it sits in.
+    live = np.ones(alpha.shape, dtype=bool)
     for it in range(1, max_iter + 1):
         ca, sa = np.cos(alpha), np.sin(alpha)
         gap = cos_a0 - ca
@@ -423,17 +426,15 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
         thrust = cs * c * np.sqrt(c) * sa  # eq. (1)
         ratio = fa / thrust
         tan = sa / ca
-        dx = (np.cbrt(ratio * ratio) - 1.0) / (tan + (2.0 / 3.0) / tan + sa / gap)
+        dx = np.where(live, (np.cbrt(ratio * ratio) - 1.0) / (tan + (2.0 / 3.0) / tan + sa / gap), 0.0)
         alpha += dx
         # stay inside (alpha0, 90 deg): a step out of the domain is halved toward the boundary
         low, high = alpha <= a0, alpha >= np.pi / 2
         if low.any() or high.any():
             alpha = np.where(low, 0.5 * (alpha - dx + a0), alpha)
             alpha = np.where(high, 0.5 * (alpha - dx + np.pi / 2), alpha)
-        if np.max(np.abs(dx), initial=0.0) < xtol:
-            break
-        done = (np.abs(dx) < xtol) | (np.abs(ratio - 1.0) * 100.0 < ftol_percent)
-        if done.all():
+        live &= ~((np.abs(dx) < xtol) | (np.abs(ratio - 1.0) * 100.0 < ftol_percent))
+        if not live.any():
             break
     else:
         raise ConvergenceError("stand.operating_contact_angle", iterations=max_iter,
@@ -599,16 +600,36 @@ def constants_at_operating_angle(axial_load, n_balls, ball_diameter, pitch_diame
     args = (n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity)
     alpha = operating_contact_angle(fa, stand_constants(*args, a0, elastic_constant=elastic_constant)
                                     .force_characteristic, a0)
+    # Each case stops at its own fixed point (converged cases are frozen, constants and angle), so a case's
+    # result does not depend on the batch or chunk it is solved in.
+    live = np.ones(np.shape(alpha), dtype=bool)
+    final = None
     step = np.inf
     for it in range(1, int(max_iter) + 1):
         consts = stand_constants(*args, alpha, elastic_constant=elastic_constant)
         new = operating_contact_angle(fa, consts.force_characteristic, a0)
-        step = np.max(np.abs(new - alpha))
-        alpha = new
-        if step <= xtol:
-            return consts, alpha
+        moved = np.abs(new - alpha)
+        step = np.max(np.where(live, moved, 0.0), initial=0.0)
+        if final is None:
+            final = consts
+        else:  # frozen cases keep the constants of the iteration they converged in
+            final = _keep_frozen(live, consts, final)
+        alpha = np.where(live, new, alpha)
+        live &= moved > xtol
+        if not live.any():
+            return final, alpha[()]
     raise ConvergenceError("operating contact angle with the stiffness at the loaded angle", iterations=it,
                            residual=step, estimate=alpha)
+
+
+def _keep_frozen(live, new, old):
+    """``new`` where ``live``, else ``old``, field by field through nested named tuples; a 0-d field of a
+    batch does not depend on the case (it is the same in both) and keeps its shape."""
+    if isinstance(new, tuple):
+        return type(new)(*(_keep_frozen(live, a, b) for a, b in zip(new, old)))
+    if np.ndim(new) == 0 and np.ndim(live) > 0:
+        return new
+    return np.where(live, new, old)[()]
 
 
 class StandAnalysis(NamedTuple):

@@ -253,6 +253,8 @@ def contact_angle_under_thrust(axial_load, n_balls, ball_diameter, pitch_diamete
     alpha = a0 + first_approximation(fa / (z * kn0 * bd**1.5), a0)
     alpha = np.minimum(alpha, 0.5 * (a0 + np.pi / 2))
     h = 1e-7
+    # converged cases are frozen while the others go on: a case's angle does not depend on its batch or chunk
+    live = np.ones(np.shape(alpha), dtype=bool)
     for it in range(1, max_iter + 1):
         if stiffness_at == "free":
             kn, dlnk = kn0, 0.0
@@ -267,8 +269,9 @@ def contact_angle_under_thrust(axial_load, n_balls, ball_diameter, pitch_diamete
         new = alpha + dx
         new = np.where(new <= a0, 0.5 * (alpha + a0), new)
         new = np.where(new >= np.pi / 2, 0.5 * (alpha + np.pi / 2), new)
-        alpha = new
-        if np.all(np.abs(dx) < xtol):
+        alpha = np.where(live, new, alpha)
+        live &= np.abs(dx) >= xtol
+        if not live.any():
             break
     else:
         raise ConvergenceError("static.contact_angle_under_thrust", iterations=max_iter,
