@@ -434,3 +434,19 @@ def test_new_keys_are_checked(tmp_path, entry, message):
     f.write_text(f'[bearings."X"]\nballs = 9\nball_diameter = "7.94 mm"\n{entry}\n', encoding="utf-8")
     with pytest.raises(CatalogError, match=message):
         catalog.load_catalog(f)
+
+
+@pytest.mark.parametrize(("typed", "hint"), [("6205", "did you mean 6205-2RS?"), ("b21", "did you mean B218?"),
+                                             ("7218", "did you mean 7218B?")])
+def test_unknown_name_suggests_the_close_names(typed, hint):
+    with pytest.raises(CatalogError, match=re.escape(hint)):
+        catalog.get(typed)
+
+
+def test_unknown_name_in_a_long_catalog_points_to_catalog_list(tmp_path):
+    body = "".join(f'[bearings."X{i}"]\nbore = "{10 + i} mm"\noutside_diameter = "{40 + i} mm"\n' for i in range(25))
+    path = tmp_path / "big.toml"
+    path.write_text(body, encoding="utf-8")
+    with pytest.raises(CatalogError, match=r"did you mean X1\b.*catalog list` shows the 33 names") as err:
+        catalog.get("X1 ", catalog=path)
+    assert "X24" not in str(err.value)

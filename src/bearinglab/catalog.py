@@ -43,6 +43,7 @@ A user catalog is given by ``--catalog FILE`` or the environment variable ``BEAR
 
 from __future__ import annotations
 
+import difflib
 import functools
 import os
 import tomllib
@@ -395,7 +396,19 @@ def get(name, *, catalog=None):
     folded = {k.lower(): k for k in entries}
     if str(name).lower() in folded:
         return entries[folded[str(name).lower()]]
-    raise CatalogError(f"bearing: unknown name {name!r}; known: {', '.join(sorted(entries))}")
+    raise CatalogError(f"bearing: unknown name {name!r}; {_suggestions(str(name), sorted(entries))}")
+
+
+def _suggestions(name, known):
+    """The end of an unknown-name message: close names first (a designation typed without its suffix,
+    such as 6205 for 6205-2RS, or a typo), then every name while the list is short."""
+    key = name.lower()
+    close = [k for k in known if k.lower().startswith(key) or key.startswith(k.lower())]
+    close = close or difflib.get_close_matches(name, known, n=3, cutoff=0.6)
+    hint = f"did you mean {' or '.join(close[:3])}? " if close else ""
+    if len(known) <= 20:
+        return f"{hint}known: {', '.join(known)}"
+    return f"{hint}`bearinglab catalog list` shows the {len(known)} names"
 
 
 def aliases(*, catalog=None):
