@@ -109,6 +109,14 @@ def _positive(name, value, unit, *, optional=True):
         raise InputError(f"{name} must be > 0 [{unit}], got {value!r}")
 
 
+# What a user who lacks a field usually needs to know (catalogs rarely print the groove radii). The range is
+# the usual design range of ball-bearing conformities (Harris & Kotzalas, Rolling Bearing Analysis, ch. 2).
+_MISSING_HINTS = {
+    "inner_conformity": "; the inner groove radius over the ball diameter, usually 0.515 to 0.53",
+    "outer_conformity": "; the outer groove radius over the ball diameter, usually 0.52 to 0.54",
+}
+
+
 @dataclass(frozen=True)
 class BallBearing:
     """Internal geometry, envelope and materials of a single-row ball bearing (SI units).
@@ -327,7 +335,8 @@ class BallBearing:
             value = getattr(self, name)
             if value is None:
                 label = self.designation or "this bearing"
-                raise InputError(f"{name} of {label!r} is not known; give it (catalog entry, file or option)")
+                hint = _MISSING_HINTS.get(name, "")
+                raise InputError(f"{name} of {label!r} is not known; give it (catalog entry, file or option){hint}")
             out.append(value)
         return out[0] if len(out) == 1 else tuple(out)
 
