@@ -684,7 +684,8 @@ def _outputs(geo, loads, w, u, ok, it):
 
 
 def _notes(geo, loads, w, out, ok):
-    """The warnings of a solved batch (light load, low-shoulder contact, friction)."""
+    """The warnings of a solved batch (light load, low-shoulder contact, friction); ``loads`` None for a
+    bearing in a set (its mates hold it axially, so only its balls' angles are judged)."""
     msgs = []
     sel = np.flatnonzero(ok & (w > 0))
     if sel.size:
@@ -701,12 +702,29 @@ def _notes(geo, loads, w, out, ok):
             msgs.append(f"outer-raceway control needs a friction coefficient up to {np.max(mu):.3g} > "
                         f"{FRICTION_WARNING_LIMIT:g} (case {sel[k]}): the balls would spin or skid")
     if geo.kind == "angular":
-        low = np.any((out["ball_load_inner"] > 0) & (out["contact_angle_inner"] < 0), axis=1) & ok
-        if low.any():
-            msgs.append(f"{int(low.sum())} case(s) load balls at a negative contact angle, against the low "
-                        f"shoulder of an angular-contact bearing (first: case {int(np.flatnonzero(low)[0])}); "
-                        "the model assumes a full groove there")
+        msgs += _angular_notes(loads, out, ok)
     return tuple(msgs)
+
+
+def _angular_notes(loads, out, ok):
+    """Warnings of a single angular-contact bearing: no thrust to hold its balls on the high shoulder, and
+    balls loaded at a negative contact angle (against its low shoulder)."""
+    msgs = []
+    unheld = np.zeros_like(ok) if loads is None else ok & (loads[:, 2] <= 0) & np.any(loads != 0, axis=1)
+    if unheld.any():
+        k = int(np.flatnonzero(unheld)[0])
+        msgs.append(f"{int(unheld.sum())} case(s) load a single angular-contact bearing with a thrust F_z <= 0 "
+                    f"(first: case {k}, F_z = {loads[k, 2] + 0.0:.6g} N): it cannot carry them as an "
+                    "angular-contact bearing, which needs a thrust F_z > 0 to hold its balls on the high "
+                    "shoulder; without one they run on the groove bottom (alpha = 0) or against the low "
+                    "shoulder, which this full-groove solution does not check (add the thrust, turn the "
+                    "bearing round, or mount it in a set)")
+    low = np.any((out["ball_load_inner"] > 0) & (out["contact_angle_inner"] < 0), axis=1) & ok
+    if low.any():
+        msgs.append(f"{int(low.sum())} case(s) load balls at a negative contact angle, against the low "
+                    f"shoulder of an angular-contact bearing (first: case {int(np.flatnonzero(low)[0])}); "
+                    "the model assumes a full groove there")
+    return msgs
 
 
 def _flat_inputs(loads, shaft_speed):
@@ -759,8 +777,13 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
         Which raceway resists the gyroscopic moment (spec 004, lambda_i, lambda_o).
     bearing_type : {"radial", "angular"}, optional
         An angular-contact bearing warns when a ball is loaded at a negative contact angle (against its
-        low shoulder), and refuses a negative thrust F_z < 0 as physically impossible (``physical``
-        :class:`~bearinglab.errors.ConvergenceError`, or flagged).
+        low shoulder), and when it carries any load with a thrust F_z <= 0: a single angular-contact
+        bearing carries a radial load or a moment as one only together with a thrust F_z > 0 that holds its
+        balls on the high shoulder. Such loads are solved with the full groove (the solution is continuous
+        through F_z = 0: a radial load alone puts every ball at alpha = 0, a negative thrust puts them on
+        the low shoulder) and the warning says the real bearing cannot be trusted to carry them, which is
+        what MESYS and MASTA show (a full-groove solution with a shoulder warning; their contact-ellipse
+        check against the shoulder height needs shoulder data this model does not have).
     on_failure : {"raise", "flag"}, optional
         Raise :class:`~bearinglab.errors.ConvergenceError` if any case fails (default), or return NaN
         and ``converged`` False for it.
@@ -813,9 +836,7 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     max_iter = int(check_integer("max_iter", max_iter, 1))
     geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
                     reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, bearing_type)
-    u, ok, it = np.full(f.shape, np.nan), np.zeros(len(f), dtype=bool), np.zeros(len(f), dtype=int)
-    possible = np.flatnonzero(~_impossible(geo, f))
-    u[possible], ok[possible], it[possible] = _solve(geo, f[possible], w[possible] ** 2, tol, max_iter)
+    u, ok, it = _solve(geo, f, w**2, tol, max_iter)
     out = _outputs(geo, f, w, u, ok, it)
     ok &= out["residual"] <= np.maximum(tol, out.pop("floor"))
     if not ok.all():
@@ -841,16 +862,10 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
                                                and (k != "azimuth" or z)})
 
 
-def _impossible(geo, loads):
-    """Cases without a physical solution: a negative thrust on a single angular-contact bearing."""
-    return (loads[:, 2] < 0) if geo.kind == "angular" else np.zeros(len(loads), dtype=bool)
-
-
 def _failures(geo, loads, w, u, ok):
     """{case: (reason, physical)} for every failed case, in case order, judged at the last rest iterate."""
     bad = np.flatnonzero(~ok)
-    imp = _impossible(geo, loads[bad])
-    solved = bad[~imp & np.all(np.isfinite(u[bad]), axis=1)]
+    solved = bad[np.all(np.isfinite(u[bad]), axis=1)]
     loaded, inv_cond, floor = (np.zeros(len(loads)) for _ in range(3))
     if solved.size:
         force, stiff, balls = _evaluate(geo, u[solved], np.zeros(solved.size))
@@ -860,12 +875,8 @@ def _failures(geo, loads, w, u, ok):
         inv_cond[solved] = sv[:, -1] / np.maximum(sv[:, 0], 1e-300)
         floor[solved] = _measure(geo, loads[solved], force, balls)[2]
     out = {}
-    for k, impossible in zip(bad, imp, strict=True):
-        if impossible:
-            out[k] = ((f"F_z = {loads[k, 2]:.6g} N < 0 on a single angular-contact bearing loads the balls "
-                       "against its low shoulder: there is no equilibrium (turn the bearing round, or mount "
-                       "it in a set)"), True)
-        elif floor[k] >= _RESOLVABLE:
+    for k in bad:
+        if floor[k] >= _RESOLVABLE:
             out[k] = (("loads too light to resolve: ball deflections are so small against the groove distance "
                        f"that rounding alone leaves a relative residual above {_RESOLVABLE:g}"), False)
         elif k in solved and (loaded[k] <= 3 or inv_cond[k] < 1e-4):
