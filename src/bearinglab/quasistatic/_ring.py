@@ -41,35 +41,40 @@ def rowwise(a, b):
     return a @ b
 
 
-def solve5(a, b):
-    """Solve a x = b for stacks of 5 x 5 systems, a (n, 5, 5), b (n, 5); x (n, 5).
+def solve5(a, b, shift=None):
+    """Solve (a + shift I) x = b for stacks of 5 x 5 systems, a (n, 5, 5), b (n, 5), shift (n,); x (n, 5).
 
     Gaussian elimination without pivoting, vectorised over the systems; a system with a pivot below
     ``_PIVOT`` times its largest diagonal entry, or a non-finite result, is solved again by
     :func:`numpy.linalg.solve` (LU with partial pivoting).
     """
-    m = [[a[:, i, j].copy() for j in range(5)] for i in range(5)]
+    m = [[a[:, i, j] + shift if i == j and shift is not None else a[:, i, j].copy() for j in range(5)]
+         for i in range(5)]
     r = [b[:, i].copy() for i in range(5)]
-    scale = np.max(np.abs(np.diagonal(a, axis1=1, axis2=2)), axis=1)
+    scale = np.abs(m[0][0])
+    for i in range(1, 5):
+        scale = np.maximum(scale, np.abs(m[i][i]))
     weak = np.zeros(len(b), dtype=bool)
-    for k in range(5):
-        weak |= ~(np.abs(m[k][k]) > _PIVOT * scale)
-        inv = 1.0 / m[k][k]
-        for i in range(k + 1, 5):
-            f = m[i][k] * inv
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # such systems go to LAPACK below
+        for k in range(5):
+            weak |= ~(np.abs(m[k][k]) > _PIVOT * scale)
+            inv = 1.0 / m[k][k]
+            for i in range(k + 1, 5):
+                f = m[i][k] * inv
+                for j in range(k + 1, 5):
+                    m[i][j] -= f * m[k][j]
+                r[i] -= f * r[k]
+        x = [None] * 5
+        for k in range(4, -1, -1):
+            s = r[k]
             for j in range(k + 1, 5):
-                m[i][j] -= f * m[k][j]
-            r[i] -= f * r[k]
-    x = [None] * 5
-    for k in range(4, -1, -1):
-        s = r[k]
-        for j in range(k + 1, 5):
-            s = s - m[k][j] * x[j]
-        x[k] = s / m[k][k]
+                s = s - m[k][j] * x[j]
+            x[k] = s / m[k][k]
     out = np.stack(x, axis=1)
     weak |= ~np.all(np.isfinite(out), axis=1)
     if weak.any():
-        out[weak] = np.linalg.solve(a[weak], b[weak][:, :, None])[:, :, 0]
+        aw = a[weak] + (0.0 if shift is None else shift[weak][:, None, None] * np.eye(5))
+        out[weak] = np.linalg.solve(aw, b[weak][:, :, None])[:, :, 0]
     return out
 
 
@@ -80,11 +85,10 @@ def lm_step(stiff, residual, lam, dm):
     balls loaded, or none) gets a floor of 1e-14 max|diag K|.
     """
     sc = np.array([1.0, 1.0, 1.0, 2.0 / dm, 2.0 / dm])
-    ks = stiff * sc[None, :, None] * sc[None, None, :]
+    ks = stiff * (sc[:, None] * sc[None, :])
     diag = np.max(np.abs(np.diagonal(ks, axis1=1, axis2=2)), axis=1)
     diag = np.where(diag > 0, diag, 1.0)
-    ks = ks + (np.maximum(lam, 1e-14) * diag)[:, None, None] * np.eye(5)
-    return solve5(ks, residual * sc) * sc
+    return solve5(ks, residual * sc, np.maximum(lam, 1e-14) * diag) * sc
 
 
 def thrust_offset(per_ball, big_a, free_angle, radial_offset, kn0):

@@ -98,6 +98,7 @@ _RESOLVABLE = 1e-9  # issue 11: every returned case in equilibrium to 1e-9 relat
 _NOISE = 4.0  # a residual within this many rounding floors (see _measure) is converged
 _CHUNK = 2048  # cases per pass of the rest Newton (see _rest_newton)
 _BALL_OUT = ("qi", "qo", "ai", "ao", "mg", "fc")  # ball loads, angles, gyroscopic moments, F_c, per case
+_AT_REST = {"qi": "qi", "qo": "qi", "ai": "ai", "ao": "ai"}  # at rest both contacts share load and angle
 
 
 # --------------------------------------------------------------------------- geometry
@@ -528,13 +529,13 @@ def _predict(geo, x, dxdg, du):
     return np.where(keep[..., None], xp, x)
 
 
-def _newton(geo, loads, w2, u0, x0, tol, max_iter):
+def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=()):
     """Damped Newton (Levenberg-Marquardt) on the ring equilibrium, all cases together.
 
     Each case has its own damping: it falls tenfold after a full step and rises when the line search
     on |F - F(u)| has to cut the step. Returns u, converged, iterations, the ball centres at speed, and
-    the last accepted evaluation of every case (``_FINAL``: relative residual, rounding floor, stiffness,
-    ball loads and angles), which is the evaluation at the returned u.
+    the last accepted evaluation of every case, which is the evaluation at the returned u: relative
+    residual, rounding floor, stiffness and the ball fields named in ``keep``.
     """
     n = len(loads)
     u = u0.copy()
@@ -544,13 +545,13 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter):
     norm, rel, floor = _measure(geo, loads, force, balls)
     done = (rel <= np.maximum(tol, floor)) & np.all(balls["ok"], axis=1)
     x, dxdg = balls.get("x"), balls.get("dxdg")
-    final = {k: np.array(balls[k], dtype=float) for k in _BALL_OUT}
+    final = {k: np.array(balls[k], dtype=float) for k in keep}
     for _ in range(max_iter):
         act = np.flatnonzero(~done & (it < max_iter) & (lam <= _LAM_MAX))
         if act.size == 0:
             break
         it[act] += 1
-        du = _ring.lm_step(stiff[act], (loads - force)[act], lam[act], geo.dm)
+        du = _ring.lm_step(stiff[act], loads[act] - force[act], lam[act], geo.dm)
         # trust region: no groove centre moves by more than A / 2 in one step
         move = np.maximum(np.max(np.abs(_ring.rowwise(du, geo.ja.T)), axis=1),
                           np.max(np.abs(_ring.rowwise(du, geo.jr.T)), axis=1))
@@ -566,11 +567,11 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter):
             n_t, r_t, fl_t = _measure(geo, loads[sel], f_t, b_t)
             conv_t = r_t <= np.maximum(tol, fl_t)
             good = ((n_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | conv_t) & np.all(b_t["ok"], axis=1)
-            g = sel[good]
-            u[g], force[g], stiff[g], norm[g], rel[g] = trial[good], f_t[good], k_t[good], n_t[good], r_t[good]
-            floor[g] = fl_t[good]
-            for key in _BALL_OUT:
-                final[key][g] = b_t[key][good]
+            g, kk = sel[good], (slice(None) if good.all() else good)  # a view, not a copy, when all are good
+            u[g], force[g], stiff[g], norm[g], rel[g] = trial[kk], f_t[kk], k_t[kk], n_t[kk], r_t[kk]
+            floor[g] = fl_t[kk]
+            for key in keep:
+                final[key][g] = b_t[key][kk]
             if x is not None:
                 x[g], dxdg[g] = b_t["x"][good], b_t["dxdg"][good]
             pending = pending[~good]
@@ -593,7 +594,8 @@ def _rest_newton(geo, loads, tol, max_iter):
     batch); each pass's arrays stay in the processor's cache and off the operating system's page faults."""
     n = len(loads)
     if n <= _CHUNK:
-        u, ok, it, _, last = _newton(geo, loads, np.zeros(n), _start(geo, loads), None, tol, max_iter)
+        u, ok, it, _, last = _newton(geo, loads, np.zeros(n), _start(geo, loads), None, tol, max_iter,
+                                     keep=("qi", "ai"))
         return u, ok, it, last
     parts = [_rest_newton(geo, loads[lo:lo + _CHUNK], tol, max_iter) for lo in range(0, n, _CHUNK)]
     last = {k: np.concatenate([p[3][k] for p in parts]) for k in parts[0][3]}
@@ -677,8 +679,9 @@ def _at_solution(geo, loads, w, u, sel, final):
     res = {k: np.empty((sel.size, geo.z)) for k in _BALL_OUT}
     res.update(residual=np.empty(sel.size), floor=np.empty(sel.size), stiffness=np.empty((sel.size, 5, 5)))
     if have.any():
+        last, rows = final[1], sel[have]
         for k, v in res.items():
-            v[have] = final[1][k][sel[have]]
+            v[have] = last[_AT_REST.get(k, k)][rows] if k in last or k in _AT_REST else 0.0  # F_c = M_g = 0
     if not have.all():
         fresh = sel[~have]
         force, stiff, balls = _evaluate(geo, u[fresh], w[fresh] ** 2)
