@@ -74,7 +74,7 @@ def test_thrust_offset_matches_an_independent_root(bearing):
 
     z0 = big_a * math.sin(a0)
     ref = [brentq(carried, z0, z0 + bearing.ball_diameter, args=(p,), xtol=1e-22, rtol=1e-15) for p in per_ball]
-    assert_allclose(got, ref, rtol=1e-8)  # a start: six Newton steps reach ~1e-9
+    assert_allclose(got, ref, rtol=1e-8)  # a start: five Newton steps reach ~1e-8
     assert _ring.thrust_offset(np.zeros(1), big_a, a0, g, kn)[0] == 0.0
 
 

@@ -26,7 +26,7 @@ import numpy as np
 __all__ = ["lm_step", "rowwise", "solve5", "thrust_offset"]
 
 _PIVOT = 1e-10  # a pivot below this fraction of the largest diagonal entry goes to LAPACK (partial pivoting)
-_START_ITER = 6  # Newton steps of the thrust offset (a start only; see thrust_offset)
+_START_ITER = 5  # Newton steps of the thrust offset (a start only; see thrust_offset)
 
 
 def rowwise(a, b):
@@ -48,8 +48,15 @@ def solve5(a, b, shift=None):
     ``_PIVOT`` times its largest diagonal entry, or a non-finite result, is solved again by
     :func:`numpy.linalg.solve` (LU with partial pivoting).
     """
-    m = [[a[:, i, j] + shift if i == j and shift is not None else a[:, i, j].copy() for j in range(5)]
-         for i in range(5)]
+    return _eliminate([[a[:, i, j].copy() for j in range(5)] for i in range(5)], b, shift, a.__getitem__)
+
+
+def _eliminate(m, b, shift, matrices):
+    """:func:`solve5` on the columns ``m[i][j]`` (contiguous copies of a[:, i, j], overwritten);
+    ``matrices(rows)`` gives the (k, 5, 5) matrices of the rows that go to LAPACK."""
+    if shift is not None:
+        for i in range(5):
+            m[i][i] += shift
     r = [b[:, i].copy() for i in range(5)]
     scale = np.abs(m[0][0])
     for i in range(1, 5):
@@ -73,7 +80,7 @@ def solve5(a, b, shift=None):
     out = np.stack(x, axis=1)
     weak |= ~np.all(np.isfinite(out), axis=1)
     if weak.any():
-        aw = a[weak] + (0.0 if shift is None else shift[weak][:, None, None] * np.eye(5))
+        aw = matrices(weak) + (0.0 if shift is None else shift[weak][:, None, None] * np.eye(5))
         out[weak] = np.linalg.solve(aw, b[weak][:, :, None])[:, :, 0]
     return out
 
@@ -84,11 +91,15 @@ def lm_step(stiff, residual, lam, dm):
     Moments and tilts are scaled by the pitch radius d_m/2. A K that is singular (fewer than three
     balls loaded, or none) gets a floor of 1e-14 max|diag K|.
     """
-    sc = np.array([1.0, 1.0, 1.0, 2.0 / dm, 2.0 / dm])
-    ks = stiff * (sc[:, None] * sc[None, :])
-    diag = np.max(np.abs(np.diagonal(ks, axis1=1, axis2=2)), axis=1)
+    sc = [1.0, 1.0, 1.0, 2.0 / dm, 2.0 / dm]
+    m = [[stiff[:, i, j] * (sc[i] * sc[j]) for j in range(5)] for i in range(5)]  # scaled columns
+    diag = np.abs(m[0][0])
+    for i in range(1, 5):
+        diag = np.maximum(diag, np.abs(m[i][i]))
     diag = np.where(diag > 0, diag, 1.0)
-    return solve5(ks, residual * sc, np.maximum(lam, 1e-14) * diag) * sc
+    sv = np.array(sc)
+    return _eliminate(m, residual * sv, np.maximum(lam, 1e-14) * diag,
+                      lambda rows: stiff[rows] * (sv[:, None] * sv[None, :])) * sv
 
 
 def thrust_offset(per_ball, big_a, free_angle, radial_offset, kn0):
@@ -98,7 +109,8 @@ def thrust_offset(per_ball, big_a, free_angle, radial_offset, kn0):
     P^(2/3) = K_n^(2/3) (rho - A) (z / rho)^(2/3), which is close to linear in z. The root lies between
     the zero-clearance estimate (rho - A = z^2 / 2A) and the small-deflection one (rho - A = s0 (z - z0),
     z / rho = s0, s0 = sin alpha0); the Newton starts from the smaller of the latter and twice the former,
-    kept to the right of first contact z0 = A sin alpha0. A start only: ``_START_ITER`` steps.
+    kept to the right of first contact z0 = A sin alpha0. A start only:
+    ``_START_ITER`` steps reach 1e-8 relative (as the bisection they replaced).
     """
     g = radial_offset
     z0 = big_a * math.sin(free_angle)

@@ -552,9 +552,9 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=()):
             break
         it[act] += 1
         du = _ring.lm_step(stiff[act], loads[act] - force[act], lam[act], geo.dm)
-        # trust region: no groove centre moves by more than A / 2 in one step
-        move = np.maximum(np.max(np.abs(_ring.rowwise(du, geo.ja.T)), axis=1),
-                          np.max(np.abs(_ring.rowwise(du, geo.jr.T)), axis=1))
+        # trust region: no groove centre moves by more than A / 2 in one step (bounded over the balls:
+        # axial |dz| + d_m/2 |tilt|, radial |(dx, dy)|)
+        move = np.maximum(np.abs(du[:, 2]) + geo.dm / 2.0 * np.hypot(du[:, 3], du[:, 4]), np.hypot(du[:, 0], du[:, 1]))
         with np.errstate(divide="ignore"):
             t = np.minimum(1.0, 0.5 * geo.big_a / move)
         full = t == 1.0
