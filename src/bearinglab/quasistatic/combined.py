@@ -792,9 +792,9 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     Raises
     ------
     ConvergenceError
-        With ``on_failure="raise"``, when a case does not converge or has no solution; its reason says
-        why (negative thrust on an angular-contact bearing, loads too light to resolve, a ring that moves
-        through its clearance almost as a mechanism, or a stalled iteration). With ``on_failure="flag"``
+        With ``on_failure="raise"``, when a case does not converge; its reason says why (loads too light
+        to resolve, a ring that moves through its clearance almost as a mechanism, or a stalled
+        iteration). With ``on_failure="flag"``
         the same reasons are in ``warnings``.
 
     Notes
