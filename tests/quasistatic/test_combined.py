@@ -137,8 +137,8 @@ def awkward_loads(draw, scale, arm):
 @given(data=st.data(), case=st.sampled_from(PROPERTY_BEARINGS))
 def test_every_case_is_in_equilibrium_or_flagged_with_a_reason(data, case):
     """Issue 11: every returned case has a relative residual <= 1e-9 and no negative ball load; any other case is
-    flagged (converged False, NaN) with a reason among the warnings. A negative thrust on a single
-    angular-contact bearing is never solved. Six cases per call, so the batched path is exercised too."""
+    flagged (converged False, NaN) with a reason among the warnings. A thrust F_z <= 0 on a single
+    angular-contact bearing is warned about. Six cases per call, so the batched path is exercised too."""
     bearing, scale, w = case
     arm = bearing.pitch_diameter / 2
     loads = np.array(data.draw(st.lists(awkward_loads(scale, arm), min_size=6, max_size=6)))
@@ -150,8 +150,8 @@ def test_every_case_is_in_equilibrium_or_flagged_with_a_reason(data, case):
     miss = np.linalg.norm((_sums(r, arm) - loads) * arms, axis=-1)[ok]
     size = np.maximum(np.linalg.norm(loads * arms, axis=-1), np.sum(r.ball_load_inner, axis=-1))[ok]
     assert np.all(miss <= 1.01e-9 * size)  # recomputed from the returned loads and angles (rounding: 1 %)
-    if bearing.type == "angular":
-        assert not np.any(ok & (loads[:, 2] < 0))
+    if bearing.type == "angular" and np.any(ok & (loads[:, 2] <= 0) & np.any(loads != 0, axis=1)):
+        assert any("thrust F_z <= 0" in m for m in r.warnings)
     assert np.all(np.isnan(r.displacement[~ok])) and np.all(np.isnan(r.ball_load_inner[~ok]))
     flagged = [m for m in r.warnings if "not converged" in m]
     assert sum(int(m.split()[0]) for m in flagged) == int((~ok).sum())  # every failure counted once ...
@@ -279,15 +279,43 @@ def test_angular_contact_ball_on_the_low_shoulder_is_warned_about():
     assert not combined.combined_analysis(DEEP, [1500.0, 0, -200.0, 0, 0]).warnings
 
 
-def test_negative_thrust_on_a_single_angular_contact_bearing_is_impossible():
-    """F_z < 0 pushes the balls of an angular-contact bearing over its low shoulder: refused, not solved."""
-    with pytest.raises(ConvergenceError, match="low shoulder") as err:
-        combined.combined_analysis(ANGULAR, [1500.0, 0, -200.0, 0, 0])
-    assert err.value.physical
-    r = combined.combined_analysis(ANGULAR, [[1500.0, 0, -1e-9, 0, 0], [1500.0, 0, 200.0, 0, 0]], on_failure="flag")
-    assert r.converged.tolist() == [False, True] and np.all(np.isnan(r.ball_load_inner[0]))
-    assert any("F_z = -1e-09 N < 0" in m for m in r.warnings)
-    assert combined.combined_analysis(DEEP, [1500.0, 0, -200.0, 0, 0]).converged  # a deep groove takes it
+@pytest.mark.parametrize("fz", [-1.0, 0.0, 1.0])
+@pytest.mark.parametrize("other", [[1000.0, 0.0, 0.0, 0.0], [0.0, 0.0, 3.0, 0.0]], ids=["radial", "moment"])
+def test_angular_contact_thrust_rule_has_no_jump_at_zero(fz, other):
+    """A radial load or a moment on a single angular-contact bearing needs F_z > 0 to be carried as one.
+    Every side of F_z = 0 is solved with the full groove, in equilibrium, and the answer is continuous
+    through F_z = 0; F_z <= 0 is warned about (F_z = 0 used to return every ball at alpha = 0 silently),
+    and so is any ball loaded at a negative contact angle."""
+    loads = np.array([other[0], other[1], fz, other[2], other[3]])
+    r = combined.combined_analysis(ANGULAR, loads)
+    assert r.converged and r.residual <= 1e-9 and np.all(r.ball_load_inner >= 0.0)
+    assert_allclose(_sums(r, ANGULAR.pitch_diameter / 2), loads, rtol=0, atol=1e-9 * 1000.0)
+    unheld = [m for m in r.warnings if "thrust F_z <= 0" in m]
+    assert len(unheld) == (fz <= 0)
+    assert all("cannot carry them as an angular-contact bearing" in m for m in unheld)
+    low = np.any((r.ball_load_inner > 0) & (r.contact_angle_inner < 0))
+    assert low == any("negative contact angle" in m for m in r.warnings)
+    if fz < 0:
+        assert low  # the balls are pushed onto the low shoulder
+    # continuity: a thousandth of the thrust changes the displacement by little (no jump at F_z = 0)
+    near = combined.combined_analysis(ANGULAR, loads * [1, 1, 1e-3, 1, 1] + [0, 0, 1e-3 * (fz == 0), 0, 0])
+    zero = combined.combined_analysis(ANGULAR, loads * [1, 1, 0, 1, 1])
+    assert_allclose(near.displacement[:2], zero.displacement[:2], rtol=0, atol=2e-3 * np.abs(zero.displacement).max())
+
+
+def test_negative_thrust_on_a_single_angular_contact_bearing_is_warned_about():
+    """F_z < 0 pushes the balls of an angular-contact bearing onto its low shoulder: solved with the full
+    groove, flagged in the warnings; a deep-groove bearing takes it without a word."""
+    r = combined.combined_analysis(ANGULAR, [[1500.0, 0, -200.0, 0, 0], [1500.0, 0, 200.0, 0, 0]])
+    assert r.converged.all() and np.all(r.contact_angle_inner[0][r.ball_load_inner[0] > 0] < 0)
+    assert any("1 case(s) load a single angular-contact bearing with a thrust F_z <= 0 (first: case 0, "
+               "F_z = -200 N)" in m for m in r.warnings)
+    assert not combined.combined_analysis(DEEP, [1500.0, 0, -200.0, 0, 0]).warnings
+
+
+def test_angular_contact_without_any_load_is_concentric():
+    r = combined.combined_analysis(ANGULAR, np.zeros(5))
+    assert r.converged and np.all(r.displacement == 0.0) and np.all(r.ball_load_inner == 0.0)
 
 
 def test_nearly_pure_radial_load_on_angular_contact_converges():

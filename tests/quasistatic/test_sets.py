@@ -10,6 +10,7 @@ from bearinglab import catalog
 from bearinglab.bearing import BallBearing
 from bearinglab.errors import InputError
 from bearinglab.quasistatic import combined, sets
+from bearinglab.quasistatic.contact import contact_stiffness
 from bearinglab.units import RPM
 
 B218 = catalog.get("B218")
@@ -35,10 +36,62 @@ def test_db_pair_is_stiffer_in_tilt_than_df_at_the_same_preload():
     assert_allclose(k["DB"][[0, 1, 2], [0, 1, 2]], k["DF"][[0, 1, 2], [0, 1, 2]], rtol=1e-9)  # same at the centre
 
 
-def test_displacement_preload_equals_the_force_preload_it_produces():
-    f = sets.set_analysis(SPINDLE, np.zeros(5), spacing=0.05, preload=300.0)
-    d = sets.set_analysis(SPINDLE, np.zeros(5), spacing=0.05, preload_displacement=f.preload_displacement)
-    assert_allclose(np.abs(d.bearing_loads[:, 2]), 300.0, rtol=1e-9)
+@pytest.mark.parametrize(("bearing", "kind", "n"), [(SPINDLE, "DB", 2), (SPINDLE, "DF", 2), (B218, "DB", 2),
+                                                   (SPINDLE, "DB", 4)])
+def test_displacement_preload_equals_the_force_preload_it_produces(bearing, kind, n):
+    """Round trip: the interference a force preload produces, fed back as an offset, gives the force back."""
+    f = sets.set_analysis([bearing] * n, np.zeros(5), arrangement_kind=kind, spacing=0.05, preload=300.0)
+    assert f.preload_displacement > 0
+    d = sets.set_analysis([bearing] * n, np.zeros(5), arrangement_kind=kind, spacing=0.05,
+                          preload_displacement=f.preload_displacement)
+    share = 300.0 / (n // 2)
+    assert_allclose(np.abs(d.bearing_loads[:, 2]), share, rtol=1e-12)  # rounding of the offsets only
+    assert_allclose(d.displacement, 0.0, atol=1e-15) and not d.warnings
+
+
+def _thrust_at_offset(bearing, axial):
+    """Axial load of one bearing whose groove-curvature centres are offset axially by ``axial`` (all balls at
+    one angle), from the exact Hertz constants: Q = K_n (rho - A)^1.5, F_a = Z Q sin(alpha)."""
+    big_a = (bearing.inner_conformity + bearing.outer_conformity - 1.0) * bearing.ball_diameter
+    radial = big_a * math.cos(bearing.contact_angle)
+    rho, alpha = math.hypot(axial, radial), math.atan2(axial, radial)
+    k = contact_stiffness(alpha, alpha, bearing.ball_diameter, bearing.pitch_diameter, bearing.inner_conformity,
+                          bearing.outer_conformity, bearing.reduced_modulus)
+    kn = (k.inner ** (-2 / 3) + k.outer ** (-2 / 3)) ** -1.5
+    return bearing.n_balls * kn * max(rho - big_a, 0.0) ** 1.5 * math.sin(alpha)
+
+
+@pytest.mark.parametrize("bearing", [SPINDLE, B218])
+def test_preload_offset_is_measured_from_first_contact(bearing):
+    """A spacer offset e of a DB pair is measured from the position where the balls first touch (MESYS,
+    MASTA): each bearing is pressed e / 2 beyond its first-contact offset A sin(alpha0). A few um preload
+    the set, more preloads it more; each bearing's thrust matches the Hertz thrust at that offset."""
+    big_a = (bearing.inner_conformity + bearing.outer_conformity - 1.0) * bearing.ball_diameter
+    touch = big_a * math.sin(bearing.contact_angle)
+    assert touch > 20e-6  # the clearance that a groove-centred offset of a few um would not take up
+    thrusts = []
+    for e in (1e-6, 2e-6, 5e-6):
+        s = sets.set_analysis(bearing, np.zeros(5), arrangement_kind="DB", spacing=0.1, preload_displacement=e)
+        assert s.converged and not s.warnings and s.preload_displacement == e
+        fa = s.bearing_loads[:, 2]
+        assert fa[0] > 0 and fa[1] == pytest.approx(-fa[0], rel=1e-12)
+        assert_allclose(fa[0], _thrust_at_offset(bearing, touch + e / 2), rtol=1e-9)  # interpolant: ~1e-13
+        assert np.all(s.bearings[0]["ball_load_inner"] > 0)
+        thrusts.append(fa[0])
+    assert thrusts[0] < thrusts[1] < thrusts[2]
+    zero = sets.set_analysis(bearing, np.zeros(5), spacing=0.1, preload_displacement=0.0)
+    assert_allclose(zero.bearing_loads, 0.0, atol=1e-9)  # zero preload: touching, unloaded
+
+
+def test_a_bearing_without_load_is_warned_about():
+    play = sets.set_analysis(SPINDLE, np.zeros(5), spacing=0.05, preload_displacement=-2e-6)
+    assert play.converged and np.all(play.bearing_loads == 0.0)
+    assert sum("carries no load at all" in m for m in play.warnings) == 2
+    loads = [[0.0, 0.0, 50.0, 0.0, 0.0], [0.0, 0.0, 3000.0, 0.0, 0.0]]  # the second lifts bearing 1 off
+    s = sets.set_analysis(SPINDLE, loads, spacing=0.05, preload=200.0)
+    assert s.converged.all() and np.all(s.bearing_loads[0, :, 2] != 0.0) and s.bearing_loads[1, 1, 2] == 0.0
+    idle = [m for m in s.warnings if "no load" in m]
+    assert len(idle) == 1 and idle[0].startswith("bearing 1 carries no load at all in 1 case(s) (first: case 1)")
 
 
 @pytest.mark.parametrize("w", [0.0, 12000 * RPM])
@@ -75,4 +128,6 @@ def test_arrangements_and_inputs():
         sets.arrangement("XX", 0.1)
     with pytest.raises(InputError, match="tandem"):
         sets.set_analysis(SPINDLE, np.zeros(5), arrangement_kind="DT", preload=100.0)
+    with pytest.raises(InputError, match="preload_displacement.*tandem"):
+        sets.set_analysis(SPINDLE, np.zeros(5), arrangement_kind="DT", preload_displacement=5e-6)
 

@@ -101,6 +101,10 @@ def _independent(bearing, loads, start):
         return (sums - np.asarray(loads)) / 1000.0
 
     sol = root(equations, start / np.array([1e-6, 1e-6, 1e-6, 1e-3, 1e-3]), method="hybr", tol=1e-14)
+    for _ in range(3):  # hybr can stop at machine precision on "xtol too small" (it depends on the last bit
+        if sol.success:  # of the start): restarting from its last point lets it confirm the root
+            break
+        sol = root(equations, sol.x, method="hybr", tol=1e-14)
     assert sol.success, sol.message
     u = sol.x * np.array([1e-6, 1e-6, 1e-6, 1e-3, 1e-3])
     return u, ball_loads(u)[0]

@@ -45,6 +45,7 @@ References
 
 from __future__ import annotations
 
+import functools
 import math
 from typing import NamedTuple
 
@@ -55,7 +56,9 @@ from .. import geometry, hertz
 from .._validate import as_float, check_integer, check_nonnegative, check_positive
 from ..errors import ConvergenceError, InputError
 from ..units import RPM
-from .ball import FRICTION_WARNING_LIMIT, RACEWAY_CONTROLS, _dynamics
+from . import _ring
+from ._combined_notes import notes as _notes
+from .ball import RACEWAY_CONTROLS, _dynamics
 from .contact import contact_stiffness
 from .light_load import LightLoad, light_load, light_load_warnings
 
@@ -93,6 +96,9 @@ _CONTINUATION = (1, 4, 16)  # equal steps in omega^2 tried for a case that fails
 _EPS = np.finfo(float).eps
 _RESOLVABLE = 1e-9  # issue 11: every returned case in equilibrium to 1e-9 relative, rounding or not
 _NOISE = 4.0  # a residual within this many rounding floors (see _measure) is converged
+_CHUNK = 2048  # cases per pass of the rest Newton (see _rest_newton)
+_BALL_OUT = ("qi", "qo", "ai", "ao", "mg", "fc")  # ball loads, angles, gyroscopic moments, F_c, per case
+_AT_REST = {"qi": "qi", "qo": "qi", "ai": "ai", "ao": "ai"}  # at rest both contacts share load and angle
 
 
 # --------------------------------------------------------------------------- geometry
@@ -177,12 +183,23 @@ def groove_offsets(displacement, n_balls, ball_diameter, pitch_diameter, inner_c
 
 
 # --------------------------------------------------------------------------- Hertz interpolants
+@functools.lru_cache(maxsize=64)
 def _tables(d, dm, fi, fo, ep, a0, stiffness_at):
-    """Chebyshev coefficients in x = 2 cos(alpha) - 1 of ln K and ln(a* b*) of each race.
+    """Chebyshev coefficients in x = 2 cos(alpha) - 1 of ln K and ln(a* b*) of each race (read-only).
 
-    The exact Hertz solution is iterative; it is evaluated once per bearing on _N_CHEB nodes. With
-    ``stiffness_at="free"`` the series are constants (the values at alpha0).
+    The exact Hertz solution is iterative; it is evaluated once per bearing on _N_CHEB nodes, and kept for
+    the next call with the same bearing. With ``stiffness_at="free"`` the series are constants (the values
+    at alpha0).
     """
+    return tuple(_read_only(c) for c in _chebyshev_tables(d, dm, fi, fo, ep, a0, stiffness_at))
+
+
+def _read_only(a):
+    a.setflags(write=False)
+    return a
+
+
+def _chebyshev_tables(d, dm, fi, fo, ep, a0, stiffness_at):
     def exact(c):
         alpha = np.arccos(np.clip(c, 0.0, 1.0))
         k = contact_stiffness(alpha, alpha, d, dm, fi, fo, ep)
@@ -262,7 +279,7 @@ def _geometry(n_balls, d, dm, fi, fo, a0, ep, density, phi0, stiffness_at, contr
         rho = float(check_positive("density", density, "kg/m^3"))
         mass = rho * math.pi * d**3 / 6.0
         inertia = mass * d**2 / 10.0
-        tab = _tables(d, dm, fi, fo, ep_f, a0, stiffness_at)
+        tab = _tables(d, dm, float(fi), float(fo), ep_f, a0, stiffness_at)
     return _Geometry(z, d, dm, float(fi), float(fo), a0, ep_f, mass, inertia, big_a, big_a * math.cos(a0),
                      (fi - 0.5) * d, (fo - 0.5) * d, psi, ja, jr, jj, tab, RACEWAY_CONTROLS[control], control,
                      kind, stiffness_at, tuple(_cheb.chebder(t) if t.size > 1 else None for t in tab[:2])
@@ -430,19 +447,19 @@ def _evaluate(geo, u, w2, x=None, deriv=True):
     ``w2`` (n,) is omega^2; cases with w2 = 0 use the closed-form balls at rest, the others solve their
     balls starting from ``x`` (n, Z, 2) or from :func:`_ball_start`.
     """
-    ga = u @ geo.ja.T
-    gr = geo.gr0 + u @ geo.jr.T
+    ga = _ring.rowwise(u, geo.ja.T)
+    gr = geo.gr0 + _ring.rowwise(u, geo.jr.T)
     moving = w2 > 0
     if not moving.any():
         balls = _rest_balls(geo, ga, gr)
         balls["ok"] = np.ones(ga.shape, dtype=bool)
     else:
         balls = _merge(geo, ga, gr, w2, moving, x)
-    force = balls["pa"] @ geo.ja + balls["pr"] @ geo.jr
+    force = _ring.rowwise(balls["pa"], geo.ja) + _ring.rowwise(balls["pr"], geo.jr)
     stiff = None
     if deriv:
         h = balls["h"]
-        stiff = sum(h[..., p, q] @ geo.jj[p, q] for p in range(2) for q in range(2)).reshape(-1, 5, 5)
+        stiff = sum(_ring.rowwise(h[..., p, q], geo.jj[p, q]) for p in range(2) for q in range(2)).reshape(-1, 5, 5)
     return force, stiff, balls
 
 
@@ -485,19 +502,6 @@ def _measure(geo, loads, force, balls):
         return res, np.where(scale > 0, res / scale, res), np.minimum(np.where(scale > 0, noise / scale, 0.0), _RESOLVABLE)
 
 
-def _thrust_offset(geo, per_ball, kn0):
-    """Axial offset of the groove centres at which Z balls at one angle carry Z per_ball axially (log bisection)."""
-    lo = np.full(per_ball.shape, math.log(geo.big_a * math.sin(geo.a0) + 1e-9 * geo.d))
-    hi = np.full(per_ball.shape, math.log(geo.big_a * math.sin(geo.a0) + geo.d))
-    for _ in range(30):  # a start only: 30 halvings of the bracket are plenty
-        mid = 0.5 * (lo + hi)
-        dz = np.exp(mid)
-        rho = np.hypot(dz, geo.gr0)
-        q = kn0 * np.maximum(rho - geo.big_a, 0.0) ** 1.5 * dz / rho
-        lo, hi = np.where(q < per_ball, mid, lo), np.where(q < per_ball, hi, mid)
-    return np.where(per_ball > 0, np.exp(0.5 * (lo + hi)), 0.0)
-
-
 def _start(geo, loads):
     """Start of the ring Newton: thrust, radial load and moment each taken alone (Stribeck's 5/Z)."""
     c0 = np.array([math.cos(geo.a0)])
@@ -505,9 +509,9 @@ def _start(geo, loads):
     kn0 = (ki ** (-2.0 / 3.0) + ko ** (-2.0 / 3.0)) ** -1.5
     fr = np.hypot(loads[:, 0], loads[:, 1])
     mm = np.hypot(loads[:, 3], loads[:, 4])
-    dz = _thrust_offset(geo, np.abs(loads[:, 2]) / geo.z, kn0)
+    dz = _ring.thrust_offset(np.abs(loads[:, 2]) / geo.z, geo.big_a, geo.a0, geo.gr0, kn0)
     dr = np.where(fr > 0, geo.big_a - geo.gr0 + (5.0 * fr / geo.z / kn0) ** (2.0 / 3.0), 0.0)
-    tilt = _thrust_offset(geo, 2.0 * mm / (geo.dm / 2.0) / geo.z, kn0) / (geo.dm / 2.0)
+    tilt = _ring.thrust_offset(2.0 * mm / (geo.dm / 2.0) / geo.z, geo.big_a, geo.a0, geo.gr0, kn0) / (geo.dm / 2.0)
     u = np.zeros_like(loads)
     with np.errstate(invalid="ignore", divide="ignore"):
         u[:, 0:2] = np.where(fr[:, None] > 0, loads[:, 0:2] / fr[:, None] * dr[:, None], 0.0)
@@ -516,33 +520,22 @@ def _start(geo, loads):
     return u
 
 
-def _step(geo, stiff, residual, lam):
-    """Levenberg-Marquardt step (K + lam max|diag K| I) du = r in scaled variables (lam = 0: Newton).
-
-    A K that is singular (fewer than three balls loaded, or none) gets a floor of 1e-14 max|diag K|.
-    """
-    sc = np.array([1.0, 1.0, 1.0, 2.0 / geo.dm, 2.0 / geo.dm])
-    ks = stiff * sc[None, :, None] * sc[None, None, :]
-    diag = np.max(np.abs(np.diagonal(ks, axis1=1, axis2=2)), axis=1)
-    diag = np.where(diag > 0, diag, 1.0)
-    ks = ks + (np.maximum(lam, 1e-14) * diag)[:, None, None] * np.eye(5)
-    return np.linalg.solve(ks, (residual * sc)[:, :, None])[:, :, 0] * sc
-
-
 def _predict(geo, x, dxdg, du):
     """Ball centres at a trial ring position, to first order from the accepted ones (dx/dg from the ball
     equations); a ball the prediction would lift off its outer raceway starts where it was."""
-    dg = np.stack([du @ geo.ja.T, du @ geo.jr.T], axis=-1)
+    dg = np.stack([_ring.rowwise(du, geo.ja.T), _ring.rowwise(du, geo.jr.T)], axis=-1)
     xp = x + np.einsum("nzij,nzj->nzi", dxdg, dg)
     keep = (np.hypot(xp[..., 0], xp[..., 1]) > geo.ro) & np.all(np.isfinite(xp), axis=-1)
     return np.where(keep[..., None], xp, x)
 
 
-def _newton(geo, loads, w2, u0, x0, tol, max_iter):
+def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=()):
     """Damped Newton (Levenberg-Marquardt) on the ring equilibrium, all cases together.
 
     Each case has its own damping: it falls tenfold after a full step and rises when the line search
-    on |F - F(u)| has to cut the step. Returns u, converged, iterations and the ball centres at speed.
+    on |F - F(u)| has to cut the step. Returns u, converged, iterations, the ball centres at speed, and
+    the last accepted evaluation of every case, which is the evaluation at the returned u: relative
+    residual, rounding floor, stiffness and the ball fields named in ``keep``.
     """
     n = len(loads)
     u = u0.copy()
@@ -552,14 +545,16 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter):
     norm, rel, floor = _measure(geo, loads, force, balls)
     done = (rel <= np.maximum(tol, floor)) & np.all(balls["ok"], axis=1)
     x, dxdg = balls.get("x"), balls.get("dxdg")
+    final = {k: np.array(balls[k], dtype=float) for k in keep}
     for _ in range(max_iter):
         act = np.flatnonzero(~done & (it < max_iter) & (lam <= _LAM_MAX))
         if act.size == 0:
             break
         it[act] += 1
-        du = _step(geo, stiff[act], (loads - force)[act], lam[act])
-        # trust region: no groove centre moves by more than A / 2 in one step
-        move = np.maximum(np.max(np.abs(du @ geo.ja.T), axis=1), np.max(np.abs(du @ geo.jr.T), axis=1))
+        du = _ring.lm_step(stiff[act], loads[act] - force[act], lam[act], geo.dm)
+        # trust region: no groove centre moves by more than A / 2 in one step (bounded over the balls:
+        # axial |dz| + d_m/2 |tilt|, radial |(dx, dy)|)
+        move = np.maximum(np.abs(du[:, 2]) + geo.dm / 2.0 * np.hypot(du[:, 3], du[:, 4]), np.hypot(du[:, 0], du[:, 1]))
         with np.errstate(divide="ignore"):
             t = np.minimum(1.0, 0.5 * geo.big_a / move)
         full = t == 1.0
@@ -572,9 +567,11 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter):
             n_t, r_t, fl_t = _measure(geo, loads[sel], f_t, b_t)
             conv_t = r_t <= np.maximum(tol, fl_t)
             good = ((n_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | conv_t) & np.all(b_t["ok"], axis=1)
-            g = sel[good]
-            u[g], force[g], stiff[g], norm[g], rel[g] = trial[good], f_t[good], k_t[good], n_t[good], r_t[good]
-            floor[g] = fl_t[good]
+            g, kk = sel[good], (slice(None) if good.all() else good)  # a view, not a copy, when all are good
+            u[g], force[g], stiff[g], norm[g], rel[g] = trial[kk], f_t[kk], k_t[kk], n_t[kk], r_t[kk]
+            floor[g] = fl_t[kk]
+            for key in keep:
+                final[key][g] = b_t[key][kk]
             if x is not None:
                 x[g], dxdg[g] = b_t["x"][good], b_t["dxdg"][good]
             pending = pending[~good]
@@ -588,17 +585,34 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter):
         lam[act[pending]] = np.maximum(100.0 * lam[act[pending]], 1e-3)  # no decrease at all
         lam[lam < 1e-12] = 0.0
         done = rel <= np.maximum(tol, floor)  # accepted iterates have every ball converged
-    return u, done, it, x
+    final.update(residual=rel, floor=floor, stiffness=stiff)
+    return u, done, it, x, final
 
 
-def _solve(geo, loads, w2, tol, max_iter):
-    """Rest solution of every case, then the cases at speed from it (with continuation in omega^2)."""
+def _rest_newton(geo, loads, tol, max_iter):
+    """The rest Newton of every case, ``_CHUNK`` cases at a time (the same per case: bit-identical for any
+    batch); each pass's arrays stay in the processor's cache and off the operating system's page faults."""
     n = len(loads)
-    zero_w = np.zeros(n)
-    u, ok, it, _ = _newton(geo, loads, zero_w, _start(geo, loads), None, tol, max_iter)
+    if n <= _CHUNK:
+        u, ok, it, _, last = _newton(geo, loads, np.zeros(n), _start(geo, loads), None, tol, max_iter,
+                                     keep=("qi", "ai"))
+        return u, ok, it, last
+    parts = [_rest_newton(geo, loads[lo:lo + _CHUNK], tol, max_iter) for lo in range(0, n, _CHUNK)]
+    last = {k: np.concatenate([p[3][k] for p in parts]) for k in parts[0][3]}
+    return (*(np.concatenate([p[j] for p in parts]) for j in range(3)), last)
+
+
+def _solve(geo, loads, w2, tol, max_iter, *, final=False):
+    """Rest solution of every case, then the cases at speed from it (with continuation in omega^2).
+
+    Returns u, converged, iterations and, with ``final``, (at_rest, the rest Newton's last evaluation):
+    the outputs of the cases at rest need no evaluation of their own.
+    """
+    u, ok, it, last = _rest_newton(geo, loads, tol, max_iter)
+    extra = ((w2 == 0), last) if final else None
     moving = np.flatnonzero((w2 > 0) & ok)
     if moving.size == 0:
-        return u, ok, it
+        return (u, ok, it, extra) if final else (u, ok, it)
     u_rest = u[moving].copy()
     ok[moving] = False
     pending = np.arange(moving.size)
@@ -607,16 +621,16 @@ def _solve(geo, loads, w2, tol, max_iter):
         us, xs, good = u_rest[pending].copy(), None, np.ones(pending.size, dtype=bool)
         for k in range(1, steps + 1):
             wk = w2[sel] * k / steps
-            ga, gr = us @ geo.ja.T, geo.gr0 + us @ geo.jr.T
+            ga, gr = _ring.rowwise(us, geo.ja.T), geo.gr0 + _ring.rowwise(us, geo.jr.T)
             xs = _ball_start(geo, ga, gr, wk[:, None]) if xs is None else xs
-            us, conv, itk, xs = _newton(geo, loads[sel], wk, us, xs, tol, max_iter)
+            us, conv, itk, xs, _ = _newton(geo, loads[sel], wk, us, xs, tol, max_iter)
             it[sel] += itk
             good &= conv
         u[sel[good]], ok[sel[good]] = us[good], True
         pending = pending[~good]
         if pending.size == 0:
             break
-    return u, ok, it
+    return (u, ok, it, extra) if final else (u, ok, it)
 
 
 # --------------------------------------------------------------------------- results
@@ -658,8 +672,29 @@ def _pressure(geo, q, alpha, race):
         return np.where(q > 0, 3.0 * q / (2.0 * np.pi * ab), 0.0)
 
 
-def _outputs(geo, loads, w, u, ok, it):
-    """Every field of :class:`LoadDistribution` (flat cases) from the converged displacements."""
+def _at_solution(geo, loads, w, u, sel, final):
+    """Relative residual, rounding floor, stiffness and ball outputs (``_BALL_OUT``) of the cases ``sel``:
+    from the solver's last evaluation (``final`` of :func:`_solve`) where it has one, else evaluated."""
+    have = np.zeros(sel.size, dtype=bool) if final is None else final[0][sel]
+    res = {k: np.empty((sel.size, geo.z)) for k in _BALL_OUT}
+    res.update(residual=np.empty(sel.size), floor=np.empty(sel.size), stiffness=np.empty((sel.size, 5, 5)))
+    if have.any():
+        last, rows = final[1], sel[have]
+        for k, v in res.items():
+            v[have] = last[_AT_REST.get(k, k)][rows] if k in last or k in _AT_REST else 0.0  # F_c = M_g = 0
+    if not have.all():
+        fresh = sel[~have]
+        force, stiff, balls = _evaluate(geo, u[fresh], w[fresh] ** 2)
+        res["residual"][~have], res["floor"][~have] = _measure(geo, loads[fresh], force, balls)[1:]
+        res["stiffness"][~have] = stiff
+        for k in _BALL_OUT:
+            res[k][~have] = balls[k]
+    return res
+
+
+def _outputs(geo, loads, w, u, ok, it, final=None):
+    """Every field of :class:`LoadDistribution` (flat cases) from the converged displacements; ``final``
+    (from :func:`_solve`) spares the evaluation at the solution of the cases it covers."""
     n, z = len(loads), geo.z
     nan = np.full((n, z), np.nan)
     out = {k: nan.copy() for k in ("ball_load_inner", "ball_load_outer", "contact_angle_inner",
@@ -669,9 +704,9 @@ def _outputs(geo, loads, w, u, ok, it):
                residual=np.full(n, np.nan), floor=np.zeros(n), max_ball_load=np.full(n, np.nan))
     sel = np.flatnonzero(ok)
     if sel.size:
-        force, stiff, balls = _evaluate(geo, u[sel], w[sel] ** 2)
-        out["residual"][sel], out["floor"][sel] = _measure(geo, loads[sel], force, balls)[1:]
-        out["stiffness"][sel] = stiff
+        balls = _at_solution(geo, loads, w, u, sel, final)
+        for k in ("residual", "floor", "stiffness"):
+            out[k][sel] = balls[k]
         qi, qo = balls["qi"], balls["qo"]
         vals = {"ball_load_inner": qi, "ball_load_outer": qo, "contact_angle_inner": balls["ai"],
                 "contact_angle_outer": balls["ao"], "centrifugal_force": balls["fc"],
@@ -681,32 +716,6 @@ def _outputs(geo, loads, w, u, ok, it):
             out[k][sel] = v
         out["max_ball_load"][sel] = np.max(qi, axis=1)
     return out
-
-
-def _notes(geo, loads, w, out, ok):
-    """The warnings of a solved batch (light load, low-shoulder contact, friction)."""
-    msgs = []
-    sel = np.flatnonzero(ok & (w > 0))
-    if sel.size:
-        qi, ai = out["ball_load_inner"][sel], out["contact_angle_inner"][sel]
-        thrust = np.abs(np.sum(qi * np.sin(ai), axis=1))
-        loaded = np.where(qi > 0, 1.0, np.nan)
-        msgs += light_load_warnings(thrust, ai * loaded, out["contact_angle_outer"][sel] * loaded, w[sel], geo.z,
-                                    geo.d, geo.dm, geo.a0, density=geo.mass / (math.pi * geo.d**3 / 6.0),
-                                    case_index=sel)
-        mu = 2.0 * np.abs(out["gyroscopic_moment"][sel]) / (geo.d * out["ball_load_outer"][sel])
-        mu = np.where(qi > 0, mu, 0.0)
-        if geo.control == "outer" and np.any(mu > FRICTION_WARNING_LIMIT):
-            k = int(np.argmax(np.max(mu, axis=1)))
-            msgs.append(f"outer-raceway control needs a friction coefficient up to {np.max(mu):.3g} > "
-                        f"{FRICTION_WARNING_LIMIT:g} (case {sel[k]}): the balls would spin or skid")
-    if geo.kind == "angular":
-        low = np.any((out["ball_load_inner"] > 0) & (out["contact_angle_inner"] < 0), axis=1) & ok
-        if low.any():
-            msgs.append(f"{int(low.sum())} case(s) load balls at a negative contact angle, against the low "
-                        f"shoulder of an angular-contact bearing (first: case {int(np.flatnonzero(low)[0])}); "
-                        "the model assumes a full groove there")
-    return tuple(msgs)
 
 
 def _flat_inputs(loads, shaft_speed):
@@ -759,8 +768,13 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
         Which raceway resists the gyroscopic moment (spec 004, lambda_i, lambda_o).
     bearing_type : {"radial", "angular"}, optional
         An angular-contact bearing warns when a ball is loaded at a negative contact angle (against its
-        low shoulder), and refuses a negative thrust F_z < 0 as physically impossible (``physical``
-        :class:`~bearinglab.errors.ConvergenceError`, or flagged).
+        low shoulder), and when it carries any load with a thrust F_z <= 0: a single angular-contact
+        bearing carries a radial load or a moment as one only together with a thrust F_z > 0 that holds its
+        balls on the high shoulder. Such loads are solved with the full groove (the solution is continuous
+        through F_z = 0: a radial load alone puts every ball at alpha = 0, a negative thrust puts them on
+        the low shoulder) and the warning says the real bearing cannot be trusted to carry them, which is
+        what MESYS and MASTA show (a full-groove solution with a shoulder warning; their contact-ellipse
+        check against the shoulder height needs shoulder data this model does not have).
     on_failure : {"raise", "flag"}, optional
         Raise :class:`~bearinglab.errors.ConvergenceError` if any case fails (default), or return NaN
         and ``converged`` False for it.
@@ -778,9 +792,9 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     Raises
     ------
     ConvergenceError
-        With ``on_failure="raise"``, when a case does not converge or has no solution; its reason says
-        why (negative thrust on an angular-contact bearing, loads too light to resolve, a ring that moves
-        through its clearance almost as a mechanism, or a stalled iteration). With ``on_failure="flag"``
+        With ``on_failure="raise"``, when a case does not converge; its reason says why (loads too light
+        to resolve, a ring that moves through its clearance almost as a mechanism, or a stalled
+        iteration). With ``on_failure="flag"``
         the same reasons are in ``warnings``.
 
     Notes
@@ -813,10 +827,8 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     max_iter = int(check_integer("max_iter", max_iter, 1))
     geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
                     reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, bearing_type)
-    u, ok, it = np.full(f.shape, np.nan), np.zeros(len(f), dtype=bool), np.zeros(len(f), dtype=int)
-    possible = np.flatnonzero(~_impossible(geo, f))
-    u[possible], ok[possible], it[possible] = _solve(geo, f[possible], w[possible] ** 2, tol, max_iter)
-    out = _outputs(geo, f, w, u, ok, it)
+    u, ok, it, final = _solve(geo, f, w**2, tol, max_iter, final=True)
+    out = _outputs(geo, f, w, u, ok, it, final)
     ok &= out["residual"] <= np.maximum(tol, out.pop("floor"))
     if not ok.all():
         failures = _failures(geo, f, w, u, ok)
@@ -841,16 +853,10 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
                                                and (k != "azimuth" or z)})
 
 
-def _impossible(geo, loads):
-    """Cases without a physical solution: a negative thrust on a single angular-contact bearing."""
-    return (loads[:, 2] < 0) if geo.kind == "angular" else np.zeros(len(loads), dtype=bool)
-
-
 def _failures(geo, loads, w, u, ok):
     """{case: (reason, physical)} for every failed case, in case order, judged at the last rest iterate."""
     bad = np.flatnonzero(~ok)
-    imp = _impossible(geo, loads[bad])
-    solved = bad[~imp & np.all(np.isfinite(u[bad]), axis=1)]
+    solved = bad[np.all(np.isfinite(u[bad]), axis=1)]
     loaded, inv_cond, floor = (np.zeros(len(loads)) for _ in range(3))
     if solved.size:
         force, stiff, balls = _evaluate(geo, u[solved], np.zeros(solved.size))
@@ -860,12 +866,8 @@ def _failures(geo, loads, w, u, ok):
         inv_cond[solved] = sv[:, -1] / np.maximum(sv[:, 0], 1e-300)
         floor[solved] = _measure(geo, loads[solved], force, balls)[2]
     out = {}
-    for k, impossible in zip(bad, imp, strict=True):
-        if impossible:
-            out[k] = ((f"F_z = {loads[k, 2]:.6g} N < 0 on a single angular-contact bearing loads the balls "
-                       "against its low shoulder: there is no equilibrium (turn the bearing round, or mount "
-                       "it in a set)"), True)
-        elif floor[k] >= _RESOLVABLE:
+    for k in bad:
+        if floor[k] >= _RESOLVABLE:
             out[k] = (("loads too light to resolve: ball deflections are so small against the groove distance "
                        f"that rounding alone leaves a relative residual above {_RESOLVABLE:g}"), False)
         elif k in solved and (loaded[k] <= 3 or inv_cond[k] < 1e-4):

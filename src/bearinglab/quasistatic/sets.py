@@ -17,14 +17,23 @@ z_k - (d_m/2) tan(alpha), on the -z side); orientation -1 is its mirror image z 
 the contact lines diverge outwards (the bearing at +z has orientation -1); face-to-face (DF): they
 converge. Each bearing is solved by :mod:`bearinglab.quasistatic.combined` in its own frame.
 
-The preload is an axial interference: a ground spacer offset ``preload_displacement`` (shared equally
-by the bearings, in their own frames), or the interference that gives each group of like-oriented
-bearings the axial force ``preload`` at rest with no external load (the set is then assembled at rest;
-at speed the preload force changes, as in a real spindle with a rigid spacer).
+The preload is an axial interference between the two groups of opposed bearings, measured from the
+zero-preload position where the balls of every bearing first touch (zero-clearance contact), as a spacer
+offset or preload displacement is given in MESYS and MASTA: a ground spacer offset
+``preload_displacement`` (half of it in each group, in the bearings' own frames), or the interference
+that gives each group of like-oriented bearings the axial force ``preload`` at rest with no external load
+(the set is then assembled at rest; at speed the preload force changes, as in a real spindle with a
+rigid spacer). A bearing with diametral clearance first touches at the axial offset A sin(alpha0) of its
+groove-curvature centres, A = (f_i + f_o - 1) D; zero preload is that position, and a negative
+``preload_displacement`` is axial play. The shaft displacement is measured from the assembled position
+(a set without opposed bearings, such as a tandem set or a single bearing, cannot be preloaded and is
+measured from the concentric position, as a single bearing is). A bearing that carries no load at all
+in a case is named in the warnings.
 """
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -95,22 +104,40 @@ class SetState(NamedTuple):
     bearings: tuple  # one LoadDistribution-like dict per bearing, in its own frame
     bearing_loads: np.ndarray  # (..., n, 5) load each bearing carries, shaft frame, reduced to z = 0 [N, N m]
     stiffness: np.ndarray  # (..., 5, 5) of the set at z = 0
-    preload_displacement: float  # axial interference of the set [m]
+    preload_displacement: float  # axial interference of the set from first contact (zero preload) [m]
     converged: np.ndarray
     residual: np.ndarray  # relative residual of the shaft equilibrium [-]
     iterations: np.ndarray
     warnings: tuple
 
 
+def _first_contact_offsets(geos):
+    """Axial offset A sin(alpha0) of the groove-curvature centres at which each bearing's balls first touch."""
+    return np.array([g.big_a * math.sin(g.a0) for g in geos])
+
+
 def _preload_offsets(geos, orient, preload, preload_displacement):
-    """Axial offset of each bearing in its own frame and the total interference."""
+    """Axial offset of each bearing in its own frame (from the concentric position) and the interference.
+
+    The interference e is measured from first contact (zero preload): each bearing's offset is its
+    first-contact offset plus e / 2, so the two opposed groups overlap by e. A force preload solves each
+    bearing alone under its group's share of the force; its interference is the sum over the two groups of
+    the mean offset beyond first contact (exact for groups of like bearings, the usual matched sets).
+    """
+    opposed = not np.all(orient == orient[0])
+    touch = _first_contact_offsets(geos) if opposed else np.zeros(len(geos))
     if preload_displacement is not None:
         e = float(as_float("preload_displacement", preload_displacement))
-        return np.full(len(geos), e / len(geos)), e
+        if not np.isfinite(e):
+            raise InputError(f"preload_displacement must be finite [m], got {e!r}")
+        if e != 0.0 and not opposed:
+            raise InputError("preload_displacement: a set without opposed bearings (tandem) has nothing to "
+                             f"preload against, got {e!r} m")
+        return touch + 0.5 * e, e
     fp = float(check_nonnegative("preload", preload, "N"))
     if fp == 0.0:
-        return np.zeros(len(geos)), 0.0
-    if np.all(orient == orient[0]):
+        return touch, 0.0
+    if not opposed:
         raise InputError("preload: a tandem set has no opposed bearing to preload against")
     offsets = np.zeros(len(geos))
     for k, geo in enumerate(geos):
@@ -121,7 +148,20 @@ def _preload_offsets(geos, orient, preload, preload_displacement):
             raise ConvergenceError("sets.set_analysis", iterations=combined.MAX_ITER, residual=np.nan,
                                    estimate=u[0], reason=f"preload of bearing {k}")
         offsets[k] = u[0, 2]
-    return offsets, float(offsets.sum())
+    beyond = offsets - touch
+    return offsets, float(np.mean(beyond[orient > 0]) + np.mean(beyond[orient < 0]))
+
+
+def _unloaded_notes(per, ok):
+    """A warning per bearing that carries no load at all (every ball unloaded) in some converged case."""
+    notes = []
+    for j, out in enumerate(per):
+        idle = ok & ~np.any(out["ball_load_inner"].reshape(len(ok), -1) > 0, axis=1)
+        if idle.any():
+            notes.append(f"bearing {j} carries no load at all in {int(idle.sum())} case(s) (first: case "
+                         f"{int(np.flatnonzero(idle)[0])}): none of its balls touch (axial play, a preload "
+                         "too small for the loads, or loads that lift it off)")
+    return notes
 
 
 def _set_evaluate(geos, trans, offsets, u, w2):
@@ -197,9 +237,12 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
     spacing : float, optional
         Distance between neighbouring bearing centres. [m]
     preload : float, optional
-        Axial preload force of each group of like-oriented bearings at rest, no external load. [N]
+        Axial preload force of each group of like-oriented bearings at rest, no external load; 0 assembles
+        the set at first contact (zero preload, no axial play). [N]
     preload_displacement : float, optional
-        Axial interference of the set instead (e.g. a ground spacer offset). [m]
+        Axial interference of the set instead (e.g. a ground spacer offset), measured from the position
+        where every bearing's balls first touch (zero preload), as MESYS and MASTA give it; negative is
+        axial play. [m]
     on_failure : {"raise", "flag"}, optional
         As in :func:`bearinglab.quasistatic.combined.load_distribution`.
     tol : float, optional
@@ -220,9 +263,17 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
     Notes
     -----
     Bearing k sees the shaft displacement at its position, u_k = T_k u (tilts move the inner ring
-    radially by theta z_k; a mirrored bearing sees z -> -z), plus its preload offset along its own axis.
+    radially by theta z_k; a mirrored bearing sees z -> -z), plus its preload offset along its own axis:
+    its first-contact offset A sin(alpha0) (half the end play 2 A sin(alpha0) of a bearing with diametral
+    clearance, [1]_) plus half the interference. ``preload_displacement`` in the result is that
+    interference, also for a force preload, so feeding it back reproduces the force.
     The shaft is in equilibrium when F = sum_k T_k^T F_k(u_k); the set stiffness is
     sum_k T_k^T K_k T_k with each bearing's analytic tangent stiffness K_k.
+
+    References
+    ----------
+    .. [1] T. A. Harris and M. N. Kotzalas, *Essential Concepts of Bearing Technology*, 5th ed., CRC
+       Press, 2006, ch. 2 (end play of a ball bearing with diametral clearance).
 
     Examples
     --------
@@ -263,8 +314,9 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
         ub[:, 2] += off
         out = combined._outputs(geo, (ub * 0.0), np.full(len(flat), w), ub, ok, it)
         out["displacement"] = np.where(ok[:, None], ub, np.nan)
-        notes += [f"bearing {j}: {m}" for m in combined._notes(geo, ub, np.full(len(flat), w), out, ok)]
+        notes += [f"bearing {j}: {m}" for m in combined._notes(geo, None, np.full(len(flat), w), out, ok)]
         per.append({k: v.reshape(shape + v.shape[1:]) for k, v in out.items() if k not in ("residual", "floor")})
+    notes += _unloaded_notes(per, ok)
     bad = ~ok
     u[bad], stiff[bad] = np.nan, np.nan
     bearing_loads = np.stack(parts, axis=1)

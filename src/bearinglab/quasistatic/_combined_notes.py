@@ -1,0 +1,62 @@
+"""Warnings of a solved combined-load batch (private; :mod:`bearinglab.quasistatic.combined` and
+:mod:`bearinglab.quasistatic.sets` call them).
+
+Warnings
+--------
+notes           light load at speed, friction beyond the raceway-control limit, angular-contact rules
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .ball import FRICTION_WARNING_LIMIT
+from .light_load import light_load_warnings
+
+__all__ = ["notes"]
+
+
+def notes(geo, loads, w, out, ok):
+    """The warnings of a solved batch (light load, low-shoulder contact, friction); ``loads`` None for a
+    bearing in a set (its mates hold it axially, so only its balls' angles are judged)."""
+    msgs = []
+    sel = np.flatnonzero(ok & (w > 0))
+    if sel.size:
+        qi, ai = out["ball_load_inner"][sel], out["contact_angle_inner"][sel]
+        thrust = np.abs(np.sum(qi * np.sin(ai), axis=1))
+        loaded = np.where(qi > 0, 1.0, np.nan)
+        msgs += light_load_warnings(thrust, ai * loaded, out["contact_angle_outer"][sel] * loaded, w[sel], geo.z,
+                                    geo.d, geo.dm, geo.a0, density=geo.mass / (math.pi * geo.d**3 / 6.0),
+                                    case_index=sel)
+        mu = 2.0 * np.abs(out["gyroscopic_moment"][sel]) / (geo.d * out["ball_load_outer"][sel])
+        mu = np.where(qi > 0, mu, 0.0)
+        if geo.control == "outer" and np.any(mu > FRICTION_WARNING_LIMIT):
+            k = int(np.argmax(np.max(mu, axis=1)))
+            msgs.append(f"outer-raceway control needs a friction coefficient up to {np.max(mu):.3g} > "
+                        f"{FRICTION_WARNING_LIMIT:g} (case {sel[k]}): the balls would spin or skid")
+    if geo.kind == "angular":
+        msgs += _angular_notes(loads, out, ok)
+    return tuple(msgs)
+
+
+def _angular_notes(loads, out, ok):
+    """Warnings of a single angular-contact bearing: no thrust to hold its balls on the high shoulder, and
+    balls loaded at a negative contact angle (against its low shoulder)."""
+    msgs = []
+    unheld = np.zeros_like(ok) if loads is None else ok & (loads[:, 2] <= 0) & np.any(loads != 0, axis=1)
+    if unheld.any():
+        k = int(np.flatnonzero(unheld)[0])
+        msgs.append(f"{int(unheld.sum())} case(s) load a single angular-contact bearing with a thrust F_z <= 0 "
+                    f"(first: case {k}, F_z = {loads[k, 2] + 0.0:.6g} N): it cannot carry them as an "
+                    "angular-contact bearing, which needs a thrust F_z > 0 to hold its balls on the high "
+                    "shoulder; without one they run on the groove bottom (alpha = 0) or against the low "
+                    "shoulder, which this full-groove solution does not check (add the thrust, turn the "
+                    "bearing round, or mount it in a set)")
+    low = np.any((out["ball_load_inner"] > 0) & (out["contact_angle_inner"] < 0), axis=1) & ok
+    if low.any():
+        msgs.append(f"{int(low.sum())} case(s) load balls at a negative contact angle, against the low "
+                    f"shoulder of an angular-contact bearing (first: case {int(np.flatnonzero(low)[0])}); "
+                    "the model assumes a full groove there")
+    return msgs
