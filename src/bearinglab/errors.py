@@ -65,6 +65,8 @@ class ConvergenceError(RuntimeError):
             solver += f" (|residual| = {res.max():.3g})"
         if self.physical:  # the input is impossible: the reason is the message, the solver's state is not
             self.summary = f"no physical solution: {reason}" if reason else "no physical solution for these inputs"
+        elif reason.startswith("no convergence"):  # the reason says it already: once is enough
+            self.summary = f"{reason} ({solver.removeprefix('no convergence ')})"
         else:
             self.summary = f"{solver}: {reason}" if reason else solver
         super().__init__(f"{where}: {self.summary}" + (f" ({solver})" if self.physical else ""))

@@ -163,7 +163,11 @@ def test_convergence_error_summary_has_no_function_name_nor_nan():
                          reason="the angle left (alpha0, 90 deg)")
     assert e.summary == "no convergence after 0 iterations: the angle left (alpha0, 90 deg)"
     p = ConvergenceError("x.y", iterations=3, residual=1e-3, estimate=0.0, reason="the ball leaves", physical=True)
-    assert p.summary == "the ball leaves (no convergence after 3 iterations (|residual| = 0.001))"
+    # a physical refusal reads as its reason, not as a weak solver (the iterations stay in str(exc))
+    assert p.summary == "no physical solution: the ball leaves"
+    assert "no convergence" not in p.summary and "after 3 iterations" in str(p)
+    q = ConvergenceError("x.y", iterations=4, residual=1e-3, estimate=0.0, reason="no convergence at F_a = 1 N")
+    assert q.summary == "no convergence at F_a = 1 N (after 4 iterations (|residual| = 0.001))"
 
 
 # ----------------------------------------------------------------------------- item 9: inputs echoed

@@ -385,12 +385,8 @@ def _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out):
     from ..units import RPM
     if viscosity is None:
         raise InputError("viscosity: the skf model needs --viscosity (e.g. '30 cSt'; of the base oil for grease)")
-    if lubrication not in friction.LUBRICATION_METHODS:
-        hint = " (oil bath: its drag moment is not modelled)" if "bath" in lubrication else ""
-        raise InputError(f"lubrication must be one of {list(friction.LUBRICATION_METHODS)}, got "
-                         f"{lubrication!r}{hint}")
     nu = parse_viscosity(viscosity)
-    m = friction.skf_for_bearing(b, fr, fa, n, nu, lubrication=lubrication)
+    m = friction.skf_for_bearing(b, fr, fa, n, nu, lubrication=lubrication)  # checks the lubrication
     notes = _skf_warnings(b, fr, fa)
     moments = tables.rows(tables.skf_torque(m))
     rpm = tables.significant(n / RPM)
