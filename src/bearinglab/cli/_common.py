@@ -232,8 +232,9 @@ def _rich_table(title, columns, cells, caption, numeric):
     return t
 
 
-# a zero printed with a minus sign ("-0", "-0.0000", "-0e+00"): a rounding artefact, shown as 0
-_NEGATIVE_ZERO = re.compile(r"(?<![\w.])[-−](?=0(?:\.0*)?(?:[eE][-+]?\d+)?(?![\w.]))")
+# a zero printed with a minus sign ("-0", "-0.0000", "-0e+00"): a rounding artefact, shown as 0. Only a
+# whole number: "-0°30'" (minus half a degree) and "-0.5" keep their sign
+_NEGATIVE_ZERO = re.compile(r"(?<![\w.])[-−](?=0(?:\.0*)?(?:[eE][-+]?\d+)?(?:$|[\s,;)\]%/]))")
 
 
 def plain_zero(text):
