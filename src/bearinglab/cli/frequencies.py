@@ -203,7 +203,7 @@ def _frequencies(b, w_in, w_out, fa, hertz, elastic_constant):
     shaft_hz = w_in / _HZ
     if fa is not None:
         if not fa > 0:
-            raise InputError(f"axial-load must be > 0 [N], got {fa!r} N")
+            raise InputError(f"axial-load must be > 0 [N], got {fa:g} N ({fa / KGF:g} kgf)")
         angle = float(stand.stand_analysis(b, fa, hertz=hertz, elastic_constant=elastic_constant).contact_angle)
         out.update(axial_load_N=fa, axial_load_kgf=fa / KGF, hertz=hertz)
     else:

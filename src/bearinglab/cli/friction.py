@@ -249,6 +249,7 @@ def torque(
     from ..units import RPM
     if model not in _MODELS:
         raise InputError(f"model must be one of {list(_MODELS)}, got {model!r}")
+    _check_constants(mu=mu, x0=x0, y0=y0, f=f, c=c, f0=f0, palmgren_f0=palmgren_f0)
     if model == "skf":
         b = resolve_bearing(bearing, bearing_file, catalog, contact_angle=contact_angle) if (
             bearing or bearing_file) else None
@@ -316,6 +317,22 @@ def torque(
         return
     _print_torque(b, model, info, cases)
     print_warnings(notes)
+
+
+_CONSTANT_UNITS = {"mu": "-", "x0": "-", "y0": "-", "f": "-", "c": "-", "f0": "N·mm⁻²·min^(2/3)", "palmgren_f0": "-"}
+
+
+def _check_constants(**constants):
+    """The handbook constants given: finite, and >= 0 but for the exponent c (the message names the option,
+    not the library's parameter)."""
+    import math
+
+    for name, value in constants.items():
+        if value is None:
+            continue
+        if not math.isfinite(value) or (name != "c" and value < 0):
+            rule = "a finite number" if name == "c" else "a finite number >= 0"
+            raise InputError(f"{name.replace('_', '-')} must be {rule} [{_CONSTANT_UNITS[name]}], got {value!r}")
 
 
 def _check_speed(b, n):
