@@ -222,7 +222,7 @@ def test_negative_thrust_step_in_a_duty_cycle_keeps_iso281(capsys, tmp_path):
 
 
 def test_static_safety_is_warned_once(capsys):
-    code, out, err = run(capsys, "life", "-b", "B218", "--fz", "400 kN", "--speed", "3000 rpm",
+    code, out, _ = run(capsys, "life", "-b", "B218", "--fz", "400 kN", "--speed", "3000 rpm",
                          "--viscosity", "20 cSt", "--json")
     doc = json.loads(out)
     assert code == 0 and doc["static_safety_factor"] < 1
