@@ -3,6 +3,7 @@ cycles, one set of ratings with ``catalog show``, and bad inputs."""
 
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -143,6 +144,7 @@ def test_catalog_show_and_life_give_the_same_ratings(capsys):
     (["--oil", "VG67", "--viscosity-100", "8 cSt", "--temperature", "70 degC"], "oil"),
     (["--oil", "VG68", "--viscosity-100", "8.7 cSt", "--temperature", "-300 degC"], "temperature"),
     (["--contamination", "dirty"], "contamination"),
+    (["--viscosity-100", "8.7 cSt"], "viscosity"),  # with --viscosity: never silently ignored
     (["--fx", "1 kg"], "fx"),
 ])
 def test_bad_input_is_one_line_and_exit_2(capsys, args, name):
@@ -205,7 +207,8 @@ def test_negative_thrust_on_one_angular_bearing_keeps_iso281(capsys):
     assert doc["static_safety_factor"] == pytest.approx(float(lib.static_safety_factor), rel=1e-12)
     assert doc["reference_rating_life_Mrev"] is None and doc["modified_reference_rating_life_Mrev"] is None
     why = [w for w in doc["warnings"] if w.startswith("ISO/TS 16281 reference lives not available")]
-    assert len(why) == 1 and "low shoulder" in why[0]
+    assert len(why) == 1 and "no physical solution" in why[0] and "low shoulder" in why[0]
+    assert not any(re.search(r"\bnan\b", w, flags=re.IGNORECASE) for w in doc["warnings"])
     code, out, err = run(capsys, *args)
     assert code == 0 and err == ""
     text = " ".join(out.split())
@@ -213,12 +216,16 @@ def test_negative_thrust_on_one_angular_bearing_keeps_iso281(capsys):
 
 
 def test_negative_thrust_step_in_a_duty_cycle_keeps_iso281(capsys, tmp_path):
-    code, out, err = run(capsys, "life", "-b", "B218", "--json", "--viscosity", "20 cSt", "--duty-cycle",
-                         _duty_file(tmp_path, '"3000 rpm"', fz="-2 kN"))
+    path = tmp_path / "duty.toml"
+    path.write_text('[[step]]\nfz = "2 kN"\nspeed = "3000 rpm"\ntime = 0.5\n'
+                    '[[step]]\nfz = "-2 kN"\nspeed = "3000 rpm"\ntime = 0.5\n', encoding="utf-8")
+    code, out, err = run(capsys, "life", "-b", "B218", "--json", "--viscosity", "20 cSt", "--duty-cycle", path)
     assert code == 0, err
     doc = json.loads(out)
     assert doc["basic_rating_life_Mrev"] > 0 and doc["reference_rating_life_Mrev"] is None
-    assert any("low shoulder" in w for w in doc["warnings"])
+    assert doc["steps"][0]["reference_rating_life_Mrev"] > 0 and doc["steps"][1]["reference_rating_life_Mrev"] is None
+    why = [w for w in doc["warnings"] if w.startswith("ISO/TS 16281 reference lives not available")]
+    assert len(why) == 1 and "at 1 of 2 steps (first: step 2): no physical solution" in why[0]
 
 
 def test_static_safety_is_warned_once(capsys):

@@ -90,8 +90,8 @@ def _viscosity(viscosity, oil, viscosity_100, temperature):
     """kinematic_viscosity or the oil options of :func:`bearinglab.ratings.rating_life`."""
     from .. import ratings
     if viscosity is not None:
-        if oil is not None or temperature is not None:
-            raise InputError("viscosity: give --viscosity, or --oil with --temperature, not both")
+        if oil is not None or temperature is not None or viscosity_100 is not None:  # none is ignored
+            raise InputError("viscosity: give --viscosity, or --oil with --viscosity-100 and --temperature, not both")
         return {"kinematic_viscosity": parse_viscosity(viscosity, "viscosity")}
     if oil is None or temperature is None:
         raise InputError("viscosity: give --viscosity (e.g. '20 cSt'), or --oil VG68 with --viscosity-100 and "
@@ -222,17 +222,37 @@ def _notes(b, loads, rating_notes, dist):
     """The warnings of a life: the analysis's, why the reference lives are missing where the load
     distribution failed, and the plausibility limits of the ball loads (bearinglab.limits; s0 < 1 is
     the analysis's own warning, so the limits do not repeat it)."""
-    import numpy as np
 
     from .. import limits
 
     notes = list(rating_notes)
     if dist is not None:
-        if not np.all(dist.converged):
-            notes += [f"ISO/TS 16281 reference lives not available: {w}" for w in dist.warnings]
+        notes += _unavailable(b, loads, dist)
         notes += limits.combined_warnings(b, loads, dist.ball_load_inner, dist.ball_load_outer,
                                           dist.contact_angle_inner, dist.contact_angle_outer, static=False)
     return list(dict.fromkeys(notes))
+
+
+def _unavailable(b, loads, dist):
+    """Why the reference lives are missing where the load distribution found no equilibrium: the reason of
+    the first such case, from its :class:`~bearinglab.errors.ConvergenceError` (that case solved again alone:
+    a flagged result keeps no reason per case)."""
+    import numpy as np
+
+    from .. import ratings
+    from ..errors import ConvergenceError
+
+    failed = np.flatnonzero(~np.ravel(dist.converged))
+    if not failed.size:
+        return []
+    f = np.reshape(loads, (-1, 5))
+    where = "" if len(f) == 1 else f" at {failed.size} of {len(f)} steps (first: step {failed[0] + 1})"
+    try:
+        ratings.reference_load_distribution(b, f[failed[0]], on_failure="raise")
+        why = "the combined-load model found no equilibrium"
+    except ConvergenceError as exc:
+        why = exc.summary
+    return [f"ISO/TS 16281 reference lives not available{where}: {why}"]
 
 
 def _echo(b, options, **quantities):

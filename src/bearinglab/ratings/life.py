@@ -259,8 +259,8 @@ def _iso281(bearing, ratings, fr, fa, moment):
     tilted = moment > 0
     if tilted.any():
         warnings.warn(f"{int(tilted.sum())} of {tilted.size} load cases carry a tilting moment: ISO 281's "
-                      "equivalent load P (and ISO 76's P0) is not defined there, so the ISO 281 lives and s0 "
-                      "are NaN; the ISO/TS 16281 reference life covers them", RatingWarning, stacklevel=3)
+                      "equivalent load P (and ISO 76's P0) is not defined there, and neither are the ISO 281 "
+                      "lives and s0; the ISO/TS 16281 reference life covers them", RatingWarning, stacklevel=3)
     return np.where(tilted, np.nan, p), np.where(tilted, np.nan, p0)
 
 
@@ -364,7 +364,7 @@ def _rating_life(bearing, loads, shaft_speed, nu, contamination, reliability, ep
     balls = _contact_loads(load_distribution, bearing, loads, shaft_speed)
     if balls is None:
         warnings.warn("no load distribution (the bearing's ball set and conformities are not known, or "
-                      "load_distribution=False): the ISO/TS 16281 reference lives are NaN", RatingWarning,
+                      "load_distribution=False): the ISO/TS 16281 reference lives are not defined", RatingWarning,
                       stacklevel=3)
     else:
         fi, fo = _conformities(bearing)
@@ -372,7 +372,7 @@ def _rating_life(bearing, loads, shaft_speed, nu, contamination, reliability, ep
         if failed.any():  # a flagged case of the load distribution (NaN ball loads): no reference life
             warnings.warn(f"{int(failed.sum())} of {failed.size} load cases have no ball loads (the load "
                           "distribution found no equilibrium; its warnings say why): their ISO/TS 16281 "
-                          "reference lives are NaN", RatingWarning, stacklevel=3)
+                          "reference lives are not defined", RatingWarning, stacklevel=3)
         qi, qo = (np.where(failed[..., None], 0.0, q) for q in balls)
         with np.errstate(divide="ignore"):
             l10r = reference.reference_rating_life(qi, r.dynamic_load_rating, bearing.require("ball_diameter"),
