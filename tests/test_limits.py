@@ -59,3 +59,32 @@ def test_combined_warnings_skip_unloaded_balls_and_light_loads():
     z = b.n_balls
     q = [100.0] + [0.0] * (z - 1)
     assert limits.combined_warnings(b, [100.0, 0, 0, 0, 0], q, q, [0.7] + [math.nan] * (z - 1), [0.7] * z) == []
+
+
+def test_combined_warnings_count_loaded_balls_and_can_leave_out_p0():
+    # the counts name what they count (balls here, cases under thrust), and static=False leaves the P0
+    # check to a caller that reports the static safety itself (the life analysis)
+    b = catalog.get("7218B")
+    alpha, fa = math.radians(40.0), 400e3
+    q = [fa / (b.n_balls * math.sin(alpha))] * b.n_balls
+    args = (b, [0.0, 0.0, fa, 0.0, 0.0], q, q, [alpha] * b.n_balls, [alpha] * b.n_balls)
+    full, no_p0 = limits.combined_warnings(*args), limits.combined_warnings(*args, static=False)
+    assert [m for m in full if "C0" in m] and not [m for m in no_p0 if "C0" in m]
+    assert no_p0 == [m for m in full if "C0" not in m]
+    assert all(f"{b.n_balls} of {b.n_balls} loaded balls" in m for m in no_p0)
+    assert "(1 of 1 case(s)" in next(m for m in full if "C0" in m)
+    thrust = limits.contact_warnings(b, [fa], q[:1], q[:1], [alpha], [alpha])
+    assert thrust and all("1 of 1 case(s)" in m for m in thrust)
+
+
+def test_static_check_needs_a_c0_and_an_iso76_angle():
+    b = catalog.get("4-1006095")  # 12 deg: no X0, Y0 in ISO 76 table 1 for angular contact
+    q = [50.0] * b.n_balls
+    warned = limits.combined_warnings(b, [0.0, 0.0, 1e6, 0.0, 0.0], q, q, [0.3] * b.n_balls, [0.3] * b.n_balls)
+    assert not [m for m in warned if "C0" in m]
+    from bearinglab.bearing import BallBearing
+
+    bare = BallBearing(designation="bare", type="radial", contact_angle=0.0)  # no ball set, no C0
+    assert limits._static_checks(bare, 1e9, 0.0) == []
+    rated = BallBearing(designation="rated", type="radial", contact_angle=0.0, static_load_rating=1e3)
+    assert "C0 = 1 kN" in limits._static_checks(rated, 2e3, 0.0)[0]

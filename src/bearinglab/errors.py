@@ -44,7 +44,9 @@ class ConvergenceError(RuntimeError):
         True when the equations have no physical solution for these inputs (a ball leaving a raceway,
         an angle leaving its range): the input is impossible, not the solver weak.
     summary : str
-        The message without the name of the internal function (for the command line).
+        The message without the name of the internal function (for the command line). With ``physical``
+        it is the physical reason ("no physical solution: ..."), without the solver's iteration count,
+        which only the full message (``str(exc)``) keeps.
     """
 
     def __init__(self, where, *, iterations, residual, estimate, reason="", physical=False):
@@ -58,12 +60,16 @@ class ConvergenceError(RuntimeError):
 
         res = np.abs(np.atleast_1d(np.asarray(residual, dtype=float)))
         res = res[np.isfinite(res)]
-        self.summary = f"no convergence after {self.iterations} iterations"
+        solver = f"no convergence after {self.iterations} iterations"
         if res.size:
-            self.summary += f" (|residual| = {res.max():.3g})"
-        if reason:
-            self.summary = f"{reason} ({self.summary})" if physical else f"{self.summary}: {reason}"
-        super().__init__(f"{where}: {self.summary}")
+            solver += f" (|residual| = {res.max():.3g})"
+        if self.physical:  # the input is impossible: the reason is the message, the solver's state is not
+            self.summary = f"no physical solution: {reason}" if reason else "no physical solution for these inputs"
+        elif reason.startswith("no convergence"):  # the reason says it already: once is enough
+            self.summary = f"{reason} ({solver.removeprefix('no convergence ')})"
+        else:
+            self.summary = f"{solver}: {reason}" if reason else solver
+        super().__init__(f"{where}: {self.summary}" + (f" ({solver})" if self.physical else ""))
 
 
 class ValidityWarning(UserWarning):

@@ -105,8 +105,8 @@ def check_speed(speed, pitch_diameter, name="speed"):
     return w
 
 
-def _count(bad):
-    return f"{int(np.count_nonzero(bad))} of {bad.size} case(s)"
+def _count(bad, what="case(s)"):
+    return f"{int(np.count_nonzero(bad))} of {bad.size} {what}"
 
 
 def contact_pressure_warnings(max_pressure, *, where="contact"):
@@ -128,12 +128,16 @@ def contact_pressure_warnings(max_pressure, *, where="contact"):
     >>> contact_pressure_warnings([3e9, 5e9], where="inner contact")[0][:48]
     'inner contact: maximum contact pressure 5000 MPa'
     """
+    return _pressure_messages(max_pressure, where, "case(s)")
+
+
+def _pressure_messages(max_pressure, where, what):
     p = np.ravel(as_float("max_pressure", max_pressure))
     bad = p > ISO76_CONTACT_PRESSURE
     if not bad.any():
         return []
     return [(f"{where}: maximum contact pressure {np.nanmax(p) / 1e6:.0f} MPa exceeds the ISO 76 limit of "
-            f"{ISO76_CONTACT_PRESSURE / 1e6:.0f} MPa ({_count(bad)}): permanent deformation of the raceways")]
+            f"{ISO76_CONTACT_PRESSURE / 1e6:.0f} MPa ({_count(bad, what)}): permanent deformation of the raceways")]
 
 
 def static_load_warnings(equivalent_load, static_load_rating):
@@ -184,13 +188,17 @@ def deflection_warnings(deflection, ball_diameter, *, where="contact"):
     >>> deflection_warnings([1e-6, 0.5e-3], 10e-3)[0][:44]
     'contact: elastic approach 500 um is 5.00 % o'
     """
+    return _deflection_messages(deflection, ball_diameter, where, "case(s)")
+
+
+def _deflection_messages(deflection, ball_diameter, where, what):
     delta = np.ravel(as_float("deflection", deflection))
     bad = delta > DEFLECTION_FRACTION * ball_diameter
     if not bad.any():
         return []
     worst = np.nanmax(delta)
     return [(f"{where}: elastic approach {worst * 1e6:.4g} um is {100 * worst / ball_diameter:.2f} % of the ball "
-            f"diameter (above {100 * DEFLECTION_FRACTION:g} %, {_count(bad)}): Hertz theory does not hold")]
+            f"diameter (above {100 * DEFLECTION_FRACTION:g} %, {_count(bad, what)}): Hertz theory does not hold")]
 
 
 def truncation_warnings(contact_angle, semi_major_axis, groove_radius, shoulder_height, *, where="contact",
@@ -229,6 +237,11 @@ def truncation_warnings(contact_angle, semi_major_axis, groove_radius, shoulder_
     >>> truncation_warnings(math.radians(60), 3e-3, 11.6e-3, 0.3 * 22.2e-3)[0][:32]
     'contact: the contact ellipse (to'
     """
+    return _truncation_messages(contact_angle, semi_major_axis, groove_radius, shoulder_height, where, assumed,
+                                "case(s)")
+
+
+def _truncation_messages(contact_angle, semi_major_axis, groove_radius, shoulder_height, where, assumed, what):
     alpha = np.ravel(as_float("contact_angle", contact_angle))
     a = np.ravel(as_float("semi_major_axis", semi_major_axis))
     edge = math.acos(max(-1.0, 1.0 - shoulder_height / groove_radius))
@@ -241,7 +254,7 @@ def truncation_warnings(contact_angle, semi_major_axis, groove_radius, shoulder_
                 + (f" (assumed height {SHOULDER_HEIGHT_FRACTION:g} D; give the bearing's shoulder heights)"
                    if assumed else ""))
     return [(f"{where}: the contact ellipse (to {far:.1f} deg from the groove bottom) runs over {shoulder} "
-            f"({_count(bad)}): the ellipse is truncated and the pressure higher than computed")]
+            f"({_count(bad, what)}): the ellipse is truncated and the pressure higher than computed")]
 
 
 def viscosity_ratio_warnings(viscosity_ratio):
@@ -275,10 +288,11 @@ def _shoulder(bearing, race):
     return (SHOULDER_HEIGHT_FRACTION * bearing.ball_diameter, True) if h is None else (h, False)
 
 
-def _contact_checks(bearing, ball_loads):
+def _contact_checks(bearing, ball_loads, what="case(s)"):
     """Pressure, deflection and truncation warnings of loaded balls: ``ball_loads`` is a sequence of
-    (race, Q, alpha) with flat arrays (unloaded balls, Q = 0 or NaN, are skipped). Returns the pressure
-    messages and the deflection and truncation messages (in this order in the reports)."""
+    (race, Q, alpha) with flat arrays (unloaded balls, Q = 0 or NaN, are skipped); ``what`` names what
+    the messages count (the cases, or the loaded balls). Returns the pressure messages and the
+    deflection and truncation messages (in this order in the reports)."""
     from . import geometry, hertz
 
     d, dm = bearing.ball_diameter, bearing.pitch_diameter
@@ -293,27 +307,33 @@ def _contact_checks(bearing, ball_loads):
         curv = geometry.raceway_curvature(d, dm, f, alpha, race=race)
         contacts[race] = (alpha, f, hertz.point_contact(q, curv.curvature_sum, curv.curvature_difference,
                                                         bearing.reduced_modulus))
-        pressure += contact_pressure_warnings(contacts[race][2].p_max, where=f"{race} contact")
+        pressure += _pressure_messages(contacts[race][2].p_max, f"{race} contact", what)
     shape = []
     for race, (_alpha, _f, pc) in contacts.items():
-        shape += deflection_warnings(pc.delta, d, where=f"{race} contact")
+        shape += _deflection_messages(pc.delta, d, f"{race} contact", what)
     for race, (alpha, f, pc) in contacts.items():
         h, assumed = _shoulder(bearing, race)
-        shape += truncation_warnings(alpha, pc.a, f * d, h, where=f"{race} contact", assumed=assumed)
+        shape += _truncation_messages(alpha, pc.a, f * d, h, f"{race} contact", assumed, what)
     return pressure, shape
 
 
 def _static_checks(bearing, radial_load, axial_load):
-    """P0 of ISO 76 against C0, where the bearing has a static rating (catalog or ISO 76)."""
+    """P0 of ISO 76 against C0, where the bearing has a static rating (the catalog's, or ISO 76's from
+    the ball set) and ISO 76 defines P0 (X0, Y0 of its table 1 for the contact angle)."""
     from . import ratings
+    from .errors import InputError
 
-    try:
+    c0 = bearing.static_load_rating
+    if c0 is None:
+        if any(getattr(bearing, k) is None for k in ("n_balls", "ball_diameter", "pitch_diameter")):
+            return []  # no C0 to compare with
         c0 = ratings.bearing_ratings(bearing).static_load_rating
-        angle = bearing.contact_angle or 0.0
-        return static_load_warnings(ratings.static_equivalent_load(np.abs(radial_load), np.abs(axial_load), angle,
-                                                                   bearing_type=bearing.type), c0)
-    except (ValueError, ArithmeticError, TypeError):  # no rating for this geometry (angle outside ISO 76)
+    try:
+        p0 = ratings.static_equivalent_load(np.abs(radial_load), np.abs(axial_load), bearing.contact_angle or 0.0,
+                                            bearing_type=bearing.type)
+    except InputError:  # an angular-contact angle outside the rows of ISO 76 table 1: P0 is not defined
         return []
+    return static_load_warnings(p0, c0)
 
 
 def contact_warnings(bearing, axial_load, ball_load_inner, ball_load_outer, contact_angle_inner,
@@ -348,7 +368,7 @@ def contact_warnings(bearing, axial_load, ball_load_inner, ball_load_outer, cont
 
 
 def combined_warnings(bearing, loads, ball_load_inner, ball_load_outer, contact_angle_inner,
-                      contact_angle_outer):
+                      contact_angle_outer, *, static=True):
     """Every plausibility warning of a bearing under combined load, from its load distribution.
 
     Parameters
@@ -361,6 +381,9 @@ def combined_warnings(bearing, loads, ball_load_inner, ball_load_outer, contact_
         (..., Z): Q_i, Q_o of every ball, 0 (or NaN) for an unloaded ball. [N]
     contact_angle_inner, contact_angle_outer : array_like
         (..., Z): alpha_i, alpha_o of every ball. [rad]
+    static : bool, optional
+        Include the check of P0 against C0; False where the caller reports the static safety itself
+        (the life analysis warns of s0 < 1).
 
     Returns
     -------
@@ -384,11 +407,11 @@ def combined_warnings(bearing, loads, ball_load_inner, ball_load_outer, contact_
         return []
     a_i = np.reshape(contact_angle_inner, q_i.shape)
     a_o = np.reshape(contact_angle_outer, q_o.shape)
-    pressure, shape = _contact_checks(bearing, [("inner", q_i[ok], a_i[ok]), ("outer", q_o[ok], a_o[ok])])
-    static = _static_checks(bearing, np.hypot(f[ok, 0], f[ok, 1]), f[ok, 2])
-    per_ball = [m.replace(" case(s))", " loaded balls)").replace(" case(s),", " loaded balls,")
-                for m in pressure + shape]  # counted over the loaded balls, not the cases
-    return per_ball[:len(pressure)] + static + per_ball[len(pressure):]
+    # counted over the loaded balls, not the cases
+    pressure, shape = _contact_checks(bearing, [("inner", q_i[ok], a_i[ok]), ("outer", q_o[ok], a_o[ok])],
+                                      "loaded balls")
+    p0 = _static_checks(bearing, np.hypot(f[ok, 0], f[ok, 1]), f[ok, 2]) if static else []
+    return pressure + p0 + shape
 
 
 def high_speed_warnings(bearing, state):

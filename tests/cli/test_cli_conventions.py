@@ -329,3 +329,17 @@ def test_profile_csv_rows_are_counted_from_1(capsys, tmp_path):
     (tmp_path / "inner_roundness.csv").write_text("\n".join(lines) + "\n")
     line = one_line(*run(capsys, ["runout", "--errors", tmp_path / "measured_profile.toml"])[::2])
     assert line.endswith(f"got '10, abc' on line {first_data + 2}"), line
+
+
+# ----------------------------------------------------------------------------- speed guard and one speed
+@pytest.mark.parametrize("name", SPEED_COMMANDS)
+def test_an_impossible_speed_is_refused_alike_by_every_command(capsys, name):
+    # the d_m n guard (bearinglab.limits.check_speed) of every speed option, the message in rpm
+    line = one_line(*run(capsys, [*SPEED_COMMANDS[name], "--speed", "1e9 rpm"])[::2])
+    assert re.search(r"speed must be <= [\d.e+]+ \[rpm\] for d_m = [\d.]+ mm .*got 1e\+09 rpm$", line), line
+
+
+@pytest.mark.parametrize("name", ["frequencies", "bearing-set", "life"])
+def test_one_speed_commands_refuse_a_list(capsys, name):
+    line = one_line(*run(capsys, [*SPEED_COMMANDS[name], "--speed", "3000, 6000 rpm"])[::2])
+    assert "speed" in line and ("one speed" in line or "a list of speeds" in line), line

@@ -210,7 +210,7 @@ def test_inline_geometry(capsys):
         ),
         (
             ["-b", "4-1006095", "--speed", "3000 rpm", "-F", "0 kgf"],
-            r"axial-load must be > 0 \[N\], got 0.0",
+            r"axial-load must be > 0 \[N\], got 0 N \(0 kgf\)",
         ),
         (["-b", "4-1006095", "--speed", "3000 rpm", "-F", "-1 N"], r"axial-load must be > 0 \[N\]"),
         (

@@ -447,3 +447,86 @@ def test_skf_bad_input_is_one_line_and_exit_2(capsys, args, name):
     assert code == 2
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("bearinglab: error:") and name in lines[0]
+
+
+# ----------------------------------------------------------------------------- guard-rails (issue 15, review)
+_SKF_6205 = ("friction", "torque", "--model", "skf", "-b", "6205-2RS", "--radial-load", "100 N", "--speed",
+             "1000 rpm", "--viscosity", "30 cSt")
+
+
+@pytest.mark.parametrize("series, words", [
+    ("", "series must be one of ['2', '3', "),
+    ("  ", "got '  '"),
+    ("99", "(SKF's deep-groove series), got '99'"),
+])
+def test_skf_series_option_is_checked(capsys, series, words):
+    # an empty series is an error, never read as "not given" (and the message is the command line's)
+    code, _, err = run(capsys, *_SKF_6205, "--series", series)
+    line = one_line_error(code, err)
+    assert words in line and "SKFConstants" not in line
+
+
+def test_skf_series_option_gives_the_library_result(capsys):
+    from bearinglab import catalog
+
+    code, out, err = run(capsys, *_SKF_6205, "--series", "63", "--json")  # not the designation's 62
+    assert code == 0, err
+    m = friction.skf_for_bearing(catalog.get("6205-2RS"), 100.0, 0.0, 1000 * RPM, 30e-6, series="63")
+    assert json.loads(out)["total_moment_Nmm"] == pytest.approx(m.total_moment * 1e3, rel=1e-12)
+    m62 = friction.skf_for_bearing(catalog.get("6205-2RS"), 100.0, 0.0, 1000 * RPM, 30e-6)
+    assert m.total_moment != pytest.approx(m62.total_moment, rel=1e-6)
+
+
+def test_skf_series_from_a_bearing_file_is_checked(capsys, tmp_path):
+    path = tmp_path / "b.toml"
+    path.write_text('designation = "x6205"\ntype = "radial"\nbore = "25 mm"\noutside_diameter = "52 mm"\n'
+                    'series = ""\n', encoding="utf-8")
+    code, _, err = run(capsys, "friction", "torque", "--model", "skf", "--bearing-file", path, "-R", "100 N",
+                       "-n", "1000 rpm", "--viscosity", "30 cSt")
+    assert "series of 'x6205' must be one of" in one_line_error(code, err)
+    path.write_text(path.read_text().replace('series = ""\n', ""), encoding="utf-8")
+    code, _, err = run(capsys, "friction", "torque", "--model", "skf", "--bearing-file", path, "-R", "100 N",
+                       "-n", "1000 rpm", "--viscosity", "30 cSt")
+    assert "--series, e.g. --series 62" in one_line_error(code, err)
+
+
+def test_skf_refuses_angular_contact_and_series_without_skf(capsys):
+    code, _, err = run(capsys, "friction", "torque", "--model", "skf", "-b", "B218", "-R", "100 N", "-n", "1000 rpm",
+                       "--viscosity", "30 cSt")
+    assert "deep-groove (radial) bearings only; 'B218' is angular" in one_line_error(code, err)
+    code, _, err = run(capsys, "friction", "torque", "-b", "101", "-R", "10 N", "--series", "62")
+    assert "only the skf model takes --series" in one_line_error(code, err)
+
+
+@pytest.mark.parametrize("option, words", [
+    ("--bore=-12 mm", "bore must be > 0 [mm], got -12 mm"),
+    ("--outside-diameter=-3 mm", "outside-diameter must be > 0 [mm], got -3 mm"),
+    ("--static-load-rating=-5 N", "static-load-rating must be > 0 [N] (C0), got -5 N"),
+])
+def test_torque_bearing_data_messages_in_engineering_units(capsys, option, words):
+    code, _, err = run(capsys, "friction", "torque", "--type", "radial", "--bore", "12 mm", "--outside-diameter",
+                       "28 mm", "--static-load-rating", "2227 N", option, "-R", "10 N")
+    assert words in one_line_error(code, err)
+
+
+def test_task4_evaluates_the_skf_model_once(monkeypatch):
+    import sys
+
+    skf_module = sys.modules["bearinglab.friction.skf"]
+    calls = []
+    real = skf_module.skf
+
+    def counting(*args, **kwargs):
+        calls.append(kwargs.get("sliding_friction_coefficient"))
+        return real(*args, **kwargs)
+
+    session = measurement.read_session(EXAMPLES / "skf_6205.toml")
+    monkeypatch.setattr(skf_module, "skf", counting)
+    t4 = analysis.analyse(session).task4
+    assert len(calls) == 1 and np.all(np.isfinite(t4.model_residual_rms))
+    # the unfitted model from that one evaluation (mu_sl = 1 and the SKF mu_sl formula) is skf() itself
+    fr, n = np.array([50.0, 100.0, 200.0]), np.array([100.0, 200.0, 300.0])
+    t = real(fr, 0.0, n, 30e-6, 25e-3, 52e-3, series="62", sliding_friction_coefficient=0.08).total_moment
+    fit = fits.skf_friction(t, fr, 0.0, n, 30e-6, 25e-3, 52e-3, series="62", ehl_coefficient=0.04)
+    model = real(fr, 0.0, n, 30e-6, 25e-3, 52e-3, series="62", ehl_coefficient=0.04).total_moment
+    np.testing.assert_allclose(fit.model_residuals, t - model, rtol=0, atol=1e-16)

@@ -3,6 +3,7 @@ cycles, one set of ratings with ``catalog show``, and bad inputs."""
 
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -143,6 +144,7 @@ def test_catalog_show_and_life_give_the_same_ratings(capsys):
     (["--oil", "VG67", "--viscosity-100", "8 cSt", "--temperature", "70 degC"], "oil"),
     (["--oil", "VG68", "--viscosity-100", "8.7 cSt", "--temperature", "-300 degC"], "temperature"),
     (["--contamination", "dirty"], "contamination"),
+    (["--viscosity-100", "8.7 cSt"], "viscosity"),  # with --viscosity: never silently ignored
     (["--fx", "1 kg"], "fx"),
 ])
 def test_bad_input_is_one_line_and_exit_2(capsys, args, name):
@@ -154,3 +156,82 @@ def test_bad_input_is_one_line_and_exit_2(capsys, args, name):
     code, _, err = run(capsys, *base, *args)
     assert code == 2
     assert name in _one_line_error(err)
+
+
+# ----------------------------------------------------------------------------- guard-rails (issue 15, review)
+def _duty_file(tmp_path, speed, fz="2 kN", time=1.0):
+    path = tmp_path / "duty.toml"
+    path.write_text(f'[[step]]\nfz = "{fz}"\nspeed = {speed}\ntime = {time}\n', encoding="utf-8")
+    return str(path)
+
+
+@pytest.mark.parametrize("speed, words", [
+    ('"1e8 rpm"', ["duty-cycle step 1 speed must be <= 279330 [rpm] for d_m = 125.3 mm", "got 1e+08 rpm"]),
+    ('"-300 rpm"', ["duty-cycle step 1 speed must be > 0 [rpm]", "got -300 rpm"]),
+    ('"0 rpm"', ["duty-cycle step 1 speed must be > 0 [rpm]", "got 0 rpm"]),
+    ('"3000, 4000 rpm"', ["duty-cycle step 1 speed: give one speed, got 2 values"]),
+])
+def test_duty_cycle_speeds_follow_the_speed_option_rules(capsys, tmp_path, speed, words):
+    # the same parsing and guard-rails as --speed: the d_m n limit, > 0, in rpm (never rad/s), one value
+    code, _, err = run(capsys, "life", "-b", "B218", "--duty-cycle", _duty_file(tmp_path, speed),
+                       "--viscosity", "20 cSt")
+    line = _one_line_error(err)
+    assert code == 2 and all(w in line for w in words), line
+    assert "rad/s" not in line
+
+
+@pytest.mark.parametrize("time", ['"half"', "[0.5]", "true", "-0.5", "1.5"])
+def test_duty_cycle_time_share_is_checked(capsys, tmp_path, time):
+    code, _, err = run(capsys, "life", "-b", "B218", "--duty-cycle", _duty_file(tmp_path, '"3000 rpm"', time=time),
+                       "--viscosity", "20 cSt")
+    assert code == 2 and "duty-cycle step 1 time must be a share in [0, 1]" in _one_line_error(err)
+
+
+def test_speed_list_is_refused_not_cut_to_its_first_value(capsys):
+    code, _, err = run(capsys, "life", "-b", "B218", "--fz", "2 kN", "--speed", "3000, 6000 rpm",
+                       "--viscosity", "20 cSt")
+    assert code == 2 and "give one speed, got 2 values" in _one_line_error(err)
+
+
+def test_negative_thrust_on_one_angular_bearing_keeps_iso281(capsys):
+    # the 5-DOF distribution has no equilibrium (balls against the low shoulder): ISO 281 does not need it
+    args = ["life", "-b", "B218", "--fx", "1 kN", "--fz", "-2 kN", "--speed", "3000 rpm", "--viscosity", "20 cSt"]
+    code, out, err = run(capsys, *args, "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    b = catalog.get("B218")
+    with pytest.warns(ratings.RatingWarning):
+        lib = ratings.rating_life(b, [1e3, 0, -2e3, 0, 0], 3000 * RPM, kinematic_viscosity=20e-6,
+                                  load_distribution=False)
+    assert doc["basic_rating_life_Mrev"] == pytest.approx(lib.basic_rating_life / 1e6, rel=1e-12)
+    assert doc["static_safety_factor"] == pytest.approx(float(lib.static_safety_factor), rel=1e-12)
+    assert doc["reference_rating_life_Mrev"] is None and doc["modified_reference_rating_life_Mrev"] is None
+    why = [w for w in doc["warnings"] if w.startswith("ISO/TS 16281 reference lives not available")]
+    assert len(why) == 1 and "no physical solution" in why[0] and "low shoulder" in why[0]
+    assert not any(re.search(r"\bnan\b", w, flags=re.IGNORECASE) for w in doc["warnings"])
+    code, out, err = run(capsys, *args)
+    assert code == 0 and err == ""
+    text = " ".join(out.split())
+    assert "reference lives not available" in text and "basic_rating_life_Mrev" in text
+
+
+def test_negative_thrust_step_in_a_duty_cycle_keeps_iso281(capsys, tmp_path):
+    path = tmp_path / "duty.toml"
+    path.write_text('[[step]]\nfz = "2 kN"\nspeed = "3000 rpm"\ntime = 0.5\n'
+                    '[[step]]\nfz = "-2 kN"\nspeed = "3000 rpm"\ntime = 0.5\n', encoding="utf-8")
+    code, out, err = run(capsys, "life", "-b", "B218", "--json", "--viscosity", "20 cSt", "--duty-cycle", path)
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["basic_rating_life_Mrev"] > 0 and doc["reference_rating_life_Mrev"] is None
+    assert doc["steps"][0]["reference_rating_life_Mrev"] > 0 and doc["steps"][1]["reference_rating_life_Mrev"] is None
+    why = [w for w in doc["warnings"] if w.startswith("ISO/TS 16281 reference lives not available")]
+    assert len(why) == 1 and "at 1 of 2 steps (first: step 2): no physical solution" in why[0]
+
+
+def test_static_safety_is_warned_once(capsys):
+    code, out, _ = run(capsys, "life", "-b", "B218", "--fz", "400 kN", "--speed", "3000 rpm",
+                         "--viscosity", "20 cSt", "--json")
+    doc = json.loads(out)
+    assert code == 0 and doc["static_safety_factor"] < 1
+    static = [w for w in doc["warnings"] if "s0" in w or "C0" in w]
+    assert len(static) == 1, static

@@ -3,6 +3,7 @@ plots, the ROSS file and bad inputs."""
 
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -119,3 +120,29 @@ def test_bearing_set_by_offset_and_bad_preload(capsys):
     assert code == 2 and "preload" in _one_line_error(err)
     code, _, err = run(capsys, "bearing-set", "-b", "B218", "--arrangement", "XX")
     assert code == 2 and "arrangement" in _one_line_error(err)
+
+
+# ----------------------------------------------------------------------------- guard-rails (issue 15, review)
+@pytest.mark.parametrize("order", [["4-1006095", "B218"], ["B218", "4-1006095"]])
+def test_bearing_set_speed_guard_uses_the_largest_bearing(capsys, order):
+    # 1e6 rpm is within d_m n for the 8.7 mm bearing but not for B218 (125.3 mm), whichever comes first
+    code, _, err = run(capsys, "bearing-set", "-b", order[0], "-b", order[1], "--speed", "1e6 rpm", "--fz", "10 N")
+    line = _one_line_error(err)
+    assert code == 2 and "speed must be <= 279330 [rpm] for d_m = 125.3 mm" in line
+
+
+@pytest.mark.parametrize("option, words", [
+    ("--spacing=-5 mm", "spacing must be >= 0 [mm], got -5 mm"),
+    ("--preload=-3 kN", "preload must be >= 0 [N] (an axial force at rest), got -3000 N"),
+])
+def test_bearing_set_messages_in_engineering_units(capsys, option, words):
+    code, _, err = run(capsys, "bearing-set", "-b", "B218", option, "--fz", "1 kN")
+    assert code == 2 and words in _one_line_error(err)
+
+
+def test_bearing_set_prints_no_negative_zero(capsys):
+    code, out, err = run(capsys, "bearing-set", "-b", "B218", "--fz", "1 kN", "--preload", "500 N")
+    assert code == 0, err
+    assert "z = 0 mm" in out and not re.search(r"(?<![\w.])-0(?:\.0*)?(?![\w.])", out)
+    code, out, _ = run(capsys, "bearing-set", "-b", "B218", "--fz", "1 kN", "--preload", "500 N", "--json")
+    assert [math.copysign(1.0, m["position_mm"]) for m in json.loads(out)["bearings"]] == [1.0, 1.0]

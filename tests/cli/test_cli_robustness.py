@@ -163,7 +163,11 @@ def test_convergence_error_summary_has_no_function_name_nor_nan():
                          reason="the angle left (alpha0, 90 deg)")
     assert e.summary == "no convergence after 0 iterations: the angle left (alpha0, 90 deg)"
     p = ConvergenceError("x.y", iterations=3, residual=1e-3, estimate=0.0, reason="the ball leaves", physical=True)
-    assert p.summary == "the ball leaves (no convergence after 3 iterations (|residual| = 0.001))"
+    # a physical refusal reads as its reason, not as a weak solver (the iterations stay in str(exc))
+    assert p.summary == "no physical solution: the ball leaves"
+    assert "no convergence" not in p.summary and "after 3 iterations" in str(p)
+    q = ConvergenceError("x.y", iterations=4, residual=1e-3, estimate=0.0, reason="no convergence at F_a = 1 N")
+    assert q.summary == "no convergence at F_a = 1 N (after 4 iterations (|residual| = 0.001))"
 
 
 # ----------------------------------------------------------------------------- item 9: inputs echoed
@@ -273,3 +277,25 @@ def test_printed_displacements_are_in_micrometres(capsys, args):
 def test_no_command_creates_a_missing_output_directory(capsys, tmp_path, args):
     line = one_line_error(*run(capsys, *[a.format(tmp=tmp_path) for a in args])[::2])
     assert "does not exist" in line and not (tmp_path / "missing").exists()
+
+
+# ----------------------------------------------------------------------------- messages in the units typed
+@pytest.mark.parametrize("option, words", [
+    ("--radial-clearance=-5 um", "radial-clearance must be > 0 [um], got -5 um"),
+    ("--radial-clearance=0 mm", "radial-clearance must be > 0 [um], got 0 um"),
+    ("--ball-diameter=-2 mm", "ball-diameter must be > 0 [mm], got -2 mm"),
+    ("--pitch-diameter=0 mm", "pitch-diameter must be > 0 [mm], got 0 mm"),
+    ("--inner-groove-radius=0.9 mm", "inner-groove-radius must be > D/2 = 1 [mm] (the ball radius), got 0.9 mm"),
+    ("--outer-groove-radius=-1 mm", "outer-groove-radius must be > D/2 = 1 [mm] (the ball radius), got -1 mm"),
+])
+def test_inline_geometry_messages_in_engineering_units(capsys, option, words):
+    for command in (["frequencies", "-n", "1000 rpm"], ["axial-angle", "-F", "2 kgf"]):
+        line = one_line_error(*run(capsys, *command, "-b", "4-1006095", option)[:3:2])
+        assert words in line and "[m]" not in line, line
+
+
+def test_physical_refusal_reads_as_its_reason(capsys):
+    # no equilibrium for this input (exit 2): the message is the physical reason, not a weak solver
+    line = one_line_error(*run(capsys, "load-distribution", "-b", "7218B", "--fz", "-2 kN")[:3:2])
+    assert line.startswith("bearinglab: error: no physical solution: ") and "low shoulder" in line
+    assert "no convergence" not in line and "iterations" not in line

@@ -48,3 +48,25 @@ def test_commands_print_whole_numbers_at_80_columns(capsys, monkeypatch):
     assert main(["axial-angle", "-b", "4-1006095", "-F", "2 kgf"]) == 0
     out = capsys.readouterr().out
     assert "…" not in out and "14°28'03.97\"" in out
+
+
+# ----------------------------------------------------------------------------- no negative zero (review)
+@pytest.mark.parametrize("text, shown", [
+    ("-0", "0"), ("z = -0 mm", "z = 0 mm"), ("0.0000, -0.0000, 668.7709", "0.0000, 0.0000, 668.7709"),
+    ("-0e+00", "0e+00"), ("(-0.000 %)", "(0.000 %)"), ("\u22120.00", "0.00"),
+    # not a zero, or not a whole number: the sign stays
+    ("-0.5", "-0.5"), ("-0.00001", "-0.00001"), ("-10", "-10"), ("-0°30'00.00\"", "-0°30'00.00\""),
+    ("x-0", "x-0"), ("1e-0", "1e-0"), ("+0.0", "+0.0"),
+])
+def test_plain_zero(text, shown):
+    assert _common.plain_zero(text) == shown
+
+
+def test_tables_print_no_negative_zero(monkeypatch):
+    buf = io.StringIO()
+    monkeypatch.setattr(_common, "console", Console(file=buf, width=120, color_system=None))
+    _common.table("Bearing 0 (z = -0 mm)", ["quantity", "value"], [["δ_x, δ_y [µm]", "-0.0000, 3.5"], ["m", "-0"]],
+                  caption="at -0 rpm")
+    out = buf.getvalue()
+    assert "z = 0 mm" in out and "0.0000, 3.5" in out and "at 0 rpm" in out
+    assert not re.search(r"-0(?:\.0*)?(?:\s|,|$)", out), out

@@ -4,12 +4,13 @@ Bearing options  BearingName, BearingFile, CatalogFile and the inline geometry; 
 Execution        ExecutorOpt, WorkersOpt, ChunkSizeOpt; execution (one parallel.Execution with the
                  command's progress bar)
 Output           console, emit_json (one JSON document on stdout), table (a rich table), emit_csv,
-                 print_warnings
+                 print_warnings, plain_zero (no '-0' in printed numbers)
 Inputs echoed    inputs_echo (the bearing as used, the overrides, the quantities given)
 Input checks     choice, check_directory, check_output (directory and suffix of an output file),
                  check_output_directory (its parent exists),
                  check_input (an input file exists), parse_speeds (one rule for every speed option),
-                 parse_viscosity
+                 parse_speed (one speed), speed_size (the d_m of the speed guard), parse_length (a
+                 length > 0, the message in mm or um), parse_viscosity
 
 The command modules import these; none of them imports the package ``bearinglab.cli`` itself, so the
 application is built on import without a cycle. The physics (numpy, scipy, pint, matplotlib) is imported
@@ -88,7 +89,7 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
         changes["n_balls"] = balls
     for key, text in (("ball_diameter", ball_diameter), ("pitch_diameter", pitch_diameter)):
         if text is not None:
-            changes[key] = parse_quantity(text, "length", key.replace("_", "-"))
+            changes[key] = parse_length(text, key.replace("_", "-"))
     d = changes.get("ball_diameter", base.ball_diameter)
     for race, radius, conf in (("inner", inner_groove_radius, inner_conformity), ("outer", outer_groove_radius, outer_conformity)):
         if radius is not None and conf is not None:
@@ -96,7 +97,11 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
         if radius is not None:
             if d is None:
                 raise InputError(f"{race}-groove-radius: needs --ball-diameter")
-            changes[f"{race}_conformity"] = parse_quantity(radius, "length", f"{race}-groove-radius") / d
+            r = parse_quantity(radius, "length", f"{race}-groove-radius")
+            if not r > d / 2:  # the groove must hold the ball (conformity f = r / D > 0.5)
+                raise InputError(f"{race}-groove-radius must be > D/2 = {d / 2 / _MM:g} [mm] (the ball radius), "
+                                 f"got {r / _MM:g} mm")
+            changes[f"{race}_conformity"] = r / d
         elif conf is not None:
             changes[f"{race}_conformity"] = conf
     if contact_angle is not None and radial_clearance is not None:
@@ -105,7 +110,7 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
         changes["contact_angle"] = parse_quantity(contact_angle, "angle", "contact-angle")
         changes["radial_clearance"] = None
     elif radial_clearance is not None:
-        changes["radial_clearance"] = parse_quantity(radial_clearance, "length", "radial-clearance")
+        changes["radial_clearance"] = parse_length(radial_clearance, "radial-clearance", "um")
         changes["contact_angle"] = None
     elif {"inner_conformity", "outer_conformity", "ball_diameter"} & set(changes):
         # a new ball or new grooves keep the angle and re-derive the clearance
@@ -227,15 +232,27 @@ def _rich_table(title, columns, cells, caption, numeric):
     return t
 
 
+# a zero printed with a minus sign ("-0", "-0.0000", "-0e+00"): a rounding artefact, shown as 0. Only a
+# whole number: "-0°30'" (minus half a degree) and "-0.5" keep their sign
+_NEGATIVE_ZERO = re.compile(r"(?<![\w.])[-−](?=0(?:\.0*)?(?:[eE][-+]?\d+)?(?:$|[\s,;)\]%/]))")
+
+
+def plain_zero(text):
+    """``text`` with every negative zero ('-0', '-0.0000') written without its sign ('0', '0.0000')."""
+    return _NEGATIVE_ZERO.sub("", text)
+
+
 def table(title, columns, rows, *, caption=None, wide=False):
     """Print a rich table; ``columns`` are header strings, ``rows`` lists of already formatted cells.
 
-    A number is never shortened ('0.34…'): number columns do not wrap, text columns wrap. A table
+    A number is never shortened ('0.34…') and a zero never signed ('-0'; :func:`plain_zero`): number
+    columns do not wrap, text columns wrap. A table
     that still does not fit is printed wider than the console when the output is a file or a pipe,
     and stacked (one small quantity/value table per row) on a terminal. ``wide`` prints it wide on a
     terminal too.
     """
-    cells = [[escape(str(c)) for c in row] for row in rows]
+    title, caption = plain_zero(title), caption and plain_zero(caption)
+    cells = [[escape(plain_zero(str(c))) for c in row] for row in rows]
     numeric = [all(_NUMBER_CELL.match(row[i].strip()) for row in cells if i < len(row))
                for i in range(len(columns))]
     t = _rich_table(title, columns, cells, caption, numeric)
@@ -317,7 +334,42 @@ def check_input(path, what):
     return path
 
 
-def parse_speeds(text, name="speed", *, pitch_diameter=None, zero=True, what="the inner-ring speed"):
+_MM, _UM = 1e-3, 1e-6  # m per mm, per um
+_LENGTH_UNITS = {"mm": _MM, "um": _UM}
+
+
+def parse_length(text, name, unit="mm", *, zero=False):
+    """A length option [m], > 0 (>= 0 with ``zero``): the message gives the value in ``unit`` ("mm" or
+    "um"), the unit in which such a length is typed, never in metres."""
+    from ..units import parse_quantity
+
+    x = parse_quantity(text, "length", name)
+    if not (x >= 0 if zero else x > 0):
+        raise InputError(f"{name} must be {'>=' if zero else '>'} 0 [{unit}], got {x / _LENGTH_UNITS[unit]:g} {unit}")
+    return x
+
+
+def speed_size(bearing):
+    """d_m of the speed guard (:func:`bearinglab.limits.check_speed`) [m]: the pitch diameter, else the
+    mean of bore and outside diameter (the handbook's d_m); None when neither is known."""
+    if bearing.pitch_diameter is not None:
+        return bearing.pitch_diameter
+    if bearing.bore is not None and bearing.outside_diameter is not None:
+        return bearing.mean_diameter
+    return None
+
+
+def parse_speed(text, name="speed", *, bearing=None, zero=True, what="the inner-ring speed, a magnitude"):
+    """One speed [rad/s] by the rule of :func:`parse_speeds` (the d_m n guard with ``bearing``'s
+    :func:`speed_size`); a list is refused, never cut to its first value."""
+    w = parse_speeds(text, name, pitch_diameter=None if bearing is None else speed_size(bearing), zero=zero,
+                     what=what)
+    if w.size != 1:
+        raise InputError(f"{name}: give one speed, got {w.size} values in {text!r}")
+    return float(w[0])
+
+
+def parse_speeds(text, name="speed", *, pitch_diameter=None, zero=True, what="the inner-ring speed, a magnitude"):
     """The speeds of a speed option [rad/s]: one convention for every command. A speed is a magnitude,
     >= 0 (> 0 with ``zero=False``, where a zero speed has no meaning, e.g. a life in hours), and below
     the d_m n that no ball bearing of the size runs (:func:`bearinglab.limits.check_speed`) when the
@@ -328,7 +380,7 @@ def parse_speeds(text, name="speed", *, pitch_diameter=None, zero=True, what="th
     w = parse_values(text, "speed", name)
     bad = ~(w >= 0) if zero else ~(w > 0)
     if bad.any():
-        raise InputError(f"{name} must be {'>=' if zero else '>'} 0 [rpm] ({what}, a magnitude), got "
+        raise InputError(f"{name} must be {'>=' if zero else '>'} 0 [rpm] ({what}), got "
                          f"{float(w[bad][0]) / RPM:g} rpm")
     if pitch_diameter is not None:
         limits.check_speed(w, pitch_diameter, name)

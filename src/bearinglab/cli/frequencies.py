@@ -33,7 +33,9 @@ from ._common import (
     emit_csv,
     emit_json,
     inputs_echo,
+    parse_speed,
     resolve_bearing,
+    speed_size,
     table,
 )
 
@@ -138,7 +140,7 @@ def frequencies(
         radial_clearance,
         ball_material,
     )
-    w_in, w_out, fa, band_fraction = _read(speed, outer_speed, axial_load, hertz, harmonics, sidebands, band)
+    w_in, w_out, fa, band_fraction = _read(b, speed, outer_speed, axial_load, hertz, harmonics, sidebands, band)
     choice("elastic-constant", elastic_constant, ("materials", "paper"))
     out, angle = _frequencies(b, w_in, w_out, fa, hertz, elastic_constant)
     mask_rows = []
@@ -163,17 +165,17 @@ def frequencies(
         )
 
 
-def _read(speed, outer_speed, axial_load, hertz, harmonics, sidebands, band):
+def _read(b, speed, outer_speed, axial_load, hertz, harmonics, sidebands, band):
     """The options in SI, checked: ring speeds, axial load (or None), band as a fraction."""
+    from .. import limits
     from ..units import parse_quantity
-    if hertz not in ("exact", "table"):
-        raise InputError(f"hertz must be one of ['exact', 'table'], got {hertz!r}")
-
-    w_in = parse_quantity(speed, "speed", "speed")
-    if w_in < 0:  # one convention in every command: --speed is the inner ring's, >= 0
-        raise InputError(f"speed must be >= 0 [rpm] (the inner-ring speed; give --outer-speed a negative value "
-                         f"for rings turning against each other), got {w_in / _HZ * 60:g} rpm")
-    w_out = parse_quantity(outer_speed, "speed", "outer-speed")
+    choice("hertz", hertz, ("exact", "table"))
+    # one convention in every command: --speed is the inner ring's, >= 0, within the d_m n guard
+    w_in = parse_speed(speed, bearing=b, what="the inner-ring speed, a magnitude; give --outer-speed a negative "
+                                               "value for rings turning against each other")
+    w_out = parse_quantity(outer_speed, "speed", "outer-speed")  # signed: the sense relative to --speed
+    if speed_size(b) is not None:
+        limits.check_speed(w_out, speed_size(b), "outer-speed")
     if w_in == w_out:
         raise InputError(
             f"speed: the rings must turn relative to each other, got speed = outer-speed = "
@@ -193,16 +195,15 @@ def _read(speed, outer_speed, axial_load, hertz, harmonics, sidebands, band):
 def _frequencies(b, w_in, w_out, fa, hertz, elastic_constant):
     """Frequencies at the nominal angle, or at the operating angle under ``fa`` with the shift; and
     the angle [rad] they are at."""
-    from .. import kinematics, limits, stand, tables
+    from .. import kinematics, stand, tables
     from ..units import KGF, format_dms
     z, d, dm, a0 = b.require("n_balls", "ball_diameter", "pitch_diameter", "contact_angle")
-    limits.check_speed([w_in, w_out], dm)
     out = inputs_echo(b, speed_rpm=w_in / _HZ * 60.0, outer_speed_rpm=w_out / _HZ * 60.0,
                       elastic_constant=elastic_constant)
     shaft_hz = w_in / _HZ
     if fa is not None:
         if not fa > 0:
-            raise InputError(f"axial-load must be > 0 [N], got {fa!r} N")
+            raise InputError(f"axial-load must be > 0 [N], got {fa:g} N ({fa / KGF:g} kgf)")
         angle = float(stand.stand_analysis(b, fa, hertz=hertz, elastic_constant=elastic_constant).contact_angle)
         out.update(axial_load_N=fa, axial_load_kgf=fa / KGF, hertz=hertz)
     else:

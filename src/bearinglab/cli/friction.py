@@ -27,10 +27,12 @@ from ._common import (
     console,
     emit_json,
     inputs_echo,
+    parse_length,
     parse_speeds,
     parse_viscosity,
     print_warnings,
     resolve_bearing,
+    speed_size,
 )
 from ._common import table as _table
 
@@ -81,17 +83,18 @@ def _friction_bearing(
             )
         changes["type"] = bearing_type
     if bore is not None:
-        changes["bore"] = parse_quantity(bore, "length", "bore")
+        changes["bore"] = parse_length(bore, "bore")
     if static_load_rating is not None:
-        changes["static_load_rating"] = parse_quantity(
-            static_load_rating, "force", "static-load-rating"
-        )
+        c0 = parse_quantity(static_load_rating, "force", "static-load-rating")
+        if not c0 > 0:
+            raise InputError(f"static-load-rating must be > 0 [N] (C0), got {c0:g} N")
+        changes["static_load_rating"] = c0
     if mean_diameter is not None and outside_diameter is not None:
         raise InputError("mean-diameter: give --mean-diameter or --outside-diameter, not both")
     if outside_diameter is not None:
-        changes["outside_diameter"] = parse_quantity(outside_diameter, "length", "outside-diameter")
+        changes["outside_diameter"] = parse_length(outside_diameter, "outside-diameter")
     if mean_diameter is not None:
-        dm = parse_quantity(mean_diameter, "length", "mean-diameter")
+        dm = parse_length(mean_diameter, "mean-diameter")
         d = changes.get("bore", base.bore)
         if d is None:
             raise InputError("mean-diameter: needs the bore (--bore) to give the outside diameter")
@@ -228,6 +231,15 @@ def torque(
             rich_help_panel="Handbook constants",
         ),
     ] = "grease",
+    series: Annotated[
+        str | None,
+        typer.Option(
+            "--series",
+            help="For --model skf: the deep-groove series of SKF's constants, e.g. 62 (default: the "
+            "bearing's series, else read from its designation).",
+            rich_help_panel="Handbook constants",
+        ),
+    ] = None,
     json_out: JsonFlag = False,
 ):
     """Friction torque under combined load: handbook models (spec 001 section 3: P0, T, T0 and T_F) or SKF's."""
@@ -237,15 +249,19 @@ def torque(
     from ..units import RPM
     if model not in _MODELS:
         raise InputError(f"model must be one of {list(_MODELS)}, got {model!r}")
+    _check_constants(mu=mu, x0=x0, y0=y0, f=f, c=c, f0=f0, palmgren_f0=palmgren_f0)
     if model == "skf":
         b = resolve_bearing(bearing, bearing_file, catalog, contact_angle=contact_angle) if (
             bearing or bearing_file) else None
         if b is None:
             raise InputError("bearing: the skf model needs --bearing NAME or --bearing-file FILE (series, seals)")
+        b = _skf_bearing(b, series)
         fr, fa, n = _cases(radial_load, axial_load, speed)
         _check_speed(b, n)
         _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out)
         return
+    if series is not None:
+        raise InputError("series: only the skf model takes --series (SKF's geometry constants)")
     b = _friction_bearing(
         bearing,
         bearing_file,
@@ -303,14 +319,28 @@ def torque(
     print_warnings(notes)
 
 
+_CONSTANT_UNITS = {"mu": "-", "x0": "-", "y0": "-", "f": "-", "c": "-", "f0": "N·mm⁻²·min^(2/3)", "palmgren_f0": "-"}
+
+
+def _check_constants(**constants):
+    """The handbook constants given: finite, and >= 0 but for the exponent c (the message names the option,
+    not the library's parameter)."""
+    import math
+
+    for name, value in constants.items():
+        if value is None:
+            continue
+        if not math.isfinite(value) or (name != "c" and value < 0):
+            rule = "a finite number" if name == "c" else "a finite number >= 0"
+            raise InputError(f"{name.replace('_', '-')} must be {rule} [{_CONSTANT_UNITS[name]}], got {value!r}")
+
+
 def _check_speed(b, n):
     """The speed guard (d_m n), with the pitch diameter or the handbook's mean diameter, where known."""
     from .. import limits
 
-    dm = b.pitch_diameter if b.pitch_diameter is not None else (
-        b.mean_diameter if b.bore is not None and b.outside_diameter is not None else None)
-    if dm is not None:
-        limits.check_speed(n, dm)
+    if speed_size(b) is not None:
+        limits.check_speed(n, speed_size(b))
 
 
 def _static_warnings(b, p0):
@@ -344,18 +374,36 @@ def _echo(b, fr, fa, n, **options):
                        **{k: v for k, v in options.items() if v is not None})
 
 
+def _skf_bearing(b, series):
+    """The bearing with its SKF series checked: the --series given, else the bearing's own, else the one
+    its designation spells (:func:`bearinglab.friction.bearing_series`). An empty series is an error,
+    never taken as 'not given'."""
+    from .. import friction
+
+    if b.type != "radial":
+        raise InputError(f"model: the skf model's geometry constants are tabulated for deep-groove (radial) "
+                         f"bearings only; {b.designation!r} is {b.type}")
+    known = list(friction.DEEP_GROOVE_CONSTANTS)
+    for name, value in (("series", series), (f"series of {b.designation!r}", b.series)):
+        if value is not None:
+            if value.strip().upper() not in known:
+                raise InputError(f"{name} must be one of {known} (SKF's deep-groove series), got {value!r}")
+            return dataclasses.replace(b, series=value.strip().upper())
+    try:
+        friction.bearing_series(b.designation)
+    except InputError as exc:
+        raise InputError(f"series: {exc} (--series, e.g. --series 62)") from None
+    return b
+
+
 def _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out):
     """The SKF four-term model (:func:`bearinglab.friction.skf_for_bearing`): moments, power loss, mu_sl."""
     from .. import friction, tables
     from ..units import RPM
     if viscosity is None:
         raise InputError("viscosity: the skf model needs --viscosity (e.g. '30 cSt'; of the base oil for grease)")
-    if lubrication not in friction.LUBRICATION_METHODS:
-        hint = " (oil bath: its drag moment is not modelled)" if "bath" in lubrication else ""
-        raise InputError(f"lubrication must be one of {list(friction.LUBRICATION_METHODS)}, got "
-                         f"{lubrication!r}{hint}")
     nu = parse_viscosity(viscosity)
-    m = friction.skf_for_bearing(b, fr, fa, n, nu, lubrication=lubrication)
+    m = friction.skf_for_bearing(b, fr, fa, n, nu, lubrication=lubrication)  # checks the lubrication
     notes = _skf_warnings(b, fr, fa)
     moments = tables.rows(tables.skf_torque(m))
     rpm = tables.significant(n / RPM)

@@ -152,7 +152,7 @@ def _grid(axial_load, speed):
     from ..units import parse_values
     loads = parse_values(axial_load, "force", "axial-load")
     if np.any(~(loads > 0)):
-        raise InputError(f"axial-load must be > 0 [N], got {float(loads[~(loads > 0)][0])!r} N")
+        raise InputError(f"axial-load must be > 0 [N], got {float(loads[~(loads > 0)][0]):g} N")
     return loads, parse_speeds(speed)
 
 

@@ -54,7 +54,7 @@ from ._common import (
     emit_json,
     five_loads,
     inputs_echo,
-    parse_speeds,
+    parse_speed,
     parse_viscosity,
     print_warnings,
     resolve_bearing,
@@ -90,8 +90,8 @@ def _viscosity(viscosity, oil, viscosity_100, temperature):
     """kinematic_viscosity or the oil options of :func:`bearinglab.ratings.rating_life`."""
     from .. import ratings
     if viscosity is not None:
-        if oil is not None or temperature is not None:
-            raise InputError("viscosity: give --viscosity, or --oil with --temperature, not both")
+        if oil is not None or temperature is not None or viscosity_100 is not None:  # none is ignored
+            raise InputError("viscosity: give --viscosity, or --oil with --viscosity-100 and --temperature, not both")
         return {"kinematic_viscosity": parse_viscosity(viscosity, "viscosity")}
     if oil is None or temperature is None:
         raise InputError("viscosity: give --viscosity (e.g. '20 cSt'), or --oil VG68 with --viscosity-100 and "
@@ -126,27 +126,31 @@ def _reliability(percent):
     return percent / 100.0
 
 
-def _duty_cycle(path):
-    """Loads (k, 5), speeds (k,) and time shares (k,) of a duty-cycle file."""
+def _duty_cycle(path, bearing):
+    """Loads (k, 5), speeds (k,) and time shares (k,) of a duty-cycle file; each speed by the rule of every
+    speed option (:func:`parse_speed`: > 0, one value, within the d_m n guard of ``bearing``)."""
     import numpy as np
 
-    from ..units import parse_quantity
     try:
         doc = tomllib.loads(Path(path).read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as exc:
         raise InputError(f"duty-cycle: {path}: {exc}") from None
     steps = doc.get("step")
-    if not isinstance(steps, list) or not steps:
+    if not isinstance(steps, list) or not steps or not all(isinstance(s, dict) for s in steps):
         raise InputError(f"duty-cycle: {path}: needs [[step]] tables with loads, speed and time")
     loads, speeds, times = [], [], []
-    for k, s in enumerate(steps):
+    for k, s in enumerate(steps, 1):
         unknown = set(s) - {"fx", "fy", "fz", "mx", "my", "radial_load", "axial_load", "speed", "time"}
         if unknown or "speed" not in s or "time" not in s:
-            raise InputError(f"duty-cycle: step {k + 1} needs speed and time and takes fx, fy, fz, mx, my; got "
+            raise InputError(f"duty-cycle: step {k} needs speed and time and takes fx, fy, fz, mx, my; got "
                              f"{sorted(s)}")
         loads.append(five_loads(*(s.get(n) for n in ("fx", "fy", "fz", "mx", "my", "radial_load", "axial_load"))))
-        speeds.append(parse_quantity(s["speed"], "speed", f"duty-cycle step {k + 1} speed"))
-        times.append(float(s["time"]))
+        speeds.append(parse_speed(s["speed"], f"duty-cycle step {k} speed", bearing=bearing, zero=False))
+        t = s["time"]
+        if isinstance(t, bool) or not isinstance(t, (int, float)) or not 0.0 <= t <= 1.0:
+            raise InputError(f"duty-cycle step {k} time must be a share in [0, 1] [-] (the shares sum to 1), "
+                             f"got {t!r}")
+        times.append(float(t))
     return np.array(loads), np.array(speeds), np.array(times)
 
 
@@ -170,7 +174,7 @@ def life(
     json_out: JsonFlag = False,
 ):
     """Rating life (ISO 281, ISO/TS 16281): C, C0, Cu, P, L10, a_ISO, L_nm, L10r, L_nmr, s0; duty cycles."""
-    from .. import limits, ratings, tables
+    from .. import ratings, tables
     from ..units import RPM
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
@@ -181,24 +185,20 @@ def life(
     if duty_cycle is not None:
         if any(x is not None for x in (fx, fy, fz, mx, my, radial_load, axial_load, speed)):
             raise InputError("duty-cycle: the loads and speeds are in the file; give no --fx ... --speed")
-        _life_of_duty_cycle(b, *_duty_cycle(check_input(duty_cycle, "duty-cycle")), options, json_out)
+        _life_of_duty_cycle(b, *_duty_cycle(check_input(duty_cycle, "duty-cycle"), b), options, json_out)
         return
     if speed is None:
         raise InputError("speed: give the inner-ring speed, e.g. --speed '3000 rpm'")
-    n = float(parse_speeds(speed, zero=False, pitch_diameter=_size(b))[0])
+    n = parse_speed(speed, bearing=b, zero=False)
     loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
     dist = _distribution(b, loads)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the analysis returns its warnings
-        r = ratings.rating_life(b, loads, n, **options, **({} if dist is None else {"load_distribution": dist}))
-    notes = list(r.warnings)
-    if dist is not None:
-        notes += limits.combined_warnings(b, loads, dist.ball_load_inner, dist.ball_load_outer,
-                                          dist.contact_angle_inner, dist.contact_angle_outer)
+        r = ratings.rating_life(b, loads, n, **options, load_distribution=dist)
     doc = {**tables.rows(tables.rating_life(r))[0], "rating_source": r.rating_source,
            "inputs": _echo(b, options, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
                            my_Nmm=loads[4] * 1e3, speed_rpm=n / RPM),
-           "warnings": list(dict.fromkeys(notes))}
+           "warnings": _notes(b, loads, r.warnings, dist)}
     doc = {k: doc[k] for k in _KEYS}
     if json_out:
         emit_json(doc)
@@ -206,25 +206,53 @@ def life(
     _print(f"Rating life of {b.designation} at {doc['inputs']['speed_rpm']:g} rpm", doc)
 
 
-def _size(b):
-    """d_m of the speed guard: the pitch diameter, else the mean of bore and outside diameter."""
-    if b.pitch_diameter is not None:
-        return b.pitch_diameter
-    return b.mean_diameter if b.bore is not None and b.outside_diameter is not None else None
-
-
 def _distribution(b, loads):
-    """The load distribution of ISO/TS 16281 (the combined-load model at rest, Hertz constants at the free
-    angle: what :func:`bearinglab.ratings.rating_life` uses by default), computed here so that the
-    plausibility limits see the ball loads; None without the ball set."""
-    from ..quasistatic import combined
+    """The load distribution of the ISO/TS 16281 reference life
+    (:func:`bearinglab.ratings.reference_load_distribution`), computed here so that the plausibility limits
+    see the ball loads. A case without equilibrium is flagged, not raised: the ISO 281 lives do not need
+    the distribution. None without the ball set (the reference lives are then NaN, and say why)."""
+    from .. import ratings
 
-    if any(getattr(b, k) is None for k in ("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity",
-                                           "outer_conformity")):
-        return None
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the life analysis reports what matters to it
-        return combined.combined_analysis(b, loads, 0.0, stiffness_at="free")
+        return ratings.reference_load_distribution(b, loads, on_failure="flag")
+
+
+def _notes(b, loads, rating_notes, dist):
+    """The warnings of a life: the analysis's, why the reference lives are missing where the load
+    distribution failed, and the plausibility limits of the ball loads (bearinglab.limits; s0 < 1 is
+    the analysis's own warning, so the limits do not repeat it)."""
+
+    from .. import limits
+
+    notes = list(rating_notes)
+    if dist is not None:
+        notes += _unavailable(b, loads, dist)
+        notes += limits.combined_warnings(b, loads, dist.ball_load_inner, dist.ball_load_outer,
+                                          dist.contact_angle_inner, dist.contact_angle_outer, static=False)
+    return list(dict.fromkeys(notes))
+
+
+def _unavailable(b, loads, dist):
+    """Why the reference lives are missing where the load distribution found no equilibrium: the reason of
+    the first such case, from its :class:`~bearinglab.errors.ConvergenceError` (that case solved again alone:
+    a flagged result keeps no reason per case)."""
+    import numpy as np
+
+    from .. import ratings
+    from ..errors import ConvergenceError
+
+    failed = np.flatnonzero(~np.ravel(dist.converged))
+    if not failed.size:
+        return []
+    f = np.reshape(loads, (-1, 5))
+    where = "" if len(f) == 1 else f" at {failed.size} of {len(f)} steps (first: step {failed[0] + 1})"
+    try:
+        ratings.reference_load_distribution(b, f[failed[0]], on_failure="raise")
+        why = "the combined-load model found no equilibrium"
+    except ConvergenceError as exc:
+        why = exc.summary
+    return [f"ISO/TS 16281 reference lives not available{where}: {why}"]
 
 
 def _echo(b, options, **quantities):
@@ -251,9 +279,10 @@ def _life_of_duty_cycle(b, loads, speeds, times, options, json_out):
 
     from .. import ratings, tables
     from ..units import RPM
+    dist = _distribution(b, loads)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        d = ratings.duty_cycle_life(b, loads, speeds, times, **options)
+        d = ratings.duty_cycle_life(b, loads, speeds, times, **options, load_distribution=dist)
     steps = tables.rows(tables.rating_life(d.steps))
     hours = 2 * np.pi / d.mean_speed / 3600.0
     doc = {**tables.ratings(d.steps), "reliability_factor": d.steps.reliability_factor,
@@ -266,7 +295,7 @@ def _life_of_duty_cycle(b, loads, speeds, times, options, json_out):
            "inputs": _echo(b, options, steps=[{"fx_N": f[0], "fy_N": f[1], "fz_N": f[2], "mx_Nmm": f[3] * 1e3,
                                                 "my_Nmm": f[4] * 1e3, "speed_rpm": w / RPM, "time": t}
                                                for f, w, t in zip(loads.tolist(), speeds.tolist(), times.tolist())]),
-           "warnings": list(d.steps.warnings)}
+           "warnings": _notes(b, loads, d.steps.warnings, dist)}
     doc = tables.json_value(doc)
     if json_out:
         emit_json(doc)
@@ -277,7 +306,7 @@ def _life_of_duty_cycle(b, loads, speeds, times, options, json_out):
 
 def _print(title, doc):
     def fmt(v):
-        return "— (not defined)" if v is None else (f"{v:.6g}" if isinstance(v, float) else str(v))
+        return "— (see the warnings)" if v is None else (f"{v:.6g}" if isinstance(v, float) else str(v))
 
     src = doc["rating_source"]
     rows = [[k, fmt(v) + (f"  ({src[k[:-2]]})" if k[:-2] in src else "")] for k, v in doc.items()

@@ -50,6 +50,7 @@ from ._common import (
     emit_json,
     five_loads,
     inputs_echo,
+    parse_length,
     parse_speeds,
     print_warnings,
     resolve_bearing,
@@ -64,8 +65,8 @@ StiffnessAtOpt = Annotated[str, typer.Option("--stiffness-at", help="operating (
 PlotOpt = Annotated[Path | None, typer.Option("--plot", help="Polar plot of the ball loads into this PNG/PDF/SVG file.")]
 
 
-def _speeds(text, allow_list, bearing):
-    w = parse_speeds(text, pitch_diameter=bearing.require("pitch_diameter"))
+def _speeds(text, allow_list, pitch_diameter):
+    w = parse_speeds(text, pitch_diameter=pitch_diameter)
     if w.size > 1 and not allow_list:
         raise InputError("speed: a list of speeds needs --ross FILE (one speed otherwise)")
     return w
@@ -139,7 +140,7 @@ def load_distribution(
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)
     loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
-    w = _speeds(speed, ross is not None, b)
+    w = _speeds(speed, ross is not None, b.require("pitch_diameter"))
     phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
     choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
     if plot is not None:
@@ -221,13 +222,16 @@ def bearing_set(
     from ..units import parse_quantity
     bl = [_catalog.get(name, catalog=catalog) for name in bearing]
     choice("arrangement", arrangement, tuple(sets.ARRANGEMENTS))
-    s = parse_quantity(spacing, "length", "spacing")
+    s = parse_length(spacing, "spacing", zero=True)
     if preload is not None and preload_offset is not None:
         raise InputError("preload: give --preload or --preload-offset, not both")
     fp = 0.0 if preload is None else parse_quantity(preload, "force", "preload")
+    if not fp >= 0:
+        raise InputError(f"preload must be >= 0 [N] (an axial force at rest), got {fp:g} N")
     e = None if preload_offset is None else parse_quantity(preload_offset, "length", "preload-offset")
     loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
-    w = float(_speeds(speed, False, bl[0])[0])
+    # the speed guard of the largest bearing of the set (the highest d_m n)
+    w = float(_speeds(speed, False, max(b.require("pitch_diameter") for b in bl))[0])
     phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
     choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
     if plot is not None:
@@ -244,7 +248,7 @@ def bearing_set(
         carried = st.bearing_loads[k]
         if bool(np.all(st.converged)):
             notes += [f"bearing {k}: {m}" for m in _warnings(bk, carried, ns, [])]
-        members.append({"bearing": names[k], "orientation": int(orient[k]), "position_mm": float(pos[k] * 1e3),
+        members.append({"bearing": names[k], "orientation": int(orient[k]), "position_mm": float(pos[k] * 1e3) + 0.0,  # + 0.0: no -0
                         "loads": {"fx_N": carried[0], "fy_N": carried[1], "fz_N": carried[2],
                                   "mx_Nmm": carried[3] * 1e3, "my_Nmm": carried[4] * 1e3},
                         **tables.load_distribution(ns)})

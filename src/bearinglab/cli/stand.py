@@ -75,7 +75,8 @@ def axial_angle(
         raise InputError(f"rows must be an integer >= 1 [-], got {rows}")
     loads = parse_values(axial_load, "force", "axial-load")
     if np.any(~(loads > 0)):
-        raise InputError(f"axial-load must be > 0 [N], got {float(loads[~(loads > 0)][0])!r} N")
+        bad = float(loads[~(loads > 0)][0])
+        raise InputError(f"axial-load must be > 0 [N], got {bad:g} N ({bad / KGF:g} kgf)")
     scalar = loads.size == 1
     # the paper prints two rows; legacy mode reproduces exactly those unless --rows says otherwise
     max_rows = rows if rows is not None else (2 if legacy else None)

@@ -519,8 +519,6 @@ def _task3(session, groups, f3, mean_f0):
 
 def _task4(session, rows):
     """Task 4: the SKF model fitted to every row, one group per tilt (fits.skf_friction)."""
-    from ..friction.skf import skf
-
     b, settings, r = session.bearing, session.skf, session.rows
     gid, members = _groups([r.tilt], np.ones(r.tilt.size, dtype=bool))
     loads = (rows.radial_load, rows.axial_load, rows.shaft_speed, settings.kinematic_viscosity,
@@ -528,7 +526,6 @@ def _task4(session, rows):
     options = settings.model_options(b)
     try:
         f4 = fits.skf_friction(rows.torque, *loads, fit=settings.fit, groups=gid, **options)
-        unfitted = rows.torque - skf(*loads, **options).total_moment
     except InputError as exc:
         where = _where_rows(session, members[exc.group]) if hasattr(exc, "group") else session.source
         raise InputError(f"{where} (task 4, the SKF model): {exc}") from None
@@ -544,7 +541,7 @@ def _task4(session, rows):
         f4.residual_rms,
         f4.count,
         np.bincount(gid, weights=rows.torque, minlength=len(members)) / m,
-        np.sqrt(np.bincount(gid, weights=unfitted**2, minlength=len(members)) / m),
+        np.sqrt(np.bincount(gid, weights=f4.model_residuals**2, minlength=len(members)) / m),
         tuple(members),
     )
 

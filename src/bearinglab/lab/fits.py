@@ -545,6 +545,8 @@ class SKFFrictionFit(NamedTuple):
     """Number of points m."""
     residuals: np.ndarray
     """Measured minus fitted torque at every point (input order). [N*m]"""
+    model_residuals: np.ndarray | None = None
+    """Measured minus the model's own torque (mu_sl and M_rr unfitted) at every point (input order). [N*m]"""
 
 
 def _two_regressors(x, z, y, index, n_groups, labels):
@@ -618,7 +620,8 @@ def skf_friction(torque, radial_load, axial_load, shaft_speed, kinematic_viscosi
     The SKF model is linear in both unknowns:
     :math:`T = k\,\Phi_{ish}\Phi_{rs} G_{rr}(\nu n)^{0.6} + \mu_{sl} G_{sl} + M_{seal} + M_{drag}`
     (SKF Rolling bearings catalogue, Friction). The model's parts are computed by
-    :func:`bearinglab.friction.skf.skf` (G_sl as its sliding moment at mu_sl = 1) and the unknowns
+    :func:`bearinglab.friction.skf.skf`, evaluated once (G_sl as its sliding moment at mu_sl = 1; the
+    model's mu_sl by :func:`bearinglab.friction.skf.sliding_friction_coefficient`) and the unknowns
     found by ordinary least squares without intercept, all groups at once. Standard errors come from
     the OLS covariance with s^2 = sum(r_i^2)/(m - p), p the number of fitted parameters; NaN where
     m = p.
@@ -635,6 +638,7 @@ def skf_friction(torque, radial_load, axial_load, shaft_speed, kinematic_viscosi
     0.080000
     """
     from ..friction.skf import skf as _skf  # the lab's physics lives in bearinglab.friction
+    from ..friction.skf import sliding_friction_coefficient
 
     if fit not in SKF_FIT_PARAMETERS:
         raise InputError(f"fit must be one of {list(SKF_FIT_PARAMETERS)}, got {fit!r}")
@@ -642,10 +646,13 @@ def skf_friction(torque, radial_load, axial_load, shaft_speed, kinematic_viscosi
         raise InputError("sliding_friction_coefficient is what task 4 fits; do not give it")
     t = check_finite("torque", torque, "N*m")
     args = (radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside_diameter)
-    full = _skf(*args, **model)
-    unit = _skf(*args, sliding_friction_coefficient=1.0, **model)  # its sliding moment is G_sl
-    parts = (t, full.rolling_moment, unit.sliding_moment, full.seal_moment + full.drag_moment,
-             full.sliding_friction_coefficient)
+    # one evaluation of the model: at mu_sl = 1 its sliding moment is G_sl (M_sl = mu_sl G_sl); the model's
+    # own mu_sl is the SKF formula, with the same mu_EHL
+    unit = _skf(*args, sliding_friction_coefficient=1.0, **model)
+    ehl = {"ehl_coefficient": model["ehl_coefficient"]} if "ehl_coefficient" in model else {}
+    mu_of_model = sliding_friction_coefficient(kinematic_viscosity, shaft_speed,
+                                               0.5 * (np.asarray(bore) + np.asarray(outside_diameter)), **ehl)
+    parts = (t, unit.rolling_moment, unit.sliding_moment, unit.seal_moment + unit.drag_moment, mu_of_model)
     shape = np.broadcast(*parts).shape
     t, m_rr, g_sl, other, mu_model = (np.broadcast_to(p, shape).ravel() for p in parts)
     _x, y, index, n, labels = _prepare(g_sl, t - other, groups, "sliding_variable", "torque")
@@ -665,4 +672,5 @@ def skf_friction(torque, radial_load, axial_load, shaft_speed, kinematic_viscosi
             x_name="speed (a rolling moment)"
         )
         mu, se_mu = nan, nan
-    return _pack(SKFFrictionFit, labels, mu, k, se_mu, se_k, mu_mean, rms, m, residuals=r)
+    fit = _pack(SKFFrictionFit, labels, mu, k, se_mu, se_k, mu_mean, rms, m, residuals=r)
+    return fit._replace(model_residuals=t - (m_rr + mu_model * g_sl + other))

@@ -31,6 +31,7 @@ from .life import (
     duty_cycle_life,
     miner_life,
     rating_life,
+    reference_load_distribution,
 )
 from .lubrication import (
     CONTAMINATION_CLASSES,
@@ -103,6 +104,7 @@ __all__ = [
     "rated_viscosity",
     "rating_life",
     "reference",
+    "reference_load_distribution",
     "reference_rating_life",
     "reliability_factor",
     "static",

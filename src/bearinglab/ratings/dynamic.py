@@ -47,9 +47,11 @@ _MM = 1e-3  # m per mm
 MATERIAL_FACTOR = 1.3
 # ISO 281:2007 table 2, column of single-row radial and single-/double-row angular-contact groove ball
 # bearings: f_c against Dw cos(alpha) / Dpw (linear interpolation between rows, as the standard allows).
-# Checked (issue 12): every row agrees with an independent public transcription of the table (a bearing
-# calculator found by code search), which also lists rows at 0.11, 0.13, ... 0.39 that this table lacks;
-# linear interpolation here stays within 0.1 of those (0.17 %; largest at 0.19, 59.9 against 60.0).
+# Checked (issue 12): every row agrees with an independent public transcription of the table, the array
+# YFc of the JavaScript bearing calculator github.com/D3lixty33/bearing-calc, file
+# src/components/functions/sfereRadiali.js (commit 22adffac3ef5365d9e43ba7d9500cf90df66bc3f), which also
+# lists rows at 0.11, 0.13, ... 0.39 that this table lacks; linear interpolation here stays within 0.1 of
+# those (0.17 %; largest at 0.19, 59.9 against 60.0).
 _FC_GAMMA = np.array([0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.09, 0.10, 0.12, 0.14, 0.16,
                       0.18, 0.20, 0.22, 0.24, 0.26, 0.28, 0.30, 0.32, 0.34, 0.36, 0.38, 0.40])
 _FC = np.array([29.1, 35.8, 40.3, 43.8, 46.7, 49.1, 51.1, 52.8, 54.3, 55.5, 57.5, 58.8, 59.6,

@@ -3,6 +3,7 @@ r"""Rating life of a ball bearing: the ISO 281 and ISO/TS 16281 analysis of a Ba
 Ratings of a bearing
 --------------------
 bearing_ratings        C, C0, Cu and f0 of a BallBearing: catalog values first, else from the geometry
+reference_load_distribution   the ball loads of the ISO/TS 16281 reference life (combined-load model at rest)
 
 Analysis
 --------
@@ -37,6 +38,7 @@ __all__ = [
     "duty_cycle_life",
     "miner_life",
     "rating_life",
+    "reference_load_distribution",
 ]
 
 
@@ -188,11 +190,37 @@ def _viscosity(kinematic_viscosity, lubricant):
 _GEOMETRY_FIELDS = ("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity")
 
 
-def _combined_at_rest(bearing, loads, shaft_speed):
-    """Ball loads of the combined-load model at rest with the Hertz constants at alpha0 (ISO/TS 16281)."""
+def reference_load_distribution(bearing, loads, *, on_failure="raise"):
+    """The load distribution of the ISO/TS 16281 reference life, as :func:`rating_life` uses by default.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Needs its ball set and both conformities.
+    loads : array_like
+        (..., 5): Fx, Fy, Fz, Mx, My on the rotating ring. [N, N, N, N m, N m]
+    on_failure : {"raise", "flag"}, optional
+        A case without equilibrium raises :class:`~bearinglab.errors.ConvergenceError`, or is flagged
+        (NaN ball loads, ``converged`` False, the reason in ``warnings``); :func:`rating_life` then gives
+        NaN reference lives for it.
+
+    Returns
+    -------
+    LoadDistribution or None
+        :func:`bearinglab.quasistatic.combined.combined_analysis` at rest, with the Hertz constants at
+        the free contact angle (ISO/TS 16281:2008); None when the bearing's ball set or
+        conformities are not known.
+    """
     from ..quasistatic import combined  # the ratings do not need the quasi-static package to import
 
-    return combined.combined_analysis(bearing, loads, 0.0, stiffness_at="free")
+    if any(getattr(bearing, k) is None for k in _GEOMETRY_FIELDS):
+        return None
+    return combined.combined_analysis(bearing, loads, 0.0, stiffness_at="free", on_failure=on_failure)
+
+
+def _combined_at_rest(bearing, loads, shaft_speed):
+    """The default ``load_distribution`` callable of :func:`rating_life` (the speed is not used)."""
+    return reference_load_distribution(bearing, loads)
 
 
 def _nominal_angle(bearing):
@@ -231,8 +259,8 @@ def _iso281(bearing, ratings, fr, fa, moment):
     tilted = moment > 0
     if tilted.any():
         warnings.warn(f"{int(tilted.sum())} of {tilted.size} load cases carry a tilting moment: ISO 281's "
-                      "equivalent load P (and ISO 76's P0) is not defined there, so the ISO 281 lives and s0 "
-                      "are NaN; the ISO/TS 16281 reference life covers them", RatingWarning, stacklevel=3)
+                      "equivalent load P (and ISO 76's P0) is not defined there, and neither are the ISO 281 "
+                      "lives and s0; the ISO/TS 16281 reference life covers them", RatingWarning, stacklevel=3)
     return np.where(tilted, np.nan, p), np.where(tilted, np.nan, p0)
 
 
@@ -336,14 +364,22 @@ def _rating_life(bearing, loads, shaft_speed, nu, contamination, reliability, ep
     balls = _contact_loads(load_distribution, bearing, loads, shaft_speed)
     if balls is None:
         warnings.warn("no load distribution (the bearing's ball set and conformities are not known, or "
-                      "load_distribution=False): the ISO/TS 16281 reference lives are NaN", RatingWarning,
+                      "load_distribution=False): the ISO/TS 16281 reference lives are not defined", RatingWarning,
                       stacklevel=3)
     else:
         fi, fo = _conformities(bearing)
-        l10r = reference.reference_rating_life(balls[0], r.dynamic_load_rating, bearing.require("ball_diameter"),
-                                               bearing.require("pitch_diameter"), fi, fo,
-                                               _nominal_angle(bearing), rotating=rotating,
-                                               outer_contact_loads=balls[1])
+        failed = ~np.asarray(np.all(np.isfinite(balls[0]), axis=-1) & np.all(np.isfinite(balls[1]), axis=-1))
+        if failed.any():  # a flagged case of the load distribution (NaN ball loads): no reference life
+            warnings.warn(f"{int(failed.sum())} of {failed.size} load cases have no ball loads (the load "
+                          "distribution found no equilibrium; its warnings say why): their ISO/TS 16281 "
+                          "reference lives are not defined", RatingWarning, stacklevel=3)
+        qi, qo = (np.where(failed[..., None], 0.0, q) for q in balls)
+        with np.errstate(divide="ignore"):
+            l10r = reference.reference_rating_life(qi, r.dynamic_load_rating, bearing.require("ball_diameter"),
+                                                   bearing.require("pitch_diameter"), fi, fo,
+                                                   _nominal_angle(bearing), rotating=rotating,
+                                                   outer_contact_loads=qo)
+        l10r = np.where(failed, np.nan, l10r)
         with np.errstate(divide="ignore"):
             p_ref = r.dynamic_load_rating * (l10r / 1e6) ** (-1.0 / 3.0)
         a_ref = np.where(p_ref > 0, lubrication.life_modification_factor(
