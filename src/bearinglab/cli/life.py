@@ -223,10 +223,17 @@ def _notes(b, loads, rating_notes, dist):
     distribution failed, and the plausibility limits of the ball loads (bearinglab.limits; s0 < 1 is
     the analysis's own warning, so the limits do not repeat it)."""
 
+    import numpy as np
+
     from .. import limits
 
     notes = list(rating_notes)
     if dist is not None:
+        # the model's own warnings (e.g. a thrust the angular-contact bearing cannot carry) qualify the
+        # reference lives; its failure notes are replaced by the reason _unavailable gives
+        steps = "" if np.reshape(loads, (-1, 5)).shape[0] == 1 else " (case k is duty-cycle step k + 1)"
+        notes += [f"load distribution of the reference lives{steps}: {w}" for w in dist.warnings
+                  if "not converged" not in w]
         notes += _unavailable(b, loads, dist)
         notes += limits.combined_warnings(b, loads, dist.ball_load_inner, dist.ball_load_outer,
                                           dist.contact_angle_inner, dist.contact_angle_outer, static=False)
