@@ -296,6 +296,7 @@ def test_inline_geometry_messages_in_engineering_units(capsys, option, words):
 
 def test_physical_refusal_reads_as_its_reason(capsys):
     # no equilibrium for this input (exit 2): the message is the physical reason, not a weak solver
-    line = one_line_error(*run(capsys, "load-distribution", "-b", "7218B", "--fz", "-2 kN")[:3:2])
-    assert line.startswith("bearinglab: error: no physical solution: ") and "low shoulder" in line
+    line = one_line_error(*run(capsys, "high-speed", "-b", "7218B", "-F", "100 N", "-n", "30000 rpm",
+                               "--raceway-control", "inner")[:3:2])
+    assert line.startswith("bearinglab: error: no physical solution: ") and "leaves the inner raceway" in line
     assert "no convergence" not in line and "iterations" not in line
