@@ -73,7 +73,7 @@ _HELP_NAMES = ["-h", "--help"]
 
 app = typer.Typer(
     name="bearinglab",
-    help="Ball-bearing mechanics: test-stand contact angles, Hertz contact, friction torque, runout, high-speed model.",
+    help="Ball-bearing mechanics: combined loads and bearing sets, rating life, friction torque, high speed, test stand, runout, frequencies.",
     no_args_is_help=True,
     pretty_exceptions_enable=False,
     add_completion=False,
@@ -86,7 +86,7 @@ def _main_options(
     version: bool = typer.Option(False, "--version", help="Print the version and exit.", is_eager=True,
                                  callback=_version),
 ):
-    """Ball-bearing mechanics: test-stand contact angles, Hertz contact, friction torque, runout, high-speed model."""
+    """Ball-bearing mechanics: combined loads and bearing sets, rating life, friction torque, high speed, test stand, runout, frequencies."""
 
 
 for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, friction, runout, serve):

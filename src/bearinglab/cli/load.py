@@ -129,7 +129,7 @@ def load_distribution(
     ross: Annotated[Path | None, typer.Option("--ross", help="Write the ROSS BearingElement coefficients (JSON, SI) over the --speed list to this .json file.")] = None,
     json_out: JsonFlag = False,
 ):
-    """Ball bearing under combined load (issue 11): displacement, ball loads, contact angles, pressures, stiffness."""
+    """Ball bearing under combined load (5-DOF): displacement, ball loads, contact angles, pressures, stiffness."""
     import numpy as np
 
     from .. import plots, tables
@@ -205,7 +205,7 @@ def bearing_set(
     arrangement: Annotated[str, typer.Option("--arrangement", help="DB (back-to-back) | DF (face-to-face) | DT (tandem).")] = "DB",
     spacing: Annotated[str, typer.Option("--spacing", help="Distance between bearing centres, e.g. '100 mm'.")] = "0 mm",
     preload: Annotated[str | None, typer.Option("--preload", help="Axial preload force at rest, e.g. '500 N'.")] = None,
-    preload_offset: Annotated[str | None, typer.Option("--preload-offset", help="Axial interference instead, e.g. '5 um'.")] = None,
+    preload_offset: Annotated[str | None, typer.Option("--preload-offset", help="Axial interference from first contact (zero preload) instead, e.g. '5 um'; negative is axial play.")] = None,
     fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
     radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
     speed: SpeedOpt = "0 rpm", first_ball_angle: FirstBallOpt = "0 deg", stiffness_at: StiffnessAtOpt = "operating",
