@@ -167,7 +167,8 @@ def test_sessions_without_skf_table_have_no_task4():
         ('viscosity = "30 mm^2/s"', 'viscosity = "30 mm"', "field 'skf.viscosity'"),
         ('lubrication = "grease"', 'lubrication = "oil-bath"', "field 'skf.lubrication': must be one of"),
         ('fit = "sliding"', 'fit = "mu"', "field 'skf.fit': must be one of"),
-        ('series = "62"', 'series = "99"', "field 'skf.series'"),
+        ('series = "62"', 'series = "99"', r"field 'skf.series': must be one of \['2', .*\(deep groove\), got '99'; or give r1"),
+        ('series = "62"', 'series = ""', r"field 'skf.series': must be one of .* got ''"),
         ('series = "62"', 'series = "62"\nr1 = 3.9e-7', "field 'skf.r1': give all of r1, r2, s1, s2"),
     ],
 )
@@ -175,6 +176,11 @@ def test_skf_table_errors_name_the_field(old, new, message):
     text = EXAMPLE.read_text().replace(old, new)
     with pytest.raises(InputError, match=message):
         measurement.parse_session(text, source="s.toml")
+
+
+def test_skf_series_is_read_without_its_spaces():
+    session = measurement.parse_session(EXAMPLE.read_text().replace('series = "62"', 'series = " 62 "'))
+    assert session.skf.series == "62"
 
 
 def test_skf_constants_given_in_the_file():

@@ -557,11 +557,16 @@ def _skf_settings(table, bearing, ctx):
         constants = friction.SKFConstants(*(numbers.get(k, 0.0) for k in _SKF_CONSTANT_KEYS[:4]),
                                           r3=numbers.get("r3", 0.0), s3=numbers.get("s3", 0.0))
     else:
-        try:
-            series = (friction.series_constants(table["series"]) and str(table["series"])
-                      if "series" in table else friction.bearing_series(bearing.designation))
-        except InputError as exc:
-            raise ctx.error(("skf", "series"), f"{exc}; or give r1, r2, s1, s2") from None
+        if "series" in table:
+            series = str(table["series"]).strip()
+            if series.upper() not in friction.DEEP_GROOVE_CONSTANTS:  # the message names the file's keys
+                raise ctx.error(("skf", "series"), f"must be one of {list(friction.DEEP_GROOVE_CONSTANTS)} "
+                                                   f"(deep groove), got {table['series']!r}; or give r1, r2, s1, s2")
+        else:
+            try:
+                series = friction.bearing_series(bearing.designation)
+            except InputError as exc:
+                raise ctx.error(("skf", "series"), f"{exc}; or give r1, r2, s1, s2") from None
     return SKFSettings(nu, picked["lubrication"], picked["fit"], series, constants, numbers.get("ehl", 0.05))
 
 
