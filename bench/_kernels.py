@@ -22,6 +22,7 @@ this machine; bench/axial_angle.py and tests/test_bench_scripts.py check them to
 from __future__ import annotations
 
 import math
+
 import numpy as np
 
 from bearinglab import _solve

@@ -8,7 +8,6 @@ import numpy as np
 import pytest
 from b218_cases import B218, DEG, FAST, GEO, _solve, loads, speeds
 from hypothesis import given
-from numpy.testing import assert_allclose
 
 from bearinglab import catalog, parallel, quasistatic
 from bearinglab.errors import ConvergenceError, InputError, ValidityWarning
