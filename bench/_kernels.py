@@ -94,8 +94,6 @@ _LANES = 512  # cases a thread advances together (its arrays stay in the L1/L2 c
 def _build():
     import numba
 
-    cbrt = np.cbrt
-
     @numba.njit(parallel=True, cache=True)
     def kernel(fa, cs, a0, c, s, xtol, ftol_percent, max_iter, alpha, iterations, residual):
         # Each thread takes blocks of _LANES cases and advances them together, each case stopping on its own
@@ -105,17 +103,20 @@ def _build():
         for blk in numba.prange((n + _LANES - 1) // _LANES):
             lo = blk * _LANES
             m = min(_LANES, n - lo)
-            y, tt, live = np.empty(m), np.empty(m), np.ones(m, dtype=np.bool_)
+            y = np.empty(m)
+            tt = np.empty(m)
+            live = np.ones(m, dtype=np.bool_)
             for j in range(m):
                 k = lo + j
                 t = fa[k] / cs[k]
                 tt[j] = t * t
-                y[j] = min(c[k] * cbrt(tt[j] / (s[k] * s[k])), c[k])
+                y[j] = min(c[k] * np.cbrt(tt[j] / (s[k] * s[k])), c[k])
             for _ in range(_START_MAX_ITER):  # the start, branch-free over the block
                 n_live = 0
                 for j in range(m):
                     k = lo + j
-                    ck, yj = c[k], y[j]
+                    ck = c[k]
+                    yj = y[j]
                     s2 = s[k] * s[k]
                     u = ck - yj
                     y2 = yj * yj
@@ -148,7 +149,7 @@ def _build():
                         q = gap / ca
                         ratio = fa[k] / (cs[k] * q * math.sqrt(q) * sa)  # eq. (1)
                         tan = sa / ca
-                        dx = (cbrt(ratio * ratio) - 1.0) / (tan + (2.0 / 3.0) / tan + sa / gap)
+                        dx = (np.cbrt(ratio * ratio) - 1.0) / (tan + (2.0 / 3.0) / tan + sa / gap)
                         new = a + dx
                         if new <= a0[k]:
                             new = 0.5 * (a + a0[k])
