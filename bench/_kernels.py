@@ -26,6 +26,7 @@ import math
 import numpy as np
 
 from bearinglab import _solve
+from bearinglab.stand import _gap_step
 
 _KERNEL = None
 _AVAILABLE = None
@@ -57,12 +58,7 @@ def solve_one(fa, cs, a0, c, s, xtol, ftol_percent, max_iter):
     tt = t * t
     y = min(c * _cbrt(tt / s2), c)  # the start: Newton on P(y) of eq. (1) squared, from above
     for _ in range(_START_MAX_ITER):
-        u = c - y
-        y2 = y * y
-        y3 = y2 * y
-        w = s2 + (2.0 * c - y) * y
-        tu2 = tt * u * u
-        dy = (y3 * w - tu2 * u) / (3.0 * y2 * w + 2.0 * y3 * u + 3.0 * tu2)
+        dy = _gap_step(y, c, s2, tt)
         y = y - dy
         if not abs(dy) > _START_RTOL * y:
             break
@@ -94,6 +90,8 @@ _LANES = 512  # cases a thread advances together (its arrays stay in the L1/L2 c
 def _build():
     import numba
 
+    step = numba.njit(inline="always")(_gap_step)
+
     @numba.njit(parallel=True, cache=True)
     def kernel(fa, cs, a0, c, s, xtol, ftol_percent, max_iter, alpha, iterations, residual):
         # Each thread takes blocks of _LANES cases and advances them together, each case stopping on its own
@@ -115,15 +113,8 @@ def _build():
                 n_live = 0
                 for j in range(m):
                     k = lo + j
-                    ck = c[k]
                     yj = y[j]
-                    s2 = s[k] * s[k]
-                    u = ck - yj
-                    y2 = yj * yj
-                    y3 = y2 * yj
-                    w = s2 + (2.0 * ck - yj) * yj
-                    tu2 = tt[j] * u * u
-                    dy = (y3 * w - tu2 * u) / (3.0 * y2 * w + 2.0 * y3 * u + 3.0 * tu2)
+                    dy = step(yj, c[k], s[k] * s[k], tt[j])
                     new = yj - dy
                     on = live[j]
                     y[j] = new if on else yj

@@ -456,18 +456,23 @@ def _gap_start(thrust_ratio, free_angle, cos_a0, sin_a0, n, *, rtol=_solve.AXIAL
     y = np.array(np.broadcast_to(np.minimum(cos_a0 * np.cbrt(tt / s2), cos_a0), (n,)))
     live = np.ones(n, dtype=bool)
     for _ in range(max_iter):
-        u = cos_a0 - y
-        y2 = y * y
-        y3 = y2 * y
-        w = s2 + (2.0 * cos_a0 - y) * y
-        tu2 = tt * u * u
-        dy = (y3 * w - tu2 * u) / (3.0 * y2 * w + 2.0 * y3 * u + 3.0 * tu2)  # P / P'
+        dy = _gap_step(y, cos_a0, s2, tt)
         y = np.where(live, y - dy, y)
         live &= np.abs(dy) > rtol * y
         if not live.any():
             break
     alpha = np.arccos(cos_a0 - y)
     return np.where(alpha < np.pi / 2, alpha, 0.5 * (free_angle + np.pi / 2))  # not at 90 deg: half-way there
+
+
+def _gap_step(y, cos_a0, sin2_a0, thrust_ratio2):
+    """The Newton step P(y)/P'(y) of :func:`_gap_start`, for floats or arrays (arithmetic only)."""
+    u = cos_a0 - y
+    y2 = y * y
+    y3 = y2 * y
+    w = sin2_a0 + (2.0 * cos_a0 - y) * y
+    tu2 = thrust_ratio2 * u * u
+    return (y3 * w - tu2 * u) / (3.0 * y2 * w + 2.0 * y3 * u + 3.0 * tu2)
 
 
 def _newton(fa, cs, a0, n, xtol, ftol_percent, max_iter):
