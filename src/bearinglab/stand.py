@@ -482,6 +482,7 @@ def _newton(fa, cs, a0, n, xtol, ftol_percent, max_iter):
     # A converged case is frozen (its step set to zero) while the others go on, so that each case takes
     # exactly the steps it would take alone: the result does not depend on the batch or chunk it sits in.
     live = np.ones(n, dtype=bool)
+    ratio = np.full(n, np.nan)  # max_iter = 0: nothing converged, no residual
     for _ in range(max_iter):
         ca, sa = np.cos(alpha), np.sin(alpha)
         gap = cos_a0 - ca
