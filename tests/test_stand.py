@@ -360,3 +360,24 @@ def test_operating_angle_is_bit_identical_for_any_block_and_batch(monkeypatch):
     grid = stand.operating_contact_angle(loads.reshape(1, 101), np.array([[CS], [2 * CS]]), A0)
     assert np.array_equal(whole, alone) and np.array_equal(whole, blocks) and np.array_equal(grid[0], whole)
     assert np.array_equal(grid[1], stand.operating_contact_angle(loads, 2 * CS, A0))
+
+
+# --------------------------------------------------------------------------- minimum stand load: inputs
+@pytest.mark.parametrize(("bad", "match"), [
+    ({"ball_diameter": -1.0}, r"^ball_diameter must be > 0 \[m\], got -1.0"),
+    ({"pitch_diameter": 0.0}, r"^pitch_diameter must be > 0 \[m\], got 0.0"),
+    ({"n_balls": 0}, r"^n_balls must be an integer >= 1 \[-\], got 0"),
+    ({"contact_angle": 2.0}, r"^contact_angle must be in \(.*, 90\) \[deg\], got 114.59"),
+])
+def test_min_axial_load_names_the_bad_input_its_rule_and_unit(bad, match):
+    args = {"shaft_speed": 3000 * RPM, "n_balls": 7, "ball_diameter": 2e-3, "pitch_diameter": 8.7355e-3,
+            "contact_angle": A0}
+    with pytest.raises(ValueError, match=match):
+        stand.min_axial_load(**{**args, **bad})
+
+
+def test_min_axial_load_of_single_precision_speeds_is_computed_in_double():
+    n32 = np.array([3000.0, 12345.0], dtype=np.float32) * np.float32(RPM)
+    got = stand.min_axial_load(n32, 7, 2e-3, 8.7355e-3, A0)
+    ref = stand.min_axial_load(n32.astype(float), 7, 2e-3, 8.7355e-3, A0)
+    assert got.minimum.dtype == np.float64 and np.array_equal(got.minimum, ref.minimum)
