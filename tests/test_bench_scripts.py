@@ -8,6 +8,7 @@ combined at speed, run_all, scaling). More next to their models: tests/lab/test_
 (life), tests/friction/test_skf.py (skf_friction); cli_help has its smoke test here.
 """
 
+import math
 import sys
 
 import numpy as np
@@ -19,10 +20,31 @@ UM_MRAD = np.array([1e-6, 1e-6, 1e-6, 1e-3, 1e-3])  # displacements in um, tilts
 
 def test_axial_angle_paths_agree_case_by_case(load_bench):
     bench = load_bench("axial_angle")
-    m = bench.measure(n_batch=300, n_baseline=50, n_brentq=10, repeat=1)
+    m = bench.measure(n_batch=300, n_baseline=50, n_brentq=10, repeat=1, n_small=100)
     assert m["diff"] < 1e-12 and m["diff_brentq"] < 1e-10
-    if "compiled_rate" in m:  # numba (the bench extra) installed
+    if "compiled_rate" in m:  # numba installed
         assert m["diff_compiled"] < 1e-12
+
+
+def test_axial_angle_kernels_take_the_library_steps_case_by_case(load_bench):
+    bench = load_bench("axial_angle")
+    kernels = bench._kernels
+    from bearinglab import stand
+
+    a0 = np.array([0.1, 0.3, 0.6, 1.0, 1.3] * 4)  # per-case bearings, loads from feather to near 90 deg
+    cs = np.full(a0.size, 5e4)
+    fa = cs * np.repeat([1e-9, 1e-5, 1e-3, 1e-1], 5)
+    lib = stand.operating_contact_angle(fa, cs, a0)
+    one = [kernels.solve_one(f, c, a, math.cos(a), math.sin(a), *bench.TOL) for f, c, a in zip(fa, cs, a0)]
+    assert_allclose([x[0] for x in one], lib, rtol=0, atol=1e-12)
+    assert all(x[1] >= 1 for x in one)
+    if kernels.available():
+        alpha, iterations, residual = kernels.operating_angle(fa, cs, a0, *bench.TOL)
+        assert_allclose(alpha, lib, rtol=0, atol=1e-12)
+        assert np.array_equal(iterations, [x[1] for x in one]) and np.all(residual == 0.0)
+        # a case that has not converged is flagged (negative count, the last residual), never silently kept
+        alpha, iterations, residual = kernels.operating_angle(fa, cs, a0, 0.0, 0.0, 1)
+        assert np.all(iterations == -1) and np.all(np.isfinite(residual))
 
 
 def test_axial_angle_main_prints_a_result_line(load_bench, capsys):

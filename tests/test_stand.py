@@ -317,3 +317,67 @@ def test_static_module_still_answers_with_the_stand_names():
             assert getattr(static, name) is getattr(stand, name)
     with pytest.raises(AttributeError, match="no_such_name"):
         static.no_such_name  # noqa: B018
+
+
+# --------------------------------------------------------------------------- the start of the Newton iteration
+def _angle_by_bisection(t, a0):
+    """Eq. (1), T = (cos a0 / cos a - 1)^1.5 sin a, solved for a by brentq on plain floats (independent of stand)."""
+    def f(a):
+        return (math.cos(a0) / math.cos(a) - 1.0) ** 1.5 * math.sin(a) / t - 1.0
+
+    return brentq(f, a0 + 1e-15, math.pi / 2 - 1e-12, xtol=1e-15, rtol=8.9e-16, maxiter=500)
+
+
+@settings(max_examples=200, deadline=None)
+@given(log_t=st.floats(-7.0, -0.5), a0=st.floats(math.radians(3), math.radians(80)))
+def test_the_start_is_the_root_of_eq1_so_newton_confirms_in_one_step(log_t, a0):
+    t = 10.0**log_t
+    ref = _angle_by_bisection(t, a0)
+    start = stand._gap_start(np.array(t), a0, math.cos(a0), math.sin(a0), 1)
+    # the polynomial start is the root of eq. (1) squared: to 1e-12 rad (brentq's own error is ~1e-15)
+    assert abs(start[0] - ref) < 1e-12
+    # ... so the Newton of section 6.3 converges in its first step, to the same root
+    alpha = stand.operating_contact_angle(t * CS, CS, a0, max_iter=1)
+    assert abs(alpha - ref) < 1e-12
+
+
+def test_heavy_and_feather_loads_still_reach_the_root():
+    # 90 deg is approached (T = 30) and the free angle is left by 1e-5 rad (T = 1e-9): the start may be less
+    # accurate there (the gap y is tiny or the angle near 90 deg), Newton still settles on the root.
+    for t in (1e-9, 1e-8, 3.0, 30.0):
+        alpha = stand.operating_contact_angle(t * CS, CS, A0)
+        assert abs(alpha - _angle_by_bisection(t, A0)) < 1e-12, t
+
+
+def test_operating_angle_is_bit_identical_for_any_block_and_batch(monkeypatch):
+    from bearinglab import _solve
+
+    loads = np.geomspace(1e-4, 1e3, 101) * KGF
+    whole = stand.operating_contact_angle(loads, CS, A0)
+    alone = np.array([stand.operating_contact_angle(f, CS, A0) for f in loads])
+    monkeypatch.setattr(_solve, "AXIAL_ANGLE_BLOCK", 7)  # cases evaluated in blocks of 7
+    blocks = stand.operating_contact_angle(loads, CS, A0)
+    grid = stand.operating_contact_angle(loads.reshape(1, 101), np.array([[CS], [2 * CS]]), A0)
+    assert np.array_equal(whole, alone) and np.array_equal(whole, blocks) and np.array_equal(grid[0], whole)
+    assert np.array_equal(grid[1], stand.operating_contact_angle(loads, 2 * CS, A0))
+
+
+# --------------------------------------------------------------------------- minimum stand load: inputs
+@pytest.mark.parametrize(("bad", "match"), [
+    ({"ball_diameter": -1.0}, r"^ball_diameter must be > 0 \[m\], got -1.0"),
+    ({"pitch_diameter": 0.0}, r"^pitch_diameter must be > 0 \[m\], got 0.0"),
+    ({"n_balls": 0}, r"^n_balls must be an integer >= 1 \[-\], got 0"),
+    ({"contact_angle": 2.0}, r"^contact_angle must be in \(.*, 90\) \[deg\], got 114.59"),
+])
+def test_min_axial_load_names_the_bad_input_its_rule_and_unit(bad, match):
+    args = {"shaft_speed": 3000 * RPM, "n_balls": 7, "ball_diameter": 2e-3, "pitch_diameter": 8.7355e-3,
+            "contact_angle": A0}
+    with pytest.raises(ValueError, match=match):
+        stand.min_axial_load(**{**args, **bad})
+
+
+def test_min_axial_load_of_single_precision_speeds_is_computed_in_double():
+    n32 = np.array([3000.0, 12345.0], dtype=np.float32) * np.float32(RPM)
+    got = stand.min_axial_load(n32, 7, 2e-3, 8.7355e-3, A0)
+    ref = stand.min_axial_load(n32.astype(float), 7, 2e-3, 8.7355e-3, A0)
+    assert got.minimum.dtype == np.float64 and np.array_equal(got.minimum, ref.minimum)

@@ -57,3 +57,15 @@ def test_static_thrust_angle_of_the_218_bearing():
                                           b.outer_conformity, b.contact_angle, ep)
     assert_allclose(np.degrees(r.contact_angle), [40.421, 40.662, 41.036, 41.609, 42.070, 42.653], atol=1e-3)
     assert_allclose(r.axial_displacement * 1e6, [9.96, 15.72, 24.73, 38.72, 50.20, 64.91], atol=1e-2)
+
+
+def test_single_precision_angles_are_evaluated_in_double_precision():
+    # float32 inputs (e.g. from a measurement file) are converted, not computed in float32: eq. (1) is steep
+    # near alpha0 and single precision would lose five digits of the load there
+    a32, a0_32 = np.array([0.25, 0.4, 1.2], dtype=np.float32), np.float32(0.2)
+    a64, a0_64 = a32.astype(float), float(a0_32)
+    for got, ref in ((static.thrust_from_angle(a32, 1e4, a0_64), static.thrust_from_angle(a64, 1e4, a0_64)),
+                     (static.thrust_from_angle(a64, 1e4, a0_32), static.thrust_from_angle(a64, 1e4, a0_64)),
+                     (static.axial_displacement_ratio(a32, a0_64), static.axial_displacement_ratio(a64, a0_64)),
+                     (static.axial_displacement_ratio(a64, a0_32), static.axial_displacement_ratio(a64, a0_64))):
+        assert got.dtype == np.float64 and np.array_equal(got, ref)

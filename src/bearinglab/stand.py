@@ -366,7 +366,7 @@ def _newton_step(axial_load, thrust, alpha, free_angle):
 
 def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xtol=_solve.AXIAL_ANGLE_XTOL,
                             ftol_percent=_solve.AXIAL_ANGLE_FTOL_PERCENT, max_iter=_solve.AXIAL_ANGLE_MAX_ITER):
-    r"""Operating contact angle under a pure axial load (spec 000 section 6): x0 of eq. (3), then Newton.
+    r"""Operating contact angle under a pure axial load (spec 000 section 6): the Newton of section 6.3.
 
     Parameters
     ----------
@@ -400,7 +400,13 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
 
     .. math:: \Delta x_k = \frac{(F_a/F_{a,k})^{2/3} - 1}{\tan\alpha_k + \tfrac23\cot\alpha_k + \sin\alpha_k/(\cos\alpha_0 - \cos\alpha_k)}
 
-    All elements are updated together; convergence is quadratic.
+    and the convergence test of section 6.3 (``xtol``, ``ftol_percent``). The start is not the paper's x0
+    of eq. (3) (:func:`~bearinglab.static.first_approximation`, which the iteration table keeps) but the
+    root of eq. (1) squared, a polynomial in the gap y = cos alpha0 - cos alpha that needs no
+    trigonometric function (:func:`_gap_start`); from it the Newton of section 6.3 confirms convergence in
+    one step for ordinary loads, where x0 of eq. (3) needs four. The angle is the same root to the
+    tolerance. Each case stops on its own convergence, so its angle does not depend on the batch or the
+    chunk it is solved in (the cases are evaluated in blocks that fit the CPU cache).
 
     Examples
     --------
@@ -412,35 +418,86 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
     fa = check_positive("axial_load", axial_load, "N")
     cs = check_positive("force_characteristic", force_characteristic, "N")
     a0 = _angle("free_angle", free_angle)
-    cos_a0 = np.cos(a0)  # before broadcasting: one cosine per bearing, not per case
-    x0 = first_approximation(fa / cs, a0)
-    alpha = np.minimum(a0 + x0, 0.5 * (a0 + np.pi / 2))  # x0 can overshoot 90 deg at absurd loads
-    alpha = np.array(np.broadcast_to(alpha, np.broadcast_shapes(fa.shape, cs.shape, a0.shape)), dtype=float)
+    shape = np.broadcast_shapes(fa.shape, cs.shape, a0.shape)
+    # flat inputs; a single value (one bearing) stays a scalar, so that its sine and cosine are taken once
+    flat = [x.reshape(()) if x.size == 1 else np.broadcast_to(x, shape).ravel() for x in (fa, cs, a0)]
+    n = math.prod(shape)
+    alpha, residual = np.empty(n), np.empty(n)
+    ok = np.empty(n, dtype=bool)
+    block = _solve.AXIAL_ANGLE_BLOCK
+    for lo in range(0, n, block):  # a loop over blocks of cases, not over cases: the arrays stay in cache
+        part = [x if x.ndim == 0 else x[lo:lo + block] for x in flat]
+        alpha[lo:lo + block], ok[lo:lo + block], residual[lo:lo + block] = _newton(*part, min(block, n - lo), xtol,
+                                                                                 ftol_percent, max_iter)
+    if not ok.all():
+        raise ConvergenceError("stand.operating_contact_angle", iterations=max_iter,
+                               residual=residual.reshape(shape)[()], estimate=alpha.reshape(shape)[()],
+                               reason="the angle did not settle in (alpha0, 90 deg)")
+    return alpha.reshape(shape)[()]
+
+
+def _gap_start(thrust_ratio, free_angle, cos_a0, sin_a0, n, *, rtol=_solve.AXIAL_ANGLE_START_RTOL,
+               max_iter=_solve.AXIAL_ANGLE_START_MAX_ITER):
+    r"""Start of the Newton of section 6.3: the operating angle from eq. (1) squared, by a Newton on the gap.
+
+    With u = cos alpha, y = cos alpha0 - u and T = F_a/C*, eq. (1) squared is T^2 u^3 = (c0 - u)^3 (1 - u^2),
+
+    .. math:: P(y) = y^3 (\sin^2\alpha_0 + 2 y\cos\alpha_0 - y^2) - T^2 (\cos\alpha_0 - y)^3 = 0,
+
+    with P(0) < 0 < P(cos alpha0) and P', P'' > 0 on (0, cos alpha0]: Newton from above descends
+    monotonically to the root. It starts at the root of the small-load limit sin^2 alpha0 y^3 = T^2 cos^3
+    alpha0, which is above the root, and each case stops after a step below ``rtol`` times the gap (the
+    error left is then of order rtol^2; the Newton of section 6.3 that follows settles the angle). Returns
+    alpha = arccos(cos alpha0 - y) [rad] for ``n`` cases (half-way between alpha0 and 90 deg where it
+    would be 90 deg).
+    """
+    s2 = sin_a0 * sin_a0
+    tt = thrust_ratio * thrust_ratio
+    y = np.array(np.broadcast_to(np.minimum(cos_a0 * np.cbrt(tt / s2), cos_a0), (n,)))
+    live = np.ones(n, dtype=bool)
+    for _ in range(max_iter):
+        dy = _gap_step(y, cos_a0, s2, tt)
+        y = np.where(live, y - dy, y)
+        live &= np.abs(dy) > rtol * y
+        if not live.any():
+            break
+    alpha = np.arccos(cos_a0 - y)
+    return np.where(alpha < np.pi / 2, alpha, 0.5 * (free_angle + np.pi / 2))  # not at 90 deg: half-way there
+
+
+def _gap_step(y, cos_a0, sin2_a0, thrust_ratio2):
+    """The Newton step P(y)/P'(y) of :func:`_gap_start`, for floats or arrays (arithmetic only)."""
+    u = cos_a0 - y
+    y2 = y * y
+    y3 = y2 * y
+    w = sin2_a0 + (2.0 * cos_a0 - y) * y
+    tu2 = thrust_ratio2 * u * u
+    return (y3 * w - tu2 * u) / (3.0 * y2 * w + 2.0 * y3 * u + 3.0 * tu2)
+
+
+def _newton(fa, cs, a0, n, xtol, ftol_percent, max_iter):
+    """The Newton of section 6.3 on ``n`` cases from :func:`_gap_start`: (alpha, converged, 1/ratio - 1)."""
+    cos_a0, sin_a0 = np.cos(a0), np.sin(a0)  # one sine and cosine per bearing, not per case
+    alpha = _gap_start(fa / cs, a0, cos_a0, sin_a0, n)
     # A converged case is frozen (its step set to zero) while the others go on, so that each case takes
     # exactly the steps it would take alone: the result does not depend on the batch or chunk it sits in.
-    live = np.ones(alpha.shape, dtype=bool)
-    for it in range(1, max_iter + 1):
+    live = np.ones(n, dtype=bool)
+    ratio = np.full(n, np.nan)  # max_iter = 0: nothing converged, no residual
+    for _ in range(max_iter):
         ca, sa = np.cos(alpha), np.sin(alpha)
         gap = cos_a0 - ca
         c = gap / ca
-        thrust = cs * c * np.sqrt(c) * sa  # eq. (1)
-        ratio = fa / thrust
+        ratio = fa / (cs * c * np.sqrt(c) * sa)  # F_a / F_a,k, eq. (1)
         tan = sa / ca
         dx = np.where(live, (np.cbrt(ratio * ratio) - 1.0) / (tan + (2.0 / 3.0) / tan + sa / gap), 0.0)
-        alpha += dx
+        new = alpha + dx
         # stay inside (alpha0, 90 deg): a step out of the domain is halved toward the boundary
-        low, high = alpha <= a0, alpha >= np.pi / 2
-        if low.any() or high.any():
-            alpha = np.where(low, 0.5 * (alpha - dx + a0), alpha)
-            alpha = np.where(high, 0.5 * (alpha - dx + np.pi / 2), alpha)
+        new = np.where(new <= a0, 0.5 * (alpha + a0), new)
+        alpha = np.where(new >= np.pi / 2, 0.5 * (alpha + np.pi / 2), new)
         live &= ~((np.abs(dx) < xtol) | (np.abs(ratio - 1.0) * 100.0 < ftol_percent))
         if not live.any():
-            break
-    else:
-        raise ConvergenceError("stand.operating_contact_angle", iterations=max_iter,
-                               residual=1.0 / ratio - 1.0, estimate=alpha,
-                               reason="the angle did not settle in (alpha0, 90 deg)")
-    return alpha[()]
+            return alpha, ~live, np.zeros(n)
+    return alpha, ~live, 1.0 / ratio - 1.0
 
 
 class IterationRow(NamedTuple):
