@@ -248,3 +248,14 @@ def test_static_safety_is_warned_once(capsys):
     assert code == 0 and doc["static_safety_factor"] < 1
     static = [w for w in doc["warnings"] if "s0" in w or "C0" in w]
     assert len(static) == 1, static
+
+
+def test_an_assumed_cleanliness_is_said_and_a_given_one_is_not(capsys):
+    base = ["life", "-b", "B218", "--fx", "5 kN", "--fz", "3 kN", "--speed", "3000 rpm", "--viscosity", "20 cSt"]
+    code, out, _ = run(capsys, *base, "--json")
+    doc = json.loads(out)
+    assert code == 0 and doc["inputs"]["contamination"] == 1.0
+    assert any(w.startswith("contamination: none given, so e_C = 1") for w in doc["warnings"])
+    for extra in (["--contamination", "normal"], ["--contamination-factor", "1"]):
+        code, out, _ = run(capsys, *base, *extra, "--json")
+        assert code == 0 and not any(w.startswith("contamination:") for w in json.loads(out)["warnings"])

@@ -107,6 +107,13 @@ def _viscosity(viscosity, oil, viscosity_100, temperature):
             "viscosity_100": parse_viscosity(viscosity_100, "viscosity-100")}
 
 
+# Said whenever the user gave no cleanliness: e_C = 1 is the laboratory's extreme cleanliness of ISO 281
+# table 13, and with a good lubricant it drives a_ISO to its limit of 50; service conditions are dirtier.
+_CLEANLINESS_ASSUMED = ("contamination: none given, so e_C = 1 (extreme cleanliness, ISO 281 table 13) is used "
+                        "for a_ISO and L_nm; give --contamination (e.g. normal) or --contamination-factor for "
+                        "the bearing's service")
+
+
 def _cleanliness(factor, name):
     if factor is not None and name is not None:
         raise InputError("contamination: give --contamination-factor or --contamination, not both")
@@ -182,10 +189,11 @@ def life(
     options = {**_viscosity(viscosity, oil, viscosity_100, temperature),
                "contamination": _cleanliness(contamination_factor, contamination),
                "reliability": _reliability(reliability)}
+    assumed = [_CLEANLINESS_ASSUMED] if contamination_factor is None and contamination is None else []
     if duty_cycle is not None:
         if any(x is not None for x in (fx, fy, fz, mx, my, radial_load, axial_load, speed)):
             raise InputError("duty-cycle: the loads and speeds are in the file; give no --fx ... --speed")
-        _life_of_duty_cycle(b, *_duty_cycle(check_input(duty_cycle, "duty-cycle"), b), options, json_out)
+        _life_of_duty_cycle(b, *_duty_cycle(check_input(duty_cycle, "duty-cycle"), b), options, json_out, assumed)
         return
     if speed is None:
         raise InputError("speed: give the inner-ring speed, e.g. --speed '3000 rpm'")
@@ -198,7 +206,7 @@ def life(
     doc = {**tables.rows(tables.rating_life(r))[0], "rating_source": r.rating_source,
            "inputs": _echo(b, options, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
                            my_Nmm=loads[4] * 1e3, speed_rpm=n / RPM),
-           "warnings": _notes(b, loads, r.warnings, dist)}
+           "warnings": assumed + _notes(b, loads, r.warnings, dist)}
     doc = {k: doc[k] for k in _KEYS}
     if json_out:
         emit_json(doc)
@@ -281,7 +289,7 @@ _KEYS = ("dynamic_load_rating_N", "static_load_rating_N", "fatigue_load_limit_N"
          "warnings")
 
 
-def _life_of_duty_cycle(b, loads, speeds, times, options, json_out):
+def _life_of_duty_cycle(b, loads, speeds, times, options, json_out, assumed=()):
     import numpy as np
 
     from .. import ratings, tables
@@ -302,7 +310,7 @@ def _life_of_duty_cycle(b, loads, speeds, times, options, json_out):
            "inputs": _echo(b, options, steps=[{"fx_N": f[0], "fy_N": f[1], "fz_N": f[2], "mx_Nmm": f[3] * 1e3,
                                                 "my_Nmm": f[4] * 1e3, "speed_rpm": w / RPM, "time": t}
                                                for f, w, t in zip(loads.tolist(), speeds.tolist(), times.tolist())]),
-           "warnings": _notes(b, loads, d.steps.warnings, dist)}
+           "warnings": [*assumed, *_notes(b, loads, d.steps.warnings, dist)]}
     doc = tables.json_value(doc)
     if json_out:
         emit_json(doc)
