@@ -225,7 +225,7 @@ def test_without_equilibrium_iso281_is_kept_and_the_reference_lives_say_why(caps
     code, out, err = run(capsys, *args)
     assert code == 0 and err == ""
     text = " ".join(out.split())
-    assert "reference lives not available" in text and "basic_rating_life_Mrev" in text
+    assert "reference lives not available" in text and "basic rating life L10 [10^6 rev]" in text
 
 
 def test_a_duty_cycle_step_without_equilibrium_keeps_iso281(capsys, tmp_path):
@@ -259,3 +259,14 @@ def test_an_assumed_cleanliness_is_said_and_a_given_one_is_not(capsys):
     for extra in (["--contamination", "normal"], ["--contamination-factor", "1"]):
         code, out, _ = run(capsys, *base, *extra, "--json")
         assert code == 0 and not any(w.startswith("contamination:") for w in json.loads(out)["warnings"])
+
+
+def test_the_table_names_quantities_by_their_symbols_not_by_json_keys(capsys):
+    code, out, _ = run(capsys, "life", "-b", "B218", "--fx", "5 kN", "--fz", "3 kN", "--speed", "3000 rpm",
+                       "--viscosity", "20 cSt", "--contamination", "normal")
+    text = " ".join(out.split())
+    assert code == 0
+    for label in ("basic dynamic load rating C [N]", "basic rating life L10h [h]", "viscosity ratio κ [-]",
+                  "life modification factor a_ISO [-]", "static safety factor s0 [-]"):
+        assert label in text, label
+    assert not re.search(r"\b[a-z]+(_[a-z0-9]+)+_(N|h|Mrev)\b", text), text

@@ -319,14 +319,34 @@ def _life_of_duty_cycle(b, loads, speeds, times, options, json_out, assumed=()):
            {k: v for k, v in doc.items() if k not in ("steps", "inputs")})
 
 
+# The printed names of the JSON keys: the symbols of ISO 281 and ISO/TS 16281, with the unit.
+_LABELS = {
+    "dynamic_load_rating_N": "basic dynamic load rating C [N]",
+    "static_load_rating_N": "basic static load rating C0 [N]",
+    "fatigue_load_limit_N": "fatigue load limit Cu [N]",
+    "equivalent_dynamic_load_N": "equivalent dynamic load P [N]",
+    "basic_rating_life_Mrev": "basic rating life L10 [10^6 rev]",
+    "basic_rating_life_h": "basic rating life L10h [h]",
+    "reliability_factor": "reliability factor a1 [-]",
+    "viscosity_ratio": "viscosity ratio κ [-]",
+    "life_modification_factor": "life modification factor a_ISO [-]",
+    "modified_rating_life_Mrev": "modified rating life L_nm [10^6 rev]",
+    "modified_rating_life_h": "modified rating life L_nmh [h]",
+    "reference_rating_life_Mrev": "reference rating life L10r [10^6 rev]",
+    "modified_reference_rating_life_Mrev": "modified ref. life L_nmr [10^6 rev]",
+    "static_safety_factor": "static safety factor s0 [-]",
+    "mean_speed_rpm": "mean speed [rpm]",
+}
+
+
 def _print(title, doc):
     def fmt(v):
         return "— (see the warnings)" if v is None else (f"{v:.6g}" if isinstance(v, float) else str(v))
 
     src = doc["rating_source"]
-    rows = [[k, fmt(v) + (f"  ({src[k[:-2]]})" if k[:-2] in src else "")] for k, v in doc.items()
-            if k not in ("rating_source", "warnings", "inputs")]
-    table(title, ["quantity", "value"], rows, caption="Mrev = 10^6 revolutions; --json for one JSON document")
+    rows = [[_LABELS.get(k, k), fmt(v) + (f"  ({src[k[:-2]]})" if k[:-2] in src else "")]
+            for k, v in doc.items() if k not in ("rating_source", "warnings", "inputs", "steps")]
+    table(title, ["quantity", "value"], rows, caption="--json for one JSON document (keys in the units shown)")
     print_warnings(doc["warnings"])
 
 
