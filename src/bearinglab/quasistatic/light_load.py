@@ -150,8 +150,9 @@ def light_load_warnings(axial_load, contact_angle_inner, contact_angle_outer, sh
     msgs = []
     if slip.any():
         k = int(np.flatnonzero(slip)[0])
-        msgs.append(f"light load: {int(slip.sum())} case(s) below the minimum axial load against gyroscopic slip "
-                    f"(spec 000 section 3), e.g. case {idx[k]}: {fa[k]:.4g} N < {fmin[k]:.4g} N")
+        msgs.append(f"light load: {int(slip.sum())} case(s) below the test-stand minimum axial load against "
+                    f"gyroscopic slip (friction coefficient {STAND_FRICTION:g}; `bearinglab stand-load`), "
+                    f"e.g. case {idx[k]}: {fa[k]:.4g} N < {fmin[k]:.4g} N")
     if lost.any():
         k = int(np.flatnonzero(lost)[0])
         msgs.append(f"light load: the outer contact angle is driven to zero in {int(lost.sum())} case(s) (below "
