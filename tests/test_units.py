@@ -118,7 +118,7 @@ def test_bare_numbers_need_a_unit_or_a_default():
         (
             "2 furlongs per fortnight",
             "force",
-            r"axial-load: '2 furlongs per fortnight' is a quantity of dimension",
+            r"axial-load: '2 furlongs per fortnight' is a quantity in fur/fortnight, expected a force",
         ),
         ("two kgf", "force", r"axial-load: cannot read 'two kgf' as a quantity"),
         ("", "force", r"axial-load: '' has no unit|cannot read"),
@@ -241,3 +241,13 @@ def test_decimal_comma_is_never_guessed(text):
 )
 def test_unambiguous_lists(text, expected):
     np.testing.assert_array_equal(units.parse_values(text, "force", "axial-load"), expected)
+
+
+@pytest.mark.parametrize(("text", "newton_metre"), [("1.5 Nm", 1.5), ("150 Nmm", 0.15), ("1.5 kNm", 1500.0),
+                                                    ("3 mNm", 3e-3), ("1.5 N*m", 1.5), ("1.5 N·m", 1.5)])
+def test_torques_as_engineers_write_them(text, newton_metre):
+    assert units.parse_quantity(text, "torque", "my") == pytest.approx(newton_metre, rel=1e-15)
+
+
+def test_nanometre_is_not_read_as_a_torque_spelling():
+    assert units.parse_quantity("5 nm", "length", "x") == pytest.approx(5e-9, rel=1e-15)

@@ -250,6 +250,8 @@ _SPELLINGS = (
     (re.compile(r"(?<![\w/])kgf(?!\w)", re.IGNORECASE), "kgf"),
     (re.compile(r"(?<![\w/])kp(?!\w)"), "kilopond"),
     (re.compile(r"(?<![\w/])cSt(?!\w)"), "centistokes"),
+    # torques as engineers write them: Nm, Nmm, kNm, mNm (capital N: "nm" stays the nanometre)
+    (re.compile(r"(?<![\w/])([kmM]?)N(mm|m)(?![\w/^*])"), r"\1N*\2"),
     (re.compile(r"(?<![\w/.^*])1\s*/\s*(?=[A-Za-z])"), " /"),  # "50 1/s" is 50 per second, one number
 )
 
@@ -374,7 +376,7 @@ def _describe(q):
     for kind, (dim, _si, _ex) in KINDS.items():
         if dim and q.check(dim):
             return kind.replace("_", " ")
-    return f"quantity of dimension {q.dimensionality}"
+    return f"quantity in {q.units:~P}"  # the unit it was read in, not pint's dimension symbols
 
 
 _NUMBER_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*)$")
