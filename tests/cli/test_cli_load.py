@@ -146,3 +146,30 @@ def test_bearing_set_prints_no_negative_zero(capsys):
     assert "z = 0 mm" in out and not re.search(r"(?<![\w.])-0(?:\.0*)?(?![\w.])", out)
     code, out, _ = run(capsys, "bearing-set", "-b", "B218", "--fz", "1 kN", "--preload", "500 N", "--json")
     assert [math.copysign(1.0, m["position_mm"]) for m in json.loads(out)["bearings"]] == [1.0, 1.0]
+
+
+def test_light_loads_and_soft_stiffnesses_keep_four_significant_digits(capsys):
+    code = main(["load-distribution", "-b", "4-1006095", "--fz", "0.1 N"])
+    out = " ".join(capsys.readouterr().out.split())
+    assert code == 0
+    doc = json.loads(_json_of(capsys, ["load-distribution", "-b", "4-1006095", "--fz", "0.1 N", "--json"]))
+    q = doc["max_ball_load_N"]
+    assert q < 0.1 and f"max ball load [N] │ {q:.5f} │" in out
+    k = doc["stiffness_matrix"][3][3] * 1e-3
+    assert f"{k:.6f}" in out and "0.00, 0.00" not in out
+
+
+def test_a_set_prints_no_empty_ball_table_and_the_largest_ball_load(capsys):
+    args = ["bearing-set", "-b", "B218", "--preload", "2 kN", "--fx", "5 kN", "--spacing", "100 mm"]
+    code = main(args)
+    out = capsys.readouterr().out
+    assert code == 0 and "Set DB of 2: ball loads" not in out and "Set DB of 2: shaft" in out
+    doc = json.loads(_json_of(capsys, [*args, "--json"]))
+    worst = max(m["max_ball_load_N"] for m in doc["bearings"])
+    tail = " ".join(out[out.index("Set DB of 2: shaft"):].split())
+    assert f"max ball load [N] │ {worst:.2f} │" in tail and "—" not in tail
+
+
+def _json_of(capsys, args):
+    assert main(args) == 0
+    return capsys.readouterr().out

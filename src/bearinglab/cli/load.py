@@ -173,24 +173,43 @@ def _f(x, spec):
     return "—" if x is None else format(x, spec)
 
 
-def _print_case(title, doc):
+def _sig(x, decimals=2):
+    """``x`` with ``decimals`` decimals, or more where that would leave fewer than four significant digits
+    (a light load, a soft direction): a load or a stiffness is never printed as 0.00 or 0.07."""
+    if x is None:
+        return "—"
+    if x == 0 or not math.isfinite(x):
+        return format(x, f".{decimals}f")
+    return format(x, f".{min(max(decimals, 3 - math.floor(math.log10(abs(x)))), 12)}f")
+
+
+def _print_case(title, doc, *, balls=True, body="ring"):
+    if balls:
+        _print_balls(title, doc)
+    _print_ring(title, doc, body)
+
+
+def _print_balls(title, doc):
     table(f"{title}: ball loads", ["ball", "ψ [deg]", "Q_i [N]", "Q_o [N]", "α_i [deg]", "α_o [deg]",
                                    "p_i [MPa]", "p_o [MPa]"],
-          [[str(j), _f(r["azimuth_deg"], ".2f"), _f(r["load_inner_N"], ".2f"), _f(r["load_outer_N"], ".2f"),
+          [[str(j), _f(r["azimuth_deg"], ".2f"), _sig(r["load_inner_N"]), _sig(r["load_outer_N"]),
             _f(r["contact_angle_inner_deg"], ".3f"), _f(r["contact_angle_outer_deg"], ".3f"),
             _f(r["max_pressure_inner_MPa"], ".0f"), _f(r["max_pressure_outer_MPa"], ".0f")]
            for j, r in enumerate(doc["balls"])])
+
+
+def _print_ring(title, doc, body="ring"):
     rows = [["δ_x, δ_y, δ_z [µm]", ", ".join(_f(doc[f"displacement_{a}_um"], ".4f") for a in "xyz")],
             ["θ_x, θ_y [mrad]", f"{_f(doc['tilt_x_mrad'], '.5f')}, {_f(doc['tilt_y_mrad'], '.5f')}"],
-            ["max ball load [N]", _f(doc["max_ball_load_N"], ".2f")]]
+            ["max ball load [N]", _sig(doc["max_ball_load_N"])]]
     k = doc["stiffness_matrix"]
     if k is not None and k[0][0] is not None:
-        rows += [["k_xx, k_yy, k_zz [N/µm]", ", ".join(f"{k[i][i] * 1e-6:.2f}" for i in range(3))],
-                 ["k_θx, k_θy [N·m/mrad]", ", ".join(f"{k[i][i] * 1e-3:.2f}" for i in (3, 4))]]
+        rows += [["k_xx, k_yy, k_zz [N/µm]", ", ".join(_sig(k[i][i] * 1e-6) for i in range(3))],
+                 ["k_θx, k_θy [N·m/mrad]", ", ".join(_sig(k[i][i] * 1e-3) for i in (3, 4))]]
     if "converged" in doc:
         rows.append(["converged (iterations, residual)",
                      f"{str(doc['converged']).lower()} ({doc['iterations']}, {_f(doc['residual'], '.1e')})"])
-    table(f"{title}: ring", ["quantity", "value"], rows, caption="--json for the full 5 × 5 stiffness matrix (SI)")
+    table(f"{title}: {body}", ["quantity", "value"], rows, caption="--json for the full 5 × 5 stiffness matrix (SI)")
 
 
 def _print_written(*paths):
@@ -267,7 +286,9 @@ def bearing_set(
         return
     for k, m in enumerate(members):
         _print_case(f"Bearing {k} ({m['bearing']}, orientation {m['orientation']:+d}, z = {m['position_mm']:g} mm)", m)
-    _print_case(f"Set {arrangement} of {len(members)}", {**doc, "balls": [], "max_ball_load_N": None})
+    loads = [m["max_ball_load_N"] for m in members if m["max_ball_load_N"] is not None]
+    _print_case(f"Set {arrangement} of {len(members)}", {**doc, "max_ball_load_N": max(loads, default=None)},
+                balls=False, body="shaft")  # the balls are in each bearing's table
     print_warnings(notes)
     _print_written(plot)
 
