@@ -202,3 +202,9 @@ def test_long_sweep_shows_a_progress_bar_on_stderr(capsys, monkeypatch):
     assert code == 0
     assert seen == [(3, 8), (6, 8), (8, 8)]
     assert len(json.loads(out)["cases"]) == 8
+
+
+@pytest.mark.parametrize(("load", "title"), [("2 kgf", "F_a = 19.6133 N at 0 rpm"), ("20 kN", "F_a = 20 kN at 0 rpm")])
+def test_the_title_gives_the_thrust_in_n_below_1_kn(capsys, load, title):
+    assert main(["high-speed", "-b", "4-1006095", "--axial-load", load, "--speed", "0 rpm"]) == 0
+    assert title in capsys.readouterr().out

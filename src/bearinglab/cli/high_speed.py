@@ -198,7 +198,9 @@ def _print_single(b, r, options):
     caption = (f"{options['raceway_control']}-raceway control, constants {options['constants']}, "
                f"{'physical' if options['gyroscopic_sign'] > 0 else 'reversed'} gyroscopic sign, "
                f"solver {options['method']} ({r['method']}, {r['iterations']} iterations, residual {_f(r['residual'], '.2e')})")
-    table(f"Bearing {b.designation}: F_a = {r['axial_load_N'] / 1e3:g} kN at {r['speed_rpm']:g} rpm", ["quantity", "inner", "outer"], [
+    fa = r["axial_load_N"]  # in kN from 1 kN up, else in N: "F_a = 19.6133 N", not "0.0196133 kN"
+    fa_text = f"{fa / 1e3:g} kN" if fa >= 1e3 else f"{fa:g} N"
+    table(f"Bearing {b.designation}: F_a = {fa_text} at {r['speed_rpm']:g} rpm", ["quantity", "inner", "outer"], [
         ["contact angle [deg]", _f(r["contact_angle_inner_deg"], ".4f"), _f(r["contact_angle_outer_deg"], ".4f")],
         ["static contact angle α_s [deg]", _f(r["static_contact_angle_deg"], ".4f"), ""],
         ["ball load Q [N]", _f(r["ball_load_inner_N"], ".1f"), _f(r["ball_load_outer_N"], ".1f")],
