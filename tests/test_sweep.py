@@ -140,3 +140,12 @@ def test_execution_value_equals_the_keyword_arguments(sweep_file):
     assert sweep.run_sweep(spec, execution=Execution())["converged"].sum() == 16
     with pytest.raises(InputError, match="not both"):
         sweep.run_sweep(spec, execution=Execution(), workers=2)
+
+
+def test_input_columns_carry_no_unit_round_trip_noise(tmp_path):
+    path = tmp_path / "s.toml"
+    path.write_text('model = "high-speed"\nbearing = "B218"\n[parameters]\naxial_load = "20 kN"\n'
+                    'speed = "1797 rpm, 3000 rpm"\n', encoding="utf-8")
+    cols = sweep.run_sweep(sweep.load_sweep(path))
+    assert cols["speed_rpm"].tolist() == [1797.0, 3000.0]
+    assert cols["axial_load_N"].tolist() == [20000.0, 20000.0]

@@ -323,12 +323,15 @@ def input_columns(cases, kinds):
     Returns
     -------
     dict
-        ``name + suffix`` -> converted array (``axial_load_N``, ``contact_angle_deg``, ``speed_rpm``).
+        ``name + suffix`` -> converted array (``axial_load_N``, ``contact_angle_deg``, ``speed_rpm``),
+        rounded to 12 significant digits where a unit was converted.
     """
     out = {}
     for k, v in cases.items():
         suffix, scale = KIND_UNITS[kinds[k]]
-        out[f"{k}{suffix}"] = v * scale
+        # an input read in the user's unit, taken to SI and back, drops the last-bit noise of the round trip
+        # (3000 rpm is written 3000, not 3000.0000000000005); 12 digits are more than any input carries
+        out[f"{k}{suffix}"] = significant(v * scale).reshape(np.shape(v)) if scale != 1 else v
     return out
 
 
