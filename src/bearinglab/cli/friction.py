@@ -448,7 +448,8 @@ def _cases(radial_load, axial_load, speed):
     sizes = {v.size for v in (fr, fa, n) if v.size > 1}
     if len(sizes) > 1:
         raise InputError(
-            "radial-load, axial-load, speed: lists must have the same length (or one value)"
+            "radial-load, axial-load, speed: lists are paired element by element (rows of a log) and must "
+            "have the same length, or one value"
         )
     return np.broadcast_arrays(fr, fa, n)
 
