@@ -212,7 +212,7 @@ def test_torque_human_output(capsys):
         ),
         (["-R", "1 N"], "bearing: give --bearing NAME"),
         (["-b", "nosuch", "-R", "1 N"], "unknown name 'nosuch'"),
-        (["-b", "101", "-R", "1N,2N", "-A", "1N,2N,3N"], "lists are paired element by element (rows of a log) and must have the same length"),
+        (["-b", "101", "-R", "1N,2N", "-A", "1N,2N,3N"], "lists are paired element by element \\(rows of a log\\) and must have the same length"),
     ],
 )
 def test_torque_bad_input_is_one_line(capsys, args, message):
