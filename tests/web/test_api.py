@@ -261,15 +261,7 @@ def test_page_has_the_form_and_the_catalog(client):
 
 
 def test_page_shows_the_contact_angles(client):
-    r = client.get(
-        "/",
-        params={
-            "bearing": "B218",
-            "axial_load": "20 kN",
-            "speed": "10000 rpm",
-            "constants": "harris",
-        },
-    )
+    r = client.get("/", params={"bearing": "B218", "axial_load": "20 kN", "speed": "10000 rpm", "constants": "harris"})
     assert r.status_code == 200
     # with Harris's constants: the published 49.308 / 32.514 deg (spec 004 section 7.1)
     assert '<span class="value" id="contact-angle-inner">49.308°</span>' in r.text
