@@ -1,15 +1,33 @@
 """``bearinglab serve`` and the command line's JSON adapter (``cli.run_json``) the web API runs on."""
 
 import json
+import socket
 import subprocess
 import sys
 
+import pytest
 import uvicorn
 
 from bearinglab import cli
+from bearinglab.cli import serve as serve_cli
 
 
-def test_serve_is_a_command_and_listens_on_localhost_by_default(monkeypatch, capsys):
+@pytest.fixture
+def bound_port():
+    """A port of 127.0.0.1 this test holds (bound and listening), closed when the test ends."""
+    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as sock:
+        sock.bind(("127.0.0.1", 0))
+        sock.listen()
+        yield sock.getsockname()[1]
+
+
+@pytest.fixture
+def no_bind_check(monkeypatch):
+    """These tests are about the arguments uvicorn gets: a port another program holds is no concern."""
+    monkeypatch.setattr(serve_cli, "_check_bindable", lambda host, port: None)
+
+
+def test_serve_is_a_command_and_listens_on_localhost_by_default(monkeypatch, capsys, no_bind_check):
     calls = []
     monkeypatch.setattr(uvicorn, "run", lambda app, **kw: calls.append((app, kw)))
     assert cli.main(["serve"]) == 0
@@ -19,7 +37,7 @@ def test_serve_is_a_command_and_listens_on_localhost_by_default(monkeypatch, cap
     assert "http://127.0.0.1:8000/" in capsys.readouterr().out
 
 
-def test_serve_takes_host_and_port(monkeypatch, capsys):
+def test_serve_takes_host_and_port(monkeypatch, capsys, no_bind_check):
     calls = []
     monkeypatch.setattr(uvicorn, "run", lambda app, **kw: calls.append(kw))
     assert cli.main(["serve", "--host", "0.0.0.0", "--port", "8123"]) == 0
@@ -31,6 +49,57 @@ def test_serve_rejects_a_bad_port(capsys):
     assert (
         capsys.readouterr().err.strip()
         == "bearinglab: error: port must be in [0, 65535], got 70000"
+    )
+
+
+def test_serve_on_a_port_in_use_is_one_line_and_exit_2(monkeypatch, capsys, bound_port):
+    calls = []
+    monkeypatch.setattr(uvicorn, "run", lambda app, **kw: calls.append(kw))
+    assert cli.main(["serve", "--port", str(bound_port)]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and calls == []  # no banner, no server
+    assert err == f"bearinglab: error: port: {bound_port} is already in use on 127.0.0.1\n"
+
+
+@pytest.mark.parametrize("host", ["256.1.1.1"])
+def test_serve_on_an_address_it_cannot_have_is_one_line_and_exit_2(monkeypatch, capsys, host):
+    calls = []
+    monkeypatch.setattr(uvicorn, "run", lambda app, **kw: calls.append(kw))
+    assert cli.main(["serve", "--host", host, "--port", "8765"]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and calls == []
+    assert err.startswith(f"bearinglab: error: host: cannot listen on '{host}' (")
+    assert err.count("\n") == 1
+
+
+def test_serve_checks_the_port_it_is_given_on_a_free_port(monkeypatch, capsys):
+    # the check closes its socket: the server can bind the same port right after
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        port = probe.getsockname()[1]
+    seen = []
+
+    def run(app, host, port, **kw):
+        with socket.socket() as sock:
+            sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+            sock.bind((host, port))
+            sock.listen()
+            seen.append(port)
+
+    monkeypatch.setattr(uvicorn, "run", run)
+    assert cli.main(["serve", "--port", str(port)]) == 0
+    assert seen == [port] and f"http://127.0.0.1:{port}/" in capsys.readouterr().out
+
+
+def test_serve_startup_failure_of_uvicorn_is_exit_2_not_3(monkeypatch, capsys, no_bind_check):
+    # a port taken between the check and uvicorn's bind: uvicorn exits 3, our code for a solver
+    def run(app, **kw):
+        raise SystemExit(3)
+
+    monkeypatch.setattr(uvicorn, "run", run)
+    assert cli.main(["serve", "--port", "8765"]) == 2
+    assert capsys.readouterr().err.endswith(
+        "bearinglab: error: serve: the server could not start on 127.0.0.1:8765\n"
     )
 
 

@@ -8,6 +8,8 @@ Commands
 COMMANDS   the ``serve`` command, by name (the application adds it)
 """
 
+import errno
+import socket
 from typing import Annotated
 
 import typer
@@ -16,6 +18,40 @@ from ..errors import InputError
 from ._common import console
 
 __all__ = ["COMMANDS"]
+
+
+def _check_bindable(host, port):
+    """Raise InputError naming ``host`` or ``port`` when the server could not listen there.
+
+    Binds (and closes) a socket on every address ``host`` resolves to, as uvicorn's asyncio server
+    does (``SO_REUSEADDR``, IPv6 sockets IPv6-only), so a taken port or an address this machine does
+    not have is one line before the banner, not the banner and a server log.
+    """
+    try:
+        infos = socket.getaddrinfo(
+            host or None, port, type=socket.SOCK_STREAM, flags=socket.AI_PASSIVE
+        )
+    except (OSError, UnicodeError) as exc:  # socket.gaierror is an OSError
+        reason = getattr(exc, "strerror", None) or exc
+        raise InputError(f"host: cannot listen on {host!r} ({reason})") from None
+    for family, kind, proto, _, address in dict.fromkeys(infos):
+        with socket.socket(family, kind, proto) as sock:
+            sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+            if family == socket.AF_INET6:
+                sock.setsockopt(socket.IPPROTO_IPV6, socket.IPV6_V6ONLY, 1)
+            try:
+                sock.bind(address)
+            except OSError as exc:
+                if exc.errno == errno.EADDRINUSE:
+                    raise InputError(f"port: {port} is already in use on {host}") from None
+                if exc.errno == errno.EACCES:
+                    raise InputError(
+                        f"port: no permission to listen on {port} on {host} (ports below 1024 "
+                        "need privileges)"
+                    ) from None
+                raise InputError(
+                    f"host: cannot listen on {host!r} ({exc.strerror or exc})"
+                ) from None
 
 
 def serve(
@@ -35,10 +71,16 @@ def serve(
         raise InputError(
             f"serve: needs the web extra (pip install 'bearinglab[web]'): {exc}"
         ) from None
+    _check_bindable(host, port)
     console.print(
         f"bearinglab calculator on http://{host}:{port}/ (Ctrl+C to stop)", highlight=False
     )
-    uvicorn.run(create_app(), host=host, port=port, log_level="warning")
+    try:
+        uvicorn.run(create_app(), host=host, port=port, log_level="warning")
+    except SystemExit as exc:  # uvicorn's startup failure is its exit code 3, which is ours for a solver
+        if exc.code in (0, None):
+            raise
+        raise InputError(f"serve: the server could not start on {host}:{port}") from None
 
 
 #: The ``serve`` command, as the application adds it.

@@ -12,6 +12,7 @@ options       the options an endpoint takes, by query-parameter name
 call          run an endpoint with query parameters -> ApiResult (status, document or error)
 error_body    the JSON body of a failed call: ``{"detail", "parameter", "error"}``
 parameter_of  the query parameter an error message names, if any
+web_message   a command-line message as the web says it: query parameters, not options
 """
 
 from __future__ import annotations
@@ -24,7 +25,15 @@ import typer
 
 from .. import cli
 
-__all__ = ["ENDPOINTS", "ApiResult", "call", "error_body", "options", "parameter_of"]
+__all__ = [
+    "ENDPOINTS",
+    "ApiResult",
+    "call",
+    "error_body",
+    "options",
+    "parameter_of",
+    "web_message",
+]
 
 #: Endpoint name -> the words of the command it runs.
 ENDPOINTS = {
@@ -80,6 +89,18 @@ def _is_file(param):
     return click_type == "path" or "Path" in str(annotation)
 
 
+def _reachable(endpoint):
+    """The click parameters of ``endpoint`` reachable from the web, by query-parameter name."""
+    command = _command(ENDPOINTS[endpoint])
+    out = {}
+    for param in getattr(command, "params", ()):
+        longs = [o for o in getattr(param, "opts", ()) if o.startswith("--")]
+        if not longs or longs[0][2:] in _HIDDEN or _is_file(param):
+            continue
+        out[longs[0][2:].replace("-", "_")] = param
+    return out
+
+
 @cache
 def options(endpoint):
     """The options of ``endpoint`` reachable from the web: query-parameter name -> (option, is_flag).
@@ -94,14 +115,64 @@ def options(endpoint):
     dict
         ``{"axial_load": ("--axial-load", False), ...}``; empty when the command does not exist.
     """
-    command = _command(ENDPOINTS[endpoint])
-    out = {}
-    for param in getattr(command, "params", ()):
-        longs = [o for o in getattr(param, "opts", ()) if o.startswith("--")]
-        if not longs or longs[0][2:] in _HIDDEN or _is_file(param):
-            continue
-        out[longs[0][2:].replace("-", "_")] = (longs[0], bool(getattr(param, "is_flag", False)))
-    return out
+    return {
+        name: (
+            next(o for o in param.opts if o.startswith("--")),
+            bool(getattr(param, "is_flag", False)),
+        )
+        for name, param in _reachable(endpoint).items()
+    }
+
+
+@cache
+def _spellings(endpoint):
+    """Every way the command line spells a reachable option (``--axial-load``, ``-F``, ``--no-mask``)
+    -> its query-parameter name, from the command's own option definitions."""
+    return {
+        spelling: name
+        for name, param in _reachable(endpoint).items()
+        for spelling in (*param.opts, *getattr(param, "secondary_opts", ()))
+    }
+
+
+_QUOTED_OPTIONS = re.compile(r"'-[^'\s]+'(?: / '-[^'\s]+')*")  # click: '--axial-load' / '-F'
+_BARE_OPTION = re.compile(r"(?<![\w-])--[a-z][a-z0-9-]*(?![\w-])")  # a library message: --viscosity
+_LEADING = re.compile(r"^([a-z][a-z0-9-]*)(?=:| must | needs )")  # axial-load: ..., axial-load must
+
+
+def web_message(message, endpoint):
+    """A command-line message as the web says it: each option of ``endpoint`` the message names
+    becomes its query parameter.
+
+    ``Missing option '--axial-load' / '-F'.`` -> ``Missing parameter 'axial_load'.``;
+    ``give --viscosity, or --oil VG68 with --viscosity-100`` -> ``give viscosity, or oil VG68 with
+    viscosity_100``; ``axial-load: '2 m' is a length`` -> ``axial_load: '2 m' is a length``. Options
+    the web cannot reach (files, clusters) are left as the command line spells them.
+
+    Parameters
+    ----------
+    message : str
+        The one-line message of the command line (without its ``bearinglab: error:`` prefix).
+    endpoint : str
+        A key of :data:`ENDPOINTS`: the command whose options the message may name.
+
+    Returns
+    -------
+    str
+    """
+    spellings = _spellings(endpoint)
+
+    def quoted(match):
+        names = {spellings.get(o) for o in re.findall(r"'(-[^'\s]+)'", match.group(0))}
+        return f"'{names.pop()}'" if len(names) == 1 and None not in names else match.group(0)
+
+    def leading(match):
+        return spellings.get("--" + match.group(1), match.group(1))
+
+    text = _QUOTED_OPTIONS.sub(quoted, message)
+    text = _BARE_OPTION.sub(lambda m: spellings.get(m.group(0), m.group(0)), text)
+    text = _LEADING.sub(leading, text, count=1)
+    return text.replace("Missing option '", "Missing parameter '", 1)
 
 
 def error_body(detail, parameter=None, error="input"):
@@ -202,12 +273,13 @@ def call(endpoint, query):
     try:
         run = cli.run_json(argv)
     except ValueError as exc:  # a library check the command does not turn into its one-line error
-        return ApiResult(422, error_body(str(exc), parameter_of(str(exc), known)))
+        run = cli.JsonRun(2, None, str(exc))
     except Exception as exc:  # noqa: BLE001 -- an answer names the failure, never shows a traceback
-        return ApiResult(500, error_body(f"{type(exc).__name__}: {exc}", None, "failed"))
+        run = cli.JsonRun(1, None, f"{type(exc).__name__}: {exc}")
     if run.exit_code == 0:
         return ApiResult(200, run.document)
+    detail = web_message(run.error, endpoint)
     if run.exit_code not in (2, 3):
-        return ApiResult(500, error_body(run.error, None, "failed"))
+        return ApiResult(500, error_body(detail, None, "failed"))
     kind = "convergence" if run.exit_code == 3 else "input"
-    return ApiResult(422, error_body(run.error, parameter_of(run.error, known), kind))
+    return ApiResult(422, error_body(detail, parameter_of(run.error, known), kind))
