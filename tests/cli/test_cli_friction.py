@@ -466,6 +466,7 @@ def test_skf_series_option_is_checked(capsys, series, words):
     assert words in line and "SKFConstants" not in line
 
 
+@pytest.mark.filterwarnings("ignore:.6205-2RS. is sealed:UserWarning")  # M_seal left out: tested below
 def test_skf_series_option_gives_the_library_result(capsys):
     from bearinglab import catalog
 
@@ -530,3 +531,26 @@ def test_task4_evaluates_the_skf_model_once(monkeypatch):
     fit = fits.skf_friction(t, fr, 0.0, n, 30e-6, 25e-3, 52e-3, series="62", ehl_coefficient=0.04)
     model = real(fr, 0.0, n, 30e-6, 25e-3, 52e-3, series="62", ehl_coefficient=0.04).total_moment
     np.testing.assert_allclose(fit.model_residuals, t - model, rtol=0, atol=1e-16)
+
+
+_SKF_6205_SEALED = ("friction", "torque", "-b", "6205-2RS", "-R", "1 kN", "-n", "3000 rpm", "-m", "skf", "--viscosity",
+             "68 mm^2/s")
+
+
+def test_skf_sealed_bearing_without_seal_data_says_m_seal_is_left_out(capsys):
+    """6205-2RS has no seal data in the catalog: M_seal = 0 is not computed, the warning and the caption say
+    so (issue 15); 61811-2RS1, whose seals are known, keeps the caption naming the seal moment."""
+    code, out, err = run(capsys, *_SKF_6205_SEALED, "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["seal_moment_Nmm"] == 0.0
+    assert [w for w in doc["warnings"] if "M_seal" in w and "not included" in w and "6205-2RS" in w]
+    code, out, err = run(capsys, *_SKF_6205_SEALED)
+    assert code == 0, err
+    flat = " ".join(out.split())
+    assert "seal and drag moments" not in flat
+    assert "rolling, sliding and drag moments (no seal moment: not included, see the warnings)" in flat
+    assert "warning: '6205-2RS' is sealed (RS, by its designation)" in flat
+    code, out, err = run(capsys, *_SKF_61811)
+    assert code == 0, err
+    assert "rolling, sliding, seal and drag moments" in out and "warning:" not in out

@@ -270,3 +270,52 @@ def test_the_table_names_quantities_by_their_symbols_not_by_json_keys(capsys):
                   "life modification factor a_ISO [-]", "static safety factor s0 [-]"):
         assert label in text, label
     assert not re.search(r"\b[a-z]+(_[a-z0-9]+)+_(N|h|Mrev)\b", text), text
+
+
+# ----------------------------------------------------------------------------- review of issue 15
+def test_no_load_says_why_the_lives_and_s0_are_not_shown(capsys):
+    # P = 0: L10, L_nm and s0 are infinite (null in JSON, '—' in the table); a warning says so
+    args = ["life", "-b", "6205-2RS", "-R", "0 N", "-n", "3000 rpm", "--viscosity", "20 cSt"]
+    code, out, err = run(capsys, *args, "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["equivalent_dynamic_load_N"] == 0.0
+    assert doc["basic_rating_life_Mrev"] is None and doc["static_safety_factor"] is None
+    notes = [w for w in doc["warnings"] if w.startswith("P = 0")]
+    assert notes == ["P = 0: no equivalent load, so L10, L_nm and s0 are unbounded (shown as —, null in --json)"]
+    code, out, err = run(capsys, *args)
+    assert code == 0, err
+    assert "— (see the warnings)" in out and "warning: P = 0: no equivalent load" in out
+
+
+def test_a_loaded_bearing_has_no_unbounded_warning(capsys):
+    code, out, err = run(capsys, "life", "-b", "6205-2RS", "-R", "1 kN", "-n", "3000 rpm", "--viscosity", "20 cSt",
+                         "--json")
+    assert code == 0, err
+    assert not [w for w in json.loads(out)["warnings"] if "unbounded" in w]
+
+
+def test_an_unloaded_duty_cycle_says_why_its_lives_are_not_shown(capsys, tmp_path):
+    code, out, err = run(capsys, "life", "-b", "B218", "--duty-cycle", _duty_file(tmp_path, '"3000 rpm"', fz="0 N"),
+                         "--viscosity", "20 cSt", "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["basic_rating_life_Mrev"] is None
+    assert [w for w in doc["warnings"] if w.startswith("P = 0 at every step: no equivalent load, so L10, L_nm")]
+
+
+def test_help_shows_the_duty_cycle_tables_literally(capsys):
+    # '[[step]]' is rich markup unless escaped: the help printed '[]' (issue 15)
+    code, out, err = run(capsys, "life", "--help")
+    assert code == 0, err
+    out = " ".join(out.split())
+    assert "TOML file of [[step]] loads" in out and "[]" not in out
+
+
+def test_an_angle_below_the_tabulated_rows_is_refused_without_float_noise(capsys):
+    # 4-1006095 has a 12 deg nominal angle: ISO 281 table 3 is tabulated here from 15 deg
+    code, _, err = run(capsys, "life", "-b", "4-1006095", "-A", "2 kgf", "-n", "3000 rpm", "--viscosity", "20 cSt")
+    line = _one_line_error(err)
+    assert code == 2
+    assert "contact_angle must be in [15, 45] [deg] for ISO 281 table 3 (angular contact), got 12 deg: " in line
+    assert "00000" not in line and "maker's X and Y" in line and "reference_rating_life" in line

@@ -1,6 +1,9 @@
 """The SKF four-term friction model: terms written out, limits, tables and properties."""
 
+import dataclasses
 import math
+import re
+import warnings
 
 import numpy as np
 import pytest
@@ -147,3 +150,47 @@ def test_benchmark_paths_agree_on_a_small_input(load_bench):
     bench = load_bench("skf_friction")
     args = bench.cases(200, seed=3)
     assert_allclose(bench.batched(*args), bench.baseline(*args), rtol=1e-12)
+
+
+# ----------------------------------------------------------------------------- seal data missing (issue 15)
+@pytest.mark.parametrize("designation, kind", [("6205-2RS", "RS"), ("6205-2RS1", "RS1"), ("6205-RS", "RS"),
+                                               ("6205-2RSH", "RSH"), ("6205-2RSH/C3", "RSH"), ("6205-2RZ", "RZ"),
+                                               ("6205-2Z", "Z"), ("6205-Z", "Z"), ("6205ZZ", "ZZ")])
+def test_a_sealed_designation_without_seal_data_warns_that_m_seal_is_left_out(designation, kind):
+    from bearinglab import catalog
+
+    b = dataclasses.replace(catalog.get("6205-2RS"), designation=designation)
+    with pytest.warns(UserWarning, match=rf"{re.escape(repr(designation))} .*\({kind}, by its designation\)"):
+        m = friction.skf_for_bearing(b, 1000.0, 0.0, 3000 * RPM, 68e-6)
+    assert m.seal_moment == 0.0 and len(m.warnings) == 1
+    contact = kind not in ("Z", "ZZ", "RZ")
+    assert ("M_seal of its contact seals is not included" in m.warnings[0]) == contact
+    assert ("seal_constants_override=SealConstants" in m.warnings[0]) == contact
+    # the moments are those of the open bearing: nothing invented for the seals
+    open_ = friction.skf(1000.0, 0.0, 3000 * RPM, 68e-6, 25e-3, 52e-3, series="62")
+    assert m.total_moment == open_.total_moment
+
+
+@pytest.mark.parametrize("designation", ["6205", "16004", "618/500", "4-1006095", "7205 BEP", "inline"])
+def test_an_open_designation_gives_no_seal_warning(designation):
+    from bearinglab import catalog
+
+    b = dataclasses.replace(catalog.get("6205-2RS"), designation=designation)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert friction.skf_for_bearing(b, 1000.0, 0.0, 3000 * RPM, 68e-6).warnings == ()
+
+
+def test_seal_data_or_no_sealed_side_silence_the_seal_warning():
+    from bearinglab import catalog
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        sealed = friction.skf_for_bearing(catalog.get("61811-2RS1"), 6.51, 0.0, 2000 * RPM, 30e-6)
+        assert sealed.warnings == () and sealed.seal_moment > 0
+        b = catalog.get("6205-2RS")
+        given = friction.skf_for_bearing(b, 1000.0, 0.0, 3000 * RPM, 68e-6, seal_diameter=30e-3,
+                                         seal_constants_override=friction.SealConstants(0.02, 2.0, 10.0))
+        assert given.warnings == () and given.seal_moment * 1e3 == pytest.approx(0.02 * 30.0**2 + 10.0, rel=1e-14)
+        none = friction.skf_for_bearing(dataclasses.replace(b, seals=0), 1000.0, 0.0, 3000 * RPM, 68e-6)
+        assert none.warnings == ()

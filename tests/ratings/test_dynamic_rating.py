@@ -109,3 +109,17 @@ def test_deep_groove_f0_matches_skf_calculation_factor_of_6205():
 
     b = catalog.get("6205-2RS")
     assert round(float(ratings.static_load_factor(b.ball_diameter, b.pitch_diameter))) == 14
+
+
+@pytest.mark.parametrize("degrees, words", [
+    (12.0, "got 12 deg: angles below 15 deg are not tabulated here;"),
+    (50.0, "got 50 deg: above 45 deg the bearing is a thrust bearing, not covered;"),
+])
+def test_an_angle_outside_table_3_names_it_without_float_noise_and_says_what_to_do(degrees, words):
+    # math.radians(12) -> degrees gives 12.000000000000002: the message shows 12 deg (issue 15)
+    with pytest.raises(InputError) as error:
+        ratings.equivalent_dynamic_load(1000.0, 580.0, 1e4, math.radians(degrees), bearing_type="angular")
+    message = str(error.value)
+    assert message.startswith("contact_angle must be in [15, 45] [deg] for ISO 281 table 3 (angular contact), ")
+    assert words in message and "0000" not in message
+    assert "give P from the maker's X and Y (basic_rating_life(C, P))" in message

@@ -79,3 +79,12 @@ def test_vectorized_matches_scalar():
     dpw = np.linspace(30e-3, 60e-3, 7)
     assert_allclose(ratings.static_load_rating(9, 7.94e-3, dpw),
                     [ratings.static_load_rating(9, 7.94e-3, x) for x in dpw], rtol=1e-14)
+
+
+def test_an_angle_outside_iso76_table_1_names_it_without_float_noise_and_says_what_to_do():
+    with pytest.raises(InputError) as error:
+        ratings.static_equivalent_load(1000.0, 100.0, math.radians(12.0), bearing_type="angular")
+    message = str(error.value)
+    assert message.startswith("contact_angle must be in [15, 45] [deg] for ISO 76 table 1 (angular contact), "
+                              "got 12 deg: angles below 15 deg are not tabulated here;")
+    assert "maker's X0 and Y0" in message and "0000" not in message

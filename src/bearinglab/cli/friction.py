@@ -11,6 +11,7 @@ COMMANDS   the ``friction`` command group, by name (the application adds it)
 
 import dataclasses
 import sys
+import warnings
 from pathlib import Path
 from typing import Annotated
 
@@ -403,8 +404,10 @@ def _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out):
     if viscosity is None:
         raise InputError("viscosity: the skf model needs --viscosity (e.g. '30 cSt'; of the base oil for grease)")
     nu = parse_viscosity(viscosity)
-    m = friction.skf_for_bearing(b, fr, fa, n, nu, lubrication=lubrication)  # checks the lubrication
-    notes = _skf_warnings(b, fr, fa)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the result returns its warnings (a seal moment left out)
+        m = friction.skf_for_bearing(b, fr, fa, n, nu, lubrication=lubrication)  # checks the lubrication
+    notes = [*m.warnings, *_skf_warnings(b, fr, fa)]
     moments = tables.rows(tables.skf_torque(m))
     rpm = tables.significant(n / RPM)
     cases = [{"radial_load_N": float(fr[i]), "axial_load_N": float(fa[i]), "speed_rpm": float(rpm[i]), **moments[i]}
@@ -423,8 +426,16 @@ def _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out):
             *(f"{r[k]:.6g}" for k in ("rolling_moment_Nmm", "sliding_moment_Nmm", "seal_moment_Nmm",
                                        "drag_moment_Nmm", "total_moment_Nmm", "power_loss_W")),
             f"{r['sliding_friction_coefficient']:.5f}"] for r in cases],
-          caption=f"ν = {info['viscosity_cSt']:g} mm²/s; SKF rolling, sliding, seal and drag moments")
+          caption=f"ν = {info['viscosity_cSt']:g} mm²/s; SKF {_skf_terms(b, m)}")
     print_warnings(notes)
+
+
+def _skf_terms(b, m):
+    """The moments the SKF result holds, for the caption: the seal moment only where it was computed."""
+    if b.seal is not None and b.seals != 0:
+        return "rolling, sliding, seal and drag moments"
+    why = "not included, see the warnings" if m.warnings else "open bearing"
+    return f"rolling, sliding and drag moments (no seal moment: {why})"
 
 
 def _skf_warnings(b, fr, fa):

@@ -172,7 +172,7 @@ def life(
     contamination_factor: Annotated[float | None, typer.Option("--contamination-factor", help="e_C in [0, 1] (default 1).", rich_help_panel=_LUBRICANT)] = None,
     contamination: Annotated[str | None, typer.Option("--contamination", help="Cleanliness of ISO 281 table 13: " + " | ".join(_CONTAMINATION) + ".", rich_help_panel=_LUBRICANT)] = None,
     reliability: Annotated[float, typer.Option("--reliability", help="Reliability in percent, 90 to 99.95.")] = 90.0,
-    duty_cycle: Annotated[Path | None, typer.Option("--duty-cycle", help="TOML file of [[step]] loads, speed and time share: the combined life.")] = None,
+    duty_cycle: Annotated[Path | None, typer.Option("--duty-cycle", help="TOML file of \\[\\[step]] loads, speed and time share: the combined life.")] = None,
     bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
     balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
     inner_groove_radius: InnerRadius = None, outer_groove_radius: OuterRadius = None,
@@ -206,7 +206,7 @@ def life(
     doc = {**tables.rows(tables.rating_life(r))[0], "rating_source": r.rating_source,
            "inputs": _echo(b, options, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
                            my_Nmm=loads[4] * 1e3, speed_rpm=n / RPM),
-           "warnings": assumed + _notes(b, loads, r.warnings, dist)}
+           "warnings": assumed + _notes(b, loads, r.warnings, dist) + _unbounded(r)}
     doc = {k: doc[k] for k in _KEYS}
     if json_out:
         emit_json(doc)
@@ -246,6 +246,26 @@ def _notes(b, loads, rating_notes, dist):
         notes += limits.combined_warnings(b, loads, dist.ball_load_inner, dist.ball_load_outer,
                                           dist.contact_angle_inner, dist.contact_angle_outer, static=False)
     return list(dict.fromkeys(notes))
+
+
+# the lives and s0 that are infinite without load, by their symbols
+_UNBOUNDED = {"basic_rating_life": "L10", "modified_rating_life": "L_nm", "reference_rating_life": "L10r",
+              "modified_reference_rating_life": "L_nmr", "static_safety_factor": "s0"}
+
+
+def _unbounded(result):
+    """Why a life or s0 is shown as '—' where it is infinite: no load (P = 0, P0 = 0); a RatingLife or a
+    DutyCycleLife (whose combined lives are infinite only when every step is unloaded)."""
+    import numpy as np
+
+    names = [symbol for field, symbol in _UNBOUNDED.items()
+             if np.any(np.isposinf(getattr(result, field, np.nan)))]
+    if not names:
+        return []
+    where = " at every step" if hasattr(result, "steps") else ""
+    listed = ", ".join(names[:-1]) + " and " + names[-1] if len(names) > 1 else names[0]
+    verb = "are" if len(names) > 1 else "is"
+    return [f"P = 0{where}: no equivalent load, so {listed} {verb} unbounded (shown as —, null in --json)"]
 
 
 def _unavailable(b, loads, dist):
@@ -310,7 +330,7 @@ def _life_of_duty_cycle(b, loads, speeds, times, options, json_out, assumed=()):
            "inputs": _echo(b, options, steps=[{"fx_N": f[0], "fy_N": f[1], "fz_N": f[2], "mx_Nmm": f[3] * 1e3,
                                                 "my_Nmm": f[4] * 1e3, "speed_rpm": w / RPM, "time": t}
                                                for f, w, t in zip(loads.tolist(), speeds.tolist(), times.tolist())]),
-           "warnings": [*assumed, *_notes(b, loads, d.steps.warnings, dist)]}
+           "warnings": [*assumed, *_notes(b, loads, d.steps.warnings, dist), *_unbounded(d)]}
     doc = tables.json_value(doc)
     if json_out:
         emit_json(doc)

@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import math
 import re
+import warnings
 from typing import NamedTuple
 
 import numpy as np
@@ -115,6 +116,12 @@ SEAL_CONSTANTS = {
     "Z": [(math.inf, SealConstants(0.0, 0.0, 0.0))],
 }
 _SEAL_LOWER = {"RS1": 62.0}  # mm: the row's lower limit of D (exclusive)
+
+# Seal and shield suffixes of a designation, one or two sides: contact seals (SKF RS, RS1, RSH, RSL, LS;
+# LLU, DDU elsewhere) and shields or non-contact seals (Z, ZZ, RZ, VV): "6205-2RSH", "6205-Z/C3", "6205ZZ".
+_SEALED_DESIGNATION = re.compile(r"^\s*[A-Z]*\d+(?:/\d+)?[A-Z]*?[-\s]?(?P<sides>2)?"
+                                 r"(?P<kind>RS[0-9A-Z]*|RZ|ZZ|Z|LS|LLU|LLB|DDU|VV)(?=$|[/\s-])", re.IGNORECASE)
+_NON_CONTACT = ("Z", "ZZ", "RZ", "VV")
 
 # K_rs of the replenishment/starvation factor: SKF catalogue, "Kinematic replenishment/starvation
 # reduction factor" (3e-8 for low-level oil bath and oil jet, 6e-8 for grease and oil-air).
@@ -269,6 +276,8 @@ class SKFTorque(NamedTuple):
     """M n. [W]"""
     sliding_friction_coefficient: np.ndarray
     """mu_sl. [-]"""
+    warnings: tuple = ()
+    """The warnings raised (e.g. a sealed bearing without seal data, whose M_seal is left out), as messages."""
 
 
 def _load_variables(fr, fa, n, dm, c, bearing_type, c0):
@@ -433,6 +442,8 @@ def skf_for_bearing(bearing, radial_load, axial_load, shaft_speed, kinematic_vis
     Returns
     -------
     SKFTorque
+        With a warning (also raised, UserWarning) where the designation says sealed or shielded
+        (``-2RS1``, ``-2Z`` ...) but the bearing has no seal data: M_seal is then not included.
 
     Examples
     --------
@@ -456,4 +467,29 @@ def skf_for_bearing(bearing, radial_load, axial_load, shaft_speed, kinematic_vis
 
             kw["static_load_rating"] = bearing_ratings(bearing).static_load_rating
     kw.update(options)
-    return skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, d, big, **kw)
+    result = skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, d, big, **kw)
+    note = _unmodelled_seal(bearing, kw)
+    if note is None:
+        return result
+    warnings.warn(note, UserWarning, stacklevel=2)
+    return result._replace(warnings=(note,))
+
+
+def _unmodelled_seal(bearing, kw):
+    """The warning for a bearing whose designation says sealed or shielded but that has no seal data (so
+    M_seal is not computed); None when it has them, is open, or is said to have no sealed side."""
+    if kw.get("seal") is not None or kw.get("seal_constants_override") is not None or bearing.seals == 0:
+        return None
+    m = _SEALED_DESIGNATION.match(str(bearing.designation or ""))
+    if m is None:
+        return None
+    kind = m.group("kind").upper()
+    if kind in _NON_CONTACT:
+        return (f"{bearing.designation!r} has shields or non-contact seals ({kind}, by its designation) but no "
+                f"seal data: M_seal = 0 is used, as SKF's model gives for shields (Z) and non-contact seals (RZ); "
+                f"give seal = \"Z\" or \"RZ\" in the bearing data to say so")
+    return (f"{bearing.designation!r} is sealed ({kind}, by its designation) but has no seal data: the seal "
+            f"moment M_seal of its contact seals is not included, so M is too low. Give seal, seals and "
+            f"seal_diameter in a bearing file (seal constants are tabulated for {', '.join(SEAL_CONSTANTS)}), "
+            f"or in Python seal_constants_override=SealConstants(ks1, beta, ks2) and seal_diameter= from the "
+            f"maker's data")

@@ -233,7 +233,9 @@ def dynamic_load_factors(radial_load, axial_load, static_load_rating, contact_an
                         _DG_RATIO[0], _DG_RATIO[-1])
         x, y, e = _DG_X, np.interp(ratio, _DG_RATIO, _DG_Y), np.interp(ratio, _DG_RATIO, _DG_E)
     elif bearing_type == "angular":
-        deg = _angular_degrees(contact_angle, "ISO 281 table 3")
+        deg = _angular_degrees(contact_angle, "ISO 281 table 3",
+                               "give P from the maker's X and Y (basic_rating_life(C, P)), or use the "
+                               "ISO/TS 16281 reference life from the ball loads (reference_rating_life)")
         x, y, e = _angular_above_15(deg, fa / c0)
     else:
         raise InputError(f"bearing_type must be one of ['radial', 'angular'], got {bearing_type!r}")

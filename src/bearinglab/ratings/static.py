@@ -272,13 +272,19 @@ class StaticLoadFactors(NamedTuple):
     """Y0. [-]"""
 
 
-def _angular_degrees(contact_angle, table):
-    """Contact angle in degrees, required in [15, 45] (the angular-contact rows of the ISO tables)."""
+def _angular_degrees(contact_angle, table, instead):
+    """Contact angle in degrees, required in [15, 45] (the angular-contact rows of the ISO tables tabulated
+    here); the message says what to use ``instead`` (e.g. the maker's factors) for an angle outside."""
     deg = np.degrees(np.asarray(contact_angle, dtype=float))
     bad = ~((deg >= 15.0 - 1e-9) & (deg <= 45.0 + 1e-9))
     if bad.any():
+        got = float(deg[bad].flat[0])
+        # ISO 281 table 3 also has rows for 5 and 10 deg: not carried over, as no published source that
+        # confirms them (and the column of relative axial load they are read by) was found (issue 15)
+        why = ("angles below 15 deg are not tabulated here" if got < 15.0
+               else "above 45 deg the bearing is a thrust bearing, not covered")
         raise InputError(f"contact_angle must be in [15, 45] [deg] for {table} (angular contact), "
-                         f"got {float(deg[bad].flat[0])!r}")
+                         f"got {got:.6g} deg: {why}; check the bearing's nominal contact angle, or {instead}")
     return deg
 
 
@@ -305,7 +311,8 @@ def static_load_factors(contact_angle=0.0, *, bearing_type="radial"):
         return StaticLoadFactors(*_RADIAL_X0_Y0)
     if bearing_type != "angular":
         raise InputError(f"bearing_type must be one of ['radial', 'angular'], got {bearing_type!r}")
-    deg = _angular_degrees(contact_angle, "ISO 76 table 1")
+    deg = _angular_degrees(contact_angle, "ISO 76 table 1",
+                           "give P0 from the maker's X0 and Y0 (static_safety_factor(C0, P0))")
     y0 = np.interp(deg, _ANGULAR_ANGLES_DEG, _ANGULAR_Y0)
     return StaticLoadFactors(_ANGULAR_X0, y0[()])
 
