@@ -97,3 +97,21 @@ def test_light_imports(module):
     r = _python(f"import sys, {module}\nprint(sorted({{'typer', 'rich', 'matplotlib', 'click'}} & set(sys.modules)))")
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip() == "[]"
+
+
+def _help_texts(command, path=()):
+    """(command path, text) of every help string of the click command tree."""
+    yield path, command.help or ""
+    for param in command.params:
+        yield (*path, param.name), getattr(param, "help", None) or ""
+    for name, sub in getattr(command, "commands", {}).items():
+        yield from _help_texts(sub, (*path, name))
+
+
+def test_no_help_text_loses_a_bracket_to_rich_markup():
+    # rich reads "[rad]" or "[[step]]" in a help string as a markup tag and drops it; write "\[rad]"
+    from bearinglab.cli import _click_command
+
+    tag = re.compile(r"(?<!\\)\[[A-Za-z/#][^\]\[]*\]")
+    bad = [(where, text) for where, text in _help_texts(_click_command()) if tag.search(text)]
+    assert not bad, bad

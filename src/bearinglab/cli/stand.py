@@ -55,7 +55,7 @@ def axial_angle(
     hertz: Annotated[str, typer.Option("--hertz", help="exact (default) | table (the bearing's tabulated 2K/(πμ)).")] = "exact",
     elastic_constant: Annotated[str, typer.Option("--elastic-constant", help="materials (default: from the bearing's E, ν) | paper (the source's 0.592e-4 (cm²/kgf)^(2/3)).")] = "materials",
     legacy: Annotated[bool, typer.Option("--legacy", help="Reproduce the paper's printed rounding (π = 3.14, F cut to 3 decimals).")] = False,
-    x0: Annotated[float | None, typer.Option("--x0", help="Start of the iteration table [rad] (the paper printed 0.0433985).")] = None,
+    x0: Annotated[float | None, typer.Option("--x0", help="Start of the iteration table \\[rad] (the paper printed 0.0433985).")] = None,
     rows: Annotated[int | None, typer.Option("--rows", help="Rows of the iteration table (default: to convergence).")] = None,
     json_out: JsonFlag = False,
 ):
