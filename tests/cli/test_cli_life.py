@@ -319,3 +319,15 @@ def test_an_angle_below_the_tabulated_rows_is_refused_without_float_noise(capsys
     assert code == 2
     assert "contact_angle must be in [15, 45] [deg] for ISO 281 table 3 (angular contact), got 12 deg: " in line
     assert "00000" not in line and "maker's X and Y" in line and "reference_rating_life" in line
+
+
+def test_the_test_stand_bearing_gets_a_life_under_a_radial_load(capsys):
+    # 12 deg is outside the ISO tables carried here, but with Fa = 0 no row is needed: P = P0 = Fr
+    code, out, err = run(capsys, "life", "-b", "4-1006095", "-R", "2 kgf", "--speed", "3000 rpm",
+                         "--viscosity", "20 cSt", "--contamination", "normal", "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["equivalent_dynamic_load_N"] == pytest.approx(2 * 9.80665, rel=1e-12)
+    assert doc["basic_rating_life_Mrev"] == pytest.approx((doc["dynamic_load_rating_N"] / (2 * 9.80665)) ** 3,
+                                                          rel=1e-12)
+    assert doc["static_safety_factor"] == pytest.approx(doc["static_load_rating_N"] / (2 * 9.80665), rel=1e-12)

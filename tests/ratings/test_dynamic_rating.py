@@ -123,3 +123,17 @@ def test_an_angle_outside_table_3_names_it_without_float_noise_and_says_what_to_
     assert message.startswith("contact_angle must be in [15, 45] [deg] for ISO 281 table 3 (angular contact), ")
     assert words in message and "0000" not in message
     assert "give P from the maker's X and Y (basic_rating_life(C, P))" in message
+
+
+def test_a_pure_radial_load_needs_no_table_row_for_any_angle():
+    # Fa = 0: Fa/Fr = 0 <= e on every row of ISO 281 table 3 (and X0 <= 1 in ISO 76), so P = P0 = Fr,
+    # also at 12 deg, which the tables carried here do not cover
+    from bearinglab.ratings import static
+
+    fr = np.array([0.0, 19.6133, 500.0])
+    for deg in (12.0, 15.0, 25.0, 40.0):
+        a = math.radians(deg)
+        assert ratings.equivalent_dynamic_load(fr, 0.0, 281.9, a, bearing_type="angular").tolist() == fr.tolist()
+        assert static.static_equivalent_load(fr, 0.0, a, bearing_type="angular").tolist() == fr.tolist()
+    with pytest.raises(InputError, match="got 12 deg"):
+        ratings.equivalent_dynamic_load(fr, 1.0, 281.9, math.radians(12.0), bearing_type="angular")

@@ -274,6 +274,12 @@ def equivalent_dynamic_load(radial_load, axial_load, static_load_rating, contact
     >>> print(f"{equivalent_dynamic_load(1000.0, 500.0, 7800.0, static_load_factor=13.9):.1f}")
     1367.6
     """
+    if bearing_type == "angular" and not np.any(np.asarray(axial_load, dtype=float)):
+        # Fa = 0: Fa / Fr = 0 <= e on every row of table 3, so P = Fr whatever the angle; an angle outside
+        # the rows tabulated here (the 12 deg of a test-stand bearing) needs no row
+        fr = check_nonnegative("radial_load", radial_load, "N")
+        check_positive("static_load_rating", static_load_rating, "N")
+        return np.broadcast_to(fr, np.broadcast(fr, np.asarray(axial_load, dtype=float)).shape).copy()[()]
     x, y, _ = dynamic_load_factors(radial_load, axial_load, static_load_rating, contact_angle,
                                    bearing_type=bearing_type, static_load_factor=static_load_factor)
     return (x * np.asarray(radial_load, dtype=float) + y * np.asarray(axial_load, dtype=float))[()]

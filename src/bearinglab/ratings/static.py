@@ -341,6 +341,10 @@ def static_equivalent_load(radial_load, axial_load, contact_angle=0.0, *, bearin
     """
     fr = check_nonnegative("radial_load", radial_load, "N")
     fa = check_nonnegative("axial_load", axial_load, "N")
+    if bearing_type == "angular" and not np.any(fa):
+        # Fa = 0: P0 = max(X0 Fr, Fr) = Fr (X0 <= 1 on every row), so an angle outside the tabulated rows
+        # needs no row
+        return np.broadcast_to(fr, np.broadcast(fr, fa).shape).copy()[()]
     x0, y0 = static_load_factors(contact_angle, bearing_type=bearing_type)
     return np.maximum(x0 * fr + y0 * fa, fr)[()]
 
