@@ -426,13 +426,15 @@ def _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out):
             *(f"{r[k]:.6g}" for k in ("rolling_moment_Nmm", "sliding_moment_Nmm", "seal_moment_Nmm",
                                        "drag_moment_Nmm", "total_moment_Nmm", "power_loss_W")),
             f"{r['sliding_friction_coefficient']:.5f}"] for r in cases],
-          caption=f"ν = {info['viscosity_cSt']:g} mm²/s; SKF {_skf_terms(b, m)}")
+          caption=f"ν = {info['viscosity_cSt']:g} mm²/s; SKF {_skf_terms(m)}")
     print_warnings(notes)
 
 
-def _skf_terms(b, m):
+def _skf_terms(m):
     """The moments the SKF result holds, for the caption: the seal moment only where it was computed."""
-    if b.seal is not None and b.seals != 0:
+    import numpy as np
+
+    if np.any(np.asarray(m.seal_moment) > 0):  # the result says whether the model had seal data
         return "rolling, sliding, seal and drag moments"
     why = "not included, see the warnings" if m.warnings else "open bearing"
     return f"rolling, sliding and drag moments (no seal moment: {why})"

@@ -35,7 +35,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .._validate import check_nonnegative, check_positive
-from ..errors import InputError
+from ..errors import InputError, ValidityWarning
 
 __all__ = [
     "DEEP_GROOVE_CONSTANTS",
@@ -442,7 +442,7 @@ def skf_for_bearing(bearing, radial_load, axial_load, shaft_speed, kinematic_vis
     Returns
     -------
     SKFTorque
-        With a warning (also raised, UserWarning) where the designation says sealed or shielded
+        With a warning (also raised, ValidityWarning) where the designation says sealed or shielded
         (``-2RS1``, ``-2Z`` ...) but the bearing has no seal data: M_seal is then not included.
 
     Examples
@@ -471,7 +471,7 @@ def skf_for_bearing(bearing, radial_load, axial_load, shaft_speed, kinematic_vis
     note = _unmodelled_seal(bearing, kw)
     if note is None:
         return result
-    warnings.warn(note, UserWarning, stacklevel=2)
+    warnings.warn(note, ValidityWarning, stacklevel=2)  # a physically doubtful result, as elsewhere
     return result._replace(warnings=(note,))
 
 

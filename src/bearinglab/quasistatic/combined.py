@@ -833,11 +833,10 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     if not ok.all():
         failures = _failures(geo, f, w, u, ok)
         if on_failure == "raise":
-            k, (reason, physical) = next(iter(failures.items()))
+            k, reason = next(iter(failures.items()))
             force, _, balls = _evaluate(geo, np.nan_to_num(u[k:k + 1]), w[k:k + 1] ** 2, deriv=False)
             raise ConvergenceError("combined.load_distribution", iterations=int(it[k]),
                                    residual=_measure(geo, f[k:k + 1], force, balls)[1][0], estimate=u[k],
-                                   physical=physical,
                                    reason=f"loads {f[k].tolist()} at {w[k] / RPM:g} rpm: {reason} "
                                           f"({int((~ok).sum())} of {ok.size} cases failed)")
     for key in out:
@@ -854,7 +853,8 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
 
 
 def _failures(geo, loads, w, u, ok):
-    """{case: (reason, physical)} for every failed case, in case order, judged at the last rest iterate."""
+    """{case: reason} for every failed case, in case order, judged at the last rest iterate (every one a
+    solver's failure: the model has a solution for any load since F_z <= 0 is solved with the full groove)."""
     bad = np.flatnonzero(~ok)
     solved = bad[np.all(np.isfinite(u[bad]), axis=1)]
     loaded, inv_cond, floor = (np.zeros(len(loads)) for _ in range(3))
@@ -868,25 +868,24 @@ def _failures(geo, loads, w, u, ok):
     out = {}
     for k in bad:
         if floor[k] >= _RESOLVABLE:
-            out[k] = (("loads too light to resolve: ball deflections are so small against the groove distance "
-                       f"that rounding alone leaves a relative residual above {_RESOLVABLE:g}"), False)
+            out[k] = ("loads too light to resolve: ball deflections are so small against the groove distance "
+                      f"that rounding alone leaves a relative residual above {_RESOLVABLE:g}")
         elif k in solved and (loaded[k] <= 3 or inv_cond[k] < 1e-4):
-            out[k] = ((f"{int(loaded[k])} of {geo.z} balls in contact and a nearly singular stiffness: these "
-                       "loads move the inner ring through its clearance almost as a mechanism, which the "
-                       "bearing alone hardly resists (add thrust or preload, or solve the bearing in a set)"),
-                      False)
+            out[k] = (f"{int(loaded[k])} of {geo.z} balls in contact and a nearly singular stiffness: these "
+                      "loads move the inner ring through its clearance almost as a mechanism, which the "
+                      "bearing alone hardly resists (add thrust or preload, or solve the bearing in a set)")
         else:
-            out[k] = ("the ring Newton iteration stalled", False)
+            out[k] = "the ring Newton iteration stalled"
     return out
 
 
 def _failure_notes(failures):
     """One warning per kind of failure, with its count and first case."""
     kinds = {}
-    for k, (reason, physical) in failures.items():
-        kinds.setdefault(physical or reason, []).append(k)
-    return tuple(f"{len(ks)} case(s) not converged (NaN, converged False; first: case {ks[0]}): "
-                 f"{failures[ks[0]][0]}" for ks in kinds.values())
+    for k, reason in failures.items():
+        kinds.setdefault(reason, []).append(k)
+    return tuple(f"{len(ks)} case(s) not converged (NaN, converged False; first: case {ks[0]}): {reason}"
+                 for reason, ks in kinds.items())
 
 
 def _bearing_args(bearing, reduced_modulus=None):
