@@ -110,12 +110,21 @@ def test_invalid_toml(capsys, tmp_path):
         (["catalog", "show"], "Missing argument"),
         (["catalog", "remove", "B218"], "No such command 'remove'"),
         (["catalog", "list", "--colour"], "No such option"),
+        # a bearing typed as a word, not as the option the commands take, is named with the option
+        (["life", "6205-2RS", "--radial-load", "2 kN"], "(6205-2RS): give the bearing as an option, --bearing 6205-2RS"),
+        (["axial-angle", "7218b", "-F", "2 kN"], "--bearing 7218b"),
     ],
 )
 def test_usage_errors(capsys, argv, text):
     code, out, err = run(capsys, *argv)
     _one_line_exit_2(code, out, err)
     assert text in err
+
+
+def test_an_extra_word_that_is_no_bearing_gets_no_hint(capsys):
+    code, out, err = run(capsys, "life", "7205B", "--radial-load", "2 kN")
+    _one_line_exit_2(code, out, err)
+    assert err.rstrip().endswith("(7205B)")
 
 
 def test_help(capsys):

@@ -180,6 +180,29 @@ def _name_option(message, argv):
     return option + message[m.end():] if "--" + option in typed else message
 
 
+_EXTRA = re.compile(r"^Got unexpected extra argument(?:s|\(s\))? \((?P<words>.*)\)$")
+
+
+def _with_bearing_hint(message):
+    """A click usage message, with a hint where an extra word is a catalog bearing: the commands take the
+    bearing as an option (``life 6205-2RS`` -> ``give it as --bearing 6205-2RS``)."""
+    m = _EXTRA.match(message)
+    if not m:
+        return message
+    word = next((w for w in m.group("words").split() if _is_bearing(w)), None)
+    return f"{message}: give the bearing as an option, --bearing {word}" if word else message
+
+
+def _is_bearing(word):
+    from .. import catalog
+
+    try:
+        catalog.get(word)
+    except (InputError, OSError):  # not a bearing, or an unreadable user catalog: no hint
+        return False
+    return True
+
+
 def main(argv=None) -> int:
     """Run the command line; return the exit code instead of raising (tests call this).
 
@@ -201,7 +224,7 @@ def main(argv=None) -> int:
             rv = _click_command().main(args=argv, prog_name="bearinglab", standalone_mode=False)
     except _USAGE_ERRORS as exc:
         if exc.format_message():  # empty after no_args_is_help has printed the help
-            print(f"bearinglab: error: {exc.format_message()}", file=sys.stderr)
+            print(f"bearinglab: error: {_with_bearing_hint(exc.format_message())}", file=sys.stderr)
         return 2
     except typer.Exit as exc:
         return exc.exit_code
