@@ -73,11 +73,10 @@ def _section_newton(fa, cs, a0, c, alpha, xtol, ftol_percent, max_iter):
 
 @numba.njit(parallel=True, cache=True, error_model="numpy")
 def _kernel(fa, cs, a0, c, s, xtol, ftol_percent, max_iter, start_rtol, start_max_iter, alpha, iterations,
-            residual):
+            residual, bad):
     """Solve all cases into ``alpha``; ``iterations`` and ``residual`` (zeros on entry) are written only for
-    the cases that fail the load test at the start. Returns the number of cases that did not converge."""
+    the cases that fail the load test at the start; ``bad[block]``: the block's cases that did not converge."""
     n = fa.size
-    n_bad = 0
     for blk in numba.prange((n + _LANES - 1) // _LANES):
         lo = blk * _LANES
         m = min(_LANES, n - lo)
@@ -131,6 +130,7 @@ def _kernel(fa, cs, a0, c, s, xtol, ftol_percent, max_iter, start_rtol, start_ma
             y[j] = u  # from here on: cos alpha
         for j in range(m):  # a call to the C library
             alpha[lo + j] = math.acos(y[j])
+        n_bad = 0
         if n_fail:  # the cases that fail the test (none among the loads tried) take the Newton of section 6.3
             for j in range(m):
                 if live[j]:
@@ -139,7 +139,7 @@ def _kernel(fa, cs, a0, c, s, xtol, ftol_percent, max_iter, start_rtol, start_ma
                     alpha[k], iterations[k], residual[k] = _section_newton(fa[k], cs[k], a0[k], c[k], a, xtol,
                                                                            ftol_percent, max_iter)
                     n_bad += iterations[k] < 0
-    return n_bad
+        bad[blk] = n_bad  # a count per block (a reduction over prange would need its own care)
 
 
 # numba's default (workqueue) threading layer aborts the process on concurrent launches of parallel kernels:
@@ -158,8 +158,8 @@ def solve(fa, cs, a0, n, xtol, ftol_percent, max_iter):
     c, s = np.cos(a0), np.sin(a0)
     args = [np.broadcast_to(x, (n,)) for x in (fa, cs, a0, c, s)]  # stride-0 views for shared values
     alpha, iterations, residual = np.empty(n), np.zeros(n, dtype=np.int64), np.zeros(n)
+    bad = np.zeros((n + _LANES - 1) // _LANES, dtype=np.int64)
     with _LOCK:
-        n_bad = _kernel(*args, float(xtol), float(ftol_percent), int(max_iter),
-                        float(_solve.AXIAL_ANGLE_START_RTOL), int(_solve.AXIAL_ANGLE_START_MAX_ITER), alpha,
-                        iterations, residual)
-    return alpha, iterations, residual, int(n_bad)
+        _kernel(*args, float(xtol), float(ftol_percent), int(max_iter), float(_solve.AXIAL_ANGLE_START_RTOL),
+                int(_solve.AXIAL_ANGLE_START_MAX_ITER), alpha, iterations, residual, bad)
+    return alpha, iterations, residual, int(bad.sum())

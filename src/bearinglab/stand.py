@@ -51,6 +51,7 @@ from __future__ import annotations
 import importlib.util
 import math
 import numbers
+import sys
 import warnings
 from typing import NamedTuple
 
@@ -386,10 +387,12 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
         Iteration limit (Newton steps of section 6.3 after the start).
     engine : {"auto", "numpy", "compiled"}, optional
         "numpy": the batched numpy path; "compiled": the same operations case by case in a numba kernel,
-        parallel over the cases (needs numba); "auto" (default): the compiled kernel for batches of at
-        least ``_solve.AXIAL_ANGLE_COMPILED_CASES`` cases when numba is installed (a smaller batch is
-        solved by numpy, and numba is not imported for it), else numpy. The two engines give the same
-        angles (bit for bit on the project machine; tested to 1e-12 rad) and the same convergence.
+        parallel over the cases (needs numba); "auto" (default): the compiled kernel when numba is
+        installed and either the kernel is already loaded in this process or the batch has at least
+        ``_solve.AXIAL_ANGLE_COMPILED_CASES`` (10^6) cases, else numpy (loading numba and the kernel
+        costs about half a second, so a smaller batch, and a one-case call, does not import numba). The
+        two engines give the same angles (bit for bit on the project machine, where tests compare them
+        with ==) and the same convergence.
 
     Returns
     -------
@@ -457,16 +460,24 @@ _ENGINES = ("auto", "numpy", "compiled")
 
 
 def _compiled_engine(engine, n):
-    """True if the compiled kernel solves ``n`` cases: engine "compiled", or "auto" with numba installed and
-    at least ``_solve.AXIAL_ANGLE_COMPILED_CASES`` cases (numba is looked up, not imported, for a small batch)."""
+    """True if the compiled kernel solves ``n`` cases: engine "compiled"; or "auto" with numba installed, when
+    the kernel is already loaded in this process or the batch has at least ``_solve.AXIAL_ANGLE_COMPILED_CASES``
+    cases (loading numba and the kernel costs about 0.5 s; numba is looked up, not imported, for a small batch)."""
     if not isinstance(engine, str) or engine not in _ENGINES:
         raise InputError(f"engine must be one of {list(_ENGINES)}, got {engine!r}")
-    if engine == "numpy" or (engine == "auto" and n < _solve.AXIAL_ANGLE_COMPILED_CASES):
+    if engine == "numpy":
+        return False
+    if engine == "auto" and _COMPILED_MODULE in sys.modules:
+        return True
+    if engine == "auto" and n < _solve.AXIAL_ANGLE_COMPILED_CASES:
         return False
     found = importlib.util.find_spec("numba") is not None
     if engine == "compiled" and not found:
         raise InputError("engine='compiled' needs numba, which is not installed (use engine='numpy' or 'auto')")
     return found
+
+
+_COMPILED_MODULE = __name__.rpartition(".")[0] + "._stand_compiled"
 
 
 def _gap_start(thrust_ratio, cos_a0, sin_a0, n, *, rtol=_solve.AXIAL_ANGLE_START_RTOL,
