@@ -573,7 +573,8 @@ def _scatter(mask, values):
 
 
 def _section_newton(fa, cs, a0, cos_a0, alpha, xtol, ftol_percent, max_iter):
-    """The Newton of section 6.3 from ``alpha``: (alpha, converged, 1/ratio - 1 of the last step)."""
+    """The Newton of section 6.3 from ``alpha``: (alpha, converged, 1/ratio - 1 of the last step, 0 where
+    converged)."""
     # A converged case is frozen (its step set to zero) while the others go on, so that each case takes
     # exactly the steps it would take alone: the result does not depend on the batch or chunk it sits in.
     live = np.ones(alpha.shape, dtype=bool)
@@ -592,7 +593,7 @@ def _section_newton(fa, cs, a0, cos_a0, alpha, xtol, ftol_percent, max_iter):
         live &= ~((np.abs(dx) < xtol) | (np.abs(ratio - 1.0) * 100.0 < ftol_percent))
         if not live.any():
             return alpha, ~live, np.zeros(alpha.shape)
-    return alpha, ~live, 1.0 / ratio - 1.0
+    return alpha, ~live, np.where(live, 1.0 / ratio - 1.0, 0.0)  # a converged case has no residual
 
 
 class IterationRow(NamedTuple):
