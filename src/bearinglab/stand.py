@@ -25,7 +25,8 @@ is the option ``elastic_constant="paper"``, with which the worked example reprod
 Operating contact angle (spec 000 section 6)
 --------------------------------------------
 series_coefficients          a0 ... a4 of the expansion of eq. (2)
-operating_contact_angle      Newton on eq. (2) to tolerance, vectorized over loads and bearings
+operating_contact_angle      Newton on eq. (2) to tolerance, vectorized over loads and bearings (numpy, or
+                             a compiled kernel in parallel over the cases: ``engine``)
 iteration_table              the per-iteration table of the paper (k, x_k, angle, xi_a, F_a,k, Delta)
 IterationRow
 
