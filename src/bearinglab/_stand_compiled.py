@@ -76,7 +76,9 @@ def _kernel(fa, cs, a0, c, s, xtol, ftol_percent, max_iter, start_rtol, start_ma
             residual, bad):
     """Solve all cases into ``alpha``; ``iterations`` and ``residual`` (zeros on entry) are written only for
     the cases that fail the load test at the start; ``bad[block]``: the block's cases that did not converge."""
-    n = fa.size
+    n = alpha.size
+    # a value shared by all cases (one bearing) is an array of one element: index 0 for every case
+    i_fa, i_cs, i_a0 = int(fa.size > 1), int(cs.size > 1), int(a0.size > 1)
     for blk in numba.prange((n + _LANES - 1) // _LANES):
         lo = blk * _LANES
         m = min(_LANES, n - lo)
@@ -86,8 +88,8 @@ def _kernel(fa, cs, a0, c, s, xtol, ftol_percent, max_iter, start_rtol, start_ma
         n_cbrt = 0
         for j in range(m):  # the start (stand._gap_start): the smaller root of the two truncations of P(y)
             k = lo + j
-            tj = fa[k] / cs[k]
-            ck, sk = c[k], s[k]
+            tj = fa[i_fa * k] / cs[i_cs * k]
+            ck, sk = c[i_a0 * k], s[i_a0 * k]
             t[j], tt[j], cb[j], s2[j] = tj, tj * tj, ck, sk * sk
             q[j] = tj * tj / (sk * sk)
             arg = tj * (ck * _SQRT_HALF)
@@ -135,9 +137,10 @@ def _kernel(fa, cs, a0, c, s, xtol, ftol_percent, max_iter, start_rtol, start_ma
             for j in range(m):
                 if live[j]:
                     k = lo + j
-                    a = alpha[k] if alpha[k] < _HALF_PI else 0.5 * (a0[k] + _HALF_PI)
-                    alpha[k], iterations[k], residual[k] = _section_newton(fa[k], cs[k], a0[k], c[k], a, xtol,
-                                                                           ftol_percent, max_iter)
+                    fk, csk, a0k, ck = fa[i_fa * k], cs[i_cs * k], a0[i_a0 * k], c[i_a0 * k]
+                    a = alpha[k] if alpha[k] < _HALF_PI else 0.5 * (a0k + _HALF_PI)
+                    alpha[k], iterations[k], residual[k] = _section_newton(fk, csk, a0k, ck, a, xtol, ftol_percent,
+                                                                           max_iter)
                     n_bad += iterations[k] < 0
         bad[blk] = n_bad  # a count per block (a reduction over prange would need its own care)
 
@@ -156,7 +159,8 @@ def solve(fa, cs, a0, n, xtol, ftol_percent, max_iter):
     step (0 elsewhere). cos alpha0 and sin alpha0 are taken by numpy, once per bearing.
     """
     c, s = np.cos(a0), np.sin(a0)
-    args = [np.broadcast_to(x, (n,)) for x in (fa, cs, a0, c, s)]  # stride-0 views for shared values
+    # contiguous arrays of n elements, or of one for a value shared by all cases: one compiled signature
+    args = [np.ascontiguousarray(np.reshape(x, -1), dtype=float) for x in (fa, cs, a0, c, s)]
     alpha, iterations, residual = np.empty(n), np.zeros(n, dtype=np.int64), np.zeros(n)
     bad = np.zeros((n + _LANES - 1) // _LANES, dtype=np.int64)
     with _LOCK:
