@@ -46,6 +46,7 @@ def test_axial_angle_baseline_takes_the_library_steps_case_by_case(load_bench):
         from bearinglab import _stand_compiled
 
         alpha, iterations, residual, n_bad = _stand_compiled.solve(fa, cs, a0, fa.size, xtol, 0.0, max_iter)
+        assert np.all(residual == 0.0)
         assert np.array_equal(alpha, [x[0] for x in newton]) and n_bad == 0
         assert np.array_equal(iterations, [x[1] for x in newton]) and np.all(iterations >= 1)
     # a case that has not converged is flagged (negative count, the last residual), never silently kept
