@@ -119,7 +119,7 @@ def main(**sizes):
           f"numpy_over_compiled={np_rate / rate:.3g} numpy_over_compiled_cpu={m['cpu_ns'] / m['numpy_cpu_ns']:.3g} "
           f"engine={m['engine']} numpy_cases_per_s={np_rate:.4g} numpy_ratio={np_rate / base:.4g} "
           f"cpu_ns_per_case={m['cpu_ns']:.3g} numpy_cpu_ns_per_case={m['numpy_cpu_ns']:.3g} "
-          f"load_average={m['load'][0]:.2f}")
+          f"load_average={m['load'][0]:.2f} batched_label=shipped_(engine_auto:_{m['engine']})")
     return 0 if ok else 1
 
 
