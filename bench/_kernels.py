@@ -68,7 +68,7 @@ def solve_one(fa, cs, a0, c, s, xtol, ftol_percent, max_iter):
     w = s2 + (2.0 * c - y) * y
     q = y / u if u else math.inf
     ratio = t / (q * math.sqrt(q * w)) if q > 0.0 else math.nan
-    alpha = math.acos(u)
+    alpha = math.asin(math.sqrt(w)) if u > _SQRT_HALF else math.acos(u)  # stand._angle_of
     if abs(ratio - 1.0) * 100.0 < ftol_percent:
         return alpha, 0, 0.0
     if not alpha < _HALF_PI:

@@ -5,13 +5,14 @@ The same operations, case by case, as the numpy path of :func:`bearinglab.stand.
 - the start (``stand._gap_start``): Halley's iteration on eq. (1) squared, a polynomial in the gap
   y = cos alpha0 - cos alpha, from the smaller root of its two leading-order truncations, each case
   stopping after its own step below the start's tolerance;
-- the load test of section 6.3 at the start (``stand._start_test``), then alpha = arccos(cos alpha0 - y);
+- the load test of section 6.3 at the start (``stand._start_test``), then alpha (``stand._angle_of``:
+  arcsin(sin alpha) below 45 deg, arccos(cos alpha) above);
 - for a case that fails the test, the Newton of section 6.3 (``stand._section_newton``) with its halving
   of a step that leaves (alpha0, 90 deg) and its convergence test.
 
 A thread advances a block of ``_LANES`` cases together, so that the cases' chains of dependent divisions
 interleave and the arithmetic loops (Halley's steps, the load test) compile to vector instructions; the
-cube root and the arc cosine are calls to the C library, as in numpy, so the angles are the numpy path's
+cube root and the arc sine or cosine are calls to the C library, as in numpy, so the angles are the numpy path's
 bit for bit on the project machine (tests/test_stand_compiled.py checks them to 1e-12 rad and the
 convergence flags case by case). Each case is independent of the others, so the result does not depend on
 the batch or the chunk it is solved in. Nothing here is public: ``stand.operating_contact_angle`` calls
@@ -129,9 +130,10 @@ def _kernel(fa, cs, a0, c, s, xtol, ftol_percent, max_iter, start_rtol, start_ma
             fail = not abs(ratio - 1.0) * 100.0 < ftol_percent
             live[j] = fail
             n_fail += fail
-            y[j] = u  # from here on: cos alpha
-        for j in range(m):  # a call to the C library
-            alpha[lo + j] = math.acos(y[j])
+            y[j] = u  # from here on: cos alpha and sin^2 alpha
+            q[j] = w
+        for j in range(m):  # stand._angle_of, a call to the C library
+            alpha[lo + j] = math.asin(math.sqrt(q[j])) if y[j] > _SQRT_HALF else math.acos(y[j])
         n_bad = 0
         if n_fail:  # the cases that fail the test (none among the loads tried) take the Newton of section 6.3
             for j in range(m):

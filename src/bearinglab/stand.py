@@ -536,12 +536,21 @@ def _gap_step(y, cos_a0, sin2_a0, thrust_ratio2):
 
 def _start_test(thrust_ratio, y, cos_a0, sin2_a0):
     """F_a / F_a,k of eq. (1) at the gap y, with cos alpha = cos alpha0 - y and sin^2 alpha = 1 - cos^2 alpha
-    written without cancellation: T / (q sqrt(q sin^2 alpha)), q = y / cos alpha = cos alpha0/cos alpha - 1."""
+    written without cancellation: T / (q sqrt(q sin^2 alpha)), q = y / cos alpha = cos alpha0/cos alpha - 1;
+    returns (F_a / F_a,k, cos alpha, sin^2 alpha)."""
     u = cos_a0 - y
     w = sin2_a0 + (2.0 * cos_a0 - y) * y
     with np.errstate(divide="ignore", invalid="ignore"):  # y = cos alpha0 (90 deg): the test fails, no warning
         q = y / u
-        return thrust_ratio / (q * np.sqrt(q * w)), u
+        return thrust_ratio / (q * np.sqrt(q * w)), u, w
+
+
+def _angle_of(u, w):
+    """alpha from cos alpha = u and sin^2 alpha = w: arcsin(sqrt(w)) below 45 deg, where arccos(u) would lose
+    digits (its slope is 1/sin alpha), arccos(u) above; one inverse function per case."""
+    small = u > _SQRT_HALF
+    alpha = np.arccos(u, out=np.empty(np.shape(u)), where=~small)
+    return np.arcsin(np.sqrt(w), out=alpha, where=small)
 
 
 def _newton(fa, cs, a0, n, xtol, ftol_percent, max_iter):
@@ -550,8 +559,8 @@ def _newton(fa, cs, a0, n, xtol, ftol_percent, max_iter):
     cos_a0, sin_a0 = np.cos(a0), np.sin(a0)  # one sine and cosine per bearing, not per case
     t = fa / cs
     y = _gap_start(t, cos_a0, sin_a0, n)
-    ratio, u = _start_test(t, y, cos_a0, sin_a0 * sin_a0)
-    alpha = np.arccos(u)
+    ratio, u, w = _start_test(t, y, cos_a0, sin_a0 * sin_a0)
+    alpha = _angle_of(u, w)
     live = ~(np.abs(ratio - 1.0) * 100.0 < ftol_percent)  # the load test of section 6.3 at the start
     if not live.any():
         return alpha, ~live, np.zeros(n)
