@@ -398,3 +398,23 @@ def test_min_axial_load_of_single_precision_speeds_is_computed_in_double():
     got = stand.min_axial_load(n32, 7, 2e-3, 8.7355e-3, A0)
     ref = stand.min_axial_load(n32.astype(float), 7, 2e-3, 8.7355e-3, A0)
     assert got.minimum.dtype == np.float64 and np.array_equal(got.minimum, ref.minimum)
+
+
+@pytest.mark.skipif(np.finfo(np.longdouble).eps > 1e-18, reason="needs an extended-precision long double")
+@pytest.mark.parametrize("free_deg", [0.5, 1.0, 2.0, 30.0, 70.0])
+def test_small_and_large_free_angles_keep_every_digit(free_deg):
+    # the angle near alpha0 = 1 deg from arccos would lose a digit (its slope is 1/sin alpha): the solve takes
+    # arcsin there; the reference is Newton on eq. (1) in 80-bit arithmetic, written here independently
+    a0 = math.radians(free_deg)
+    loads = np.geomspace(1e-9, 1.0, 40)
+    got = stand.operating_contact_angle(loads * CS, CS, a0)
+    one = np.longdouble(1)
+    la0 = np.longdouble(a0)
+    for t, alpha in zip(loads, got):
+        x = np.longdouble(alpha)
+        for _ in range(6):
+            q = np.cos(la0) / np.cos(x) - one
+            g = q * np.sqrt(q) * np.sin(x) - np.longdouble(t)
+            slope = 1.5 * np.sqrt(q) * np.cos(la0) * np.sin(x) ** 2 / np.cos(x) ** 2 + q * np.sqrt(q) * np.cos(x)
+            x -= g / slope
+        assert abs(float(np.longdouble(alpha) - x)) < 4e-16, (free_deg, t)
