@@ -46,7 +46,7 @@ def available():
 
 def solve_one(fa, cs, a0, c, s, xtol, ftol_percent, max_iter):
     """One case: (alpha [rad], Newton iterations of section 6.3 (0: the start passed the load test);
-    -max_iter if not converged, last 1/ratio - 1).
+    -max_iter (-1 for max_iter = 0) if not converged, last 1/ratio - 1).
 
     ``c``, ``s``: cos alpha0 and sin alpha0, taken once per bearing (as the batched path does).
     """
@@ -88,4 +88,4 @@ def solve_one(fa, cs, a0, c, s, xtol, ftol_percent, max_iter):
         alpha = new
         if abs(dx) < xtol or abs(ratio - 1.0) * 100.0 < ftol_percent:
             return alpha, it, 0.0
-    return alpha, -max_iter, 1.0 / ratio - 1.0
+    return alpha, -max(max_iter, 1), 1.0 / ratio - 1.0

@@ -52,7 +52,8 @@ _step = numba.njit(inline="always", error_model="numpy")(_gap_step)
 
 @numba.njit(cache=True, error_model="numpy")
 def _section_newton(fa, cs, a0, c, alpha, xtol, ftol_percent, max_iter):
-    """The Newton of section 6.3 for one case from ``alpha``: (alpha, iterations or -max_iter, residual)."""
+    """The Newton of section 6.3 for one case from ``alpha``: (alpha, iterations, residual); not converged:
+    iterations -max_iter (-1 for max_iter = 0) and the residual 1/ratio - 1 of the last step."""
     ratio = math.nan
     for it in range(1, max_iter + 1):
         ca, sa = math.cos(alpha), math.sin(alpha)
@@ -69,7 +70,7 @@ def _section_newton(fa, cs, a0, c, alpha, xtol, ftol_percent, max_iter):
         alpha = new
         if abs(dx) < xtol or abs(ratio - 1.0) * 100.0 < ftol_percent:
             return alpha, it, 0.0
-    return alpha, -max_iter, 1.0 / ratio - 1.0
+    return alpha, -max(max_iter, 1), 1.0 / ratio - 1.0
 
 
 @numba.njit(parallel=True, cache=True, error_model="numpy")
@@ -157,7 +158,7 @@ def solve(fa, cs, a0, n, xtol, ftol_percent, max_iter):
     the number of cases that did not converge).
 
     ``iterations`` is the number of Newton steps of section 6.3 (0 where the start passed the load test),
-    negative (``-max_iter``) for a case that did not converge, whose ``residual`` is 1/ratio - 1 of its last
+    negative (``-max_iter``, -1 for max_iter = 0) for a case that did not converge, whose ``residual`` is 1/ratio - 1 of its last
     step (0 elsewhere). cos alpha0 and sin alpha0 are taken by numpy, once per bearing.
     """
     c, s = np.cos(a0), np.sin(a0)
