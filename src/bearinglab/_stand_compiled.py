@@ -47,6 +47,9 @@ __all__ = ["solve"]
 
 _LANES = 256  # cases a thread advances together (its arrays stay in the L1 cache)
 _HALF_PI = math.pi / 2
+# error_model="numpy": a division by zero gives inf or nan as in numpy, with no check that would keep the
+# loops from vectorizing. numba's on-disk cache is keyed on this file only: a change to stand._gap_step or
+# _SQRT_HALF needs the cache cleared (tests/test_stand_compiled.py compares the engines bit for bit).
 _step = numba.njit(inline="always", error_model="numpy")(_gap_step)
 
 
