@@ -1,7 +1,7 @@
 """Smoke tests of the benchmark scripts under bench/.
 
 The benchmarks themselves are not run by the tests (``make bench``); here each script's paths run on a
-few cases and must agree (axial_angle, friction_fits, high_speed and its scalar and compiled kernels,
+few cases and must agree (axial_angle and its fair baseline, friction_fits, high_speed and its scalar and compiled kernels,
 combined at speed, run_all, scaling). More next to their models: tests/lab/test_fits.py
 (friction_fits), tests/runout/test_runout_contact.py (runout), tests/quasistatic/test_thrust.py
 (high_speed), tests/quasistatic/test_combined.py (combined at rest), tests/ratings/test_rating_life.py
@@ -21,12 +21,10 @@ UM_MRAD = np.array([1e-6, 1e-6, 1e-6, 1e-3, 1e-3])  # displacements in um, tilts
 def test_axial_angle_paths_agree_case_by_case(load_bench):
     bench = load_bench("axial_angle")
     m = bench.measure(n_batch=300, n_baseline=50, n_brentq=10, repeat=1, n_small=100)
-    assert m["diff"] < 1e-12 and m["diff_brentq"] < 1e-10
-    if "compiled_rate" in m:  # numba installed
-        assert m["diff_compiled"] < 1e-12
+    assert m["diff"] < 1e-12 and m["diff_brentq"] < 1e-10 and m["diff_numpy"] < 1e-12
 
 
-def test_axial_angle_kernels_take_the_library_steps_case_by_case(load_bench):
+def test_axial_angle_baseline_takes_the_library_steps_case_by_case(load_bench):
     bench = load_bench("axial_angle")
     kernels = bench._kernels
     from bearinglab import stand
@@ -34,17 +32,26 @@ def test_axial_angle_kernels_take_the_library_steps_case_by_case(load_bench):
     a0 = np.array([0.1, 0.3, 0.6, 1.0, 1.3] * 4)  # per-case bearings, loads from feather to near 90 deg
     cs = np.full(a0.size, 5e4)
     fa = cs * np.repeat([1e-9, 1e-5, 1e-3, 1e-1], 5)
-    lib = stand.operating_contact_angle(fa, cs, a0)
+    lib = stand.operating_contact_angle(fa, cs, a0, engine="numpy")
     one = [kernels.solve_one(f, c, a, math.cos(a), math.sin(a), *bench.TOL) for f, c, a in zip(fa, cs, a0)]
-    assert_allclose([x[0] for x in one], lib, rtol=0, atol=1e-12)
-    assert all(x[1] >= 1 for x in one)
+    assert np.array_equal([x[0] for x in one], lib)  # the same operations: the same bits
+    assert all(x[1] == 0 for x in one)  # the start passes the load test of section 6.3
+    # with the load test off (ftol 0) the Newton of section 6.3 runs: the same angles, steps as the kernel's
+    xtol, _, max_iter = bench.TOL
+    newton = [kernels.solve_one(f, c, a, math.cos(a), math.sin(a), xtol, 0.0, max_iter) for f, c, a in zip(fa, cs, a0)]
+    assert_allclose([x[0] for x in newton], lib, rtol=0, atol=1e-12)
+    assert np.array_equal([x[0] for x in newton], stand.operating_contact_angle(fa, cs, a0, ftol_percent=0.0,
+                                                                                  engine="numpy"))
     if kernels.available():
-        alpha, iterations, residual = kernels.operating_angle(fa, cs, a0, *bench.TOL)
-        assert_allclose(alpha, lib, rtol=0, atol=1e-12)
-        assert np.array_equal(iterations, [x[1] for x in one]) and np.all(residual == 0.0)
-        # a case that has not converged is flagged (negative count, the last residual), never silently kept
-        alpha, iterations, residual = kernels.operating_angle(fa, cs, a0, 0.0, 0.0, 1)
-        assert np.all(iterations == -1) and np.all(np.isfinite(residual))
+        from bearinglab import _stand_compiled
+
+        alpha, iterations, residual, n_bad = _stand_compiled.solve(fa, cs, a0, fa.size, xtol, 0.0, max_iter)
+        assert np.all(residual == 0.0)
+        assert np.array_equal(alpha, [x[0] for x in newton]) and n_bad == 0
+        assert np.array_equal(iterations, [x[1] for x in newton]) and np.all(iterations >= 1)
+    # a case that has not converged is flagged (negative count, the last residual), never silently kept
+    fail = [kernels.solve_one(f, c, a, math.cos(a), math.sin(a), 0.0, 0.0, 1) for f, c, a in zip(fa, cs, a0)]
+    assert all(x[1] == -1 and math.isfinite(x[2]) for x in fail)
 
 
 def test_axial_angle_main_prints_a_result_line(load_bench, capsys):
@@ -52,6 +59,8 @@ def test_axial_angle_main_prints_a_result_line(load_bench, capsys):
     assert bench.main(n_batch=200, n_baseline=20, n_brentq=5, repeat=1) == 0
     line = [x for x in capsys.readouterr().out.splitlines() if x.startswith("RESULT axial_angle ")]
     assert len(line) == 1 and "baseline_label=fair_scalar" in line[0]
+    keys = [kv.split("=")[0] for kv in line[0].split()[2:]]
+    assert keys[:5] == ["cases_per_s", "baseline_cases_per_s", "ratio", "baseline_label", "former_brentq_ratio"]
 
 
 def test_friction_fits_fair_and_former_baselines_agree(load_bench):

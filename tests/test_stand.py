@@ -330,15 +330,32 @@ def _angle_by_bisection(t, a0):
 
 @settings(max_examples=200, deadline=None)
 @given(log_t=st.floats(-7.0, -0.5), a0=st.floats(math.radians(3), math.radians(80)))
-def test_the_start_is_the_root_of_eq1_so_newton_confirms_in_one_step(log_t, a0):
+def test_the_start_is_the_root_of_eq1_so_it_passes_the_load_test(log_t, a0):
     t = 10.0**log_t
     ref = _angle_by_bisection(t, a0)
-    start = stand._gap_start(np.array(t), a0, math.cos(a0), math.sin(a0), 1)
+    y = stand._gap_start(np.array(t), math.cos(a0), math.sin(a0), 1)
     # the polynomial start is the root of eq. (1) squared: to 1e-12 rad (brentq's own error is ~1e-15)
-    assert abs(start[0] - ref) < 1e-12
-    # ... so the Newton of section 6.3 converges in its first step, to the same root
-    alpha = stand.operating_contact_angle(t * CS, CS, a0, max_iter=1)
+    assert abs(math.acos(math.cos(a0) - y[0]) - ref) < 1e-12
+    # ... so it passes the load test of section 6.3 without a Newton step, and is the same root
+    alpha = stand.operating_contact_angle(t * CS, CS, a0, max_iter=0)
     assert abs(alpha - ref) < 1e-12
+    # the Newton of section 6.3 that a failed load test would start (ftol 0) stays on it
+    assert abs(stand.operating_contact_angle(t * CS, CS, a0, ftol_percent=0.0) - ref) < 1e-12
+
+
+@settings(max_examples=100, deadline=None)
+@given(log_t=st.floats(-12.0, 2.0), a0=st.floats(math.radians(0.5), math.radians(89)))
+def test_the_start_is_above_the_root_and_halley_settles_in_a_few_steps(log_t, a0):
+    t = 10.0**log_t
+    c, s = math.cos(a0), math.sin(a0)
+
+    def poly(y):  # eq. (1) squared in the gap y, written out independently of stand._gap_step
+        return y**3 * (1.0 - (c - y) ** 2) - t * t * (c - y) ** 3
+
+    y0 = stand._gap_start(np.array(t), c, s, 1, max_iter=0)[0]  # the start itself, no step taken
+    assert 0.0 < y0 <= c and poly(y0) >= 0.0  # P increases through its root: the start is above it
+    y = stand._gap_start(np.array(t), c, s, 1, max_iter=12)[0]  # cubic convergence: a few steps suffice
+    assert abs(math.acos(c - y) - _angle_by_bisection(t, a0)) < 1e-12
 
 
 def test_heavy_and_feather_loads_still_reach_the_root():
@@ -381,3 +398,23 @@ def test_min_axial_load_of_single_precision_speeds_is_computed_in_double():
     got = stand.min_axial_load(n32, 7, 2e-3, 8.7355e-3, A0)
     ref = stand.min_axial_load(n32.astype(float), 7, 2e-3, 8.7355e-3, A0)
     assert got.minimum.dtype == np.float64 and np.array_equal(got.minimum, ref.minimum)
+
+
+@pytest.mark.skipif(np.finfo(np.longdouble).eps > 1e-18, reason="needs an extended-precision long double")
+@pytest.mark.parametrize("free_deg", [0.5, 1.0, 2.0, 30.0, 70.0])
+def test_small_and_large_free_angles_keep_every_digit(free_deg):
+    # the angle near alpha0 = 1 deg from arccos would lose a digit (its slope is 1/sin alpha): the solve takes
+    # arcsin there; the reference is Newton on eq. (1) in 80-bit arithmetic, written here independently
+    a0 = math.radians(free_deg)
+    loads = np.geomspace(1e-9, 1.0, 40)
+    got = stand.operating_contact_angle(loads * CS, CS, a0)
+    one = np.longdouble(1)
+    la0 = np.longdouble(a0)
+    for t, alpha in zip(loads, got):
+        x = np.longdouble(alpha)
+        for _ in range(6):
+            q = np.cos(la0) / np.cos(x) - one
+            g = q * np.sqrt(q) * np.sin(x) - np.longdouble(t)
+            slope = 1.5 * np.sqrt(q) * np.cos(la0) * np.sin(x) ** 2 / np.cos(x) ** 2 + q * np.sqrt(q) * np.cos(x)
+            x -= g / slope
+        assert abs(float(np.longdouble(alpha) - x)) < 4e-16, (free_deg, t)

@@ -6,10 +6,11 @@ __all__: list[str] = []
 AXIAL_ANGLE_XTOL = 1e-12  # rad, |dx| below which the angle is converged
 AXIAL_ANGLE_FTOL_PERCENT = 1e-10  # %, |F_k - F_a|/F_a below which the load is matched
 AXIAL_ANGLE_MAX_ITER = 50
-# its start: Newton on the cube of eq. (1), a polynomial in the gap cos(alpha0) - cos(alpha)
-AXIAL_ANGLE_START_RTOL = 1e-8  # relative step of the gap after which one more step is not taken
+# its start: Halley on eq. (1) squared, a polynomial in the gap cos(alpha0) - cos(alpha)
+AXIAL_ANGLE_START_RTOL = 1e-6  # relative step of the gap after which one more step is not taken (error ~ rtol^3)
 AXIAL_ANGLE_START_MAX_ITER = 60
 AXIAL_ANGLE_BLOCK = 16384  # cases evaluated together (a block's arrays stay in the CPU cache)
+AXIAL_ANGLE_COMPILED_CASES = 1_000_000  # engine="auto": fewest cases for which the compiled kernel is loaded
 
 # Hertz: ellipticity from F(rho)
 ELLIPTICITY_RTOL = 1e-14

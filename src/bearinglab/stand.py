@@ -25,7 +25,8 @@ is the option ``elastic_constant="paper"``, with which the worked example reprod
 Operating contact angle (spec 000 section 6)
 --------------------------------------------
 series_coefficients          a0 ... a4 of the expansion of eq. (2)
-operating_contact_angle      Newton on eq. (2) to tolerance, vectorized over loads and bearings
+operating_contact_angle      Newton on eq. (2) to tolerance, vectorized over loads and bearings (numpy, or
+                             a compiled kernel in parallel over the cases: ``engine``)
 iteration_table              the per-iteration table of the paper (k, x_k, angle, xi_a, F_a,k, Delta)
 IterationRow
 
@@ -48,8 +49,10 @@ References
 
 from __future__ import annotations
 
+import importlib.util
 import math
 import numbers
+import sys
 import warnings
 from typing import NamedTuple
 
@@ -365,7 +368,8 @@ def _newton_step(axial_load, thrust, alpha, free_angle):
 
 
 def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xtol=_solve.AXIAL_ANGLE_XTOL,
-                            ftol_percent=_solve.AXIAL_ANGLE_FTOL_PERCENT, max_iter=_solve.AXIAL_ANGLE_MAX_ITER):
+                            ftol_percent=_solve.AXIAL_ANGLE_FTOL_PERCENT, max_iter=_solve.AXIAL_ANGLE_MAX_ITER,
+                            engine="auto"):
     r"""Operating contact angle under a pure axial load (spec 000 section 6): the Newton of section 6.3.
 
     Parameters
@@ -381,7 +385,15 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
     ftol_percent : float, optional
         ... or where abs(F_a,k - F_a) / F_a < ftol_percent. [%]
     max_iter : int, optional
-        Iteration limit.
+        Iteration limit (Newton steps of section 6.3 after the start).
+    engine : {"auto", "numpy", "compiled"}, optional
+        "numpy": the batched numpy path; "compiled": the same operations case by case in a numba kernel,
+        parallel over the cases (needs numba); "auto" (default): the compiled kernel when numba is
+        installed and either the kernel is already loaded in this process or the batch has at least
+        ``_solve.AXIAL_ANGLE_COMPILED_CASES`` (10^6) cases, else numpy (loading numba and the kernel
+        costs about half a second, so a smaller batch, and a one-case call, does not import numba). The
+        two engines give the same angles (bit for bit on the project machine, where tests compare them
+        with ==) and the same convergence.
 
     Returns
     -------
@@ -403,10 +415,12 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
     and the convergence test of section 6.3 (``xtol``, ``ftol_percent``). The start is not the paper's x0
     of eq. (3) (:func:`~bearinglab.static.first_approximation`, which the iteration table keeps) but the
     root of eq. (1) squared, a polynomial in the gap y = cos alpha0 - cos alpha that needs no
-    trigonometric function (:func:`_gap_start`); from it the Newton of section 6.3 confirms convergence in
-    one step for ordinary loads, where x0 of eq. (3) needs four. The angle is the same root to the
-    tolerance. Each case stops on its own convergence, so its angle does not depend on the batch or the
-    chunk it is solved in (the cases are evaluated in blocks that fit the CPU cache).
+    trigonometric function (:func:`_gap_start`). As in the paper's table, the load test of section 6.3 is
+    made at the start first: where it holds (for every load tried, the start being the root to the last
+    digits) the start is the answer and no Newton step is taken; elsewhere the Newton of section 6.3
+    runs from it. Each case stops on its own convergence, so its angle does not depend on the engine,
+    the batch or the chunk it is solved in (the numpy path evaluates the cases in blocks that fit the CPU
+    cache).
 
     Examples
     --------
@@ -419,16 +433,23 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
     cs = check_positive("force_characteristic", force_characteristic, "N")
     a0 = _angle("free_angle", free_angle)
     shape = np.broadcast_shapes(fa.shape, cs.shape, a0.shape)
+    n = math.prod(shape)
+    compiled = _compiled_engine(engine, n)
     # flat inputs; a single value (one bearing) stays a scalar, so that its sine and cosine are taken once
     flat = [x.reshape(()) if x.size == 1 else np.broadcast_to(x, shape).ravel() for x in (fa, cs, a0)]
-    n = math.prod(shape)
-    alpha, residual = np.empty(n), np.empty(n)
-    ok = np.empty(n, dtype=bool)
-    block = _solve.AXIAL_ANGLE_BLOCK
-    for lo in range(0, n, block):  # a loop over blocks of cases, not over cases: the arrays stay in cache
-        part = [x if x.ndim == 0 else x[lo:lo + block] for x in flat]
-        alpha[lo:lo + block], ok[lo:lo + block], residual[lo:lo + block] = _newton(*part, min(block, n - lo), xtol,
-                                                                                 ftol_percent, max_iter)
+    if compiled:
+        from . import _stand_compiled  # imports numba: only when the compiled path runs
+
+        alpha, iterations, residual, n_bad = _stand_compiled.solve(*flat, n, xtol, ftol_percent, max_iter)
+        ok = iterations >= 0 if n_bad else np.ones(1, dtype=bool)
+    else:
+        alpha, residual = np.empty(n), np.empty(n)
+        ok = np.empty(n, dtype=bool)
+        block = _solve.AXIAL_ANGLE_BLOCK
+        for lo in range(0, n, block):  # a loop over blocks of cases, not over cases: the arrays stay in cache
+            part = [x if x.ndim == 0 else x[lo:lo + block] for x in flat]
+            alpha[lo:lo + block], ok[lo:lo + block], residual[lo:lo + block] = _newton(
+                *part, min(block, n - lo), xtol, ftol_percent, max_iter)
     if not ok.all():
         raise ConvergenceError("stand.operating_contact_angle", iterations=max_iter,
                                residual=residual.reshape(shape)[()], estimate=alpha.reshape(shape)[()],
@@ -436,24 +457,56 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
     return alpha.reshape(shape)[()]
 
 
-def _gap_start(thrust_ratio, free_angle, cos_a0, sin_a0, n, *, rtol=_solve.AXIAL_ANGLE_START_RTOL,
+_ENGINES = ("auto", "numpy", "compiled")
+
+
+def _compiled_engine(engine, n):
+    """True if the compiled kernel solves ``n`` cases: engine "compiled"; or "auto" with numba installed, when
+    the kernel is already loaded in this process or the batch has at least ``_solve.AXIAL_ANGLE_COMPILED_CASES``
+    cases (loading numba and the kernel costs about 0.5 s; numba is looked up, not imported, for a small batch)."""
+    if not isinstance(engine, str) or engine not in _ENGINES:
+        raise InputError(f"engine must be one of {list(_ENGINES)}, got {engine!r}")
+    if engine == "numpy":
+        return False
+    if engine == "auto" and _COMPILED_MODULE in sys.modules:
+        return True
+    if engine == "auto" and n < _solve.AXIAL_ANGLE_COMPILED_CASES:
+        return False
+    found = importlib.util.find_spec("numba") is not None
+    if engine == "compiled" and not found:
+        raise InputError("engine='compiled' needs numba, which is not installed (use engine='numpy' or 'auto')")
+    return found
+
+
+_COMPILED_MODULE = __name__.rpartition(".")[0] + "._stand_compiled"
+
+
+def _gap_start(thrust_ratio, cos_a0, sin_a0, n, *, rtol=_solve.AXIAL_ANGLE_START_RTOL,
                max_iter=_solve.AXIAL_ANGLE_START_MAX_ITER):
-    r"""Start of the Newton of section 6.3: the operating angle from eq. (1) squared, by a Newton on the gap.
+    r"""Start of the Newton of section 6.3: the gap y = cos alpha0 - cos alpha at the root of eq. (1) squared.
 
     With u = cos alpha, y = cos alpha0 - u and T = F_a/C*, eq. (1) squared is T^2 u^3 = (c0 - u)^3 (1 - u^2),
 
     .. math:: P(y) = y^3 (\sin^2\alpha_0 + 2 y\cos\alpha_0 - y^2) - T^2 (\cos\alpha_0 - y)^3 = 0,
 
-    with P(0) < 0 < P(cos alpha0) and P', P'' > 0 on (0, cos alpha0]: Newton from above descends
-    monotonically to the root. It starts at the root of the small-load limit sin^2 alpha0 y^3 = T^2 cos^3
-    alpha0, which is above the root, and each case stops after a step below ``rtol`` times the gap (the
-    error left is then of order rtol^2; the Newton of section 6.3 that follows settles the angle). Returns
-    alpha = arccos(cos alpha0 - y) [rad] for ``n`` cases (half-way between alpha0 and 90 deg where it
-    would be 90 deg).
+    with P(0) < 0 < P(cos alpha0) and P', P'' > 0 on (0, cos alpha0]. Halley's iteration (:func:`_gap_step`,
+    cubic convergence, arithmetic only) starts from the smaller of the roots of the two leading-order
+    truncations, sin^2 alpha0 y^3 = T^2 cos^3 alpha0 (small loads, a cube root, taken only where it is the
+    smaller: their cubes are compared) and 2 cos alpha0 y^4 = T^2 cos^3 alpha0 (small free angles, a square
+    root), both above the root; each case stops after a step below ``rtol`` times the gap (the error left is
+    then of order rtol^3, below the rounding of y). Two or three steps for ordinary loads. Returns y for
+    ``n`` cases.
     """
     s2 = sin_a0 * sin_a0
     tt = thrust_ratio * thrust_ratio
-    y = np.array(np.broadcast_to(np.minimum(cos_a0 * np.cbrt(tt / s2), cos_a0), (n,)))
+    q = tt / s2
+    arg = thrust_ratio * (cos_a0 * _SQRT_HALF)
+    small_angle = np.sqrt(arg)  # the root of 2 cos(alpha0) y^4 = T^2 cos^3(alpha0)
+    # the root of sin^2(alpha0) y^3 = T^2 cos^3(alpha0), a cube root, is taken only where it is the smaller
+    small_load = cos_a0 * cos_a0 * cos_a0 * q < small_angle * arg  # compared as cubes
+    root = np.cbrt(q, out=np.array(small_angle, dtype=float), where=small_load)
+    y = np.where(small_load, cos_a0 * root, small_angle)
+    y = np.array(np.broadcast_to(np.minimum(y, cos_a0), (n,)))
     live = np.ones(n, dtype=bool)
     for _ in range(max_iter):
         dy = _gap_step(y, cos_a0, s2, tt)
@@ -461,28 +514,81 @@ def _gap_start(thrust_ratio, free_angle, cos_a0, sin_a0, n, *, rtol=_solve.AXIAL
         live &= np.abs(dy) > rtol * y
         if not live.any():
             break
-    alpha = np.arccos(cos_a0 - y)
-    return np.where(alpha < np.pi / 2, alpha, 0.5 * (free_angle + np.pi / 2))  # not at 90 deg: half-way there
+    return y
+
+
+_SQRT_HALF = math.sqrt(0.5)
 
 
 def _gap_step(y, cos_a0, sin2_a0, thrust_ratio2):
-    """The Newton step P(y)/P'(y) of :func:`_gap_start`, for floats or arrays (arithmetic only)."""
+    """Halley's step 2 P P' / (2 P'^2 - P P'') on P(y) of :func:`_gap_start`, for floats or arrays (arithmetic)."""
     u = cos_a0 - y
     y2 = y * y
     y3 = y2 * y
+    w = sin2_a0 + (2.0 * cos_a0 - y) * y  # 1 - u^2 = sin^2 alpha
+    tu = thrust_ratio2 * u
+    tu2 = tu * u
+    p = y3 * w - tu2 * u
+    p1 = 3.0 * y2 * w + 2.0 * y3 * u + 3.0 * tu2
+    p2 = 6.0 * y * w + 12.0 * y2 * u - 2.0 * y3 - 6.0 * tu
+    return 2.0 * p * p1 / (2.0 * p1 * p1 - p * p2)
+
+
+def _start_test(thrust_ratio, y, cos_a0, sin2_a0):
+    """F_a / F_a,k of eq. (1) at the gap y, with cos alpha = cos alpha0 - y and sin^2 alpha = 1 - cos^2 alpha
+    written without cancellation: T / (q sqrt(q sin^2 alpha)), q = y / cos alpha = cos alpha0/cos alpha - 1;
+    returns (F_a / F_a,k, cos alpha, sin^2 alpha)."""
+    u = cos_a0 - y
     w = sin2_a0 + (2.0 * cos_a0 - y) * y
-    tu2 = thrust_ratio2 * u * u
-    return (y3 * w - tu2 * u) / (3.0 * y2 * w + 2.0 * y3 * u + 3.0 * tu2)
+    with np.errstate(divide="ignore", invalid="ignore"):  # y = cos alpha0 (90 deg): the test fails, no warning
+        q = y / u
+        return thrust_ratio / (q * np.sqrt(q * w)), u, w
+
+
+def _angle_of(u, w):
+    """alpha from cos alpha = u and sin^2 alpha = w: arcsin(sqrt(w)) below 45 deg, where arccos(u) would lose
+    digits (its slope is 1/sin alpha), arccos(u) above; one inverse function per case."""
+    small = u > _SQRT_HALF
+    alpha = np.arccos(u, out=np.empty(np.shape(u)), where=~small)
+    return np.arcsin(np.sqrt(w), out=alpha, where=small)
 
 
 def _newton(fa, cs, a0, n, xtol, ftol_percent, max_iter):
-    """The Newton of section 6.3 on ``n`` cases from :func:`_gap_start`: (alpha, converged, 1/ratio - 1)."""
+    """The solve of ``n`` cases: the start (:func:`_gap_start`), its load test, and for a case that fails it
+    the Newton of section 6.3; (alpha, converged, 1/ratio - 1)."""
     cos_a0, sin_a0 = np.cos(a0), np.sin(a0)  # one sine and cosine per bearing, not per case
-    alpha = _gap_start(fa / cs, a0, cos_a0, sin_a0, n)
+    t = fa / cs
+    y = _gap_start(t, cos_a0, sin_a0, n)
+    ratio, u, w = _start_test(t, y, cos_a0, sin_a0 * sin_a0)
+    alpha = _angle_of(u, w)
+    live = ~(np.abs(ratio - 1.0) * 100.0 < ftol_percent)  # the load test of section 6.3 at the start
+    if not live.any():
+        return alpha, ~live, np.zeros(n)
+    # the cases that fail it (none among the loads tried) take the Newton of section 6.3, each on its own
+    idx = np.flatnonzero(live)
+    a = alpha[idx]
+    part = [x if np.ndim(x) == 0 else x[idx] for x in (fa, cs, a0, cos_a0)]
+    a, ok, res = _section_newton(*part, np.where(a < np.pi / 2, a, 0.5 * (part[2] + np.pi / 2)), xtol,
+                                 ftol_percent, max_iter)
+    alpha[idx] = a
+    residual = np.zeros(n)
+    residual[idx] = res
+    return alpha, ~live | _scatter(live, ok), residual
+
+
+def _scatter(mask, values):
+    out = np.zeros(mask.shape, dtype=bool)
+    out[mask] = values
+    return out
+
+
+def _section_newton(fa, cs, a0, cos_a0, alpha, xtol, ftol_percent, max_iter):
+    """The Newton of section 6.3 from ``alpha``: (alpha, converged, 1/ratio - 1 of the last step, 0 where
+    converged)."""
     # A converged case is frozen (its step set to zero) while the others go on, so that each case takes
     # exactly the steps it would take alone: the result does not depend on the batch or chunk it sits in.
-    live = np.ones(n, dtype=bool)
-    ratio = np.full(n, np.nan)  # max_iter = 0: nothing converged, no residual
+    live = np.ones(alpha.shape, dtype=bool)
+    ratio = np.full(alpha.shape, np.nan)  # max_iter = 0: nothing converged, no residual
     for _ in range(max_iter):
         ca, sa = np.cos(alpha), np.sin(alpha)
         gap = cos_a0 - ca
@@ -496,8 +602,8 @@ def _newton(fa, cs, a0, n, xtol, ftol_percent, max_iter):
         alpha = np.where(new >= np.pi / 2, 0.5 * (alpha + np.pi / 2), new)
         live &= ~((np.abs(dx) < xtol) | (np.abs(ratio - 1.0) * 100.0 < ftol_percent))
         if not live.any():
-            return alpha, ~live, np.zeros(n)
-    return alpha, ~live, 1.0 / ratio - 1.0
+            return alpha, ~live, np.zeros(alpha.shape)
+    return alpha, ~live, np.where(live, 1.0 / ratio - 1.0, 0.0)  # a converged case has no residual
 
 
 class IterationRow(NamedTuple):
