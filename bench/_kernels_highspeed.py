@@ -9,7 +9,7 @@ the compiled limit there is the library's own compiled path.
 Functions
 ---------
 bearing_parameters   the per-case constants and Hertz tables of one bearing, from the library's own set-up
-solver               ``solve(fa, w, v0) -> (v, status, iterations, alpha_i, alpha_e)`` in plain Python
+solver               ``solve(fa, w, v0) -> (v, status, iterations, state)`` in plain Python
 """
 
 from __future__ import annotations
@@ -23,19 +23,23 @@ __all__ = ["bearing_parameters", "solver"]
 
 
 def bearing_parameters(geometry_args, *, raceway_control="outer", gyroscopic_sign=1, constants="harris"):
-    """(par, tables): the 13 constants of one bearing, and (K_i, dlnK_i, K_e, dlnK_e) Chebyshev series."""
+    """(par, tables): the 14 constants of one bearing, and its 8 Chebyshev series (ln K, d ln K, ln a*, ln b*)."""
     model, _ = quasistatic._prepare(1.0, *geometry_args, raceway_control, gyroscopic_sign, constants)
     par, _gid, tables = _compiled.case_parameters(model)
     return par[0], [t[0] for t in tables]
 
 
 def solver(par, tables, *, tol=_solve.QUASISTATIC_TOL, max_iter=_solve.QUASISTATIC_MAX_ITER):
-    """``solve(fa, w, v0) -> (v, status, iterations, alpha_i, alpha_e)``, one case, plain Python."""
+    """``solve(fa, w, v0) -> (v, status, iterations, state)``, one case, plain Python.
+
+    ``state`` holds the outputs of the full state (``_compiled.OUTPUTS``) of a converged case, NaN if it
+    failed: the same work as the compiled path, which computes them too.
+    """
     p = [float(x) for x in par]
     t = [[float(x) for x in c] for c in tables]
     one = _compiled.plain_solver()
 
     def solve(fa, w, v0):
-        return one(fa, w, v0, p, *t, tol, max_iter, math.inf)
+        return one(fa, w, v0, p, *t, tol, max_iter, math.inf, [0.0] * 35)
 
     return solve

@@ -288,11 +288,14 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
     status = np.zeros(n, dtype=int)
     iters = np.zeros(n, dtype=int)
     meth = np.full(n, "newton", dtype=object)
+    out = None
     if _compiled_engine(engine, method):
         from . import _compiled  # imports numba: only when the compiled path runs
 
-        v, status, iters = _compiled.solve(model, wf, v0, tol=float(tol), max_iter=int(max_iter),
-                                           speed_step=speed_step)
+        # the kernel also computes the full state of each converged case (what _assemble computes)
+        v, status, iters, out = _compiled.solve(model, wf, v0, tol=float(tol), max_iter=int(max_iter),
+                                                speed_step=speed_step)
+        out["static_contact_angle"] = alpha_s
     elif method == "newton":
         v, status, iters, _norm, _w_ok = _newton(model, idx, wf, v0, tol=tol, max_iter=int(max_iter),
                                                  speed_step=speed_step)
@@ -309,7 +312,8 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
             meth[moving] = how
     meth[wf == 0] = "static"
     ok = status == _OK
-    out = _assemble(model, idx, v, wf, alpha_s, ok)
+    if out is None:
+        out = _assemble(model, idx, v, wf, alpha_s, ok)
     failed = np.flatnonzero(~ok)
     if failed.size and on_failure == "raise":
         k = failed[0]
