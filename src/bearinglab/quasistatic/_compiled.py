@@ -29,7 +29,7 @@ Functions
 ---------
 available        True if numba imports (the compiled path can run)
 scalar_helpers   ``(cheb, gauss5)`` in plain Python, each wrapped by a given ``jit``
-plain_solver     ``solve_case`` (solve and state of one case) in plain Python (bench/high_speed.py's fair baseline)
+plain_solver     ``solve_from_rest`` (static start, solve, state of one case) in plain Python (the fair baseline)
 case_parameters  the per-case constants and Hertz tables of a prepared model, as the kernel takes them
 solve            all cases of a prepared model by the compiled kernel: ``(v, status, iterations, state)``
 OUTPUTS          the names of the state's quantities, in the order :func:`state` gives them
@@ -52,6 +52,7 @@ import types
 import numpy as np
 
 from .. import _solve
+from ..errors import ConvergenceError
 from .equations import _ANGLE_OUT, _INNER_LOST, _NOCONV, _OK, _OUTER_LOST
 
 try:
@@ -304,6 +305,57 @@ def solve_one(fa, w_target, v0, par, kti, dti, kto, dto, tol, max_iter, h_max, s
     return v, _NOCONV, iters, math.nan, math.nan
 
 
+@_jit
+def _series_stiffness(c, kti, dti, kto, dto):
+    """K_n = (K_i^(-2/3) + K_e^(-2/3))^(-3/2) at cos(alpha) = c, d ln K_n / d cos(alpha), K_i, K_e."""
+    lki, dki = cheb2(kti, dti, 2.0 * c - 1.0)
+    lke, dke = cheb2(kto, dto, 2.0 * c - 1.0)
+    ui, ue = math.exp(-2.0 / 3.0 * lki), math.exp(-2.0 / 3.0 * lke)  # K^(-2/3)
+    return (ui + ue) ** -1.5, (ui * dki + ue * dke) / (ui + ue), math.exp(lki), math.exp(lke)
+
+
+@_jit
+def static_start(fa, par, kti, dti, kto, dto, xtol, max_iter):
+    """The static solution at the thrust ``fa`` (spec 004 section 5.3): (alpha_s, unknowns v0 (5-tuple)).
+
+    The algorithm of :func:`bearinglab.static.contact_angle_under_thrust` (``stiffness_at="operating"``):
+    Newton on (F / F_a)^(2/3) - 1 from spec 000's first approximation, with K_i, K_e at the loaded angle,
+    here through the Chebyshev interpolants of the exact Hertz solution that the high-speed solve uses
+    (the same to ~1e-13, with d ln K_n / d alpha from the series instead of central differences). alpha_s
+    is NaN if the iteration does not converge in ``max_iter`` steps.
+    """
+    z, d, fo, a0 = par[0], par[1], par[4], par[14]
+    bd = (par[3] + fo - 1.0) * d
+    s0, c0 = math.sin(a0), math.cos(a0)
+    t_ratio = fa / (z * _series_stiffness(c0, kti, dti, kto, dto)[0] * bd**1.5)
+    root = math.sqrt(1.0 + (2.0 / 3.0) * (6.0 + c0**2) / s0**2 * (t_ratio / s0) ** (2.0 / 3.0))
+    alpha = min(a0 + 3.0 * s0 * c0 / (6.0 + c0**2) * (root - 1.0), 0.5 * (a0 + 0.5 * math.pi))  # spec 000 eq. (3)
+    done = False
+    for _it in range(max_iter):
+        ca, sa = math.cos(alpha), math.sin(alpha)
+        kn, dlnk, _ki, _ke = _series_stiffness(ca, kti, dti, kto, dto)
+        thrust = z * kn * (bd * (c0 / ca - 1.0)) ** 1.5 * sa
+        slope = sa / ca + (2.0 / 3.0) * ca / sa + sa / (c0 - ca) - (2.0 / 3.0) * sa * dlnk
+        dx = ((fa / thrust) ** (2.0 / 3.0) - 1.0) / slope
+        new = alpha + dx
+        if new <= a0:
+            new = 0.5 * (alpha + a0)
+        if new >= 0.5 * math.pi:
+            new = 0.5 * (alpha + 0.5 * math.pi)
+        alpha = new
+        if abs(dx) < xtol:
+            done = True
+            break
+    ca, sa = math.cos(alpha), math.sin(alpha)
+    _kn, _dlnk, ki, ke = _series_stiffness(ca, kti, dti, kto, dto)
+    q = fa / (z * sa)
+    da = (bd + bd * (c0 / ca - 1.0)) * sa - bd * s0
+    di, de = (q / ki) ** (2.0 / 3.0), (q / ke) ** (2.0 / 3.0)
+    le_len = (fo - 0.5) * d + de  # the unknowns as continuation._unknowns_from gives them
+    v0 = (le_len * sa / d, le_len * ca / d, di / d, de / d, da / d)
+    return (alpha if done else math.nan), v0
+
+
 #: The outputs of :func:`state`, in its order (fields of :class:`~bearinglab.quasistatic.HighSpeedState`).
 OUTPUTS = ("contact_angle_inner", "contact_angle_outer", "axial_displacement", "ball_load_inner", "ball_load_outer",
            "deflection_inner", "deflection_outer", "centrifugal_force", "gyroscopic_moment", "attitude_angle",
@@ -365,7 +417,7 @@ def _max_pressure(q, d, f, race_term, ep, a_star, b_star, x):
     return 3.0 * q / (2.0 * math.pi * a * b)
 
 
-_JITTED = ("cheb", "_max_pressure", "state", "cheb2", "gauss5_into", "gauss5", "kinematics", "evaluate", "solve_one", "solve_case")
+_JITTED = ("cheb", "_series_stiffness", "static_start", "_max_pressure", "state", "cheb2", "gauss5_into", "gauss5", "kinematics", "evaluate", "solve_one", "solve_case", "solve_from_rest")
 
 
 def _rebind(names, wrap):
@@ -378,11 +430,12 @@ def _rebind(names, wrap):
 
 
 def plain_solver():
-    """``solve_case`` with every helper it calls in plain Python (numba or not): the fair scalar baseline."""
-    return _rebind(_JITTED, lambda f: f)["solve_case"]
+    """``solve_from_rest`` with every helper it calls in plain Python (numba or not): the fair scalar baseline."""
+    return _rebind(_JITTED, lambda f: f)["solve_from_rest"]
 
 
 _prange = range if numba is None else numba.prange
+_STATIC_XTOL = 1e-13  # [rad], the default xtol of bearinglab.static.contact_angle_under_thrust
 
 
 @_jit
@@ -396,6 +449,17 @@ def solve_case(fa, w, v0, par, kti, dti, kto, dto, ati, bti, ato, bto, tol, max_
                          nan)
 
 
+@_jit
+def solve_from_rest(fa, w, par, kti, dti, kto, dto, ati, bti, ato, bto, tol, max_iter, h_max, scratch):
+    """One case from its static start: (alpha_s, v, status, Newton iterations, :data:`OUTPUTS`).
+
+    alpha_s is NaN if the static solution did not converge (the caller raises).
+    """
+    alpha_s, v0 = static_start(fa, par, kti, dti, kto, dto, _STATIC_XTOL, _solve.AXIAL_ANGLE_MAX_ITER)
+    v, code, it, o = solve_case(fa, w, v0, par, kti, dti, kto, dto, ati, bti, ato, bto, tol, max_iter, h_max, scratch)
+    return alpha_s, v, code, it, o
+
+
 def _loop(fa, w, v0, par, gid, kti, dti, kto, dto, ati, bti, ato, bto, tol, max_iter, h_max, v, status, iters, out):
     for k in _prange(fa.size):  # parallel over the cases (each case is independent of the others)
         g = gid[k]
@@ -407,13 +471,23 @@ def _loop(fa, w, v0, par, gid, kti, dti, kto, dto, ati, bti, ato, bto, tol, max_
             out[k, j] = o[j]
 
 
+def _starts(fa, par, gid, kti, dti, kto, dto, alpha_s, v0):
+    for k in _prange(fa.size):  # parallel over the cases
+        g = gid[k]
+        alpha_s[k], vk = static_start(fa[k], par[k], kti[g], dti[g], kto[g], dto[g], _STATIC_XTOL,
+                                      _solve.AXIAL_ANGLE_MAX_ITER)
+        for j in range(5):
+            v0[k, j] = vk[j]
+
+
 if numba is not None:
     _loop = numba.njit(parallel=True, cache=True)(_loop)
+    _starts = numba.njit(parallel=True, cache=True)(_starts)
 _LOCK = threading.Lock()  # numba's default (workqueue) threading layer does not allow concurrent launches
 
 
 def case_parameters(model):
-    """``(par, gid, tables)``: per-case constants (n, 14), geometry index (n,), Hertz series (8 x (G, m)).
+    """``(par, gid, tables)``: per-case constants (n, 15), geometry index (n,), Hertz series (8 x (G, m)).
 
     The tables are the Chebyshev series of ln K and d ln K / d cos(alpha) (inner, then outer), then those
     of ln a* and ln b* (inner, then outer).
@@ -421,26 +495,61 @@ def case_parameters(model):
     cols = [model.z, model.d, model.dm, model.fi, model.fo, model.ax0, model.az, model.mass_c, model.inertia]
     n = model.fa.size
     par = np.column_stack(cols + [np.full(n, x) for x in (model.lam_i, model.lam_e, model.sign,
-                                                          1.0 if model.control == "inner" else 0.0)] + [model.ep])
+                                                          1.0 if model.control == "inner" else 0.0)]
+                          + [model.ep, model.a0])
     series = (*model.t_inner["k"], *model.t_outer["k"], *model.t_inner["hertz"][1:3], *model.t_outer["hertz"][1:3])
     tables = [np.ascontiguousarray(np.atleast_2d(t), dtype=float) for t in series]
     return np.ascontiguousarray(par, dtype=float), np.ascontiguousarray(model.gid, dtype=np.int64), tables
 
 
-def solve(model, w_target, v0, *, tol, max_iter, speed_step):
+def _static_starts(fa, par, gid, tables):
+    """alpha_s (n,) and the unknowns v0 (n, 5) of each case's static start, by :func:`static_start`.
+
+    A static start is a function of the thrust and the bearing only: where all cases share one bearing
+    (the usual map), it is computed once per distinct thrust and copied, which gives the same numbers.
+    """
+    n = fa.size
+    if n and np.all(par == par[:1]) and np.all(gid == gid[:1]):
+        loads, inv = np.unique(fa, return_inverse=True)
+        rep = np.zeros(loads.size, dtype=np.int64)
+        rep[inv] = np.arange(n)  # a case of each distinct thrust
+    else:
+        rep, inv = np.arange(n), np.arange(n)
+    alpha_s, v0 = np.empty(rep.size), np.empty((rep.size, 5))
+    _starts(fa[rep], par[rep], gid[rep], *tables[:4], alpha_s, v0)
+    if np.isnan(alpha_s).any():
+        k = int(rep[np.flatnonzero(np.isnan(alpha_s))[0]])
+        raise ConvergenceError("static.contact_angle_under_thrust", iterations=_solve.AXIAL_ANGLE_MAX_ITER,
+                               residual=np.inf, estimate=np.nan, reason=f"static start at F_a = {fa[k]:g} N")
+    return alpha_s[inv], v0[inv]
+
+
+def solve(model, w_target, v0=None, *, tol, max_iter, speed_step):
     """All cases of ``model`` by the compiled kernel: unknowns (n, 5), status codes, Newton iterations, state.
 
-    The counterpart of :func:`~bearinglab.quasistatic.continuation._newton` on ``idx = arange(n)``
-    followed by ``thrust._assemble``: the state is a dict of the :data:`OUTPUTS` (n,), NaN where a case
-    failed.
+    The counterpart of ``continuation._static_start`` (when ``v0`` is None: each case starts from its
+    static solution, :func:`static_start`), :func:`~bearinglab.quasistatic.continuation._newton` on
+    ``idx = arange(n)`` and ``thrust._assemble``: the state is a dict of the :data:`OUTPUTS` (n,), NaN
+    where a case failed, and of ``static_contact_angle`` (NaN if ``v0`` is given).
+
+    Raises
+    ------
+    ConvergenceError
+        If a static start does not converge (as :func:`bearinglab.static.contact_angle_under_thrust`).
     """
     par, gid, tables = case_parameters(model)
-    n = model.fa.size
+    fa = np.ascontiguousarray(model.fa, dtype=float)
+    n = fa.size
     v, out = np.empty((n, 5)), np.empty((n, len(OUTPUTS)))
     status, iters = np.empty(n, dtype=np.int64), np.empty(n, dtype=np.int64)
     h_max = math.inf if speed_step is None else float(speed_step)
     with _LOCK:
-        _loop(np.ascontiguousarray(model.fa, dtype=float), np.ascontiguousarray(w_target, dtype=float),
-              np.ascontiguousarray(v0, dtype=float), par, gid, *tables, float(tol), int(max_iter), h_max, v,
-              status, iters, out)
-    return v, status, iters, {name: out[:, j] for j, name in enumerate(OUTPUTS)}
+        if v0 is None:
+            alpha_s, v0 = _static_starts(fa, par, gid, tables)
+        else:
+            alpha_s, v0 = np.full(n, np.nan), np.ascontiguousarray(v0, dtype=float)
+        _loop(fa, np.ascontiguousarray(w_target, dtype=float), v0, par, gid, *tables, float(tol), int(max_iter),
+              h_max, v, status, iters, out)
+    state = {name: out[:, j] for j, name in enumerate(OUTPUTS)}
+    state["static_contact_angle"] = alpha_s
+    return v, status, iters, state
