@@ -218,7 +218,7 @@ def test_the_kernel_static_start_is_the_static_solution():
         model, _ = quasistatic._prepare(fa, *geo, "outer", 1, "mass")
         idx = np.arange(fa.size)
         ref = quasistatic._static_start(model, idx)
-        par, gid, tables = _compiled.case_parameters(model)
+        par, _gid, tables = _compiled.case_parameters(model)
         for k in range(fa.size):
             alpha_s, v0 = _compiled.static_start(fa[k], par[k], *(t[0] for t in tables[:4]), 1e-13, 50)
             # the interpolants reproduce the exact K to ~1e-13 (tests/quasistatic/test_contact.py)
