@@ -180,7 +180,7 @@ def kinematics(si, ci, se, ce, ai, ae, g, inner_control):
 
 @_jit
 def evaluate(v, w2, fa, par, kti, dti, kto, dto):
-    """Residuals r (5), Jacobian (25, row-major, w.r.t. v), dr/d(omega^2) (5), status, alpha_i, alpha_e."""
+    """Residuals r (5), Jacobian (25, row-major, w.r.t. v), dr/d(omega^2) (5), status, alpha_i, alpha_e, Q_i, Q_e."""
     z, d, dm, fi, fo, ax0, az, mass_c, inertia = par[0], par[1], par[2], par[3], par[4], par[5], par[6], \
         par[7], par[8]
     li, le, sign, inner_control = par[9], par[10], par[11], par[12]
@@ -234,12 +234,18 @@ def evaluate(v, w2, fa, par, kti, dti, kto, dto):
            a3 * dai0 + b3 * dae0, a3 * dai1 + b3 * dae1, qi_d * si * sd, -qe_d * se * sd, a3 * dai2,
            a4 * dai0 + b4 * dae0, a4 * dai1 + b4 * dae1, qi_d * ci * sd, -qe_d * ce * sd, a4 * dai2,
            a5 * dai0 + b5 * dae0, a5 * dai1 + b5 * dae1, qi_d * si * sd, 0.0, a5 * dai2)
-    return r, jac, r_w2, code, ai, ae
+    return r, jac, r_w2, code, ai, ae, qi, qe
+
+
+_NO_EVALUATION = ((math.nan,) * 5, (math.nan,) * 25, math.nan, math.nan)  # what solve_one gives a failed case
 
 
 @_jit
 def solve_one(fa, w_target, v0, par, kti, dti, kto, dto, tol, max_iter, h_max, scratch):
-    """One case: (v (5-tuple), status, Newton iterations, alpha_i, alpha_e); ``h_max`` inf: no largest step.
+    """One case: (v (5-tuple), status, Newton iterations, alpha_i, alpha_e, (r, J, Q_i, Q_e) at v).
+
+    ``h_max`` inf: no largest step. The last item is the evaluation at the solution (NaN if the case
+    failed), from which :func:`state` computes the outputs.
 
     ``scratch``: 35 floats for the 5 x 5 solves (:func:`gauss5_into`).
     """
@@ -249,7 +255,7 @@ def solve_one(fa, w_target, v0, par, kti, dti, kto, dto, tol, max_iter, h_max, s
     h_min = max(w_target * 1e-6, 1e-3)
     iters, k_stage, t, norm_prev, last_bad = 0, 0, 1.0, math.inf, _NOCONV
     for _loop in range(_solve.QUASISTATIC_MAX_LOOPS):
-        r, jac, r_w2, code, ai, ae = evaluate(v, w_cur * w_cur, fa, par, kti, dti, kto, dto)
+        r, jac, r_w2, code, ai, ae, qi, qe = evaluate(v, w_cur * w_cur, fa, par, kti, dti, kto, dto)
         norm = math.sqrt(r[0] ** 2 + r[1] ** 2 + r[2] ** 2 + r[3] ** 2 + r[4] ** 2)
         valid = code == _OK and math.isfinite(norm)
         if not valid:
@@ -257,7 +263,7 @@ def solve_one(fa, w_target, v0, par, kti, dti, kto, dto, tol, max_iter, h_max, s
         cut, advance = False, False
         if valid and norm < tol:
             if w_cur >= w_target:
-                return v, _OK, iters, ai, ae
+                return v, _OK, iters, ai, ae, (r, jac, qi, qe)
             tangent = gauss5_into(jac, (-r_w2[0], -r_w2[1], -r_w2[2], -r_w2[3], -r_w2[4]), scratch)  # dv / d(omega^2)
             v_ok, w_ok = v, w_cur
             if k_stage <= 4 and w_cur > 0:
@@ -289,9 +295,9 @@ def solve_one(fa, w_target, v0, par, kti, dti, kto, dto, tol, max_iter, h_max, s
         if cut:  # retry with a quarter of the speed step, or give up
             h = 0.25 * (w_cur - w_ok)
             if iters >= max_iter:
-                return v, _NOCONV, iters, math.nan, math.nan
+                return v, _NOCONV, iters, math.nan, math.nan, _NO_EVALUATION
             if h < h_min:
-                return v, last_bad, iters, math.nan, math.nan
+                return v, last_bad, iters, math.nan, math.nan, _NO_EVALUATION
             advance = True
         if advance:  # next continuation step from the last converged point, tangent predictor
             w_new = min(w_ok + h, w_target)
@@ -302,7 +308,7 @@ def solve_one(fa, w_target, v0, par, kti, dti, kto, dto, tol, max_iter, h_max, s
             v = (x1, v_ok[1] + inc * tangent[1], v_ok[2] + inc * tangent[2], v_ok[3] + inc * tangent[3],
                  v_ok[4] + inc * tangent[4])
             w_cur, k_stage, norm_prev, t = w_new, 0, math.inf, 1.0
-    return v, _NOCONV, iters, math.nan, math.nan
+    return v, _NOCONV, iters, math.nan, math.nan, _NO_EVALUATION
 
 
 @_jit
@@ -364,9 +370,10 @@ OUTPUTS = ("contact_angle_inner", "contact_angle_outer", "axial_displacement", "
 
 
 @_jit
-def state(v, w, fa, par, kti, dti, kto, dto, ati, bti, ato, bto, scratch):
+def state(v, w, fa, par, ai, ae, last, ati, bti, ato, bto, scratch):
     """The full state of one converged case at the unknowns v, in the order of :data:`OUTPUTS` (SI units).
 
+    ``ai``, ``ae`` and ``last`` = (r, J, Q_i, Q_e) are the solve's last evaluation, at v (:func:`solve_one`).
     The same quantities as the batched path's ``thrust._assemble``, which computes them through the public
     functions: beta (eq. 10, :func:`~bearinglab.quasistatic.attitude_angle`), the cage and spin speeds
     (eqs. 9, 13), F_c (8) and M_g (12) from the speeds, p_max = 3Q / (2 pi a b) with a*, b* through the
@@ -374,17 +381,10 @@ def state(v, w, fa, par, kti, dti, kto, dto, ati, bti, ato, bto, scratch):
     (J dv = -dr/dF_a dF_a, dr5/dF_a = -1 / (Z fs)), and mu = 2 M_g / (D Q) at the controlling raceway.
     """
     z, d, dm, fi, fo, mass_c, inertia, ep = par[0], par[1], par[2], par[3], par[4], par[7], par[8], par[13]
-    inner_control = par[12]
-    r, jac, _r_w2, _code, ai, ae = evaluate(v, w * w, fa, par, kti, dti, kto, dto)
-    di, de, da = v[2] * d, v[3] * d, v[4] * d
-    px, pz = par[5] + da - v[0] * d, par[6] - v[1] * d
-    x1, x2 = v[0] * d, v[1] * d
-    ci_, ce_ = pz / math.hypot(px, pz), x2 / math.hypot(x1, x2)  # as in the residuals, eqs. (14)-(15)
-    qi = math.exp(cheb(kti, 2.0 * ci_ - 1.0)) * max(di, 0.0) ** 1.5
-    qe = math.exp(cheb(kto, 2.0 * ce_ - 1.0)) * max(de, 0.0) ** 1.5
+    r, jac, qi, qe = last
     g = d / dm
     si, ci, se, ce = math.sin(ai), math.cos(ai), math.sin(ae), math.cos(ae)
-    if inner_control > 0.0:  # eq. (10)
+    if par[12] > 0.0:  # eq. (10), inner-raceway control
         beta = math.atan2(si, ci - g)
     else:
         beta = math.atan2(se, ce + g)
@@ -396,13 +396,12 @@ def state(v, w, fa, par, kti, dti, kto, dto, ati, bti, ato, bto, scratch):
     mg = inertia * abs(spin * cage) * math.sin(beta)  # eq. (12), J = m D^2 / 10
     p_in = _max_pressure(qi, d, fi, 2.0 * gi / (1.0 - gi), ep, ati, bti, 2.0 * ci - 1.0)
     p_out = _max_pressure(qe, d, fo, -2.0 * ge / (1.0 + ge), ep, ato, bto, 2.0 * ce - 1.0)
-    fs = max(fa / z, 1.0)
-    dv = gauss5_into(jac, (0.0, 0.0, 0.0, 0.0, 1.0 / (z * fs)), scratch)
+    dv = gauss5_into(jac, (0.0, 0.0, 0.0, 0.0, 1.0 / (z * max(fa / z, 1.0))), scratch)
     q_c = qe if par[10] > 0.0 else qi
     mu = 2.0 * mg / (d * q_c) if q_c != 0.0 else (math.inf if mg != 0.0 else math.nan)
     res = math.sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3] + r[4] * r[4])
-    return (ai, ae, da, qi, qe, di, de, fc, mg, beta, cage, spin, z * cage, z * (w - cage), p_in, p_out,
-            1.0 / (dv[4] * d), mu, res)
+    return (ai, ae, v[4] * d, qi, qe, v[2] * d, v[3] * d, fc, mg, beta, cage, spin, z * cage, z * (w - cage), p_in,
+            p_out, 1.0 / (dv[4] * d), mu, res)
 
 
 @_jit
@@ -441,9 +440,9 @@ _STATIC_XTOL = 1e-13  # [rad], the default xtol of bearinglab.static.contact_ang
 @_jit
 def solve_case(fa, w, v0, par, kti, dti, kto, dto, ati, bti, ato, bto, tol, max_iter, h_max, scratch):
     """One case, solve and state: (v, status, Newton iterations, :data:`OUTPUTS` (NaN if the case failed))."""
-    v, code, it, _ai, _ae = solve_one(fa, w, v0, par, kti, dti, kto, dto, tol, max_iter, h_max, scratch)
+    v, code, it, ai, ae, last = solve_one(fa, w, v0, par, kti, dti, kto, dto, tol, max_iter, h_max, scratch)
     if code == _OK:
-        return v, code, it, state(v, w, fa, par, kti, dti, kto, dto, ati, bti, ato, bto, scratch)
+        return v, code, it, state(v, w, fa, par, ai, ae, last, ati, bti, ato, bto, scratch)
     nan = math.nan
     return v, code, it, (nan, nan, nan, nan, nan, nan, nan, nan, nan, nan, nan, nan, nan, nan, nan, nan, nan, nan,
                          nan)
