@@ -459,10 +459,11 @@ def solve_from_rest(fa, w, par, kti, dti, kto, dto, ati, bti, ato, bto, tol, max
     return alpha_s, v, code, it, o
 
 
-def _loop(fa, w, v0, par, gid, kti, dti, kto, dto, ati, bti, ato, bto, tol, max_iter, h_max, v, status, iters, out):
+def _loop(fa, w, v0, par, pid, gid, kti, dti, kto, dto, ati, bti, ato, bto, tol, max_iter, h_max, v, status, iters,
+          out):
     for k in _prange(fa.size):  # parallel over the cases (each case is independent of the others)
         g = gid[k]
-        vk, status[k], iters[k], o = solve_case(fa[k], w[k], v0[k], par[k], kti[g], dti[g], kto[g], dto[g], ati[g],
+        vk, status[k], iters[k], o = solve_case(fa[k], w[k], v0[k], par[pid[k]], kti[g], dti[g], kto[g], dto[g], ati[g],
                                                 bti[g], ato[g], bto[g], tol, max_iter, h_max, np.empty(35))
         for j in range(5):
             v[k, j] = vk[j]
@@ -470,52 +471,70 @@ def _loop(fa, w, v0, par, gid, kti, dti, kto, dto, ati, bti, ato, bto, tol, max_
             out[k, j] = o[j]
 
 
-def _starts(fa, par, gid, kti, dti, kto, dto, alpha_s, v0):
+def _starts(fa, par, pid, gid, kti, dti, kto, dto, alpha_s, v0):
     for k in _prange(fa.size):  # parallel over the cases
         g = gid[k]
-        alpha_s[k], vk = static_start(fa[k], par[k], kti[g], dti[g], kto[g], dto[g], _STATIC_XTOL,
+        alpha_s[k], vk = static_start(fa[k], par[pid[k]], kti[g], dti[g], kto[g], dto[g], _STATIC_XTOL,
                                       _solve.AXIAL_ANGLE_MAX_ITER)
         for j in range(5):
             v0[k, j] = vk[j]
 
 
+_starts_serial = _starts
 if numba is not None:
     _loop = numba.njit(parallel=True, cache=True)(_loop)
     _starts = numba.njit(parallel=True, cache=True)(_starts)
+    _starts_serial = numba.njit(cache=True)(_starts_serial)  # prange runs as range
+_PARALLEL_STARTS = 2000  # static starts below which one thread is quicker than waking the others
 _LOCK = threading.Lock()  # numba's default (workqueue) threading layer does not allow concurrent launches
+
+
+def _parameters(model):
+    """``(par, pid, gid, tables)``: constants (P, 15) with the row ``pid`` of each case, geometry index, series.
+
+    One row for all cases when they share one bearing (the usual map), else one row per case. The tables
+    are the Chebyshev series of ln K and d ln K / d cos(alpha) (inner, then outer), then those of ln a*
+    and ln b* (inner, then outer), each (G, m).
+    """
+    cols = [model.z, model.d, model.dm, model.fi, model.fo, model.ax0, model.az, model.mass_c, model.inertia]
+    n = model.fa.size
+    extra = (model.lam_i, model.lam_e, model.sign, 1.0 if model.control == "inner" else 0.0)
+    per_case = cols[:5] + [model.ep, model.a0] + cols[5:]
+    if n and all(c.min() == c.max() for c in per_case):
+        par, pid = np.array([[c[0] for c in cols] + list(extra) + [model.ep[0], model.a0[0]]]), np.zeros(n, np.int64)
+    else:
+        par = np.column_stack(cols + [np.full(n, x) for x in extra] + [model.ep, model.a0])
+        pid = np.arange(n, dtype=np.int64)
+    series = (*model.t_inner["k"], *model.t_outer["k"], *model.t_inner["hertz"][1:3], *model.t_outer["hertz"][1:3])
+    tables = [np.ascontiguousarray(np.atleast_2d(t), dtype=float) for t in series]
+    return np.ascontiguousarray(par, dtype=float), pid, np.ascontiguousarray(model.gid, dtype=np.int64), tables
 
 
 def case_parameters(model):
     """``(par, gid, tables)``: per-case constants (n, 15), geometry index (n,), Hertz series (8 x (G, m)).
 
-    The tables are the Chebyshev series of ln K and d ln K / d cos(alpha) (inner, then outer), then those
-    of ln a* and ln b* (inner, then outer).
+    See :func:`_parameters` for the tables.
     """
-    cols = [model.z, model.d, model.dm, model.fi, model.fo, model.ax0, model.az, model.mass_c, model.inertia]
-    n = model.fa.size
-    par = np.column_stack(cols + [np.full(n, x) for x in (model.lam_i, model.lam_e, model.sign,
-                                                          1.0 if model.control == "inner" else 0.0)]
-                          + [model.ep, model.a0])
-    series = (*model.t_inner["k"], *model.t_outer["k"], *model.t_inner["hertz"][1:3], *model.t_outer["hertz"][1:3])
-    tables = [np.ascontiguousarray(np.atleast_2d(t), dtype=float) for t in series]
-    return np.ascontiguousarray(par, dtype=float), np.ascontiguousarray(model.gid, dtype=np.int64), tables
+    par, pid, gid, tables = _parameters(model)
+    return par[pid], gid, tables
 
 
-def _static_starts(fa, par, gid, tables):
+def _static_starts(fa, par, pid, gid, tables):
     """alpha_s (n,) and the unknowns v0 (n, 5) of each case's static start, by :func:`static_start`.
 
     A static start is a function of the thrust and the bearing only: where all cases share one bearing
     (the usual map), it is computed once per distinct thrust and copied, which gives the same numbers.
     """
     n = fa.size
-    if n and np.all(par == par[:1]) and np.all(gid == gid[:1]):
+    if n and len(par) == 1 and np.all(gid == gid[0]):
         loads, inv = np.unique(fa, return_inverse=True)
         rep = np.zeros(loads.size, dtype=np.int64)
         rep[inv] = np.arange(n)  # a case of each distinct thrust
     else:
         rep, inv = np.arange(n), np.arange(n)
     alpha_s, v0 = np.empty(rep.size), np.empty((rep.size, 5))
-    _starts(fa[rep], par[rep], gid[rep], *tables[:4], alpha_s, v0)
+    starts = _starts if rep.size >= _PARALLEL_STARTS else _starts_serial
+    starts(fa[rep], par, pid[rep], gid[rep], *tables[:4], alpha_s, v0)
     if np.isnan(alpha_s).any():
         k = int(rep[np.flatnonzero(np.isnan(alpha_s))[0]])
         raise ConvergenceError("static.contact_angle_under_thrust", iterations=_solve.AXIAL_ANGLE_MAX_ITER,
@@ -536,7 +555,7 @@ def solve(model, w_target, v0=None, *, tol, max_iter, speed_step):
     ConvergenceError
         If a static start does not converge (as :func:`bearinglab.static.contact_angle_under_thrust`).
     """
-    par, gid, tables = case_parameters(model)
+    par, pid, gid, tables = _parameters(model)
     fa = np.ascontiguousarray(model.fa, dtype=float)
     n = fa.size
     v, out = np.empty((n, 5)), np.empty((n, len(OUTPUTS)))
@@ -544,10 +563,10 @@ def solve(model, w_target, v0=None, *, tol, max_iter, speed_step):
     h_max = math.inf if speed_step is None else float(speed_step)
     with _LOCK:
         if v0 is None:
-            alpha_s, v0 = _static_starts(fa, par, gid, tables)
+            alpha_s, v0 = _static_starts(fa, par, pid, gid, tables)
         else:
             alpha_s, v0 = np.full(n, np.nan), np.ascontiguousarray(v0, dtype=float)
-        _loop(fa, np.ascontiguousarray(w_target, dtype=float), v0, par, gid, *tables, float(tol), int(max_iter),
+        _loop(fa, np.ascontiguousarray(w_target, dtype=float), v0, par, pid, gid, *tables, float(tol), int(max_iter),
               h_max, v, status, iters, out)
     state = {name: out[:, j] for j, name in enumerate(OUTPUTS)}
     state["static_contact_angle"] = alpha_s
