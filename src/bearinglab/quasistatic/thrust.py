@@ -245,10 +245,11 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
         control needs exceeds this. [-]
     engine : {"auto", "numpy", "compiled"}, optional
         How the Newton solve runs: "compiled" by the numba kernel of
-        :mod:`~bearinglab.quasistatic._compiled` (the same steps case by case, in parallel over the cases),
-        "numpy" by the batched numpy path, "auto" (default) compiled when numba imports and numpy
-        otherwise. Both give the same result to ~1e-15 rad; ``method="angle-iteration"`` always runs on
-        numpy ("compiled" then raises).
+        :mod:`~bearinglab.quasistatic._compiled` (the same steps case by case, in parallel over the cases,
+        static start and full state included), "numpy" by the batched numpy path, "auto" (default)
+        compiled when numba imports and numpy otherwise. Both give the same angles to ~1e-15 rad and
+        every output to 1e-12 relative; ``method="angle-iteration"`` always runs on numpy ("compiled"
+        then raises).
 
     Returns
     -------
