@@ -68,8 +68,8 @@ def static_starts(fa):
 def baseline(fa, n):
     """The fair scalar baseline, one plain-Python solve from rest per case, static start and full state included.
 
-    Returns the state per case (n, 20): (alpha_s, then the outputs ``_compiled.OUTPUTS``); NaN where a case
-    fails.
+    Returns the state per case (n, 20): the outputs ``_compiled.OUTPUTS`` (alpha_i, alpha_e first), then
+    alpha_s; NaN where a case fails.
     """
     fa, n = np.asarray(fa, float).ravel(), np.asarray(n, float).ravel()
     solve = _hs.solver(*_hs.bearing_parameters(GEO, constants=OPTIONS["constants"]))
@@ -77,7 +77,7 @@ def baseline(fa, n):
     for k, (f, w) in enumerate(zip(fa.tolist(), n.tolist(), strict=True)):  # one at a time
         alpha_s, _v, status, _it, state = solve(f, w)
         if status == 0:
-            out[k] = alpha_s, *state
+            out[k] = *state, alpha_s
     return out
 
 
@@ -87,16 +87,16 @@ def compiled(fa, n):
 
 
 def _columns(state, sample=slice(None)):
-    """alpha_s and the ``_compiled.OUTPUTS`` of a state, (cases, 20), in the baseline's order."""
-    names = ("static_contact_angle", *_compiled.OUTPUTS)
+    """The ``_compiled.OUTPUTS`` and alpha_s of a state, (cases, 20), in the baseline's order."""
+    names = (*_compiled.OUTPUTS, "static_contact_angle")
     return np.stack([np.ravel(getattr(state, k))[sample] for k in names], axis=1)
 
 
 def _largest_difference(got, ref):
     """Largest difference per column, relative to the column's largest value (angles: absolute, rad)."""
     scale = np.nanmax(np.abs(ref), axis=0)
-    scale[[0, 1, 2, 10]] = 1.0  # alpha_s, alpha_i, alpha_e, beta: absolute [rad]
-    scale[-1] = np.inf  # the residual at the solution is rounding noise below the tolerance
+    scale[[0, 1, 9, 19]] = 1.0  # alpha_i, alpha_e, beta, alpha_s: absolute [rad]
+    scale[18] = np.inf  # the residual at the solution is rounding noise below the tolerance
     return float(np.nanmax(np.abs(got - ref) / scale))
 
 
@@ -155,10 +155,10 @@ def measure(n_loads=N_LOADS, n_speeds=N_SPEEDS, n_baseline=N_BASELINE, n_former=
     former = sample[:n_former]
     starts = static_starts(fa.ravel()[former])  # outside the former baseline's timing (reference only)
     t_old, old = best_of(lambda: library_fsolve(fa.ravel()[former], n.ravel()[former], starts), repeat)
-    ang = slice(1, 3)  # alpha_i, alpha_e in _columns
+    ang = slice(0, 2)  # alpha_i, alpha_e in _columns
     m = {"total": total, "t_batch": t_batch, "rate": total / t_batch, "t_eval": t_eval,
          "base_rate": sample.size / t_base, "former_rate": former.size / t_old,
-         "failed": int((~state.converged).sum()), "failed_base": int(np.isnan(ref[:, 1]).sum()),
+         "failed": int((~state.converged).sum()), "failed_base": int(np.isnan(ref[:, 0]).sum()),
          "failed_former": int(np.isnan(old[:, 0]).sum()), "iterations": state.iterations,
          "diff": float(np.nanmax(np.abs(got[sample, ang] - ref[:, ang]))),
          "diff_state": _largest_difference(ref, got[sample]),
