@@ -434,6 +434,7 @@ def plain_solver():
 
 
 _prange = range if numba is None else numba.prange
+_thread_id = (lambda: 0) if numba is None else numba.get_thread_id  # the scratch row of the running thread
 _STATIC_XTOL = 1e-13  # [rad], the default xtol of bearinglab.static.contact_angle_under_thrust
 
 
@@ -460,11 +461,11 @@ def solve_from_rest(fa, w, par, kti, dti, kto, dto, ati, bti, ato, bto, tol, max
 
 
 def _loop(fa, w, v0, par, pid, gid, kti, dti, kto, dto, ati, bti, ato, bto, tol, max_iter, h_max, v, status, iters,
-          out):
+          out, scratch):
     for k in _prange(fa.size):  # parallel over the cases (each case is independent of the others)
         g = gid[k]
         vk, status[k], iters[k], o = solve_case(fa[k], w[k], v0[k], par[pid[k]], kti[g], dti[g], kto[g], dto[g], ati[g],
-                                                bti[g], ato[g], bto[g], tol, max_iter, h_max, np.empty(35))
+                                                bti[g], ato[g], bto[g], tol, max_iter, h_max, scratch[_thread_id()])
         for j in range(5):
             v[k, j] = vk[j]
         for j in range(len(o)):
@@ -486,6 +487,11 @@ if numba is not None:
     _starts = numba.njit(parallel=True, cache=True)(_starts)
     _starts_serial = numba.njit(cache=True)(_starts_serial)  # prange runs as range
 _PARALLEL_STARTS = 2000  # static starts below which one thread is quicker than waking the others
+def _threads():
+    """Threads the kernel may run on (rows of scratch space it needs)."""
+    return 1 if numba is None else numba.config.NUMBA_NUM_THREADS
+
+
 _LOCK = threading.Lock()  # numba's default (workqueue) threading layer does not allow concurrent launches
 
 
@@ -567,7 +573,7 @@ def solve(model, w_target, v0=None, *, tol, max_iter, speed_step):
         else:
             alpha_s, v0 = np.full(n, np.nan), np.ascontiguousarray(v0, dtype=float)
         _loop(fa, np.ascontiguousarray(w_target, dtype=float), v0, par, pid, gid, *tables, float(tol), int(max_iter),
-              h_max, v, status, iters, out)
+              h_max, v, status, iters, out, np.empty((_threads(), 35)))
     state = {name: out[:, j] for j, name in enumerate(OUTPUTS)}
     state["static_contact_angle"] = alpha_s
     return v, status, iters, state
