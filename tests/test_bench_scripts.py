@@ -109,8 +109,10 @@ def test_high_speed_fair_baseline_and_batched_agree_case_by_case(load_bench):
     m = bench.measure(n_loads=4, n_speeds=5, n_baseline=20, n_former=3, repeat=1)
     assert m["failed"] == m["failed_base"] == m["failed_former"] == 0
     assert m["diff"] < 1e-12 and m["diff_former"] < 1e-9
-    if "compiled_rate" in m:  # numba (the bench extra) installed
-        assert m["diff_compiled"] < 1e-12
+    assert m["diff_state"] < 1e-12  # the baseline computes the whole state too
+    if "compiled_rate" in m:  # numba installed
+        assert m["diff_compiled"] < 1e-12 and m["diff_state_compiled"] < 1e-12
+        assert m["diff_state_compiled_scalar"] < 1e-12
 
 
 def test_high_speed_scalar_solver_takes_the_same_newton_steps(load_bench):
@@ -119,10 +121,11 @@ def test_high_speed_scalar_solver_takes_the_same_newton_steps(load_bench):
     fa, n = bench.grid(3, 4)
     state = bench.batched(fa, n)
     solve = kernels.solver(*kernels.bearing_parameters(bench.GEO, constants=bench.OPTIONS["constants"]))
-    for f, w, v, it in zip(fa.ravel(), n.ravel(), bench.static_starts(fa.ravel()), state.iterations.ravel(),
-                           strict=True):
-        _v, status, iterations, _ai, _ae = solve(float(f), float(w), v.tolist())
+    for f, w, it, ai in zip(fa.ravel(), n.ravel(), state.iterations.ravel(), state.contact_angle_inner.ravel(),
+                            strict=True):
+        _alpha_s, _v, status, iterations, out = solve(float(f), float(w))
         assert status == 0 and iterations == it
+        assert out[0] == pytest.approx(ai, rel=0, abs=1e-12)
 
 
 def test_high_speed_main_prints_a_result_line(load_bench, capsys):
@@ -130,6 +133,7 @@ def test_high_speed_main_prints_a_result_line(load_bench, capsys):
     assert bench.main(n_loads=3, n_speeds=3, n_baseline=9, n_former=2, repeat=1) == 0
     line = [x for x in capsys.readouterr().out.splitlines() if x.startswith("RESULT high_speed ")]
     assert len(line) == 1 and "baseline_label=fair_scalar" in line[0] and "former_fsolve_ratio" in line[0]
+    assert line[0].endswith("baseline_work=static_start+solve+state")
 
 
 @pytest.mark.parametrize("name", ["combined", "life", "skf_friction", "runout", "high_speed"])

@@ -148,6 +148,31 @@ def _assemble(model, idx, v, w, alpha_s, ok):
     return out
 
 
+def _solve_numpy(model, wf, method, *, tol, max_iter, speed_step):
+    """The numpy engine: static starts, batched Newton (or the angle iteration) and the full state."""
+    n = model.fa.size
+    idx = np.arange(n)
+    alpha_s, di0, de0, da0 = _static_start(model, idx)
+    v0 = _unknowns_from(model, idx, alpha_s, di0, de0, da0)
+    status = np.zeros(n, dtype=int)
+    iters = np.zeros(n, dtype=int)
+    meth = np.full(n, "newton", dtype=object)
+    if method == "newton":
+        v, status, iters, _norm, _w_ok = _newton(model, idx, wf, v0, tol=tol, max_iter=max_iter, speed_step=speed_step)
+    else:
+        v = v0.copy()
+        moving = np.flatnonzero(wf > 0)
+        if moving.size:
+            ai, ae, f, it, how = _angle_iteration(model, idx[moving], wf[moving], alpha_s[moving])
+            seq = _angle_sequence(model, idx[moving], ai, ae, wf[moving] ** 2)
+            v[moving] = _unknowns_from(model, idx[moving], ae, seq.deflection_inner, seq.deflection_outer,
+                                       seq.axial_displacement)
+            status[moving] = np.where(f < _ROOT_TOL, _OK, _NOT_ROOT)
+            iters[moving] = it
+            meth[moving] = how
+    return v, status, iters, meth, _assemble(model, idx, v, wf, alpha_s, status == _OK)
+
+
 _ENGINES = ("auto", "numpy", "compiled")
 
 
@@ -220,10 +245,11 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
         control needs exceeds this. [-]
     engine : {"auto", "numpy", "compiled"}, optional
         How the Newton solve runs: "compiled" by the numba kernel of
-        :mod:`~bearinglab.quasistatic._compiled` (the same steps case by case, in parallel over the cases),
-        "numpy" by the batched numpy path, "auto" (default) compiled when numba imports and numpy
-        otherwise. Both give the same result to ~1e-15 rad; ``method="angle-iteration"`` always runs on
-        numpy ("compiled" then raises).
+        :mod:`~bearinglab.quasistatic._compiled` (the same steps case by case, in parallel over the cases,
+        static start and full state included), "numpy" by the batched numpy path, "auto" (default)
+        compiled when numba imports and numpy otherwise. Both give the same angles to ~1e-15 rad and
+        every output to 1e-12 relative; ``method="angle-iteration"`` always runs on numpy ("compiled"
+        then raises).
 
     Returns
     -------
@@ -282,34 +308,18 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
                             shape=np.shape(w))
     n = model.fa.size
     wf = np.broadcast_to(w, shape).ravel().astype(float)
-    idx = np.arange(n)
-    alpha_s, di0, de0, da0 = _static_start(model, idx)
-    v0 = _unknowns_from(model, idx, alpha_s, di0, de0, da0)
-    status = np.zeros(n, dtype=int)
-    iters = np.zeros(n, dtype=int)
-    meth = np.full(n, "newton", dtype=object)
     if _compiled_engine(engine, method):
         from . import _compiled  # imports numba: only when the compiled path runs
 
-        v, status, iters = _compiled.solve(model, wf, v0, tol=float(tol), max_iter=int(max_iter),
-                                           speed_step=speed_step)
-    elif method == "newton":
-        v, status, iters, _norm, _w_ok = _newton(model, idx, wf, v0, tol=tol, max_iter=int(max_iter),
-                                                 speed_step=speed_step)
+        # the kernel computes each case's static start, solve and full state (what _assemble computes)
+        v, status, iters, out = _compiled.solve(model, wf, tol=float(tol), max_iter=int(max_iter),
+                                                speed_step=speed_step)
+        meth = np.full(n, "newton", dtype=object)
     else:
-        v = v0.copy()
-        moving = np.flatnonzero(wf > 0)
-        if moving.size:
-            ai, ae, f, it, how = _angle_iteration(model, idx[moving], wf[moving], alpha_s[moving])
-            seq = _angle_sequence(model, idx[moving], ai, ae, wf[moving] ** 2)
-            v[moving] = _unknowns_from(model, idx[moving], ae, seq.deflection_inner, seq.deflection_outer,
-                                       seq.axial_displacement)
-            status[moving] = np.where(f < _ROOT_TOL, _OK, _NOT_ROOT)
-            iters[moving] = it
-            meth[moving] = how
+        v, status, iters, meth, out = _solve_numpy(model, wf, method, tol=tol, max_iter=int(max_iter),
+                                                   speed_step=speed_step)
     meth[wf == 0] = "static"
     ok = status == _OK
-    out = _assemble(model, idx, v, wf, alpha_s, ok)
     failed = np.flatnonzero(~ok)
     if failed.size and on_failure == "raise":
         k = failed[0]
@@ -331,7 +341,7 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
     fields["shaft_speed"] = wf
     fields["converged"] = ok
     fields["iterations"] = iters
-    fields["status"] = np.array([STATUS[s] for s in status], dtype=object) if n else np.array([], dtype=object)
+    fields["status"] = np.array(STATUS, dtype=object)[status]
     fields["method"] = meth
     return HighSpeedState(**{k: np.asarray(fields[k]).reshape(shape)[()] for k in HighSpeedState._fields})
 
