@@ -201,10 +201,16 @@ def main(n_loads=N_LOADS, n_speeds=N_SPEEDS, n_baseline=N_BASELINE, n_former=N_F
                  f" compiled_map_seconds={m['t_compiled']:.3g} compiled_cpu_seconds={m['cpu_compiled']:.3g}"
                  f" compiled_ratio={m['compiled_rate'] / base:.4g} state_diff_compiled={m['diff_state_compiled']:.2g}")
         ok = ok and m["diff_compiled"] < 1e-12 and m["diff_state_compiled"] < 1e-12
-    print(f"RESULT high_speed cases_per_s={rate:.4g} baseline_cases_per_s={base:.4g} ratio={rate / base:.4g} "
-          f"map_seconds={m['t_batch']:.3g} solve_over_residual_eval={m['t_batch'] / m['t_eval']:.3g} "
-          f"baseline_label=fair_scalar_Newton_(math) former_fsolve_ratio={rate / m['former_rate']:.4g}{extra}"
-          f" baseline_work=static_start+solve+state")
+    # the table's first row is the shipped path: engine="auto" runs the compiled kernel where numba imports
+    shipped, seconds, label = rate, m["t_batch"], "batched_numpy"
+    if "compiled_rate" in m:
+        shipped, seconds, label = m["compiled_rate"], m["t_compiled"], "shipped_(engine_auto:_compiled)"
+        extra += f" numpy_cases_per_s={rate:.4g} numpy_ratio={rate / base:.4g} numpy_map_seconds={m['t_batch']:.3g}"
+    print(f"shipped / fair scalar = {shipped / base:.4g}x (numpy fallback {rate / base:.4g}x)")
+    print(f"RESULT high_speed cases_per_s={shipped:.4g} baseline_cases_per_s={base:.4g} ratio={shipped / base:.4g} "
+          f"map_seconds={seconds:.3g} solve_over_residual_eval={m['t_batch'] / m['t_eval']:.3g} "
+          f"baseline_label=fair_scalar_Newton_(math) former_fsolve_ratio={shipped / m['former_rate']:.4g}{extra}"
+          f" batched_label={label} baseline_work=static_start+solve+state")
     return 0 if ok else 1
 
 
