@@ -88,3 +88,92 @@ def test_stand_analysis_echoes_its_inputs_and_derives_every_field(loads, hertz):
         assert r.iterations and r.iterations[-1].contact_angle == pytest.approx(float(r.contact_angle), abs=1e-12)
     else:
         assert r.iterations == []
+
+
+def _independent_section_newton(fa, cs, a0, alpha, xtol, ftol_percent, max_iter):
+    """Spec 000 section 6.3 written again: (alpha, converged, F_a,k/F_a - 1 of the last step or 0).
+
+    A step that leaves (alpha0, 90 deg) is halved toward the boundary it crossed (the library's documented
+    guard, ``stand.operating_contact_angle``)."""
+    residual = math.nan
+    for _ in range(max_iter):
+        fk = _thrust(alpha, cs, a0)
+        dx = _increment(fa, fk, alpha, a0)
+        new = alpha + dx
+        if new <= a0:
+            new = 0.5 * (alpha + a0)
+        if new >= math.pi / 2:
+            new = 0.5 * (alpha + math.pi / 2)
+        alpha = new
+        residual = fk / fa - 1.0
+        if abs(dx) < xtol or abs(fa / fk - 1.0) * 100.0 < ftol_percent:
+            return alpha, True, 0.0
+    return alpha, False, residual
+
+
+@settings(max_examples=80, deadline=None)
+@given(load=st.floats(0.01, 500.0), a0_deg=st.floats(5.0, 45.0), where=st.floats(0.0005, 0.999),
+       max_iter=st.integers(0, 6), ftol_percent=st.sampled_from([0.0, 1e-10, 0.5]))
+def test_the_newton_of_section_6_3_from_any_start(load, a0_deg, where, max_iter, ftol_percent):
+    # The solve's own start passes the load test for every load tried, so the Newton it falls back on is
+    # checked here on its own, from starts anywhere in (alpha0, 90 deg): far starts overshoot 90 deg and
+    # are halved, few iterations leave cases unconverged with the residual of their last step.
+    fa, cs, a0 = load * KGF, 7792.357 * KGF, math.radians(a0_deg)
+    start = a0 + where * (math.pi / 2 - a0)
+    want = _independent_section_newton(fa, cs, a0, start, 1e-12, ftol_percent, max_iter)
+    alpha, ok, residual = stand._section_newton(np.array([fa]), cs, a0, math.cos(a0), np.array([start]), 1e-12,
+                                                ftol_percent, max_iter)
+    assert bool(ok[0]) == want[1]
+    # the same iterates up to rounding (pow against cbrt, tan against sin/cos); an iterate still far from the
+    # root (not converged) carries that rounding amplified by the steps from near alpha0 (~1e-12 rad seen)
+    assert alpha[0] == pytest.approx(want[0], abs=1e-12 if want[1] else 1e-9)
+    if want[1]:
+        assert residual[0] == 0.0
+    elif max_iter == 0:
+        assert math.isnan(residual[0])
+    else:
+        # F_a,k / F_a - 1 amplifies the rounding of the angle by about 1.5 / (alpha - alpha0) near the free
+        # angle (a 1e-16 rad difference becomes ~1e-11 at alpha - alpha0 = 1e-5 rad) and by 1.5 tan(alpha)
+        # near 90 deg, where a far start is halved to (3e-9 relative seen): hence rel=1e-6, abs=1e-9
+        assert residual[0] == pytest.approx(want[2], rel=1e-6, abs=1e-9)
+
+
+def test_the_newton_of_section_6_3_converges_from_far_starts_to_the_root():
+    fa, cs, a0 = 2 * KGF, 7792.357 * KGF, math.radians(12.0)
+    starts = a0 + np.array([1e-6, 0.01, 0.3, 0.9, 0.999]) * (math.pi / 2 - a0)
+    alpha, ok, residual = stand._section_newton(np.full(5, fa), cs, a0, math.cos(a0), starts, 1e-12, 1e-10, 50)
+    assert ok.all() and (residual == 0.0).all()
+    for a in alpha:
+        assert _thrust(a, cs, a0) == pytest.approx(fa, rel=1e-10)
+
+
+def test_a_converged_case_has_no_residual_next_to_one_that_did_not_converge():
+    fa, cs, a0 = 2 * KGF, 7792.357 * KGF, math.radians(12.0)
+    root = stand.operating_contact_angle(fa, cs, a0)
+    starts = np.array([root, a0 + 0.999 * (math.pi / 2 - a0)])  # at the root; far above it
+    _, ok, residual = stand._section_newton(np.full(2, fa), cs, a0, math.cos(a0), starts, 1e-12, 1e-10, 2)
+    assert ok.tolist() == [True, False]
+    assert residual[0] == 0.0
+    want = _independent_section_newton(fa, cs, a0, starts[1], 1e-12, 1e-10, 2)
+    assert residual[1] == pytest.approx(want[2], rel=1e-9)
+
+
+def test_the_load_test_of_section_6_3_uses_the_error_in_percent():
+    # a start whose load error is just inside ftol_percent converges on that test, one just outside does not
+    fa, cs, a0 = 2 * KGF, 7792.357 * KGF, math.radians(12.0)
+    start = stand.operating_contact_angle(fa, cs, a0) + 1e-4
+    error = abs(fa / _thrust(start, cs, a0) - 1.0) * 100.0
+    for ftol, converged in ((error * 1.005, True), (error / 1.005, False)):
+        _, ok, _ = stand._section_newton(np.array([fa]), cs, a0, math.cos(a0), np.array([start]), 1e-30, ftol, 1)
+        assert bool(ok[0]) is converged
+
+
+@settings(max_examples=200, deadline=None)
+@given(load=st.floats(0.01, 500.0), a0_deg=st.floats(1.0, 60.0), where=st.floats(1e-6, 1.0 - 1e-6))
+def test_a_newton_step_of_section_6_3_never_falls_below_the_free_angle(load, a0_deg, where):
+    # Why the guard against a step below alpha0 never acts (TESTING.md: its mutants are equivalent): a step
+    # down has |numerator| = 1 - (F_a/F_a,k)^(2/3) < 1, and the denominator exceeds sin a / (cos a0 - cos a)
+    # >= 1 / (a - a0) (sin increases on the interval), so the step is shorter than a - a0.
+    fa, cs, a0 = load * KGF, 7792.357 * KGF, math.radians(a0_deg)
+    alpha = a0 + where * (math.pi / 2 - a0)
+    assert alpha + _increment(fa, _thrust(alpha, cs, a0), alpha, a0) > a0
