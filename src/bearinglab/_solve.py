@@ -1,6 +1,27 @@
-"""Default tolerances and iteration limits of the iterative solvers (one place, STYLE.md section 5)."""
+"""Default tolerances and iteration limits of the iterative solvers (one place, STYLE.md section 5), and
+the choice between a solver's numpy path and its compiled kernel (``engine``)."""
+
+import importlib.util
+
+from .errors import InputError
 
 __all__: list[str] = []
+
+ENGINES = ("auto", "numpy", "compiled")
+
+
+def use_compiled(engine, *, auto):
+    """True if a solver runs its compiled kernel: ``engine`` "compiled" (numba required), or "auto" where
+    ``auto`` (the solver's own condition: a batch large enough, a method the kernel implements) holds and
+    numba is installed. numba is looked up, not imported: a solver that stays on numpy never loads it."""
+    if not isinstance(engine, str) or engine not in ENGINES:
+        raise InputError(f"engine must be one of {list(ENGINES)}, got {engine!r}")
+    if engine == "numpy" or (engine == "auto" and not auto):
+        return False
+    found = importlib.util.find_spec("numba") is not None
+    if engine == "compiled" and not found:
+        raise InputError("engine='compiled' needs numba, which is not installed (use engine='numpy' or 'auto')")
+    return found
 
 # spec 000 section 6.3: Newton on the load-angle relation
 AXIAL_ANGLE_XTOL = 1e-12  # rad, |dx| below which the angle is converged

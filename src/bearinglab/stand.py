@@ -49,7 +49,6 @@ References
 
 from __future__ import annotations
 
-import importlib.util
 import math
 import numbers
 import sys
@@ -457,25 +456,11 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
     return alpha.reshape(shape)[()]
 
 
-_ENGINES = ("auto", "numpy", "compiled")
-
-
 def _compiled_engine(engine, n):
     """True if the compiled kernel solves ``n`` cases: engine "compiled"; or "auto" with numba installed, when
     the kernel is already loaded in this process or the batch has at least ``_solve.AXIAL_ANGLE_COMPILED_CASES``
-    cases (loading numba and the kernel costs about 0.5 s; numba is looked up, not imported, for a small batch)."""
-    if not isinstance(engine, str) or engine not in _ENGINES:
-        raise InputError(f"engine must be one of {list(_ENGINES)}, got {engine!r}")
-    if engine == "numpy":
-        return False
-    if engine == "auto" and _COMPILED_MODULE in sys.modules:
-        return True
-    if engine == "auto" and n < _solve.AXIAL_ANGLE_COMPILED_CASES:
-        return False
-    found = importlib.util.find_spec("numba") is not None
-    if engine == "compiled" and not found:
-        raise InputError("engine='compiled' needs numba, which is not installed (use engine='numpy' or 'auto')")
-    return found
+    cases (loading numba and the kernel costs about 0.5 s)."""
+    return _solve.use_compiled(engine, auto=_COMPILED_MODULE in sys.modules or n >= _solve.AXIAL_ANGLE_COMPILED_CASES)
 
 
 _COMPILED_MODULE = __name__.rpartition(".")[0] + "._stand_compiled"

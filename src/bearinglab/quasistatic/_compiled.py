@@ -416,7 +416,8 @@ def _max_pressure(q, d, f, race_term, ep, a_star, b_star, x):
     return 3.0 * q / (2.0 * math.pi * a * b)
 
 
-_JITTED = ("cheb", "_series_stiffness", "static_start", "_max_pressure", "state", "cheb2", "gauss5_into", "gauss5", "kinematics", "evaluate", "solve_one", "solve_case", "solve_from_rest")
+_JITTED = ("cheb", "cheb2", "gauss5_into", "gauss5", "kinematics", "evaluate", "solve_one", "_series_stiffness",
+           "static_start", "_max_pressure", "state", "solve_case", "solve_from_rest")
 
 
 def _rebind(names, wrap):
@@ -487,6 +488,8 @@ if numba is not None:
     _starts = numba.njit(parallel=True, cache=True)(_starts)
     _starts_serial = numba.njit(cache=True)(_starts_serial)  # prange runs as range
 _PARALLEL_STARTS = 2000  # static starts below which one thread is quicker than waking the others
+
+
 def _threads():
     """Threads the kernel may run on (rows of scratch space it needs)."""
     return 1 if numba is None else numba.config.NUMBA_NUM_THREADS

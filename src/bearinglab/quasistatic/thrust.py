@@ -28,7 +28,6 @@ References
 
 from __future__ import annotations
 
-import importlib.util
 import math
 import warnings
 from typing import NamedTuple
@@ -173,18 +172,11 @@ def _solve_numpy(model, wf, method, *, tol, max_iter, speed_step):
     return v, status, iters, meth, _assemble(model, idx, v, wf, alpha_s, status == _OK)
 
 
-_ENGINES = ("auto", "numpy", "compiled")
-
-
 def _compiled_engine(engine, method):
     """True if the compiled kernel runs the Newton solve: engine "compiled", or "auto" with numba installed."""
-    if engine not in _ENGINES:
-        raise InputError(f"engine must be one of {list(_ENGINES)}, got {engine!r}")
     if engine == "compiled" and method != "newton":
         raise InputError(f"engine='compiled' implements method='newton' only, got method={method!r}")
-    if engine == "compiled" and importlib.util.find_spec("numba") is None:
-        raise InputError("engine='compiled' needs numba, which is not installed (use engine='numpy' or 'auto')")
-    return engine != "numpy" and method == "newton" and importlib.util.find_spec("numba") is not None
+    return _solve.use_compiled(engine, auto=method == "newton")
 
 
 def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity,
