@@ -76,7 +76,7 @@ def baseline(bearing, loads, speeds):
     c, c0, cu = bearing.dynamic_load_rating, bearing.static_load_rating, bearing.fatigue_load_limit
     f0 = float(ratings.static_load_factor(bearing.ball_diameter, bearing.pitch_diameter))
     a1 = float(ratings.reliability_factor(RELIABILITY))
-    dm = bearing.pitch_diameter * 1e3
+    dm = 0.5 * (bearing.bore + bearing.outside_diameter) * 1e3  # ISO 281's d_m = (d + D)/2 of nu1
     out = [one_case(math.hypot(f[0], f[1]), abs(f[2]), w, c, c0, cu, f0, dm, a1)
            for f, w in zip(loads.tolist(), speeds.tolist(), strict=True)]
     return np.array(out).T

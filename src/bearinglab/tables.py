@@ -545,6 +545,9 @@ RATING_LIFE = (
     Column("basic_rating_life_Mrev", "basic_rating_life", "Mrev", 1e-6),
     Column("basic_rating_life_h", "basic_rating_life_duration", "h", 1.0, 3600.0),
     Column("reliability_factor", "reliability_factor", "-"),
+    Column("viscosity_mm2_s", "kinematic_viscosity", "mm^2/s", 1e6),
+    Column("rated_viscosity_mm2_s", "rated_viscosity", "mm^2/s", 1e6),
+    Column("rated_viscosity_diameter_mm", "rated_viscosity_diameter", "mm", 1e3),
     Column("viscosity_ratio", "viscosity_ratio", "-"),
     Column("life_modification_factor", "life_modification_factor", "-"),
     Column("modified_rating_life_Mrev", "modified_rating_life", "Mrev", 1e-6),
@@ -632,7 +635,8 @@ def rating_life(result):
     dict
         Column name -> 1-D array, one row per load case (the ratings repeated): ``dynamic_load_rating_N``,
         ..., ``basic_rating_life_Mrev``, ``basic_rating_life_h``, ..., ``static_safety_factor``. A life that
-        ISO 281 does not define (under a moment) is NaN.
+        ISO 281 does not define (under a moment) is NaN, and so are the lubrication-dependent columns
+        (viscosity, kappa, a_ISO, L_nm, L_nmr) of an analysis without a lubricant (None there).
     """
     return _broadcast({**columns(result, RATINGS), **columns(result, RATING_LIFE)})
 

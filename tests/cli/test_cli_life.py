@@ -14,7 +14,7 @@ from bearinglab.units import RPM
 
 KEYS = ["dynamic_load_rating_N", "static_load_rating_N", "fatigue_load_limit_N", "rating_source",
         "equivalent_dynamic_load_N", "basic_rating_life_Mrev", "basic_rating_life_h", "reliability_factor",
-        "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev", "modified_rating_life_h",
+        "viscosity_mm2_s", "rated_viscosity_mm2_s", "rated_viscosity_diameter_mm", "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev", "modified_rating_life_h",
         "reference_rating_life_Mrev", "modified_reference_rating_life_Mrev", "static_safety_factor", "inputs", "warnings"]
 
 #: the MASTA deep-groove bearing of tests/data/masta_iso16281.csv (E = 210 GPa, nu = 0.3, C = 23.4 kN)
@@ -109,8 +109,13 @@ def test_oil_grade_and_temperature(capsys):
                          "--viscosity-100", "8.7 cSt", "--temperature", "70 degC", "--json")
     assert code == 0, err
     nu = ratings.kinematic_viscosity(343.15, iso_vg=68, viscosity_100=8.7e-6)
-    kappa = nu / ratings.rated_viscosity(3000 * RPM, catalog.get("6205-2RS").pitch_diameter)
-    assert json.loads(out)["viscosity_ratio"] == pytest.approx(kappa, rel=1e-12)
+    # nu1 of ISO 281 eq. (15) at d_m = (d + D)/2 = (25 + 52)/2 = 38.5 mm, by hand (issue 20: not Dpw 39.04)
+    nu1 = 4500.0 * 3000.0**-0.5 * 38.5**-0.5 * 1e-6
+    doc = json.loads(out)
+    assert doc["viscosity_ratio"] == pytest.approx(nu / nu1, rel=1e-12)
+    assert doc["viscosity_mm2_s"] == pytest.approx(nu * 1e6, rel=1e-12)
+    assert doc["rated_viscosity_mm2_s"] == pytest.approx(nu1 * 1e6, rel=1e-12)
+    assert doc["rated_viscosity_diameter_mm"] == pytest.approx(38.5, rel=1e-12)
 
 
 def test_duty_cycle_is_palmgren_miner(capsys, tmp_path):
@@ -331,3 +336,85 @@ def test_the_test_stand_bearing_gets_a_life_under_a_radial_load(capsys):
     assert doc["basic_rating_life_Mrev"] == pytest.approx((doc["dynamic_load_rating_N"] / (2 * 9.80665)) ** 3,
                                                           rel=1e-12)
     assert doc["static_safety_factor"] == pytest.approx(doc["static_load_rating_N"] / (2 * 9.80665), rel=1e-12)
+
+
+# ----------------------------------------------------------------------------- issue 20: no lubricant, oil by grade
+LUBRICATED = ("viscosity_mm2_s", "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev",
+              "modified_rating_life_h", "modified_reference_rating_life_Mrev")
+
+
+def test_life_without_lubricant_gives_the_basic_lives(capsys):
+    # the issue's command: P, L10, L10h and s0 (and L10r where the geometry allows); the rest null
+    code, out, err = run(capsys, "life", "--bearing", "6205-2RS", "--radial-load", "2 kN", "--speed", "3000 rpm",
+                         "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert list(doc) == KEYS
+    for key in LUBRICATED:
+        assert doc[key] is None, key
+    # by hand: P = Fr = 2000 N (pure radial), L10 = (C/P)^3 = (14800/2000)^3 Mrev, at 3000 rpm; s0 = C0/P0
+    assert doc["equivalent_dynamic_load_N"] == 2000.0
+    assert doc["basic_rating_life_Mrev"] == pytest.approx(7.4**3, rel=1e-12)
+    assert doc["basic_rating_life_h"] == pytest.approx(7.4**3 * 1e6 / 3000 / 60, rel=1e-12)
+    assert doc["static_safety_factor"] == pytest.approx(7800 / 2000, rel=1e-12)
+    assert any(w.startswith("lubricant: none given") for w in doc["warnings"])
+    assert not any(w.startswith("contamination:") for w in doc["warnings"])  # e_C matters only with a_ISO
+
+
+def test_life_without_lubricant_reference_life_where_the_geometry_allows(capsys, masta):
+    code, out, err = run(capsys, "life", "--catalog", masta, "-b", "MASTA-DG", "-R", "1 kN", "--speed",
+                         "1000 rpm", "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["reference_rating_life_Mrev"] > 0 and doc["modified_reference_rating_life_Mrev"] is None
+
+
+def test_life_table_says_needs_viscosity(capsys, monkeypatch):
+    monkeypatch.setenv("COLUMNS", "80")
+    code, out, err = run(capsys, "life", "-b", "6205-2RS", "-R", "2 kN", "-n", "3000 rpm")
+    assert code == 0, err
+    rows = {line.split("│")[1].strip(): line.split("│")[2].strip() for line in out.splitlines()
+            if line.count("│") == 3}
+    needs = [label for label, value in rows.items() if value == "needs viscosity"]
+    assert len(needs) == len(LUBRICATED), rows
+    assert rows["basic rating life L10 [10^6 rev]"] == "405.224"
+
+
+def test_oil_grade_and_temperature_are_enough(capsys):
+    code, out, err = run(capsys, "life", "-b", "6205-2RS", "-R", "2 kN", "-n", "3000 rpm", "--oil", "VG68",
+                         "--temperature", "70 degC", "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    nu = ratings.kinematic_viscosity(343.15, iso_vg=68, viscosity_index=ratings.DEFAULT_VISCOSITY_INDEX)
+    assert doc["viscosity_mm2_s"] == pytest.approx(nu * 1e6, rel=1e-12)
+    assert doc["inputs"]["viscosity_index"] == 95 and doc["inputs"]["viscosity_index_assumed"] is True
+    assert any(w.startswith("viscosity: VG68 at 70 degC, VI 95 (assumed") for w in doc["warnings"])
+    for key in LUBRICATED[:-1]:  # L_nmr needs L10r, which needs the conformities this catalog entry lacks
+        assert doc[key] is not None, key
+    # a higher VI keeps the oil thicker at 70 degC
+    code, out, err = run(capsys, "life", "-b", "6205-2RS", "-R", "2 kN", "-n", "3000 rpm", "--oil", "VG68",
+                         "--temperature", "70 degC", "--viscosity-index", "140", "--json")
+    assert code == 0, err
+    assert json.loads(out)["viscosity_mm2_s"] > doc["viscosity_mm2_s"]
+
+
+@pytest.mark.parametrize("args, start", [
+    (["--oil", "VG68", "--temperature", "70 degC", "--viscosity-index", "95", "--viscosity-100", "8.7 cSt"],
+     "viscosity-index: give --viscosity-index or --viscosity-100, not both"),
+    (["--viscosity-index", "95"], "oil: --viscosity-index also needs --oil"),
+    (["--oil", "VG68"], "temperature: --oil also needs --temperature"),
+])
+def test_oil_option_conflicts_are_exit_2(capsys, args, start):
+    code, _, err = run(capsys, "life", "-b", "6205-2RS", "-R", "2 kN", "-n", "3000 rpm", *args)
+    assert code == 2 and _one_line_error(err).startswith(f"bearinglab: error: {start}")
+
+
+def test_duty_cycle_without_lubricant(capsys, tmp_path):
+    f = tmp_path / "duty.toml"
+    f.write_text('[[step]]\nfx = "1 kN"\nspeed = "1000 rpm"\ntime = 0.5\n\n'
+                 '[[step]]\nfx = "2 kN"\nspeed = "3000 rpm"\ntime = 0.5\n', encoding="utf-8")
+    code, out, err = run(capsys, "life", "-b", "6205-2RS", "--duty-cycle", str(f), "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["modified_rating_life_Mrev"] is None and doc["basic_rating_life_Mrev"] > 0
+    assert all(s["viscosity_ratio"] is None for s in doc["steps"])

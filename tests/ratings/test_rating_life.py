@@ -113,8 +113,8 @@ def test_lubricant_from_oil_data():
     assert a.viscosity_ratio == b.viscosity_ratio
     with pytest.raises(InputError, match="not both"):
         ratings.rating_life(B6205, [1000.0, 0, 0, 0, 0], N, kinematic_viscosity=nu, iso_vg=68)
-    with pytest.raises(InputError, match="give kinematic_viscosity"):
-        ratings.rating_life(B6205, [1000.0, 0, 0, 0, 0], N)
+    with pytest.raises(InputError, match="give kinematic_viscosity, or temperature"):  # an oil without temperature
+        ratings.rating_life(B6205, [1000.0, 0, 0, 0, 0], N, iso_vg=68)
 
 
 def test_contamination_class_and_bad_inputs():
@@ -163,3 +163,55 @@ def test_benchmark_paths_agree_on_a_small_input(load_bench):
     bearing = catalog.get("6205-2RS")
     loads, speeds = bench.cases(200, seed=3)
     assert_allclose(bench.batched(bearing, loads, speeds), bench.baseline(bearing, loads, speeds), rtol=1e-12)
+
+
+# ----------------------------------------------------------------------------- issue 20: no lubricant; nu1 at d_m
+B6205_DM = BallBearing(9, 7.94e-3, 39.04e-3, 0.52, 0.53, contact_angle=0.0, type="radial", designation="6205",
+                       bore=25e-3, outside_diameter=52e-3)
+
+
+def test_without_lubricant_the_lubrication_results_are_none():
+    loads = [[2000.0, 0, 0, 0, 0], [1000.0, 0, 300.0, 0, 0]]
+    bare = _quiet(B6205_DM, loads, N)
+    oiled = _quiet(B6205_DM, loads, N, kinematic_viscosity=20e-6)
+    for name in ("viscosity_ratio", "life_modification_factor", "modified_rating_life",
+                 "modified_rating_life_duration", "modified_reference_rating_life", "kinematic_viscosity"):
+        assert getattr(bare, name) is None, name
+        assert getattr(oiled, name) is not None, name
+    # what does not need the lubricant is the same
+    for name in ("equivalent_dynamic_load", "basic_rating_life", "basic_rating_life_duration",
+                 "reference_rating_life", "static_safety_factor", "rated_viscosity"):
+        np.testing.assert_array_equal(getattr(bare, name), getattr(oiled, name), err_msg=name)
+    assert np.all(np.isfinite(bare.reference_rating_life)) and np.all(bare.basic_rating_life > 0)
+    # L10 = (C/P)^3 10^6 for the pure radial case, by hand
+    assert bare.basic_rating_life[0] == pytest.approx((bare.dynamic_load_rating / 2000.0) ** 3 * 1e6, rel=1e-14)
+
+
+def test_duty_cycle_without_lubricant():
+    with pytest.warns(ratings.RatingWarning, match="no load distribution"):
+        d = ratings.duty_cycle_life(B6205_DM, [[1000.0, 0, 0, 0, 0], [2000.0, 0, 0, 0, 0]], [300.0, 300.0],
+                                    [0.5, 0.5], load_distribution=False)
+    assert d.modified_rating_life is None and d.modified_reference_rating_life is None
+    assert d.basic_rating_life > 0
+
+
+def test_rated_viscosity_uses_the_mean_diameter_where_bore_and_outside_diameter_are_known():
+    # ISO 281 eq. (15) (n >= 1000 rpm): nu1 = 4500 n^-0.5 d_m^-0.5 mm^2/s, d_m = (25 + 52)/2 = 38.5 mm
+    nu1 = 4500.0 * 3000.0**-0.5 * 38.5**-0.5 * 1e-6
+    r = _quiet(B6205_DM, [1000.0, 0, 0, 0, 0], N, kinematic_viscosity=20e-6, load_distribution=False)
+    assert r.rated_viscosity == pytest.approx(nu1, rel=1e-13)
+    assert r.viscosity_ratio == pytest.approx(20e-6 / nu1, rel=1e-13)
+    assert r.rated_viscosity_diameter == pytest.approx(38.5e-3, rel=1e-15)
+    assert r.rated_viscosity_diameter_source == "mean diameter (d + D)/2"
+    # the pitch diameter (39.04 mm), used before issue 20, made kappa sqrt(39.04/38.5) - 1 = 0.70 % high
+    p = _quiet(B6205, [1000.0, 0, 0, 0, 0], N, kinematic_viscosity=20e-6, load_distribution=False)
+    assert p.rated_viscosity_diameter_source == "pitch diameter"
+    assert p.viscosity_ratio / r.viscosity_ratio == pytest.approx(math.sqrt(39.04 / 38.5), rel=1e-13)
+    assert p.viscosity_ratio / r.viscosity_ratio - 1 == pytest.approx(0.0070, abs=5e-5)
+
+
+def test_oil_grade_alone_in_the_api():
+    # kinematic_viscosity=None with temperature and iso_vg: nu from VI 95 (DEFAULT_VISCOSITY_INDEX)
+    r = _quiet(B6205_DM, [1000.0, 0, 0, 0, 0], N, temperature=343.15, iso_vg=68, load_distribution=False)
+    nu = ratings.kinematic_viscosity(343.15, iso_vg=68, viscosity_index=95.0)
+    assert r.kinematic_viscosity == pytest.approx(nu, rel=1e-14)

@@ -41,6 +41,7 @@ INLINE = {
     "contact_angle": "0 deg",
 }
 FRICTION = {"bearing": "101", "radial_load": "10 N", "axial_load": "5 N", "speed": "3000 rpm"}
+LIFE = {"bearing": "6205-2RS", "radial_load": "2 kN", "speed": "3000 rpm"}
 
 
 @pytest.mark.parametrize(
@@ -60,6 +61,9 @@ FRICTION = {"bearing": "101", "radial_load": "10 N", "axial_load": "5 N", "speed
         ("frequencies", ["frequencies"], {**CWRU, "harmonics": "2"}, {"mask": "true"}),
         ("frequencies", ["frequencies"], {**INLINE, "speed": "1797 rpm"}, {}),
         ("friction", ["friction", "torque"], FRICTION, {}),
+        # issue 20: life without a lubricant, and with an oil grade and temperature only
+        ("life", ["life"], LIFE, {}),
+        ("life", ["life"], {**LIFE, "oil": "VG68", "temperature": "70 degC"}, {}),
     ],
 )
 def test_api_answers_what_the_cli_prints(client, capsys, endpoint, words, query, flags):
@@ -194,9 +198,10 @@ def _spelled(endpoint):
         # a library message that names options inside the sentence
         (
             "life",
-            {"bearing": "6205-2RS", "radial_load": "1 kN", "speed": "1000 rpm"},
-            "viscosity",
-            "viscosity: give viscosity (e.g. '20 cSt'), or oil VG68 with viscosity_100 and temperature",
+            {"bearing": "6205-2RS", "radial_load": "1 kN", "speed": "1000 rpm", "oil": "VG68",
+             "viscosity_index": "95", "viscosity_100": "8 cSt", "temperature": "70 degC"},
+            "viscosity_index",
+            "viscosity_index: give viscosity_index or viscosity_100, not both",
         ),
     ],
 )
@@ -308,3 +313,14 @@ def test_page_shows_a_bad_field_message_next_to_it(client, field, value, words):
 def test_page_without_a_bearing_names_the_bearing_field(client):
     r = client.get("/", params={"bearing": "", "axial_load": "20 kN", "speed": "10000 rpm"})
     assert 'id="error-bearing"' in r.text and "Traceback" not in r.text
+
+
+def test_api_life_without_lubricant(client):
+    # issue 20: the basic lives need no lubricant; a_ISO, L_nm and L_nmr are null
+    r = client.get("/api/life", params=LIFE)
+    assert r.status_code == 200, r.text
+    doc = r.json()
+    assert doc["basic_rating_life_Mrev"] == pytest.approx((14.8 / 2.0) ** 3, rel=1e-12)
+    for key in ("viscosity_mm2_s", "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev",
+                "modified_reference_rating_life_Mrev"):
+        assert doc[key] is None, key

@@ -19,7 +19,6 @@ Commands
 COMMANDS   the ``life`` command, by name (the application adds it)
 """
 
-import re
 import tomllib
 import warnings
 from pathlib import Path
@@ -46,16 +45,21 @@ from ._common import (
     JsonFlag,
     MxOpt,
     MyOpt,
+    OilOpt,
     OuterConformity,
     OuterRadius,
     PitchDiameter,
     RadialLoadOpt,
+    TemperatureOpt,
+    Viscosity100Opt,
+    ViscosityIndexOpt,
+    ViscosityOpt,
     check_input,
     emit_json,
     five_loads,
     inputs_echo,
+    lubricant_viscosity,
     parse_speed,
-    parse_viscosity,
     print_warnings,
     resolve_bearing,
     table,
@@ -69,42 +73,8 @@ _CONTAMINATION_CLASSES = ("extreme_cleanliness", "high_cleanliness", "normal_cle
                           "typical_contamination", "severe_contamination", "very_severe_contamination")
 _CONTAMINATION = {k.split("_")[0] if k != "very_severe_contamination" else "very-severe": k
                   for k in _CONTAMINATION_CLASSES}
-_LUBRICANT = "Lubricant and cleanliness"
-_ZERO_C = 273.15  # K at 0 degC
-_TEMPERATURE = re.compile(r"^\s*([-+]?\d+(?:\.\d*)?(?:[eE][-+]?\d+)?)\s*(°C|degC|C|K|°F|degF|F)\s*$")
-
-
-def _temperature(text):
-    """A temperature '70 degC', '343 K' or '158 degF' in K, above absolute zero."""
-    m = _TEMPERATURE.match(text or "")
-    if not m:
-        raise InputError(f"temperature must be a number with degC, K or degF (e.g. '70 degC'), got {text!r}")
-    v, unit = float(m.group(1)), m.group(2).lstrip("°").removeprefix("deg")
-    t = {"C": v + _ZERO_C, "K": v, "F": (v - 32.0) / 1.8 + _ZERO_C}[unit]
-    if not t > 0:
-        raise InputError(f"temperature must be above absolute zero (0 K = -273.15 degC), got {text!r}")
-    return t
-
-
-def _viscosity(viscosity, oil, viscosity_100, temperature):
-    """kinematic_viscosity or the oil options of :func:`bearinglab.ratings.rating_life`."""
-    from .. import ratings
-    if viscosity is not None:
-        if oil is not None or temperature is not None or viscosity_100 is not None:  # none is ignored
-            raise InputError("viscosity: give --viscosity, or --oil with --viscosity-100 and --temperature, not both")
-        return {"kinematic_viscosity": parse_viscosity(viscosity, "viscosity")}
-    if oil is None or temperature is None:
-        raise InputError("viscosity: give --viscosity (e.g. '20 cSt'), or --oil VG68 with --viscosity-100 and "
-                         "--temperature")
-    m = re.fullmatch(r"(?:ISO\s*)?VG\s*(\d+)", oil.strip(), flags=re.IGNORECASE)
-    if not m or int(m.group(1)) not in ratings.ISO_VG_GRADES:
-        raise InputError(f"oil must be an ISO VG grade (VG{ratings.ISO_VG_GRADES[0]} ... "
-                         f"VG{ratings.ISO_VG_GRADES[-1]}), got {oil!r}")
-    if viscosity_100 is None:
-        raise InputError("viscosity-100: the oil's viscosity at 100 degC (data sheet) is needed with --oil, "
-                         "e.g. '8.7 cSt'")
-    return {"iso_vg": int(m.group(1)), "temperature": _temperature(temperature),
-            "viscosity_100": parse_viscosity(viscosity_100, "viscosity-100")}
+_LUBRICANT = "Lubricant"  # the panel of the shared oil options (cli._common), with the cleanliness here
+_NEEDS_VISCOSITY = "needs viscosity"  # the table's cell of a result that needs the lubricant
 
 
 # Said whenever the user gave no cleanliness: e_C = 1 is the laboratory's extreme cleanliness of ISO 281
@@ -165,10 +135,8 @@ def life(
     fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
     radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
     speed: Annotated[str | None, typer.Option("--speed", "-n", help="Inner-ring speed, e.g. '3000 rpm'.")] = None,
-    viscosity: Annotated[str | None, typer.Option("--viscosity", help="Operating viscosity, e.g. '20 cSt'.", rich_help_panel=_LUBRICANT)] = None,
-    oil: Annotated[str | None, typer.Option("--oil", help="ISO VG grade, e.g. VG68 (with --viscosity-100 and --temperature).", rich_help_panel=_LUBRICANT)] = None,
-    viscosity_100: Annotated[str | None, typer.Option("--viscosity-100", help="The oil's viscosity at 100 degC, e.g. '8.7 cSt'.", rich_help_panel=_LUBRICANT)] = None,
-    temperature: Annotated[str | None, typer.Option("--temperature", help="Operating temperature, e.g. '70 degC'.", rich_help_panel=_LUBRICANT)] = None,
+    viscosity: ViscosityOpt = None, oil: OilOpt = None, temperature: TemperatureOpt = None,
+    viscosity_index: ViscosityIndexOpt = None, viscosity_100: Viscosity100Opt = None,
     contamination_factor: Annotated[float | None, typer.Option("--contamination-factor", help="e_C in [0, 1] (default 1).", rich_help_panel=_LUBRICANT)] = None,
     contamination: Annotated[str | None, typer.Option("--contamination", help="Cleanliness of ISO 281 table 13: " + " | ".join(_CONTAMINATION) + ".", rich_help_panel=_LUBRICANT)] = None,
     reliability: Annotated[float, typer.Option("--reliability", help="Reliability in percent, 90 to 99.95.")] = 90.0,
@@ -180,20 +148,26 @@ def life(
     contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
     json_out: JsonFlag = False,
 ):
-    """Rating life (ISO 281, ISO/TS 16281): C, C0, Cu, P, L10, a_ISO, L_nm, L10r, L_nmr, s0; duty cycles."""
+    """Rating life (ISO 281, ISO/TS 16281): C, C0, Cu, P, L10, a_ISO, L_nm, L10r, L_nmr, s0; duty cycles.
+
+    Without a lubricant (--viscosity, or --oil with --temperature) P, L10, L10r and s0 are given, and
+    a_ISO, L_nm and L_nmr are null ("needs viscosity").
+    """
     from .. import ratings, tables
     from ..units import RPM
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)
-    options = {**_viscosity(viscosity, oil, viscosity_100, temperature),
+    lube = lubricant_viscosity(viscosity, oil, temperature, viscosity_index, viscosity_100)
+    options = {"kinematic_viscosity": lube.viscosity,
                "contamination": _cleanliness(contamination_factor, contamination),
                "reliability": _reliability(reliability)}
-    assumed = [_CLEANLINESS_ASSUMED] if contamination_factor is None and contamination is None else []
+    assumed = _assumed(lube, contamination_factor is None and contamination is None)
     if duty_cycle is not None:
         if any(x is not None for x in (fx, fy, fz, mx, my, radial_load, axial_load, speed)):
             raise InputError("duty-cycle: the loads and speeds are in the file; give no --fx ... --speed")
-        _life_of_duty_cycle(b, *_duty_cycle(check_input(duty_cycle, "duty-cycle"), b), options, json_out, assumed)
+        _life_of_duty_cycle(b, *_duty_cycle(check_input(duty_cycle, "duty-cycle"), b), options, lube, json_out,
+                            assumed)
         return
     if speed is None:
         raise InputError("speed: give the inner-ring speed, e.g. --speed '3000 rpm'")
@@ -204,13 +178,14 @@ def life(
         warnings.simplefilter("ignore")  # the analysis returns its warnings
         r = ratings.rating_life(b, loads, n, **options, load_distribution=dist)
     doc = {**tables.rows(tables.rating_life(r))[0], "rating_source": r.rating_source,
-           "inputs": _echo(b, options, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
+           "inputs": _echo(b, options, lube, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
                            my_Nmm=loads[4] * 1e3, speed_rpm=n / RPM),
-           "warnings": assumed + _notes(b, loads, r.warnings, dist) + _unbounded(r)}
+           "warnings": assumed + _diameter_note(r) + _notes(b, loads, r.warnings, dist) + _unbounded(r)}
     doc = {k: doc[k] for k in _KEYS}
     if json_out:
         emit_json(doc)
         return
+    doc["lubricated"] = lube.viscosity is not None
     _print(f"Rating life of {b.designation} at {doc['inputs']['speed_rpm']:g} rpm", doc)
 
 
@@ -258,8 +233,8 @@ def _unbounded(result):
     DutyCycleLife (whose combined lives are infinite only when every step is unloaded)."""
     import numpy as np
 
-    names = [symbol for field, symbol in _UNBOUNDED.items()
-             if np.any(np.isposinf(getattr(result, field, np.nan)))]
+    names = [symbol for field, symbol in _UNBOUNDED.items()  # None: not computed (no lubricant)
+             if getattr(result, field, None) is not None and np.any(np.isposinf(getattr(result, field)))]
     if not names:
         return []
     where = " at every step" if hasattr(result, "steps") else ""
@@ -290,26 +265,39 @@ def _unavailable(b, loads, dist):
     return [f"ISO/TS 16281 reference lives not available{where}: {why}"]
 
 
-def _echo(b, options, **quantities):
+def _echo(b, options, lube, **quantities):
     """The inputs as used (:func:`inputs_echo`): the bearing, the loads and speed, lubricant and cleanliness."""
-    lube = {k: v for k, v in options.items() if k not in ("contamination", "reliability")}
-    if "kinematic_viscosity" in lube:
-        lube = {"viscosity_cSt": lube["kinematic_viscosity"] * 1e6}
-    else:
-        lube = {"oil": f"VG{lube['iso_vg']}", "temperature_degC": lube["temperature"] - _ZERO_C,
-                "viscosity_100_cSt": lube["viscosity_100"] * 1e6}
     c = options["contamination"]
-    return inputs_echo(b, **quantities, **lube, contamination=c, reliability_percent=options["reliability"] * 100)
+    return inputs_echo(b, **quantities, **lube.inputs, contamination=c,
+                       reliability_percent=options["reliability"] * 100)
+
+
+def _diameter_note(result):
+    """Say so where nu1 is not at ISO 281's d_m = (d + D)/2 (bore or outside diameter unknown)."""
+    if result.rated_viscosity_diameter_source == "pitch diameter":
+        return [("rated viscosity nu1: bore and outside diameter not known, so nu1 is taken at the pitch "
+                 "diameter instead of ISO 281's mean diameter d_m = (d + D)/2")]
+    return []
+
+
+def _assumed(lube, no_cleanliness):
+    """What was assumed for want of an input: no lubricant (the modified lives are not computed), the oil's
+    viscosity index, the cleanliness (only where a lubricant makes it matter)."""
+    if lube.viscosity is None:
+        return [("lubricant: none given, so a_ISO, L_nm and L_nmr are not computed (null in --json); give "
+                 "--viscosity, or --oil (e.g. VG68) with --temperature")]
+    notes = [f"viscosity: {lube.description}"] if lube.inputs.get("viscosity_index_assumed") else []
+    return notes + ([_CLEANLINESS_ASSUMED] if no_cleanliness else [])
 
 
 _KEYS = ("dynamic_load_rating_N", "static_load_rating_N", "fatigue_load_limit_N", "rating_source",
          "equivalent_dynamic_load_N", "basic_rating_life_Mrev", "basic_rating_life_h", "reliability_factor",
-         "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev", "modified_rating_life_h",
+         "viscosity_mm2_s", "rated_viscosity_mm2_s", "rated_viscosity_diameter_mm", "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev", "modified_rating_life_h",
          "reference_rating_life_Mrev", "modified_reference_rating_life_Mrev", "static_safety_factor", "inputs",
          "warnings")
 
 
-def _life_of_duty_cycle(b, loads, speeds, times, options, json_out, assumed=()):
+def _life_of_duty_cycle(b, loads, speeds, times, options, lube, json_out, assumed=()):
     import numpy as np
 
     from .. import ratings, tables
@@ -320,21 +308,27 @@ def _life_of_duty_cycle(b, loads, speeds, times, options, json_out, assumed=()):
         d = ratings.duty_cycle_life(b, loads, speeds, times, **options, load_distribution=dist)
     steps = tables.rows(tables.rating_life(d.steps))
     hours = 2 * np.pi / d.mean_speed / 3600.0
+
+    def scaled(life, factor):  # None: not computed (no lubricant)
+        return None if life is None else life * factor
+
     doc = {**tables.ratings(d.steps), "reliability_factor": d.steps.reliability_factor,
            "basic_rating_life_Mrev": d.basic_rating_life * 1e-6, "basic_rating_life_h": d.basic_rating_life * hours,
-           "modified_rating_life_Mrev": d.modified_rating_life * 1e-6,
-           "modified_rating_life_h": d.modified_rating_life * hours,
+           "modified_rating_life_Mrev": scaled(d.modified_rating_life, 1e-6),
+           "modified_rating_life_h": scaled(d.modified_rating_life, hours),
            "reference_rating_life_Mrev": d.reference_rating_life * 1e-6,
-           "modified_reference_rating_life_Mrev": d.modified_reference_rating_life * 1e-6,
+           "modified_reference_rating_life_Mrev": scaled(d.modified_reference_rating_life, 1e-6),
            "mean_speed_rpm": d.mean_speed / RPM, "steps": steps,
-           "inputs": _echo(b, options, steps=[{"fx_N": f[0], "fy_N": f[1], "fz_N": f[2], "mx_Nmm": f[3] * 1e3,
+           "inputs": _echo(b, options, lube, steps=[{"fx_N": f[0], "fy_N": f[1], "fz_N": f[2], "mx_Nmm": f[3] * 1e3,
                                                 "my_Nmm": f[4] * 1e3, "speed_rpm": w / RPM, "time": t}
                                                for f, w, t in zip(loads.tolist(), speeds.tolist(), times.tolist())]),
-           "warnings": [*assumed, *_notes(b, loads, d.steps.warnings, dist), *_unbounded(d)]}
+           "warnings": [*assumed, *_diameter_note(d.steps), *_notes(b, loads, d.steps.warnings, dist),
+                        *_unbounded(d)]}
     doc = tables.json_value(doc)
     if json_out:
         emit_json(doc)
         return
+    doc["lubricated"] = lube.viscosity is not None
     _print(f"Duty cycle of {b.designation}: {len(steps)} steps, mean speed {doc['mean_speed_rpm']:g} rpm",
            {k: v for k, v in doc.items() if k not in ("steps", "inputs")})
 
@@ -348,6 +342,9 @@ _LABELS = {
     "basic_rating_life_Mrev": "basic rating life L10 [10^6 rev]",
     "basic_rating_life_h": "basic rating life L10h [h]",
     "reliability_factor": "reliability factor a1 [-]",
+    "viscosity_mm2_s": "operating viscosity nu [mm^2/s]",
+    "rated_viscosity_mm2_s": "rated viscosity nu1 [mm^2/s]",
+    "rated_viscosity_diameter_mm": "diameter d_m of nu1 [mm]",
     "viscosity_ratio": "viscosity ratio κ [-]",
     "life_modification_factor": "life modification factor a_ISO [-]",
     "modified_rating_life_Mrev": "modified rating life L_nm [10^6 rev]",
@@ -359,13 +356,20 @@ _LABELS = {
 }
 
 
+# the results that need the lubricant: shown as "needs viscosity" without one
+_LUBRICATED = ("viscosity_mm2_s", "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev",
+               "modified_rating_life_h", "modified_reference_rating_life_Mrev")
+
+
 def _print(title, doc):
-    def fmt(v):
+    def fmt(k, v):
+        if v is None and k in _LUBRICATED and not doc["lubricated"]:
+            return _NEEDS_VISCOSITY
         return "— (see the warnings)" if v is None else (f"{v:.6g}" if isinstance(v, float) else str(v))
 
     src = doc["rating_source"]
-    rows = [[_LABELS.get(k, k), fmt(v) + (f"  ({src[k[:-2]]})" if k[:-2] in src else "")]
-            for k, v in doc.items() if k not in ("rating_source", "warnings", "inputs", "steps")]
+    rows = [[_LABELS.get(k, k), fmt(k, v) + (f"  ({src[k[:-2]]})" if k[:-2] in src else "")]
+            for k, v in doc.items() if k not in ("rating_source", "warnings", "inputs", "steps", "lubricated")]
     table(title, ["quantity", "value"], rows, caption="--json for one JSON document (keys in the units shown)")
     print_warnings(doc["warnings"])
 

@@ -147,22 +147,31 @@ class RatingLife(NamedTuple):
     """L10 at the given speed. [s]"""
     reliability_factor: float
     """a1. [-]"""
-    viscosity_ratio: np.ndarray
-    """kappa = nu / nu1 (not clamped). [-]"""
-    life_modification_factor: np.ndarray
-    """a_ISO. [-]"""
-    modified_rating_life: np.ndarray
-    """L_nm = a1 a_ISO L10. [revolutions]"""
-    modified_rating_life_duration: np.ndarray
-    """L_nm at the given speed. [s]"""
+    viscosity_ratio: np.ndarray | None
+    """kappa = nu / nu1 (not clamped); None without a lubricant. [-]"""
+    life_modification_factor: np.ndarray | None
+    """a_ISO; None without a lubricant. [-]"""
+    modified_rating_life: np.ndarray | None
+    """L_nm = a1 a_ISO L10; None without a lubricant. [revolutions]"""
+    modified_rating_life_duration: np.ndarray | None
+    """L_nm at the given speed; None without a lubricant. [s]"""
     reference_rating_life: np.ndarray
     """L10r of ISO/TS 16281 (NaN without a load distribution). [revolutions]"""
-    modified_reference_rating_life: np.ndarray
-    """L_nmr = a1 a_ISO(P_ref) L10r, P_ref = C L10r^(-1/3). [revolutions]"""
+    modified_reference_rating_life: np.ndarray | None
+    """L_nmr = a1 a_ISO(P_ref) L10r, P_ref = C L10r^(-1/3); None without a lubricant. [revolutions]"""
     static_safety_factor: np.ndarray
     """s0 = C0 / P0 (NaN where P0 is not defined). [-]"""
     warnings: tuple
     """The warnings raised during the analysis, as messages."""
+    kinematic_viscosity: np.ndarray | None = None
+    """nu at the operating temperature, as used; None without a lubricant. [m^2/s]"""
+    rated_viscosity: np.ndarray | None = None
+    """nu1 of ISO 281 eqs. (14)-(15) at the speed and :attr:`rated_viscosity_diameter`. [m^2/s]"""
+    rated_viscosity_diameter: float | None = None
+    """The diameter nu1 is evaluated at: d_m = (d + D)/2 where bore and outside diameter are known, else
+    the pitch diameter (:attr:`rated_viscosity_diameter_source` says which). [m]"""
+    rated_viscosity_diameter_source: str = ""
+    """``"mean diameter (d + D)/2"`` or ``"pitch diameter"``."""
 
 
 def _split_loads(loads):
@@ -177,12 +186,16 @@ def _split_loads(loads):
 
 
 def _viscosity(kinematic_viscosity, lubricant):
+    """nu [m^2/s] from kinematic_viscosity or the oil (**lubricant); None when neither is given."""
     if kinematic_viscosity is not None:
         if lubricant:
             raise InputError(f"give kinematic_viscosity or the oil ({', '.join(lubricant)}), not both")
         return check_positive("kinematic_viscosity", kinematic_viscosity, "m^2/s")
+    if not lubricant:
+        return None
     if "temperature" not in lubricant:
-        raise InputError("give kinematic_viscosity, or temperature with iso_vg / viscosity_40 and viscosity_100")
+        raise InputError("give kinematic_viscosity, or temperature with iso_vg / viscosity_40 (and viscosity_100 "
+                         "or viscosity_index)")
     t = lubricant.pop("temperature")
     return lubrication.kinematic_viscosity(t, **lubricant)
 
@@ -288,7 +301,9 @@ def rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None, contam
     shaft_speed : array_like
         Speed of the rotating ring, > 0, broadcast against the load cases. [rad/s]
     kinematic_viscosity : array_like, optional
-        nu at the operating temperature (or give the oil through ``lubricant``). [m^2/s]
+        nu at the operating temperature (or give the oil through ``lubricant``). Without either, the
+        lubrication-dependent results (kappa, a_ISO, L_nm and its duration, L_nmr) are None, not NaN:
+        they are not computed, while P, L10, L10r and s0 are. [m^2/s]
     contamination : float or str
         e_C in [0, 1], or a cleanliness class of ISO 281 table 13 (mid-range value). [-]
     reliability : float
@@ -307,8 +322,8 @@ def rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None, contam
     fatigue_method : {"precise", "simplified"}
         Cu from the geometry or C0/22 (when the catalog has no Cu).
     **lubricant : optional
-        ``temperature`` [K] with ``iso_vg`` or ``viscosity_40`` [m^2/s], and ``viscosity_100`` [m^2/s]
-        (:func:`.lubrication.kinematic_viscosity`).
+        ``temperature`` [K] with ``iso_vg`` or ``viscosity_40`` [m^2/s], and ``viscosity_100`` [m^2/s] or
+        ``viscosity_index`` [-] (:func:`.lubrication.kinematic_viscosity`; neither: VI 95).
 
     Returns
     -------
@@ -317,7 +332,8 @@ def rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None, contam
     Notes
     -----
     ISO 281:2007: :math:`L_{10} = (C/P)^3` (eq. (15)), :math:`L_{nm} = a_1 a_{ISO} L_{10}` (eq. (16));
-    kappa with nu1 of eqs. (14)-(15) at the pitch diameter ((d + D)/2 when the ball set is unknown).
+    kappa with nu1 of eqs. (14)-(15) at the bearing's mean diameter d_m = (d + D)/2 (ISO 281 fig. 7, and
+    SKF's d_m), or at the pitch diameter where bore and outside diameter are not known.
     ISO/TS 16281:2008: L10r from the ball loads (the contact ratings at the nominal angle, 0 for a
     deep-groove bearing whatever its clearance), and the modified reference life with a_ISO evaluated
     at the equivalent reference load :math:`P_{ref} = C L_{10r}^{-1/3}` (L10r in 10^6 revolutions).
@@ -348,14 +364,19 @@ def _rating_life(bearing, loads, shaft_speed, nu, contamination, reliability, ep
     n = check_positive("shaft_speed", shaft_speed, "rad/s")
     nu = _viscosity(nu, dict(lubricant))
     pitch = bearing.pitch_diameter if bearing.pitch_diameter is not None else bearing.mean_diameter
+    if bearing.bore is not None and bearing.outside_diameter is not None:
+        dm, dm_source = bearing.mean_diameter, "mean diameter (d + D)/2"  # ISO 281 fig. 7, SKF's d_m
+    else:
+        dm, dm_source = bearing.require("pitch_diameter"), "pitch diameter"
     a1 = float(dynamic.reliability_factor(reliability))
     ec = _contamination(contamination, pitch)
-    kappa = lubrication.viscosity_ratio(nu, n, pitch)
+    nu1 = lubrication.rated_viscosity(n, dm)
+    kappa = None if nu is None else lubrication.viscosity_ratio(nu, n, dm)
     p, p0 = _iso281(bearing, r, fr, fa, moment)
     p_safe = np.where(np.isfinite(p) & (p > 0), p, 1.0)
     l10 = np.where(np.isfinite(p), dynamic.basic_rating_life(r.dynamic_load_rating, np.where(np.isfinite(p), p, 0.0)),
                    np.nan)
-    a_iso = np.where(np.isfinite(p), lubrication.life_modification_factor(
+    a_iso = None if nu is None else np.where(np.isfinite(p), lubrication.life_modification_factor(
         kappa, ec, r.fatigue_load_limit, p_safe, ep_additives=ep_additives), np.nan)
     s0 = np.where(np.isfinite(p0), static.static_safety_factor(r.static_load_rating, np.where(np.isfinite(p0), p0, 0.0)),
                   np.nan)
@@ -382,14 +403,23 @@ def _rating_life(bearing, loads, shaft_speed, nu, contamination, reliability, ep
         l10r = np.where(failed, np.nan, l10r)
         with np.errstate(divide="ignore"):
             p_ref = r.dynamic_load_rating * (l10r / 1e6) ** (-1.0 / 3.0)
-        a_ref = np.where(p_ref > 0, lubrication.life_modification_factor(
-            kappa, ec, r.fatigue_load_limit, np.where(p_ref > 0, p_ref, 1.0), ep_additives=ep_additives), np.inf)
+        if nu is not None:
+            a_ref = np.where(p_ref > 0, lubrication.life_modification_factor(
+                kappa, ec, r.fatigue_load_limit, np.where(p_ref > 0, p_ref, 1.0), ep_additives=ep_additives),
+                np.inf)
     speed = np.broadcast_to(n, np.broadcast(n, fr).shape)
-    lnm = a1 * a_iso * l10
+    duration = 2 * np.pi / speed
+    if nu is None:  # no lubricant: what needs kappa is not computed (None, not NaN)
+        kappa_out = a_iso_out = lnm_out = lnm_time = lnmr = nu_out = None
+    else:
+        lnm = a1 * a_iso * l10
+        kappa_out, a_iso_out, lnm_out = np.broadcast_to(kappa, speed.shape)[()], a_iso[()], lnm[()]
+        lnm_time, lnmr = (lnm * duration)[()], (a1 * a_ref * l10r)[()]
+        nu_out = np.broadcast_to(nu, speed.shape)[()]
     return RatingLife(
         r.dynamic_load_rating, r.static_load_rating, r.fatigue_load_limit, r.rating_source, p[()], l10[()],
-        (l10 / speed * 2 * np.pi)[()], a1, np.broadcast_to(kappa, speed.shape)[()], a_iso[()], lnm[()],
-        (lnm / speed * 2 * np.pi)[()], l10r[()], (a1 * a_ref * l10r)[()], s0[()], ())
+        (l10 * duration)[()], a1, kappa_out, a_iso_out, lnm_out, lnm_time, l10r[()], lnmr, s0[()], (),
+        nu_out, np.broadcast_to(nu1, speed.shape)[()], float(dm), dm_source)
 
 
 def miner_life(lives, revolution_shares, *, axis=-1):
@@ -430,12 +460,12 @@ class DutyCycleLife(NamedTuple):
 
     basic_rating_life: float
     """Combined L10. [revolutions]"""
-    modified_rating_life: float
-    """Combined L_nm. [revolutions]"""
+    modified_rating_life: float | None
+    """Combined L_nm (None without a lubricant). [revolutions]"""
     reference_rating_life: float
     """Combined L10r (NaN without a load distribution). [revolutions]"""
-    modified_reference_rating_life: float
-    """Combined L_nmr. [revolutions]"""
+    modified_reference_rating_life: float | None
+    """Combined L_nmr (None without a lubricant). [revolutions]"""
     mean_speed: float
     """Time-weighted mean speed, to turn the lives into durations. [rad/s]"""
     steps: RatingLife
@@ -487,7 +517,8 @@ def duty_cycle_life(bearing, loads, shaft_speeds, time_shares, **options):
         raise InputError(f"time_shares must sum to 1 [-], got {float(t.sum())!r}")
     steps = rating_life(bearing, loads, n, **options)
     u = t * n / np.sum(t * n)
-    combine = {name: float(miner_life(np.asarray(getattr(steps, name), dtype=float), u))
+    combine = {name: None if getattr(steps, name) is None  # no lubricant: no modified lives
+               else float(miner_life(np.asarray(getattr(steps, name), dtype=float), u))
                for name in ("basic_rating_life", "modified_rating_life", "reference_rating_life",
                             "modified_reference_rating_life")}
     return DutyCycleLife(**combine, mean_speed=float(np.sum(t * n)), steps=steps)

@@ -366,15 +366,16 @@ def kinematic_viscosity(temperature, *, iso_vg=None, viscosity_40=None, viscosit
     return walther_viscosity(temperature, a, b)
 
 
-def rated_viscosity(shaft_speed, pitch_diameter):
+def rated_viscosity(shaft_speed, mean_diameter):
     r"""Reference (rated) kinematic viscosity nu1 of ISO 281:2007 eqs. (14) and (15).
 
     Parameters
     ----------
     shaft_speed : array_like
         Rotational speed n, > 0. [rad/s]
-    pitch_diameter : array_like
-        Dpw, or (d + D)/2 when the ball set is unknown. [m]
+    mean_diameter : array_like
+        The bearing's mean diameter d_m = (d + D)/2 of ISO 281 (its fig. 7 writes D_pw = 0.5 (d + D); SKF's
+        d_m is the same), or the pitch diameter where bore and outside diameter are not known. [m]
 
     Returns
     -------
@@ -388,13 +389,13 @@ def rated_viscosity(shaft_speed, pitch_diameter):
     10.310 mm^2/s
     """
     n = check_positive("shaft_speed", shaft_speed, "rad/s") / _RPM
-    dm = check_positive("pitch_diameter", pitch_diameter, "m") / _MM
+    dm = check_positive("mean_diameter", mean_diameter, "m") / _MM
     # eqs. (14)-(15); the same two branches in an independent public ISO 281 implementation (issue 12)
     nu1 = np.where(n < 1000.0, 45000.0 * n**-0.83 * dm**-0.5, 4500.0 * n**-0.5 * dm**-0.5)
     return (nu1 * _CST)[()]
 
 
-def viscosity_ratio(kinematic_viscosity, shaft_speed, pitch_diameter):
+def viscosity_ratio(kinematic_viscosity, shaft_speed, mean_diameter):
     """Viscosity ratio kappa = nu / nu1 of ISO 281:2007 eq. (13).
 
     Parameters
@@ -403,8 +404,8 @@ def viscosity_ratio(kinematic_viscosity, shaft_speed, pitch_diameter):
         nu at the operating temperature. [m^2/s]
     shaft_speed : array_like
         n. [rad/s]
-    pitch_diameter : array_like
-        Dpw or (d + D)/2. [m]
+    mean_diameter : array_like
+        d_m = (d + D)/2 (or the pitch diameter), as in :func:`rated_viscosity`. [m]
 
     Returns
     -------
@@ -417,7 +418,7 @@ def viscosity_ratio(kinematic_viscosity, shaft_speed, pitch_diameter):
     2.000
     """
     nu = check_positive("kinematic_viscosity", kinematic_viscosity, "m^2/s")
-    return (nu / rated_viscosity(shaft_speed, pitch_diameter))[()]
+    return (nu / rated_viscosity(shaft_speed, mean_diameter))[()]
 
 
 def contamination_factor(cleanliness, pitch_diameter, *, bound="mid"):
