@@ -428,7 +428,8 @@ def high_speed_warnings(bearing, state):
     -------
     list of str
         :func:`contact_warnings` of the converged cases, and the light-load criteria
-        (:func:`bearinglab.quasistatic.light_load.light_load_warnings`).
+        (:func:`bearinglab.quasistatic.light_load.light_load_warnings`: SKF's minimum load 0.01 C with the
+        bearing's C, and the outer contact angle driven to zero).
     """
     from .quasistatic.light_load import light_load_warnings
 
@@ -441,7 +442,14 @@ def high_speed_warnings(bearing, state):
 
     msgs = contact_warnings(bearing, pick("axial_load"), pick("ball_load_inner"), pick("ball_load_outer"),
                             pick("contact_angle_inner"), pick("contact_angle_outer"))
+    from .ratings import bearing_ratings
+
+    r = bearing_ratings(bearing)  # the catalog's C and C0 first: the minimum load is 0.01 C
     msgs += light_load_warnings(pick("axial_load"), pick("contact_angle_inner"), pick("contact_angle_outer"),
                                 pick("shaft_speed"), bearing.n_balls, bearing.ball_diameter, bearing.pitch_diameter,
-                                bearing.contact_angle, density=bearing.ball_material.density)
+                                bearing.contact_angle, density=bearing.ball_material.density,
+                                bearing_type=bearing.type, inner_conformity=bearing.inner_conformity or 0.52,
+                                outer_conformity=bearing.outer_conformity or 0.53,
+                                dynamic_load_rating=r.dynamic_load_rating,
+                                static_load_rating=r.static_load_rating)
     return msgs

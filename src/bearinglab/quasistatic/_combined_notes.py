@@ -26,10 +26,12 @@ def notes(geo, loads, w, out, ok):
     if sel.size:
         qi, ai = out["ball_load_inner"][sel], out["contact_angle_inner"][sel]
         thrust = np.abs(np.sum(qi * np.sin(ai), axis=1))
+        radial = np.abs(np.sum(qi * np.cos(ai) * np.exp(1j * geo.psi), axis=1))  # |sum Q cos(a) e^(i psi)|
         loaded = np.where(qi > 0, 1.0, np.nan)
         msgs += light_load_warnings(thrust, ai * loaded, out["contact_angle_outer"][sel] * loaded, w[sel], geo.z,
                                     geo.d, geo.dm, geo.a0, density=geo.mass / (math.pi * geo.d**3 / 6.0),
-                                    case_index=sel)
+                                    case_index=sel, radial_load=radial, bearing_type=geo.kind,
+                                    inner_conformity=geo.fi, outer_conformity=geo.fo)
         mu = 2.0 * np.abs(out["gyroscopic_moment"][sel]) / (geo.d * out["ball_load_outer"][sel])
         mu = np.where(qi > 0, mu, 0.0)
         if geo.control == "outer" and np.any(mu > FRICTION_WARNING_LIMIT):

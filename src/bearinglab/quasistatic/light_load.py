@@ -1,11 +1,17 @@
-r"""Loads too light for the speed: gyroscopic slip and an outer contact angle driven to zero.
+r"""Loads too light for the speed: below the maker's minimum load, gyroscopic slip, an outer contact angle
+driven to zero.
 
 Criteria
 --------
 light_load             per-case flags and the test-stand minimum axial load
-light_load_warnings    the same as messages, for the combined-load and the high-speed models
+light_load_warnings    messages for the combined-load and the high-speed models: the minimum load of a
+                       running bearing (SKF's 0.01 C, :mod:`bearinglab.ratings.minimum_load`) and the
+                       outer contact angle driven to zero
 
-Both apply at speed only. Used by :mod:`bearinglab.quasistatic.combined`; the high-speed model
+All apply at speed only. The test-stand minimum axial load against gyroscopic slip (spec 000 section 3, at
+mu = 0.02) stays a flag of :func:`light_load` and the subject of ``bearinglab stand-load``: it is the least
+load of a test stand, and for a large bearing at speed it exceeds C, so it is not the minimum load of a
+bearing in service (issue 20). Used by :mod:`bearinglab.quasistatic.combined`; the high-speed model
 (:func:`bearinglab.quasistatic.contact_angles`) can call :func:`light_load_warnings` with its per-case
 thrust and angles.
 """
@@ -100,8 +106,11 @@ def light_load(axial_load, contact_angle_inner, contact_angle_outer, shaft_speed
 
 
 def light_load_warnings(axial_load, contact_angle_inner, contact_angle_outer, shaft_speed, n_balls, ball_diameter,
-                        pitch_diameter, free_angle, *, density=7850.0, case_index=None):
-    """Warning messages for loads too light for the speed (see :func:`light_load`).
+                        pitch_diameter, free_angle, *, density=7850.0, case_index=None, radial_load=0.0,
+                        bearing_type=None, inner_conformity=0.52, outer_conformity=0.53, dynamic_load_rating=None,
+                        static_load_rating=None):
+    """Warning messages for loads too light for the speed: below the maker's minimum load, and the outer
+    contact angle driven to zero (see :func:`light_load`).
 
     Parameters
     ----------
@@ -123,19 +132,36 @@ def light_load_warnings(axial_load, contact_angle_inner, contact_angle_outer, sh
         Ball density. [kg/m^3]
     case_index : array_like, optional
         Case numbers to quote in the messages (default 0, 1, ...).
+    radial_load : array_like, optional
+        Radial load of the bearing, one per case (0: pure thrust). [N]
+    bearing_type : {"radial", "angular"}, optional
+        For ISO 281's X and Y (default: "angular" where ``free_angle`` > 0).
+    inner_conformity, outer_conformity : float, optional
+        For C0 and f0 of ISO 76 from the geometry (defaults of ISO 76 table 2). [-]
+    dynamic_load_rating, static_load_rating : float, optional
+        C and C0 (the catalog's); by default ISO 281 / ISO 76 from the geometry (said in the message). [N]
 
     Returns
     -------
     list of str
         At most one message per criterion, with the number of cases and the first one.
 
+    Notes
+    -----
+    The minimum load is SKF's general rule for ball bearings, 0.01 C
+    (:func:`bearinglab.ratings.minimum_load.minimum_load_warnings`), against ISO 281's equivalent load
+    P = X F_r + Y F_a (C0 and f0 of ISO 76 for X and Y; the resultant load where ISO 281 has no row for the
+    angle).
+
     Examples
     --------
     >>> import math
     >>> from bearinglab.units import RPM
     >>> m = light_load_warnings(50.0, math.radians(60.0), math.radians(0.05), 15000 * RPM, 16, 22.23e-3, 125.3e-3, math.radians(40))
-    >>> print(len(m), m[1][:38])
-    2 light load: the outer contact angle is
+    >>> print(len(m), m[0][:60])
+    2 minimum load: 1 of 1 case(s) at speed below 0.01 C (ISO 281,
+    >>> print(m[1][:38])
+    light load: the outer contact angle is
     """
     fa = np.ravel(as_float("axial_load", axial_load))
     w = np.ravel(as_float("shaft_speed", shaft_speed))
@@ -144,18 +170,37 @@ def light_load_warnings(axial_load, contact_angle_inner, contact_angle_outer, sh
     flags = light_load(fa[:, None], ai, ao, w[:, None], n_balls, ball_diameter, pitch_diameter, free_angle,
                        density=density)
     fa = np.broadcast_to(fa, w.shape) if fa.size < w.size else fa
-    slip, lost, fmin = np.any(flags.gyroscopic_slip, axis=1), np.any(flags.outer_angle_lost, axis=1), \
-        np.max(np.broadcast_to(flags.minimum_axial_load, flags.gyroscopic_slip.shape), axis=1)
+    lost = np.any(flags.outer_angle_lost, axis=1)
     idx = np.arange(fa.size) if case_index is None else np.ravel(case_index)
-    msgs = []
-    if slip.any():
-        k = int(np.flatnonzero(slip)[0])
-        msgs.append(f"light load: {int(slip.sum())} case(s) below the test-stand minimum axial load against "
-                    f"gyroscopic slip (friction coefficient {STAND_FRICTION:g}; `bearinglab stand-load`), "
-                    f"e.g. case {idx[k]}: {fa[k]:.4g} N < {fmin[k]:.4g} N")
+    msgs = _minimum_load_notes(fa, np.broadcast_to(as_float("radial_load", radial_load), fa.shape), w, n_balls,
+                               ball_diameter, pitch_diameter, float(free_angle), idx, bearing_type,
+                               inner_conformity, outer_conformity, dynamic_load_rating, static_load_rating)
     if lost.any():
         k = int(np.flatnonzero(lost)[0])
         msgs.append(f"light load: the outer contact angle is driven to zero in {int(lost.sum())} case(s) (below "
                     f"{OUTER_ANGLE_FRACTION:g} x the free angle), e.g. case {idx[k]}: the thrust is too small for "
                     "the speed")
     return msgs
+
+
+def _minimum_load_notes(fa, fr, w, z, d, dm, a0, idx, kind, fi, fo, c, c0):
+    """SKF's minimum load 0.01 C against ISO 281's P of each case at speed (see :func:`light_load_warnings`)."""
+    from ..errors import InputError
+    from ..ratings import dynamic, minimum_load, static
+
+    kind = kind or ("angular" if a0 > 0 else "radial")
+    alpha = a0 if kind == "angular" else 0.0  # a deep-groove bearing is rated at alpha = 0 (ISO 281)
+    where = "" if c is not None else " (ISO 281, from the geometry)"
+    c = float(dynamic.dynamic_load_rating(z, d, dm, alpha)) if c is None else float(c)
+    if c0 is None:
+        c0 = float(static.static_load_rating(z, d, dm, alpha, inner_conformity=fi, outer_conformity=fo))
+    f0 = float(static.static_load_factor(d, dm, alpha, inner_conformity=fi, outer_conformity=fo))
+    fa, fr = np.abs(fa), np.abs(fr)
+    try:
+        p = dynamic.equivalent_dynamic_load(fr, fa, c0, alpha, bearing_type=kind,
+                                            static_load_factor=f0 if kind == "radial" else None)
+        load = "P = X F_r + Y F_a (ISO 281)"
+    except InputError:  # an angle without a row in ISO 281 table 3: the resultant load
+        p, load = np.hypot(fr, fa), "the resultant load (ISO 281 has no X, Y for this angle)"
+    return minimum_load.minimum_load_warnings(np.broadcast_to(p, w.shape), w, c, rating=f"C{where}", load=load,
+                                              case_index=idx)

@@ -6,13 +6,14 @@ static         C0 and f0 (ISO 76), Cu (ISO 281 annex B), P0 and the static safet
 dynamic        C and f_c, X / Y / e and P, L10 and the reliability factor a1 (ISO 281)
 lubrication    oil viscosity (ISO VG, ASTM D2270 viscosity index, ASTM D341), nu1 and kappa, e_C classes, a_ISO (ISO 281)
 reference      ISO/TS 16281 reference rating life from the ball loads
+minimum_load   the minimum load of a running ball bearing (SKF's rules)
 life           the analysis of a BallBearing (every life quantity at once) and duty cycles
 
 Every public function of these modules is also reachable here, e.g. ``ratings.rating_life`` and
 ``ratings.static_load_rating``. SI throughout; lives in revolutions and durations in seconds.
 """
 
-from . import dynamic, life, lubrication, reference, static
+from . import dynamic, life, lubrication, minimum_load, reference, static
 from .dynamic import (
     MATERIAL_FACTOR,
     DynamicLoadFactors,
@@ -47,6 +48,13 @@ from .lubrication import (
     viscosity_ratio,
     walther_constants,
     walther_viscosity,
+)
+from .minimum_load import (
+    general_minimum_load,
+    minimum_axial_load,
+    minimum_load_rules,
+    minimum_load_warnings,
+    minimum_radial_load,
 )
 from .reference import (
     ContactDynamicLoads,
@@ -98,6 +106,7 @@ __all__ = [
     "equivalent_dynamic_load",
     "fatigue_load_limit",
     "fatigue_load_limit_simplified",
+    "general_minimum_load",
     "iso_vg_viscosity",
     "kinematic_viscosity",
     "life",
@@ -105,6 +114,11 @@ __all__ = [
     "load_rating_factor",
     "lubrication",
     "miner_life",
+    "minimum_axial_load",
+    "minimum_load",
+    "minimum_load_rules",
+    "minimum_load_warnings",
+    "minimum_radial_load",
     "rated_viscosity",
     "rating_life",
     "reference",
