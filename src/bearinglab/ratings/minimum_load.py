@@ -165,6 +165,10 @@ def minimum_load_warnings(equivalent_load, shaft_speed, dynamic_load_rating, *, 
     The general rule of [1]_; the makers' finer rules (:func:`minimum_radial_load`,
     :func:`minimum_axial_load`) need a factor from their product tables for each bearing.
 
+    References
+    ----------
+    .. [1] SKF, *Rolling bearings*, PUB BU/P1 17000 EN, 2018, "Requisite minimum load".
+
     Examples
     --------
     >>> minimum_load_warnings([50.0, 5000.0], [1500.0, 1500.0], 143210.0)[0][:63]
