@@ -55,3 +55,9 @@ def test_temperatures():
     for bad in ("-300 degC", "70", "hot"):
         with pytest.raises(InputError, match="^temperature"):
             parse_temperature(bad)
+
+
+def test_a_viscosity_index_outside_the_standard_names_the_option():
+    # VG7 of VI 0 would need nu100 < 2 mm^2/s, below ASTM D2270's table
+    with pytest.raises(InputError, match="^viscosity-index: VG7 with VI 0 is outside ASTM D2270"):
+        lubricant_viscosity(oil="VG7", temperature="70 degC", viscosity_index=0.0)

@@ -550,7 +550,10 @@ def lubricant_viscosity(viscosity=None, oil=None, temperature=None, viscosity_in
         vi = lubrication.DEFAULT_VISCOSITY_INDEX if viscosity_index is None else float(viscosity_index)
         if not (math.isfinite(vi) and -100.0 <= vi <= 400.0):
             raise InputError(f"viscosity-index must be in [-100, 400] [-], got {viscosity_index!r}")
-        nu100 = float(lubrication.viscosity_100_from_index(nu40, vi))
+        try:
+            nu100 = float(lubrication.viscosity_100_from_index(nu40, vi))
+        except InputError as exc:  # the library's message names its own parameters
+            raise InputError(f"viscosity-index: VG{grade} with VI {vi:g} is outside ASTM D2270 ({exc})") from None
         how = (f"VI {vi:g} ({'given' if viscosity_index is not None else 'assumed: a mineral oil, SKF'}), "
                f"nu100 {nu100 * 1e6:.4g} cSt by ASTM D2270")
     nu = float(lubrication.kinematic_viscosity(t, viscosity_40=nu40, viscosity_100=nu100))
