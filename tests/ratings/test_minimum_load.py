@@ -88,3 +88,18 @@ def test_below_the_limit_only_at_speed(capsys):
     assert not any("minimum load" in w for w in _high_speed(capsys, "-F", "0.5 kN", "-n", "0 rpm")["warnings"])
     low = np.array([0.5e3])
     assert ml.minimum_load_warnings(low, [0.0], 1e5) == []
+
+
+def test_load_distribution_at_speed_judges_the_reactions_of_the_balls():
+    # B218 under F_r = F_a = 1 kN at 6000 rpm: the balls' reactions give back F_r and F_a, and with
+    # F_a/F_r = 1 <= e = 1.14 (ISO 281 table 3, 40 deg) P = F_r = 1 kN, below 0.01 C of the geometry
+    from bearinglab.quasistatic import combined
+
+    b = catalog.get("B218")
+    r = combined.combined_analysis(b, [1e3, 0, 1e3, 0, 0], 6000 * RPM)
+    text = [w for w in r.warnings if w.startswith("minimum load")]
+    c = ratings.dynamic_load_rating(b.n_balls, b.ball_diameter, b.pitch_diameter, b.contact_angle)
+    assert len(text) == 1 and f"0.01 C (ISO 281, from the geometry) = {0.01 * c / 1e3:.4g} kN" in text[0]
+    assert "P = X F_r + Y F_a (ISO 281) = 1 kN" in text[0]
+    heavy = combined.combined_analysis(b, [5e3, 0, 10e3, 0, 0], 6000 * RPM)
+    assert not any(w.startswith("minimum load") for w in heavy.warnings)
