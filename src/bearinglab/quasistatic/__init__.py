@@ -46,8 +46,8 @@ combined                       the 5-DOF inner ring under Fx, Fy, Fz, Mx, My, at
                                distribution, contact angles and pressures per ball, tangent stiffness
 sets                           preloaded bearing sets (DB, DF, DT) on one shaft: distribution and stiffness
 rotordynamics                  speed-dependent kxx, kxy, kyx, kyy, kzz for ``ross.BearingElement``
-light_load                     light-load criteria at speed: the maker's minimum load (0.01 C), an outer angle near
-                               zero, and the test-stand flag against gyroscopic slip
+light_load                     light-load criteria at speed: the maker's minimum load (0.01 C), an
+                               outer angle near zero, the test-stand flag against gyroscopic slip
 
 Conventions: the outer ring is fixed and the inner ring turns at ``shaft_speed`` >= 0 (the model is
 symmetric in the direction of rotation); the thrust acts on the inner ring. The gyroscopic moment M_g
