@@ -109,6 +109,25 @@ def _warnings(b, loads, r, notes):
     return list(dict.fromkeys(notes))
 
 
+def _takeup_um(b):
+    """Half the axial play, A sin(alpha0) [um]: the part of delta_z a thrust spends before any ball carries
+    (displacements are counted from the concentric position, MASTA's convention; issue 20 item 11)."""
+    from ..quasistatic import combined
+
+    _, d, _, fi, fo, a0, _, _ = combined._bearing_args(b)
+    return combined.axial_play_takeup(d, fi, fo, a0) * 1e6
+
+
+def _with_takeup(doc, takeup_um):
+    """``doc`` with ``axial_play_takeup_um`` after the tilts (so the elastic part is one subtraction)."""
+    out = {}
+    for key, value in doc.items():
+        out[key] = value
+        if key == "tilt_y_mrad":
+            out["axial_play_takeup_um"] = takeup_um
+    return out
+
+
 def _case(r, k):
     """Case k of a batched LoadDistribution (cases on the first axis), as an object with one case's fields."""
     import numpy as np
@@ -153,7 +172,7 @@ def load_distribution(
     docs = []
     for k in range(w.size):
         case = _case(r, k)
-        docs.append({**tables.load_distribution(case),
+        docs.append({**_with_takeup(tables.load_distribution(case), _takeup_um(b)),
                      "inputs": _inputs(b, loads, w[k], phi0, stiffness_at=stiffness_at), "warnings": notes})
     if ross is not None:
         rotordynamics.write_coefficients(rotordynamics.from_stiffness(np.reshape(r.stiffness, (-1, 5, 5)), w), ross)
@@ -199,9 +218,11 @@ def _print_balls(title, doc):
 
 
 def _print_ring(title, doc, body="ring"):
-    rows = [["δ_x, δ_y, δ_z [µm]", ", ".join(_f(doc[f"displacement_{a}_um"], ".4f") for a in "xyz")],
-            ["θ_x, θ_y [mrad]", f"{_f(doc['tilt_x_mrad'], '.5f')}, {_f(doc['tilt_y_mrad'], '.5f')}"],
-            ["max ball load [N]", _sig(doc["max_ball_load_N"])]]
+    rows = [["δ_x, δ_y, δ_z [µm] (from concentric)", ", ".join(_f(doc[f"displacement_{a}_um"], ".4f") for a in "xyz")],
+            ["θ_x, θ_y [mrad]", f"{_f(doc['tilt_x_mrad'], '.5f')}, {_f(doc['tilt_y_mrad'], '.5f')}"]]
+    if doc.get("axial_play_takeup_um") is not None:
+        rows.append(["half axial play in δ_z [µm]", _f(doc["axial_play_takeup_um"], ".4f")])
+    rows.append(["max ball load [N]", _sig(doc["max_ball_load_N"])])
     k = doc["stiffness_matrix"]
     if k is not None and k[0][0] is not None:
         rows += [["k_xx, k_yy, k_zz [N/µm]", ", ".join(_sig(k[i][i] * 1e-6) for i in range(3))],

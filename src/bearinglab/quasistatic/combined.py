@@ -12,6 +12,7 @@ Geometry
 --------
 ball_azimuths          psi_j = phi0 + 2 pi j / Z, from +x
 groove_offsets         inner groove-curvature centre relative to the outer one, per ball, for a displacement
+axial_play_takeup      A sin(alpha0), the part of delta_z a thrust takes up before any ball carries load
 
 Load distribution
 -----------------
@@ -73,6 +74,7 @@ __all__ = [
     "Equilibrium",
     "LightLoad",
     "LoadDistribution",
+    "axial_play_takeup",
     "ball_azimuths",
     "combined_analysis",
     "equilibrium",
@@ -172,6 +174,43 @@ def groove_offsets(displacement, n_balls, ball_diameter, pitch_diameter, inner_c
     geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
                     None, None, first_ball_angle, "free", "outer", "radial", tables=False)
     return (u @ geo.ja.T)[()], (geo.gr0 + u @ geo.jr.T)[()]
+
+
+def axial_play_takeup(ball_diameter, inner_conformity, outer_conformity, free_angle):
+    r"""Half the axial play, s_a/2 = A sin(alpha0): the part of delta_z spent before any ball carries load.
+
+    Displacements are counted from the concentric position (MASTA's convention), so under a thrust
+    delta_z contains this take-up; delta_z - s_a/2 (for F_z > 0) is the elastic approach of the rings.
+
+    Parameters
+    ----------
+    ball_diameter : array_like
+        D. [m]
+    inner_conformity, outer_conformity : array_like
+        f_i, f_o. [-]
+    free_angle : array_like
+        alpha0, from the diametral clearance e by cos alpha0 = 1 - e / (2 A). [rad]
+
+    Returns
+    -------
+    ndarray
+        s_a / 2. [m]
+
+    Notes
+    -----
+    A ball touches both raceways when its groove-curvature centres are A = (f_i + f_o - 1) D apart. In the
+    concentric position they are A cos(alpha0) apart radially (the definition of alpha0 by the
+    clearance, e = 2 A (1 - cos alpha0)); an axial shift z brings them to sqrt(z^2 + A^2 cos^2 alpha0),
+    which equals A at z = A sin(alpha0). Both directions together give the axial play
+    s_a = 2 (f_i + f_o - 1) D sin(alpha0), Harris, *Rolling Bearing Analysis* (eq. 2.13 of the
+    edition cited by :func:`bearinglab.geometry.axial_play`, which computes s_a).
+
+    Examples
+    --------
+    >>> print(f"{axial_play_takeup(22.23e-3, 0.5232, 0.5232, math.radians(40)) * 1e3:.4f} mm")  # B218
+    0.6630 mm
+    """
+    return (geometry.axial_play(free_angle, ball_diameter, inner_conformity, outer_conformity) / 2.0)[()]
 
 
 # --------------------------------------------------------------------------- the ring
