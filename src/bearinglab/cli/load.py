@@ -118,6 +118,16 @@ def _takeup_um(b):
     return combined.axial_play_takeup(d, fi, fo, a0) * 1e6
 
 
+def _set_takeup_um(bearings, orient):
+    """The axial play inside the shaft's delta_z [um]: none for opposed bearings (the shaft is counted from
+    the assembled set, play taken up or preloaded), else that of the bearing whose balls touch first."""
+    import numpy as np
+
+    if not np.all(orient == orient[0]):
+        return 0.0
+    return min(_takeup_um(b) for b in bearings)
+
+
 def _with_takeup(doc, takeup_um):
     """``doc`` with ``axial_play_takeup_um`` after the tilts (so the elastic part is one subtraction)."""
     out = {}
@@ -202,10 +212,10 @@ def _sig(x, decimals=2):
     return format(x, f".{min(max(decimals, 3 - math.floor(math.log10(abs(x)))), 12)}f")
 
 
-def _print_case(title, doc, *, balls=True, body="ring"):
+def _print_case(title, doc, *, balls=True, body="ring", origin="concentric", extra=()):
     if balls:
         _print_balls(title, doc)
-    _print_ring(title, doc, body)
+    _print_ring(title, doc, body, origin, extra)
 
 
 def _print_balls(title, doc):
@@ -217,8 +227,10 @@ def _print_balls(title, doc):
            for j, r in enumerate(doc["balls"])])
 
 
-def _print_ring(title, doc, body="ring"):
-    rows = [["δ_x, δ_y, δ_z [µm] (from concentric)", ", ".join(_f(doc[f"displacement_{a}_um"], ".4f") for a in "xyz")],
+def _print_ring(title, doc, body="ring", origin="concentric", extra=()):
+    """The ring (or shaft) table; ``origin`` names where the displacements are counted from."""
+    rows = [*extra,
+            [f"δ_x, δ_y, δ_z [µm] (from {origin})", ", ".join(_f(doc[f"displacement_{a}_um"], ".4f") for a in "xyz")],
             ["θ_x, θ_y [mrad]", f"{_f(doc['tilt_x_mrad'], '.5f')}, {_f(doc['tilt_y_mrad'], '.5f')}"]]
     if doc.get("axial_play_takeup_um") is not None:
         rows.append(["half axial play in δ_z [µm]", _f(doc["axial_play_takeup_um"], ".4f")])
@@ -243,7 +255,7 @@ def bearing_set(
     bearing: Annotated[list[str], typer.Option("--bearing", "-b", help="Catalog name; once for every position, or once per bearing from -z to +z.", rich_help_panel="Bearing")],
     catalog: CatalogFile = None,
     arrangement: Annotated[str, typer.Option("--arrangement", help="DB (back-to-back) | DF (face-to-face) | DT (tandem).")] = "DB",
-    spacing: Annotated[str, typer.Option("--spacing", help="Distance between bearing centres, e.g. '100 mm'.")] = "0 mm",
+    spacing: Annotated[str | None, typer.Option("--spacing", help="Distance between bearing centres, e.g. '100 mm'; default: side by side, one ring width B (needs the bearings' width).")] = None,
     preload: Annotated[str | None, typer.Option("--preload", help="Axial preload force at rest, e.g. '500 N'.")] = None,
     preload_offset: Annotated[str | None, typer.Option("--preload-offset", help="Axial interference from first contact (zero preload) instead, e.g. '5 um'; negative is axial play.")] = None,
     fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
@@ -262,7 +274,7 @@ def bearing_set(
     from ..units import parse_quantity
     bl = [_catalog.get(name, catalog=catalog) for name in bearing]
     choice("arrangement", arrangement, tuple(sets.ARRANGEMENTS))
-    s = parse_length(spacing, "spacing", zero=True)
+    s = None if spacing is None else parse_length(spacing, "spacing", zero=True)
     if preload is not None and preload_offset is not None:
         raise InputError("preload: give --preload or --preload-offset, not both")
     fp = 0.0 if preload is None else parse_quantity(preload, "force", "preload")
@@ -279,7 +291,9 @@ def bearing_set(
     st, notes = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], loads, w, arrangement_kind=arrangement,
                        spacing=s, preload=fp, preload_displacement=e, first_ball_angle=phi0, stiffness_at=stiffness_at)
     notes = list(dict.fromkeys([*st.warnings, *notes]))
-    orient, pos = sets.arrangement(arrangement, s, len(st.bearings))
+    orient, pos = sets.arrangement(arrangement, np.diff(st.positions), len(st.bearings))
+    gaps_mm = [float(g) * 1e3 for g in np.diff(st.positions)]
+    spacing_mm = gaps_mm[0] if len(set(gaps_mm)) == 1 else gaps_mm  # one value, or one per gap
     names = [b.designation for b in bl] * (len(st.bearings) if len(bl) == 1 else 1)
     members = []
     for k, part in enumerate(st.bearings):
@@ -291,11 +305,13 @@ def bearing_set(
         members.append({"bearing": names[k], "orientation": int(orient[k]), "position_mm": float(pos[k] * 1e3) + 0.0,  # + 0.0: no -0
                         "loads": {"fx_N": carried[0], "fy_N": carried[1], "fz_N": carried[2],
                                   "mx_Nmm": carried[3] * 1e3, "my_Nmm": carried[4] * 1e3},
-                        **tables.load_distribution(ns)})
-    doc = {**tables.load_distribution(_shaft(st)), "preload_offset_um": st.preload_displacement * 1e6,
+                        **_with_takeup(tables.load_distribution(ns), _takeup_um(bk))})
+    doc = {**_with_takeup(tables.load_distribution(_shaft(st)), _set_takeup_um(bl, orient)),
+           "preload_offset_um": st.preload_displacement * 1e6,
            "bearings": members,
            "inputs": {**_inputs(bl[0], loads, w, phi0, stiffness_at=stiffness_at), "bearings": names,
-                      "arrangement": arrangement, "spacing_mm": s * 1e3, "preload_N": fp,
+                      "arrangement": arrangement, "spacing_mm": spacing_mm, "spacing_default": st.default_spacing,
+                      "preload_N": fp,
                       "preload_offset_um": None if e is None else e * 1e6},
            "warnings": notes}
     del doc["balls"], doc["max_ball_load_N"]
@@ -308,8 +324,11 @@ def bearing_set(
     for k, m in enumerate(members):
         _print_case(f"Bearing {k} ({m['bearing']}, orientation {m['orientation']:+d}, z = {m['position_mm']:g} mm)", m)
     loads = [m["max_ball_load_N"] for m in members if m["max_ball_load_N"] is not None]
+    gaps = ", ".join(f"{g:g}" for g in np.atleast_1d(spacing_mm))
+    spacing_row = ["spacing [mm]", f"{gaps} ({'default: side by side, one width' if st.default_spacing else 'given'})"]
+    origin = "concentric" if np.all(orient == orient[0]) else "assembled"
     _print_case(f"Set {arrangement} of {len(members)}", {**doc, "max_ball_load_N": max(loads, default=None)},
-                balls=False, body="shaft")  # the balls are in each bearing's table
+                balls=False, body="shaft", origin=origin, extra=[spacing_row])  # the balls: each bearing's table
     print_warnings(notes)
     _print_written(plot)
 
