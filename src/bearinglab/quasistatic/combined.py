@@ -259,15 +259,19 @@ def _scaled(geo, vec):
     return vec * np.array([1.0, 1.0, 1.0, 2.0 / geo.dm, 2.0 / geo.dm])
 
 
-def _measure(geo, loads, force, balls):
+def _measure(geo, loads, force, balls, free=None):
     """Residual norm |F - F(u)| (moments divided by d_m/2) [N], the same relative to
     max(|F|, sum of the ball reactions) [-], and the relative residual rounding alone leaves [-].
+
+    ``free`` (n, 5) of 1.0 / 0.0, or None for all free: a held (prescribed) freedom has no equation, its
+    load is the reaction, so its component of F - F(u) does not count.
 
     The floor: a ball's deflection rho - A is a difference of two lengths of order A, so Q carries a
     rounding error of about dQ/d(delta) eps rho; under very light loads (deflections of a few nm) this
     exceeds the default tolerance, and no iteration can do better.
     """
-    res = np.linalg.norm(_scaled(geo, loads - force), axis=-1)
+    diff = loads - force if free is None else (loads - force) * free
+    res = np.linalg.norm(_scaled(geo, diff), axis=-1)
     total = np.sum(np.hypot(balls["pa"], balls["pr"]), axis=-1)
     scale = np.maximum(np.linalg.norm(_scaled(geo, loads), axis=-1), total)
     noise = _NOISE * np.sum(balls["noise"], axis=-1)
@@ -302,20 +306,21 @@ def _predict(geo, x, dxdg, du):
     return np.where(keep[..., None], xp, x)
 
 
-def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=()):
+def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=(), free=None):
     """Damped Newton (Levenberg-Marquardt) on the ring equilibrium, all cases together.
 
     Each case has its own damping: it falls tenfold after a full step and rises when the line search
     on |F - F(u)| has to cut the step. Returns u, converged, iterations, the ball centres at speed, and
     the last accepted evaluation of every case, which is the evaluation at the returned u: relative
-    residual, rounding floor, stiffness and the ball fields named in ``keep``.
+    residual, rounding floor, stiffness, reaction and the ball fields named in ``keep``. ``free`` (n, 5),
+    1.0 for a freedom under a given load and 0.0 for a held one (its displacement stays at u0), or None.
     """
     n = len(loads)
     u = u0.copy()
     it = np.zeros(n, dtype=int)
     lam = np.zeros(n)
     force, stiff, balls = _evaluate(geo, u, w2, x0)
-    norm, rel, floor = _measure(geo, loads, force, balls)
+    norm, rel, floor = _measure(geo, loads, force, balls, free)
     done = (rel <= np.maximum(tol, floor)) & np.all(balls["ok"], axis=1)
     x, dxdg = balls.get("x"), balls.get("dxdg")
     final = {k: np.array(balls[k], dtype=float) for k in keep}
@@ -324,7 +329,11 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=()):
         if act.size == 0:
             break
         it[act] += 1
-        du = _ring.lm_step(stiff[act], loads[act] - force[act], lam[act], geo.dm)
+        if free is None:
+            du = _ring.lm_step(stiff[act], loads[act] - force[act], lam[act], geo.dm)
+        else:  # held freedoms: no equation, no step (issue 20 item 18)
+            du = _ring.lm_step(_ring.hold(stiff[act], free[act]), (loads[act] - force[act]) * free[act], lam[act],
+                               geo.dm)
         # trust region: no groove centre moves by more than A / 2 in one step (bounded over the balls:
         # axial |dz| + d_m/2 |tilt|, radial |(dx, dy)|)
         move = np.maximum(np.abs(du[:, 2]) + geo.dm / 2.0 * np.hypot(du[:, 3], du[:, 4]), np.hypot(du[:, 0], du[:, 1]))
@@ -337,7 +346,7 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=()):
             trial = u[sel] + t[pending, None] * du[pending]
             f_t, k_t, b_t = _evaluate(geo, trial, w2[sel], None if x is None else
                                       _predict(geo, x[sel], dxdg[sel], trial - u[sel]))
-            n_t, r_t, fl_t = _measure(geo, loads[sel], f_t, b_t)
+            n_t, r_t, fl_t = _measure(geo, loads[sel], f_t, b_t, None if free is None else free[sel])
             conv_t = r_t <= np.maximum(tol, fl_t)
             good = ((n_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | conv_t) & np.all(b_t["ok"], axis=1)
             g, kk = sel[good], (slice(None) if good.all() else good)  # a view, not a copy, when all are good
@@ -358,30 +367,37 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=()):
         lam[act[pending]] = np.maximum(100.0 * lam[act[pending]], 1e-3)  # no decrease at all
         lam[lam < 1e-12] = 0.0
         done = rel <= np.maximum(tol, floor)  # accepted iterates have every ball converged
-    final.update(residual=rel, floor=floor, stiffness=stiff)
+    final.update(residual=rel, floor=floor, stiffness=stiff, force=force)
     return u, done, it, x, final
 
 
-def _rest_newton(geo, loads, tol, max_iter):
+def _rest_newton(geo, loads, tol, max_iter, held=None):
     """The rest Newton of every case, ``_CHUNK`` cases at a time (the same per case: bit-identical for any
-    batch); each pass's arrays stay in the processor's cache and off the operating system's page faults."""
+    batch); each pass's arrays stay in the processor's cache and off the operating system's page faults.
+    ``held`` (n, 5): the prescribed displacements, NaN on the freedoms under a given load (or None)."""
     n = len(loads)
     if n <= _CHUNK:
-        u, ok, it, _, last = _newton(geo, loads, np.zeros(n), _start(geo, loads), None, tol, max_iter,
-                                     keep=("qi", "ai"))
+        u0, free = _start(geo, loads), None
+        if held is not None:
+            free = np.isnan(held).astype(float)
+            u0 = np.where(free > 0, u0, held)
+        u, ok, it, _, last = _newton(geo, loads, np.zeros(n), u0, None, tol, max_iter, keep=("qi", "ai"),
+                                     free=free)
         return u, ok, it, last
-    parts = [_rest_newton(geo, loads[lo:lo + _CHUNK], tol, max_iter) for lo in range(0, n, _CHUNK)]
+    parts = [_rest_newton(geo, loads[lo:lo + _CHUNK], tol, max_iter, None if held is None else held[lo:lo + _CHUNK])
+             for lo in range(0, n, _CHUNK)]
     last = {k: np.concatenate([p[3][k] for p in parts]) for k in parts[0][3]}
     return (*(np.concatenate([p[j] for p in parts]) for j in range(3)), last)
 
 
-def _solve(geo, loads, w2, tol, max_iter, *, final=False):
+def _solve(geo, loads, w2, tol, max_iter, *, final=False, held=None):
     """Rest solution of every case, then the cases at speed from it (with continuation in omega^2).
 
     Returns u, converged, iterations and, with ``final``, (at_rest, the rest Newton's last evaluation):
     the outputs of the cases at rest need no evaluation of their own.
     """
-    u, ok, it, last = _rest_newton(geo, loads, tol, max_iter)
+    u, ok, it, last = _rest_newton(geo, loads, tol, max_iter, held)
+    free = None if held is None else np.isnan(held).astype(float)
     extra = ((w2 == 0), last) if final else None
     moving = np.flatnonzero((w2 > 0) & ok)
     if moving.size == 0:
@@ -396,7 +412,8 @@ def _solve(geo, loads, w2, tol, max_iter, *, final=False):
             wk = w2[sel] * k / steps
             ga, gr = _ring.rowwise(us, geo.ja.T), geo.gr0 + _ring.rowwise(us, geo.jr.T)
             xs = _ball_start(geo, ga, gr, wk[:, None]) if xs is None else xs
-            us, conv, itk, xs, _ = _newton(geo, loads[sel], wk, us, xs, tol, max_iter)
+            us, conv, itk, xs, _ = _newton(geo, loads[sel], wk, us, xs, tol, max_iter,
+                                           free=None if free is None else free[sel])
             it[sel] += itk
             good &= conv
         u[sel[good]], ok[sel[good]] = us[good], True
@@ -432,6 +449,9 @@ class LoadDistribution(NamedTuple):
     residual: np.ndarray  # (...) relative equilibrium residual [-]
     iterations: np.ndarray  # (...) ring Newton iterations
     warnings: tuple  # messages (light load, low-shoulder contact, friction), one per kind
+    #: (..., 5) load needed to hold each prescribed freedom at its displacement [N, N m]; NaN on a freedom
+    #: under a given load (all NaN without ``prescribed_displacement``)
+    reactions: np.ndarray = None
 
 
 def _pressure(geo, q, alpha, race):
@@ -445,12 +465,13 @@ def _pressure(geo, q, alpha, race):
         return np.where(q > 0, 3.0 * q / (2.0 * np.pi * ab), 0.0)
 
 
-def _at_solution(geo, loads, w, u, sel, final):
-    """Relative residual, rounding floor, stiffness and ball outputs (``_BALL_OUT``) of the cases ``sel``:
-    from the solver's last evaluation (``final`` of :func:`_solve`) where it has one, else evaluated."""
+def _at_solution(geo, loads, w, u, sel, final, free=None):
+    """Relative residual, rounding floor, stiffness, reaction and ball outputs (``_BALL_OUT``) of the cases
+    ``sel``: from the solver's last evaluation (``final`` of :func:`_solve`) where it has one, else evaluated."""
     have = np.zeros(sel.size, dtype=bool) if final is None else final[0][sel]
     res = {k: np.empty((sel.size, geo.z)) for k in _BALL_OUT}
-    res.update(residual=np.empty(sel.size), floor=np.empty(sel.size), stiffness=np.empty((sel.size, 5, 5)))
+    res.update(residual=np.empty(sel.size), floor=np.empty(sel.size), stiffness=np.empty((sel.size, 5, 5)),
+               force=np.empty((sel.size, 5)))
     if have.any():
         last, rows = final[1], sel[have]
         for k, v in res.items():
@@ -458,16 +479,20 @@ def _at_solution(geo, loads, w, u, sel, final):
     if not have.all():
         fresh = sel[~have]
         force, stiff, balls = _evaluate(geo, u[fresh], w[fresh] ** 2)
-        res["residual"][~have], res["floor"][~have] = _measure(geo, loads[fresh], force, balls)[1:]
-        res["stiffness"][~have] = stiff
+        res["residual"][~have], res["floor"][~have] = _measure(geo, loads[fresh], force, balls,
+                                                               None if free is None else free[fresh])[1:]
+        res["stiffness"][~have], res["force"][~have] = stiff, force
         for k in _BALL_OUT:
             res[k][~have] = balls[k]
     return res
 
 
-def _outputs(geo, loads, w, u, ok, it, final=None):
+def _outputs(geo, loads, w, u, ok, it, final=None, held=None):
     """Every field of :class:`LoadDistribution` (flat cases) from the converged displacements; ``final``
-    (from :func:`_solve`) spares the evaluation at the solution of the cases it covers."""
+    (from :func:`_solve`) spares the evaluation at the solution of the cases it covers; ``held`` (n, 5)
+    the prescribed displacements (NaN: free), whose reactions go to ``reactions`` (NaN on free ones; the
+    key only with ``held``)."""
+    free = None if held is None else np.isnan(held).astype(float)
     n, z = len(loads), geo.z
     nan = np.full((n, z), np.nan)
     out = {k: nan.copy() for k in ("ball_load_inner", "ball_load_outer", "contact_angle_inner",
@@ -475,9 +500,13 @@ def _outputs(geo, loads, w, u, ok, it, final=None):
                                    "centrifugal_force", "gyroscopic_moment")}
     out.update(displacement=np.where(ok[:, None], u, np.nan), stiffness=np.full((n, 5, 5), np.nan),
                residual=np.full(n, np.nan), floor=np.zeros(n), max_ball_load=np.full(n, np.nan))
+    if free is not None:
+        out["reactions"] = np.full((n, 5), np.nan)
     sel = np.flatnonzero(ok)
     if sel.size:
-        balls = _at_solution(geo, loads, w, u, sel, final)
+        balls = _at_solution(geo, loads, w, u, sel, final, free)
+        if free is not None:
+            out["reactions"][sel] = np.where(free[sel] > 0, np.nan, balls["force"])
         for k in ("residual", "floor", "stiffness"):
             out[k][sel] = balls[k]
         qi, qo = balls["qi"], balls["qo"]
@@ -509,7 +538,7 @@ def _flat_inputs(loads, shaft_speed):
 def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
                       free_angle, reduced_modulus, density, *, first_ball_angle=0.0, stiffness_at="operating",
                       raceway_control="outer", bearing_type="radial", on_failure="raise",
-                      tol=TOL, max_iter=MAX_ITER):
+                      tol=TOL, max_iter=MAX_ITER, prescribed_displacement=None):
     r"""Load distribution, displacement and stiffness of a ball bearing under combined load, at rest or at speed.
 
     Parameters
@@ -557,10 +586,20 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
         to 1e-9 (issue 11). [-]
     max_iter : int, optional
         Ring Newton iterations per case (and per continuation step).
+    prescribed_displacement : array_like, optional
+        (..., 5): delta_x, delta_y, delta_z [m], theta_x, theta_y [rad] held at these values, NaN for a
+        freedom under its given load; broadcast against the cases. Each freedom is given either as a load
+        or as a displacement, so the load of a held freedom must be 0 in ``loads``; its reaction, the load
+        that holds it, is in ``reactions`` and in ``loads`` of the result. Example: ``[nan, nan, nan, 0, 0]``
+        holds the ring square (no tilt) under F_r + F_a, as the textbook combined-load cases (Sjovall,
+        Harris) assume; without it the ring tilts freely (MASTA's single-bearing convention).
+        delta_z counts from the concentric position, like the result (:func:`axial_play_takeup`).
 
     Returns
     -------
     LoadDistribution
+        ``loads`` holds the loads in equilibrium with ``displacement``: the given ones, and the reactions
+        on the held freedoms.
 
     Raises
     ------
@@ -594,26 +633,31 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     15.1102 um, Q_max = 619.6 N
     """
     f, w, shape = _flat_inputs(loads, shaft_speed)
+    f, w, held, shape = _held(f, w, shape, prescribed_displacement)
     if on_failure not in ("raise", "flag"):
         raise InputError(f"on_failure must be one of ['raise', 'flag'], got {on_failure!r}")
     check_positive("tol", tol, "-")
     max_iter = int(check_integer("max_iter", max_iter, 1))
     geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
                     reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, bearing_type)
-    u, ok, it, final = _solve(geo, f, w**2, tol, max_iter, final=True)
-    out = _outputs(geo, f, w, u, ok, it, final)
+    u, ok, it, final = _solve(geo, f, w**2, tol, max_iter, final=True, held=held)
+    out = _outputs(geo, f, w, u, ok, it, final, held)
+    out.setdefault("reactions", np.full((len(f), 5), np.nan))
     ok &= out["residual"] <= np.maximum(tol, out.pop("floor"))
     if not ok.all():
-        failures = _failures(geo, f, w, u, ok)
+        failures = _failures(geo, f, w, u, ok, None if held is None else np.isnan(held).astype(float))
         if on_failure == "raise":
             k, reason = next(iter(failures.items()))
             force, _, balls = _evaluate(geo, np.nan_to_num(u[k:k + 1]), w[k:k + 1] ** 2, deriv=False)
             raise ConvergenceError("combined.load_distribution", iterations=int(it[k]),
-                                   residual=_measure(geo, f[k:k + 1], force, balls)[1][0], estimate=u[k],
+                                   residual=_measure(geo, f[k:k + 1], force, balls, None if held is None else
+                                                     np.isnan(held[k:k + 1]).astype(float))[1][0], estimate=u[k],
                                    reason=f"loads {f[k].tolist()} at {w[k] / RPM:g} rpm: {reason} "
                                           f"({int((~ok).sum())} of {ok.size} cases failed)")
     for key in out:
         out[key][~ok] = np.nan
+    if held is not None:  # the loads in equilibrium: the reactions on the held freedoms
+        f = np.where(np.isnan(held), f, out["reactions"])
     notes = _notes(geo, f, w, out, ok)
     if not ok.all():
         notes += _failure_notes(failures)
@@ -625,7 +669,33 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
                                                and (k != "azimuth" or z)})
 
 
-def _failures(geo, loads, w, u, ok):
+def _held(f, w, shape, prescribed):
+    """Loads, speeds and prescribed displacements broadcast to one flat batch (held None if none)."""
+    if prescribed is None:
+        return f, w, None, shape
+    p = np.asarray(as_float("prescribed_displacement", prescribed), dtype=float)
+    if p.shape[-1:] != (5,):
+        raise InputError("prescribed_displacement must have a last axis of length 5 (delta_x, delta_y, delta_z, "
+                         f"theta_x, theta_y; NaN for a freedom under load), got shape {p.shape}")
+    if np.any(np.isinf(p)):
+        raise InputError("prescribed_displacement must be finite or NaN (a freedom under load) [m, rad]")
+    full = np.broadcast_shapes(shape, p.shape[:-1])
+    f = np.broadcast_to(f.reshape(shape + (5,)), full + (5,)).reshape(-1, 5)
+    w = np.broadcast_to(w.reshape(shape), full).ravel()
+    held = np.ascontiguousarray(np.broadcast_to(p, full + (5,)).reshape(-1, 5))
+    both = ~np.isnan(held) & (f != 0)
+    if both.any():
+        k, j = np.argwhere(both)[0]
+        name = ("F_x", "F_y", "F_z", "M_x", "M_y")[j]
+        raise InputError(f"loads: {name} = {f[k, j]:g} [N, N m] is given on a freedom whose displacement is "
+                         "prescribed; give each freedom either a load or a displacement (its reaction is "
+                         "computed)")
+    if np.all(np.isnan(held)):
+        return np.ascontiguousarray(f), np.ascontiguousarray(w), None, full
+    return np.ascontiguousarray(f), np.ascontiguousarray(w), held, full
+
+
+def _failures(geo, loads, w, u, ok, free=None):
     """{case: reason} for every failed case, in case order, judged at the last rest iterate (every one a
     solver's failure: the model has a solution for any load since F_z <= 0 is solved with the full groove)."""
     bad = np.flatnonzero(~ok)
@@ -637,7 +707,7 @@ def _failures(geo, loads, w, u, ok):
         sc = np.array([1.0, 1.0, 1.0, 2.0 / geo.dm, 2.0 / geo.dm])
         sv = np.linalg.svd(stiff * sc[:, None] * sc[None, :], compute_uv=False)
         inv_cond[solved] = sv[:, -1] / np.maximum(sv[:, 0], 1e-300)
-        floor[solved] = _measure(geo, loads[solved], force, balls)[2]
+        floor[solved] = _measure(geo, loads[solved], force, balls, None if free is None else free[solved])[2]
     out = {}
     for k in bad:
         if floor[k] >= _RESOLVABLE:
