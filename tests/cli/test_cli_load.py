@@ -14,7 +14,7 @@ from bearinglab.quasistatic import combined, sets
 from bearinglab.units import RPM
 
 KEYS = ["displacement_x_um", "displacement_y_um", "displacement_z_um", "tilt_x_mrad", "tilt_y_mrad",
-        "axial_play_takeup_um", "stiffness_matrix", "max_ball_load_N", "converged", "residual", "iterations", "balls", "inputs", "warnings"]
+        "axial_play_takeup_um", "reactions", "stiffness_matrix", "max_ball_load_N", "converged", "residual", "iterations", "balls", "inputs", "warnings"]
 BALL_KEYS = ["azimuth_deg", "load_inner_N", "load_outer_N", "contact_angle_inner_deg", "contact_angle_outer_deg",
              "max_pressure_inner_MPa", "max_pressure_outer_MPa"]
 
@@ -235,3 +235,38 @@ def test_displacements_say_what_they_include(capsys):
     assert doc["axial_play_takeup_um"] == 0.0
     assert [m["axial_play_takeup_um"] for m in doc["bearings"]] == pytest.approx([hand_um] * 2, rel=1e-12)
     assert all(m["displacement_z_um"] > hand_um for m in doc["bearings"])
+
+
+def test_prescribed_displacements_and_reactions(capsys):
+    """--tilt-x/--tilt-y '0 mrad' hold the ring square; the reactions are in the JSON (N, N mm) and the
+    table, and equal the library's (issue 20 item 18)."""
+    args = ["load-distribution", "-b", "B218", "--fx", "5 kN", "--fz", "10 kN", "--tilt-x", "0 mrad", "--tilt-y",
+            "0 mrad"]
+    doc = json.loads(_json_of(capsys, [*args, "--json"]))
+    nan = float("nan")
+    r = combined.combined_analysis(catalog.get("B218"), [5e3, 0, 10e3, 0, 0],
+                                   prescribed_displacement=[nan, nan, nan, 0.0, 0.0])
+    assert list(doc["reactions"]) == ["mx_Nmm", "my_Nmm"]
+    assert doc["reactions"]["my_Nmm"] == pytest.approx(r.reactions[4] * 1e3, rel=1e-12)
+    assert doc["tilt_x_mrad"] == 0.0 and doc["tilt_y_mrad"] == 0.0
+    assert doc["inputs"]["prescribed"] == {"tilt_x_mrad": 0.0, "tilt_y_mrad": 0.0}
+    assert main(args) == 0
+    out = " ".join(capsys.readouterr().out.split())
+    assert f"reaction M_y [N·mm] (held) │ {r.reactions[4] * 1e3:.2f} │" in out
+    # the axial displacement held: its thrust comes back as the reaction
+    dz = f"{doc['displacement_z_um']!r} um"
+    doc2 = json.loads(_json_of(capsys, ["load-distribution", "-b", "B218", "--fx", "5 kN", "--dz", dz, "--tilt-x",
+                                        "0 mrad", "--tilt-y", "0 mrad", "--json"]))
+    assert doc2["reactions"]["fz_N"] == pytest.approx(10e3, rel=1e-8)
+    free = json.loads(_json_of(capsys, ["load-distribution", "-b", "B218", "--fx", "5 kN", "--fz", "10 kN", "--json"]))
+    assert free["reactions"] == {} and free["tilt_y_mrad"] == pytest.approx(3.0, rel=0.05)  # the free ring tilts
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--fz", "10 kN", "--dz", "700 um"], "dz: give --fz or --dz, not both"),
+    (["--axial-load", "10 kN", "--dz", "700 um"], "dz: give --fz or --dz, not both"),
+    (["--fz", "10 kN", "--tilt-y", "5 N"], "tilt-y"),
+])
+def test_prescribed_displacement_errors(capsys, args, words):
+    code, _, err = run(capsys, "load-distribution", "-b", "B218", "--fx", "1 kN", *args)
+    assert code == 2 and words in _one_line_error(err)

@@ -63,6 +63,15 @@ SpeedOpt = Annotated[str, typer.Option("--speed", "-n", help="Inner-ring speed, 
 FirstBallOpt = Annotated[str, typer.Option("--first-ball-angle", help="Azimuth of ball 0 from +x, e.g. '0 deg'.")]
 StiffnessAtOpt = Annotated[str, typer.Option("--stiffness-at", help="operating (Hertz constants at each contact's angle; default) | free (at α0, ISO/TS 16281).")]
 PlotOpt = Annotated[Path | None, typer.Option("--plot", help="Polar plot of the ball loads into this PNG/PDF/SVG file.")]
+_HELD = "Prescribed displacements (instead of the load on that freedom)"
+DxOpt = Annotated[str | None, typer.Option("--dx", help="Hold delta_x at this value, e.g. '10 um' (instead of --fx).", rich_help_panel=_HELD)]
+DyOpt = Annotated[str | None, typer.Option("--dy", help="Hold delta_y, e.g. '0 um' (instead of --fy).", rich_help_panel=_HELD)]
+DzOpt = Annotated[str | None, typer.Option("--dz", help="Hold delta_z, from the concentric position (half the axial play included), e.g. '700 um' (instead of --fz).", rich_help_panel=_HELD)]
+TiltXOpt = Annotated[str | None, typer.Option("--tilt-x", help="Hold theta_x, e.g. '0 mrad' (instead of --mx).", rich_help_panel=_HELD)]
+TiltYOpt = Annotated[str | None, typer.Option("--tilt-y", help="Hold theta_y, e.g. '0 mrad' (instead of --my); --tilt-x/--tilt-y '0 mrad' hold the ring square.", rich_help_panel=_HELD)]
+#: The freedoms, their load options, the JSON keys of their reactions and their displacement options.
+_FREEDOMS = (("fx", "fx_N", "dx", "length"), ("fy", "fy_N", "dy", "length"), ("fz", "fz_N", "dz", "length"),
+             ("mx", "mx_Nmm", "tilt-x", "angle"), ("my", "my_Nmm", "tilt-y", "angle"))
 
 
 def _speeds(text, allow_list, pitch_diameter):
@@ -109,6 +118,52 @@ def _warnings(b, loads, r, notes):
     return list(dict.fromkeys(notes))
 
 
+def _held(texts, given):
+    """The prescribed displacements [m, rad] (NaN: free) from the five options, or None; ``given`` tells
+    which load options were typed (a freedom takes a load or a displacement, not both)."""
+    import numpy as np
+
+    from ..units import parse_quantity
+
+    if all(t is None for t in texts):
+        return None
+    held = np.full(5, np.nan)
+    for k, ((load, _, name, kind), text) in enumerate(zip(_FREEDOMS, texts, strict=True)):
+        if text is None:
+            continue
+        if given[k]:
+            raise InputError(f"{name}: give --{load} or --{name}, not both (a freedom takes a load or a "
+                             "displacement)")
+        held[k] = parse_quantity(text, kind, name)
+        if not np.isfinite(held[k]):
+            raise InputError(f"{name} must be finite, got {text!r}")
+    return held
+
+
+def _reactions(reactions, held):
+    """The reactions on the held freedoms, by JSON key (N, N mm); empty without held freedoms."""
+    if held is None:
+        return {}
+    import numpy as np
+
+    out = {}
+    for k, (_, key, _, _) in enumerate(_FREEDOMS):
+        if not np.isnan(held[k]):
+            out[key] = float(reactions[k]) * (1e3 if key.endswith("Nmm") else 1.0)
+    return out
+
+
+def _prescribed_echo(held):
+    """The prescribed displacements as typed, in engineering units (um, mrad), for the inputs echo."""
+    if held is None:
+        return {}
+    import numpy as np
+
+    keys = ("dx_um", "dy_um", "dz_um", "tilt_x_mrad", "tilt_y_mrad")
+    scale = (1e6, 1e6, 1e6, 1e3, 1e3)
+    return {"prescribed": {k: float(v * f) for k, v, f in zip(keys, held, scale, strict=True) if not np.isnan(v)}}
+
+
 def _takeup_um(b):
     """Half the axial play, A sin(alpha0) [um]: the part of delta_z a thrust spends before any ball carries
     (displacements are counted from the concentric position, MASTA's convention; issue 20 item 11)."""
@@ -128,13 +183,16 @@ def _set_takeup_um(bearings, orient):
     return min(_takeup_um(b) for b in bearings)
 
 
-def _with_takeup(doc, takeup_um):
-    """``doc`` with ``axial_play_takeup_um`` after the tilts (so the elastic part is one subtraction)."""
+def _with_takeup(doc, takeup_um, reactions=None):
+    """``doc`` with ``axial_play_takeup_um`` after the tilts (so the elastic part is one subtraction) and,
+    with ``reactions``, the reactions of the held freedoms after it."""
     out = {}
     for key, value in doc.items():
         out[key] = value
         if key == "tilt_y_mrad":
             out["axial_play_takeup_um"] = takeup_um
+            if reactions is not None:
+                out["reactions"] = reactions
     return out
 
 
@@ -148,6 +206,7 @@ def _case(r, k):
 def load_distribution(
     fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
     radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
+    dx: DxOpt = None, dy: DyOpt = None, dz: DzOpt = None, tilt_x: TiltXOpt = None, tilt_y: TiltYOpt = None,
     speed: SpeedOpt = "0 rpm", first_ball_angle: FirstBallOpt = "0 deg", stiffness_at: StiffnessAtOpt = "operating",
     bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
     balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
@@ -169,6 +228,9 @@ def load_distribution(
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)
     loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
+    held = _held((dx, dy, dz, tilt_x, tilt_y), (fx is not None or radial_load is not None, fy is not None,
+                                                fz is not None or axial_load is not None, mx is not None,
+                                                my is not None))
     w = _speeds(speed, ross is not None, b.require("pitch_diameter"))
     phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
     choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
@@ -177,13 +239,16 @@ def load_distribution(
     if ross is not None:
         check_output(ross, "ross", (".json",))
     cases = np.broadcast_to(loads, w.shape + (5,))
-    r, notes = _solve(combined.combined_analysis, b, cases, w, first_ball_angle=phi0, stiffness_at=stiffness_at)
-    notes = _warnings(b, cases, r, [*r.warnings, *notes])
+    r, notes = _solve(combined.combined_analysis, b, cases, w, first_ball_angle=phi0, stiffness_at=stiffness_at,
+                      prescribed_displacement=held)
+    notes = _warnings(b, np.reshape(r.loads, (-1, 5)), r, [*r.warnings, *notes])
     docs = []
     for k in range(w.size):
         case = _case(r, k)
-        docs.append({**_with_takeup(tables.load_distribution(case), _takeup_um(b)),
-                     "inputs": _inputs(b, loads, w[k], phi0, stiffness_at=stiffness_at), "warnings": notes})
+        docs.append({**_with_takeup(tables.load_distribution(case), _takeup_um(b),
+                                    _reactions(np.reshape(r.reactions, (-1, 5))[k], held)),
+                     "inputs": _inputs(b, loads, w[k], phi0, stiffness_at=stiffness_at, **_prescribed_echo(held)),
+                     "warnings": notes})
     if ross is not None:
         rotordynamics.write_coefficients(rotordynamics.from_stiffness(np.reshape(r.stiffness, (-1, 5, 5)), w), ross)
     if plot is not None:
@@ -234,6 +299,12 @@ def _print_ring(title, doc, body="ring", origin="concentric", extra=()):
             ["θ_x, θ_y [mrad]", f"{_f(doc['tilt_x_mrad'], '.5f')}, {_f(doc['tilt_y_mrad'], '.5f')}"]]
     if doc.get("axial_play_takeup_um") is not None:
         rows.append(["half axial play in δ_z [µm]", _f(doc["axial_play_takeup_um"], ".4f")])
+    if doc.get("reactions"):
+        names = {"fx_N": "F_x [N]", "fy_N": "F_y [N]", "fz_N": "F_z [N]", "mx_Nmm": "M_x [N·mm]",
+                 "my_Nmm": "M_y [N·mm]"}
+        for key, value in doc["reactions"].items():
+            shown = 0.0 if abs(value) < 1e-6 else value  # below a micronewton: rounding of a symmetric case
+            rows.append([f"reaction {names[key]} (held)", _sig(shown)])
     rows.append(["max ball load [N]", _sig(doc["max_ball_load_N"])])
     k = doc["stiffness_matrix"]
     if k is not None and k[0][0] is not None:
