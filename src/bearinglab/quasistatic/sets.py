@@ -291,7 +291,7 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
         (:func:`default_spacing`; a bearing without a width then raises :class:`InputError`). It sets the
         lever of the tilt stiffness: with the pressure centres a = (d_m/2) tan(alpha) beyond (DB) or
         short of (DF) the bearing centres, the effective spread is spacing + 2a for DB and
-        |spacing - 2a| for DF, so a DB pair is stiffer in tilt than a DF pair except at spacing 0. [m]
+        abs(spacing - 2a) for DF, so a DB pair is stiffer in tilt than a DF pair except at spacing 0. [m]
     preload : float, optional
         Axial preload force of each group of like-oriented bearings at rest, no external load; 0 assembles
         the set at first contact (zero preload, no axial play). [N]
