@@ -182,3 +182,15 @@ def test_holding_the_free_solution_gives_its_loads_back(fx, fy, fz, mx, my, mask
     total = np.sum(ref.ball_load_inner)
     assert np.all(np.abs((r.loads - loads) * scale) <= 1e-8 * total)
     assert_allclose(r.displacement[~np.array(mask)], ref.displacement[~np.array(mask)], rtol=1e-6, atol=1e-12)
+
+
+@pytest.mark.parametrize(("held", "words"), [
+    ([NAN, NAN, 2.0, NAN, NAN], r"delta_z = 2000 mm moves the rings by more than one ball diameter \(D = 22.23"),
+    ([NAN, NAN, NAN, math.radians(95), NAN], r"theta_x = 1658.06 mrad .* at most 354.828 mrad"),
+    ([NAN, NAN, 1e300, NAN, NAN], "delta_z"),
+])
+def test_a_displacement_beyond_one_ball_diameter_is_refused(held, words):
+    """No load moves a groove centre through a ball: B218 (D = 22.23 mm, d_m/2 = 62.65 mm, so a tilt of
+    at most 22.23 / 62.65 = 0.3548 rad)."""
+    with pytest.raises(InputError, match=words):
+        combined.combined_analysis(B218, [1e3, 0, 0, 0, 0], prescribed_displacement=held)

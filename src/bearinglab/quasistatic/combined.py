@@ -640,6 +640,8 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     max_iter = int(check_integer("max_iter", max_iter, 1))
     geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
                     reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, bearing_type)
+    if held is not None:
+        _check_held(geo, held)
     u, ok, it, final = _solve(geo, f, w**2, tol, max_iter, final=True, held=held)
     out = _outputs(geo, f, w, u, ok, it, final, held)
     out.setdefault("reactions", np.full((len(f), 5), np.nan))
@@ -695,6 +697,23 @@ def _held(f, w, shape, prescribed):
     return np.ascontiguousarray(f), np.ascontiguousarray(w), held, full
 
 
+def _check_held(geo, held):
+    """A prescribed displacement may move a groove-curvature centre by at most one ball diameter (tilts
+    at the pitch radius d_m/2): beyond that the rings would pass through the balls, which no load can
+    do; such an input is a unit mistake (InputError naming the freedom and the limit)."""
+    names = ("delta_x", "delta_y", "delta_z", "theta_x", "theta_y")
+    arm = np.array([1.0, 1.0, 1.0, geo.dm / 2.0, geo.dm / 2.0])
+    with np.errstate(invalid="ignore"):
+        bad = np.abs(held) * arm > geo.d
+    if bad.any():
+        k, j = np.argwhere(bad)[0]
+        unit, scale = ("mm", 1e3) if j < 3 else ("mrad", 1e3)
+        raise InputError(f"prescribed_displacement: {names[j]} = {held[k, j] * scale:.6g} {unit} moves the rings by "
+                         f"more than one ball diameter (D = {geo.d * 1e3:.6g} mm"
+                         + (f"; a tilt at most {geo.d / arm[j] * 1e3:.6g} mrad at the pitch radius)" if j >= 3
+                            else ")"))
+
+
 def _failures(geo, loads, w, u, ok, free=None):
     """{case: reason} for every failed case, in case order, judged at the last rest iterate (every one a
     solver's failure: the model has a solution for any load since F_z <= 0 is solved with the full groove)."""
@@ -705,8 +724,9 @@ def _failures(geo, loads, w, u, ok, free=None):
         force, stiff, balls = _evaluate(geo, u[solved], np.zeros(solved.size))
         loaded[solved] = np.sum(balls["qi"] > 0, axis=1)
         sc = np.array([1.0, 1.0, 1.0, 2.0 / geo.dm, 2.0 / geo.dm])
-        sv = np.linalg.svd(stiff * sc[:, None] * sc[None, :], compute_uv=False)
-        inv_cond[solved] = sv[:, -1] / np.maximum(sv[:, 0], 1e-300)
+        finite = np.all(np.isfinite(stiff), axis=(1, 2))  # an overflowing iterate has no condition number
+        sv = np.linalg.svd(np.where(finite[:, None, None], stiff, 0.0) * sc[:, None] * sc[None, :], compute_uv=False)
+        inv_cond[solved] = np.where(finite, sv[:, -1] / np.maximum(sv[:, 0], 1e-300), 0.0)
         floor[solved] = _measure(geo, loads[solved], force, balls, None if free is None else free[solved])[2]
     out = {}
     for k in bad:
