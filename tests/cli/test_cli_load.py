@@ -14,7 +14,7 @@ from bearinglab.quasistatic import combined, sets
 from bearinglab.units import RPM
 
 KEYS = ["displacement_x_um", "displacement_y_um", "displacement_z_um", "tilt_x_mrad", "tilt_y_mrad",
-        "stiffness_matrix", "max_ball_load_N", "converged", "residual", "iterations", "balls", "inputs", "warnings"]
+        "axial_play_takeup_um", "reactions", "stiffness_matrix", "max_ball_load_N", "converged", "residual", "iterations", "balls", "inputs", "warnings"]
 BALL_KEYS = ["azimuth_deg", "load_inner_N", "load_outer_N", "contact_angle_inner_deg", "contact_angle_outer_deg",
              "max_pressure_inner_MPa", "max_pressure_outer_MPa"]
 
@@ -142,10 +142,12 @@ def test_bearing_set_messages_in_engineering_units(capsys, option, words):
 
 
 def test_bearing_set_prints_no_negative_zero(capsys):
-    code, out, err = run(capsys, "bearing-set", "-b", "B218", "--fz", "1 kN", "--preload", "500 N")
+    code, out, err = run(capsys, "bearing-set", "-b", "B218", "--fz", "1 kN", "--preload", "500 N", "--spacing",
+                         "0 mm")
     assert code == 0, err
     assert "z = 0 mm" in out and not re.search(r"(?<![\w.])-0(?:\.0*)?(?![\w.])", out)
-    code, out, _ = run(capsys, "bearing-set", "-b", "B218", "--fz", "1 kN", "--preload", "500 N", "--json")
+    code, out, _ = run(capsys, "bearing-set", "-b", "B218", "--fz", "1 kN", "--preload", "500 N", "--spacing",
+                       "0 mm", "--json")
     assert [math.copysign(1.0, m["position_mm"]) for m in json.loads(out)["bearings"]] == [1.0, 1.0]
 
 
@@ -174,3 +176,98 @@ def test_a_set_prints_no_empty_ball_table_and_the_largest_ball_load(capsys):
 def _json_of(capsys, args):
     assert main(args) == 0
     return capsys.readouterr().out
+
+
+# ----------------------------------------------------------------------------- issue 20 items 10 and 11
+def test_bearing_set_default_spacing_is_one_width_and_said(capsys):
+    """Without --spacing a duplex pair sits side by side (B218: B = 30 mm); JSON and table say so; a DB
+    pair is then stiffer in tilt than a DF pair (a default of 0 mm gave both the same)."""
+    docs = {}
+    for kind in ("DB", "DF"):
+        docs[kind] = json.loads(_json_of(capsys, ["bearing-set", "-b", "B218", "--arrangement", kind, "--preload",
+                                                  "2 kN", "--json"]))
+        inputs = docs[kind]["inputs"]
+        assert inputs["spacing_mm"] == pytest.approx(30.0) and inputs["spacing_default"] is True
+        assert [m["position_mm"] for m in docs[kind]["bearings"]] == pytest.approx([-15.0, 15.0])
+    assert docs["DB"]["stiffness_matrix"][4][4] > 2 * docs["DF"]["stiffness_matrix"][4][4]
+    given = json.loads(_json_of(capsys, ["bearing-set", "-b", "B218", "--spacing", "30 mm", "--preload", "2 kN",
+                                         "--json"]))
+    assert given["inputs"]["spacing_default"] is False
+    assert given["stiffness_matrix"] == docs["DB"]["stiffness_matrix"]
+    assert main(["bearing-set", "-b", "B218", "--preload", "2 kN"]) == 0
+    out = " ".join(capsys.readouterr().out.split())
+    assert "spacing [mm] │ 30 (default: side by side, one width) │" in out
+
+
+def test_bearing_set_without_width_needs_spacing(capsys, tmp_path):
+    cat = tmp_path / "cat.toml"
+    cat.write_text('[bearings."NOWIDTH"]\ntype = "angular"\nballs = 15\nball_diameter = "7.938 mm"\n'
+                   'pitch_diameter = "52.5 mm"\ninner_conformity = 0.52\nouter_conformity = 0.53\n'
+                   'contact_angle = "15 deg"\n', encoding="utf-8")
+    code, _, err = run(capsys, "bearing-set", "--catalog", str(cat), "-b", "NOWIDTH", "--preload", "100 N")
+    line = _one_line_error(err)
+    assert code == 2 and "spacing" in line and "NOWIDTH" in line and "no width" in line
+    code, _, err = run(capsys, "bearing-set", "--catalog", str(cat), "-b", "NOWIDTH", "--preload", "100 N",
+                       "--spacing", "20 mm")
+    assert code == 0, err
+
+
+def test_displacements_say_what_they_include(capsys):
+    """delta_z is counted from the concentric position: half the axial play, A sin(alpha0), is inside it.
+    B218 (catalog: D = 22.23 mm, f_i = f_o = 0.5232, alpha0 = 40 deg): s_a/2 = 0.0464 x 22.23 mm x sin 40 deg
+    = 0.6630 mm, computed here by hand."""
+    hand_um = (0.5232 + 0.5232 - 1.0) * 22.23e3 * math.sin(math.radians(40.0))
+    assert hand_um == pytest.approx(663.0, abs=0.1)
+    doc = json.loads(_json_of(capsys, ["load-distribution", "-b", "B218", "--fz", "10 kN", "--json"]))
+    assert doc["axial_play_takeup_um"] == pytest.approx(hand_um, rel=1e-12)
+    elastic = doc["displacement_z_um"] - doc["axial_play_takeup_um"]
+    # the elastic part is the static thrust model's delta_a, which is measured from first contact
+    from bearinglab import static
+    b = catalog.get("B218")
+    ref = static.contact_angle_under_thrust(10e3, b.n_balls, b.ball_diameter, b.pitch_diameter, b.inner_conformity,
+                                            b.outer_conformity, b.contact_angle, b.reduced_modulus)
+    assert elastic == pytest.approx(ref.axial_displacement * 1e6, rel=1e-8)
+    assert main(["load-distribution", "-b", "B218", "--fz", "10 kN"]) == 0
+    out = " ".join(capsys.readouterr().out.split())
+    assert "(from concentric)" in out and f"half axial play in δ_z [µm] │ {hand_um:.4f} │" in out
+    # a set of opposed bearings counts the shaft from the assembled set: no play inside; each bearing's own
+    # displacement (in its frame, from concentric) has its half play
+    doc = json.loads(_json_of(capsys, ["bearing-set", "-b", "B218", "--preload", "2 kN", "--json"]))
+    assert doc["axial_play_takeup_um"] == 0.0
+    assert [m["axial_play_takeup_um"] for m in doc["bearings"]] == pytest.approx([hand_um] * 2, rel=1e-12)
+    assert all(m["displacement_z_um"] > hand_um for m in doc["bearings"])
+
+
+def test_prescribed_displacements_and_reactions(capsys):
+    """--tilt-x/--tilt-y '0 mrad' hold the ring square; the reactions are in the JSON (N, N mm) and the
+    table, and equal the library's (issue 20 item 18)."""
+    args = ["load-distribution", "-b", "B218", "--fx", "5 kN", "--fz", "10 kN", "--tilt-x", "0 mrad", "--tilt-y",
+            "0 mrad"]
+    doc = json.loads(_json_of(capsys, [*args, "--json"]))
+    nan = float("nan")
+    r = combined.combined_analysis(catalog.get("B218"), [5e3, 0, 10e3, 0, 0],
+                                   prescribed_displacement=[nan, nan, nan, 0.0, 0.0])
+    assert list(doc["reactions"]) == ["mx_Nmm", "my_Nmm"]
+    assert doc["reactions"]["my_Nmm"] == pytest.approx(r.reactions[4] * 1e3, rel=1e-12)
+    assert doc["tilt_x_mrad"] == 0.0 and doc["tilt_y_mrad"] == 0.0
+    assert doc["inputs"]["prescribed"] == {"tilt_x_mrad": 0.0, "tilt_y_mrad": 0.0}
+    assert main(args) == 0
+    out = " ".join(capsys.readouterr().out.split())
+    assert f"reaction M_y [N·mm] (held) │ {r.reactions[4] * 1e3:.2f} │" in out
+    # the axial displacement held: its thrust comes back as the reaction
+    dz = f"{doc['displacement_z_um']!r} um"
+    doc2 = json.loads(_json_of(capsys, ["load-distribution", "-b", "B218", "--fx", "5 kN", "--dz", dz, "--tilt-x",
+                                        "0 mrad", "--tilt-y", "0 mrad", "--json"]))
+    assert doc2["reactions"]["fz_N"] == pytest.approx(10e3, rel=1e-8)
+    free = json.loads(_json_of(capsys, ["load-distribution", "-b", "B218", "--fx", "5 kN", "--fz", "10 kN", "--json"]))
+    assert free["reactions"] == {} and free["tilt_y_mrad"] == pytest.approx(3.0, rel=0.05)  # the free ring tilts
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--fz", "10 kN", "--dz", "700 um"], "dz: give --fz or --dz, not both"),
+    (["--axial-load", "10 kN", "--dz", "700 um"], "dz: give --fz or --dz, not both"),
+    (["--fz", "10 kN", "--tilt-y", "5 N"], "tilt-y"),
+])
+def test_prescribed_displacement_errors(capsys, args, words):
+    code, _, err = run(capsys, "load-distribution", "-b", "B218", "--fx", "1 kN", *args)
+    assert code == 2 and words in _one_line_error(err)

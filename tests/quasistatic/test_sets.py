@@ -127,7 +127,62 @@ def test_arrangements_and_inputs():
     with pytest.raises(InputError, match="arrangement must be one of"):
         sets.arrangement("XX", 0.1)
     with pytest.raises(InputError, match="tandem"):
-        sets.set_analysis(SPINDLE, np.zeros(5), arrangement_kind="DT", preload=100.0)
+        sets.set_analysis(SPINDLE, np.zeros(5), arrangement_kind="DT", spacing=0.05, preload=100.0)
     with pytest.raises(InputError, match="preload_displacement.*tandem"):
-        sets.set_analysis(SPINDLE, np.zeros(5), arrangement_kind="DT", preload_displacement=5e-6)
+        sets.set_analysis(SPINDLE, np.zeros(5), arrangement_kind="DT", spacing=0.05, preload_displacement=5e-6)
 
+
+
+# --------------------------------------------------------------------------- issue 20 item 10: spacing
+def test_default_spacing_is_one_ring_width_and_reported():
+    """Bearings side by side: centres one width apart (B218: B = 30 mm, catalog), flagged as the default."""
+    s = sets.set_analysis(B218, np.zeros(5), arrangement_kind="DB", preload=2000.0)
+    assert s.default_spacing is True
+    assert_allclose(s.positions, [-0.015, 0.015], rtol=0, atol=1e-15)
+    given = sets.set_analysis(B218, np.zeros(5), arrangement_kind="DB", spacing=0.03, preload=2000.0)
+    assert given.default_spacing is False
+    assert_allclose(given.stiffness, s.stiffness, rtol=1e-12)
+    # unequal widths: (B_0 + B_1) / 2 between the centres
+    narrow = B218.replace(width=0.020)
+    _, z = sets.arrangement("DB", sets.default_spacing([B218, narrow]))
+    assert_allclose(np.diff(z), [0.025], rtol=1e-12)
+
+
+def test_bearing_without_width_needs_a_spacing():
+    assert SPINDLE.width is None
+    with pytest.raises(InputError, match=r"spacing: bearing 0 .* has no width"):
+        sets.set_analysis(SPINDLE, np.zeros(5), arrangement_kind="DB", preload=100.0)
+    with pytest.raises(InputError, match="one value or one per gap"):
+        sets.arrangement("DB", [0.01, 0.02])
+
+
+@pytest.mark.parametrize("spacing", [None, 0.03, 0.2])
+def test_tilt_stiffness_of_db_and_df_from_one_bearing_and_the_effective_spread(spacing):
+    """Hand calculation of the set's tilt stiffness from the single bearing under the preload.
+
+    One bearing under its preload P alone has the tangent stiffness K (k_xx, k_x.theta_y, k_theta_y). A
+    radial force through its stiffness centre, c = k_x.theta / k_xx from the bearing centre along its own
+    axis, moves it without tilting it. Two such bearings, one mirrored (c -> -c), a distance s apart: the
+    stiffness centres are L apart, L = s + 2|c| back-to-back (they lie outside the bearings) and
+    |s - 2|c|| face-to-face; the shaft tilting by theta about the middle moves each by theta L / 2, so
+    k_theta = 2 (k_xx (L/2)^2 + k_theta - k_x.theta^2 / k_xx). c is close to the pressure-centre distance
+    (d_m / 2) tan(alpha) of the loaded balls. The Hertz constants at alpha0 make K exactly symmetric
+    (k_x.theta = k_theta.x), which the completed square assumes.
+    """
+    p = 2000.0
+    one = combined.combined_analysis(B218, [0.0, 0.0, p, 0.0, 0.0], stiffness_at="free")
+    k = one.stiffness
+    kxx, kxt, ktt = k[0, 0], k[0, 4], k[4, 4]
+    c = abs(kxt / kxx)
+    alpha = one.contact_angle_inner[0]
+    assert c == pytest.approx(B218.pitch_diameter / 2 * math.tan(alpha), rel=0.01)
+    s_used = B218.width if spacing is None else spacing
+    spread = {"DB": s_used + 2 * c, "DF": abs(s_used - 2 * c)}
+    got = {kind: sets.set_analysis(B218, np.zeros(5), arrangement_kind=kind, spacing=spacing, preload=p,
+                                  stiffness_at="free").stiffness
+           for kind in ("DB", "DF")}
+    for kind, big_l in spread.items():
+        hand = 2.0 * (kxx * (big_l / 2) ** 2 + ktt - kxt**2 / kxx)
+        assert got[kind][4, 4] == pytest.approx(hand, rel=1e-9)
+        assert got[kind][3, 3] == pytest.approx(hand, rel=1e-9)  # axisymmetric
+    assert got["DB"][4, 4] > got["DF"][4, 4]

@@ -63,6 +63,15 @@ SpeedOpt = Annotated[str, typer.Option("--speed", "-n", help="Inner-ring speed, 
 FirstBallOpt = Annotated[str, typer.Option("--first-ball-angle", help="Azimuth of ball 0 from +x, e.g. '0 deg'.")]
 StiffnessAtOpt = Annotated[str, typer.Option("--stiffness-at", help="operating (Hertz constants at each contact's angle; default) | free (at α0, ISO/TS 16281).")]
 PlotOpt = Annotated[Path | None, typer.Option("--plot", help="Polar plot of the ball loads into this PNG/PDF/SVG file.")]
+_HELD = "Prescribed displacements (instead of the load on that freedom)"
+DxOpt = Annotated[str | None, typer.Option("--dx", help="Hold delta_x at this value, e.g. '10 um' (instead of --fx).", rich_help_panel=_HELD)]
+DyOpt = Annotated[str | None, typer.Option("--dy", help="Hold delta_y, e.g. '0 um' (instead of --fy).", rich_help_panel=_HELD)]
+DzOpt = Annotated[str | None, typer.Option("--dz", help="Hold delta_z, from the concentric position (half the axial play included), e.g. '700 um' (instead of --fz).", rich_help_panel=_HELD)]
+TiltXOpt = Annotated[str | None, typer.Option("--tilt-x", help="Hold theta_x, e.g. '0 mrad' (instead of --mx).", rich_help_panel=_HELD)]
+TiltYOpt = Annotated[str | None, typer.Option("--tilt-y", help="Hold theta_y, e.g. '0 mrad' (instead of --my); --tilt-x/--tilt-y '0 mrad' hold the ring square.", rich_help_panel=_HELD)]
+#: The freedoms, their load options, the JSON keys of their reactions and their displacement options.
+_FREEDOMS = (("fx", "fx_N", "dx", "length"), ("fy", "fy_N", "dy", "length"), ("fz", "fz_N", "dz", "length"),
+             ("mx", "mx_Nmm", "tilt-x", "angle"), ("my", "my_Nmm", "tilt-y", "angle"))
 
 
 def _speeds(text, allow_list, pitch_diameter):
@@ -109,6 +118,84 @@ def _warnings(b, loads, r, notes):
     return list(dict.fromkeys(notes))
 
 
+def _held(texts, given):
+    """The prescribed displacements [m, rad] (NaN: free) from the five options, or None; ``given`` tells
+    which load options were typed (a freedom takes a load or a displacement, not both)."""
+    import numpy as np
+
+    from ..units import parse_quantity
+
+    if all(t is None for t in texts):
+        return None
+    held = np.full(5, np.nan)
+    for k, ((load, _, name, kind), text) in enumerate(zip(_FREEDOMS, texts, strict=True)):
+        if text is None:
+            continue
+        if given[k]:
+            raise InputError(f"{name}: give --{load} or --{name}, not both (a freedom takes a load or a "
+                             "displacement)")
+        held[k] = parse_quantity(text, kind, name)
+        if not np.isfinite(held[k]):
+            raise InputError(f"{name} must be finite, got {text!r}")
+    return held
+
+
+def _reactions(reactions, held):
+    """The reactions on the held freedoms, by JSON key (N, N mm); empty without held freedoms."""
+    if held is None:
+        return {}
+    import numpy as np
+
+    out = {}
+    for k, (_, key, _, _) in enumerate(_FREEDOMS):
+        if not np.isnan(held[k]):
+            out[key] = float(reactions[k]) * (1e3 if key.endswith("Nmm") else 1.0)
+    return out
+
+
+def _prescribed_echo(held):
+    """The prescribed displacements as typed, in engineering units (um, mrad), for the inputs echo."""
+    if held is None:
+        return {}
+    import numpy as np
+
+    keys = ("dx_um", "dy_um", "dz_um", "tilt_x_mrad", "tilt_y_mrad")
+    scale = (1e6, 1e6, 1e6, 1e3, 1e3)
+    return {"prescribed": {k: float(v * f) for k, v, f in zip(keys, held, scale, strict=True) if not np.isnan(v)}}
+
+
+def _takeup_um(b):
+    """Half the axial play, A sin(alpha0) [um]: the part of delta_z a thrust spends before any ball carries
+    (displacements are counted from the concentric position, MASTA's convention; issue 20 item 11)."""
+    from ..quasistatic import combined
+
+    _, d, _, fi, fo, a0, _, _ = combined._bearing_args(b)
+    return combined.axial_play_takeup(d, fi, fo, a0) * 1e6
+
+
+def _set_takeup_um(bearings, orient):
+    """The axial play inside the shaft's delta_z [um]: none for opposed bearings (the shaft is counted from
+    the assembled set, play taken up or preloaded), else that of the bearing whose balls touch first."""
+    import numpy as np
+
+    if not np.all(orient == orient[0]):
+        return 0.0
+    return min(_takeup_um(b) for b in bearings)
+
+
+def _with_takeup(doc, takeup_um, reactions=None):
+    """``doc`` with ``axial_play_takeup_um`` after the tilts (so the elastic part is one subtraction) and,
+    with ``reactions``, the reactions of the held freedoms after it."""
+    out = {}
+    for key, value in doc.items():
+        out[key] = value
+        if key == "tilt_y_mrad":
+            out["axial_play_takeup_um"] = takeup_um
+            if reactions is not None:
+                out["reactions"] = reactions
+    return out
+
+
 def _case(r, k):
     """Case k of a batched LoadDistribution (cases on the first axis), as an object with one case's fields."""
     import numpy as np
@@ -119,6 +206,7 @@ def _case(r, k):
 def load_distribution(
     fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
     radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
+    dx: DxOpt = None, dy: DyOpt = None, dz: DzOpt = None, tilt_x: TiltXOpt = None, tilt_y: TiltYOpt = None,
     speed: SpeedOpt = "0 rpm", first_ball_angle: FirstBallOpt = "0 deg", stiffness_at: StiffnessAtOpt = "operating",
     bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
     balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
@@ -140,6 +228,9 @@ def load_distribution(
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
                         ball_material)
     loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
+    held = _held((dx, dy, dz, tilt_x, tilt_y), (fx is not None or radial_load is not None, fy is not None,
+                                                fz is not None or axial_load is not None, mx is not None,
+                                                my is not None))
     w = _speeds(speed, ross is not None, b.require("pitch_diameter"))
     phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
     choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
@@ -148,13 +239,16 @@ def load_distribution(
     if ross is not None:
         check_output(ross, "ross", (".json",))
     cases = np.broadcast_to(loads, w.shape + (5,))
-    r, notes = _solve(combined.combined_analysis, b, cases, w, first_ball_angle=phi0, stiffness_at=stiffness_at)
-    notes = _warnings(b, cases, r, [*r.warnings, *notes])
+    r, notes = _solve(combined.combined_analysis, b, cases, w, first_ball_angle=phi0, stiffness_at=stiffness_at,
+                      prescribed_displacement=held)
+    notes = _warnings(b, np.reshape(r.loads, (-1, 5)), r, [*r.warnings, *notes])
     docs = []
     for k in range(w.size):
         case = _case(r, k)
-        docs.append({**tables.load_distribution(case),
-                     "inputs": _inputs(b, loads, w[k], phi0, stiffness_at=stiffness_at), "warnings": notes})
+        docs.append({**_with_takeup(tables.load_distribution(case), _takeup_um(b),
+                                    _reactions(np.reshape(r.reactions, (-1, 5))[k], held)),
+                     "inputs": _inputs(b, loads, w[k], phi0, stiffness_at=stiffness_at, **_prescribed_echo(held)),
+                     "warnings": notes})
     if ross is not None:
         rotordynamics.write_coefficients(rotordynamics.from_stiffness(np.reshape(r.stiffness, (-1, 5, 5)), w), ross)
     if plot is not None:
@@ -183,10 +277,10 @@ def _sig(x, decimals=2):
     return format(x, f".{min(max(decimals, 3 - math.floor(math.log10(abs(x)))), 12)}f")
 
 
-def _print_case(title, doc, *, balls=True, body="ring"):
+def _print_case(title, doc, *, balls=True, body="ring", origin="concentric", extra=()):
     if balls:
         _print_balls(title, doc)
-    _print_ring(title, doc, body)
+    _print_ring(title, doc, body, origin, extra)
 
 
 def _print_balls(title, doc):
@@ -198,10 +292,20 @@ def _print_balls(title, doc):
            for j, r in enumerate(doc["balls"])])
 
 
-def _print_ring(title, doc, body="ring"):
-    rows = [["δ_x, δ_y, δ_z [µm]", ", ".join(_f(doc[f"displacement_{a}_um"], ".4f") for a in "xyz")],
-            ["θ_x, θ_y [mrad]", f"{_f(doc['tilt_x_mrad'], '.5f')}, {_f(doc['tilt_y_mrad'], '.5f')}"],
-            ["max ball load [N]", _sig(doc["max_ball_load_N"])]]
+def _print_ring(title, doc, body="ring", origin="concentric", extra=()):
+    """The ring (or shaft) table; ``origin`` names where the displacements are counted from."""
+    rows = [*extra,
+            [f"δ_x, δ_y, δ_z [µm] (from {origin})", ", ".join(_f(doc[f"displacement_{a}_um"], ".4f") for a in "xyz")],
+            ["θ_x, θ_y [mrad]", f"{_f(doc['tilt_x_mrad'], '.5f')}, {_f(doc['tilt_y_mrad'], '.5f')}"]]
+    if doc.get("axial_play_takeup_um") is not None:
+        rows.append(["half axial play in δ_z [µm]", _f(doc["axial_play_takeup_um"], ".4f")])
+    if doc.get("reactions"):
+        names = {"fx_N": "F_x [N]", "fy_N": "F_y [N]", "fz_N": "F_z [N]", "mx_Nmm": "M_x [N·mm]",
+                 "my_Nmm": "M_y [N·mm]"}
+        for key, value in doc["reactions"].items():
+            shown = 0.0 if abs(value) < 1e-6 else value  # below a micronewton: rounding of a symmetric case
+            rows.append([f"reaction {names[key]} (held)", _sig(shown)])
+    rows.append(["max ball load [N]", _sig(doc["max_ball_load_N"])])
     k = doc["stiffness_matrix"]
     if k is not None and k[0][0] is not None:
         rows += [["k_xx, k_yy, k_zz [N/µm]", ", ".join(_sig(k[i][i] * 1e-6) for i in range(3))],
@@ -222,7 +326,7 @@ def bearing_set(
     bearing: Annotated[list[str], typer.Option("--bearing", "-b", help="Catalog name; once for every position, or once per bearing from -z to +z.", rich_help_panel="Bearing")],
     catalog: CatalogFile = None,
     arrangement: Annotated[str, typer.Option("--arrangement", help="DB (back-to-back) | DF (face-to-face) | DT (tandem).")] = "DB",
-    spacing: Annotated[str, typer.Option("--spacing", help="Distance between bearing centres, e.g. '100 mm'.")] = "0 mm",
+    spacing: Annotated[str | None, typer.Option("--spacing", help="Distance between bearing centres, e.g. '100 mm'; default: side by side, one ring width B (needs the bearings' width).")] = None,
     preload: Annotated[str | None, typer.Option("--preload", help="Axial preload force at rest, e.g. '500 N'.")] = None,
     preload_offset: Annotated[str | None, typer.Option("--preload-offset", help="Axial interference from first contact (zero preload) instead, e.g. '5 um'; negative is axial play.")] = None,
     fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
@@ -241,7 +345,7 @@ def bearing_set(
     from ..units import parse_quantity
     bl = [_catalog.get(name, catalog=catalog) for name in bearing]
     choice("arrangement", arrangement, tuple(sets.ARRANGEMENTS))
-    s = parse_length(spacing, "spacing", zero=True)
+    s = None if spacing is None else parse_length(spacing, "spacing", zero=True)
     if preload is not None and preload_offset is not None:
         raise InputError("preload: give --preload or --preload-offset, not both")
     fp = 0.0 if preload is None else parse_quantity(preload, "force", "preload")
@@ -258,7 +362,9 @@ def bearing_set(
     st, notes = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], loads, w, arrangement_kind=arrangement,
                        spacing=s, preload=fp, preload_displacement=e, first_ball_angle=phi0, stiffness_at=stiffness_at)
     notes = list(dict.fromkeys([*st.warnings, *notes]))
-    orient, pos = sets.arrangement(arrangement, s, len(st.bearings))
+    orient, pos = sets.arrangement(arrangement, np.diff(st.positions), len(st.bearings))
+    gaps_mm = [float(g) * 1e3 for g in np.diff(st.positions)]
+    spacing_mm = gaps_mm[0] if len(set(gaps_mm)) == 1 else gaps_mm  # one value, or one per gap
     names = [b.designation for b in bl] * (len(st.bearings) if len(bl) == 1 else 1)
     members = []
     for k, part in enumerate(st.bearings):
@@ -270,11 +376,13 @@ def bearing_set(
         members.append({"bearing": names[k], "orientation": int(orient[k]), "position_mm": float(pos[k] * 1e3) + 0.0,  # + 0.0: no -0
                         "loads": {"fx_N": carried[0], "fy_N": carried[1], "fz_N": carried[2],
                                   "mx_Nmm": carried[3] * 1e3, "my_Nmm": carried[4] * 1e3},
-                        **tables.load_distribution(ns)})
-    doc = {**tables.load_distribution(_shaft(st)), "preload_offset_um": st.preload_displacement * 1e6,
+                        **_with_takeup(tables.load_distribution(ns), _takeup_um(bk))})
+    doc = {**_with_takeup(tables.load_distribution(_shaft(st)), _set_takeup_um(bl, orient)),
+           "preload_offset_um": st.preload_displacement * 1e6,
            "bearings": members,
            "inputs": {**_inputs(bl[0], loads, w, phi0, stiffness_at=stiffness_at), "bearings": names,
-                      "arrangement": arrangement, "spacing_mm": s * 1e3, "preload_N": fp,
+                      "arrangement": arrangement, "spacing_mm": spacing_mm, "spacing_default": st.default_spacing,
+                      "preload_N": fp,
                       "preload_offset_um": None if e is None else e * 1e6},
            "warnings": notes}
     del doc["balls"], doc["max_ball_load_N"]
@@ -287,8 +395,11 @@ def bearing_set(
     for k, m in enumerate(members):
         _print_case(f"Bearing {k} ({m['bearing']}, orientation {m['orientation']:+d}, z = {m['position_mm']:g} mm)", m)
     loads = [m["max_ball_load_N"] for m in members if m["max_ball_load_N"] is not None]
+    gaps = ", ".join(f"{g:g}" for g in np.atleast_1d(spacing_mm))
+    spacing_row = ["spacing [mm]", f"{gaps} ({'default: side by side, one width' if st.default_spacing else 'given'})"]
+    origin = "concentric" if np.all(orient == orient[0]) else "assembled"
     _print_case(f"Set {arrangement} of {len(members)}", {**doc, "max_ball_load_N": max(loads, default=None)},
-                balls=False, body="shaft")  # the balls are in each bearing's table
+                balls=False, body="shaft", origin=origin, extra=[spacing_row])  # the balls: each bearing's table
     print_warnings(notes)
     _print_written(plot)
 

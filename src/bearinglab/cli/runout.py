@@ -27,6 +27,7 @@ from ._common import (
     console,
     emit_json,
     execution,
+    print_warnings,
     table,
 )
 
@@ -412,7 +413,8 @@ def runout_command(
     if steps < MIN_STEPS_PER_REV:
         raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-] (the once-per-revolution "
                          f"line needs at least four positions per revolution), got {steps}")
-    t = runout.rotation_sequence(
+    t, notes = _validity(
+        runout.rotation_sequence,
         g,
         e,
         revolutions=revs,
@@ -435,7 +437,7 @@ def runout_command(
     lines = runout.spectrum_lines(spec, t.cage_ratio)
     info = _sequence_dict(t, lines)
     info.update(errors_file=str(errors), start_angle_deg=math.degrees(t.rotation_angle.flat[0]), refine=refine,
-                geometry=_geometry_dict(g))
+                geometry=_geometry_dict(g), warnings=notes)
     if csv_out is not None:
         _atomic_write(csv_out, _trajectory_csv(t))
         info["csv"] = str(csv_out)
@@ -445,6 +447,19 @@ def runout_command(
         emit_json(info)
         return
     _print_sequence(info, t, lines, revs, steps, refine)
+    print_warnings(notes)
+
+
+def _validity(what, *args, **kwargs):
+    """Run a runout model; its result and the messages of its ValidityWarnings (issue 20 item 8)."""
+    import warnings
+
+    from ..errors import ValidityWarning
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", ValidityWarning)
+        result = what(*args, **kwargs)
+    return result, list(dict.fromkeys(str(c.message) for c in caught if issubclass(c.category, ValidityWarning)))
 
 
 def _reject_options_before(ctx):
@@ -466,9 +481,10 @@ def _single(g, e, angle, refine, cage_ratio, plot, json_out, errors):
     from .. import runout
     from ..units import parse_quantity
     psi = 0.0 if angle is None else parse_quantity(angle, "angle", "angle", default_unit="deg")
-    d = runout.initial_displacement(psi, g, e, refine=refine, cage_ratio=cage_ratio)
+    d, notes = _validity(runout.initial_displacement, psi, g, e, refine=refine, cage_ratio=cage_ratio)
     info = _single_dict(d, g)
-    info.update(errors_file=str(errors), refine=refine, cage_ratio=cage_ratio, geometry=_geometry_dict(g))
+    info.update(errors_file=str(errors), refine=refine, cage_ratio=cage_ratio, geometry=_geometry_dict(g),
+                warnings=notes)
     if plot is not None:
         info["figures"] = [str(p) for p in _runout_figures().save_single(d, plot)]
     if json_out:
@@ -477,6 +493,7 @@ def _single(g, e, angle, refine, cage_ratio, plot, json_out, errors):
         _print_single(info)
         if plot is not None:
             console.print(f"figures: {', '.join(info['figures'])}")
+        print_warnings(notes)
 
 
 def _print_sequence(info, t, lines, revs, steps, refine):

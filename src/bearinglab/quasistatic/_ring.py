@@ -5,6 +5,7 @@ Linear algebra
 rowwise           a @ b with every row rounded as in any other batch (BLAS takes another path for one row)
 solve5            batched 5 x 5 linear systems by Gaussian elimination on contiguous columns
 lm_step           the Levenberg-Marquardt step of the ring Newton in scaled variables
+hold              its stiffness with prescribed freedoms held (no equation, no step)
 
 Start
 -----
@@ -23,7 +24,7 @@ import math
 
 import numpy as np
 
-__all__ = ["lm_step", "rowwise", "solve5", "thrust_offset"]
+__all__ = ["hold", "lm_step", "rowwise", "solve5", "thrust_offset"]
 
 _PIVOT = 1e-10  # a pivot below this fraction of the largest diagonal entry goes to LAPACK (partial pivoting)
 _START_ITER = 5  # Newton steps of the thrust offset (a start only; see thrust_offset)
@@ -129,3 +130,19 @@ def thrust_offset(per_ball, big_a, free_angle, radial_offset, kn0):
         dh = k23 * (s * c13 * c13 + (rho - big_a) * (2.0 / 3.0) * g * g / rho**3 / c13)
         z = np.maximum(z - h / dh, 0.5 * (z + z0))  # never back past first contact
     return np.where(per_ball > 0, z, 0.0)
+
+
+def hold(stiff, free):
+    """The stiffness of the ring Newton with prescribed (held) freedoms: their rows and columns zeroed
+    and their diagonal kept (or the largest diagonal entry where it is zero), so that with a zero
+    right-hand side on those rows the step leaves them exactly where they are (issue 20 item 18).
+
+    ``stiff`` (n, 5, 5), ``free`` (n, 5) of 1.0 (free) or 0.0 (held).
+    """
+    k = stiff * free[:, :, None] * free[:, None, :]
+    diag = np.abs(np.diagonal(stiff, axis1=1, axis2=2))
+    big = np.max(diag, axis=1, keepdims=True)
+    fill = np.where(diag > 0, diag, np.where(big > 0, big, 1.0))
+    idx = np.arange(5)
+    k[:, idx, idx] = np.where(free > 0, k[:, idx, idx], fill)
+    return k

@@ -12,6 +12,7 @@ Geometry
 --------
 ball_azimuths          psi_j = phi0 + 2 pi j / Z, from +x
 groove_offsets         inner groove-curvature centre relative to the outer one, per ball, for a displacement
+axial_play_takeup      A sin(alpha0), the part of delta_z a thrust takes up before any ball carries load
 
 Load distribution
 -----------------
@@ -45,21 +46,26 @@ References
 
 from __future__ import annotations
 
-import functools
 import math
 from typing import NamedTuple
 
 import numpy as np
-from numpy.polynomial import chebyshev as _cheb
 
-from .. import geometry, hertz
+from .. import geometry
 from .._validate import as_float, check_integer, check_nonnegative, check_positive
 from ..errors import ConvergenceError, InputError
 from ..units import RPM
-from . import _ring
+from . import _combined_balls, _ring
+from ._combined_balls import (  # the balls and the bearing data, split off (issue 20); private names
+    _BALL_MAX_ITER,  # noqa: F401 (read by bench/combined.py with the ring's constants)
+    _BALL_TOL,  # noqa: F401
+    _ball_start,
+    _geometry,
+    _hertz_k,
+    _rest_balls,
+    _speed_balls,
+)
 from ._combined_notes import notes as _notes
-from .ball import RACEWAY_CONTROLS, _dynamics
-from .contact import contact_stiffness
 from .light_load import LightLoad, light_load, light_load_warnings
 
 __all__ = [
@@ -68,6 +74,7 @@ __all__ = [
     "Equilibrium",
     "LightLoad",
     "LoadDistribution",
+    "axial_play_takeup",
     "ball_azimuths",
     "combined_analysis",
     "equilibrium",
@@ -79,21 +86,17 @@ __all__ = [
 
 #: Bearing types: a deep-groove ("radial") bearing is loaded on both groove shoulders; an angular-contact
 #: bearing too, but a ball loaded at a negative contact angle (against its low shoulder) gives a warning.
-BEARING_TYPES = ("radial", "angular")
+BEARING_TYPES = _combined_balls.BEARING_TYPES
 #: Where the Hertz constants are evaluated: at each contact's operating angle (spec 004) or at the free
 #: contact angle alpha0 (ISO/TS 16281, spec 000's force characteristic).
-STIFFNESS_AT = ("operating", "free")
+STIFFNESS_AT = _combined_balls.STIFFNESS_AT
 
 # Defaults of the ring Newton (belong in bearinglab._solve, which this module does not own yet)
 TOL = 1e-12  # relative residual |F - F(u)| / max(|F|, sum of ball loads), moments divided by d_m/2
 MAX_ITER = 100  # ring Newton iterations per case (per continuation step at speed)
-_N_CHEB = 16  # Chebyshev nodes in cos(alpha) of the Hertz interpolants (analytic on [0, 1]; ~1e-13)
-_BALL_TOL = 1e-14  # ball Newton: |step| / D
-_BALL_MAX_ITER = 40
 _LINE_SEARCH = 8  # step cuts (by 4) of the ring Newton line search
 _LAM_MAX = 1e4  # Levenberg-Marquardt damping beyond which a case has failed
 _CONTINUATION = (1, 4, 16)  # equal steps in omega^2 tried for a case that fails at the full speed
-_EPS = np.finfo(float).eps
 _RESOLVABLE = 1e-9  # issue 11: every returned case in equilibrium to 1e-9 relative, rounding or not
 _NOISE = 4.0  # a residual within this many rounding floors (see _measure) is converged
 _CHUNK = 2048  # cases per pass of the rest Newton (see _rest_newton)
@@ -124,16 +127,7 @@ def ball_azimuths(n_balls, first_ball_angle=0.0):
     """
     z = int(check_integer("n_balls", n_balls, 1))
     phi0 = float(as_float("first_ball_angle", first_ball_angle))
-    return phi0 + 2.0 * np.pi * np.arange(z) / z
-
-
-def _arms(psi, arm):
-    """Rows d(axial, radial offset)/d(displacement) of every ball, each (Z, 5)."""
-    c, s = np.cos(psi), np.sin(psi)
-    zero = np.zeros_like(psi)
-    axial = np.stack([zero, zero, np.ones_like(psi), arm * s, -arm * c], axis=1)
-    radial = np.stack([c, s, zero, zero, zero], axis=1)
-    return axial, radial
+    return _combined_balls._azimuths(z, phi0)
 
 
 def groove_offsets(displacement, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
@@ -182,262 +176,41 @@ def groove_offsets(displacement, n_balls, ball_diameter, pitch_diameter, inner_c
     return (u @ geo.ja.T)[()], (geo.gr0 + u @ geo.jr.T)[()]
 
 
-# --------------------------------------------------------------------------- Hertz interpolants
-@functools.lru_cache(maxsize=64)
-def _tables(d, dm, fi, fo, ep, a0, stiffness_at):
-    """Chebyshev coefficients in x = 2 cos(alpha) - 1 of ln K and ln(a* b*) of each race (read-only).
+def axial_play_takeup(ball_diameter, inner_conformity, outer_conformity, free_angle):
+    r"""Half the axial play, s_a/2 = A sin(alpha0): the part of delta_z spent before any ball carries load.
 
-    The exact Hertz solution is iterative; it is evaluated once per bearing on _N_CHEB nodes, and kept for
-    the next call with the same bearing. With ``stiffness_at="free"`` the series are constants (the values
-    at alpha0).
+    Displacements are counted from the concentric position (MASTA's convention), so under a thrust
+    delta_z contains this take-up; delta_z - s_a/2 (for F_z > 0) is the elastic approach of the rings.
+
+    Parameters
+    ----------
+    ball_diameter : array_like
+        D. [m]
+    inner_conformity, outer_conformity : array_like
+        f_i, f_o. [-]
+    free_angle : array_like
+        alpha0, from the diametral clearance e by cos alpha0 = 1 - e / (2 A). [rad]
+
+    Returns
+    -------
+    ndarray
+        s_a / 2. [m]
+
+    Notes
+    -----
+    A ball touches both raceways when its groove-curvature centres are A = (f_i + f_o - 1) D apart. In the
+    concentric position they are A cos(alpha0) apart radially (the definition of alpha0 by the
+    clearance, e = 2 A (1 - cos alpha0)); an axial shift z brings them to sqrt(z^2 + A^2 cos^2 alpha0),
+    which equals A at z = A sin(alpha0). Both directions together give the axial play
+    s_a = 2 (f_i + f_o - 1) D sin(alpha0), Harris, *Rolling Bearing Analysis* (eq. 2.13 of the
+    edition cited by :func:`bearinglab.geometry.axial_play`, which computes s_a).
+
+    Examples
+    --------
+    >>> print(f"{axial_play_takeup(22.23e-3, 0.5232, 0.5232, math.radians(40)) * 1e3:.4f} mm")  # B218
+    0.6630 mm
     """
-    return tuple(_read_only(c) for c in _chebyshev_tables(d, dm, fi, fo, ep, a0, stiffness_at))
-
-
-def _read_only(a):
-    a.setflags(write=False)
-    return a
-
-
-def _chebyshev_tables(d, dm, fi, fo, ep, a0, stiffness_at):
-    def exact(c):
-        alpha = np.arccos(np.clip(c, 0.0, 1.0))
-        k = contact_stiffness(alpha, alpha, d, dm, fi, fo, ep)
-        ab = []
-        for race, f in (("inner", fi), ("outer", fo)):
-            curv = geometry.raceway_curvature(d, dm, f, alpha, race=race)
-            co = hertz.coefficients(curv.curvature_difference)
-            ab.append(np.log(co.a_star * co.b_star))
-        return np.log(k.inner), np.log(k.outer), ab[0], ab[1]
-
-    if stiffness_at == "free":
-        return [np.atleast_1d(np.asarray(v, dtype=float)) for v in exact(np.array([math.cos(a0)]))]
-    x = np.cos(np.pi * (np.arange(_N_CHEB) + 0.5) / _N_CHEB)
-    return [_cheb.chebfit(x, v, _N_CHEB - 1) for v in exact((x + 1.0) / 2.0)]
-
-
-def _hertz_k(coef, c, slope=None):
-    """K and d ln K / d cos(alpha) from a series (a constant series has zero slope); ``slope`` is the
-    derivative series (:func:`numpy.polynomial.chebyshev.chebder`), precomputed per bearing."""
-    x = 2.0 * c - 1.0
-    if coef.size == 1:
-        return np.full_like(c, math.exp(coef[0])), np.zeros_like(c)
-    slope = _cheb.chebder(coef) if slope is None else slope
-    return np.exp(_cheb.chebval(x, coef)), 2.0 * _cheb.chebval(x, slope)
-
-
-# --------------------------------------------------------------------------- the bearing
-class _Geometry(NamedTuple):
-    z: int
-    d: float
-    dm: float
-    fi: float
-    fo: float
-    a0: float
-    ep: float
-    mass: float  # ball mass [kg]
-    inertia: float  # J = m D^2 / 10 [kg m^2]
-    big_a: float  # A = B D
-    gr0: float  # A cos(alpha0), radial offset of the groove centres in the concentric position
-    ri: float  # (f_i - 0.5) D
-    ro: float  # (f_o - 0.5) D
-    psi: np.ndarray
-    ja: np.ndarray  # (Z, 5) d axial offset / d u
-    jr: np.ndarray  # (Z, 5) d radial offset / d u
-    jj: np.ndarray  # (2, 2, Z, 25) outer products J_p J_q^T per ball
-    tables: list | None  # ln K_i, ln K_o, ln(a*b*)_i, ln(a*b*)_o
-    lam: tuple  # (lambda_i, lambda_o)
-    control: str
-    kind: str
-    stiffness_at: str
-    slopes: tuple = (None, None)  # chebder of tables[0], tables[1] (the ball Newton evaluates them often)
-
-
-def _geometry(n_balls, d, dm, fi, fo, a0, ep, density, phi0, stiffness_at, control, kind, *, tables=True):
-    """Check one bearing's data and precompute what every evaluation needs."""
-    z = int(check_integer("n_balls", n_balls, 1))
-    d = float(check_positive("ball_diameter", d, "m"))
-    dm = float(geometry.pitch_ratio(d, dm, 0.0) and dm)  # checks d_m > D
-    big_a = float(geometry.total_curvature(fi, fo)) * d
-    a0 = float(as_float("free_angle", a0))
-    if not 0.0 <= a0 < math.pi / 2:
-        raise InputError(f"free_angle must be in [0, 90) [deg], got {math.degrees(a0):g}")
-    if stiffness_at not in STIFFNESS_AT:
-        raise InputError(f"stiffness_at must be one of {list(STIFFNESS_AT)}, got {stiffness_at!r}")
-    if control not in RACEWAY_CONTROLS:
-        raise InputError(f"raceway_control must be one of {list(RACEWAY_CONTROLS)}, got {control!r}")
-    if kind not in BEARING_TYPES:
-        raise InputError(f"bearing_type must be one of {list(BEARING_TYPES)}, got {kind!r}")
-    psi = ball_azimuths(z, phi0)
-    ja, jr = _arms(psi, dm / 2.0)
-    rows = (ja, jr)
-    jj = np.array([[np.einsum("zk,zl->zkl", p, q).reshape(z, 25) for q in rows] for p in rows])
-    mass = inertia = ep_f = np.nan
-    tab = None
-    if tables:
-        ep_f = float(check_positive("reduced_modulus", ep, "Pa"))
-        rho = float(check_positive("density", density, "kg/m^3"))
-        mass = rho * math.pi * d**3 / 6.0
-        inertia = mass * d**2 / 10.0
-        tab = _tables(d, dm, float(fi), float(fo), ep_f, a0, stiffness_at)
-    return _Geometry(z, d, dm, float(fi), float(fo), a0, ep_f, mass, inertia, big_a, big_a * math.cos(a0),
-                     (fi - 0.5) * d, (fo - 0.5) * d, psi, ja, jr, jj, tab, RACEWAY_CONTROLS[control], control,
-                     kind, stiffness_at, tuple(_cheb.chebder(t) if t.size > 1 else None for t in tab[:2])
-                     if tab is not None else (None, None))
-
-
-# --------------------------------------------------------------------------- balls at rest
-def _rest_balls(geo, ga, gr):
-    """Ball reaction on the inner ring and its 2 x 2 stiffness per ball, at rest (no ball unknowns).
-
-    Each ball is a spring between the groove-curvature centres: Q = K_n (rho - A)^1.5 along the line
-    between them, K_n = (K_i^-2/3 + K_o^-2/3)^-3/2 at that line's angle (spec 004 section 5.3).
-    """
-    rho = np.hypot(ga, gr)
-    s, c = ga / rho, gr / rho
-    ki, dli = _hertz_k(geo.tables[0], c, geo.slopes[0])
-    ko, dlo = _hertz_k(geo.tables[1], c, geo.slopes[1])
-    wi, wo = ki ** (-2.0 / 3.0), ko ** (-2.0 / 3.0)
-    kn = (wi + wo) ** -1.5
-    dlkn = (wi * dli + wo * dlo) / (wi + wo)  # d ln K_n / d cos(alpha)
-    defl = np.maximum(rho - geo.big_a, 0.0)
-    q = kn * defl**1.5
-    dq = 1.5 * kn * np.sqrt(defl)
-    q_a = -q * s * dlkn  # dQ/d alpha
-    # H = dQ n n^T + (Q_alpha / rho) n t^T + (Q / rho) t t^T, n = (s, c), t = (c, -s) in (axial, radial)
-    h = np.empty(ga.shape + (2, 2))
-    h[..., 0, 0] = dq * s * s + q_a / rho * s * c + q / rho * c * c
-    h[..., 0, 1] = dq * s * c - q_a / rho * s * s - q / rho * c * s
-    h[..., 1, 0] = dq * c * s + q_a / rho * c * c - q / rho * s * c
-    h[..., 1, 1] = dq * c * c - q_a / rho * c * s + q / rho * s * s
-    alpha = np.arctan2(ga, gr)
-    return {"pa": q * s, "pr": q * c, "h": h, "qi": q, "qo": q, "ai": alpha, "ao": alpha,
-            "ci": c, "co": c, "mg": np.zeros_like(q), "fc": np.zeros_like(q), "noise": dq * _EPS * rho}
-
-
-# --------------------------------------------------------------------------- balls at speed
-def _ball_state(geo, x, ga, gr, w2, deriv=True):
-    """Ball residual (eqs. 5-6), ring reaction and their partials for ball centres x = (axial, radial).
-
-    x is measured from the outer groove-curvature centre, (ga, gr) is the inner one. Returns a dict with
-    the residual ``b`` (..., 2) [N], the reaction on the inner ring (``pa``, ``pr``) and, if ``deriv``,
-    the partials ``b_x``, ``b_g``, ``p_x``, ``p_g`` (..., 2, 2).
-    """
-    ea, er = x[..., 0], x[..., 1]
-    ia, ir = ga - ea, gr - er
-    rho_o, rho_i = np.hypot(ea, er), np.hypot(ia, ir)
-    so, co = ea / rho_o, er / rho_o
-    si, ci = ia / rho_i, ir / rho_i
-    di, do = rho_i - geo.ri, rho_o - geo.ro
-    ki, dli = _hertz_k(geo.tables[0], ci, geo.slopes[0])
-    ko, dlo = _hertz_k(geo.tables[1], co, geo.slopes[1])
-    dip, dop = np.maximum(di, 0.0), np.maximum(do, 0.0)
-    qi, qo = ki * dip**1.5, ko * dop**1.5
-    lam_i, lam_o = geo.lam
-    lam_i = lam_i * (di > 0)  # friction at the inner contact needs contact
-    dyn = _dynamics(si, ci, so, co, geo.d / geo.dm, geo.control, geo.inertia, geo.mass, geo.dm)
-    fc, fc_i, fc_o, mg, mg_i, mg_o = (w2 * v for v in dyn)
-    m = mg / geo.d
-    ni, no, ti, to = (si, ci), (so, co), (ci, -si), (co, -so)
-    v = [lam_i * ti[k] - lam_o * to[k] for k in range(2)]
-    b = np.stack([qi * ni[k] - qo * no[k] + m * v[k] + (fc if k else 0.0) for k in range(2)], axis=-1)
-    pa = qi * si + m * lam_i * ci  # reaction of the ball on the inner ring is -(pa, pr)
-    pr = qi * ci - m * lam_i * si
-    out = {"b": b, "pa": pa, "pr": pr, "qi": qi, "qo": qo, "ai": np.arctan2(ia, ir), "ao": np.arctan2(ea, er),
-           "ci": ci, "co": co, "mg": mg, "fc": fc, "di": di, "do": do,
-           "noise": 1.5 * ki * np.sqrt(dip) * _EPS * rho_i}
-    if not deriv:
-        return out
-    qi_a, qo_a = -qi * si * dli, -qo * so * dlo
-    qi_d, qo_d = 1.5 * ki * np.sqrt(dip), 1.5 * ko * np.sqrt(dop)
-    mi, mo = mg_i / geo.d, mg_o / geo.d
-    # partials in (alpha_i, alpha_o, delta_i, delta_o), component k = axial, radial
-    b_p = [[qi_a * ni[k] + qi * ti[k] + mi * v[k] - m * lam_i * ni[k] + (fc_i if k else 0.0),
-            -qo_a * no[k] - qo * to[k] + mo * v[k] + m * lam_o * no[k] + (fc_o if k else 0.0),
-            qi_d * ni[k], -qo_d * no[k]] for k in range(2)]
-    # chain rule: d(alpha_i, alpha_o, delta_i, delta_o) / d x and / d g
-    dx = [[-ti[j] / rho_i for j in range(2)], [to[j] / rho_o for j in range(2)], [-ni[j] for j in range(2)],
-          [no[j] for j in range(2)]]
-
-    def chain(parts, dvar):
-        return np.stack([np.stack([sum(parts[k][v] * dvar[v][j] for v in range(4)) for j in range(2)], axis=-1)
-                         for k in range(2)], axis=-2)
-
-    out["b_x"] = chain(b_p, dx)
-    if deriv == "x":  # the ball Newton needs no more
-        return out
-    p_p = [[qi_a * ni[k] + qi * ti[k] + lam_i * (mi * ti[k] - m * ni[k]), lam_i * mo * ti[k], qi_d * ni[k], 0.0]
-           for k in range(2)]
-    dg = [[ti[j] / rho_i for j in range(2)], [0.0, 0.0], [ni[j] for j in range(2)], [0.0, 0.0]]
-    out.update(b_g=chain(b_p, dg), p_x=chain(p_p, dx), p_g=chain(p_p, dg))
-    return out
-
-
-def _solve2(a, b):
-    """Solve the 2 x 2 systems a x = b, stacked over the leading axes (b (..., 2) or (..., 2, k))."""
-    det = a[..., 0, 0] * a[..., 1, 1] - a[..., 0, 1] * a[..., 1, 0]
-    inv = np.stack([np.stack([a[..., 1, 1], -a[..., 0, 1]], -1), np.stack([-a[..., 1, 0], a[..., 0, 0]], -1)], -2)
-    inv = inv / det[..., None, None]
-    if b.ndim == a.ndim - 1:
-        return np.einsum("...ij,...j->...i", inv, b)
-    return inv @ b
-
-
-def _ball_start(geo, ga, gr, w2):
-    """A ball position to start from: on the line between the groove centres, pressed out by F_c."""
-    rho = np.hypot(ga, gr)
-    n = np.stack([ga / rho, gr / rho], axis=-1)
-    ki = _hertz_k(geo.tables[0], n[..., 1])[0]
-    ko = _hertz_k(geo.tables[1], n[..., 1])[0]
-    wi, wo = ki ** (-2.0 / 3.0), ko ** (-2.0 / 3.0)
-    total = rho - geo.big_a
-    fc = w2 * geo.mass * geo.dm / 2.0 * 0.25  # cage at about half the shaft speed
-    do = np.maximum(total * wo / (wi + wo), (fc / ko) ** (2.0 / 3.0))
-    return n * (geo.ro + do)[..., None]
-
-
-def _speed_balls(geo, ga, gr, w2, x0):
-    """Solve every ball's equilibrium (eqs. 5-6) for its centre, then the ring reaction and its stiffness.
-
-    Batched Newton on the 2 x 2 ball systems with step halving that keeps delta_o > 0; the ring stiffness
-    per ball is the Schur complement H = p_g - p_x b_x^-1 b_g (implicit function theorem).
-    Returns the ball dict (with ``x``, ``h`` and ``ok``). A trial ring position can put a ball where its
-    kinematics are singular (inf or NaN): such a ball is not ``ok``, and the ring line search rejects it.
-    """
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        return _speed_balls_newton(geo, ga, gr, w2, x0)
-
-
-def _speed_balls_newton(geo, ga, gr, w2, x0):
-    # the balls still iterating, flattened: converged balls drop out of the work (each ball is independent)
-    x = x0.reshape(-1, 2).copy()
-    gaf, grf, w2f = ga.ravel(), gr.ravel(), np.broadcast_to(w2, ga.shape).ravel()
-    act = np.arange(gaf.size)
-    for _ in range(_BALL_MAX_ITER):
-        xa = x[act]
-        st = _ball_state(geo, xa, gaf[act], grf[act], w2f[act], deriv="x")
-        step = -_solve2(st["b_x"], st["b"])
-        step[~np.all(np.isfinite(step), axis=-1)] = 0.0
-        t = np.ones(act.size)
-        for _h in range(20):  # keep the ball on the outer raceway
-            trial = xa + t[:, None] * step
-            lost = np.hypot(trial[:, 0], trial[:, 1]) <= geo.ro
-            if not lost.any():
-                break
-            t = np.where(lost, 0.5 * t, t)
-        x[act] = xa + t[:, None] * step
-        act = act[np.max(np.abs(step), axis=-1) > _BALL_TOL * geo.d]
-        if act.size == 0:
-            break
-    active = np.zeros(gaf.size, dtype=bool)
-    active[act] = True
-    active, x = active.reshape(ga.shape), x.reshape(ga.shape + (2,))
-    st = _ball_state(geo, x, ga, gr, w2)
-    dxdg = -_solve2(st["b_x"], st["b_g"])  # d x / d g of every ball (implicit function theorem)
-    h = st["p_g"] + st["p_x"] @ dxdg
-    fs = np.maximum(np.maximum(st["qo"], st["qi"]), 1e-300)
-    st.update(x=x, h=h, dxdg=dxdg, ok=~active & np.all(np.abs(st["b"]) <= 1e-9 * fs[..., None], axis=-1))
-    return st
+    return (geometry.axial_play(free_angle, ball_diameter, inner_conformity, outer_conformity) / 2.0)[()]
 
 
 # --------------------------------------------------------------------------- the ring
@@ -486,15 +259,19 @@ def _scaled(geo, vec):
     return vec * np.array([1.0, 1.0, 1.0, 2.0 / geo.dm, 2.0 / geo.dm])
 
 
-def _measure(geo, loads, force, balls):
+def _measure(geo, loads, force, balls, free=None):
     """Residual norm |F - F(u)| (moments divided by d_m/2) [N], the same relative to
     max(|F|, sum of the ball reactions) [-], and the relative residual rounding alone leaves [-].
+
+    ``free`` (n, 5) of 1.0 / 0.0, or None for all free: a held (prescribed) freedom has no equation, its
+    load is the reaction, so its component of F - F(u) does not count.
 
     The floor: a ball's deflection rho - A is a difference of two lengths of order A, so Q carries a
     rounding error of about dQ/d(delta) eps rho; under very light loads (deflections of a few nm) this
     exceeds the default tolerance, and no iteration can do better.
     """
-    res = np.linalg.norm(_scaled(geo, loads - force), axis=-1)
+    diff = loads - force if free is None else (loads - force) * free
+    res = np.linalg.norm(_scaled(geo, diff), axis=-1)
     total = np.sum(np.hypot(balls["pa"], balls["pr"]), axis=-1)
     scale = np.maximum(np.linalg.norm(_scaled(geo, loads), axis=-1), total)
     noise = _NOISE * np.sum(balls["noise"], axis=-1)
@@ -529,20 +306,21 @@ def _predict(geo, x, dxdg, du):
     return np.where(keep[..., None], xp, x)
 
 
-def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=()):
+def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=(), free=None):
     """Damped Newton (Levenberg-Marquardt) on the ring equilibrium, all cases together.
 
     Each case has its own damping: it falls tenfold after a full step and rises when the line search
     on |F - F(u)| has to cut the step. Returns u, converged, iterations, the ball centres at speed, and
     the last accepted evaluation of every case, which is the evaluation at the returned u: relative
-    residual, rounding floor, stiffness and the ball fields named in ``keep``.
+    residual, rounding floor, stiffness, reaction and the ball fields named in ``keep``. ``free`` (n, 5),
+    1.0 for a freedom under a given load and 0.0 for a held one (its displacement stays at u0), or None.
     """
     n = len(loads)
     u = u0.copy()
     it = np.zeros(n, dtype=int)
     lam = np.zeros(n)
     force, stiff, balls = _evaluate(geo, u, w2, x0)
-    norm, rel, floor = _measure(geo, loads, force, balls)
+    norm, rel, floor = _measure(geo, loads, force, balls, free)
     done = (rel <= np.maximum(tol, floor)) & np.all(balls["ok"], axis=1)
     x, dxdg = balls.get("x"), balls.get("dxdg")
     final = {k: np.array(balls[k], dtype=float) for k in keep}
@@ -551,7 +329,11 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=()):
         if act.size == 0:
             break
         it[act] += 1
-        du = _ring.lm_step(stiff[act], loads[act] - force[act], lam[act], geo.dm)
+        if free is None:
+            du = _ring.lm_step(stiff[act], loads[act] - force[act], lam[act], geo.dm)
+        else:  # held freedoms: no equation, no step (issue 20 item 18)
+            du = _ring.lm_step(_ring.hold(stiff[act], free[act]), (loads[act] - force[act]) * free[act], lam[act],
+                               geo.dm)
         # trust region: no groove centre moves by more than A / 2 in one step (bounded over the balls:
         # axial |dz| + d_m/2 |tilt|, radial |(dx, dy)|)
         move = np.maximum(np.abs(du[:, 2]) + geo.dm / 2.0 * np.hypot(du[:, 3], du[:, 4]), np.hypot(du[:, 0], du[:, 1]))
@@ -564,7 +346,7 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=()):
             trial = u[sel] + t[pending, None] * du[pending]
             f_t, k_t, b_t = _evaluate(geo, trial, w2[sel], None if x is None else
                                       _predict(geo, x[sel], dxdg[sel], trial - u[sel]))
-            n_t, r_t, fl_t = _measure(geo, loads[sel], f_t, b_t)
+            n_t, r_t, fl_t = _measure(geo, loads[sel], f_t, b_t, None if free is None else free[sel])
             conv_t = r_t <= np.maximum(tol, fl_t)
             good = ((n_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | conv_t) & np.all(b_t["ok"], axis=1)
             g, kk = sel[good], (slice(None) if good.all() else good)  # a view, not a copy, when all are good
@@ -585,30 +367,37 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=()):
         lam[act[pending]] = np.maximum(100.0 * lam[act[pending]], 1e-3)  # no decrease at all
         lam[lam < 1e-12] = 0.0
         done = rel <= np.maximum(tol, floor)  # accepted iterates have every ball converged
-    final.update(residual=rel, floor=floor, stiffness=stiff)
+    final.update(residual=rel, floor=floor, stiffness=stiff, force=force)
     return u, done, it, x, final
 
 
-def _rest_newton(geo, loads, tol, max_iter):
+def _rest_newton(geo, loads, tol, max_iter, held=None):
     """The rest Newton of every case, ``_CHUNK`` cases at a time (the same per case: bit-identical for any
-    batch); each pass's arrays stay in the processor's cache and off the operating system's page faults."""
+    batch); each pass's arrays stay in the processor's cache and off the operating system's page faults.
+    ``held`` (n, 5): the prescribed displacements, NaN on the freedoms under a given load (or None)."""
     n = len(loads)
     if n <= _CHUNK:
-        u, ok, it, _, last = _newton(geo, loads, np.zeros(n), _start(geo, loads), None, tol, max_iter,
-                                     keep=("qi", "ai"))
+        u0, free = _start(geo, loads), None
+        if held is not None:
+            free = np.isnan(held).astype(float)
+            u0 = np.where(free > 0, u0, held)
+        u, ok, it, _, last = _newton(geo, loads, np.zeros(n), u0, None, tol, max_iter, keep=("qi", "ai"),
+                                     free=free)
         return u, ok, it, last
-    parts = [_rest_newton(geo, loads[lo:lo + _CHUNK], tol, max_iter) for lo in range(0, n, _CHUNK)]
+    parts = [_rest_newton(geo, loads[lo:lo + _CHUNK], tol, max_iter, None if held is None else held[lo:lo + _CHUNK])
+             for lo in range(0, n, _CHUNK)]
     last = {k: np.concatenate([p[3][k] for p in parts]) for k in parts[0][3]}
     return (*(np.concatenate([p[j] for p in parts]) for j in range(3)), last)
 
 
-def _solve(geo, loads, w2, tol, max_iter, *, final=False):
+def _solve(geo, loads, w2, tol, max_iter, *, final=False, held=None):
     """Rest solution of every case, then the cases at speed from it (with continuation in omega^2).
 
     Returns u, converged, iterations and, with ``final``, (at_rest, the rest Newton's last evaluation):
     the outputs of the cases at rest need no evaluation of their own.
     """
-    u, ok, it, last = _rest_newton(geo, loads, tol, max_iter)
+    u, ok, it, last = _rest_newton(geo, loads, tol, max_iter, held)
+    free = None if held is None else np.isnan(held).astype(float)
     extra = ((w2 == 0), last) if final else None
     moving = np.flatnonzero((w2 > 0) & ok)
     if moving.size == 0:
@@ -623,7 +412,8 @@ def _solve(geo, loads, w2, tol, max_iter, *, final=False):
             wk = w2[sel] * k / steps
             ga, gr = _ring.rowwise(us, geo.ja.T), geo.gr0 + _ring.rowwise(us, geo.jr.T)
             xs = _ball_start(geo, ga, gr, wk[:, None]) if xs is None else xs
-            us, conv, itk, xs, _ = _newton(geo, loads[sel], wk, us, xs, tol, max_iter)
+            us, conv, itk, xs, _ = _newton(geo, loads[sel], wk, us, xs, tol, max_iter,
+                                           free=None if free is None else free[sel])
             it[sel] += itk
             good &= conv
         u[sel[good]], ok[sel[good]] = us[good], True
@@ -659,6 +449,9 @@ class LoadDistribution(NamedTuple):
     residual: np.ndarray  # (...) relative equilibrium residual [-]
     iterations: np.ndarray  # (...) ring Newton iterations
     warnings: tuple  # messages (light load, low-shoulder contact, friction), one per kind
+    #: (..., 5) load needed to hold each prescribed freedom at its displacement [N, N m]; NaN on a freedom
+    #: under a given load (all NaN without ``prescribed_displacement``)
+    reactions: np.ndarray = None
 
 
 def _pressure(geo, q, alpha, race):
@@ -672,12 +465,13 @@ def _pressure(geo, q, alpha, race):
         return np.where(q > 0, 3.0 * q / (2.0 * np.pi * ab), 0.0)
 
 
-def _at_solution(geo, loads, w, u, sel, final):
-    """Relative residual, rounding floor, stiffness and ball outputs (``_BALL_OUT``) of the cases ``sel``:
-    from the solver's last evaluation (``final`` of :func:`_solve`) where it has one, else evaluated."""
+def _at_solution(geo, loads, w, u, sel, final, free=None):
+    """Relative residual, rounding floor, stiffness, reaction and ball outputs (``_BALL_OUT``) of the cases
+    ``sel``: from the solver's last evaluation (``final`` of :func:`_solve`) where it has one, else evaluated."""
     have = np.zeros(sel.size, dtype=bool) if final is None else final[0][sel]
     res = {k: np.empty((sel.size, geo.z)) for k in _BALL_OUT}
-    res.update(residual=np.empty(sel.size), floor=np.empty(sel.size), stiffness=np.empty((sel.size, 5, 5)))
+    res.update(residual=np.empty(sel.size), floor=np.empty(sel.size), stiffness=np.empty((sel.size, 5, 5)),
+               force=np.empty((sel.size, 5)))
     if have.any():
         last, rows = final[1], sel[have]
         for k, v in res.items():
@@ -685,16 +479,20 @@ def _at_solution(geo, loads, w, u, sel, final):
     if not have.all():
         fresh = sel[~have]
         force, stiff, balls = _evaluate(geo, u[fresh], w[fresh] ** 2)
-        res["residual"][~have], res["floor"][~have] = _measure(geo, loads[fresh], force, balls)[1:]
-        res["stiffness"][~have] = stiff
+        res["residual"][~have], res["floor"][~have] = _measure(geo, loads[fresh], force, balls,
+                                                               None if free is None else free[fresh])[1:]
+        res["stiffness"][~have], res["force"][~have] = stiff, force
         for k in _BALL_OUT:
             res[k][~have] = balls[k]
     return res
 
 
-def _outputs(geo, loads, w, u, ok, it, final=None):
+def _outputs(geo, loads, w, u, ok, it, final=None, held=None):
     """Every field of :class:`LoadDistribution` (flat cases) from the converged displacements; ``final``
-    (from :func:`_solve`) spares the evaluation at the solution of the cases it covers."""
+    (from :func:`_solve`) spares the evaluation at the solution of the cases it covers; ``held`` (n, 5)
+    the prescribed displacements (NaN: free), whose reactions go to ``reactions`` (NaN on free ones; the
+    key only with ``held``)."""
+    free = None if held is None else np.isnan(held).astype(float)
     n, z = len(loads), geo.z
     nan = np.full((n, z), np.nan)
     out = {k: nan.copy() for k in ("ball_load_inner", "ball_load_outer", "contact_angle_inner",
@@ -702,9 +500,13 @@ def _outputs(geo, loads, w, u, ok, it, final=None):
                                    "centrifugal_force", "gyroscopic_moment")}
     out.update(displacement=np.where(ok[:, None], u, np.nan), stiffness=np.full((n, 5, 5), np.nan),
                residual=np.full(n, np.nan), floor=np.zeros(n), max_ball_load=np.full(n, np.nan))
+    if free is not None:
+        out["reactions"] = np.full((n, 5), np.nan)
     sel = np.flatnonzero(ok)
     if sel.size:
-        balls = _at_solution(geo, loads, w, u, sel, final)
+        balls = _at_solution(geo, loads, w, u, sel, final, free)
+        if free is not None:
+            out["reactions"][sel] = np.where(free[sel] > 0, np.nan, balls["force"])
         for k in ("residual", "floor", "stiffness"):
             out[k][sel] = balls[k]
         qi, qo = balls["qi"], balls["qo"]
@@ -736,7 +538,7 @@ def _flat_inputs(loads, shaft_speed):
 def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
                       free_angle, reduced_modulus, density, *, first_ball_angle=0.0, stiffness_at="operating",
                       raceway_control="outer", bearing_type="radial", on_failure="raise",
-                      tol=TOL, max_iter=MAX_ITER):
+                      tol=TOL, max_iter=MAX_ITER, prescribed_displacement=None):
     r"""Load distribution, displacement and stiffness of a ball bearing under combined load, at rest or at speed.
 
     Parameters
@@ -784,10 +586,20 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
         to 1e-9 (issue 11). [-]
     max_iter : int, optional
         Ring Newton iterations per case (and per continuation step).
+    prescribed_displacement : array_like, optional
+        (..., 5): delta_x, delta_y, delta_z [m], theta_x, theta_y [rad] held at these values, NaN for a
+        freedom under its given load; broadcast against the cases. Each freedom is given either as a load
+        or as a displacement, so the load of a held freedom must be 0 in ``loads``; its reaction, the load
+        that holds it, is in ``reactions`` and in ``loads`` of the result. Example: ``[nan, nan, nan, 0, 0]``
+        holds the ring square (no tilt) under F_r + F_a, as the textbook combined-load cases (Sjovall,
+        Harris) assume; without it the ring tilts freely (MASTA's single-bearing convention).
+        delta_z counts from the concentric position, like the result (:func:`axial_play_takeup`).
 
     Returns
     -------
     LoadDistribution
+        ``loads`` holds the loads in equilibrium with ``displacement``: the given ones, and the reactions
+        on the held freedoms.
 
     Raises
     ------
@@ -821,26 +633,33 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     15.1102 um, Q_max = 619.6 N
     """
     f, w, shape = _flat_inputs(loads, shaft_speed)
+    f, w, held, shape = _held(f, w, shape, prescribed_displacement)
     if on_failure not in ("raise", "flag"):
         raise InputError(f"on_failure must be one of ['raise', 'flag'], got {on_failure!r}")
     check_positive("tol", tol, "-")
     max_iter = int(check_integer("max_iter", max_iter, 1))
     geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
                     reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, bearing_type)
-    u, ok, it, final = _solve(geo, f, w**2, tol, max_iter, final=True)
-    out = _outputs(geo, f, w, u, ok, it, final)
+    if held is not None:
+        _check_held(geo, held)
+    u, ok, it, final = _solve(geo, f, w**2, tol, max_iter, final=True, held=held)
+    out = _outputs(geo, f, w, u, ok, it, final, held)
+    out.setdefault("reactions", np.full((len(f), 5), np.nan))
     ok &= out["residual"] <= np.maximum(tol, out.pop("floor"))
     if not ok.all():
-        failures = _failures(geo, f, w, u, ok)
+        failures = _failures(geo, f, w, u, ok, None if held is None else np.isnan(held).astype(float))
         if on_failure == "raise":
             k, reason = next(iter(failures.items()))
             force, _, balls = _evaluate(geo, np.nan_to_num(u[k:k + 1]), w[k:k + 1] ** 2, deriv=False)
             raise ConvergenceError("combined.load_distribution", iterations=int(it[k]),
-                                   residual=_measure(geo, f[k:k + 1], force, balls)[1][0], estimate=u[k],
+                                   residual=_measure(geo, f[k:k + 1], force, balls, None if held is None else
+                                                     np.isnan(held[k:k + 1]).astype(float))[1][0], estimate=u[k],
                                    reason=f"loads {f[k].tolist()} at {w[k] / RPM:g} rpm: {reason} "
                                           f"({int((~ok).sum())} of {ok.size} cases failed)")
     for key in out:
         out[key][~ok] = np.nan
+    if held is not None:  # the loads in equilibrium: the reactions on the held freedoms
+        f = np.where(np.isnan(held), f, out["reactions"])
     notes = _notes(geo, f, w, out, ok)
     if not ok.all():
         notes += _failure_notes(failures)
@@ -852,7 +671,50 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
                                                and (k != "azimuth" or z)})
 
 
-def _failures(geo, loads, w, u, ok):
+def _held(f, w, shape, prescribed):
+    """Loads, speeds and prescribed displacements broadcast to one flat batch (held None if none)."""
+    if prescribed is None:
+        return f, w, None, shape
+    p = np.asarray(as_float("prescribed_displacement", prescribed), dtype=float)
+    if p.shape[-1:] != (5,):
+        raise InputError("prescribed_displacement must have a last axis of length 5 (delta_x, delta_y, delta_z, "
+                         f"theta_x, theta_y; NaN for a freedom under load), got shape {p.shape}")
+    if np.any(np.isinf(p)):
+        raise InputError("prescribed_displacement must be finite or NaN (a freedom under load) [m, rad]")
+    full = np.broadcast_shapes(shape, p.shape[:-1])
+    f = np.broadcast_to(f.reshape(shape + (5,)), full + (5,)).reshape(-1, 5)
+    w = np.broadcast_to(w.reshape(shape), full).ravel()
+    held = np.ascontiguousarray(np.broadcast_to(p, full + (5,)).reshape(-1, 5))
+    both = ~np.isnan(held) & (f != 0)
+    if both.any():
+        k, j = np.argwhere(both)[0]
+        name = ("F_x", "F_y", "F_z", "M_x", "M_y")[j]
+        raise InputError(f"loads: {name} = {f[k, j]:g} [N, N m] is given on a freedom whose displacement is "
+                         "prescribed; give each freedom either a load or a displacement (its reaction is "
+                         "computed)")
+    if np.all(np.isnan(held)):
+        return np.ascontiguousarray(f), np.ascontiguousarray(w), None, full
+    return np.ascontiguousarray(f), np.ascontiguousarray(w), held, full
+
+
+def _check_held(geo, held):
+    """A prescribed displacement may move a groove-curvature centre by at most one ball diameter (tilts
+    at the pitch radius d_m/2): beyond that the rings would pass through the balls, which no load can
+    do; such an input is a unit mistake (InputError naming the freedom and the limit)."""
+    names = ("delta_x", "delta_y", "delta_z", "theta_x", "theta_y")
+    arm = np.array([1.0, 1.0, 1.0, geo.dm / 2.0, geo.dm / 2.0])
+    with np.errstate(invalid="ignore"):
+        bad = np.abs(held) * arm > geo.d
+    if bad.any():
+        k, j = np.argwhere(bad)[0]
+        unit, scale = ("mm", 1e3) if j < 3 else ("mrad", 1e3)
+        raise InputError(f"prescribed_displacement: {names[j]} = {held[k, j] * scale:.6g} {unit} moves the rings by "
+                         f"more than one ball diameter (D = {geo.d * 1e3:.6g} mm"
+                         + (f"; a tilt at most {geo.d / arm[j] * 1e3:.6g} mrad at the pitch radius)" if j >= 3
+                            else ")"))
+
+
+def _failures(geo, loads, w, u, ok, free=None):
     """{case: reason} for every failed case, in case order, judged at the last rest iterate (every one a
     solver's failure: the model has a solution for any load since F_z <= 0 is solved with the full groove)."""
     bad = np.flatnonzero(~ok)
@@ -862,9 +724,10 @@ def _failures(geo, loads, w, u, ok):
         force, stiff, balls = _evaluate(geo, u[solved], np.zeros(solved.size))
         loaded[solved] = np.sum(balls["qi"] > 0, axis=1)
         sc = np.array([1.0, 1.0, 1.0, 2.0 / geo.dm, 2.0 / geo.dm])
-        sv = np.linalg.svd(stiff * sc[:, None] * sc[None, :], compute_uv=False)
-        inv_cond[solved] = sv[:, -1] / np.maximum(sv[:, 0], 1e-300)
-        floor[solved] = _measure(geo, loads[solved], force, balls)[2]
+        finite = np.all(np.isfinite(stiff), axis=(1, 2))  # an overflowing iterate has no condition number
+        sv = np.linalg.svd(np.where(finite[:, None, None], stiff, 0.0) * sc[:, None] * sc[None, :], compute_uv=False)
+        inv_cond[solved] = np.where(finite, sv[:, -1] / np.maximum(sv[:, 0], 1e-300), 0.0)
+        floor[solved] = _measure(geo, loads[solved], force, balls, None if free is None else free[solved])[2]
     out = {}
     for k in bad:
         if floor[k] >= _RESOLVABLE:

@@ -4,6 +4,7 @@ Arrangements
 ------------
 ARRANGEMENTS       "DB" back-to-back, "DF" face-to-face, "DT" tandem: the orientation of each bearing
 arrangement        orientations (+1 / -1) and axial positions of a set from its arrangement and spacing
+default_spacing    bearings side by side: centres one ring width apart, (B_k + B_k+1) / 2
 
 Solution
 --------
@@ -42,7 +43,7 @@ from .._validate import as_float, check_nonnegative, check_positive
 from ..errors import ConvergenceError, InputError
 from . import combined
 
-__all__ = ["ARRANGEMENTS", "SetState", "arrangement", "set_analysis"]
+__all__ = ["ARRANGEMENTS", "SetState", "arrangement", "default_spacing", "set_analysis"]
 
 #: Orientation of each bearing, listed from -z to +z, per arrangement of a pair.
 ARRANGEMENTS = {"DB": (1, -1), "DF": (-1, 1), "DT": (1, 1)}
@@ -50,22 +51,23 @@ _MIRROR = np.array([1.0, 1.0, -1.0, -1.0, -1.0])  # z -> -z: displacements and l
 
 
 def arrangement(kind, spacing, n_bearings=2):
-    """Orientations and axial positions of a set of ``n_bearings`` with equal ``spacing``.
+    """Orientations and axial positions of a set of ``n_bearings``.
 
     Parameters
     ----------
     kind : {"DB", "DF", "DT"} or sequence of +1/-1
         Arrangement of a pair (for more bearings the first half takes the first orientation), or the
         orientations themselves.
-    spacing : float
-        Axial distance between neighbouring bearing centres. [m]
+    spacing : float or sequence of float
+        Axial distance between neighbouring bearing centres: one value for every gap, or one per gap
+        (n - 1 values, from -z to +z). [m]
     n_bearings : int, optional
         Number of bearings (with a named arrangement). [-]
 
     Returns
     -------
     orientations, positions : ndarray
-        +1 / -1 per bearing and z_k [m], centred on z = 0.
+        +1 / -1 per bearing and z_k [m], centred on z = 0 (the middle between the outer two).
 
     Examples
     --------
@@ -83,9 +85,56 @@ def arrangement(kind, spacing, n_bearings=2):
         orient = np.asarray(kind, dtype=int)
         if not np.all(np.isin(orient, (-1, 1))):
             raise InputError(f"orientations must be +1 or -1, got {list(kind)!r}")
-    s = float(check_nonnegative("spacing", spacing, "m"))
-    pos = s * (np.arange(orient.size) - (orient.size - 1) / 2.0)
-    return orient, pos
+    gaps = check_nonnegative("spacing", spacing, "m")
+    if gaps.ndim == 0:
+        gaps = np.full(max(orient.size - 1, 0), float(gaps))
+    elif gaps.shape != (orient.size - 1,):
+        raise InputError(f"spacing: one value or one per gap ({orient.size - 1}), got {gaps.size} values")
+    if not np.all(np.isfinite(gaps)):
+        raise InputError("spacing must be finite [m]")
+    pos = np.concatenate([[0.0], np.cumsum(gaps)])
+    return orient, pos - 0.5 * (pos[0] + pos[-1])
+
+
+def default_spacing(bearings):
+    """Distance between neighbouring bearing centres of a set mounted side by side: (B_k + B_k+1) / 2.
+
+    The bearings of a duplex set touch at their ring faces (no spacer), so their centres are one ring
+    width B apart for a matched pair; this is the default of :func:`set_analysis` (issue 20: a default
+    of zero gave a DB and a DF pair the same tilt stiffness).
+
+    Parameters
+    ----------
+    bearings : sequence of BallBearing
+        The bearings from -z to +z; each needs its ``width``.
+
+    Returns
+    -------
+    ndarray
+        n - 1 gaps. [m]
+
+    Raises
+    ------
+    InputError
+        Naming ``spacing`` and the first bearing without a width.
+
+    Examples
+    --------
+    >>> from bearinglab import catalog
+    >>> b = catalog.get("B218")
+    >>> print(default_spacing([b, b]) * 1e3)
+    [30.]
+    """
+    if len(bearings) < 2:
+        return np.zeros(0)  # one bearing: no gap, no width needed
+    widths = []
+    for k, b in enumerate(bearings):
+        if b.width is None:
+            raise InputError(f"spacing: bearing {k} ({b.designation}) has no width, so the distance between "
+                             "the bearing centres cannot default to one ring width; give spacing")
+        widths.append(b.width)
+    w = np.asarray(widths, dtype=float)
+    return 0.5 * (w[:-1] + w[1:])
 
 
 def _transform(orientation, position):
@@ -109,6 +158,8 @@ class SetState(NamedTuple):
     residual: np.ndarray  # relative residual of the shaft equilibrium [-]
     iterations: np.ndarray
     warnings: tuple
+    positions: np.ndarray = None  # (n,) z_k of the bearing centres [m]
+    default_spacing: bool = False  # True when the spacing was not given (bearings side by side, B apart)
 
 
 def _first_contact_offsets(geos):
@@ -219,7 +270,7 @@ def _set_newton(geos, trans, offsets, loads, w2, tol, max_iter):
     return u, rel <= tol, it, rel
 
 
-def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spacing=0.0, preload=0.0,
+def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spacing=None, preload=0.0,
                  preload_displacement=None, on_failure="raise", tol=combined.TOL, max_iter=combined.MAX_ITER,
                  **options):
     """Solve a preloaded set of ball bearings on a rigid shaft under the shaft's five loads.
@@ -234,8 +285,13 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
         Speed of the shaft (inner rings); one value for all cases. [rad/s]
     arrangement_kind : {"DB", "DF", "DT"} or sequence of +1/-1, optional
         See :func:`arrangement`.
-    spacing : float, optional
-        Distance between neighbouring bearing centres. [m]
+    spacing : float or sequence of float, optional
+        Distance between neighbouring bearing centres (one value, or one per gap). Default: the bearings
+        side by side, face against face with no spacer, centres one ring width apart
+        (:func:`default_spacing`; a bearing without a width then raises :class:`InputError`). It sets the
+        lever of the tilt stiffness: with the pressure centres a = (d_m/2) tan(alpha) beyond (DB) or
+        short of (DF) the bearing centres, the effective spread is spacing + 2a for DB and
+        abs(spacing - 2a) for DF, so a DB pair is stiffer in tilt than a DF pair except at spacing 0. [m]
     preload : float, optional
         Axial preload force of each group of like-oriented bearings at rest, no external load; 0 assembles
         the set at first contact (zero preload, no axial play). [N]
@@ -284,10 +340,12 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
     2000.0 N, -2000.0 N
     """
     bl = [bearings] if not isinstance(bearings, (list, tuple)) else list(bearings)
-    orient, pos = arrangement(arrangement_kind, spacing, 2 if len(bl) == 1 else len(bl))
+    orient, _ = arrangement(arrangement_kind, 0.0, 2 if len(bl) == 1 else len(bl))
     bl = bl * len(orient) if len(bl) == 1 else bl
     if len(bl) != len(orient):
         raise InputError(f"bearings: {len(bl)} bearings for {len(orient)} orientations")
+    is_default = spacing is None
+    orient, pos = arrangement(arrangement_kind, default_spacing(bl) if is_default else spacing, len(orient))
     f = as_float("loads", loads)
     if f.shape[-1:] != (5,):
         raise InputError(f"loads must have a last axis of length 5, got shape {f.shape}")
@@ -323,4 +381,4 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
     bearing_loads[bad] = np.nan
     return SetState(f, u.reshape(shape + (5,)), tuple(per), bearing_loads.reshape(shape + (len(bl), 5)),
                     stiff.reshape(shape + (5, 5)), interference, ok.reshape(shape), rel.reshape(shape),
-                    it.reshape(shape), tuple(dict.fromkeys(notes)))
+                    it.reshape(shape), tuple(dict.fromkeys(notes)), pos, is_default)

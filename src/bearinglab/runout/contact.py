@@ -32,14 +32,15 @@ Units: SI (m, rad); the spec states its tolerances in micrometres and the solver
 from __future__ import annotations
 
 import math
+import warnings
 from typing import NamedTuple
 
 import numpy as np
 
 from .._solve import RUNOUT_CONTACT_TOL_UM, RUNOUT_REFINE_MAX_ITER, RUNOUT_REFINE_TOL
 from .._validate import check_finite, check_integer, check_positive
-from ..errors import ConvergenceError, InputError
-from . import _solver
+from ..errors import ConvergenceError, InputError, ValidityWarning
+from . import _solver, plausibility
 from .deviations import ManufacturingErrors, _combined, _horner, _tilt, normal_deviation
 
 __all__ = [
@@ -696,6 +697,18 @@ def initial_displacement(
     -------
     Displacement
 
+    Raises
+    ------
+    InputError
+        Errors no bearing can have: one of 5 % of the ball diameter or more, or a tilt beyond 2 pi
+        (:func:`bearinglab.runout.plausibility.check_errors`).
+
+    Warns
+    -----
+    ValidityWarning
+        Displacements (or tilts) of 5 % of the groove distance A0 or more, beyond the range of the
+        first-order model (:mod:`bearinglab.runout.plausibility`).
+
     Examples
     --------
     Spec 003 example 2 (inner-raceway ovality of 1 um) at psi = 0:
@@ -718,6 +731,7 @@ def initial_displacement(
     _check_errors(errors, geometry)
     shape = psi.shape
     flat = psi.reshape(-1)
+    doubtful = plausibility.check_errors(geometry, errors, flat)  # refuses the absurd (issue 20 item 8)
     theta = ball_angles(flat, geometry, cage_ratio=cage_ratio)
     _check_balls(theta[:1])
     r = _positions(
@@ -741,6 +755,9 @@ def initial_displacement(
             reason=f"{bad.size} of {flat.size} positions, first at psi = "
             f"{math.degrees(flat[bad[0]]):.6g} deg",
         )
+    doubtful += plausibility.displacement_warnings(geometry, r.x, r.y, r.z)
+    for msg in doubtful:
+        warnings.warn(msg, ValidityWarning, stacklevel=2)
     return _reshape_displacement(r, shape)
 
 
