@@ -24,6 +24,7 @@ plots       all figures (matplotlib, loaded on first use); functions return Figu
 cli         the command line (imported on its own: ``bearinglab.cli``, ``python -m bearinglab``)
 ratings     load ratings and rating life: ISO 76, ISO 281, ISO/TS 16281
 limits      plausibility limits: warnings for results beyond ISO 76, C0, Hertz, the shoulder, light load
+mounting    mounted clearance: ISO 286 fits, ISO 492 tolerances, Lamé, temperature, speed (issue 23)
 
 The submodules are imported on first use (PEP 562): ``import bearinglab`` is instant, and
 ``bearinglab.hertz`` imports :mod:`bearinglab.hertz` the first time it is named, so that the command
@@ -45,6 +46,7 @@ __all__ = [
     "kinematics",
     "lab",
     "limits",
+    "mounting",
     "parallel",
     "plots",
     "quasistatic",

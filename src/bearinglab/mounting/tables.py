@@ -82,7 +82,7 @@ def _iso492():
 
 def _range_index(size_mm, over, up_to, what):
     """Index of the range over < size <= up_to of each size; InputError outside the table."""
-    size_mm = np.asarray(size_mm, dtype=float)
+    size_mm = np.round(np.asarray(size_mm, dtype=float), 9)  # 0.05 m / 1e-3 = 50.00000000000001 mm
     k = np.searchsorted(up_to, size_mm, side="left")  # up_to[k-1] < size <= up_to[k]
     bad = ~((size_mm > over[0]) & (k < len(up_to)))
     if bad.any():
@@ -168,7 +168,7 @@ def field_limits(field, size):
     letter, grade = _FIELD.match(field).groups()
     grade = int(grade)
     t, special = _iso286()
-    size_mm = np.asarray(size, dtype=float) / _MM
+    size_mm = np.round(np.asarray(size, dtype=float) / _MM, 9)
     k = _range_index(size_mm, t["over_mm"], t["up_to_mm"], "size")
     it = t[f"IT{grade}"][k]
     if letter in ("js", "JS"):
