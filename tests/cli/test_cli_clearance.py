@@ -99,6 +99,6 @@ def test_table_fits_80_columns(capsys, monkeypatch):
     (["--distribution", "beta"], "distribution must be one of ['uniform', 'normal']"),
 ])
 def test_bad_input_exits_2_naming_the_choices(capsys, args, message):
-    code, out, err = run(capsys, "clearance", "-b", "6205-2RS", *args)
+    code, _out, err = run(capsys, "clearance", "-b", "6205-2RS", *args)
     assert code == 2
     assert message in err and err.count("\n") == 1
