@@ -199,6 +199,16 @@ def field_limits(field, size):
 def tolerance_class(name):
     """The canonical name of an ISO 492 tolerance class (``"P0"``, ``"normal"`` -> ``"Normal"``).
 
+    Parameters
+    ----------
+    name : str
+        ``Normal`` (also ``P0``, ``PN``), ``P6``, ``P5`` or ``P4``, in any case.
+
+    Returns
+    -------
+    str
+        One of :data:`TOLERANCE_CLASSES`.
+
     Examples
     --------
     >>> tolerance_class("p5"), tolerance_class("P0")
