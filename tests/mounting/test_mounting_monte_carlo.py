@@ -76,3 +76,9 @@ def test_normal_fields_are_cut_at_the_limits_with_sigma_a_sixth():
 def test_bad_distribution():
     with pytest.raises(ValueError, match="distribution must be one of"):
         monte_carlo.monte_carlo(10, 1, LIMITS, M, distribution="beta")
+
+
+def test_bench_paths_agree_sample_by_sample(load_bench):
+    """bench/clearance.py: its plain-Python per-sample chain gives the batched Monte Carlo's answers."""
+    r = load_bench("clearance").measure(n_batch=5000, n_baseline=500, repeat=1)
+    assert r["diff"] < 1e-15
