@@ -23,11 +23,11 @@ an estimate in the warnings).
 
 References
 ----------
-.. [1] NSK, Rolling Bearings, cat. no. E1102m, section 9.1 "Fits" and Technical Report, section 3
-   "Bearing fitting practice": expansion of the inner raceway :math:`\\Delta D_i = \\Delta d_{eff}
+.. [1] NSK, Rolling Bearings, cat. no. E1102m, section 15.2, table 15.1: expansion of the inner raceway :math:`\\Delta D_i = \\Delta d_{eff}
    (d/D_i)(1 - k_0^2)/(1 - k^2 k_0^2)`.
-.. [2] JTEKT (Koyo), Ball and Roller Bearings, cat. no. B2001E, "Fitting surface pressure": D_i, D_o
-   the average groove diameters; deep groove ball bearings D_i = (4 d + D)/5, D_o = (d + 4 D)/5.
+.. [2] JTEKT (Koyo), Ball and Roller Bearings catalogue, "Fitting surface pressure" (web copy:
+   hchbearing.com): D_i, D_o the average groove diameters; deep groove ball bearings
+   D_i = (4 d + D)/5, D_o = (d + 4 D)/5.
 """
 
 from __future__ import annotations

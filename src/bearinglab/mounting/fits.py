@@ -98,7 +98,8 @@ def smoothing(roughness_a, roughness_b, *, factor=0.4):
     Notes
     -----
     DIN 7190-1:2017 reduces the measured interference of a press fit by the smoothing
-    G = 0.4 (R_zA + R_zI) of the outer and the inner part. bearinglab applies it only when asked
+    G = 0.4 (R_zA + R_zI) of the outer and the inner part (the factor as issue 23 states it; the
+    standard was not at hand to check it, hence the ``factor`` argument). bearinglab applies it only when asked
     (``--shaft-roughness``, ``--housing-roughness``); by default the interference is the one of the
     tolerance fields, as in the fit tables of the bearing makers.
 

@@ -46,8 +46,7 @@ def fit_pressure_inner(interference, bore, ring_diameter, shaft_bore, ring_modul
 
     Notes
     -----
-    Lamé's thick cylinders with the compatibility of the two radial displacements at d
-    ([1]_ section 8.4, eq. 8.49; [2]_ ch. 8):
+    Lamé's thick cylinders with the compatibility of the two radial displacements at d ([1]_):
 
     .. math:: \delta = p\,d\left[\frac{1}{E_r}\left(\frac{d_1^2+d^2}{d_1^2-d^2}+\nu_r\right)
               + \frac{1}{E_s}\left(\frac{d^2+d_0^2}{d^2-d_0^2}-\nu_s\right)\right]
@@ -56,8 +55,6 @@ def fit_pressure_inner(interference, bore, ring_diameter, shaft_bore, ring_modul
     ----------
     .. [1] R. G. Budynas and J. K. Nisbett, Shigley's Mechanical Engineering Design, 10th ed.,
        McGraw-Hill, 2015, section 3-16 "Press and shrink fits", eq. 3-56.
-    .. [2] T. A. Harris and M. N. Kotzalas, Essential Concepts of Bearing Technology, 5th ed., CRC Press,
-       2007, ch. 8 (clearance reduction by an interference fit; the ring modelled at its raceway).
 
     Examples
     --------
@@ -151,7 +148,7 @@ def inner_raceway_growth(pressure, bore, ring_diameter, ring_modulus):
     References
     ----------
     .. [1] S. P. Timoshenko and J. N. Goodier, Theory of Elasticity, 3rd ed., McGraw-Hill, 1970,
-       section 28, the thick cylinder under internal pressure.
+       ch. 4, the thick cylinder under internal pressure.
 
     Examples
     --------
@@ -185,7 +182,7 @@ def outer_raceway_shrink(pressure, outside_diameter, ring_diameter, ring_modulus
 
     References
     ----------
-    .. [1] S. P. Timoshenko and J. N. Goodier, Theory of Elasticity, 3rd ed., 1970, section 28.
+    .. [1] S. P. Timoshenko and J. N. Goodier, Theory of Elasticity, 3rd ed., 1970, ch. 4.
 
     Examples
     --------

@@ -76,7 +76,7 @@ def clearance_loss(inner_raceway, outer_raceway, ball_diameter, inner_temperatur
 
     References
     ----------
-    .. [1] NTN, Ball and Roller Bearings, cat. no. 2202/E, section 8 "Bearing internal clearance and
+    .. [1] NTN, Ball and Roller Bearings catalogue, section 8 "Bearing internal clearance and
        preload", eq. (8.3).
 
     Examples
