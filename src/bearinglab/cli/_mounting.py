@@ -213,3 +213,45 @@ def _unmounted(bearing, radial_clearance, clearance_class):
         raise InputError(f"clearance-class: {exc}; give --radial-clearance for this bearing") from None
     lo, hi = (float(r[0]), float(r[1]))
     return (lo, hi), f"ISO 5753-1 class {str(klass).upper()}"
+
+
+class MountedSet(NamedTuple):
+    """A bearing set with its mounting: the bearings at their operating clearance and the interference."""
+
+    bearings: list
+    interference: float
+    """The set's axial interference in operation. [m]"""
+    clearance: float
+    """The probable operating diametral clearance of each bearing. [m]"""
+    echo: dict
+    warnings: list
+
+
+def mounted_set(bearings, assembled_interference, arrangement, spacing, speed, options):
+    """The mounting options of ``bearing-set`` applied to its (like) bearings; None without options."""
+    if all(v is None for v in options.values()):
+        return None
+    if len({b.designation for b in bearings}) > 1:
+        raise InputError("bearing: the mounting options need one bearing type for the whole set")
+    from ..mounting import chain, preload
+
+    b = bearings[0]
+    inp = mounted_inputs(b, **options, speed=speed, require=True)
+    r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
+    p = r.probable
+    reduction = float(p.fit_reduction + p.thermal_reduction + p.centrifugal_reduction)
+    c = inp.conditions
+    t_s = c.inner_temperature if c.shaft_temperature is None else c.shaft_temperature
+    t_h = c.outer_temperature if c.housing_temperature is None else c.housing_temperature
+    interference, clearance = preload.operating_interference(
+        b, assembled_interference, reduction, arrangement_kind=arrangement, spacing=spacing,
+        shaft_temperature=t_s, housing_temperature=t_h, shaft_expansion=inp.mounting.shaft.thermal_expansion,
+        housing_expansion=inp.mounting.housing.thermal_expansion)
+    new = [x.replace(radial_clearance=clearance) for x in bearings]
+    echo = dict(inp.echo, unmounted_clearance_um=inp.unmounted[0] / _UM,
+                clearance_reduction_um=reduction / _UM, fit_reduction_um=float(p.fit_reduction) / _UM,
+                thermal_reduction_um=float(p.thermal_reduction) / _UM,
+                centrifugal_reduction_um=float(p.centrifugal_reduction) / _UM,
+                assembled_interference_um=assembled_interference / _UM, operating_interference_um=interference / _UM)
+    notes = [n for n in r.warnings if "negative" not in n]  # an angular set runs preloaded by design
+    return MountedSet(new, interference, clearance, echo, notes)

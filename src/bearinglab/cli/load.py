@@ -21,6 +21,7 @@ from typing import Annotated
 import typer
 
 from ..errors import InputError
+from . import _mounting as mo
 from ._common import (
     FIGURE_SUFFIXES,
     AxialLoadOpt,
@@ -230,6 +231,14 @@ def bearing_set(
     speed: SpeedOpt = "0 rpm", first_ball_angle: FirstBallOpt = "0 deg", stiffness_at: StiffnessAtOpt = "operating",
     plot: PlotOpt = None,
     json_out: JsonFlag = False,
+    shaft_fit: mo.ShaftFitOpt = None, housing_fit: mo.HousingFitOpt = None,
+    shaft_interference: mo.ShaftInterferenceOpt = None, housing_interference: mo.HousingInterferenceOpt = None,
+    shaft_bore: mo.ShaftBoreOpt = None, housing_outside_diameter: mo.HousingOutsideDiameterOpt = None,
+    shaft_material: mo.ShaftMaterialOpt = None, housing_material: mo.HousingMaterialOpt = None,
+    tolerance_class: mo.ToleranceClassOpt = None,
+    inner_ring_temperature: mo.InnerTempOpt = None, outer_ring_temperature: mo.OuterTempOpt = None,
+    ball_temperature: mo.BallTempOpt = None, shaft_temperature: mo.ShaftTempOpt = None,
+    housing_temperature: mo.HousingTempOpt = None,
 ):
     """Preloaded bearing set (DB/DF/DT) on a rigid shaft: shaft displacement, each bearing's ball loads, set stiffness."""
     import numpy as np
@@ -257,6 +266,25 @@ def bearing_set(
         check_output(plot, "plot", FIGURE_SUFFIXES)
     st, notes = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], loads, w, arrangement_kind=arrangement,
                        spacing=s, preload=fp, preload_displacement=e, first_ball_angle=phi0, stiffness_at=stiffness_at)
+    # issue 23: fits, temperatures and speed change each bearing's clearance, and so the set's interference
+    mounted = mo.mounted_set(bl, st.preload_displacement, arrangement, s, w, {
+        "shaft_fit": shaft_fit, "housing_fit": housing_fit, "shaft_interference": shaft_interference,
+        "housing_interference": housing_interference, "shaft_bore": shaft_bore,
+        "housing_outside_diameter": housing_outside_diameter, "shaft_material": shaft_material,
+        "housing_material": housing_material, "tolerance_class": tolerance_class,
+        "inner_ring_temperature": inner_ring_temperature, "outer_ring_temperature": outer_ring_temperature,
+        "ball_temperature": ball_temperature, "shaft_temperature": shaft_temperature,
+        "housing_temperature": housing_temperature})
+    if mounted is not None:
+        bl = mounted.bearings
+        st, notes = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], loads, w, arrangement_kind=arrangement,
+                           spacing=s, preload_displacement=mounted.interference, first_ball_angle=phi0,
+                           stiffness_at=stiffness_at)
+        notes = [*mounted.warnings, *notes]
+    idle, _ = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], [0.0] * 5, w, arrangement_kind=arrangement,
+                     spacing=s, preload_displacement=st.preload_displacement, first_ball_angle=phi0,
+                     stiffness_at=stiffness_at)
+    operating_preload = float(abs(np.asarray(idle.bearing_loads)[0][2]))
     notes = list(dict.fromkeys([*st.warnings, *notes]))
     orient, pos = sets.arrangement(arrangement, s, len(st.bearings))
     names = [b.designation for b in bl] * (len(st.bearings) if len(bl) == 1 else 1)
@@ -272,6 +300,9 @@ def bearing_set(
                                   "mx_Nmm": carried[3] * 1e3, "my_Nmm": carried[4] * 1e3},
                         **tables.load_distribution(ns)})
     doc = {**tables.load_distribution(_shaft(st)), "preload_offset_um": st.preload_displacement * 1e6,
+           "operating_preload_N": operating_preload,
+           **({} if mounted is None else {"operating_clearance_um": mounted.clearance * 1e6,
+                                          "mounting": mounted.echo}),
            "bearings": members,
            "inputs": {**_inputs(bl[0], loads, w, phi0, stiffness_at=stiffness_at), "bearings": names,
                       "arrangement": arrangement, "spacing_mm": s * 1e3, "preload_N": fp,

@@ -10,8 +10,9 @@ thermal       free expansion of rings and balls, and of the fits, from 20 degC
 centrifugal   rotating-disc growth of the inner ring and the shaft; the inner fit's loss at speed
 chain         the chain unmounted -> fit -> thermal -> centrifugal -> operating clearance
 monte_carlo   the chain over random tolerances (uniform or normal fields), on bearinglab.parallel
+preload       bearing sets: the operating axial interference of a set with rigid spacers
 """
 
-from . import centrifugal, chain, fits, lame, materials, monte_carlo, tables, thermal
+from . import centrifugal, chain, fits, lame, materials, monte_carlo, preload, tables, thermal
 
-__all__ = ["centrifugal", "chain", "fits", "lame", "materials", "monte_carlo", "tables", "thermal"]
+__all__ = ["centrifugal", "chain", "fits", "lame", "materials", "monte_carlo", "preload", "tables", "thermal"]
