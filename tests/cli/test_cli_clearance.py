@@ -102,3 +102,34 @@ def test_bad_input_exits_2_naming_the_choices(capsys, args, message):
     code, _out, err = run(capsys, "clearance", "-b", "6205-2RS", *args)
     assert code == 2
     assert message in err and err.count("\n") == 1
+
+
+MOUNTING = ["--shaft-fit", "k5", "--housing-fit", "J7", "--inner-ring-temperature", "40 degC",
+            "--outer-ring-temperature", "30 degC"]
+
+
+@pytest.mark.parametrize("command", [
+    ["load-distribution", "--fx", "5 kN", "--fz", "10 kN", "--speed", "3000 rpm"],
+    ["life", "--fx", "5 kN", "--fz", "10 kN", "--speed", "3000 rpm", "--viscosity", "20 cSt"],
+    ["high-speed", "-F", "20 kN", "-n", "3000 rpm"],
+])
+def test_models_take_the_mounting_options_and_run_at_the_operating_clearance(capsys, command):
+    code, out, err = run(capsys, "clearance", "-b", "B218", *MOUNTING, "--speed", "3000 rpm", "--json")
+    assert code == 0, err
+    probable = json.loads(out)["operating_clearance_probable_um"]
+    code, out, err = run(capsys, *command, "-b", "B218", *MOUNTING, "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["operating_clearance_um"] == pytest.approx(probable, rel=1e-12)
+    inputs = doc.get("inputs", doc)  # the model ran with it: the bearing as used is echoed
+    used = inputs.get("radial_clearance_um", inputs["geometry"].get("radial_clearance_um"))
+    assert used == pytest.approx(probable, rel=1e-9)
+    code, out, err = run(capsys, *command, "-b", "B218", "--json")
+    assert code == 0 and "operating_clearance_um" not in json.loads(out)
+
+
+def test_a_model_refuses_a_preloaded_single_bearing(capsys):
+    code, _out, err = run(capsys, "load-distribution", "-b", "6205-2RS", "--fx", "1 kN", "--inner-conformity", "0.52",
+                          "--outer-conformity", "0.53", "--contact-angle", "0 deg", "--shaft-fit", "p6",
+                          "--clearance-class", "C2")
+    assert code == 2 and "operating clearance must be > 0" in err

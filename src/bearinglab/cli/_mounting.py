@@ -4,6 +4,9 @@ Options       ShaftFitOpt, HousingFitOpt, ShaftInterferenceOpt, HousingInterfere
               HousingOutsideDiameterOpt, ShaftMaterialOpt, HousingMaterialOpt, the five temperatures,
               ToleranceClassOpt, ClearanceClassOpt, ShaftRoughnessOpt, HousingRoughnessOpt
 parse_temperature   a temperature option [K] ('60 degC', '333 K'; a bare number is degC)
+mounting_options    decorator: adds the options to a command (load-distribution, life, high-speed, ...)
+operating_bearing   inside such a command: the bearing at its probable operating clearance, and the JSON
+mounted_set         the options of bearing-set applied to its bearings (MountedSet)
 MountedInputs       the parsed options: tolerance limits, Mounting, Conditions, unmounted clearance range
 mounted_inputs      the options of a command -> MountedInputs (None when no mounting option was given)
 
@@ -14,6 +17,9 @@ options through this module, so that they mean the same everywhere. The physics 
 
 from __future__ import annotations
 
+import contextvars
+import functools
+import inspect
 import math
 from typing import Annotated, NamedTuple
 
@@ -255,3 +261,62 @@ def mounted_set(bearings, assembled_interference, arrangement, spacing, speed, o
                 assembled_interference_um=assembled_interference / _UM, operating_interference_um=interference / _UM)
     notes = [n for n in r.warnings if "negative" not in n]  # an angular set runs preloaded by design
     return MountedSet(new, interference, clearance, echo, notes)
+
+
+# ----------------------------------------------------------------------------- the options on any command
+# name -> option type: every command that takes a bearing takes these through ``mounting_options``
+_COMMAND_OPTIONS = {
+    "shaft_fit": ShaftFitOpt, "housing_fit": HousingFitOpt, "shaft_interference": ShaftInterferenceOpt,
+    "housing_interference": HousingInterferenceOpt, "shaft_bore": ShaftBoreOpt,
+    "housing_outside_diameter": HousingOutsideDiameterOpt, "shaft_material": ShaftMaterialOpt,
+    "housing_material": HousingMaterialOpt, "tolerance_class": ToleranceClassOpt,
+    "clearance_class": ClearanceClassOpt, "inner_ring_temperature": InnerTempOpt,
+    "outer_ring_temperature": OuterTempOpt, "ball_temperature": BallTempOpt, "shaft_temperature": ShaftTempOpt,
+    "housing_temperature": HousingTempOpt,
+}
+_GIVEN = contextvars.ContextVar("bearinglab_mounting_options", default=None)
+
+
+def mounting_options(command):
+    """Add the mounting options to a command (keyword options after its own); inside the command,
+    :func:`operating_bearing` reads them. The command's own code is unchanged otherwise."""
+    sig = inspect.signature(command)
+    extra = [inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY, default=None, annotation=kind)
+             for name, kind in _COMMAND_OPTIONS.items() if name not in sig.parameters]
+    params = [p.replace(kind=inspect.Parameter.KEYWORD_ONLY) if p.kind is inspect.Parameter.POSITIONAL_OR_KEYWORD
+              else p for p in sig.parameters.values()]
+
+    @functools.wraps(command)
+    def wrapper(*args, **kwargs):
+        given = {k: kwargs.pop(k) for k in list(kwargs) if k in _COMMAND_OPTIONS and k not in sig.parameters}
+        token = _GIVEN.set(given)
+        try:
+            return command(*args, **kwargs)
+        finally:
+            _GIVEN.reset(token)
+
+    wrapper.__signature__ = sig.replace(parameters=[*params, *extra])
+    return wrapper
+
+
+def operating_bearing(bearing, speed=0.0):
+    """The bearing at its probable operating clearance under the command's mounting options, and the
+    JSON entries to add (``operating_clearance_um`` and the range); ``(bearing, {})`` without options."""
+    given = {k: v for k, v in (_GIVEN.get() or {}).items() if v is not None}
+    if not given:
+        return bearing, {}
+    from ..mounting import chain
+
+    inp = mounted_inputs(bearing, **given, speed=float(speed), require=True)
+    r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
+    e = float(r.probable.operating_clearance)
+    if not e > 0:
+        raise InputError(f"operating clearance must be > 0 [um] for this model, got {e / _UM:.3g} um (the fits and "
+                         "temperatures preload the bearing); give a larger --clearance-class, or model a "
+                         "preloaded pair with bearing-set")
+    doc = {"operating_clearance_um": e / _UM,
+           "operating_clearance_min_um": float(r.least.operating_clearance) / _UM,
+           "operating_clearance_max_um": float(r.largest.operating_clearance) / _UM,
+           "unmounted_clearance_um": [inp.unmounted[0] / _UM, inp.unmounted[1] / _UM],
+           "mounting": inp.echo, "mounting_warnings": list(r.warnings)}
+    return bearing.replace(radial_clearance=e), doc

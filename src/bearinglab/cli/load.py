@@ -117,6 +117,7 @@ def _case(r, k):
     return types.SimpleNamespace(**fields, azimuth=r.azimuth, warnings=r.warnings)
 
 
+@mo.mounting_options
 def load_distribution(
     fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
     radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
@@ -142,6 +143,7 @@ def load_distribution(
                         ball_material)
     loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
     w = _speeds(speed, ross is not None, b.require("pitch_diameter"))
+    b, mounted = mo.operating_bearing(b, w.max())  # issue 23: the operating clearance (at the highest speed)
     phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
     choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
     if plot is not None:
@@ -154,7 +156,7 @@ def load_distribution(
     docs = []
     for k in range(w.size):
         case = _case(r, k)
-        docs.append({**tables.load_distribution(case),
+        docs.append({**tables.load_distribution(case), **mounted,
                      "inputs": _inputs(b, loads, w[k], phi0, stiffness_at=stiffness_at), "warnings": notes})
     if ross is not None:
         rotordynamics.write_coefficients(rotordynamics.from_stiffness(np.reshape(r.stiffness, (-1, 5, 5)), w), ross)
