@@ -133,3 +133,13 @@ def test_a_model_refuses_a_preloaded_single_bearing(capsys):
                           "--outer-conformity", "0.53", "--contact-angle", "0 deg", "--shaft-fit", "p6",
                           "--clearance-class", "C2")
     assert code == 2 and "operating clearance must be > 0" in err
+
+
+def test_web_api_runs_the_clearance_chain():
+    from bearinglab.web import api
+
+    r = api.call("clearance", {"bearing": "6205-2RS", "shaft_fit": "k5", "housing_fit": "H7",
+                               "inner_ring_temperature": "50 degC"})
+    assert r.status == 200 and set(KEYS) <= set(r.document)
+    bad = api.call("clearance", {"bearing": "6205-2RS", "shaft_fit": "k9"})
+    assert bad.status == 422 and "shaft_fit" in bad.document["detail"]
