@@ -160,3 +160,13 @@ def test_vectorized_chain_equals_scalar_calls():
 def test_mounting_checks(kw, match):
     with pytest.raises(ValueError, match=match):
         chain.Mounting(0.040, 0.080, 0.0479, 0.0721, 0.0121, **kw)
+
+
+@given(i1=st.floats(-30.0, 60.0), di=st.floats(0.0, 30.0), o1=st.floats(-30.0, 60.0), do_=st.floats(0.0, 30.0),
+       ti=st.floats(0.0, 80.0), n=st.floats(0.0, 15000.0))
+def test_operating_clearance_never_grows_with_interference(i1, di, o1, do_, ti, n):
+    """Every stage's loss grows with the interferences: the corners of operating_range are the extremes."""
+    c = chain.Conditions(T0 + ti, T0 + 0.5 * ti, speed=n * math.pi / 30)
+    a = chain.operating_clearance(20e-6, i1 * 1e-6, o1 * 1e-6, M, c).operating_clearance
+    b = chain.operating_clearance(20e-6, (i1 + di) * 1e-6, (o1 + do_) * 1e-6, M, c).operating_clearance
+    assert b <= a + 1e-18

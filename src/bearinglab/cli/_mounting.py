@@ -169,8 +169,15 @@ def mounted_inputs(bearing, *, shaft_fit=None, housing_fit=None, shaft_interfere
                          f"[mm], got {dh / _MM:g} mm")
     m = chain.mounting_of(bearing, shaft_bore=d0, housing_outside_diameter=dh,
                           shaft_material=shaft_material or "steel", housing_material=housing_material or "steel")
-    klass = tolerance_class or getattr(bearing, "tolerance_class", None) or "Normal"
-    klass = tables.tolerance_class(klass)
+    designated = getattr(bearing, "tolerance_class", None)  # from the designation suffix (P6, P5, ...)
+    klass = tolerance_class or designated or "Normal"
+    try:
+        klass = tables.tolerance_class(klass)
+    except InputError:
+        if tolerance_class is not None:
+            raise
+        raise InputError(f"tolerance-class: the designation's class {designated!r} has no ISO 492 table here "
+                         f"(valid: {list(tables.TOLERANCE_CLASSES)}); give --tolerance-class") from None
     s_in, s_out = _roughness(shaft_roughness, "shaft-roughness"), _roughness(housing_roughness,
                                                                              "housing-roughness")
     if shaft_interference is not None:

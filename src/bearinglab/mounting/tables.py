@@ -44,7 +44,9 @@ HOUSING_FIELDS = ("F7", "G6", "G7", "H6", "H7", "H8", "J6", "J7", "JS6", "JS7", 
 TOLERANCE_CLASSES = ("Normal", "P6", "P5", "P4")
 # how a class is also written: ISO 492 "Normal" is P0 (DIN 620) and PN; class 6 is P6 and so on
 _CLASS_ALIASES = {"normal": "Normal", "p0": "Normal", "pn": "Normal", "0": "Normal", "cln": "Normal",
-                  "p6": "P6", "6": "P6", "p5": "P5", "5": "P5", "p4": "P4", "4": "P4"}
+                  "p6": "P6", "6": "P6", "p5": "P5", "5": "P5", "p4": "P4", "4": "P4",
+                  # SKF super-precision P4A: dimensions to ISO 492 class 4 (running accuracy better)
+                  "p4a": "P4"}
 
 
 class Limits(NamedTuple):
