@@ -143,3 +143,13 @@ def test_web_api_runs_the_clearance_chain():
     assert r.status == 200 and set(KEYS) <= set(r.document)
     bad = api.call("clearance", {"bearing": "6205-2RS", "shaft_fit": "k9"})
     assert bad.status == 422 and "shaft_fit" in bad.document["detail"]
+
+
+def test_smoothing_takes_0_4_rz_per_surface(capsys):
+    base = json.loads(run(capsys, "clearance", "-b", "6205-2RS", "--shaft-fit", "k5", "--json")[1])
+    one = json.loads(run(capsys, "clearance", "-b", "6205-2RS", "--shaft-fit", "k5", "--shaft-roughness", "4 um",
+                         "--json")[1])
+    two = json.loads(run(capsys, "clearance", "-b", "6205-2RS", "--shaft-fit", "k5", "--shaft-roughness",
+                         "4 um, 1.6 um", "--json")[1])
+    assert base["interference_inner_max_um"] - one["interference_inner_max_um"] == pytest.approx(0.4 * 8)
+    assert base["interference_inner_max_um"] - two["interference_inner_max_um"] == pytest.approx(0.4 * 5.6)

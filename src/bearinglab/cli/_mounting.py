@@ -110,8 +110,7 @@ def _roughness(text, name):
     a, b = _pair(text, name)
     if a < 0:
         raise InputError(f"{name} must be >= 0 [um], got {a / _UM:g} um")
-    values = [float(x) for x in {a, b}] if a != b else [a, a]
-    return float(fits.smoothing(values[0], values[-1]))
+    return float(fits.smoothing(a, b))  # one value: both surfaces have that R_z
 
 
 def mounted_inputs(bearing, *, shaft_fit=None, housing_fit=None, shaft_interference=None,
