@@ -82,3 +82,17 @@ def test_bench_paths_agree_sample_by_sample(load_bench):
     """bench/clearance.py: its plain-Python per-sample chain gives the batched Monte Carlo's answers."""
     r = load_bench("clearance").measure(n_batch=5000, n_baseline=500, repeat=1)
     assert r["diff"] < 1e-15
+
+
+def test_normal_fields_give_skf_probable_interference():
+    """Normal fields (limits at +-3 sigma): the 0.135 % / 99.865 % points of the interference are SKF's
+    probable range (fits.probable_interference), to the micrometre SKF prints."""
+    from bearinglab.mounting import fits, tables
+
+    shaft, bore = tables.field_limits("m6", 0.040), tables.bore_limits(0.040)
+    rng = np.random.default_rng(12)
+    x = (monte_carlo.draw_field(rng, 400_000, shaft.lower, shaft.upper, "normal")
+         - monte_carlo.draw_field(rng, 400_000, bore.lower, bore.upper, "normal"))
+    p = fits.probable_interference(shaft, bore)
+    lo, hi = np.percentile(x, [0.135, 99.865])
+    assert abs(lo - p.least) < 0.5e-6 and abs(hi - p.largest) < 0.5e-6

@@ -125,3 +125,31 @@ def test_smoothing_per_din_7190():
     assert fits.smoothing(4e-6, 1.6e-6) == pytest.approx(0.4 * 5.6e-6)
     with pytest.raises(ValueError, match="roughness_a"):
         fits.smoothing(-1e-6, 0.0)
+
+
+# SKF tables 7 and 8, the "probable interference (-) / clearance (+)" rows: (field, size, printed range)
+PROBABLE = [
+    ("k5", 2, -11, -1), ("k6", 2, -12, -2), ("m5", 2, -13, -3), ("m6", 2, -14, -4),
+    ("k5", 5, -13, -2), ("k6", 5, -15, -3), ("m5", 5, -16, -5), ("m6", 5, -18, -6),
+    ("k5", 8, -13, -3), ("k6", 8, -16, -3), ("m5", 8, -18, -8), ("m6", 8, -21, -8),
+    ("k5", 15, -15, -3), ("k6", 15, -18, -3), ("m5", 15, -21, -9), ("m6", 15, -24, -9),
+    ("k5", 25, -19, -4), ("k6", 25, -22, -5), ("m5", 25, -25, -10), ("m6", 25, -28, -11),
+    ("k5", 40, -22, -5), ("k6", 40, -26, -6), ("m5", 40, -29, -12), ("m6", 40, -33, -13),
+    ("k5", 60, -26, -6), ("k6", 60, -32, -6), ("m5", 60, -35, -15), ("m6", 60, -41, -15),
+    ("N6", 40, -25, -4), ("N7", 40, -29, -1), ("P6", 40, -34, -13), ("P7", 40, -38, -10),
+    ("K6", 40, -10, 11), ("K7", 40, -14, 14), ("M6", 40, -17, 4), ("M7", 40, -21, 7),
+    ("K6", 100, -13, 14), ("K7", 100, -20, 20), ("M6", 100, -23, 4), ("M7", 100, -30, 10), ("H7", 40, 4, 32),
+]
+
+
+@pytest.mark.parametrize("field, size, tight, loose", PROBABLE)
+def test_probable_interference_reproduces_skf(field, size, tight, loose):
+    """SKF prints the mean +- half the RSS of the widths, rounded outward to the micrometre."""
+    import math
+
+    d = size * 1e-3
+    if field.islower():
+        p = fits.probable_interference(tables.field_limits(field, d), tables.bore_limits(d))
+    else:
+        p = fits.probable_interference(tables.outside_diameter_limits(d), tables.field_limits(field, d))
+    assert (math.floor(p.least * 1e6 + 1e-9), math.ceil(p.largest * 1e6 - 1e-9)) == (-loose, -tight)

@@ -90,6 +90,8 @@ class MountedInputs(NamedTuple):
     """(least, largest) interference of the outer fit after smoothing. [m]"""
     echo: dict
     """The options as given, for the JSON."""
+    probable: tuple
+    """SKF's probable interference range of the inner and the outer fit (fits.probable_interference)."""
 
 
 def _pair(text, name):
@@ -198,9 +200,13 @@ def mounted_inputs(bearing, *, shaft_fit=None, housing_fit=None, shaft_interfere
               "housing": housing}
     inner = (shaft[0] - bore[1], shaft[1] - bore[0])
     outer = (od[0] - housing[1], od[1] - housing[0])
+    from ..mounting import fits
+
+    probable = (fits.probable_interference(tables.Limits(*shaft), tables.Limits(*bore)),
+                fits.probable_interference(tables.Limits(*od), tables.Limits(*housing)))
     conditions = chain.Conditions(**temps, speed=float(speed))
     echo = dict(given, tolerance_class=klass)
-    return MountedInputs(m, conditions, unmounted, source, limits, inner, outer, echo)
+    return MountedInputs(m, conditions, unmounted, source, limits, inner, outer, echo, probable)
 
 
 def _unmounted(bearing, radial_clearance, clearance_class):

@@ -147,6 +147,8 @@ def _document(b, inp, r, speed_text):
                               "estimated": inp.mounting.estimated},
         "interference_inner_min_um": um(inp.inner[0]), "interference_inner_max_um": um(inp.inner[1]),
         "interference_outer_min_um": um(inp.outer[0]), "interference_outer_max_um": um(inp.outer[1]),
+        "interference_inner_probable_um": [um(inp.probable[0].least), um(inp.probable[0].largest)],
+        "interference_outer_probable_um": [um(inp.probable[1].least), um(inp.probable[1].largest)],
         "fit_reduction_min_um": um(largest.fit_reduction), "fit_reduction_max_um": um(least.fit_reduction),
         "thermal_reduction_um": um(prob.thermal_reduction),
         "centrifugal_reduction_um": um(prob.centrifugal_reduction),
