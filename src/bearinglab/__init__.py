@@ -8,6 +8,7 @@ geometry    conformity, curvature sums, clearance and free contact angle
 hertz       Hertz point contact: exact coefficients, semi-axes, pressure, approach, stiffness
 bearing     Material, BallBearing: validated inputs of the models
 catalog     built-in bearings and user TOML catalogs
+internal_clearance  ISO 5753-1 radial internal clearance classes of deep-groove ball bearings
 static      static contact angle under thrust (zero speed): load-angle relation, displacement
 stand       test-stand method (spec 000): stand load, C*, operating contact angle, iteration table
 parallel    chunked batch execution, serial or on dask
@@ -23,6 +24,7 @@ plots       all figures (matplotlib, loaded on first use); functions return Figu
 cli         the command line (imported on its own: ``bearinglab.cli``, ``python -m bearinglab``)
 ratings     load ratings and rating life: ISO 76, ISO 281, ISO/TS 16281
 limits      plausibility limits: warnings for results beyond ISO 76, C0, Hertz, the shoulder, light load
+mounting    mounted clearance: ISO 286 fits, ISO 492 tolerances, Lamé, temperature, speed (issue 23)
 
 The submodules are imported on first use (PEP 562): ``import bearinglab`` is instant, and
 ``bearinglab.hertz`` imports :mod:`bearinglab.hertz` the first time it is named, so that the command
@@ -40,9 +42,11 @@ __all__ = [
     "friction",
     "geometry",
     "hertz",
+    "internal_clearance",
     "kinematics",
     "lab",
     "limits",
+    "mounting",
     "parallel",
     "plots",
     "quasistatic",

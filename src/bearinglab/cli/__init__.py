@@ -14,6 +14,7 @@ load-distribution              5-DOF load distribution, stiffness, ROSS file (is
 bearing-set                    preloaded DB/DF/DT sets on one shaft (issue 11)     cli/load.py
 life                           ISO 281 / ISO/TS 16281 lives, duty cycles (issue 12)  cli/life.py
 runout | runout monte-carlo    manufacturing errors -> inner-ring runout (spec 003)   cli/runout.py
+clearance                      mounted clearance: fits, temperatures, speed (issue 23) cli/clearance.py
 
 Each command module defines ``COMMANDS`` (command name -> function, or a Typer group); the options
 every command shares (bearing, execution, JSON) and the output helpers are in ``cli/_common.py``, so
@@ -54,7 +55,19 @@ import typer.main
 
 from .. import __version__
 from ..errors import ConvergenceError, InputError
-from . import catalog, frequencies, friction, high_speed, life, load, runout, serve, stand, sweep
+from . import (
+    catalog,
+    clearance,
+    frequencies,
+    friction,
+    high_speed,
+    life,
+    load,
+    runout,
+    serve,
+    stand,
+    sweep,
+)
 
 __all__ = ["JsonRun", "app", "main", "run", "run_json"]
 
@@ -89,7 +102,7 @@ def _main_options(
     """Ball-bearing mechanics: combined loads and bearing sets, rating life, friction torque, high speed, test stand, runout, frequencies."""
 
 
-for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, friction, runout, serve):
+for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, friction, runout, clearance, serve):
     for _name, _command in _module.COMMANDS.items():
         if isinstance(_command, typer.Typer):
             app.add_typer(_command, name=_name)

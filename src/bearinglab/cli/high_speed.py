@@ -20,6 +20,7 @@ from typing import Annotated
 import typer
 
 from ..errors import ConvergenceError, InputError, ValidityWarning
+from . import _mounting as mo
 from ._common import (
     FIGURE_SUFFIXES,
     BallDiameter,
@@ -62,6 +63,7 @@ _COMPILED_MIN_CASES = 50_000
 _CHUNK = 2500  # cases per batched call then
 
 
+@mo.mounting_options
 def high_speed(
     axial_load: Annotated[str, typer.Option("--axial-load", "-F", help="Thrust: '20 kN', or a list/range '2.5kN:45kN:2.5kN'.")],
     speed: Annotated[str, typer.Option("--speed", "-n", help="Inner-ring speed: '10000 rpm', or a list/range '0,3000,6000rpm'.")],
@@ -90,6 +92,7 @@ def high_speed(
     options = _model_options(solver, raceway_control, constants, gyroscopic_sign, reduced_modulus)
     loads, speeds = _grid(axial_load, speed)
     limits.check_speed(speeds, b.require("pitch_diameter"))
+    b, mounted = mo.operating_bearing(b, speeds.max())  # issue 23: the operating clearance (highest speed)
     if plot is not None and (loads.size < 2 or speeds.size < 1):
         raise InputError("plot: needs a sweep over at least two thrusts (e.g. --axial-load 2.5kN:45kN:2.5kN)")
     if csv_file is not None:
@@ -116,10 +119,10 @@ def high_speed(
                            options["reduced_modulus"] / 1e9)
         if single:  # the inputs as given, without the noise of the unit conversions
             echo.update(inputs_echo(b, axial_load_N=float(loads[0]), speed_rpm=float(speeds[0]) / RPM))
-            emit_json(dict(rows[0], **echo, warnings=notes))
+            emit_json(dict(rows[0], **echo, **mounted, warnings=notes))
         else:
             emit_json(dict(echo, **inputs_echo(b, axial_load_N=loads.tolist(), speed_rpm=(speeds / RPM).tolist()),
-                           cases=rows,
+                           **mounted, cases=rows,
                            warnings=notes))
         return
     if single:

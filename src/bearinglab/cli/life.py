@@ -27,6 +27,7 @@ from typing import Annotated
 import typer
 
 from ..errors import InputError
+from . import _mounting as mo
 from ._common import (
     AxialLoadOpt,
     BallDiameter,
@@ -131,6 +132,7 @@ def _duty_cycle(path, bearing):
     return np.array(loads), np.array(speeds), np.array(times)
 
 
+@mo.mounting_options
 def life(
     fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
     radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
@@ -166,12 +168,14 @@ def life(
     if duty_cycle is not None:
         if any(x is not None for x in (fx, fy, fz, mx, my, radial_load, axial_load, speed)):
             raise InputError("duty-cycle: the loads and speeds are in the file; give no --fx ... --speed")
+        b, _ = mo.operating_bearing(b)  # issue 23: fits and temperatures (no single speed for the centrifugal)
         _life_of_duty_cycle(b, *_duty_cycle(check_input(duty_cycle, "duty-cycle"), b), options, lube, json_out,
                             assumed)
         return
     if speed is None:
         raise InputError("speed: give the inner-ring speed, e.g. --speed '3000 rpm'")
     n = parse_speed(speed, bearing=b, zero=False)
+    b, mounted = mo.operating_bearing(b, n)  # issue 23: the operating clearance
     loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
     dist = _distribution(b, loads)
     with warnings.catch_warnings():
@@ -181,7 +185,7 @@ def life(
            "inputs": _echo(b, options, lube, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
                            my_Nmm=loads[4] * 1e3, speed_rpm=n / RPM),
            "warnings": assumed + _diameter_note(r) + _notes(b, loads, r.warnings, dist) + _unbounded(r)}
-    doc = {k: doc[k] for k in _KEYS}
+    doc = {**{k: doc[k] for k in _KEYS}, **mounted}
     if json_out:
         emit_json(doc)
         return

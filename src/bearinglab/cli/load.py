@@ -21,6 +21,7 @@ from typing import Annotated
 import typer
 
 from ..errors import InputError
+from . import _mounting as mo
 from ._common import (
     FIGURE_SUFFIXES,
     AxialLoadOpt,
@@ -203,6 +204,7 @@ def _case(r, k):
     return types.SimpleNamespace(**fields, azimuth=r.azimuth, warnings=r.warnings)
 
 
+@mo.mounting_options
 def load_distribution(
     fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
     radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
@@ -232,6 +234,7 @@ def load_distribution(
                                                 fz is not None or axial_load is not None, mx is not None,
                                                 my is not None))
     w = _speeds(speed, ross is not None, b.require("pitch_diameter"))
+    b, mounted = mo.operating_bearing(b, w.max())  # issue 23: the operating clearance (at the highest speed)
     phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
     choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
     if plot is not None:
@@ -246,7 +249,7 @@ def load_distribution(
     for k in range(w.size):
         case = _case(r, k)
         docs.append({**_with_takeup(tables.load_distribution(case), _takeup_um(b),
-                                    _reactions(np.reshape(r.reactions, (-1, 5))[k], held)),
+                                    _reactions(np.reshape(r.reactions, (-1, 5))[k], held)), **mounted,
                      "inputs": _inputs(b, loads, w[k], phi0, stiffness_at=stiffness_at, **_prescribed_echo(held)),
                      "warnings": notes})
     if ross is not None:
@@ -334,6 +337,14 @@ def bearing_set(
     speed: SpeedOpt = "0 rpm", first_ball_angle: FirstBallOpt = "0 deg", stiffness_at: StiffnessAtOpt = "operating",
     plot: PlotOpt = None,
     json_out: JsonFlag = False,
+    shaft_fit: mo.ShaftFitOpt = None, housing_fit: mo.HousingFitOpt = None,
+    shaft_interference: mo.ShaftInterferenceOpt = None, housing_interference: mo.HousingInterferenceOpt = None,
+    shaft_bore: mo.ShaftBoreOpt = None, housing_outside_diameter: mo.HousingOutsideDiameterOpt = None,
+    shaft_material: mo.ShaftMaterialOpt = None, housing_material: mo.HousingMaterialOpt = None,
+    tolerance_class: mo.ToleranceClassOpt = None,
+    inner_ring_temperature: mo.InnerTempOpt = None, outer_ring_temperature: mo.OuterTempOpt = None,
+    ball_temperature: mo.BallTempOpt = None, shaft_temperature: mo.ShaftTempOpt = None,
+    housing_temperature: mo.HousingTempOpt = None,
 ):
     """Preloaded bearing set (DB/DF/DT) on a rigid shaft: shaft displacement, each bearing's ball loads, set stiffness."""
     import numpy as np
@@ -361,6 +372,25 @@ def bearing_set(
         check_output(plot, "plot", FIGURE_SUFFIXES)
     st, notes = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], loads, w, arrangement_kind=arrangement,
                        spacing=s, preload=fp, preload_displacement=e, first_ball_angle=phi0, stiffness_at=stiffness_at)
+    # issue 23: fits, temperatures and speed change each bearing's clearance, and so the set's interference
+    mounted = mo.mounted_set(bl, st.preload_displacement, arrangement, s, w, {
+        "shaft_fit": shaft_fit, "housing_fit": housing_fit, "shaft_interference": shaft_interference,
+        "housing_interference": housing_interference, "shaft_bore": shaft_bore,
+        "housing_outside_diameter": housing_outside_diameter, "shaft_material": shaft_material,
+        "housing_material": housing_material, "tolerance_class": tolerance_class,
+        "inner_ring_temperature": inner_ring_temperature, "outer_ring_temperature": outer_ring_temperature,
+        "ball_temperature": ball_temperature, "shaft_temperature": shaft_temperature,
+        "housing_temperature": housing_temperature})
+    if mounted is not None:
+        bl = mounted.bearings
+        st, notes = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], loads, w, arrangement_kind=arrangement,
+                           spacing=s, preload_displacement=mounted.interference, first_ball_angle=phi0,
+                           stiffness_at=stiffness_at)
+        notes = [*mounted.warnings, *notes]
+    idle, _ = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], [0.0] * 5, w, arrangement_kind=arrangement,
+                     spacing=s, preload_displacement=st.preload_displacement, first_ball_angle=phi0,
+                     stiffness_at=stiffness_at)
+    operating_preload = float(abs(np.asarray(idle.bearing_loads)[0][2]))
     notes = list(dict.fromkeys([*st.warnings, *notes]))
     orient, pos = sets.arrangement(arrangement, np.diff(st.positions), len(st.bearings))
     gaps_mm = [float(g) * 1e3 for g in np.diff(st.positions)]
@@ -379,6 +409,9 @@ def bearing_set(
                         **_with_takeup(tables.load_distribution(ns), _takeup_um(bk))})
     doc = {**_with_takeup(tables.load_distribution(_shaft(st)), _set_takeup_um(bl, orient)),
            "preload_offset_um": st.preload_displacement * 1e6,
+           "operating_preload_N": operating_preload,
+           **({} if mounted is None else {"operating_clearance_um": mounted.clearance * 1e6,
+                                          "mounting": mounted.echo}),
            "bearings": members,
            "inputs": {**_inputs(bl[0], loads, w, phi0, stiffness_at=stiffness_at), "bearings": names,
                       "arrangement": arrangement, "spacing_mm": spacing_mm, "spacing_default": st.default_spacing,

@@ -43,6 +43,7 @@ ENDPOINTS = {
     "load-distribution": ("load-distribution",),
     "life": ("life",),
     "friction": ("friction", "torque"),
+    "clearance": ("clearance",),
 }
 
 # not reachable from the web: files (read or written), clusters, output format, help
