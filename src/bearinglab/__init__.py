@@ -8,6 +8,7 @@ geometry    conformity, curvature sums, clearance and free contact angle
 hertz       Hertz point contact: exact coefficients, semi-axes, pressure, approach, stiffness
 bearing     Material, BallBearing: validated inputs of the models
 catalog     built-in bearings and user TOML catalogs
+internal_clearance  ISO 5753-1 radial internal clearance classes of deep-groove ball bearings
 static      static contact angle under thrust (zero speed): load-angle relation, displacement
 stand       test-stand method (spec 000): stand load, C*, operating contact angle, iteration table
 parallel    chunked batch execution, serial or on dask
@@ -40,6 +41,7 @@ __all__ = [
     "friction",
     "geometry",
     "hertz",
+    "internal_clearance",
     "kinematics",
     "lab",
     "limits",
