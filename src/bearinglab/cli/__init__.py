@@ -217,6 +217,9 @@ def main(argv=None) -> int:
         0 on success, 2 for invalid or physically impossible input (one line on stderr), 3 for a solve
         that did not converge.
     """
+    from ._common import reset_notes
+
+    reset_notes()  # the provenance notes of the previous command's bearings
     try:
         with warnings.catch_warnings():
             # numpy's floating-point warnings are no message for a user: every result is checked finite
