@@ -9,8 +9,8 @@ import re
 import pytest
 
 from bearinglab import catalog
-from bearinglab.catalog import _series
 from bearinglab.bearing import STEEL
+from bearinglab.catalog import _series
 from bearinglab.cli import main
 from bearinglab.errors import CatalogError, InputError
 

@@ -485,7 +485,7 @@ def provenance_notes(bearing):
     >>> provenance_notes(get("B218"))
     []
     >>> print(provenance_notes(get("6208"))[0][:60])
-    6208: n_balls, ball_diameter, pitch_diameter, inner_conformit
+    6208: n_balls, ball_diameter, pitch_diameter, inner_conformi
     """
     notes = []
     est = [f for f in getattr(bearing, "estimated_fields", ()) if f]
