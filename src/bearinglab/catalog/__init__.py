@@ -61,9 +61,7 @@ import tomllib
 from importlib import resources
 from pathlib import Path
 
-from ..bearing import MATERIALS, STEEL, BallBearing, Material
 from ..errors import CatalogError, InputError
-from ..units import parse_quantity
 
 __all__ = [
     "ENV_VAR", "aliases", "bearing_from_table", "builtin", "details", "get", "load_bearing_file", "load_catalog",
@@ -100,6 +98,9 @@ def _where(file, entry):
 
 def _material_table(table, name, where):
     """A ``[materials."NAME"]`` table -> Material."""
+    from ..bearing import Material
+    from ..units import parse_quantity
+
     if not isinstance(table, dict):
         raise CatalogError(f"{where}, material {name!r}: expected a table of fields, got {type(table).__name__}")
     unknown = sorted(set(table) - set(_MATERIAL_KEYS))
@@ -116,6 +117,8 @@ def _material_table(table, name, where):
 
 def _materials(table, kw, where, materials, q):
     """Ball and ring materials of an entry: named, or from elastic_modulus and poisson_ratio."""
+    from ..bearing import MATERIALS, STEEL, Material
+
     known = {**MATERIALS, **{k.lower(): m for k, m in (materials or {}).items()}}
     for key in ("ball_material", "ring_material"):
         if key in table:
@@ -172,6 +175,9 @@ def bearing_from_table(table, *, name="", file=None, materials=None):
     >>> b.n_balls, round(b.ball_diameter * 1e3, 2)
     (9, 7.94)
     """
+    from ..bearing import BallBearing
+    from ..units import parse_quantity
+
     where = _where(file, name)
     if not isinstance(table, dict):
         raise CatalogError(f"{where}: expected a table of fields, got {type(table).__name__}")

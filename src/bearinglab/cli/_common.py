@@ -155,6 +155,17 @@ def add_notes(notes):
 def reset_notes():
     """Forget the notes of the previous command (the command line calls this before each command)."""
     _NOTES.clear()
+    _SHOWN[0] = False
+
+
+def flush_notes():
+    """Print the provenance notes a command did not print with its warnings (the command line calls this
+    after a command that succeeded)."""
+    if _NOTES and not _SHOWN[0]:
+        print_warnings([])
+
+
+_SHOWN = [False]  # whether the notes went out with the command's output
 
 
 _OVERRIDES = weakref.WeakKeyDictionary()  # bearing -> the catalog bearing and the options that changed it
@@ -235,9 +246,21 @@ def emit_json(obj):
     """Print one JSON document on stdout (NaN and inf become null; :func:`bearinglab.tables.json_text`)."""
     from .. import tables
 
-    if _NOTES and isinstance(obj, dict) and isinstance(obj.get("warnings"), list):
-        obj = {**obj, "warnings": obj["warnings"] + [n for n in _NOTES if n not in obj["warnings"]]}
+    if _NOTES:
+        _SHOWN[0] = True
+        obj = _with_notes(obj)
     sys.stdout.write(tables.json_text(obj))
+
+
+def _with_notes(obj):
+    """A JSON document with the provenance notes in its ``warnings`` (a list of documents: in each)."""
+    if isinstance(obj, list):
+        return [_with_notes(o) for o in obj]
+    if not isinstance(obj, dict):
+        return obj
+    given = obj.get("warnings")
+    given = list(given) if isinstance(given, list) else []
+    return {**obj, "warnings": given + [n for n in _NOTES if n not in given]}
 
 
 # a cell that is a number (with its sign, exponent, unit marks or a D°M'S" angle): never shortened
@@ -301,6 +324,7 @@ def print_warnings(notes):
     """Print the plausibility and validity warnings of a result (yellow), after its tables, and the
     provenance notes of the bearing (estimated fields)."""
     notes = list(notes) + [n for n in _NOTES if n not in notes]
+    _SHOWN[0] = True
     for note in notes:
         console.print(f"[yellow]warning:[/yellow] {escape(note)}", highlight=False)
 
