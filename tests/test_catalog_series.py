@@ -177,10 +177,13 @@ def test_loading_the_whole_catalog_is_fast():
     assert time.perf_counter() - start < 0.150
 
 
-@pytest.mark.parametrize("argv", [["--help"], ["catalog", "search", "--bore", "40 mm"]])
+@pytest.mark.parametrize("argv", [["--help"], ["catalog", "search", "--bore", "40 mm"],
+                                  ["catalog", "show", "6208-2RS1/C3"]])
 def test_process_time(argv):
-    # issue 21: --help <= 0.3 s, catalog search <= 0.5 s as a whole process. CPU time of the child is
-    # measured (wall time on a shared CI machine is noise); the margin is 2x
+    # issue 21: --help <= 0.3 s, catalog show and search <= 0.5 s as a whole process. CPU time of the
+    # child is measured (wall time on a shared CI machine is noise); the margin is 2x. Measured on the
+    # loaded 2-core development machine: --help 0.32 s, search 0.5 s, show 0.8 s (numpy and scipy, which
+    # BallBearing needs, take 0.5 s of it: the 0.5 s target is not met for show)
     code = ("import resource, subprocess, sys; subprocess.run([sys.executable, '-m', 'bearinglab', *sys.argv[1:]], "
             "stdout=subprocess.DEVNULL, check=True); u = resource.getrusage(resource.RUSAGE_CHILDREN); "
             "print(u.ru_utime + u.ru_stime)")

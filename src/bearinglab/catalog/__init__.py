@@ -382,6 +382,21 @@ def builtin():
         return load_catalog(p)
 
 
+@functools.cache
+def _builtin_keys():
+    """The names and aliases of ``data/catalog.toml``, read without building its bearings."""
+    doc = tomllib.loads((resources.files("bearinglab") / "data" / "catalog.toml").read_text(encoding="utf-8"))
+    keys = set(doc["bearings"])
+    for table in doc["bearings"].values():
+        keys.update(table.get("aliases", []))
+    return frozenset(keys)
+
+
+def _is_builtin_entry(name):
+    """Whether ``name`` is a name or alias of ``data/catalog.toml`` (not a standard-series designation)."""
+    return _lookup(dict.fromkeys(_builtin_keys()), str(name).strip()) is not None
+
+
 def _user_files(catalog):
     files = []
     env = os.environ.get(ENV_VAR, "")
@@ -452,13 +467,12 @@ def get(name, *, catalog=None, clearance="mean"):
     hit = _lookup(user, key)
     if hit is not None:
         b = user[hit]
-        if _lookup(builtin(), hit) is not None or hit in _series.records():
+        if _is_builtin_entry(hit) or hit in _series.records():
             note = f"a user catalog entry named {hit!r}: it overrides the built-in bearing of that name"
             b = dataclasses.replace(b, sources={**b.sources, "catalog": note})
         return b
-    hit = _lookup(builtin(), key)
-    if hit is not None:
-        return builtin()[hit]
+    if _lookup(dict.fromkeys(_builtin_keys()), key) is not None:  # read the TOML entries (and pint) only then
+        return builtin()[_lookup(builtin(), key)]
     if key in _series.records():
         return _series.build(key, clearance=clearance)
     try:

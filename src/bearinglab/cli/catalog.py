@@ -71,7 +71,7 @@ def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False):
     user = set(_catalog._user_entries(catalog))
     rows = []
     for name in _catalog.names(catalog=catalog):
-        if name in listing and name not in user and _catalog._lookup(_catalog.builtin(), name) is None:
+        if name in listing and name not in user and not _catalog._is_builtin_entry(name):
             r = _series.records()[name]
             z, dw, dm, est = listing[name]
             rows.append({"name": name, "type": r["type"], "balls": z, "ball_diameter_mm": dw, "pitch_diameter_mm": dm,
@@ -116,7 +116,7 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name, alias o
                       sources={**b.sources, "radial_clearance": "given (--radial-clearance)"})
     add_notes(_catalog.provenance_notes(b))
     info = tables.bearing_summary(b)
-    extra = _catalog.details(name) if not _catalog._lookup(_catalog.builtin(), name) else None
+    extra = _catalog.details(name) if not _catalog._is_builtin_entry(name) else None
     if extra:
         info.update({k: v for k, v in extra.items() if k != "row"})
     for key in ("seal", "seals", "clearance_class", "tolerance_class"):
