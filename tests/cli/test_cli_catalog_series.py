@@ -7,7 +7,7 @@ import pytest
 
 from bearinglab.cli import main, run_json
 
-DESIGNATIONS = ["6208-2RS1/C3", "623-2Z", "16008", "7205 BECBP", "7014 CD/P4A", "71914 ACD"]
+DESIGNATIONS = ["6208-2RS1/C3", "623-2Z", "16008", "7205 BECBP", "7014 CD/P4A", "71914 ACD", "71810 ACD"]
 COMMANDS = {
     "life": ["life", "--radial-load", "2 kN", "--axial-load", "0.5 kN", "--speed", "3000 rpm",
              "--viscosity", "20 cSt"],

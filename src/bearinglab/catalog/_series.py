@@ -27,7 +27,8 @@ _ESTIMATED = ("estimated by the rule of bearinglab.estimation from d, D and B (s
 # angle code written -> the codes of the catalog rows that stand for it, best first
 _ROW_CODES = {"BE": ("BE", "B"), "BECBP": ("BE", "B"), "BECBM": ("BE", "B"), "BECBY": ("BE", "B"),
               "BEP": ("BE", "B"), "BEY": ("BE", "B"), "BEM": ("BE", "B"), "B": ("B", "BE"), "BW": ("B", "BE"),
-              "A5": ("A5",), "AC": ("A5",), "ACD": ("A5",), "A": ("A",), "C": ("C",), "CD": ("C",)}
+              "A5": ("A5", "ACD"), "AC": ("A5", "ACD"), "ACD": ("A5", "ACD"), "A": ("A",), "C": ("C", "CD"),
+              "CD": ("C", "CD")}
 
 
 def _csv_rows(name):
@@ -173,6 +174,8 @@ def build(name, d=None, *, clearance="mean"):
         if row[col] is not None:
             kw[key] = row[col] * 1e3
             sources[key] = ratings
+        elif ratings.startswith("computed"):
+            sources[key] = ratings
         else:
             sources[key] = ("computed by ISO 281 annex B from the internal geometry (the maker gives no "
                             "fatigue load limit)")
@@ -182,17 +185,17 @@ def build(name, d=None, *, clearance="mean"):
     label = d.text.strip() if d is not None else name
     kw.update(designation=label, bore=row["bore_mm"] / 1e3, outside_diameter=row["outside_diameter_mm"] / 1e3,
               width=row["width_mm"] / 1e3, type=row["type"], series=row["series"],
-              source=f"{row['maker_designation']}: {ratings}")
+              source=f"{row['maker_designation'] or name}: {ratings}")
     if row["type"] == "angular":
         kw["contact_angle"] = math.radians(row["contact_angle_deg"])
         code = name.split()[1]
-        sources["contact_angle"] = f"nominal contact angle of the code {code} ({row['maker_designation']})"
+        sources["contact_angle"] = f"nominal contact angle of the code {code} ({row['maker_designation'] or name})"
         if "inner_conformity" in estimated:  # the clearance follows from the angle and the conformities
             estimated.append("radial_clearance")
         if d is not None and d.angle_code and d.angle_code != code:
             sources["contact_angle"] += (f"; the code {d.angle_code} written stands for the same "
                                          f"{row['contact_angle_deg']:g} deg; ratings and dimensions are "
-                                         f"{row['maker_designation']}'s")
+                                         f"{row['maker_designation'] or name}'s")
     clearance_class = d.clearance_class if d is not None else None
     if d is not None and clearance_class and row["type"] != "radial":
         raise InputError(f"bearing: the clearance class {clearance_class} of {d.text!r} is a deep-groove "
