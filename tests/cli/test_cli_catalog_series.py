@@ -54,10 +54,11 @@ def test_show_json_sources_and_estimated_fields(capsys):
     code = main(["catalog", "show", "6208-2RS1/C3", "--json"])
     doc = json.loads(capsys.readouterr().out)
     assert code == 0
-    assert doc["radial_clearance_range_um"] == pytest.approx([15, 33]) and doc["radial_clearance_used"] == "mean"
+    iso = doc["iso5753_clearance"]
+    assert (iso["class"], iso["minimum_um"], iso["maximum_um"], iso["used"]) == ("C3", 15, 33, "mean")
     assert doc["radial_clearance_um"] == pytest.approx(24)
     assert "n_balls" in doc["estimated_fields"] and "SKF General Catalogue" in doc["sources"]["dynamic_load_rating"]
-    assert doc["seal"] == "RS1" and doc["seals"] == 2 and doc["clearance_class"] == "C3"
+    assert doc["seal"] == "RS1" and doc["seals"] == 2
     assert doc["chamfer_mm"] == 1.1 and doc["limiting_speed_rpm"] == 11000
 
 

@@ -119,11 +119,9 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name, alias o
     extra = _catalog.details(name) if not _catalog._is_builtin_entry(name) else None
     if extra:
         info.update({k: v for k, v in extra.items() if k != "row"})
-    for key in ("seal", "seals", "clearance_class", "tolerance_class"):
+    for key in ("seal", "seals", "tolerance_class"):
         info[key] = getattr(b, key)
-    cls_range = _clearance_range(b, clearance, radial_clearance)
-    if cls_range:
-        info.update(cls_range)
+    info["iso5753_clearance"] = _clearance_range(b, clearance, radial_clearance)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:  # one set of ratings per bearing, whichever command asks (ratings.bearing_ratings)
@@ -164,13 +162,15 @@ def _clearance_range(b, choice, given):
     except InputError:
         return None
     used = "given (--radial-clearance)" if given else (choice or "mean")
-    return {"radial_clearance_class": cls, "radial_clearance_range_um": [r.minimum * 1e6, r.maximum * 1e6],
-            "radial_clearance_used": used}
+    return {"class": cls, "minimum_um": r.minimum * 1e6, "maximum_um": r.maximum * 1e6, "used": used}
 
 
 def _value(key, value, sources, estimated):
     """A cell of ``catalog show``; a rating carries its source (catalog, ISO 76, ISO 281 ...), an estimated
     value says so."""
+    if key == "iso5753_clearance":
+        return (f"{value['class']}: {_fmt(value['minimum_um'])} - {_fmt(value['maximum_um'])} um; "
+                f"the models use {value['used']}")
     if isinstance(value, float):
         text = _fmt(value, ".6g")
     elif isinstance(value, list):
