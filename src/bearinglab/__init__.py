@@ -8,6 +8,8 @@ geometry    conformity, curvature sums, clearance and free contact angle
 hertz       Hertz point contact: exact coefficients, semi-axes, pressure, approach, stiffness
 bearing     Material, BallBearing: validated inputs of the models
 catalog     built-in bearings and user TOML catalogs
+designation designations as engineers write them: base size, seals, clearance, angle, tolerance
+estimation  estimated ball set of a catalog bearing from its boundary dimensions
 internal_clearance  ISO 5753-1 radial internal clearance classes of deep-groove ball bearings
 static      static contact angle under thrust (zero speed): load-angle relation, displacement
 stand       test-stand method (spec 000): stand load, C*, operating contact angle, iteration table
@@ -38,7 +40,9 @@ __all__ = [
     "__version__",
     "bearing",
     "catalog",
+    "designation",
     "errors",
+    "estimation",
     "friction",
     "geometry",
     "hertz",

@@ -170,6 +170,15 @@ class BallBearing:
     inner_shoulder_height, outer_shoulder_height : float
         Height of the raceway shoulder on the loaded side above the groove bottom, for the check of a
         truncated contact ellipse (:mod:`bearinglab.limits`; a default fraction of D when not given). [m]
+    clearance_class : str
+        Radial internal clearance class of the designation (``"C3"``; ISO 5753-1), if any.
+    tolerance_class : str
+        Tolerance class of the designation (``"P5"``, ``"P4A"``; ISO 492), if any.
+    estimated_fields : tuple of str
+        Fields whose values are estimates, not published or measured (catalog entries without a
+        published ball set; :mod:`bearinglab.estimation`).
+    sources : dict
+        Field -> where its value comes from (catalog entries).
 
     Examples
     --------
@@ -203,6 +212,10 @@ class BallBearing:
     seal_diameter: float | None = None
     inner_shoulder_height: float | None = None
     outer_shoulder_height: float | None = None
+    clearance_class: str | None = None
+    tolerance_class: str | None = None
+    estimated_fields: tuple = field(default=(), compare=False)
+    sources: dict = field(default_factory=dict, compare=False)
 
     def __post_init__(self):
         if self.n_balls is not None and (

@@ -39,7 +39,6 @@ __all__ = ["CLEARANCE_CLASSES", "ClearanceRow", "RadialClearanceRange", "clearan
            "radial_clearance_range"]
 
 CLEARANCE_CLASSES = ("C2", "CN", "C3", "C4", "C5")
-_UM = 1e-6
 _MM = 1e-3
 
 
@@ -151,4 +150,4 @@ def radial_clearance_range(bore, clearance_class="CN"):
         first = float(np.asarray(d_mm)[outside].flat[0]) if np.ndim(d_mm) else float(d_mm)
         raise InputError(f"bore must be in ({over[0] * _MM:g}, {incl[-1] * _MM:g}] m for clearance class "
                          f"{name} (ISO 5753-1 table as stored), got {first * _MM!r}")
-    return RadialClearanceRange(lo[index][()] * _UM, hi[index][()] * _UM)
+    return RadialClearanceRange(lo[index][()] / 1e6, hi[index][()] / 1e6)

@@ -230,11 +230,15 @@ def main(argv=None) -> int:
         0 on success, 2 for invalid or physically impossible input (one line on stderr), 3 for a solve
         that did not converge.
     """
+    from ._common import flush_notes, reset_notes
+
+    reset_notes()  # the provenance notes of the previous command's bearings
     try:
         with warnings.catch_warnings():
             # numpy's floating-point warnings are no message for a user: every result is checked finite
             warnings.simplefilter("ignore", RuntimeWarning)
             rv = _click_command().main(args=argv, prog_name="bearinglab", standalone_mode=False)
+        flush_notes()
     except _USAGE_ERRORS as exc:
         if exc.format_message():  # empty after no_args_is_help has printed the help
             print(f"bearinglab: error: {_with_bearing_hint(exc.format_message())}", file=sys.stderr)

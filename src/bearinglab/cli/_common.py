@@ -127,6 +127,7 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
     if not changes:
         if not (bearing or bearing_file):
             raise InputError("bearing: give --bearing NAME, --bearing-file FILE or the inline geometry (--balls, --ball-diameter, ...)")
+        add_notes(_catalog.provenance_notes(base))
         return base
     given = {"balls": balls, "ball-diameter": ball_diameter, "pitch-diameter": pitch_diameter,
              "inner-groove-radius": inner_groove_radius, "outer-groove-radius": outer_groove_radius,
@@ -136,9 +137,39 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
     label = ", ".join(f"{k} {v}" for k, v in overrides.items())
     if base.designation != "inline":  # the title and the JSON say that the named bearing was changed
         changes["designation"] = f"{base.designation} ({label})"
+    given_fields = {"n_balls", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity",
+                    "contact_angle", "radial_clearance"} & set(changes)
+    if base.estimated_fields and given_fields:  # a value given inline is no longer an estimate
+        changes["estimated_fields"] = tuple(f for f in base.estimated_fields if f not in given_fields)
     b = dataclasses.replace(base, **changes)
     _OVERRIDES[b] = {"catalog_bearing": base.designation, "overrides": overrides}
+    add_notes(_catalog.provenance_notes(b))
     return b
+
+
+_NOTES: list[str] = []  # provenance notes of the bearings resolved by the command that runs
+
+
+def add_notes(notes):
+    """Remember the provenance notes of a resolved bearing (estimated fields, a user entry overriding a
+    built-in): :func:`emit_json` adds them to a document's ``warnings`` and :func:`print_warnings` prints them."""
+    _NOTES.extend(n for n in notes if n not in _NOTES)
+
+
+def reset_notes():
+    """Forget the notes of the previous command (the command line calls this before each command)."""
+    _NOTES.clear()
+    _SHOWN[0] = False
+
+
+def flush_notes():
+    """Print the provenance notes a command did not print with its warnings (the command line calls this
+    after a command that succeeded)."""
+    if _NOTES and not _SHOWN[0]:
+        print_warnings([])
+
+
+_SHOWN = [False]  # whether the notes went out with the command's output
 
 
 _OVERRIDES = weakref.WeakKeyDictionary()  # bearing -> the catalog bearing and the options that changed it
@@ -219,7 +250,21 @@ def emit_json(obj):
     """Print one JSON document on stdout (NaN and inf become null; :func:`bearinglab.tables.json_text`)."""
     from .. import tables
 
+    if _NOTES:
+        _SHOWN[0] = True
+        obj = _with_notes(obj)
     sys.stdout.write(tables.json_text(obj))
+
+
+def _with_notes(obj):
+    """A JSON document with the provenance notes in its ``warnings`` (a list of documents: in each)."""
+    if isinstance(obj, list):
+        return [_with_notes(o) for o in obj]
+    if not isinstance(obj, dict):
+        return obj
+    given = obj.get("warnings")
+    given = list(given) if isinstance(given, list) else []
+    return {**obj, "warnings": given + [n for n in _NOTES if n not in given]}
 
 
 # a cell that is a number (with its sign, exponent, unit marks or a D°M'S" angle): never shortened
@@ -280,7 +325,10 @@ def table(title, columns, rows, *, caption=None, wide=False):
 
 
 def print_warnings(notes):
-    """Print the plausibility and validity warnings of a result (yellow), after its tables."""
+    """Print the plausibility and validity warnings of a result (yellow), after its tables, and the
+    provenance notes of the bearing (estimated fields)."""
+    notes = list(notes) + [n for n in _NOTES if n not in notes]
+    _SHOWN[0] = True
     for note in notes:
         console.print(f"[yellow]warning:[/yellow] {escape(note)}", highlight=False)
 

@@ -45,6 +45,7 @@ from ._common import (
     OuterRadius,
     PitchDiameter,
     RadialLoadOpt,
+    add_notes,
     check_output,
     choice,
     console,
@@ -355,6 +356,8 @@ def bearing_set(
     from ..quasistatic import combined, sets
     from ..units import parse_quantity
     bl = [_catalog.get(name, catalog=catalog) for name in bearing]
+    for b in bl:  # each estimated bearing says so in the result (cli._common.add_notes)
+        add_notes(_catalog.provenance_notes(b))
     choice("arrangement", arrangement, tuple(sets.ARRANGEMENTS))
     s = None if spacing is None else parse_length(spacing, "spacing", zero=True)
     if preload is not None and preload_offset is not None:

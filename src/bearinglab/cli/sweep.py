@@ -15,6 +15,7 @@ from ._common import (
     ExecutorOpt,
     JsonFlag,
     WorkersOpt,
+    add_notes,
     check_output,
     console,
     emit_json,
@@ -36,9 +37,11 @@ def sweep(
     """Evaluate a model over the Cartesian product of parameter values; write the cases as CSV or Parquet."""
     import numpy as np
 
+    from .. import catalog as _catalog
     from .. import sweep as _sweep
     from .. import tables
     spec = _sweep.load_sweep(file)
+    add_notes(_catalog.provenance_notes(spec.bearing))  # an estimated catalog bearing says so
     target = out or spec.output
     if target is not None:  # checked before the sweep runs: the directory exists, the suffix is known
         check_output(target, "out" if out is not None else "output", (".csv", ".parquet"))

@@ -6,8 +6,11 @@ load_catalog        read a catalog file into ``{name: BallBearing}``
 bearing_from_table  one ``[bearings."NAME"]`` table (or a single-bearing file) -> BallBearing
 load_bearing_file   a single-bearing TOML file -> BallBearing
 builtin             the built-in catalog
-get                 look a bearing up by name or alias (built-ins, then user catalogs)
+get                 look a bearing up by name, alias or designation (user catalogs, then built-ins)
 names               the names of all bearings visible
+provenance_notes    the warnings a result computed from a bearing carries (estimated fields, overrides)
+search              the standard-series bearings of given dimensions, type and series
+details             catalog data of a standard-series bearing that is no BallBearing field (chamfer, speeds, mass)
 aliases             the aliases of each name (for listings)
 read_toml           any TOML input file: UTF-8 (a byte-order mark is skipped), errors naming the file
 
@@ -37,12 +40,20 @@ Materials: ``ball_material`` / ``ring_material`` name a built-in material (steel
 ``[materials."NAME"]`` table of the same file (``elastic_modulus``, ``poisson_ratio``, ``density``);
 or ``elastic_modulus`` and ``poisson_ratio`` in the entry set both parts at once (steel's density).
 
+    estimated = ["balls", "ball_diameter"]    # optional: the fields that are estimates, not measured
+
 A user catalog is given by ``--catalog FILE`` or the environment variable ``BEARINGLAB_CATALOG``
-(several files separated by ``os.pathsep``); its entries take precedence over the built-ins.
+(several files separated by ``os.pathsep``); its entries take precedence over the built-ins (an entry
+with a built-in's name overrides it, and says so in its ``sources``).
+
+The built-in catalog has two parts: ``data/catalog.toml`` (the bearings of the specs and validation
+cases) and the standard series of ``data/catalog_series.csv`` (read by :mod:`bearinglab.catalog._series`),
+which are found by designation: ``get("6208-2RS1/C3")``, ``get("7205 BECBP")``.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
 import functools
 import os
@@ -50,12 +61,11 @@ import tomllib
 from importlib import resources
 from pathlib import Path
 
-from .bearing import MATERIALS, STEEL, BallBearing, Material
-from .errors import CatalogError, InputError
-from .units import parse_quantity
+from ..errors import CatalogError, InputError
 
 __all__ = [
-    "ENV_VAR", "aliases", "bearing_from_table", "builtin", "get", "load_bearing_file", "load_catalog", "names", "read_toml",
+    "ENV_VAR", "aliases", "bearing_from_table", "builtin", "details", "get", "load_bearing_file", "load_catalog",
+    "names", "provenance_notes", "read_toml", "search",
 ]
 
 ENV_VAR = "BEARINGLAB_CATALOG"
@@ -69,8 +79,15 @@ _KNOWN = {
     "outside_diameter", "width", "type", "static_load_rating", "ball_material", "ring_material",
     "source", "aliases", "hertz_table", "designation", "dynamic_load_rating", "fatigue_load_limit",
     "series", "seal", "seals", "seal_diameter", "elastic_modulus", "poisson_ratio", "inner_shoulder_height",
-    "outer_shoulder_height",
+    "outer_shoulder_height", "estimated",
 }
+# a file key of the `estimated` list -> the BallBearing field it sets
+_ESTIMABLE = {"balls": "n_balls", "ball_diameter": "ball_diameter", "pitch_diameter": "pitch_diameter",
+              "inner_groove_radius": "inner_conformity", "outer_groove_radius": "outer_conformity",
+              "inner_conformity": "inner_conformity", "outer_conformity": "outer_conformity",
+              "contact_angle": "contact_angle", "radial_clearance": "radial_clearance",
+              "static_load_rating": "static_load_rating", "dynamic_load_rating": "dynamic_load_rating",
+              "fatigue_load_limit": "fatigue_load_limit"}
 _MATERIAL_KEYS = {"elastic_modulus": "pressure", "poisson_ratio": "dimensionless", "density": "density"}
 
 
@@ -81,6 +98,9 @@ def _where(file, entry):
 
 def _material_table(table, name, where):
     """A ``[materials."NAME"]`` table -> Material."""
+    from ..bearing import Material
+    from ..units import parse_quantity
+
     if not isinstance(table, dict):
         raise CatalogError(f"{where}, material {name!r}: expected a table of fields, got {type(table).__name__}")
     unknown = sorted(set(table) - set(_MATERIAL_KEYS))
@@ -97,6 +117,8 @@ def _material_table(table, name, where):
 
 def _materials(table, kw, where, materials, q):
     """Ball and ring materials of an entry: named, or from elastic_modulus and poisson_ratio."""
+    from ..bearing import MATERIALS, STEEL, Material
+
     known = {**MATERIALS, **{k.lower(): m for k, m in (materials or {}).items()}}
     for key in ("ball_material", "ring_material"):
         if key in table:
@@ -153,6 +175,9 @@ def bearing_from_table(table, *, name="", file=None, materials=None):
     >>> b.n_balls, round(b.ball_diameter * 1e3, 2)
     (9, 7.94)
     """
+    from ..bearing import BallBearing
+    from ..units import parse_quantity
+
     where = _where(file, name)
     if not isinstance(table, dict):
         raise CatalogError(f"{where}: expected a table of fields, got {type(table).__name__}")
@@ -204,6 +229,13 @@ def bearing_from_table(table, *, name="", file=None, materials=None):
             if not (isinstance(ht, dict) and set(ht) <= {"inner", "outer"} and all(isinstance(v, (int, float)) for v in ht.values())):
                 raise CatalogError(f"{where}, field 'hertz_table': expected {{ inner = 0.63, outer = 0.852 }}, got {ht!r}")
             kw["hertz_table"] = {k: float(v) for k, v in ht.items()}
+        if "estimated" in table:
+            est = table["estimated"]
+            if not (isinstance(est, list) and all(isinstance(e, str) and e in _ESTIMABLE for e in est)):
+                raise CatalogError(f"{where}, field 'estimated': expected a list of field names from "
+                                   f"{sorted(_ESTIMABLE)}, got {est!r}")
+            kw["estimated_fields"] = tuple(dict.fromkeys(_ESTIMABLE[e] for e in est))
+            kw["sources"] = {_ESTIMABLE[e]: f"estimated ({_where(file, name)})" for e in est}
         designation = str(table.get("designation", name))
         return BallBearing(designation=designation, **kw)
     except CatalogError:
@@ -350,6 +382,21 @@ def builtin():
         return load_catalog(p)
 
 
+@functools.cache
+def _builtin_keys():
+    """The names and aliases of ``data/catalog.toml``, read without building its bearings."""
+    doc = tomllib.loads((resources.files("bearinglab") / "data" / "catalog.toml").read_text(encoding="utf-8"))
+    keys = set(doc["bearings"])
+    for table in doc["bearings"].values():
+        keys.update(table.get("aliases", []))
+    return frozenset(keys)
+
+
+def _is_builtin_entry(name):
+    """Whether ``name`` is a name or alias of ``data/catalog.toml`` (not a standard-series designation)."""
+    return _lookup(dict.fromkeys(_builtin_keys()), str(name).strip()) is not None
+
+
 def _user_files(catalog):
     files = []
     env = os.environ.get(ENV_VAR, "")
@@ -366,37 +413,178 @@ def _all(catalog=None):
     return entries
 
 
-def get(name, *, catalog=None):
-    """Look a bearing up by name or alias.
+def _lookup(entries, name):
+    """The key of ``name`` in ``entries`` (exact, then case-folded and without spaces), or None."""
+    if name in entries:
+        return name
+    folded = {k.lower().replace(" ", ""): k for k in entries}
+    return folded.get(str(name).lower().replace(" ", ""))
+
+
+def _user_entries(catalog):
+    entries = {}
+    for f in _user_files(catalog):
+        entries.update(load_catalog(f))
+    return entries
+
+
+def get(name, *, catalog=None, clearance="mean"):
+    """Look a bearing up by name, alias or designation.
 
     Parameters
     ----------
     name : str
-        Designation or alias, e.g. ``"B218"`` or ``"7218B"``.
+        Name, alias or designation: ``"B218"``, ``"7218B"``, ``"6208-2RS1/C3"``, ``"7205 BECBP"``.
     catalog : str, Path or list, optional
         User catalog file(s), searched before the built-ins (after ``BEARINGLAB_CATALOG``).
+    clearance : {"mean", "min", "max"}
+        The value of a deep-groove bearing's ISO 5753-1 clearance range that the models use.
 
     Returns
     -------
     BallBearing
+        A standard-series bearing carries its seals (``seal``, ``seals``), ``clearance_class``,
+        ``tolerance_class``, ``sources`` (field -> source) and ``estimated_fields``.
 
     Raises
     ------
     CatalogError
-        Unknown name (the message lists the known ones) or a malformed catalog file.
+        Unknown name (the message suggests close ones), a suffix that is not known (the message names the
+        valid ones) or a malformed catalog file.
 
     Examples
     --------
     >>> get("7218B").n_balls
     16
+    >>> b = get("6208-2RS1/C3")
+    >>> b.seal, b.seals, b.clearance_class, round(b.radial_clearance * 1e6)
+    ('RS1', 2, 'C3', 24)
     """
-    entries = _all(catalog)
-    if name in entries:
-        return entries[name]
-    folded = {k.lower(): k for k in entries}
-    if str(name).lower() in folded:
-        return entries[folded[str(name).lower()]]
-    raise CatalogError(f"bearing: unknown name {name!r}; {_suggestions(str(name), sorted(entries))}")
+    from . import _series
+
+    key = str(name).strip()
+    user = _user_entries(catalog)
+    hit = _lookup(user, key)
+    if hit is not None:
+        b = user[hit]
+        if _is_builtin_entry(hit) or hit in _series.records():
+            note = f"a user catalog entry named {hit!r}: it overrides the built-in bearing of that name"
+            b = dataclasses.replace(b, sources={**b.sources, "catalog": note})
+        return b
+    if _lookup(dict.fromkeys(_builtin_keys()), key) is not None:  # read the TOML entries (and pint) only then
+        return builtin()[_lookup(builtin(), key)]
+    if key in _series.records():
+        return _series.build(key, clearance=clearance)
+    try:
+        return _series.resolve(key, clearance=clearance)
+    except CatalogError:
+        raise
+    except InputError as exc:
+        if "is not a designation" not in str(exc):
+            raise
+    known = sorted(set(user) | set(builtin()) | set(_series.records()))
+    raise CatalogError(f"bearing: unknown name {key!r}; {_suggestions(key, known)}")
+
+
+def provenance_notes(bearing):
+    """The warnings every result computed from this bearing carries.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        A bearing from :func:`get` (or any bearing: one without estimated fields gives none).
+
+    Returns
+    -------
+    list of str
+        One note naming the estimated fields and how to give measured values, and one for a user entry
+        that overrides a built-in bearing; empty when there is nothing to say.
+
+    Examples
+    --------
+    >>> provenance_notes(get("B218"))
+    []
+    >>> print(provenance_notes(get("6208"))[0][:60])
+    6208: n_balls, ball_diameter, pitch_diameter, inner_conformi
+    """
+    notes = []
+    est = [f for f in getattr(bearing, "estimated_fields", ()) if f]
+    if est:
+        notes.append(f"{bearing.designation}: {', '.join(est)} estimated, not published (bearinglab.estimation; "
+                     "its error is in the user guide, 'Estimated internal geometry'): results computed from "
+                     "them are estimates; give measured values in a user catalog (--catalog FILE) or a "
+                     "--bearing-file, or inline (--balls, --ball-diameter, ...)")
+    note = getattr(bearing, "sources", {}).get("catalog")
+    if note:
+        notes.append(f"{bearing.designation}: {note}")
+    return notes
+
+
+def details(name):
+    """Catalog data of a standard-series bearing that is no BallBearing field.
+
+    Parameters
+    ----------
+    name : str
+        A designation of the standard series (``"6208"``, ``"6208-2RS1/C3"``, ``"7205 BECBP"``).
+
+    Returns
+    -------
+    dict or None
+        ``row`` (the catalog row's name), ``chamfer_mm``, ``reference_speed_rpm``, ``limiting_speed_rpm``,
+        ``mass_kg`` (None where the maker gives none), ``maker_designation``; None for a bearing that is
+        not in the standard series.
+
+    Examples
+    --------
+    >>> details("6208-2Z")["chamfer_mm"]
+    1.1
+    """
+    from . import _series
+
+    row = str(name).strip() if str(name).strip() in _series.records() else _series.row_name(name)
+    return None if row is None else {"row": row, **_series.details(row)}
+
+
+def search(*, bore=None, outside_diameter=None, width=None, type=None, series=None, tolerance=1e-6):
+    """The standard-series bearings of given boundary dimensions, type and series.
+
+    Parameters
+    ----------
+    bore, outside_diameter, width : float, optional
+        d, D, B to match (within ``tolerance``). [m]
+    type : {"deep-groove", "angular"}, optional
+        Bearing type.
+    series : str, optional
+        Series such as ``"62"``, ``"618"``, ``"72"`` (every angle code), ``"72B"``, ``"79C"``.
+    tolerance : float
+        Allowed difference of each dimension. [m]
+
+    Returns
+    -------
+    list of dict
+        One per bearing: ``name``, ``type`` (``deep-groove`` or ``angular``), ``series``, ``bore_mm``,
+        ``outside_diameter_mm``, ``width_mm``, ``contact_angle_deg``, ``dynamic_load_rating_kN``,
+        ``static_load_rating_kN``, ``maker_designation``; ordered by bore, then outside diameter.
+
+    Examples
+    --------
+    >>> [r["name"] for r in search(bore=0.040, outside_diameter=0.080)]
+    ['6208', '7208 BE', '7208 A', '7208 B', '7208 C']
+    """
+    from . import _series
+
+    out = []
+    for name in _series.search(bore=bore, outside_diameter=outside_diameter, width=width, type=type,
+                               series=series, tolerance=tolerance):
+        r = _series.records()[name]
+        out.append({"name": name, "type": "deep-groove" if r["type"] == "radial" else "angular",
+                    "series": r["series"], "bore_mm": r["bore_mm"], "outside_diameter_mm": r["outside_diameter_mm"],
+                    "width_mm": r["width_mm"], "contact_angle_deg": r["contact_angle_deg"],
+                    "dynamic_load_rating_kN": r["dynamic_load_rating_kN"],
+                    "static_load_rating_kN": r["static_load_rating_kN"], "maker_designation": r["maker_designation"]})
+    order = {n: i for i, n in enumerate(_series.records())}
+    return sorted(out, key=lambda r: (r["bore_mm"], r["outside_diameter_mm"], order[r["name"]]))
 
 
 def _suggestions(name, known):
@@ -432,7 +620,8 @@ def aliases(*, catalog=None):
     entries = _all(catalog)
     first = {}
     for name in names(catalog=catalog):
-        first[id(entries[name])] = name
+        if name in entries:  # the standard series have no aliases
+            first[id(entries[name])] = name
     out = {}
     for key, b in entries.items():
         name = first.get(id(b))
@@ -459,7 +648,9 @@ def names(*, catalog=None):
     >>> "B218" in names() and "7218B" not in names()
     True
     """
+    from . import _series
+
     seen = {}
     for name, b in _all(catalog).items():
         seen.setdefault(id(b), name)
-    return sorted(seen.values())
+    return sorted(set(seen.values()) | set(_series.records()))
