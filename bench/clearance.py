@@ -19,7 +19,6 @@ from _timing import best_of
 
 from bearinglab import catalog, internal_clearance
 from bearinglab.mounting import chain, monte_carlo, tables
-from bearinglab.mounting.materials import material
 
 N_BATCH = 1_000_000
 N_BASELINE = 100_000
