@@ -30,12 +30,12 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Annotated
 
 import typer
-from rich.console import Console
 from rich.markup import escape
 from rich.measure import Measurement
 from rich.table import Table
 
 from ..errors import InputError
+from ._console import Console
 
 if TYPE_CHECKING:
     from ..bearing import BallBearing
@@ -242,14 +242,14 @@ def plain_zero(text):
     return _NEGATIVE_ZERO.sub("", text)
 
 
-def table(title, columns, rows, *, caption=None, wide=False):
+def table(title, columns, rows, *, caption=None):
     """Print a rich table; ``columns`` are header strings, ``rows`` lists of already formatted cells.
 
     A number is never shortened ('0.34…') and a zero never signed ('-0'; :func:`plain_zero`): number
-    columns do not wrap, text columns wrap. A table
-    that still does not fit is printed wider than the console when the output is a file or a pipe,
-    and stacked (one small quantity/value table per row) on a terminal. ``wide`` prints it wide on a
-    terminal too.
+    columns do not wrap, text columns wrap. The table is never wider than the console (a terminal's
+    width; on a pipe or in a file ``$COLUMNS``, else 80: ``cli/_console.py``): one that does not fit
+    even so is stacked, one small quantity/value table per row. A command chooses tables that fit 80
+    columns, so that stacking is for narrower terminals only.
     """
     title, caption = plain_zero(title), caption and plain_zero(caption)
     cells = [[escape(plain_zero(str(c))) for c in row] for row in rows]
@@ -265,14 +265,11 @@ def table(title, columns, rows, *, caption=None, wide=False):
     need = Measurement.get(console, console.options.update(width=10**4), narrow).maximum
     if need <= console.width:
         console.print(t)
-    elif wide or not console.is_terminal:
-        Console(file=console.file, width=Measurement.get(console, console.options.update(width=10**4), t).maximum,
-                highlight=False, force_terminal=console.is_terminal, no_color=console.no_color).print(t)
-    else:
-        for k, row in enumerate(cells, 1):
-            label = f"{title} ({k} of {len(cells)})" if len(cells) > 1 else title
-            console.print(_rich_table(label, ["quantity", "value"], list(zip(map(escape, columns), row)),
-                                      caption if k == len(cells) else None, [False, True]))
+        return
+    for k, row in enumerate(cells, 1):
+        label = f"{title} ({k} of {len(cells)})" if len(cells) > 1 else title
+        console.print(_rich_table(label, ["quantity", "value"], list(zip(map(escape, columns), row)),
+                                  caption if k == len(cells) else None, [False, True]))
 
 
 def print_warnings(notes):

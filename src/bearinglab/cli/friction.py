@@ -34,8 +34,8 @@ from ._common import (
     print_warnings,
     resolve_bearing,
     speed_size,
+    table,
 )
-from ._common import table as _table
 
 __all__ = ["COMMANDS"]
 
@@ -105,12 +105,6 @@ def _friction_bearing(
             )
         changes["outside_diameter"] = 2.0 * dm - d
     return dataclasses.replace(base, **changes) if changes else base
-
-
-def table(title, columns, rows, *, caption=None):
-    """Print a table without truncating any cell: wider than the terminal rather than cut (numbers
-    must never be shown as '0.34…')."""
-    _table(title, columns, rows, caption=caption, wide=True)
 
 
 def _case_values(text, kind, name):
