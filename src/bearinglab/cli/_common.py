@@ -25,13 +25,14 @@ import dataclasses
 import math
 import re
 import sys
+import textwrap
 import weakref
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated
 
 import typer
+from rich.cells import cell_len
 from rich.markup import escape
-from rich.measure import Measurement
 from rich.table import Table
 
 from ..errors import InputError
@@ -242,29 +243,59 @@ def plain_zero(text):
     return _NEGATIVE_ZERO.sub("", text)
 
 
+def _header_lines(header, width, level):
+    """A number column's header on several lines: the unit on a line of its own (level 1: 'ball load'
+    over '[N]'), then also the name on lines no wider than the column's cells where its words allow
+    (level 2: 'ball', 'load', '[N]')."""
+    name, bracket, unit = header.rpartition(" [")
+    name, unit = (name, bracket.strip() + unit) if bracket else (header, "")
+    if level >= 2:
+        name = "\n".join(textwrap.wrap(name, width=max(width, *map(len, name.split() or [""])),
+                                       break_long_words=False, break_on_hyphens=False))
+    return "\n".join(part for part in (name, unit) if part)
+
+
 def table(title, columns, rows, *, caption=None):
     """Print a rich table; ``columns`` are header strings, ``rows`` lists of already formatted cells.
 
     A number is never shortened ('0.34…') and a zero never signed ('-0'; :func:`plain_zero`): number
     columns do not wrap, text columns wrap. The table is never wider than the console (a terminal's
-    width; on a pipe or in a file ``$COLUMNS``, else 80: ``cli/_console.py``): one that does not fit
-    even so is stacked, one small quantity/value table per row. A command chooses tables that fit 80
-    columns, so that stacking is for narrower terminals only.
+    width; on a pipe or in a file ``$COLUMNS``, else 80: ``cli/_console.py``). Where it does not fit,
+    the headers of its number columns go on several lines, the widest first, until it fits; one that
+    does not fit even so is stacked, one small quantity/value table per row. A command chooses
+    tables that fit 80 columns, so that stacking is for narrower terminals only.
     """
     title, caption = plain_zero(title), caption and plain_zero(caption)
-    cells = [[escape(plain_zero(str(c))) for c in row] for row in rows]
+    plain = [[plain_zero(str(c)) for c in row] for row in rows]
+    cells = [[escape(c) for c in row] for row in plain]
     numeric = [all(_NUMBER_CELL.match(row[i].strip()) for row in cells if i < len(row))
                for i in range(len(columns))]
-    t = _rich_table(title, columns, cells, caption, numeric)
-    # the narrowest the table may be: number columns whole, text columns down to their longest word
-    def word(text):
-        return max(text.split() or [""], key=len)
+    shown = getattr(console, "spelled", str)  # the text as the console writes it (ASCII spelling)
 
-    narrow = _rich_table("", [c if numeric[i] else word(c) for i, c in enumerate(columns)],
-                         [[c if numeric[i] else word(c) for i, c in enumerate(row)] for row in cells], None, numeric)
-    need = Measurement.get(console, console.options.update(width=10**4), narrow).maximum
-    if need <= console.width:
-        console.print(t)
+    def width(text, whole):
+        """Columns ``text`` needs: whole (a number), or down to its longest word (a text, that wraps)."""
+        lines = shown(text).split("\n") if whole else shown(text).split()
+        return max(map(cell_len, lines), default=0)
+
+    body = [max((width(row[i], numeric[i]) for row in plain if i < len(row)), default=0)
+            for i in range(len(columns))]
+    heads, level = [shown(h) for h in columns], [0] * len(columns)
+
+    def need():
+        """The narrowest the table can be: rich's heavy box with one space of padding, 3 per column + 1."""
+        return sum(max(b, width(h, numeric[i])) for i, (b, h) in enumerate(zip(body, heads))) + 3 * len(heads) + 1
+
+    while need() > console.width:
+        # the number column whose header, on more lines, saves the most
+        shorter = {i: _header_lines(shown(columns[i]), body[i], level[i] + 1)
+                   for i in range(len(heads)) if numeric[i] and level[i] < 2}
+        saving = {i: max(body[i], width(heads[i], True)) - max(body[i], width(h, True)) for i, h in shorter.items()}
+        if not saving or max(saving.values()) <= 0:
+            break
+        best = max(saving, key=saving.get)
+        heads[best], level[best] = shorter[best], level[best] + 1
+    if need() <= console.width:
+        console.print(_rich_table(title, heads, cells, caption, numeric))
         return
     for k, row in enumerate(cells, 1):
         label = f"{title} ({k} of {len(cells)})" if len(cells) > 1 else title

@@ -218,6 +218,10 @@ class Console(_RichConsole):
     def size(self, new_size):
         _RichConsole.size.fset(self, new_size)
 
+    def spelled(self, text):
+        """``text`` as this console writes it: spelled for its stream's encoding (:func:`ascii_spelling`)."""
+        return ascii_spelling(text, self.encoding) if needs_spelling(self.encoding) else text
+
     def render_str(self, text, **kwargs):
         if needs_spelling(self.encoding):
             text = ascii_spelling(text, self.encoding)

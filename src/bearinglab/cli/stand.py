@@ -147,7 +147,7 @@ def axial_angle(
 
 def _print_single(b, c, out, hertz, legacy):
     """The tables of one load: contact constants, iterations, and the result line."""
-    table(f"Bearing {b.designation}: contact constants ({hertz} Hertz)", ["quantity", "inner (в)", "outer (н)"], [
+    table(f"Bearing {b.designation}: contact constants ({hertz} Hertz)", ["quantity", "inner", "outer"], [
         ["Σρ [1/mm]", f"{out['curvature_sum_inner_per_mm']:.7f}", f"{out['curvature_sum_outer_per_mm']:.7f}"],
         ["cos τ", f"{out['cos_tau_inner']:.7f}", f"{out['cos_tau_outer']:.7f}"],
         ["2K/(πμ)", f"{out['delta_star_inner']:.5f}", f"{out['delta_star_outer']:.5f}"],
