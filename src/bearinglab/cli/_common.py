@@ -287,13 +287,15 @@ def table(title, columns, rows, *, caption=None):
 
     while need() > console.width:
         # the number column whose header, on more lines, saves the most
-        shorter = {i: _header_lines(shown(columns[i]), body[i], level[i] + 1)
-                   for i in range(len(heads)) if numeric[i] and level[i] < 2}
-        saving = {i: max(body[i], width(heads[i], True)) - max(body[i], width(h, True)) for i, h in shorter.items()}
+        shorter = {(i, k): _header_lines(shown(columns[i]), body[i], k)
+                   for i in range(len(heads)) if numeric[i] for k in range(level[i] + 1, 3)}
+        saving = {(i, k): max(body[i], width(heads[i], True)) - max(body[i], width(h, True))
+                  for (i, k), h in shorter.items()}
         if not saving or max(saving.values()) <= 0:
             break
-        best = max(saving, key=saving.get)
-        heads[best], level[best] = shorter[best], level[best] + 1
+        # the largest saving, at the lowest level that gives it
+        best = max(saving, key=lambda ik: (saving[ik], -ik[1]))
+        heads[best[0]], level[best[0]] = shorter[best], best[1]
     if need() <= console.width:
         console.print(_rich_table(title, heads, cells, caption, numeric))
         return

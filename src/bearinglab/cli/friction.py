@@ -40,7 +40,7 @@ from ._common import (
 __all__ = ["COMMANDS"]
 
 friction_app = typer.Typer(
-    help="Friction torque: handbook models and the friction-rig lab (spec 001).",
+    help="Friction torque: handbook models and the friction-rig lab.",
     no_args_is_help=True,
 )
 _MODELS = ("one-term", "two-term", "palmgren", "skf")
@@ -237,7 +237,7 @@ def torque(
     ] = None,
     json_out: JsonFlag = False,
 ):
-    """Friction torque under combined load: handbook models (spec 001 section 3: P0, T, T0 and T_F) or SKF's."""
+    """Friction torque under combined load: the handbook models of the friction-rig lab (P0, T, T0 and T_F) or SKF's."""
     import numpy as np
 
     from .. import friction, tables
@@ -576,7 +576,7 @@ def lab(
     ] = None,
     json_out: JsonFlag = False,
 ):
-    """Reduce a friction-rig session (spec 001): tasks 1-3, cross-checks, conclusions, and the HTML report."""
+    """Reduce a session of the friction-rig lab: tasks 1-3, cross-checks, conclusions, and the HTML report."""
     from .. import report
     from ..lab import analysis, measurement
 
