@@ -413,14 +413,27 @@ def _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out):
     if json_out:
         emit_json({**info, **cases[0], **echo} if len(cases) == 1 else {**info, "cases": cases, **echo})
         return
-    table(f"Friction torque of {b.designation} ({b.type}), SKF model, {lubrication}",
-          ["F_r [N]", "F_a [N]", "n [rpm]", "M_rr [N·mm]", "M_sl [N·mm]", "M_seal [N·mm]", "M_drag [N·mm]",
-           "M [N·mm]", "P [W]", "μ_sl"],
-          [[f"{r['radial_load_N']:.6g}", f"{r['axial_load_N']:.6g}", f"{r['speed_rpm']:.6g}",
-            *(f"{r[k]:.6g}" for k in ("rolling_moment_Nmm", "sliding_moment_Nmm", "seal_moment_Nmm",
-                                       "drag_moment_Nmm", "total_moment_Nmm", "power_loss_W")),
-            f"{r['sliding_friction_coefficient']:.5f}"] for r in cases],
-          caption=f"ν = {info['viscosity_cSt']:g} mm²/s; SKF {_skf_terms(m)}")
+    title = f"Friction torque of {b.designation} ({b.type}), SKF model, {lubrication}"
+    caption = f"ν = {info['viscosity_cSt']:g} mm²/s; SKF {_skf_terms(m)}"
+    inputs = ["F_r [N]", "F_a [N]", "n [rpm]"]
+    parts = [("rolling_moment_Nmm", "M_rr"), ("sliding_moment_Nmm", "M_sl"), ("seal_moment_Nmm", "M_seal"),
+             ("drag_moment_Nmm", "M_drag")]
+    totals = [("total_moment_Nmm", "M [N·mm]", ".6g"), ("power_loss_W", "P [W]", ".6g"),
+              ("sliding_friction_coefficient", "μ_sl", ".5f")]
+
+    def given(r):
+        return [f"{r['radial_load_N']:.6g}", f"{r['axial_load_N']:.6g}", f"{r['speed_rpm']:.6g}"]
+
+    if len(cases) == 1:  # one case: every quantity on a line of its own (80 columns)
+        r = cases[0]
+        table(title, ["quantity", "value"],
+              [*zip(inputs, given(r)), *((f"{name} [N·mm]", f"{r[k]:.6g}") for k, name in parts),
+               *((name, f"{r[k]:{fmt}}") for k, name, fmt in totals)], caption=caption)
+    else:  # several: the totals, then the four moments (two tables of 80 columns)
+        table(title, [*inputs, *(name for _, name, _ in totals)],
+              [[*given(r), *(f"{r[k]:{fmt}}" for k, _, fmt in totals)] for r in cases], caption=caption)
+        table("The four moments [N·mm]", [*inputs, *(name for _, name in parts)],
+              [[*given(r), *(f"{r[k]:.6g}" for k, _ in parts)] for r in cases])
     print_warnings(notes)
 
 
