@@ -81,10 +81,10 @@ def _box(char):
     """A box-drawing or block character as ASCII: horizontal lines '-', vertical '|', the rest '+'."""
     import unicodedata
 
-    name = unicodedata.name(char, "")
-    if "HORIZONTAL" in name and "VERTICAL" not in name:
+    words = set(unicodedata.name(char, "").split())
+    if "HORIZONTAL" in words and not words & {"VERTICAL", "UP", "DOWN"}:
         return "-"
-    if "VERTICAL" in name and "HORIZONTAL" not in name:
+    if "VERTICAL" in words and not words & {"HORIZONTAL", "LEFT", "RIGHT"}:
         return "|"
     return "#" if 0x2580 <= ord(char) <= 0x259F else "+"
 
