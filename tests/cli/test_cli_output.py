@@ -55,6 +55,7 @@ EXTRA = [
     ("friction torque", "-b 101 --radial-load 0N:40N:20N --axial-load 5N -n 3000rpm --model two-term --f0 1.5e-7", 0),
     ("friction torque", "--model skf -b 61811-2RS1 --radial-load 6.51N -n 2000rpm --viscosity 30cSt", 0),
     ("runout", f"--errors {RUNOUT} --revolutions 1 --steps-per-rev 36", 0),
+    ("axial-angle", "-b 4-1006095 -F 2kgf --json", 0),  # a JSON document with a degree sign in it
 ]
 
 
@@ -99,21 +100,23 @@ _DRIVER = textwrap.dedent("""
 """)
 
 
+ENCODINGS = ("cp1252", "ascii", "utf-8")
+
+
 @pytest.fixture(scope="module")
 def batches(tmp_path_factory):
     """Every run under each encoding: {encoding: [(path, argv, expected code, code, stdout, stderr)]}."""
-    tmp = tmp_path_factory.mktemp("out")
-    runs = _runs(tmp)
-    argvs = json.dumps([argv for _, argv, _ in runs])
-    procs = {}
-    for encoding in ("cp1252", "ascii", "utf-8"):
+    procs, every = {}, {}
+    for encoding in ENCODINGS:  # the three at once, each writing its files in a directory of its own
+        runs = every[encoding] = _runs(tmp_path_factory.mktemp(encoding))
         env = dict(os.environ, PYTHONIOENCODING=encoding, COLUMNS="80", PYTHONPATH=str(ROOT / "src"))
         env.pop("FORCE_COLOR", None)
-        procs[encoding] = subprocess.Popen([sys.executable, "-c", _DRIVER, argvs], cwd=ROOT, env=env,
-                                           stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                                           stderr=subprocess.PIPE)
+        procs[encoding] = subprocess.Popen([sys.executable, "-c", _DRIVER, json.dumps([a for _, a, _ in runs])],
+                                           cwd=ROOT, env=env, stdin=subprocess.DEVNULL,
+                                           stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     out = {}
     for encoding, proc in procs.items():
+        runs = every[encoding]
         stdout, stderr = proc.communicate(timeout=600)
         outs = stdout.decode(encoding).split("\x1e")
         errs = stderr.decode(encoding).split("\x1e")
@@ -145,7 +148,7 @@ def test_characters_are_spelled_not_lost(batches, encoding):
     assert "alpha" in text and "+-" in text and "┃" not in text
     assert ("µm" in text and "°" in text) if encoding == "cp1252" else text.isascii()
     # every character the project writes is in the spelling table: a '?' is never a lost character
-    assert "?" not in text.replace("?)", ")")  # no '?' of an unknown character in any output
+    assert "?" not in text  # no "?" of an unknown character in any output
 
 
 # what a command writes on stdout as a file, not as a console text: the session template (a TOML file
@@ -171,6 +174,20 @@ def test_no_cyrillic_and_no_spec_numbers_in_output(batches):
     for _, argv, *_, out, _ in batches["utf-8"]:
         assert not any("\u0400" <= c <= "\u04ff" for c in out), argv
         assert "spec 00" not in out and "paper fig" not in out, argv
+
+
+def test_json_is_the_same_document_on_every_encoding(batches):
+    """A JSON document's strings are exact on any stream: JSON escapes, not an ASCII spelling."""
+    docs = {e: [json.loads(out) for _, argv, *_, out, _ in batches[e] if "--json" in argv] for e in ENCODINGS}
+    assert docs["utf-8"] and any("°" in json.dumps(d, ensure_ascii=False) for d in docs["utf-8"])
+    assert docs["ascii"] == docs["utf-8"] and docs["cp1252"] == docs["utf-8"]
+
+
+def test_files_are_utf8_whatever_the_console(batches):
+    """The report the friction-rig lab writes under an ASCII console is UTF-8, its Greek letters kept."""
+    lab = next(argv for path, argv, *_ in batches["ascii"] if path == "friction lab" and "--out" in argv)
+    html = (Path(lab[lab.index("--out") + 1]) / "report.html").read_text(encoding="utf-8")
+    assert "μ" in html and "β" in html
 
 
 # ----------------------------------------------------------------------------- the console script itself

@@ -36,7 +36,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from ..errors import InputError
-from ._console import Console
+from ._console import Console, needs_spelling
 
 if TYPE_CHECKING:
     from ..bearing import BallBearing
@@ -213,10 +213,27 @@ def progress_bar(description, executor="serial"):
 
 
 def emit_json(obj):
-    """Print one JSON document on stdout (NaN and inf become null; :func:`bearinglab.tables.json_text`)."""
+    """Print one JSON document on stdout (NaN and inf become null; :func:`bearinglab.tables.json_text`).
+    On a stream that cannot hold the project's characters (cp1252, ASCII) the characters outside ASCII
+    are JSON escapes (``"\\u00b0"``), not an ASCII spelling: the document's data stay exact."""
     from .. import tables
 
-    sys.stdout.write(tables.json_text(obj))
+    text = tables.json_text(obj)
+    if needs_spelling(getattr(sys.stdout, "encoding", None) or "utf-8"):
+        text = _NON_ASCII.sub(_json_escape, text)
+    sys.stdout.write(text)
+
+
+_NON_ASCII = re.compile(r"[^\x00-\x7f]")
+
+
+def _json_escape(m):
+    """A character outside ASCII as its JSON escape (two for one beyond the BMP, a surrogate pair)."""
+    code = ord(m.group())
+    if code < 0x10000:
+        return f"\\u{code:04x}"
+    code -= 0x10000
+    return f"\\u{0xD800 + (code >> 10):04x}\\u{0xDC00 + (code & 0x3FF):04x}"
 
 
 # a cell that is a number (with its sign, exponent, unit marks or a D°M'S" angle): never shortened
