@@ -254,11 +254,11 @@ def register_model(model: SweepModel):
 
 
 register_model(SweepModel("axial-angle", {"axial_load": "force"}, _evaluate_axial_angle,
-                          "operating contact angle under axial load (spec 000)"))
+                          "operating contact angle under axial load (the test-stand method)"))
 register_model(SweepModel("stand-load", {"speed": "speed"}, _evaluate_stand_load,
-                          "minimum axial load on a test stand (spec 000 section 3)"))
+                          "minimum axial load on a test stand (the test-stand method)"))
 register_model(SweepModel("high-speed", {"axial_load": "force", "speed": "speed"}, _evaluate_high_speed,
-                          "high-speed angular-contact bearing under thrust (spec 004)", geometry=False))
+                          "high-speed angular-contact bearing under thrust (the high-speed quasi-static model)", geometry=False))
 register_model(SweepModel("frequencies", {"speed": "speed", "axial_load": "force"}, _evaluate_frequencies,
                           "characteristic frequencies at the nominal or operating angle", optional=("axial_load",)))
 

@@ -1,5 +1,5 @@
 """Issue 15 item 8: the command line never shortens a number cell (no '14°28'03.3…'), at any width,
-on a terminal or in a pipe."""
+on a terminal or in a pipe; issue 20 item 13: nor is a table wider than the console, on a pipe either."""
 
 import io
 import re
@@ -32,15 +32,18 @@ def test_number_cells_are_never_shortened(monkeypatch, width, terminal):
             assert cell in out, (cell, out)
 
 
-def test_narrow_terminal_stacks_the_rows(monkeypatch):
-    out = _render(monkeypatch, 30, True)
+@pytest.mark.parametrize("terminal", [False, True])
+def test_narrow_console_stacks_the_rows(monkeypatch, terminal):
+    out = _render(monkeypatch, 30, terminal)
     assert "(1 of 2)" in out and "(2 of 2)" in out
     assert max(len(line) for line in out.splitlines()) <= 30
 
 
-def test_narrow_pipe_prints_wide(monkeypatch):
-    out = _render(monkeypatch, 30, False)
+@pytest.mark.parametrize("terminal", [False, True])
+def test_a_table_that_fits_is_one_table(monkeypatch, terminal):
+    out = _render(monkeypatch, 80, terminal)
     assert "(1 of 2)" not in out and any(re.search(r"0\.0434034.*4\.02e-09", line) for line in out.splitlines())
+    assert max(len(line) for line in out.splitlines()) <= 80
 
 
 def test_commands_print_whole_numbers_at_80_columns(capsys, monkeypatch):

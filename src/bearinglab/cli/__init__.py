@@ -43,6 +43,7 @@ from __future__ import annotations
 import contextlib
 import io
 import json
+import os
 import re
 import sys
 import threading
@@ -68,6 +69,7 @@ from . import (
     stand,
     sweep,
 )
+from ._console import ascii_spelling, needs_spelling, output_width, setup_streams
 
 __all__ = ["JsonRun", "app", "main", "run", "run_json"]
 
@@ -100,6 +102,7 @@ def _main_options(
                                  callback=_version),
 ):
     """Ball-bearing mechanics: combined loads and bearing sets, rating life, friction torque, high speed, test stand, runout, frequencies."""
+    setup_streams()  # also when the app runs without main() (typer's test runner)
 
 
 for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, friction, runout, clearance, serve):
@@ -115,19 +118,26 @@ _CLICK = {}
 
 def _click_command():
     """The click command of :data:`app`, built once: typer builds it anew on every call, which costs more
-    than most commands (about 60 % of a run). Commands are registered on import, before any run."""
-    if "app" not in _CLICK:
-        _CLICK["app"] = _tidy(typer.main.get_command(app))
-    return _CLICK["app"]
+    than most commands (about 60 % of a run). Commands are registered on import, before any run. On a
+    stdout that cannot hold the project's characters (cp1252, ASCII), the help texts are spelled the
+    ASCII way before rich lays them out (:func:`ascii_spelling`), so that its boxes close."""
+    encoding = getattr(sys.stdout, "encoding", None) or "utf-8"
+    key = encoding if needs_spelling(encoding) else "utf-8"
+    if key not in _CLICK:
+        _CLICK[key] = _tidy(typer.main.get_command(app), None if key == "utf-8" else key)
+    return _CLICK[key]
 
 
-def _tidy(root):
+def _tidy(root, encoding=None):
     """Flags show no type in the help (typer prints ``<bool>`` after ``--json``, ``--help``); the help
     option is False unless given, so that a group passing its arguments on to a command (``bearinglab
-    high-speed --help``) does not run typer's value coercion, which imports pydantic (0.15 s)."""
+    high-speed --help``) does not run typer's value coercion, which imports pydantic (0.15 s). With an
+    ``encoding`` that cannot hold them, the help texts are spelled the ASCII way."""
     stack = [root]
     while stack:
         command = stack.pop()
+        if encoding is not None:
+            _spell_help(command, encoding)
         ctx = command.context_class(command, info_name=command.name, help_option_names=_HELP_NAMES)
         help_option = command.get_help_option(ctx)
         if help_option is not None:
@@ -137,6 +147,22 @@ def _tidy(root):
                 param.metavar = ""
         stack.extend(getattr(command, "commands", {}).values())
     return root
+
+
+def _spell_help(command, encoding):
+    """The help texts of one command and its options, spelled for ``encoding``."""
+    def spell(obj, name):
+        value = getattr(obj, name, None)
+        if isinstance(value, str):
+            setattr(obj, name, ascii_spelling(value, encoding))
+
+    for name in ("help", "short_help", "epilog", "rich_help_panel"):
+        spell(command, name)
+    for param in command.params:
+        for name in ("help", "rich_help_panel", "metavar"):
+            spell(param, name)
+        if isinstance(getattr(param, "default", None), str):
+            spell(param, "default")
 
 
 # the temporary file of an atomic write (bearinglab._io.atomic_output): ".NAME.RANDOM.SUFFIX" -> NAME
@@ -233,6 +259,7 @@ def main(argv=None) -> int:
     from ._common import flush_notes, reset_notes
 
     reset_notes()  # the provenance notes of the previous command's bearings
+    setup_streams()  # no UnicodeEncodeError on a cp1252 or ASCII stream: the ASCII spelling
     try:
         with warnings.catch_warnings():
             # numpy's floating-point warnings are no message for a user: every result is checked finite
@@ -304,5 +331,15 @@ def run_json(argv) -> JsonRun:
 
 
 def run():
-    """Console-script entry point."""
+    """Console-script entry point. Output to a pipe or a file is as wide as ``$COLUMNS``, else 80 columns,
+    the help included (typer's console reads ``$COLUMNS``), whatever terminal the command started from."""
+    if not _isatty(sys.stdout):
+        os.environ.setdefault("COLUMNS", str(output_width()))
     sys.exit(main())
+
+
+def _isatty(stream):
+    try:
+        return stream.isatty()
+    except (AttributeError, ValueError, OSError):
+        return False

@@ -28,18 +28,19 @@ import dataclasses
 import math
 import re
 import sys
+import textwrap
 import typing
 import weakref
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated
 
 import typer
-from rich.console import Console
+from rich.cells import cell_len
 from rich.markup import escape
-from rich.measure import Measurement
 from rich.table import Table
 
 from ..errors import InputError
+from ._console import Console, needs_spelling
 
 if TYPE_CHECKING:
     from ..bearing import BallBearing
@@ -247,13 +248,30 @@ def progress_bar(description, executor="serial"):
 
 
 def emit_json(obj):
-    """Print one JSON document on stdout (NaN and inf become null; :func:`bearinglab.tables.json_text`)."""
+    """Print one JSON document on stdout (NaN and inf become null; :func:`bearinglab.tables.json_text`).
+    On a stream that cannot hold the project's characters (cp1252, ASCII) the characters outside ASCII
+    are JSON escapes (``"\\u00b0"``), not an ASCII spelling: the document's data stay exact."""
     from .. import tables
 
     if _NOTES:
         _SHOWN[0] = True
         obj = _with_notes(obj)
-    sys.stdout.write(tables.json_text(obj))
+    text = tables.json_text(obj)
+    if needs_spelling(getattr(sys.stdout, "encoding", None) or "utf-8"):
+        text = _NON_ASCII.sub(_json_escape, text)
+    sys.stdout.write(text)
+
+
+_NON_ASCII = re.compile(r"[^\x00-\x7f]")
+
+
+def _json_escape(m):
+    """A character outside ASCII as its JSON escape (two for one beyond the BMP, a surrogate pair)."""
+    code = ord(m.group())
+    if code < 0x10000:
+        return f"\\u{code:04x}"
+    code -= 0x10000
+    return f"\\u{0xD800 + (code >> 10):04x}\\u{0xDC00 + (code & 0x3FF):04x}"
 
 
 def _with_notes(obj):
@@ -291,37 +309,66 @@ def plain_zero(text):
     return _NEGATIVE_ZERO.sub("", text)
 
 
-def table(title, columns, rows, *, caption=None, wide=False):
+def _header_lines(header, width, level):
+    """A number column's header on several lines: the unit on a line of its own (level 1: 'ball load'
+    over '[N]'), then also the name on lines no wider than the column's cells where its words allow
+    (level 2: 'ball', 'load', '[N]')."""
+    name, bracket, unit = header.rpartition(" [")
+    name, unit = (name, bracket.strip() + unit) if bracket else (header, "")
+    if level >= 2:
+        name = "\n".join(textwrap.wrap(name, width=max(width, *map(len, name.split() or [""])),
+                                       break_long_words=False, break_on_hyphens=False))
+    return "\n".join(part for part in (name, unit) if part)
+
+
+def table(title, columns, rows, *, caption=None):
     """Print a rich table; ``columns`` are header strings, ``rows`` lists of already formatted cells.
 
     A number is never shortened ('0.34…') and a zero never signed ('-0'; :func:`plain_zero`): number
-    columns do not wrap, text columns wrap. A table
-    that still does not fit is printed wider than the console when the output is a file or a pipe,
-    and stacked (one small quantity/value table per row) on a terminal. ``wide`` prints it wide on a
-    terminal too.
+    columns do not wrap, text columns wrap. The table is never wider than the console (a terminal's
+    width; on a pipe or in a file ``$COLUMNS``, else 80: ``cli/_console.py``). Where it does not fit,
+    the headers of its number columns go on several lines, the widest first, until it fits; one that
+    does not fit even so is stacked, one small quantity/value table per row. A command chooses
+    tables that fit 80 columns, so that stacking is for narrower terminals only.
     """
     title, caption = plain_zero(title), caption and plain_zero(caption)
-    cells = [[escape(plain_zero(str(c))) for c in row] for row in rows]
+    plain = [[plain_zero(str(c)) for c in row] for row in rows]
+    cells = [[escape(c) for c in row] for row in plain]
     numeric = [all(_NUMBER_CELL.match(row[i].strip()) for row in cells if i < len(row))
                for i in range(len(columns))]
-    t = _rich_table(title, columns, cells, caption, numeric)
-    # the narrowest the table may be: number columns whole, text columns down to their longest word
-    def word(text):
-        return max(text.split() or [""], key=len)
+    shown = getattr(console, "spelled", str)  # the text as the console writes it (ASCII spelling)
 
-    narrow = _rich_table("", [c if numeric[i] else word(c) for i, c in enumerate(columns)],
-                         [[c if numeric[i] else word(c) for i, c in enumerate(row)] for row in cells], None, numeric)
-    need = Measurement.get(console, console.options.update(width=10**4), narrow).maximum
-    if need <= console.width:
-        console.print(t)
-    elif wide or not console.is_terminal:
-        Console(file=console.file, width=Measurement.get(console, console.options.update(width=10**4), t).maximum,
-                highlight=False, force_terminal=console.is_terminal, no_color=console.no_color).print(t)
-    else:
-        for k, row in enumerate(cells, 1):
-            label = f"{title} ({k} of {len(cells)})" if len(cells) > 1 else title
-            console.print(_rich_table(label, ["quantity", "value"], list(zip(map(escape, columns), row)),
-                                      caption if k == len(cells) else None, [False, True]))
+    def width(text, whole):
+        """Columns ``text`` needs: whole (a number), or down to its longest word (a text, that wraps)."""
+        lines = shown(text).split("\n") if whole else shown(text).split()
+        return max(map(cell_len, lines), default=0)
+
+    body = [max((width(row[i], numeric[i]) for row in plain if i < len(row)), default=0)
+            for i in range(len(columns))]
+    heads, level = [shown(h) for h in columns], [0] * len(columns)
+
+    def need():
+        """The narrowest the table can be: rich's heavy box with one space of padding, 3 per column + 1."""
+        return sum(max(b, width(h, numeric[i])) for i, (b, h) in enumerate(zip(body, heads))) + 3 * len(heads) + 1
+
+    while need() > console.width:
+        # the number column whose header, on more lines, saves the most
+        shorter = {(i, k): _header_lines(shown(columns[i]), body[i], k)
+                   for i in range(len(heads)) if numeric[i] for k in range(level[i] + 1, 3)}
+        saving = {(i, k): max(body[i], width(heads[i], True)) - max(body[i], width(h, True))
+                  for (i, k), h in shorter.items()}
+        if not saving or max(saving.values()) <= 0:
+            break
+        # the largest saving, at the lowest level that gives it
+        best = max(saving, key=lambda ik: (saving[ik], -ik[1]))
+        heads[best[0]], level[best[0]] = shorter[best], best[1]
+    if need() <= console.width:
+        console.print(_rich_table(title, heads, cells, caption, numeric))
+        return
+    for k, row in enumerate(cells, 1):
+        label = f"{title} ({k} of {len(cells)})" if len(cells) > 1 else title
+        console.print(_rich_table(label, ["quantity", "value"], list(zip(map(escape, columns), row)),
+                                  caption if k == len(cells) else None, [False, True]))
 
 
 def print_warnings(notes):

@@ -83,8 +83,10 @@ def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False):
     if json_out:
         emit_json(rows)
         return
-    table("Bearings", ["name", "aliases", "type", "Z", "D [mm]", "d_m [mm]", "α0 [deg]", "bore × OD [mm]"], [
-        [r["name"], ", ".join(r["aliases"]), r["type"], f"{r['balls']}*" if r["estimated"] else (r["balls"] or ""),
+    # the aliases beside the name, in brackets: eight columns fit 80 (--json lists them apart)
+    table("Bearings", ["name (aliases)", "type", "Z", "D [mm]", "d_m [mm]", "α0 [deg]", "bore × OD [mm]"], [
+        [" ".join([r["name"], *(f"({', '.join(r['aliases'])})" for _ in r["aliases"][:1])]), r["type"],
+         f"{r['balls']}*" if r["estimated"] else (r["balls"] or ""),
          _fmt(r["ball_diameter_mm"]) + ("*" if r["estimated"] else ""), _fmt(r["pitch_diameter_mm"]),
          _fmt(r["contact_angle_deg"]), f"{_fmt(r['bore_mm'])} × {_fmt(r['outside_diameter_mm'])}"] for r in rows],
           caption="* estimated ball set; catalog show NAME (or a designation) for every field and the ratings")

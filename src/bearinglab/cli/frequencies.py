@@ -76,7 +76,7 @@ def frequencies(
         typer.Option(
             "--axial-load",
             "-F",
-            help="Axial stand load, e.g. '2 kgf': frequencies at the operating contact angle (spec 000).",
+            help="Axial stand load, e.g. '2 kgf': frequencies at the operating contact angle (the test-stand method).",
         ),
     ] = None,
     hertz: Annotated[

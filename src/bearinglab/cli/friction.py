@@ -34,13 +34,13 @@ from ._common import (
     print_warnings,
     resolve_bearing,
     speed_size,
+    table,
 )
-from ._common import table as _table
 
 __all__ = ["COMMANDS"]
 
 friction_app = typer.Typer(
-    help="Friction torque: handbook models and the friction-rig lab (spec 001).",
+    help="Friction torque: handbook models and the friction-rig lab.",
     no_args_is_help=True,
 )
 _MODELS = ("one-term", "two-term", "palmgren", "skf")
@@ -105,12 +105,6 @@ def _friction_bearing(
             )
         changes["outside_diameter"] = 2.0 * dm - d
     return dataclasses.replace(base, **changes) if changes else base
-
-
-def table(title, columns, rows, *, caption=None):
-    """Print a table without truncating any cell: wider than the terminal rather than cut (numbers
-    must never be shown as '0.34…')."""
-    _table(title, columns, rows, caption=caption, wide=True)
 
 
 def _case_values(text, kind, name):
@@ -243,7 +237,7 @@ def torque(
     ] = None,
     json_out: JsonFlag = False,
 ):
-    """Friction torque under combined load: handbook models (spec 001 section 3: P0, T, T0 and T_F) or SKF's."""
+    """Friction torque under combined load: the handbook models of the friction-rig lab (P0, T, T0 and T_F) or SKF's."""
     import numpy as np
 
     from .. import friction, tables
@@ -419,14 +413,27 @@ def _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out):
     if json_out:
         emit_json({**info, **cases[0], **echo} if len(cases) == 1 else {**info, "cases": cases, **echo})
         return
-    table(f"Friction torque of {b.designation} ({b.type}), SKF model, {lubrication}",
-          ["F_r [N]", "F_a [N]", "n [rpm]", "M_rr [N·mm]", "M_sl [N·mm]", "M_seal [N·mm]", "M_drag [N·mm]",
-           "M [N·mm]", "P [W]", "μ_sl"],
-          [[f"{r['radial_load_N']:.6g}", f"{r['axial_load_N']:.6g}", f"{r['speed_rpm']:.6g}",
-            *(f"{r[k]:.6g}" for k in ("rolling_moment_Nmm", "sliding_moment_Nmm", "seal_moment_Nmm",
-                                       "drag_moment_Nmm", "total_moment_Nmm", "power_loss_W")),
-            f"{r['sliding_friction_coefficient']:.5f}"] for r in cases],
-          caption=f"ν = {info['viscosity_cSt']:g} mm²/s; SKF {_skf_terms(m)}")
+    title = f"Friction torque of {b.designation} ({b.type}), SKF model, {lubrication}"
+    caption = f"ν = {info['viscosity_cSt']:g} mm²/s; SKF {_skf_terms(m)}"
+    inputs = ["F_r [N]", "F_a [N]", "n [rpm]"]
+    parts = [("rolling_moment_Nmm", "M_rr"), ("sliding_moment_Nmm", "M_sl"), ("seal_moment_Nmm", "M_seal"),
+             ("drag_moment_Nmm", "M_drag")]
+    totals = [("total_moment_Nmm", "M [N·mm]", ".6g"), ("power_loss_W", "P [W]", ".6g"),
+              ("sliding_friction_coefficient", "μ_sl", ".5f")]
+
+    def given(r):
+        return [f"{r['radial_load_N']:.6g}", f"{r['axial_load_N']:.6g}", f"{r['speed_rpm']:.6g}"]
+
+    if len(cases) == 1:  # one case: every quantity on a line of its own (80 columns)
+        r = cases[0]
+        table(title, ["quantity", "value"],
+              [*zip(inputs, given(r)), *((f"{name} [N·mm]", f"{r[k]:.6g}") for k, name in parts),
+               *((name, f"{r[k]:{fmt}}") for k, name, fmt in totals)], caption=caption)
+    else:  # several: the totals, then the four moments (two tables of 80 columns)
+        table(title, [*inputs, *(name for _, name, _ in totals)],
+              [[*given(r), *(f"{r[k]:{fmt}}" for k, _, fmt in totals)] for r in cases], caption=caption)
+        table("The four moments [N·mm]", [*inputs, *(name for _, name in parts)],
+              [[*given(r), *(f"{r[k]:.6g}" for k, _ in parts)] for r in cases])
     print_warnings(notes)
 
 
@@ -582,7 +589,7 @@ def lab(
     ] = None,
     json_out: JsonFlag = False,
 ):
-    """Reduce a friction-rig session (spec 001): tasks 1-3, cross-checks, conclusions, and the HTML report."""
+    """Reduce a session of the friction-rig lab: tasks 1-3, cross-checks, conclusions, and the HTML report."""
     from .. import report
     from ..lab import analysis, measurement
 

@@ -65,24 +65,24 @@ _CHUNK = 2500  # cases per batched call then
 
 @mo.mounting_options
 def high_speed(
-    axial_load: Annotated[str, typer.Option("--axial-load", "-F", help="Thrust: '20 kN', or a list/range '2.5kN:45kN:2.5kN'.")],
+    axial_load: Annotated[str, typer.Option("--axial-load", "-A", "-F", help="Thrust (-F is the same option): '20 kN', or a list/range '2.5kN:45kN:2.5kN'.")],
     speed: Annotated[str, typer.Option("--speed", "-n", help="Inner-ring speed: '10000 rpm', or a list/range '0,3000,6000rpm'.")],
     bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
     balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
     inner_groove_radius: InnerRadius = None, outer_groove_radius: OuterRadius = None,
     inner_conformity: InnerConformity = None, outer_conformity: OuterConformity = None,
     contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
-    solver: Annotated[str, typer.Option("--solver", help="newton (batched Newton-Raphson, §5.1) | angle-iteration (the paper's search, §5.2).")] = "newton",
+    solver: Annotated[str, typer.Option("--solver", help="newton (batched Newton-Raphson) | angle-iteration (the paper's search).")] = "newton",
     raceway_control: Annotated[str, typer.Option("--raceway-control", help="outer (default, the paper's) | inner.")] = "outer",
-    constants: Annotated[str, typer.Option("--constants", help="mass (F_c, M_g from the ball mass; default) | harris (2.26e-11, 4.47e-12: spec 004 §7) | paper (2.26e-11, 4.5e-12).")] = "mass",
-    gyroscopic_sign: Annotated[str, typer.Option("--gyroscopic-sign", help="physical (default, spec 004 §4) | reversed (for comparison only).")] = "physical",
+    constants: Annotated[str, typer.Option("--constants", help="mass (F_c, M_g from the ball mass; default) | harris (2.26e-11, 4.47e-12: Harris's printed constants) | paper (2.26e-11, 4.5e-12).")] = "mass",
+    gyroscopic_sign: Annotated[str, typer.Option("--gyroscopic-sign", help="physical (default) | reversed (for comparison only).")] = "physical",
     reduced_modulus: Annotated[str | None, typer.Option("--reduced-modulus", help="E' of the contact pair, e.g. '228.04 GPa' (default: from the materials).")] = None,
     csv_file: Annotated[Path | None, typer.Option("--csv", help="Write the table of all cases to this CSV file.")] = None,
     plot: Annotated[Path | None, typer.Option("--plot", help="Draw the map (figures 2-4 and δ_a) into this PNG/PDF/SVG file.")] = None,
     executor: ExecutorOpt = None, workers: WorkersOpt = None, chunk_size: ChunkSizeOpt = None,
     json_out: JsonFlag = False,
 ):
-    """High-speed angular-contact bearing under thrust (spec 004): α_i, α_e, δ_a, loads, F_c, M_g, speeds."""
+    """High-speed angular-contact bearing under thrust (the high-speed quasi-static model): α_i, α_e, δ_a, loads, F_c, M_g, speeds."""
     from .. import limits, plots, tables
     from ..plots import high_speed as high_speed_plots
     from ..units import RPM

@@ -254,7 +254,7 @@ def _trajectory_csv(t):
         ["psi_deg", "dx_um", "dy_um", "dz_um", "contact_balls", "degenerate", "free_play_um"],
         rows,
         [
-            "bearinglab runout: inner-ring centre trajectory (spec 003 section 10)",
+            "bearinglab runout: inner-ring centre trajectory",
             "units: psi in deg, displacements in um; contact_balls 1-based",
         ],
     )
@@ -309,7 +309,7 @@ def _print_metrics(title, rows):
 
 # ----------------------------------------------------------------------------- runout
 runout_app = typer.Typer(
-    help="Initial inner-ring displacement and runout from manufacturing errors (spec 003).",
+    help="Initial inner-ring displacement and runout from manufacturing errors (manufacturing-error runout).",
     invoke_without_command=True,
     no_args_is_help=False,
     context_settings={"help_option_names": ["-h", "--help"]},
@@ -361,7 +361,7 @@ def runout_command(
     ] = "0 deg",
     cage_ratio: CageRatio = None,
     refine: Annotated[
-        bool, typer.Option("--refine", help="Refine the contact points (spec 003 section 9).")
+        bool, typer.Option("--refine", help="Refine the contact points (a second pass at the contact points found).")
     ] = False,
     json_out: JsonFlag = False,
     plot: PlotDir = None,
@@ -580,7 +580,7 @@ def monte_carlo_command(
     json_out: JsonFlag = False,
     plot: PlotDir = None,
 ):
-    """Runout statistics over random bearings of a ball grade and a ring class (spec 003 section 11)."""
+    """Runout statistics over random bearings of a ball grade and a ring class (Monte Carlo)."""
     from .. import runout
     g, _ = _geometry(geometry, bearing, catalog, None)
     if g is None:

@@ -59,7 +59,7 @@ def axial_angle(
     rows: Annotated[int | None, typer.Option("--rows", help="Rows of the iteration table (default: to convergence).")] = None,
     json_out: JsonFlag = False,
 ):
-    """Operating contact angle under axial load (spec 000): C*, x0, Newton iterations, displacement."""
+    """Operating contact angle under axial load (the test-stand method): C*, x0, Newton iterations, displacement."""
     import numpy as np
 
     from .. import limits, stand, tables
@@ -147,7 +147,7 @@ def axial_angle(
 
 def _print_single(b, c, out, hertz, legacy):
     """The tables of one load: contact constants, iterations, and the result line."""
-    table(f"Bearing {b.designation}: contact constants ({hertz} Hertz)", ["quantity", "inner (в)", "outer (н)"], [
+    table(f"Bearing {b.designation}: contact constants ({hertz} Hertz)", ["quantity", "inner", "outer"], [
         ["Σρ [1/mm]", f"{out['curvature_sum_inner_per_mm']:.7f}", f"{out['curvature_sum_outer_per_mm']:.7f}"],
         ["cos τ", f"{out['cos_tau_inner']:.7f}", f"{out['cos_tau_outer']:.7f}"],
         ["2K/(πμ)", f"{out['delta_star_inner']:.5f}", f"{out['delta_star_outer']:.5f}"],
@@ -172,7 +172,7 @@ def stand_load(
     contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
     json_out: JsonFlag = False,
 ):
-    """Minimum axial load against gyroscopic slip on a test stand, and the +20 % maximum (spec 000 §3)."""
+    """Minimum axial load against gyroscopic slip on a test stand, and the +20 % maximum (the test-stand method)."""
 
     from .. import stand, tables
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,

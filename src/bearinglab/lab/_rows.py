@@ -268,7 +268,7 @@ class _Row:
         speed_reading, speed = self.number("speed_reading"), self.number("speed")
         if speed_reading is not None and speed is not None:
             raise self.fail(
-                "speed", "give the speed reading or the speed, not both (spec 001 section 5.3)"
+                "speed", "give the speed reading or the speed, not both"
             )
         if speed_reading is None and speed is None:
             raise self.fail("speed", "missing: give speed_reading or speed")
@@ -291,7 +291,7 @@ class _Row:
         switch = self.number("switch")
         if torque_reading is not None and torque is not None:
             raise self.fail(
-                "torque", "give the torque reading or the torque, not both (spec 001 section 5.3)"
+                "torque", "give the torque reading or the torque, not both"
             )
         if torque_reading is None and torque is None:
             raise self.fail("torque", "missing: give torque_reading (with switch) or torque")
@@ -307,7 +307,7 @@ class _Row:
             if switch is None:
                 raise self.fail(
                     "switch",
-                    "a torque reading needs its switch position (1 or 2; spec 001 section 8.12)",
+                    "a torque reading needs its switch position (1 or 2)",
                 )
             table = calibration.torque.get(int(switch))
             if table is None:

@@ -549,7 +549,7 @@ def _task2_conclusions(result):
     for k in np.flatnonzero(t2.load_term < 0):
         out.append(
             f"Warning: T_F at β = {_deg(t2.tilt[k])}° is negative ({t2.load_term[k] / _MM:.4g} N·mm); it is an "
-            f"extrapolation to n → 0 that the data do not support (spec 001 section 8.14)."
+            f"extrapolation to n → 0 that the data do not support."
         )
     return out
 
@@ -624,7 +624,7 @@ def _task3_conclusions(result):
         out.append(
             f"Warning: T0 at {_rpm(t3.shaft_speed[k])} (β = {_deg(t3.tilt[k])}°) is negative "
             f"({t3.speed_term[k] / _MM:.4g} N·mm); it is an extrapolation to P0 → 0 that the data do not "
-            f"support (spec 001 section 8.14)."
+            f"support."
         )
     return out
 

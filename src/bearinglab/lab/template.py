@@ -20,7 +20,7 @@ __all__ = ["FORMAT", "template", "write_template"]
 FORMAT = "bearinglab-friction-session/1"
 
 _TEMPLATE = """\
-# bearinglab friction-rig measurement session (spec 001; DP11A-type rig).
+# bearinglab friction-rig measurement session (the friction-rig lab; DP11A-type rig).
 # Fill in the bearing, the calibration tables and the rows, then run
 #     bearinglab friction lab THIS_FILE --out report-dir
 # Quantities are strings with units ("8 mm", "1354 N", "0 kg"). Lines starting with # are comments.
@@ -39,8 +39,8 @@ notes = ""
 {bearing_block}
 
 [handbook]
-# Optional overrides of the handbook constants (plain numbers). Without them the tables of spec 001
-# section 3 apply: Table 1 (x0, y0), mu of section 3.2, Table 2 (f, c).
+# Optional overrides of the handbook constants (plain numbers). Without them the lab's handbook
+# values apply: x0, y0 by bearing type, mu, and f, c by bearing series.
 # x0 = 0.6
 # y0 = 0.5
 # mu = 0.0015
@@ -58,7 +58,7 @@ notes = ""
 tare_mass = "0 kg"        # added to every Q (housing, holder); the source uses 0
 gravity = "9.81 m/s^2"    # the source's value
 
-# Calibration tables (spec 001 section 5.2): [reading, value] pairs with strictly increasing readings
+# Calibration tables: [reading, value] pairs with strictly increasing readings
 # and values, at least 2 points. Conversion is piecewise linear; a reading outside a table is an
 # error. Leave a table empty if no row uses it (rows may give speed and torque directly).
 [calibration.speed]

@@ -78,9 +78,9 @@ def plot_map(state, *, title="", sign_change=None):
             if not many:
                 axes[1, 1].annotate(f"{f0:.2f} kN", (f0, 0.0), textcoords="offset points", xytext=(4, -12),
                                     fontsize=8, color=c)
-    axes[0, 0].set(title="outer contact angle (paper fig. 2)", ylabel="α_e [deg]")
-    axes[0, 1].set(title="inner contact angle (paper fig. 3)", ylabel="α_i [deg]")
-    axes[1, 0].set(title="increments from α_s (fig. 4): Δα_i solid, Δα_e dashed", ylabel="Δα [deg]")
+    axes[0, 0].set(title="outer contact angle α_e", ylabel="α_e [deg]")
+    axes[0, 1].set(title="inner contact angle α_i", ylabel="α_i [deg]")
+    axes[1, 0].set(title="increments from α_s: Δα_i solid, Δα_e dashed", ylabel="Δα [deg]")
     axes[1, 1].axhline(0.0, color="0.5", lw=0.8)
     axes[1, 1].set(title="axial displacement (○ sign change)", ylabel="δ_a [µm]")
     for ax in axes.flat:

@@ -114,7 +114,7 @@ def _prepare(axial_load, n_balls, ball_diameter, pitch_diameter, inner_conformit
     rho = check_positive("density", density, "kg/m^3")
     lam_i, lam_e = _control(raceway_control)
     if gyroscopic_sign not in (1, -1):
-        raise InputError(f"gyroscopic_sign must be +1 (physical, spec 004 section 4) or -1 (reversed), "
+        raise InputError(f"gyroscopic_sign must be +1 (physical) or -1 (reversed), "
                          f"got {gyroscopic_sign!r}")
     consts = _constants(constants)
     arrays = np.broadcast_arrays(fa, z, d, dm, fi, fo, a0, ep, rho, *(() if shape is None else (np.empty(shape),)))

@@ -22,7 +22,7 @@ from ..lab import presentation
 __all__ = ["render_html"]
 
 _RIG_TEXT = (
-    "DP11A-type friction rig (spec 001 section 4). The test-bearing unit is screwed into the rotating "
+    "DP11A-type friction rig. The test-bearing unit is screwed into the rotating "
     "spindle; the load mass Q is fixed on the unit, whose driver pin bears on the saddle of a flat measuring "
     "spring that takes up the friction torque. The plate carrying the spindle tilts from vertical (β = 0°, "
     "pure axial load) to horizontal (β = 90°, pure radial load) in 15° steps; masses of 0.5, 1.0 and 2.0 kg. "
@@ -118,7 +118,7 @@ def _head(session, title, generated):
         f"<title>{html.escape(title)}</title><style>{_CSS}</style></head><body>",
         f"<h1>{html.escape(title)}</h1>",
         (
-            f'<p class="meta">Friction torque of ball bearings under combined loading (spec 001). Session file '
+            f'<p class="meta">Friction torque of ball bearings under combined loading (the friction-rig lab). Session file '
             f"{html.escape(str(session.source))}; rows from {html.escape(str(session.rows_source))}. "
             f"Generated {generated} by bearinglab {__version__}.</p>"
         ),
@@ -162,7 +162,7 @@ def _conditions(d):
         for key, name in (
             ("x0", "x0 (Table 1)"),
             ("y0", "y0 (Table 1)"),
-            ("mu", "μ_hb (section 3.2)"),
+            ("mu", "μ_hb"),
             ("f", "f_hb (Table 2)"),
             ("c", "c = e (Table 2)"),
         )
@@ -270,7 +270,7 @@ def _coefficient_tables(d):
     parts.append(
         "<p>Standard errors from the least-squares covariance with m − p degrees of freedom (p = 1 for "
         "task 1, 2 for tasks 2 and 3, the number of fitted parameters for task 4); “n/a” where m = p. The intercepts T_F (n → 0) and T0 (P0 → 0) are "
-        "extrapolations (spec 001 section 8.14).</p>"
+        "extrapolations.</p>"
     )
     return "".join(parts)
 

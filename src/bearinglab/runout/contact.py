@@ -334,7 +334,7 @@ def _check_balls(angles):
     if n < 3:
         raise InputError(
             f"n_balls must be >= 3 [-], got {n}: with 1 ball a0 is unbounded, with 2 the "
-            f"lateral motion perpendicular to the pair is free (spec 003 section 7.1)"
+            f"lateral motion perpendicular to the pair is free"
         )
     srt = np.sort(np.mod(angles, 2 * np.pi), axis=-1)
     gaps = np.diff(np.concatenate([srt, srt[..., :1] + 2 * np.pi], axis=-1), axis=-1)
