@@ -134,11 +134,11 @@ def bearing_coefficients(bearing, loads, shaft_speeds, *, speed_key=None, **opti
         (5,) F_x, F_y, F_z [N], M_x, M_y [N m] (the same at every speed).
     shaft_speeds : array_like
         (n,) speeds. [rad/s]
+    speed_key : {"speed", "frequency"}, optional
+        See :func:`from_stiffness`.
 
     Other Parameters
     ----------------
-    speed_key : {"speed", "frequency"}, optional
-        See :func:`from_stiffness`.
     **options
         Passed to :func:`~bearinglab.quasistatic.combined.combined_analysis`.
 
