@@ -4,7 +4,8 @@ Build with ``make docs`` (installs the ``docs`` extra into .venv, then
 ``sphinx-build -W --keep-going -b html docs docs/_build/html``). Markdown pages are read by myst-parser,
 the worked examples under ``docs/examples/`` are run by sphinx-gallery on every build (their figures are
 made then), the CLI reference is generated from the typer app by sphinx-click, and the API reference
-from the numpydoc docstrings.
+from the numpydoc docstrings. The site works offline: MathJax is copied into ``_static`` and no page
+loads anything from the network (``docs/_ext/offline_check.py`` fails the build otherwise).
 """
 
 import os
@@ -26,6 +27,7 @@ release = version = bearinglab.__version__
 extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.mathjax",
+    "sphinx-mathjax-offline",  # MathJax 3 from a local copy in _static/mathjax, not from a CDN
     "sphinx.ext.viewcode",
     "numpydoc",
     "myst_parser",
@@ -34,6 +36,7 @@ extensions = [
     "sphinx_copybutton",
     "docstring_fixes",  # docs/_ext: topic lists of module docstrings -> literal blocks (see there)
     "reexports",  # docs/_ext: a reference to a re-exported name goes to the page of its definition
+    "offline_check",  # docs/_ext: the build fails if a page loads a script or style sheet from the network
 ]
 # Silenced, each for one reason:
 # - ref.citation: a module docstring lists the references its functions cite; numpydoc renames the
@@ -72,6 +75,8 @@ sphinx_gallery_conf = {
     "reference_url": {"bearinglab": None},
     "show_memory": False,
     "min_reported_time": 1,
+    # the page of computation times loads jQuery and DataTables from CDNs: not written (an offline site)
+    "write_computation_times": False,
 }
 
 # --- HTML

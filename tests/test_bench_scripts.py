@@ -16,6 +16,13 @@ import pytest
 from numpy.testing import assert_allclose
 
 UM_MRAD = np.array([1e-6, 1e-6, 1e-6, 1e-3, 1e-3])  # displacements in um, tilts in mrad
+ULP_ACROSS_ENGINES = 4  # numpy, plain Python and numba round some library functions differently
+
+
+def _ulp(a, b):
+    """|a - b| in units of the last place of b."""
+    b = np.asarray(b, dtype=float)
+    return np.abs(np.asarray(a, dtype=float) - b) / np.spacing(np.abs(b))
 
 
 def test_axial_angle_paths_agree_case_by_case(load_bench):
@@ -34,20 +41,24 @@ def test_axial_angle_baseline_takes_the_library_steps_case_by_case(load_bench):
     fa = cs * np.repeat([1e-9, 1e-5, 1e-3, 1e-1], 5)
     lib = stand.operating_contact_angle(fa, cs, a0, engine="numpy")
     one = [kernels.solve_one(f, c, a, math.cos(a), math.sin(a), *bench.TOL) for f, c, a in zip(fa, cs, a0)]
-    assert np.array_equal([x[0] for x in one], lib)  # the same operations: the same bits
+    # the same operations, but plain Python calls the C library where numpy may call its own SIMD functions
+    # (AVX-512 hosts): a few ulp apart, as the two engines of the library (tests/test_stand_compiled.py)
+    assert _ulp([x[0] for x in one], lib).max() <= ULP_ACROSS_ENGINES
     assert all(x[1] == 0 for x in one)  # the start passes the load test of section 6.3
     # with the load test off (ftol 0) the Newton of section 6.3 runs: the same angles, steps as the kernel's
     xtol, _, max_iter = bench.TOL
     newton = [kernels.solve_one(f, c, a, math.cos(a), math.sin(a), xtol, 0.0, max_iter) for f, c, a in zip(fa, cs, a0)]
     assert_allclose([x[0] for x in newton], lib, rtol=0, atol=1e-12)
-    assert np.array_equal([x[0] for x in newton], stand.operating_contact_angle(fa, cs, a0, ftol_percent=0.0,
-                                                                                  engine="numpy"))
+    # where the Newton runs, the engines agree to its step tolerance (tests/test_stand_compiled.py)
+    assert_allclose([x[0] for x in newton], stand.operating_contact_angle(fa, cs, a0, ftol_percent=0.0,
+                                                                           engine="numpy"), rtol=0, atol=xtol)
     if kernels.available():
         from bearinglab import _stand_compiled
 
         alpha, iterations, residual, n_bad = _stand_compiled.solve(fa, cs, a0, fa.size, xtol, 0.0, max_iter)
         assert np.all(residual == 0.0)
-        assert np.array_equal(alpha, [x[0] for x in newton]) and n_bad == 0
+        assert_allclose(alpha, [x[0] for x in newton], rtol=0, atol=xtol)
+        assert n_bad == 0
         assert np.array_equal(iterations, [x[1] for x in newton]) and np.all(iterations >= 1)
     # a case that has not converged is flagged (negative count, the last residual), never silently kept
     fail = [kernels.solve_one(f, c, a, math.cos(a), math.sin(a), 0.0, 0.0, 1) for f, c, a in zip(fa, cs, a0)]

@@ -120,3 +120,50 @@ def test_relative_links_resolve(page):
     text = (ROOT / page).read_text(encoding="utf-8")
     broken = [t for t in _LINK.findall(text) if not ((ROOT / page).parent / t).exists()]
     assert not broken, f"{page} links to missing files: {broken}"
+
+
+def _offline_check():
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("offline_check", DOCS / "_ext" / "offline_check.py")
+    module = importlib.util.module_from_spec(spec)
+    pytest.importorskip("sphinx")  # the extension raises Sphinx's error type
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_the_docs_load_mathjax_from_the_site_and_check_every_page():
+    # issue 20 item 15: `make docs` on a fresh clone, offline; the build runs offline_check (docs/_ext)
+    conf = (DOCS / "conf.py").read_text(encoding="utf-8")
+    assert '"sphinx-mathjax-offline"' in conf and '"offline_check"' in conf
+    assert '"write_computation_times": False' in conf  # sphinx-gallery's timing page loads DataTables from CDNs
+    assert "mathjax_path" not in conf or "cdn" not in conf.lower()
+    import tomllib
+
+    extras = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]["optional-dependencies"]
+    docs = " ".join(extras["docs"])
+    assert "sphinx-mathjax-offline" in docs
+    # what autodoc imports beyond the core dependencies: the web calculator's (fastapi, jinja2, uvicorn)
+    assert "bearinglab[web]" in docs and {"fastapi", "jinja2", "uvicorn"} <= {
+        re.split(r"[<>=\[ ]", r)[0].lower() for r in extras["web"]}
+
+
+def test_the_offline_check_finds_remote_scripts_and_missing_files(tmp_path):
+    check = _offline_check()
+    page = ('<html><head><script src="_static/a.js"></script>'
+            '<script defer src="https://cdn.jsdelivr.net/npm/mathjax@3/es5/tex-chtml.js"></script>'
+            '<link rel="stylesheet" href="//fonts.example.org/x.css"><link rel="icon" href="https://x/y.ico">'
+            '<script src="data:text/javascript,1"></script><script>var inline = "https://x";</script>'
+            '<script src="_static/missing.js?v=1"></script></head></html>')
+    assert check.remote_resources(page) == [("script", "https://cdn.jsdelivr.net/npm/mathjax@3/es5/tex-chtml.js"),
+                                            ("stylesheet", "//fonts.example.org/x.css")]
+    (tmp_path / "_static").mkdir()
+    (tmp_path / "_static" / "a.js").write_text("")
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "index.html").write_text(page)
+    (tmp_path / "sub" / "p.html").write_text('<script src="../_static/a.js"></script>')
+    (tmp_path / "_static" / "macros.html").write_text('<script src="{{ pathto(x) }}"></script>')  # a template
+    problems = check.check_site(tmp_path)
+    assert problems == ["index.html: script from the network: https://cdn.jsdelivr.net/npm/mathjax@3/es5/tex-chtml.js",
+                        "index.html: stylesheet from the network: //fonts.example.org/x.css",
+                        "index.html: script not in the built site: _static/missing.js?v=1"]

@@ -31,31 +31,71 @@ def _cases(n, seed):
     return cs * 10.0 ** rng.uniform(-11.0, 1.5, n), cs, a0
 
 
+# The two engines run the same operations, but their libraries may round a sine, an arc cosine or a cube root
+# differently (numpy's SIMD functions on AVX-512/FMA hosts against the C library that numba calls): across
+# engines the angles agree to a few ulp, not bit for bit. Bit-identity is promised, and tested below, for one
+# engine across batches, chunks and executors.
+ULP_ACROSS_ENGINES = 4  # the stated bound (measured: at most 2 ulp over 10^5 cases of _cases on AVX-512)
+
+
+def _ulp(a, b):
+    """|a - b| in units of the last place of b."""
+    return np.abs(np.asarray(a) - b) / np.spacing(np.abs(b))
+
+
 @needs_numba
-@pytest.mark.parametrize("ftol_percent", [_solve.AXIAL_ANGLE_FTOL_PERCENT, 0.0])
-def test_compiled_engine_gives_the_numpy_angles_and_convergence(ftol_percent):
-    # ftol 0: no case passes the load test at the start, so every case runs the Newton of section 6.3
+def test_compiled_engine_gives_the_numpy_angles_to_a_few_ulp():
+    # the default tolerances: every case's answer is the start, which passes the load test of section 6.3
     fa, cs, a0 = _cases(5000, seed=1)
-    kw = {"ftol_percent": ftol_percent}
-    fast = stand.operating_contact_angle(fa, cs, a0, engine="compiled", **kw)
-    ref = stand.operating_contact_angle(fa, cs, a0, engine="numpy", **kw)
-    assert_allclose(fast, ref, rtol=0, atol=1e-12)
-    # the same operations and the same C library: the same bits (what makes engine="auto" reproducible)
-    assert np.array_equal(fast, ref)
+    fast = stand.operating_contact_angle(fa, cs, a0, engine="compiled")
+    ref = stand.operating_contact_angle(fa, cs, a0, engine="numpy")
+    assert _ulp(fast, ref).max() <= ULP_ACROSS_ENGINES
 
 
 @needs_numba
-def test_compiled_engine_flags_the_same_cases_with_the_same_residuals():
+def test_compiled_engine_gives_the_numpy_angles_where_the_newton_of_section_6_3_runs():
+    # ftol 0: no case passes the load test at the start, so every case runs the Newton of section 6.3 and
+    # stops at a step below xtol: both converge, to within xtol (near feather loads the gap cos alpha0 - cos
+    # alpha cancels, and a rounding of it moves the Newton's last step by more than a few ulp)
+    fa, cs, a0 = _cases(5000, seed=1)
+    fast = stand.operating_contact_angle(fa, cs, a0, engine="compiled", ftol_percent=0.0)
+    ref = stand.operating_contact_angle(fa, cs, a0, engine="numpy", ftol_percent=0.0)
+    assert_allclose(fast, ref, rtol=0, atol=_solve.AXIAL_ANGLE_XTOL)
+
+
+@needs_numba
+def test_compiled_newton_flags_the_same_cases_as_the_numpy_newton():
     from bearinglab import _stand_compiled
 
     fa, cs, a0 = _cases(700, seed=2)
-    # a step tolerance at the rounding of the angle that some cases meet in two steps and others do not
-    ref_alpha, ref_ok, ref_res = stand._newton(fa, cs, a0, fa.size, 1e-16, 0.0, 2)
-    alpha, iterations, residual, n_bad = _stand_compiled.solve(fa, cs, a0, fa.size, 1e-16, 0.0, 2)
-    assert 0 < n_bad < fa.size and n_bad == np.sum(~ref_ok)
-    assert np.array_equal(iterations >= 0, ref_ok) and np.all(iterations[~ref_ok] == -2)
-    assert np.array_equal(alpha, ref_alpha) and np.array_equal(residual, ref_res)
-    assert np.all(residual[ref_ok] == 0.0) and np.all(residual[~ref_ok] != 0.0)
+    root = stand.operating_contact_angle(fa, cs, a0, engine="numpy")
+    # From halfway between alpha0 and the root, two or three steps of section 6.3 leave steps of 1e-3 to
+    # 1e-16 rad: a tolerance of 1e-8 rad splits the cases far from the rounding (a 1-ulp difference moves a
+    # step by ~1e-16 of itself, so no case sits within it of the threshold), unlike a tolerance at 1e-16.
+    start = 0.5 * (a0 + root)
+    for max_iter in (2, 3):
+        ref_alpha, ref_ok, ref_res = stand._section_newton(fa, cs, a0, np.cos(a0), start, 1e-8, 0.0, max_iter)
+        one = [_stand_compiled._section_newton(*x, math.cos(x[2]), s, 1e-8, 0.0, max_iter)
+               for *x, s in zip(fa, cs, a0, start)]
+        alpha, iterations, residual = (np.array(v) for v in zip(*one))
+        assert 0 < np.sum(~ref_ok) < fa.size
+        assert np.array_equal(iterations >= 0, ref_ok) and np.all(iterations[~ref_ok] == -max_iter)
+        assert np.all(residual[ref_ok] == 0.0) and np.all(ref_res[ref_ok] == 0.0)
+        assert_allclose(residual[~ref_ok], ref_res[~ref_ok], rtol=1e-6)  # residuals of 1e-2 to 1e-10
+        assert_allclose(alpha, ref_alpha, rtol=0, atol=1e-14)
+
+
+@needs_numba
+def test_compiled_solve_flags_every_case_that_does_not_converge():
+    from bearinglab import _stand_compiled
+
+    fa, cs, a0 = _cases(700, seed=2)
+    # no tolerance can be met: every case runs its max_iter steps and is flagged, on both engines
+    ref_alpha, ref_ok, ref_res = stand._newton(fa, cs, a0, fa.size, 0.0, 0.0, 2)
+    alpha, iterations, residual, n_bad = _stand_compiled.solve(fa, cs, a0, fa.size, 0.0, 0.0, 2)
+    assert n_bad == fa.size and not ref_ok.any() and np.all(iterations == -2)
+    assert np.all(np.isfinite(residual)) and np.all(np.isfinite(ref_res))
+    assert_allclose(alpha, ref_alpha, rtol=0, atol=_solve.AXIAL_ANGLE_XTOL)
 
 
 @needs_numba
@@ -88,10 +128,12 @@ def test_compiled_angles_do_not_depend_on_the_batch(lo, size):
 def test_compiled_engine_broadcasts_like_numpy_and_keeps_scalars():
     loads = np.geomspace(1e-4, 1e3, 101) * KGF
     grid = (loads.reshape(1, 101), np.array([[CS], [2 * CS]]), A0)
-    assert np.array_equal(stand.operating_contact_angle(*grid, engine="compiled"),
-                          stand.operating_contact_angle(*grid, engine="numpy"))
+    fast = stand.operating_contact_angle(*grid, engine="compiled")
+    ref = stand.operating_contact_angle(*grid, engine="numpy")
+    assert fast.shape == ref.shape == (2, 101) and _ulp(fast, ref).max() <= ULP_ACROSS_ENGINES
     one = stand.operating_contact_angle(2 * KGF, CS, A0, engine="compiled")
-    assert isinstance(one, float) and one == stand.operating_contact_angle(2 * KGF, CS, A0, engine="numpy")
+    ref = stand.operating_contact_angle(2 * KGF, CS, A0, engine="numpy")
+    assert isinstance(one, float) and np.ndim(one) == 0 and _ulp(one, ref) <= ULP_ACROSS_ENGINES
 
 
 def test_engine_must_be_a_known_name():
@@ -114,7 +156,7 @@ def test_without_numba_auto_falls_back_to_numpy_and_compiled_says_why(monkeypatc
 
 
 @needs_numba
-def test_auto_runs_the_kernel_for_a_large_batch(monkeypatch):
+def test_auto_chooses_the_engine_from_the_batch_size_alone(monkeypatch):
     from bearinglab import _stand_compiled
 
     calls = []
@@ -124,12 +166,41 @@ def test_auto_runs_the_kernel_for_a_large_batch(monkeypatch):
     monkeypatch.setattr(_solve, "AXIAL_ANGLE_COMPILED_CASES", 40)
     stand.operating_contact_angle(np.full(39, 2 * KGF), CS, A0)  # small: numpy, the kernel is not loaded
     assert calls == [] and "bearinglab._stand_compiled" not in sys.modules
+    assert stand.engine_for(39) == "numpy" and stand.engine_for(40) == "compiled"
     monkeypatch.setitem(sys.modules, "bearinglab._stand_compiled", _stand_compiled)
-    stand.operating_contact_angle(np.full(40, 2 * KGF), CS, A0)
-    stand.operating_contact_angle(2 * KGF, CS, A0)  # once loaded, the kernel runs any batch
-    assert calls == [40, 1]
+    stand.operating_contact_angle(np.full((5, 8), 2 * KGF), CS, A0)  # 40 cases once broadcast: the kernel
+    stand.operating_contact_angle(2 * KGF, CS, A0)  # the kernel is loaded now, and still not used for one case
+    stand.operating_contact_angle(np.full(39, 2 * KGF), CS, A0)
+    assert calls == [40]
     stand.operating_contact_angle(np.full(40, 2 * KGF), CS, A0, engine="numpy")
-    assert calls == [40, 1]
+    assert calls == [40]
+
+
+@needs_numba
+def test_the_same_call_gives_the_same_bits_before_and_after_a_large_batch():
+    # engine="auto" must not depend on what ran earlier in the process (it once ran the kernel for any batch
+    # as soon as it was loaded, which changes the last bits on hosts where the engines round differently)
+    from bearinglab import _stand_compiled
+
+    fa, cs, a0 = _cases(2000, seed=4)
+    before = stand.operating_contact_angle(fa, cs, a0)
+    b = catalog.get("B218")
+    args = (np.geomspace(1e2, 5e4, 30), b.n_balls, b.ball_diameter, b.pitch_diameter, b.inner_conformity,
+            b.outer_conformity, b.contact_angle)
+    consts, alpha = stand.constants_at_operating_angle(*args)
+    big = _solve.AXIAL_ANGLE_COMPILED_CASES  # the real threshold: a batch that runs the kernel
+    calls = []
+    solve = _stand_compiled.solve
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(_stand_compiled, "solve", lambda *a: calls.append(a[3]) or solve(*a))
+        stand.operating_contact_angle(np.geomspace(1e-2, 1e4, big), CS, A0)
+        assert calls == [big] and "bearinglab._stand_compiled" in sys.modules
+        after = stand.operating_contact_angle(fa, cs, a0)
+        consts2, alpha2 = stand.constants_at_operating_angle(*args)
+        assert calls == [big]  # the small calls stayed on numpy
+    assert np.array_equal(after, before)
+    assert np.array_equal(alpha, alpha2)
+    assert np.array_equal(consts.force_characteristic, consts2.force_characteristic)
 
 
 def test_a_one_case_solve_does_not_import_numba():
@@ -138,18 +209,3 @@ def test_a_one_case_solve_does_not_import_numba():
             "print('numba' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "False"
-
-
-@needs_numba
-def test_the_operating_constants_are_the_same_with_the_kernel_loaded(monkeypatch):
-    b = catalog.get("B218")
-    args = (np.geomspace(1e2, 5e4, 30), b.n_balls, b.ball_diameter, b.pitch_diameter, b.inner_conformity,
-            b.outer_conformity, b.contact_angle)
-    monkeypatch.delitem(sys.modules, "bearinglab._stand_compiled", raising=False)
-    consts, alpha = stand.constants_at_operating_angle(*args)  # numpy: the kernel not loaded, a small batch
-    from bearinglab import _stand_compiled
-
-    monkeypatch.setitem(sys.modules, "bearinglab._stand_compiled", _stand_compiled)
-    consts2, alpha2 = stand.constants_at_operating_angle(*args)  # engine="auto" now runs the kernel
-    assert np.array_equal(alpha, alpha2)
-    assert np.array_equal(consts.force_characteristic, consts2.force_characteristic)

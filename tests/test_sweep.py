@@ -57,6 +57,29 @@ def test_chunking_and_local_cluster_give_identical_results(sweep_file):
             assert np.array_equal(ref[k], small[k], equal_nan=ref[k].dtype.kind == "f"), (size, k)
 
 
+@pytest.mark.parametrize("threshold", [10, 10**6])
+def test_the_sweep_chooses_one_engine_for_all_its_chunks(sweep_file, monkeypatch, threshold):
+    # engine="auto" of the stand solve goes by the batch size; a sweep resolves it once from its whole case
+    # count (24 here), so that a chunk smaller than the threshold does not switch engines midway
+    import importlib.util
+
+    from bearinglab import _solve, stand
+
+    if threshold == 10 and importlib.util.find_spec("numba") is None:
+        pytest.skip("numba is not installed")
+    monkeypatch.setattr(_solve, "AXIAL_ANGLE_COMPILED_CASES", threshold)
+    engines = []
+    real = stand.operating_contact_angle
+    monkeypatch.setattr(stand, "operating_contact_angle", lambda *a, engine="auto", **k: engines.append(engine)
+                        or real(*a, engine=engine, **k))
+    spec = sweep.load_sweep(sweep_file)
+    ref = sweep.run_sweep(spec, chunk_size=24)
+    got = sweep.run_sweep(spec, chunk_size=5)
+    assert set(engines) == {"compiled" if threshold == 10 else "numpy"}
+    for k in ref:
+        assert np.array_equal(ref[k], got[k], equal_nan=ref[k].dtype.kind == "f"), k
+
+
 def test_outputs_written_whole_csv_and_parquet(sweep_file, tmp_path):
     spec = sweep.load_sweep(sweep_file)
     cols = sweep.run_sweep(spec)

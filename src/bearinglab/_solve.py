@@ -31,7 +31,7 @@ AXIAL_ANGLE_MAX_ITER = 50
 AXIAL_ANGLE_START_RTOL = 1e-6  # relative step of the gap after which one more step is not taken (error ~ rtol^3)
 AXIAL_ANGLE_START_MAX_ITER = 60
 AXIAL_ANGLE_BLOCK = 16384  # cases evaluated together (a block's arrays stay in the CPU cache)
-AXIAL_ANGLE_COMPILED_CASES = 1_000_000  # engine="auto": fewest cases for which the compiled kernel is loaded
+AXIAL_ANGLE_COMPILED_CASES = 1_000_000  # engine="auto": fewest cases of a call that the compiled kernel solves
 
 # Hertz: ellipticity from F(rho)
 ELLIPTICITY_RTOL = 1e-14

@@ -12,9 +12,9 @@ The same operations, case by case, as the numpy path of :func:`bearinglab.stand.
 
 A thread advances a block of ``_LANES`` cases together, so that the cases' chains of dependent divisions
 interleave and the arithmetic loops (Halley's steps, the load test) compile to vector instructions; the
-cube root and the arc sine or cosine are calls to the C library, as in numpy, so the angles are the numpy path's
-bit for bit on the project machine (tests/test_stand_compiled.py checks them to 1e-12 rad and the
-convergence flags case by case). Each case is independent of the others, so the result does not depend on
+cube root and the arc sine or cosine are calls to the C library. numpy may call its own SIMD versions
+(AVX-512 hosts), which round differently, so the angles are the numpy path's to 4 ulp, bit for bit where
+both round alike (tests/test_stand_compiled.py checks the ulps and the convergence flags case by case). Each case is independent of the others, so the result does not depend on
 the batch or the chunk it is solved in. Nothing here is public: ``stand.operating_contact_angle`` calls
 :func:`solve` when its ``engine`` allows it. This module imports numba, and is imported only then.
 
@@ -49,7 +49,7 @@ _LANES = 256  # cases a thread advances together (its arrays stay in the L1 cach
 _HALF_PI = math.pi / 2
 # error_model="numpy": a division by zero gives inf or nan as in numpy, with no check that would keep the
 # loops from vectorizing. numba's on-disk cache is keyed on this file only: a change to stand._gap_step or
-# _SQRT_HALF needs the cache cleared (tests/test_stand_compiled.py compares the engines bit for bit).
+# _SQRT_HALF needs the cache cleared (tests/test_stand_compiled.py compares the engines to a few ulp).
 _step = numba.njit(inline="always", error_model="numpy")(_gap_step)
 
 

@@ -319,7 +319,9 @@ def _contact_checks(bearing, ball_loads, what="case(s)"):
 
 def _static_checks(bearing, radial_load, axial_load):
     """P0 of ISO 76 against C0, where the bearing has a static rating (the catalog's, or ISO 76's from
-    the ball set) and ISO 76 defines P0 (X0, Y0 of its table 1 for the contact angle)."""
+    the ball set) and ISO 76 defines P0 (X0, Y0 of its table 1 for the contact angle). Where the ratings
+    cannot be computed from the ball set (a geometry outside the ISO tables, e.g. a contact angle of 87 deg
+    and above), the check is left out and a warning says so: the analysis itself stands."""
     from . import ratings
     from .errors import InputError
 
@@ -327,7 +329,11 @@ def _static_checks(bearing, radial_load, axial_load):
     if c0 is None:
         if any(getattr(bearing, k) is None for k in ("n_balls", "ball_diameter", "pitch_diameter")):
             return []  # no C0 to compare with
-        c0 = ratings.bearing_ratings(bearing).static_load_rating
+        try:
+            c0 = ratings.bearing_ratings(bearing).static_load_rating
+        except InputError as exc:  # an optional check: it must not refuse the computation it checks
+            return [(f"static load: the check of P0 against C0 is unavailable, as the bearing has no catalog C0 "
+                     f"and the ratings cannot be computed from its ball set ({exc})")]
     try:
         p0 = ratings.static_equivalent_load(np.abs(radial_load), np.abs(axial_load), bearing.contact_angle or 0.0,
                                             bearing_type=bearing.type)

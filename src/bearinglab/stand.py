@@ -27,6 +27,7 @@ Operating contact angle (spec 000 section 6)
 series_coefficients          a0 ... a4 of the expansion of eq. (2)
 operating_contact_angle      Newton on eq. (2) to tolerance, vectorized over loads and bearings (numpy, or
                              a compiled kernel in parallel over the cases: ``engine``)
+engine_for                   the engine ``engine="auto"`` picks for a number of cases
 iteration_table              the per-iteration table of the paper (k, x_k, angle, xi_a, F_a,k, Delta)
 IterationRow
 
@@ -51,7 +52,6 @@ from __future__ import annotations
 
 import math
 import numbers
-import sys
 import warnings
 from typing import NamedTuple
 
@@ -72,6 +72,7 @@ __all__ = [
     "StandConstants",
     "StandLoad",
     "constants_at_operating_angle",
+    "engine_for",
     "iteration_table",
     "min_axial_load",
     "min_axial_load_gyroscopic",
@@ -388,11 +389,14 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
     engine : {"auto", "numpy", "compiled"}, optional
         "numpy": the batched numpy path; "compiled": the same operations case by case in a numba kernel,
         parallel over the cases (needs numba); "auto" (default): the compiled kernel when numba is
-        installed and either the kernel is already loaded in this process or the batch has at least
-        ``_solve.AXIAL_ANGLE_COMPILED_CASES`` (10^6) cases, else numpy (loading numba and the kernel
-        costs about half a second, so a smaller batch, and a one-case call, does not import numba). The
-        two engines give the same angles (bit for bit on the project machine, where tests compare them
-        with ==) and the same convergence.
+        installed and the call has at least ``_solve.AXIAL_ANGLE_COMPILED_CASES`` (10^6) cases (the
+        size of the broadcast inputs), else numpy. The choice depends on this call alone, never on what
+        ran before in the process: loading numba and the kernel costs about half a second, so a smaller
+        batch, and a one-case call, does not import numba. Each engine gives the same bits for a case in
+        any batch, chunk or executor. Across engines the angles agree to 4 ulp with the default
+        tolerances (the answer is the start, which passes the load test; the engines' libraries may
+        round a sine or an arc cosine differently, e.g. numpy's SIMD functions on AVX-512 hosts) and
+        to ``xtol`` where the Newton of section 6.3 runs; a case converges on both.
 
     Returns
     -------
@@ -417,9 +421,9 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
     trigonometric function (:func:`_gap_start`). As in the paper's table, the load test of section 6.3 is
     made at the start first: where it holds (for every load tried, the start being the root to the last
     digits) the start is the answer and no Newton step is taken; elsewhere the Newton of section 6.3
-    runs from it. Each case stops on its own convergence, so its angle does not depend on the engine,
-    the batch or the chunk it is solved in (the numpy path evaluates the cases in blocks that fit the CPU
-    cache).
+    runs from it. Each case stops on its own convergence, so with one engine its angle does not depend
+    on the batch or the chunk it is solved in (the numpy path evaluates the cases in blocks that fit the
+    CPU cache).
 
     Examples
     --------
@@ -457,13 +461,35 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
 
 
 def _compiled_engine(engine, n):
-    """True if the compiled kernel solves ``n`` cases: engine "compiled"; or "auto" with numba installed, when
-    the kernel is already loaded in this process or the batch has at least ``_solve.AXIAL_ANGLE_COMPILED_CASES``
-    cases (loading numba and the kernel costs about 0.5 s)."""
-    return _solve.use_compiled(engine, auto=_COMPILED_MODULE in sys.modules or n >= _solve.AXIAL_ANGLE_COMPILED_CASES)
+    """True if the compiled kernel solves ``n`` cases: engine "compiled"; or "auto" with numba installed and
+    at least ``_solve.AXIAL_ANGLE_COMPILED_CASES`` cases (loading numba and the kernel costs about 0.5 s).
+    The call alone decides: a kernel loaded earlier in the process does not change the choice, so the same
+    call gives the same bits wherever it runs."""
+    return _solve.use_compiled(engine, auto=n >= _solve.AXIAL_ANGLE_COMPILED_CASES)
 
 
-_COMPILED_MODULE = __name__.rpartition(".")[0] + "._stand_compiled"
+def engine_for(n_cases):
+    """The engine that ``engine="auto"`` picks for ``n_cases`` cases: "compiled" or "numpy".
+
+    A caller that splits one study into batches (a sweep in chunks) resolves the engine once, for the whole
+    study, and passes it to every batch, so that the chunk size does not choose the engine.
+
+    Parameters
+    ----------
+    n_cases : int
+        Number of cases of the whole study. [-]
+
+    Returns
+    -------
+    str
+        "compiled" (numba installed and at least ``_solve.AXIAL_ANGLE_COMPILED_CASES`` cases) or "numpy".
+
+    Examples
+    --------
+    >>> engine_for(1)
+    'numpy'
+    """
+    return "compiled" if _compiled_engine("auto", int(n_cases)) else "numpy"
 
 
 def _gap_start(thrust_ratio, cos_a0, sin_a0, n, *, rtol=_solve.AXIAL_ANGLE_START_RTOL,
@@ -687,7 +713,8 @@ def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, re
 # --------------------------------------------------------------------------- analysis
 def constants_at_operating_angle(axial_load, n_balls, ball_diameter, pitch_diameter, inner_conformity,
                                  outer_conformity, free_angle, *, elastic_constant=None,
-                                 xtol=_solve.AXIAL_ANGLE_XTOL, max_iter=_solve.AXIAL_ANGLE_MAX_ITER):
+                                 xtol=_solve.AXIAL_ANGLE_XTOL, max_iter=_solve.AXIAL_ANGLE_MAX_ITER,
+                                 engine="auto"):
     r"""Exact-Hertz contact constants evaluated at the operating angle they produce, and that angle.
 
     Parameters
@@ -710,6 +737,8 @@ def constants_at_operating_angle(axial_load, n_balls, ball_diameter, pitch_diame
         Change of the angle between two passes below which it is converged. [rad]
     max_iter : int, optional
         Passes at most. [-]
+    engine : {"auto", "numpy", "compiled"}, optional
+        The engine of every :func:`operating_contact_angle` solve (the same rule for "auto").
 
     Returns
     -------
@@ -747,7 +776,7 @@ def constants_at_operating_angle(axial_load, n_balls, ball_diameter, pitch_diame
     a0 = _angle("free_angle", free_angle)
     args = (n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity)
     alpha = operating_contact_angle(fa, stand_constants(*args, a0, elastic_constant=elastic_constant)
-                                    .force_characteristic, a0)
+                                    .force_characteristic, a0, engine=engine)
     # Each case stops at its own fixed point (converged cases are frozen, constants and angle), so a case's
     # result does not depend on the batch or chunk it is solved in.
     live = np.ones(np.shape(alpha), dtype=bool)
@@ -755,7 +784,7 @@ def constants_at_operating_angle(axial_load, n_balls, ball_diameter, pitch_diame
     step = np.inf
     for it in range(1, int(max_iter) + 1):
         consts = stand_constants(*args, alpha, elastic_constant=elastic_constant)
-        new = operating_contact_angle(fa, consts.force_characteristic, a0)
+        new = operating_contact_angle(fa, consts.force_characteristic, a0, engine=engine)
         moved = np.abs(new - alpha)
         step = np.max(np.where(live, moved, 0.0), initial=0.0)
         if final is None:

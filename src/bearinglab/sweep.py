@@ -73,6 +73,7 @@ class SweepModel(NamedTuple):
     description: str
     optional: tuple = ()  # parameters that may be left out
     geometry: bool = True  # accepts GEOMETRY_PARAMETERS variants
+    engine: bool = False  # its chunk function takes the engine of the stand solve (stand.engine_for)
 
 
 class SweepSpec(NamedTuple):
@@ -126,9 +127,10 @@ def _nan(n):
     return np.full(n, np.nan)
 
 
-def _evaluate_axial_angle(axial_load, **cases):
+def _evaluate_axial_angle(axial_load, engine="numpy", **cases):
     """Chunk function of the ``axial-angle`` model (spec 000 with exact Hertz, C* at the operating angle
-    and the elastic constant of the bearing's materials, as :func:`bearinglab.stand.stand_analysis`)."""
+    and the elastic constant of the bearing's materials, as :func:`bearinglab.stand.stand_analysis`);
+    ``engine`` of the angle solve, chosen once for the whole sweep (:func:`run_sweep`)."""
     fa = np.asarray(axial_load, dtype=float)
     n = fa.size
     bearing = cases.pop("bearing", None)
@@ -142,7 +144,7 @@ def _evaluate_axial_angle(axial_load, **cases):
         try:
             c, a = stand.constants_at_operating_angle(
                 fa[idx], s["n_balls"].astype(int), s["ball_diameter"], s["pitch_diameter"], s["inner_conformity"],
-                s["outer_conformity"], s["contact_angle"], elastic_constant=ce)
+                s["outer_conformity"], s["contact_angle"], elastic_constant=ce, engine=engine)
             cstar[idx] = c.force_characteristic
         except ConvergenceError:  # flag the chunk's cases rather than report an unsettled angle
             a = np.full(idx.size, np.nan)
@@ -172,7 +174,7 @@ def _evaluate_stand_load(speed, **cases):
             "max_axial_load_kgf": 1.2 * lo / KGF, "converged": ok, "failure": reason}
 
 
-def _evaluate_frequencies(speed, axial_load=None, **cases):
+def _evaluate_frequencies(speed, axial_load=None, engine="numpy", **cases):
     """Chunk function of the ``frequencies`` model: orders and Hz at the nominal or the operating angle."""
     w = np.asarray(speed, dtype=float)
     n = w.size
@@ -180,7 +182,7 @@ def _evaluate_frequencies(speed, axial_load=None, **cases):
     g = _geometry_arrays(n, bearing, cases)
     out = {}
     if axial_load is not None:  # operating angle; the axial-angle model checks the whole geometry
-        res = _evaluate_axial_angle(axial_load, bearing=bearing, **cases)
+        res = _evaluate_axial_angle(axial_load, engine, bearing=bearing, **cases)
         angle = np.radians(res["operating_contact_angle_deg"])
         ok, reason = res["converged"], res["failure"]
         out["operating_contact_angle_deg"] = res["operating_contact_angle_deg"]
@@ -254,13 +256,14 @@ def register_model(model: SweepModel):
 
 
 register_model(SweepModel("axial-angle", {"axial_load": "force"}, _evaluate_axial_angle,
-                          "operating contact angle under axial load (the test-stand method)"))
+                          "operating contact angle under axial load (the test-stand method)", engine=True))
 register_model(SweepModel("stand-load", {"speed": "speed"}, _evaluate_stand_load,
                           "minimum axial load on a test stand (the test-stand method)"))
 register_model(SweepModel("high-speed", {"axial_load": "force", "speed": "speed"}, _evaluate_high_speed,
                           "high-speed angular-contact bearing under thrust (the high-speed quasi-static model)", geometry=False))
 register_model(SweepModel("frequencies", {"speed": "speed", "axial_load": "force"}, _evaluate_frequencies,
-                          "characteristic frequencies at the nominal or operating angle", optional=("axial_load",)))
+                          "characteristic frequencies at the nominal or operating angle", optional=("axial_load",),
+                          engine=True))
 
 
 def _fail(path, where, msg):
@@ -397,8 +400,11 @@ def run_sweep(spec, *, execution=None, executor=None, workers=None, chunk_size=N
         ex = dataclasses.replace(ex, workers=spec.workers)
     ex = ex.with_default_chunk_size(spec.chunk_size)
     cases = case_grid(spec.parameters)
-    out = parallel.run_cases(spec.model.evaluate, cases, constants=dict(spec.constants, bearing=spec.bearing),
-                             execution=ex)
+    constants = dict(spec.constants, bearing=spec.bearing)
+    if spec.model.engine:  # one engine for the whole sweep, so that the chunk size does not choose it
+        n = max((np.size(v) for v in cases.values()), default=0)
+        constants["engine"] = stand.engine_for(n)
+    out = parallel.run_cases(spec.model.evaluate, cases, constants=constants, execution=ex)
     columns = tables.input_columns(cases, dict(GEOMETRY_PARAMETERS, **spec.model.parameters))
     columns.update(out)
     return columns

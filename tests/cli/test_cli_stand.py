@@ -131,3 +131,31 @@ def test_non_convergence_is_one_line_exit_3(capsys, monkeypatch):
     code, _out, err = run(capsys, "axial-angle", "-b", "4-1006095", "-F", "2 kgf")
     assert code == 3
     assert err.count("\n") == 1 and "no convergence after 1 iterations" in err and "Traceback" not in err
+
+
+@pytest.mark.parametrize("angle", [88.0, 89.0, 89.5])
+def test_axial_angle_at_steep_angles_computes_and_says_the_static_check_is_unavailable(capsys, angle):
+    # issue 20 item 17: from about 87.5 deg on (4-1006095), Dw cos(alpha)/Dpw leaves the ISO 281 table that the ratings
+    # come from; the optional check of P0 against C0 once refused the whole computation
+    import math
+
+    code, out, err = run(capsys, "axial-angle", "-b", "4-1006095", "--contact-angle", f"{angle} deg", "-F", "2 kgf",
+                         "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    alpha, a0 = math.radians(doc["operating_contact_angle_deg"]), math.radians(angle)
+    assert a0 < alpha < math.pi / 2 and doc["converged"] is True
+    # eq. (1) of spec 000 at the angle found: F_a / C* = sin(alpha) (cos(alpha0)/cos(alpha) - 1)^(3/2)
+    ratio = math.sin(alpha) * (math.cos(a0) / math.cos(alpha) - 1.0) ** 1.5
+    assert ratio == pytest.approx(doc["axial_load_N"] / doc["load_deflection_constant_N"], rel=1e-9)
+    unavailable = [w for w in doc["warnings"] if "check of P0 against C0 is unavailable" in w]
+    assert len(unavailable) == 1 and "ISO 281" in unavailable[0]
+
+
+def test_axial_angle_below_the_steep_angles_keeps_the_static_check(capsys):
+    code, out, err = run(capsys, "axial-angle", "-b", "4-1006095", "--contact-angle", "40 deg", "-F", "2000 kgf",
+                         "--json")
+    assert code == 0, err
+    warnings = json.loads(out)["warnings"]
+    assert not [w for w in warnings if "unavailable" in w]
+    assert [w for w in warnings if w.startswith("static load: P0 = ")]  # the check ran, and 2000 kgf exceeds C0
