@@ -77,7 +77,13 @@ MAX_BALLS = 1000  # the largest slewing ball bearings have a few hundred balls p
 MAX_SAMPLES = 10_000_000
 MAX_INPUT_BYTES = 16 * 2**20  # the largest bundled input (the catalog) is under 100 kB
 
-_BIGGER = "a bigger study runs through `bearinglab sweep` on dask, in chunks"
+
+
+def _bigger(limit):
+    """What to do instead of a run bigger than ``limit``."""
+    if limit < MAX_SWEEP_CASES:
+        return "a bigger study runs through `bearinglab sweep` on dask, in chunks"
+    return "split the study into several sweeps (by one parameter's range)"
 
 
 def check_count(name, value, limit, *, minimum=1):
@@ -147,9 +153,8 @@ def check_cases(count, what, *, limit=MAX_CASES):
         More than ``limit`` cases; the message says that a bigger study runs through a sweep.
     """
     if not count <= limit:
-        tail = (f"; {_BIGGER}" if limit < MAX_SWEEP_CASES
-                else "; split it into several sweeps (by one parameter's range)")
-        raise InputError(f"cases: {what} make {count:.4g} cases, more than the limit of {limit:.4g}{tail}")
+        raise InputError(f"cases: {what} make {count:.4g} cases, more than the limit of {limit:.4g}; "
+                         f"{_bigger(limit)}")
     return int(count)
 
 
@@ -168,7 +173,7 @@ def range_count(start, stop, step, name, text, *, limit=MAX_RANGE_VALUES):
     if not math.isfinite(n) or n >= limit:
         shown = f"{n + 1:.4g}" if math.isfinite(n) else "too many"
         raise InputError(f"{name}: range {text!r} has {shown} values, more than the limit of {limit:.4g}; "
-                         f"{_BIGGER}")
+                         f"{_bigger(limit)}")
     return math.floor(n * (1 + 1e-12) + 1e-9) + 1
 
 

@@ -50,6 +50,7 @@ import tomllib
 from importlib import resources
 from pathlib import Path
 
+from . import _bounds
 from .bearing import MATERIALS, STEEL, BallBearing, Material
 from .errors import CatalogError, InputError
 from .units import parse_quantity
@@ -245,8 +246,10 @@ def read_toml(path):
     bearinglab.errors.CatalogError: no-such-file.toml: no such file
     """
     path = Path(path)
-    try:
-        data = path.read_bytes()
+    try:  # a regular file of bounded size: not /dev/zero, a FIFO or a 10 GB log (bearinglab._bounds)
+        data = _bounds.read_input_bytes(path)
+    except InputError as exc:
+        raise CatalogError(str(exc)) from None
     except FileNotFoundError:
         raise CatalogError(f"{path}: no such file") from None
     except IsADirectoryError:

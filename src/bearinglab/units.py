@@ -476,7 +476,7 @@ def _split_unit(item: str):
     return float(m.group(1)), m.group(2).strip()
 
 
-def parse_values(text, kind, name):
+def parse_values(text, kind, name, *, limit=None):
     """Parse one value, a list ``a,b,cUNIT`` or a range ``start:stop:step`` into an SI array.
 
     Parameters
@@ -487,6 +487,9 @@ def parse_values(text, kind, name):
         One of :data:`KINDS`.
     name : str
         The parameter's name, used in error messages.
+    limit : int, optional
+        The most values accepted (a command's :data:`bearinglab._bounds.MAX_CASES`); by default
+        :data:`bearinglab._bounds.MAX_RANGE_VALUES`. A range is counted before it is built.
 
     Returns
     -------
@@ -509,6 +512,7 @@ def parse_values(text, kind, name):
     array([  0.   , 314.159, 628.319])
     """
     text = str(text).strip()
+    limit = _bounds.MAX_RANGE_VALUES if limit is None else limit
     _reject_decimal_comma(text, name)
     sep = ":" if ":" in text else (";" if ";" in text else ",")
     items = [s.strip() for s in text.split(sep) if s.strip()]
@@ -527,8 +531,8 @@ def parse_values(text, kind, name):
         start, stop, step = values
         if not step > 0 or stop < start:
             raise InputError(f"{name}: range {text!r} needs step > 0 and stop >= start")
-        count = _bounds.range_count(start, stop, step, name, text)  # before np.arange allocates
+        count = _bounds.range_count(start, stop, step, name, text, limit=limit)  # before np.arange allocates
         return start + step * np.arange(count)
-    if len(values) > _bounds.MAX_RANGE_VALUES:
-        raise InputError(f"{name}: {len(values)} values, more than the limit of {_bounds.MAX_RANGE_VALUES}")
+    if len(values) > limit:
+        raise InputError(f"{name}: {len(values)} values, more than the limit of {limit}")
     return np.array(values, dtype=float)

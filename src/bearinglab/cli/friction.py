@@ -116,8 +116,9 @@ def table(title, columns, rows, *, caption=None):
 def _case_values(text, kind, name):
     import numpy as np
 
+    from .._bounds import MAX_CASES
     from ..units import parse_values
-    values = parse_values(text, kind, name)
+    values = parse_values(text, kind, name, limit=MAX_CASES)
     if np.any(~(values >= 0)):  # a force: its magnitude (P0 takes |F_r| and |F_a|)
         raise InputError(f"{name} must be >= 0 [N], got {float(values[~(values >= 0)][0]):g} N")
     return values
