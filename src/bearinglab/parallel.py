@@ -294,7 +294,10 @@ def probe_scheduler(address, *, timeout=_CONNECT_TIMEOUT_S):
             if left <= 0:
                 raise TimeoutError(f"no handshake within {timeout:g} s")
             sock.settimeout(left)
-            chunk = sock.recv(min(n - len(data), _HANDSHAKE_MAX_BYTES))
+            try:
+                chunk = sock.recv(min(n - len(data), _HANDSHAKE_MAX_BYTES))
+            except TimeoutError:
+                raise TimeoutError(f"no handshake within {timeout:g} s") from None
             if not chunk:
                 raise ConnectionError("it closed the connection")
             data += chunk
