@@ -437,6 +437,14 @@ def test_a_dask_handshake_passes_the_probe():
         server.close()
 
 
+def test_a_running_scheduler_passes_the_probe():
+    distributed = pytest.importorskip("distributed")
+    with distributed.LocalCluster(n_workers=0, processes=False, protocol="tcp", host="127.0.0.1",
+                                  dashboard_address=None) as cluster:
+        assert cluster.scheduler_address.startswith("tcp://127.0.0.1:")
+        parallel.probe_scheduler(cluster.scheduler_address, timeout=10)
+
+
 @pytest.mark.parametrize("address, local", [("serial", True), ("local", True), ("tcp://127.0.0.1:8786", True),
                                             ("tcp://localhost:8786", True), ("tcp://[::1]:8786", True),
                                             ("tcp://10.0.0.5:8786", False), ("tcp://lab-cluster:8786", False),
