@@ -173,6 +173,9 @@ def bearing_from_table(table, *, name="", file=None, materials=None):
             z = table["balls"]
             if isinstance(z, bool) or not isinstance(z, int):
                 raise CatalogError(f"{where}, field 'balls': must be a whole number, got {z!r}")
+            if z > _bounds.MAX_BALLS:  # before any per-ball array (bearinglab._bounds)
+                raise CatalogError(f"{where}, field 'balls': must be <= {_bounds.MAX_BALLS} (bearinglab's size "
+                                   f"limit), got {z}")
             kw["n_balls"] = z
         for key in _LENGTHS:
             if key in table:

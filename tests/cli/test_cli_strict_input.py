@@ -485,3 +485,34 @@ def test_confirmed_remote_scheduler_is_probed(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(parallel, "probe_scheduler", probe)
     line = one_line_error(*run(capsys, "sweep", _remote_sweep(tmp_path), "--allow-remote-executor")[::2])
     assert probed == ["tcp://192.0.2.1:8786"] and "is not a dask scheduler" in line
+
+
+def test_runout_csv_onto_a_measured_profile_the_error_file_names(tmp_path, capsys):
+    source = ROOT / "examples" / "runout"
+    for name in ("measured_profile.toml", "inner_roundness.csv"):
+        (tmp_path / name).write_bytes((source / name).read_bytes())
+    profile = tmp_path / "inner_roundness.csv"
+    before = profile.read_bytes()
+    line = one_line_error(*run(capsys, "runout", "--errors", tmp_path / "measured_profile.toml", "--revolutions", "1",
+                               "--steps-per-rev", "8", "--csv", profile)[::2])
+    assert "is an input file of this command" in line and profile.read_bytes() == before
+    from bearinglab.runout import files
+
+    assert files.profile_files(tmp_path / "measured_profile.toml") == [profile]
+    assert files.profile_files(ERRORS_EXAMPLE) == []
+
+
+def test_friction_template_does_not_replace_the_user_catalog(tmp_path, capsys, monkeypatch):
+    catalog = tmp_path / "cat.toml"
+    catalog.write_text('[bearings."X"]\nballs = 9\n', encoding="utf-8")
+    monkeypatch.setenv("BEARINGLAB_CATALOG", str(catalog))
+    line = one_line_error(*run(capsys, "friction", "template", catalog, "--force")[::2])
+    assert "is an input file of this command" in line
+    assert catalog.read_text(encoding="utf-8") == '[bearings."X"]\nballs = 9\n'
+
+
+def test_ball_count_of_a_catalog_file_is_bounded(tmp_path, capsys):
+    path = tmp_path / "cat.toml"
+    path.write_text('[bearings."X"]\nballs = 1000000000\n', encoding="utf-8")
+    line = one_line_error(*run(capsys, "catalog", "list", "--catalog", path)[::2])
+    assert "field 'balls': must be <= 1000 (bearinglab's size limit), got 1000000000" in line

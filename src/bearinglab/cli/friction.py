@@ -24,6 +24,7 @@ from ._common import (
     CatalogFile,
     ContactAngle,
     JsonFlag,
+    check_not_input,
     check_output_directory,
     console,
     emit_json,
@@ -681,6 +682,7 @@ def template(
     if file is None or str(file) == "-":
         sys.stdout.write(measurement.template(bearing=bearing))
         return
+    check_not_input(file, "file")  # not even with --force: the user catalog is an input
     path = measurement.write_template(file, bearing=bearing, overwrite=force)
     console.print(
         f"Wrote {path}. Fill in the bearing, the calibration tables and the rows, then run:\n"

@@ -394,6 +394,8 @@ def runout_command(
         check_output_directory(plot, "plot")
     g, theta1 = _geometry(geometry, bearing, catalog, first_ball_angle)
     g, e = runout.files.load_error_file(errors, g)
+    if csv_out is not None:  # nor may it replace a measured profile the error file names
+        check_not_input(csv_out, "csv", runout.files.profile_files(errors))
     if theta1 is not None:
         g = g._replace(first_ball_angle=theta1)
     sequence = revolutions is not None or steps_per_rev is not None

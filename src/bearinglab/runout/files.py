@@ -52,6 +52,7 @@ from .tolerances import MonteCarloResult, monte_carlo_errors
 __all__ = [
     "load_error_file",
     "load_geometry_file",
+    "profile_files",
     "write_error_file",
     "write_sample_error_files",
 ]
@@ -162,6 +163,41 @@ def load_error_file(path, geometry=None):
         _read_geometry(doc["geometry"], ctx)  # still checked, so that a broken file is reported
     errors = _read_errors(doc, geometry.n_balls, ctx)
     return geometry, errors
+
+
+def profile_files(path):
+    """The measured-profile files an error file names (its ``profile`` keys), resolved next to it.
+
+    They are inputs of a run as much as the error file: an output must not replace them.
+
+    Parameters
+    ----------
+    path : str or Path
+        The error file (read, never modified).
+
+    Returns
+    -------
+    list of Path
+        The profile files named, in the order of the file; empty when it names none or cannot be read
+        (:func:`load_error_file` reports what is wrong with it).
+    """
+    try:
+        doc = read_toml(path)
+    except InputError:
+        return []
+    found = []
+
+    def walk(table):
+        for key, value in table.items():
+            if isinstance(value, dict):
+                walk(value)
+            elif key == "profile" and isinstance(value, str):
+                found.append(Path(path).parent / value)
+
+    errors = doc.get("errors")
+    if isinstance(errors, dict):
+        walk(errors)
+    return found
 
 
 def load_geometry_file(path):
