@@ -582,11 +582,11 @@ def monte_carlo_command(
         check_output(samples_csv, "samples-csv", (".csv",), inputs=(geometry, catalog))
     if plot is not None:
         check_output_directory(plot, "plot")
-    if worst_dir is not None and not worst_dir.is_dir():  # never created: a typo must not make a tree
-        raise InputError(f"worst-dir: {str(worst_dir)!r} is not an existing directory; create it first")
     if steps_per_rev < MIN_STEPS_PER_REV:
         raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-], got {steps_per_rev}")
     _check_write_worst(write_worst, worst_by, worst_dir)
+    if worst_dir is not None and not worst_dir.is_dir():  # never created: a typo must not make a tree
+        raise InputError(f"worst-dir: {str(worst_dir)!r} is not an existing directory; create it first")
     grade = runout.ball_grade(ball_grade)
     rings = runout.ring_class(ring_class)
     # rich for serial, dask's progress bar on a cluster; none off a terminal
