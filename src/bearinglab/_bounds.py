@@ -19,6 +19,7 @@ MAX_SIDEBANDS       sideband orders of the spectral mask (``frequencies --sideba
 MAX_REVOLUTIONS     revolutions of a runout sequence (``--revolutions``)
 MAX_STEPS_PER_REV   positions per revolution (``--steps-per-rev``)
 MAX_POSITIONS       positions of one runout sequence (revolutions x steps per revolution)
+MAX_SAMPLE_POSITIONS  positions per sample of a runout Monte Carlo study
 MAX_ORDER           Fourier order of a waviness (``--max-order``, an error file's series)
 MAX_BALLS           balls of one bearing (an error or geometry file, ``--balls``)
 MAX_SAMPLES         random bearings of one Monte Carlo study (``--samples``)
@@ -52,6 +53,7 @@ __all__ = [
     "MAX_REVOLUTIONS",
     "MAX_ROWS",
     "MAX_SAMPLES",
+    "MAX_SAMPLE_POSITIONS",
     "MAX_SIDEBANDS",
     "MAX_STEPS_PER_REV",
     "MAX_SWEEP_CASES",
@@ -71,7 +73,12 @@ MAX_HARMONICS = 1000  # vibration analysis looks at the first 10 to 20 harmonics
 MAX_SIDEBANDS = 100
 MAX_REVOLUTIONS = 10_000
 MAX_STEPS_PER_REV = 100_000  # 0.0036 deg per step
-MAX_POSITIONS = 10_000_000  # the sequence keeps a 5-DOF pose and the ball contacts per position
+# a runout sequence holds ~2.3 kB per position (example1, 36 000 positions: 82 MB), so 10^6 positions
+# ~ 2.3 GB; a real sequence is 1 to 100 revolutions of 360 to 3600 steps
+MAX_POSITIONS = 1_000_000
+# a Monte Carlo block of 256 samples holds ~0.7 kB per sample and position (B218, 100 samples x 10^4
+# positions: 0.7 GB): 10^4 positions per sample stay under 2 GB; studies use 2-3 revolutions of 180-360
+MAX_SAMPLE_POSITIONS = 10_000
 MAX_ORDER = 10_000  # ISO 3290 and ring waviness are specified up to order ~ 500 (roundness ~ 150 UPR)
 MAX_BALLS = 1000  # the largest slewing ball bearings have a few hundred balls per row
 MAX_SAMPLES = 10_000_000

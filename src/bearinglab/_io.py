@@ -78,9 +78,17 @@ def atomic_output(path, *, suffix=".tmp"):
 
     ``suffix`` lets writers that choose their format from the file name (matplotlib) see the right one.
     SIGTERM and SIGHUP remove the temporary file too. An ``OSError`` without a file name (a full disk,
-    ENOSPC, raised by ``write``) is raised again naming ``path``.
+    ENOSPC, raised by ``write``) is raised again naming ``path``. A ``path`` that is a device, a pipe or
+    a socket is refused (InputError): the rename would replace it.
     """
     path = Path(path)
+    if path.exists() and not path.is_file() and not path.is_dir():
+        # a device, a pipe or a socket: the rename would replace the node itself (/dev/null, /dev/zero
+        # when run as root), not write into it
+        from .errors import InputError
+
+        raise InputError(f"{path}: not a regular file (a device, a pipe or a socket); an output is written "
+                         f"to a file")
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=suffix, dir=path.parent)
     os.close(fd)
     _handle_signals()

@@ -115,8 +115,10 @@ def test_range_is_counted_before_it_is_built(monkeypatch):
          r"revolutions must be <= 10000 \[-\]"),
         (["runout", "--errors", ERRORS_EXAMPLE, "--revolutions", "2", "--steps-per-rev", "1000000000"],
          r"steps-per-rev must be <= 100000 \[-\]"),
-        (["runout", "--errors", ERRORS_EXAMPLE, "--revolutions", "10000", "--steps-per-rev", "100000"],
-         r"revolutions x steps-per-rev must be <= 10000000 positions"),
+        (["runout", "--errors", ERRORS_EXAMPLE, "--revolutions", "100", "--steps-per-rev", "36000"],
+         r"revolutions x steps-per-rev must be <= 1000000 positions \(bearinglab's size limit\), got 100 x 36000"),
+        (["runout", "monte-carlo", "-b", "B218", "--samples", "2", "--revolutions", "10", "--steps-per-rev", "3600"],
+         r"revolutions x steps-per-rev must be <= 10000 positions"),
         (["runout", "monte-carlo", "-b", "B218", "--samples", "2", "--max-order", "1000000000"],
          r"max-order must be <= 10000 \[-\]"),
         (["runout", "monte-carlo", "-b", "B218", "--samples", "1000000000000"], r"samples must be <= 10000000"),
@@ -516,3 +518,14 @@ def test_ball_count_of_a_catalog_file_is_bounded(tmp_path, capsys):
     path.write_text('[bearings."X"]\nballs = 1000000000\n', encoding="utf-8")
     line = one_line_error(*run(capsys, "catalog", "list", "--catalog", path)[::2])
     assert "field 'balls': must be <= 1000 (bearinglab's size limit), got 1000000000" in line
+
+
+def test_an_output_that_is_a_device_or_pipe_is_refused(tmp_path, capsys):
+    # /dev/null as --csv would be replaced by the atomic rename when run as root: a FIFO stands in for it
+    fifo = tmp_path / "null.csv"
+    os.mkfifo(fifo)
+    line = one_line_error(*run(capsys, "high-speed", "-b", "B218", "-F", "1 kN", "-n", "3000 rpm", "--csv", fifo)[::2])
+    assert "is not a regular file" in line
+    with pytest.raises(InputError, match=r"null.csv: not a regular file"):
+        _io.write_text(fifo, "a\n")
+    assert fifo.is_fifo() and sorted(p.name for p in tmp_path.iterdir()) == ["null.csv"]

@@ -119,7 +119,12 @@ def _input_file(draw, workdir, good, command, name):
     if choice == "directory":
         return str(workdir)
     if choice == "device" and os.path.exists("/dev/zero"):  # endless: refused before it is read
-        return "/dev/zero"
+        # through a link in the work directory: a command that writes where an input was expected replaces
+        # the link, never the device itself (the test may run as root)
+        link = workdir / "zero.toml"
+        if not link.is_symlink():
+            link.symlink_to("/dev/zero")
+        return str(link)
     path = workdir / f"in{draw(st.integers(0, 3))}.toml"
     if choice == "bytes":
         path.write_bytes(draw(st.binary(max_size=200)))

@@ -311,6 +311,9 @@ def check_output(path, what, suffixes=None, *, inputs=()):
     check_directory(path, what)
     if path.is_dir():
         raise InputError(f"{what}: {str(path)!r} is a directory; give a file name")
+    if path.exists() and not path.is_file():  # /dev/null: the atomic rename would replace the device
+        raise InputError(f"{what}: {str(path)!r} is not a regular file (a device, a pipe or a socket); "
+                         f"give a file name")
     if suffixes is not None and path.suffix.lower() not in suffixes:
         ends = suffixes[0] if len(suffixes) == 1 else f"one of {', '.join(suffixes)}"
         raise InputError(f"{what}: {str(path)!r} must end in {ends}, got {path.suffix or 'no suffix'!r}")

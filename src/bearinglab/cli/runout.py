@@ -574,7 +574,7 @@ def monte_carlo_command(
         raise InputError("geometry: give --geometry FILE or --bearing NAME")
     if samples < 2:
         raise InputError(f"samples must be >= 2 [-], got {samples}")
-    _check_positions(revolutions, steps_per_rev)
+    _check_positions(revolutions, steps_per_rev, _bounds.MAX_SAMPLE_POSITIONS)
     check_count("samples", samples, _bounds.MAX_SAMPLES, minimum=2)
     check_count("max-order", max_order, _bounds.MAX_ORDER, minimum=0)
     _check_cage_ratio(cage_ratio)
@@ -706,13 +706,13 @@ def _print_monte_carlo(info, grade, rings, samples, seed):
             console.print(f"{key}: {info[key] if key == 'samples_csv' else ', '.join(info[key])}")
 
 
-def _check_positions(revolutions, steps_per_rev):
+def _check_positions(revolutions, steps_per_rev, limit=_bounds.MAX_POSITIONS):
     """The size of a rotation sequence, checked before it is allocated (bearinglab._bounds)."""
     check_count("revolutions", revolutions, _bounds.MAX_REVOLUTIONS)
     check_count("steps-per-rev", steps_per_rev, _bounds.MAX_STEPS_PER_REV)
-    if revolutions * steps_per_rev > _bounds.MAX_POSITIONS:
-        raise InputError(f"revolutions x steps-per-rev must be <= {_bounds.MAX_POSITIONS} positions "
-                         f"(bearinglab's size limit), got {revolutions} x {steps_per_rev}")
+    if revolutions * steps_per_rev > limit:
+        raise InputError(f"revolutions x steps-per-rev must be <= {limit} positions (bearinglab's size "
+                         f"limit), got {revolutions} x {steps_per_rev}")
 
 
 def _check_write_worst(count, metric, directory):
