@@ -235,6 +235,16 @@ def is_local_address(executor):
     A sweep file that names any other scheduler sends the cases (and the file's constants) to another
     machine: the command line asks for ``--allow-remote-executor`` first.
 
+    Parameters
+    ----------
+    executor : str or None
+        ``"serial"``, ``"local"`` or a scheduler address such as ``"tcp://host:8786"``.
+
+    Returns
+    -------
+    bool
+        Whether the work stays on this machine.
+
     Examples
     --------
     >>> is_local_address("local"), is_local_address("tcp://127.0.0.1:8786"), is_local_address("tcp://lab:8786")

@@ -381,6 +381,15 @@ def check_file_executor(spec, *, allow_remote_executor=False, option="allow_remo
     A sweep file can come from someone else; its ``[execution] executor`` would send the cases (and the
     file's constants) to that machine, and run there whatever it answers. The caller confirms it.
 
+    Parameters
+    ----------
+    spec : SweepSpec
+        From :func:`load_sweep`; its ``executor`` is the file's.
+    allow_remote_executor : bool, optional
+        The confirmation: a scheduler on another machine is accepted.
+    option : str, optional
+        How the caller confirms it, for the message (``--allow-remote-executor`` on the command line).
+
     Raises
     ------
     InputError
