@@ -296,8 +296,13 @@ def test_worst_dir_must_exist_and_is_not_created(tmp_path, capsys):
     target = tmp_path / "worst"
     line = one_line_error(*run(capsys, "runout", "monte-carlo", "-b", "B218", "--samples", "2",
                                "--write-worst", "1", "--worst-dir", target)[::2])
-    assert "worst-dir" in line and "not an existing directory" in line
+    assert f"worst-dir: directory '{target}' does not exist (it is never created" in line
     assert not target.exists()
+    target.write_text("x", encoding="utf-8")
+    line = one_line_error(*run(capsys, "runout", "monte-carlo", "-b", "B218", "--samples", "2",
+                               "--write-worst", "1", "--worst-dir", target)[::2])
+    assert "worst-dir" in line and "is a file; give a directory" in line
+    target.unlink()
     target.mkdir()
     code, _out, err = run(capsys, "runout", "monte-carlo", "-b", "B218", "--samples", "2", "--steps-per-rev", "8",
                          "--revolutions", "1", "--max-order", "2", "--write-worst", "1", "--worst-dir", target,

@@ -586,7 +586,10 @@ def monte_carlo_command(
         raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-], got {steps_per_rev}")
     _check_write_worst(write_worst, worst_by, worst_dir)
     if worst_dir is not None and not worst_dir.is_dir():  # never created: a typo must not make a tree
-        raise InputError(f"worst-dir: {str(worst_dir)!r} is not an existing directory; create it first")
+        if worst_dir.exists():
+            raise InputError(f"worst-dir: {str(worst_dir)!r} is a file; give a directory")
+        raise InputError(f"worst-dir: directory {str(worst_dir)!r} does not exist (it is never created; "
+                         f"create it first)")
     grade = runout.ball_grade(ball_grade)
     rings = runout.ring_class(ring_class)
     # rich for serial, dask's progress bar on a cluster; none off a terminal
