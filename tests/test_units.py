@@ -366,3 +366,12 @@ def test_parser_answers_a_float_or_an_input_error(text):
     # and what was accepted is one literal followed by a unit: the float of its leading literal, scaled
     m = units._QUANTITY.match(units._normalise(text))
     assert m is not None
+
+
+def test_a_long_list_is_counted_before_it_is_parsed(monkeypatch):
+    def no_parse(*a, **k):
+        raise AssertionError("parsed before the count was checked")
+
+    monkeypatch.setattr(units, "parse_quantity", no_parse)
+    with pytest.raises(InputError, match=r"x: 11 values, more than the limit of 10"):
+        units.parse_values(",".join(["1 N"] * 11), "force", "x", limit=10)

@@ -518,6 +518,8 @@ def parse_values(text, kind, name, *, limit=None):
     items = [s.strip() for s in text.split(sep) if s.strip()]
     if not items:
         raise InputError(f"{name}: no values in {text!r}")
+    if len(items) > limit:  # counted before each item is parsed
+        raise InputError(f"{name}: {len(items)} values, more than the limit of {limit}")
     parsed = [_split_unit(s) for s in items]
     last_unit = parsed[-1][1] or None
     values = []
@@ -533,6 +535,4 @@ def parse_values(text, kind, name, *, limit=None):
             raise InputError(f"{name}: range {text!r} needs step > 0 and stop >= start")
         count = _bounds.range_count(start, stop, step, name, text, limit=limit)  # before np.arange allocates
         return start + step * np.arange(count)
-    if len(values) > limit:
-        raise InputError(f"{name}: {len(values)} values, more than the limit of {limit}")
     return np.array(values, dtype=float)
