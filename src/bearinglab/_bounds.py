@@ -24,6 +24,7 @@ MAX_ORDER           Fourier order of a waviness (``--max-order``, an error file'
 MAX_BALLS           balls of one bearing (an error or geometry file, ``--balls``)
 MAX_SAMPLES         random bearings of one Monte Carlo study (``--samples``)
 MAX_INPUT_BYTES     size of one input file (TOML, CSV)
+MAX_WORKERS         workers of a local dask cluster (processes started on this machine)
 
 Functions
 ---------
@@ -57,6 +58,7 @@ __all__ = [
     "MAX_SIDEBANDS",
     "MAX_STEPS_PER_REV",
     "MAX_SWEEP_CASES",
+    "MAX_WORKERS",
     "check_cases",
     "check_count",
     "range_count",
@@ -83,6 +85,7 @@ MAX_ORDER = 10_000  # ISO 3290 and ring waviness are specified up to order ~ 500
 MAX_BALLS = 1000  # the largest slewing ball bearings have a few hundred balls per row
 MAX_SAMPLES = 10_000_000
 MAX_INPUT_BYTES = 16 * 2**20  # the largest bundled input (the catalog) is under 100 kB
+MAX_WORKERS = 256  # one process per core: the largest single machines have a few hundred cores
 
 
 

@@ -38,6 +38,7 @@ from collections.abc import Callable, Mapping
 
 import numpy as np
 
+from . import _bounds
 from .errors import InputError
 
 __all__ = ["DEFAULT_BLOCK_SIZE", "DEFAULT_CHUNK_SIZE", "Execution", "chunk_bounds", "executor_client",
@@ -95,6 +96,9 @@ class Execution:
             v = getattr(self, name)
             if v is not None and (isinstance(v, bool) or int(v) != v or v < 1):
                 raise InputError(f"{name.replace('_', '-')} must be an integer >= 1 [-], got {v!r}")
+        if self.workers is not None and self.workers > _bounds.MAX_WORKERS:  # processes of this machine
+            raise InputError(f"workers must be <= {_bounds.MAX_WORKERS} [-] (bearinglab's size limit), got "
+                             f"{self.workers}")
 
     def with_default_chunk_size(self, chunk_size):
         """This value, with ``chunk_size`` filled in where it was left ``None``."""

@@ -125,6 +125,8 @@ def test_range_is_counted_before_it_is_built(monkeypatch):
         (["runout", "monte-carlo", "-b", "B218", "--samples", "2", "--revolutions", "1000000000"],
          r"revolutions must be <= 10000"),
         (["axial-angle", "-b", "4-1006095", "--balls", "1000000000", "-F", "2 kgf"], r"balls must be <= 1000 \[-\]"),
+        (["high-speed", "-b", "B218", "-F", "1 kN", "-n", "3000 rpm", "--executor", "local", "--workers",
+          "1000000"], r"workers must be <= 256 \[-\]"),
         (["stand-load", "-b", "B218", "-n", "0rpm:1e6rpm:1rpm"], r"more than the limit of 1e\+05"),
         (["friction", "torque", "-b", "6205-2RS", "-A", "0N:1e6N:1N", "-n", "3000 rpm", "--viscosity", "20 cSt"],
          r"axial-load: range .* more than the limit of 1e\+05"),
