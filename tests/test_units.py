@@ -120,7 +120,7 @@ def test_bare_numbers_need_a_unit_or_a_default():
             "force",
             r"axial-load: '2 furlongs per fortnight' is a quantity in fur/fortnight, expected a force",
         ),
-        ("two kgf", "force", r"axial-load: cannot read 'two kgf' as a quantity"),
+        ("two kgf", "force", r"axial-load: cannot read 'two kgf' as a quantity: it has no number"),
         ("", "force", r"axial-load: '' has no unit|cannot read"),
         ("0.5 mm", "dimensionless", r"'0.5 mm' is a length, expected a plain number"),
         # juxtaposed numbers would be multiplied by pint: refused
@@ -178,7 +178,11 @@ def test_parse_values(text, kind, want):
         ("1:5:-1kgf", r"needs step > 0"),
         (",", r"x: no values in ','"),
         ("1, 2 m", r"'1.0 m' is a length, expected a force"),  # the last unit applies to all items
-        ("0:1e9:1 N", r"has 1000000001 values, more than 10\^7"),
+        ("0:1e9:1 N", (r"range '0:1e9:1 N' has 1e\+09 values, more than the limit of 1e\+07; split the "
+                       r"study into several sweeps")),
+        ("1kN:1e308kN:1kN", r"x: '1e308kN' is not a finite quantity \(it overflows in SI units\)"),
+        ("1e-300 N:1e300 N:1e-300 N", r"range .* has too many values, more than the limit of 1e\+07"),
+        ("1e-300 N:1 N:1e-300 N", r"has 1e\+300 values"),
     ],
 )
 def test_parse_values_errors(text, match):
@@ -251,3 +255,123 @@ def test_torques_as_engineers_write_them(text, newton_metre):
 
 def test_nanometre_is_not_read_as_a_torque_spelling():
     assert units.parse_quantity("5 nm", "length", "x") == pytest.approx(5e-9, rel=1e-15)
+
+
+# --------------------------------------------------------------------------- issue 20: one number, one unit
+@pytest.mark.parametrize(
+    "text, kind, match",
+    [
+        ("1.2.3 N", "force", r"x: cannot read '1.2.3 N' as a quantity: write one number and one unit"),  # pint: 0.36 N
+        ("--5 N", "force", r"x: cannot read '--5 N' as a quantity: write one number"),  # pint: +5 N
+        ("+-5 N", "force", r"cannot read '\+-5 N' as a quantity"),
+        ("N", "force", r"x: cannot read 'N' as a quantity: it has no number \(e.g. '19.6 N'"),  # pint: 1 N
+        ("kN*kN/kN", "force", r"cannot read 'kN\*kN/kN' as a quantity: it has no number"),
+        ("5 kN*kN/kN", "force", r"cannot read '5 kN\*kN/kN' as a quantity: 'kN' appears twice in the unit"),
+        ("pi kN", "force", r"cannot read 'pi kN' as a quantity: it has no number"),
+        ("2 pi kN", "force", r"'pi' is a constant, not a unit"),
+        ("2 π kN", "force", r"'pi' is a constant, not a unit"),
+        ("2 kg*g0", "force", r"'standard_gravity' is a constant, not a unit"),
+        ("3 c", "speed", r"'speed_of_light' is a constant"),
+        ("10**308*10 N", "force", r"cannot read '10\*\*308\*10 N' as a quantity: write one number"),
+        ("10*10 N", "force", r"cannot read"),
+        ("2 N*3", "force", r"cannot read|more than one number"),
+        ("(2) N", "force", r"cannot read"),
+        ("2 m^0.5", "length", r"cannot read"),
+        ("2 m^(1/2)", "length", r"cannot read|more than one number"),
+        ("1e308 kN", "force", r"x: '1e308 kN' is not a finite quantity \(it overflows in SI units\)"),
+        ("1e309 N", "force", r"x: '1e309 N' is not a finite quantity"),
+        ("1e400", "dimensionless", r"not a finite quantity"),
+        ("0x10 N", "force", r"cannot read"),
+        ("1_000 N", "force", r"cannot read"),
+        ("", "force", r"x: cannot read '' as a quantity"),
+        ("2 kN N", "force", r"is a quantity in|expected a force"),
+    ],
+)
+def test_malformed_quantities_are_refused(text, kind, match):
+    with pytest.raises(InputError, match=match):
+        units.parse_quantity(text, kind, "x")
+
+
+@pytest.mark.parametrize(
+    "text, kind, want",
+    [
+        ("2 kgf", "force", 19.6133),
+        ("3000 rpm", "speed", 100 * math.pi),
+        ("12 deg", "angle", math.radians(12)),
+        ("68 mm^2/s", "kinematic_viscosity", 68e-6),
+        ("68 mm**2/s", "kinematic_viscosity", 68e-6),
+        ("20 cSt", "kinematic_viscosity", 20e-6),
+        ("50 N*m", "torque", 50.0),
+        ("50 N·m", "torque", 50.0),
+        ("50 N m", "torque", 50.0),
+        ("5 µm", "length", 5e-6),
+        ("5 μm", "length", 5e-6),  # the Greek mu as well as the micro sign
+        ("5 um", "length", 5e-6),
+        ("228.0419 GPa", "pressure", 228.0419e9),
+        ("1e-3 m", "length", 1e-3),
+        ("1E-3 m", "length", 1e-3),
+        (".5 mm", "length", 5e-4),
+        ("5. mm", "length", 5e-3),
+        ("-5 N", "force", -5.0),
+        ("+5 N", "force", 5.0),
+        ("−5 N", "force", -5.0),  # the Unicode minus sign
+        ("5N", "force", 5.0),
+        ("7850 kg/m^3", "density", 7850.0),
+        ("2e-5 m^2/s", "kinematic_viscosity", 2e-5),
+        ("50 1/s", "speed", 100 * math.pi),
+        ("100 min^-1", "speed", 100 * 2 * math.pi / 60),
+        ("2 %", "dimensionless", 0.02),
+        ("1 atm", "pressure", 101325.0),  # a constant of pint's that is a unit of pressure as well
+    ],
+)
+def test_one_number_and_a_unit_still_read(text, kind, want):
+    assert units.parse_quantity(text, kind, "x") == pytest.approx(want, rel=1e-14)
+
+
+@pytest.mark.parametrize("text", ["70 degC", "70 °C", "70°C", "343.15 K", "158 degF"])
+def test_temperatures_read_with_their_offset(text):
+    ureg = units._ureg()
+    q = units._quantity(text, "temperature", "'70 degC'")
+    assert q.to("kelvin").magnitude == pytest.approx(343.15, abs=1e-9)
+    assert ureg.get_dimensionality(str(q.units)) == ureg.get_dimensionality("kelvin")
+
+
+def test_lists_and_ranges_of_one_number_each():
+    assert_allclose(units.parse_values("5kN,20kN", "force", "x"), [5e3, 20e3], rtol=1e-15)
+    assert units.parse_values("2.5kN:45kN:2.5kN", "force", "x").size == 18
+    for text in ("1.2.3 N, 2 N", "1 N:--5 N:1 N", "N, 2 N", "1kN:pi kN:1kN"):
+        with pytest.raises(InputError, match=r"x: cannot read"):
+            units.parse_values(text, "force", "x")
+
+
+@settings(max_examples=200, deadline=None)
+@given(x=st.floats(allow_nan=False, allow_infinity=False, min_value=-1e300, max_value=1e300),
+       unit=st.sampled_from([("N", 1.0), ("kN", 1e3), ("mN", 1e-3)]))
+def test_any_float_written_with_repr_reads_back(x, unit):
+    # a number printed by Python (repr: the shortest round-trip form) is one literal of the grammar
+    name, scale = unit
+    got = units.parse_quantity(f"{x!r} {name}", "force", "x")
+    assert got == pytest.approx(x * scale, rel=1e-15)
+
+
+@settings(max_examples=300, deadline=None)
+@given(text=st.text(alphabet="0123456789.eE+-*/^ ()Nkpi,", max_size=14))
+def test_parser_answers_a_float_or_an_input_error(text):
+    # whatever the text: a finite float or an InputError, never another exception
+    try:
+        value = units.parse_quantity(text, "force", "x")
+    except InputError:
+        return
+    assert math.isfinite(value)
+    # and what was accepted is one literal followed by a unit: the float of its leading literal, scaled
+    m = units._QUANTITY.match(units._normalise(text))
+    assert m is not None
+
+
+def test_a_long_list_is_counted_before_it_is_parsed(monkeypatch):
+    def no_parse(*a, **k):
+        raise AssertionError("parsed before the count was checked")
+
+    monkeypatch.setattr(units, "parse_quantity", no_parse)
+    with pytest.raises(InputError, match=r"x: 11 values, more than the limit of 10"):
+        units.parse_values(",".join(["1 N"] * 11), "force", "x", limit=10)

@@ -26,7 +26,9 @@ import io
 import json
 import math
 import os
+import signal
 import tempfile
+import threading
 from pathlib import Path
 
 import numpy as np
@@ -34,23 +36,75 @@ import numpy as np
 __all__ = ["atomic_output", "csv_cell", "csv_text", "json_text", "json_value", "write_columns", "write_text"]
 
 
+# Temporary files of the atomic writes under way, removed by the SIGTERM/SIGHUP handler: a killed run
+# (a batch system's time limit, a closed terminal) leaves no ".name.xxxx.tmp" behind.
+_PENDING: set[str] = set()
+_HANDLED: dict[int, object] = {}  # signal -> the handler it had before ours
+
+
+def _remove_pending(signum, frame):
+    """SIGTERM/SIGHUP: remove the temporary files, then die of the signal as before."""
+    for tmp in list(_PENDING):
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+    _PENDING.clear()
+    previous = _HANDLED.get(signum, signal.SIG_DFL)
+    if callable(previous):
+        previous(signum, frame)
+        return
+    signal.signal(signum, signal.SIG_DFL)
+    os.kill(os.getpid(), signum)
+
+
+def _handle_signals():
+    """Install :func:`_remove_pending` for SIGTERM and SIGHUP, once, where the signal still has its default
+    action (a program that set its own handler, a web server, keeps it). Only the main thread can."""
+    if threading.current_thread() is not threading.main_thread():
+        return
+    for name in ("SIGTERM", "SIGHUP"):
+        signum = getattr(signal, name, None)  # no SIGHUP on Windows
+        if signum is None or signum in _HANDLED:
+            continue
+        try:
+            if signal.getsignal(signum) is signal.SIG_DFL:
+                _HANDLED[signum] = signal.signal(signum, _remove_pending)
+        except (ValueError, OSError):  # not the main interpreter
+            pass
+
+
 @contextlib.contextmanager
 def atomic_output(path, *, suffix=".tmp"):
     """Yield a temporary path next to ``path``; on a normal exit it becomes ``path``, on an error it is removed.
 
     ``suffix`` lets writers that choose their format from the file name (matplotlib) see the right one.
+    SIGTERM and SIGHUP remove the temporary file too. An ``OSError`` without a file name (a full disk,
+    ENOSPC, raised by ``write``) is raised again naming ``path``. A ``path`` that is a device, a pipe or
+    a socket is refused (InputError): the rename would replace it.
     """
     path = Path(path)
+    if path.exists() and not path.is_file() and not path.is_dir():
+        # a device, a pipe or a socket: the rename would replace the node itself (/dev/null, /dev/zero
+        # when run as root), not write into it
+        from .errors import InputError
+
+        raise InputError(f"{path}: not a regular file (a device, a pipe or a socket); an output is written "
+                         f"to a file")
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=suffix, dir=path.parent)
     os.close(fd)
+    _handle_signals()
+    _PENDING.add(tmp)
     try:
         yield Path(tmp)
         os.chmod(tmp, 0o644)  # mkstemp creates 0600; an output is an ordinary file
         os.replace(tmp, path)
-    except BaseException:
+    except BaseException as exc:
         if os.path.exists(tmp):
             os.unlink(tmp)
+        if isinstance(exc, OSError) and exc.filename in (None, tmp) and exc.errno is not None:
+            raise OSError(exc.errno, exc.strerror or str(exc), str(path)) from exc  # name the user's file
         raise
+    finally:
+        _PENDING.discard(tmp)
 
 
 def write_text(path, text):

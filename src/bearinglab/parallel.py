@@ -12,6 +12,8 @@ chunk_bounds     (start, stop) of each chunk
 run_cases        evaluate ``func(**chunk_of_cases, **constants)`` over all cases
 run_seeded       Monte Carlo: ``func(n, rng, **constants)`` over blocks of samples with their own seeds
 executor_client  context manager yielding a dask client for an executor (``None`` for serial)
+probe_scheduler  check that a tcp:// address answers as a dask scheduler, before dask connects
+is_local_address True for serial, local and a scheduler on this machine
 Execution        the execution options (executor, workers, chunk size, progress, ...) as one value
 
 Every batch entry point of the models (``quasistatic.sweep``, ``runout.monte_carlo``, ``sweep.run_sweep``)
@@ -36,10 +38,11 @@ from collections.abc import Callable, Mapping
 
 import numpy as np
 
+from . import _bounds
 from .errors import InputError
 
-__all__ = ["DEFAULT_BLOCK_SIZE", "DEFAULT_CHUNK_SIZE", "Execution", "chunk_bounds", "executor_client", "run_cases",
-           "run_seeded"]
+__all__ = ["DEFAULT_BLOCK_SIZE", "DEFAULT_CHUNK_SIZE", "Execution", "chunk_bounds", "executor_client",
+           "is_local_address", "probe_scheduler", "run_cases", "run_seeded"]
 
 DEFAULT_CHUNK_SIZE = 10_000
 DEFAULT_BLOCK_SIZE = 256
@@ -93,6 +96,9 @@ class Execution:
             v = getattr(self, name)
             if v is not None and (isinstance(v, bool) or int(v) != v or v < 1):
                 raise InputError(f"{name.replace('_', '-')} must be an integer >= 1 [-], got {v!r}")
+        if self.workers is not None and self.workers > _bounds.MAX_WORKERS:  # processes of this machine
+            raise InputError(f"workers must be <= {_bounds.MAX_WORKERS} [-] (bearinglab's size limit), got "
+                             f"{self.workers}")
 
     def with_default_chunk_size(self, chunk_size):
         """This value, with ``chunk_size`` filled in where it was left ``None``."""
@@ -190,6 +196,7 @@ def executor_client(executor="serial", *, workers=None, memory_limit=None, proce
         finally:
             cluster.close()
         return
+    probe_scheduler(executor, timeout=timeout)  # before dask reads a frame length from a stranger
     try:
         client = Client(executor, timeout=f"{timeout}s")
     except (OSError, TimeoutError, ValueError) as exc:
@@ -199,6 +206,130 @@ def executor_client(executor="serial", *, workers=None, memory_limit=None, proce
         yield client
     finally:
         client.close()
+
+
+# What a dask scheduler sends first on a TCP connection (distributed.comm.tcp): an 8-byte little-endian
+# length of the message, then the frame count and the frame lengths (8 bytes each), then the frames:
+# one msgpack map {"compression": ..., "python": ..., "pickle-protocol": ...}, its handshake (66 bytes
+# with distributed 2026.8). Anything else is not a scheduler.
+_HANDSHAKE_MAX_BYTES = 1 << 16
+_HANDSHAKE_KEYS = (b"pickle-protocol", b"compression")
+
+
+def _scheduler_host(address):
+    """(host, port) of a ``tcp://host:port`` address (dask's default port 8786), or None for another
+    protocol (tls, ucx, inproc: not probed)."""
+    from urllib.parse import urlsplit
+
+    parts = urlsplit(address)
+    if parts.scheme != "tcp":
+        return None
+    try:
+        port = parts.port or 8786
+    except ValueError:
+        raise InputError(f"executor: {address!r} has no valid port") from None
+    if not parts.hostname:
+        raise InputError(f"executor: {address!r} has no host")
+    return parts.hostname, port
+
+
+def is_local_address(executor):
+    """True for ``"serial"``, ``"local"`` and a scheduler on this machine (localhost, 127.0.0.0/8, ::1).
+
+    A sweep file that names any other scheduler sends the cases (and the file's constants) to another
+    machine: the command line asks for ``--allow-remote-executor`` first.
+
+    Parameters
+    ----------
+    executor : str or None
+        ``"serial"``, ``"local"`` or a scheduler address such as ``"tcp://host:8786"``.
+
+    Returns
+    -------
+    bool
+        Whether the work stays on this machine.
+
+    Examples
+    --------
+    >>> is_local_address("local"), is_local_address("tcp://127.0.0.1:8786"), is_local_address("tcp://lab:8786")
+    (True, True, False)
+    """
+    import ipaddress
+    from urllib.parse import urlsplit
+
+    if executor in (None, "serial", "local"):
+        return True
+    host = urlsplit(str(executor)).hostname or ""
+    if host == "localhost":
+        return True
+    try:
+        return ipaddress.ip_address(host).is_loopback
+    except ValueError:  # a host name other than localhost
+        return False
+
+
+def probe_scheduler(address, *, timeout=_CONNECT_TIMEOUT_S):
+    """Check that a ``tcp://`` address answers as a dask scheduler before a dask client connects to it.
+
+    dask reads the length of the first frame from the peer and allocates it: a server that answers
+    something else (an HTTP server, an echo service) makes the client ask for exabytes or hang. This reads
+    at most 64 kB, within ``timeout`` seconds, and checks the scheduler's handshake.
+
+    Parameters
+    ----------
+    address : str
+        ``"tcp://host:port"``; other protocols are left to dask.
+    timeout : float, optional
+        Seconds for the connection and the handshake together. [s]
+
+    Raises
+    ------
+    InputError
+        Nothing listens there ("cannot reach a dask scheduler"), or what answers is not one ("... is not a
+        dask scheduler"), with the reason.
+    """
+    import socket
+    import time
+
+    target = _scheduler_host(address)
+    if target is None:
+        return
+    deadline = time.monotonic() + float(timeout)
+    try:
+        sock = socket.create_connection(target, timeout=float(timeout))
+    except OSError as exc:
+        raise InputError(f"executor: cannot reach a dask scheduler at {address!r} within {timeout:g} s "
+                         f"({type(exc).__name__}: {exc})") from None
+
+    def receive(n):
+        data = b""
+        while len(data) < n:
+            left = deadline - time.monotonic()
+            if left <= 0:
+                raise TimeoutError(f"no handshake within {timeout:g} s")
+            sock.settimeout(left)
+            try:
+                chunk = sock.recv(min(n - len(data), _HANDSHAKE_MAX_BYTES))
+            except TimeoutError:
+                raise TimeoutError(f"no handshake within {timeout:g} s") from None
+            if not chunk:
+                raise ConnectionError("it closed the connection")
+            data += chunk
+        return data
+
+    with sock:
+        try:
+            size = int.from_bytes(receive(8), "little")
+            if not 16 <= size <= _HANDSHAKE_MAX_BYTES:
+                raise ValueError(f"its first message announces {size} bytes")
+            body = receive(size)
+            frames = int.from_bytes(body[:8], "little")
+            if not 1 <= frames <= 16 or 8 + 8 * frames > size:
+                raise ValueError(f"its first message announces {frames} frames")
+            if not any(key in body for key in _HANDSHAKE_KEYS):
+                raise ValueError("its first message is not dask's handshake")
+        except (OSError, ValueError) as exc:  # socket.timeout is an OSError (TimeoutError)
+            raise InputError(f"executor: {address!r} answers but is not a dask scheduler ({exc})") from None
 
 
 def _evaluate(func, chunk, constants):

@@ -20,6 +20,7 @@ MODELS          name -> SweepModel (parameters with their kinds, the chunk funct
 load_sweep      read and check a sweep file -> SweepSpec
 case_grid       the Cartesian product of the parameter values, flattened to per-case arrays
 run_sweep       evaluate a SweepSpec through :mod:`bearinglab.parallel`; inputs and outputs as columns
+check_file_executor  refuse a scheduler on another machine named by a file, unless confirmed
 write_table     write columns to CSV or Parquet, whole or not at all
 
 Every chunk function is pure and flags failed cases (``converged`` False and a ``failure`` reason)
@@ -36,7 +37,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import catalog, geometry, hertz, kinematics, parallel, stand, static, tables
+from . import _bounds, catalog, geometry, hertz, kinematics, parallel, stand, static, tables
 from .bearing import BallBearing
 from .errors import CatalogError, ConvergenceError, InputError
 from .units import KGF, parse_quantity, parse_values
@@ -47,6 +48,7 @@ __all__ = [
     "SweepModel",
     "SweepSpec",
     "case_grid",
+    "check_file_executor",
     "load_sweep",
     "register_model",
     "run_sweep",
@@ -301,7 +303,8 @@ def load_sweep(path):
     Raises
     ------
     CatalogError
-        Naming the file, the table and the field.
+        Naming the file, the table and the field; a grid of more than
+        :data:`bearinglab._bounds.MAX_SWEEP_CASES` cases is refused here, before it is built.
     """
     path = Path(path)
     doc = catalog.read_toml(path)
@@ -328,6 +331,10 @@ def load_sweep(path):
     required = [k for k in model.parameters if k not in values and k not in model.optional]
     if required:
         _fail(path, "parameters", f"model {name!r} needs {', '.join(required)}")
+    try:  # the grid is built only when run: its size is checked now, from the lengths alone
+        _check_grid(values)
+    except InputError as exc:
+        _fail(path, "parameters", str(exc))
     out = doc.get("output", {}).get("file")
     output = (path.parent / out) if out else None
     if output is not None and output.suffix not in (".csv", ".parquet"):
@@ -336,6 +343,14 @@ def load_sweep(path):
     chunk = ex.get("chunk_size", parallel.DEFAULT_CHUNK_SIZE)
     return SweepSpec(model, bearing, values, output, str(ex.get("executor", "serial")), ex.get("workers"),
                      int(chunk), dict(doc.get("constants", {})))
+
+
+def _check_grid(parameters):
+    """The number of cases of the product, refused above :data:`bearinglab._bounds.MAX_SWEEP_CASES`
+    before anything is allocated (a product of Python ints: no overflow)."""
+    sizes = {k: int(np.size(v)) for k, v in parameters.items()}
+    _bounds.check_cases(math.prod(sizes.values()), " x ".join(f"{n} {k}" for k, n in sizes.items()),
+                        limit=_bounds.MAX_SWEEP_CASES)
 
 
 def case_grid(parameters):
@@ -358,12 +373,38 @@ def case_grid(parameters):
     ([1.0, 1.0, 1.0, 2.0, 2.0, 2.0], [10.0, 20.0, 30.0, 10.0, 20.0, 30.0])
     """
     names = list(parameters)
+    _check_grid(parameters)
     mesh = np.meshgrid(*[np.asarray(parameters[k], dtype=float) for k in names], indexing="ij")
     return {k: m.ravel() for k, m in zip(names, mesh)}
 
 
+def check_file_executor(spec, *, allow_remote_executor=False, option="allow_remote_executor=True"):
+    """Refuse the scheduler a sweep file names when it is on another machine, unless confirmed.
+
+    A sweep file can come from someone else; its ``[execution] executor`` would send the cases (and the
+    file's constants) to that machine, and run there whatever it answers. The caller confirms it.
+
+    Parameters
+    ----------
+    spec : SweepSpec
+        From :func:`load_sweep`; its ``executor`` is the file's.
+    allow_remote_executor : bool, optional
+        The confirmation: a scheduler on another machine is accepted.
+    option : str, optional
+        How the caller confirms it, for the message (``--allow-remote-executor`` on the command line).
+
+    Raises
+    ------
+    InputError
+        The file names a scheduler that is not on this machine and ``allow_remote_executor`` is False.
+    """
+    if not allow_remote_executor and not parallel.is_local_address(spec.executor):
+        raise InputError(f"executor: the sweep file names the scheduler {spec.executor!r}, not on this machine; "
+                         f"confirm it with {option} (a file can come from someone else)")
+
+
 def run_sweep(spec, *, execution=None, executor=None, workers=None, chunk_size=None, memory_limit=None,
-              processes=None, progress=None):
+              processes=None, progress=None, allow_remote_executor=False):
     """Evaluate a sweep; returns the input columns (engineering units) and the model's output columns.
 
     Parameters
@@ -386,6 +427,9 @@ def run_sweep(spec, *, execution=None, executor=None, workers=None, chunk_size=N
         Local workers as processes (default) or threads.
     progress : callable or "dask", optional
         See :func:`bearinglab.parallel.run_cases`.
+    allow_remote_executor : bool, optional
+        Run on the scheduler the file names when it is on another machine
+        (:func:`check_file_executor`); not needed when ``execution`` or ``executor`` is given.
 
     Returns
     -------
@@ -393,6 +437,8 @@ def run_sweep(spec, *, execution=None, executor=None, workers=None, chunk_size=N
         The inputs as :func:`bearinglab.tables.input_columns` (``axial_load_N``, ``speed_rpm``, ...),
         then the model's outputs, case by case.
     """
+    if execution is None and executor is None:
+        check_file_executor(spec, allow_remote_executor=allow_remote_executor)
     ex = parallel._execution(execution, executor=executor or (None if execution else spec.executor),
                              workers=workers, chunk_size=chunk_size, memory_limit=memory_limit,
                              processes=processes, progress=progress)

@@ -30,6 +30,7 @@ import re
 
 import numpy as np
 
+from . import _bounds
 from .errors import InputError
 
 __all__ = [
@@ -257,7 +258,8 @@ _SPELLINGS = (
 
 
 def _normalise(text: str) -> str:
-    t = text.strip().replace("µ", "u").replace("μ", "u").replace("·", "*").replace("°", " deg ")
+    t = text.strip().replace("µ", "u").replace("μ", "u").replace("·", "*")
+    t = re.sub(r"°\s*([CF])\b", r" deg\1", t).replace("°", " deg ")  # 70 °C is degC, not deg * coulomb
     t = t.replace("′", " arcmin ").replace("″", " arcsec ").replace("−", "-")
     # a rotation frequency in Hz means revolutions per second, not radians per second
     t = re.sub(r"(?<![A-Za-z])(k?)Hz\b", lambda m: " revolution/s" if not m.group(1) else " kilorevolution/s", t)
@@ -304,7 +306,17 @@ def parse_quantity(value, kind, name, *, default_unit=None):
     Raises
     ------
     InputError
-        The text does not parse, has no unit where one is needed, or has the wrong dimension.
+        The text does not parse, has no unit where one is needed, has the wrong dimension, or is not
+        finite in SI units.
+
+    Notes
+    -----
+    The text is ONE number (``-5``, ``2.5``, ``.5``, ``1e-3``; one sign at most) followed by a unit
+    expression: unit names joined by ``*``, ``/`` or a space, each with an optional integer exponent
+    (``mm^2/s``, ``kg/m**3``, ``N*m``, ``N·m``, ``1/min``). pint converts the unit only; the text is
+    never evaluated as an expression, so ``1.2.3 N``, ``--5 N``, a bare ``N``, ``kN*kN/kN``,
+    ``2 pi kN`` (a constant) and ``10**308*10 N`` are refused, as is a value that overflows in SI
+    (``1e308 kN``). Angles may also be written in degrees, minutes and seconds (``14°28'03.38"``).
 
     Examples
     --------
@@ -342,14 +354,7 @@ def parse_quantity(value, kind, name, *, default_unit=None):
         return math.radians(-deg if dms.group(1) == "-" else deg)
     if len(_STANDALONE_NUMBER.findall(_normalise(text))) > 1:  # pint reads "1 000 N" as 1 * 0 N and "2 3 kgf" as 6 kgf
         raise InputError(f"{name}: {text!r} holds more than one number; write one number and its unit, e.g. {examples}")
-    try:
-        q = ureg.Quantity(_normalise(text))
-    except Exception as exc:  # pint raises several unrelated exception types
-        raise InputError(f"{name}: cannot read {text!r} as a quantity (e.g. {examples})") from exc
-    if not np.isfinite(getattr(q, "magnitude", q)):
-        raise InputError(f"{name}: {text!r} is not a finite quantity")
-    if not isinstance(q, ureg.Quantity):  # a bare number
-        q = ureg.Quantity(float(q))
+    q = _quantity(text, name, examples)
     if q.dimensionless and not q.unit_items() and kind != "dimensionless":
         if default_unit is None:
             raise InputError(f"{name}: {text!r} has no unit; write it with one, e.g. {examples}")
@@ -362,14 +367,96 @@ def parse_quantity(value, kind, name, *, default_unit=None):
             )
         if kind == "angle" and not is_angle:
             raise InputError(f"{name}: {text!r} is not an angle; write e.g. {examples}")
-        return float(q.to("radian").magnitude) if kind == "angle" else float(q.to("").magnitude)
+        return _finite(q.to("radian" if kind == "angle" else "").magnitude, text, name)
     if not q.check(dim):
         raise InputError(f"{name}: {text!r} is a {_describe(q)}, expected a {kind.replace('_', ' ')} (e.g. {examples})")
     if kind == "speed" and not any(a in u for u, _exp in q.unit_items() for a in _ANGLE_UNITS):
         # a rotational speed written as a plain reciprocal time ("50 1/s", "50 /s") counts revolutions,
         # as n in DIN/ISO drawings and as Hz does here; reading it as rad/s would slip a factor of 2 pi
         q = q * ureg.revolution
-    return float(q.to(si).magnitude)
+    return _finite(q.to(si).magnitude, text, name)
+
+
+def _finite(x, text, name):
+    """``x`` as a float, refused when the conversion to SI overflowed (``1e308 kN``)."""
+    x = float(x)
+    if not math.isfinite(x):
+        raise InputError(f"{name}: {text!r} is not a finite quantity (it overflows in SI units)")
+    return x
+
+
+# The grammar of a quantity (issue 20): ONE numeric literal, then a unit expression of unit names joined
+# by '*', '/' or spaces, each with an optional integer exponent ('^2', '**-1'). pint converts only the
+# unit; it never evaluates the text, which it would read as an expression: '1.2.3 N' as 1.2 * 0.3 N,
+# '--5 N' as +5 N, 'N' as 1 N, '10**308*10 N' as an overflow, 'pi kN' as 3141.6 N.
+_NUMBER_TEXT = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+_UNIT_NAME = r"(?:[^\W\d]\w*|%)"
+_UNIT_TERM = rf"{_UNIT_NAME}(?:\s*(?:\^|\*\*)\s*[-+]?\d+)?"
+_UNIT_EXPR = rf"(?:/\s*)?{_UNIT_TERM}(?:(?:\s*[*/]\s*|\s+){_UNIT_TERM})*"
+_QUANTITY = re.compile(rf"^\s*({_NUMBER_TEXT})\s*({_UNIT_EXPR})?\s*$")
+_NOT_FINITE = re.compile(r"^\s*[-+]?(?:nan|inf|infinity)(?![\w.])", re.IGNORECASE)
+_UNIT_ONLY = re.compile(rf"^\s*{_UNIT_EXPR}\s*$")
+# dimensionless names that are units, not numbers in disguise (the constants pi, ln10, ... are refused)
+_DIMENSIONLESS_UNITS = (*_ANGLE_UNITS, "percent", "permille", "ppm", "dimensionless")
+_constants = None
+
+
+def _constant_names():
+    """The canonical names of pint's physical and mathematical constants (its ``constants_en.txt``),
+    but the standard atmosphere, which is a unit of pressure as well."""
+    global _constants
+    if _constants is None:
+        from importlib import resources
+
+        names = {"pi", "eulers_number"}
+        try:
+            text = (resources.files("pint") / "constants_en.txt").read_text(encoding="utf-8")
+        except (OSError, ModuleNotFoundError):  # another pint layout: the mathematical ones still refused
+            text = ""
+        for line in text.splitlines():
+            m = re.match(r"^([^\W\d]\w*)\s*=", line)
+            if m:
+                names.add(m.group(1))
+        _constants = frozenset(names - {"standard_atmosphere"})
+    return _constants
+
+
+def _quantity(text, name, examples):
+    """``text`` -> a pint Quantity by the grammar above, or an InputError naming ``name``."""
+    ureg = _ureg()
+    t = _normalise(text)
+    m = _QUANTITY.match(t)
+    if not m and _NOT_FINITE.match(t):
+        raise InputError(f"{name}: {text!r} is not a finite quantity")
+    if not m:
+        why = ("it has no number" if _UNIT_ONLY.match(t)
+               else "write one number and one unit, without operators or constants")
+        raise InputError(f"{name}: cannot read {text!r} as a quantity: {why} (e.g. {examples})")
+    number, unit = m.group(1), (m.group(2) or "").strip()
+    magnitude = float(number)
+    if not math.isfinite(magnitude):  # 1e309
+        raise InputError(f"{name}: {text!r} is not a finite quantity")
+    if not unit:
+        return ureg.Quantity(magnitude)
+    words = re.findall(_UNIT_NAME, unit)
+    repeated = next((w for w in words if words.count(w) > 1), None)
+    if repeated:  # 'kN*kN/kN': an expression, not a unit
+        raise InputError(f"{name}: cannot read {text!r} as a quantity: {repeated!r} appears twice in the unit")
+    try:
+        q = ureg.Quantity(magnitude, "1" + unit if unit.startswith("/") else unit)
+        items = list(q.unit_items())
+    except Exception as exc:  # pint raises several unrelated exception types
+        raise InputError(f"{name}: cannot read {text!r} as a quantity (e.g. {examples})") from exc
+    for unit_name, _exp in items:
+        root = ureg.parse_unit_name(unit_name)
+        root = root[0][1] if root else unit_name
+        constant = root in _constant_names()
+        if not constant and ureg.get_dimensionality(unit_name) == ureg.get_dimensionality(""):
+            constant = not any(a in unit_name for a in _DIMENSIONLESS_UNITS)
+        if constant:  # '2 pi kN' is a product with a number in disguise
+            raise InputError(f"{name}: cannot read {text!r} as a quantity: {unit_name!r} is a constant, not a "
+                             f"unit; write one number and its unit (e.g. {examples})")
+    return q
 
 
 def _describe(q):
@@ -389,7 +476,7 @@ def _split_unit(item: str):
     return float(m.group(1)), m.group(2).strip()
 
 
-def parse_values(text, kind, name):
+def parse_values(text, kind, name, *, limit=None):
     """Parse one value, a list ``a,b,cUNIT`` or a range ``start:stop:step`` into an SI array.
 
     Parameters
@@ -400,6 +487,9 @@ def parse_values(text, kind, name):
         One of :data:`KINDS`.
     name : str
         The parameter's name, used in error messages.
+    limit : int, optional
+        The most values accepted (a command's :data:`bearinglab._bounds.MAX_CASES`); by default
+        :data:`bearinglab._bounds.MAX_RANGE_VALUES`. A range is counted before it is built.
 
     Returns
     -------
@@ -409,7 +499,8 @@ def parse_values(text, kind, name):
     Notes
     -----
     A unit written only on the last item applies to all items without one. A range includes its end
-    point when the steps land on it; it may hold at most 10^7 values. Items are separated by commas or
+    point when the steps land on it; it may hold at most :data:`bearinglab._bounds.MAX_RANGE_VALUES` values
+    (counted before it is built). Items are separated by commas or
     semicolons. One comma between two digits (``"2,5 kN"``) could be a decimal comma or a list of two
     values; it is rejected with both spellings in the message, never guessed.
 
@@ -421,11 +512,14 @@ def parse_values(text, kind, name):
     array([  0.   , 314.159, 628.319])
     """
     text = str(text).strip()
+    limit = _bounds.MAX_RANGE_VALUES if limit is None else limit
     _reject_decimal_comma(text, name)
     sep = ":" if ":" in text else (";" if ";" in text else ",")
     items = [s.strip() for s in text.split(sep) if s.strip()]
     if not items:
         raise InputError(f"{name}: no values in {text!r}")
+    if len(items) > limit:  # counted before each item is parsed
+        raise InputError(f"{name}: {len(items)} values, more than the limit of {limit}")
     parsed = [_split_unit(s) for s in items]
     last_unit = parsed[-1][1] or None
     values = []
@@ -439,8 +533,6 @@ def parse_values(text, kind, name):
         start, stop, step = values
         if not step > 0 or stop < start:
             raise InputError(f"{name}: range {text!r} needs step > 0 and stop >= start")
-        count = math.floor((stop - start) / step * (1 + 1e-12) + 1e-9) + 1
-        if count > 10_000_000:
-            raise InputError(f"{name}: range {text!r} has {count} values, more than 10^7")
+        count = _bounds.range_count(start, stop, step, name, text, limit=limit)  # before np.arange allocates
         return start + step * np.arange(count)
     return np.array(values, dtype=float)

@@ -8,7 +8,11 @@ garbage, and files of random bytes. Only three outcomes are allowed:
 * exit 2 with one line ``bearinglab: error: ...`` on stderr (invalid or impossible input);
 * exit 3 with one line (a genuine non-convergence).
 
-No traceback, no numpy warning, nothing else. The value pools keep every run small (a few cases per
+No traceback, no numpy warning, nothing else. And (issue 20, items 5-9) whatever the outcome, no file
+that existed before the run was changed (an output option given an input file's name is refused), no
+missing directory was created, and no run allocates beyond the size limits: the pools hold malformed
+quantities, huge counts and ranges, /dev/zero as an input file, and executors that are no scheduler.
+The value pools keep every run small (a few cases per
 command), and the slow commands get fewer examples, so that the CI run (derandomized, see
 tests/conftest.py) of over 2000 examples stays near a minute and a half on two workers.
 ``BEARINGLAB_FUZZ_EXAMPLES`` sets the examples per command (default 220) for a longer local hunt.
@@ -59,8 +63,12 @@ QUANTITIES = [
     "-2 mm", "1e300 mm", "9 um", "100 um", "2 m", "208 GPa", "0.07 N*mm", "20 cSt", "2 %", "0.52", "0.5",
     "nan", "inf", "-inf", "1e309", "", " ", "abc", "2 3 kgf", "1 000 N", "kgf", "2 kgf kgf", ";", ":", ",",
     "1:2", "1kN:0kN:1kN", "0,3000,6000rpm", "é", "\x00", "--json",
+    # issue 20 item 5: one number and a unit, nothing else; item 6: ranges too big to build
+    "1.2.3 N", "--5 N", "N", "kN*kN/kN", "pi kN", "2 pi kN", "10**308*10 N", "1kN:1e308kN:1kN", "1e308 kN",
+    "1N:1e6N:1N", "0rpm:9999rpm:1rpm", "1e-300 N:1e300 N:1e-300 N", "70 degC", "68 mm^2/s", "50 N*m",
 ]
-NUMBERS = ["-1", "0", "1", "2", "3", "7", "9", "16", "0.5", "0.52", "1.5", "-0.5", "1e9", "nan", "inf", "x"]
+NUMBERS = ["-1", "0", "1", "2", "3", "7", "9", "16", "0.5", "0.52", "1.5", "-0.5", "1e9", "nan", "inf", "x",
+           "1000000000", "99999999999999999999"]  # counts far beyond the size limits (issue 20 item 6)
 NAMES = ["B218", "7218B", "4-1006095", "6205-2RS", "18", "61811-2RS1", "b218", "no-such-bearing", "", "G5",
          "P4", "newton", "outer", "mass", "harris", "exact", "table", "paper", "materials", "serial", "bogus",
          "steel", "silicon_nitride", "radial_ptp_max", "palmgren", "one-term", "skf", "grease", "oil-bath", "DB",
@@ -75,6 +83,8 @@ VALID_FILES = {
     ("friction", "file"): [EXAMPLES / "friction" / "s0_direct.toml", EXAMPLES / "friction" / "s1_readings.toml"],
 }
 OUTPUT_NAMES = ["out.csv", "out.png", "out.txt", "out.parquet", "missing/out.csv", "out", "out.json", "."]
+# an output option given the name of an input file of the run (issue 20 item 7): must be refused
+INPUT_AS_OUTPUT = "<an input>"
 # the words of an option's name that make it a file or directory the command reads or writes
 INPUT_WORDS = ("file", "catalog", "errors", "geometry")
 OUTPUT_WORDS = ("csv", "plot", "out", "dir")
@@ -94,7 +104,7 @@ def _kind(param):
 
 @st.composite
 def _input_file(draw, workdir, good, command, name):
-    choice = "valid" if good else draw(st.sampled_from(["bytes", "text", "missing", "directory"]))
+    choice = "valid" if good else draw(st.sampled_from(["bytes", "text", "missing", "directory", "device"]))
     if choice == "valid":  # a copy: a command may write where an input was expected (friction template)
         if (command, name) in VALID_FILES:
             source = draw(st.sampled_from(VALID_FILES[(command, name)]))
@@ -108,6 +118,13 @@ def _input_file(draw, workdir, good, command, name):
         return str(workdir / "no-such-file.toml")
     if choice == "directory":
         return str(workdir)
+    if choice == "device" and os.path.exists("/dev/zero"):  # endless: refused before it is read
+        # through a link in the work directory: a command that writes where an input was expected replaces
+        # the link, never the device itself (the test may run as root)
+        link = workdir / "zero.toml"
+        if not link.is_symlink():
+            link.symlink_to("/dev/zero")
+        return str(link)
     path = workdir / f"in{draw(st.integers(0, 3))}.toml"
     if choice == "bytes":
         path.write_bytes(draw(st.binary(max_size=200)))
@@ -119,6 +136,8 @@ def _input_file(draw, workdir, good, command, name):
             'axial_load = "1kN:3kN:1kN"', 'speed = "3000 rpm"', "[geometry]", "balls = 16", "[errors.balls]",
             "diameter = [2, 0]", "x = ", "[[", 'title = "t"', "[output]", 'file = "o.csv"', "output = 3",
             "[execution]", 'chunk_size = "x"', "chunk_size = 0", 'executor = "bogus"', "model = 3",
+            'executor = "tcp://192.0.2.1:8786"', "[errors.outer.radial]", "cos = { 1000000000 = 0.5 }",
+            "balls = 1000000000", "max_order = 99999999", 'chunk_size = 1',
         ]), max_size=12))
         path.write_text("\n".join(lines), encoding="utf-8")
     return str(path)
@@ -136,7 +155,8 @@ GOOD = {
     "hertz": ["exact", "table"], "elastic_constant": ["materials", "paper"],
     "solver": ["newton", "angle-iteration"], "raceway_control": ["outer", "inner"],
     "constants": ["mass", "harris", "paper"], "gyroscopic_sign": ["physical", "reversed"],
-    "executor": ["serial"], "workers": ["1"], "chunk_size": ["1", "50"],
+    "executor": ["serial", "serial", "serial", "tcp://127.0.0.1:1", "<garbage server>"], "workers": ["1"],
+    "chunk_size": ["1", "50"],
     "revolutions": ["1", "2"], "steps_per_rev": ["36", "90"], "samples": ["2", "5"], "seed": ["0", "7"],
     "max_order": ["3", "15"], "angle": ["0", "10 deg"], "start_angle": ["0 deg", "5 deg"],
     "first_ball_angle": ["0 deg", "3 deg"], "cage_ratio": ["0.4", "0.45"], "ball_grade": ["G5", "G10"],
@@ -175,6 +195,7 @@ INLINE = ("balls", "ball_diameter", "pitch_diameter", "inner_groove_radius", "ou
 @st.composite
 def _argv(draw, path, command, workdir):
     args = list(path)
+    inputs = []
     for param in command.params:
         if param.name in ("help",):
             continue
@@ -189,8 +210,10 @@ def _argv(draw, path, command, workdir):
             value = None
         elif kind == "input":
             value = draw(_input_file(workdir, good, path[0], param.name))
+            inputs.append(value)
         elif kind == "output":
-            value = str(workdir / draw(st.sampled_from(OUTPUT_NAMES)))
+            name = draw(st.sampled_from([*OUTPUT_NAMES, INPUT_AS_OUTPUT] if inputs else OUTPUT_NAMES))
+            value = draw(st.sampled_from(inputs)) if name == INPUT_AS_OUTPUT else str(workdir / name)
         elif good:
             pool = GOOD.get(param.name, ANY_GOOD)
             if param.name in ("bearing", "name"):
@@ -198,6 +221,8 @@ def _argv(draw, path, command, workdir):
             value = draw(st.sampled_from(pool))
         else:
             value = draw(st.sampled_from(QUANTITIES + NUMBERS + NAMES))
+        if value == "<garbage server>":
+            value = _garbage_server()
         if param.param_type_name == "argument":
             args.append(value)
             continue
@@ -208,6 +233,50 @@ def _argv(draw, path, command, workdir):
         if value is not None:
             args.append(value)
     return args
+
+
+_GARBAGE = []
+
+
+def _garbage_server():
+    """The address of a TCP server on 127.0.0.1 that answers like a web server, not a dask scheduler
+    (issue 20 item 9); one per test session, a daemon thread."""
+    import socket
+    import threading
+
+    if not _GARBAGE:
+        sock = socket.create_server(("127.0.0.1", 0))
+
+        def serve():
+            while True:
+                try:
+                    conn, _ = sock.accept()
+                except OSError:
+                    return
+                with conn:
+                    conn.sendall(b"HTTP/1.0 400 Bad Request\r\n\r\n")
+
+        threading.Thread(target=serve, daemon=True).start()
+        _GARBAGE.append(f"tcp://127.0.0.1:{sock.getsockname()[1]}")
+    return _GARBAGE[0]
+
+
+def _snapshot(workdir):
+    """Every file under ``workdir`` -> its bytes (the inputs of a run, before it)."""
+    return {p: p.read_bytes() for p in workdir.rglob("*") if p.is_file() and not p.is_symlink()}
+
+
+# commands whose file argument is what they write (with --force they replace it on purpose)
+WRITES_ITS_ARGUMENT = {("friction", "template")}
+
+
+def _check_files(path, argv, workdir, before):
+    where = f"bearinglab {' '.join(map(repr, argv))}"
+    assert not (workdir / "missing").exists(), f"{where}: created a missing directory"
+    if path in WRITES_ITS_ARGUMENT:
+        return
+    for file, data in before.items():
+        assert file.exists() and file.read_bytes() == data, f"{where}: changed the input {file}"
 
 
 def _check_outcome(argv, code, out, err):
@@ -227,6 +296,9 @@ def test_fuzz_command(path, tmp_path_factory, capsys, monkeypatch):
     monkeypatch.chdir(workdir)  # commands that write next to the working directory write here
     monkeypatch.delenv("BEARINGLAB_CATALOG", raising=False)
     monkeypatch.setenv("COLUMNS", "80")
+    from bearinglab import parallel
+
+    monkeypatch.setattr(parallel, "_CONNECT_TIMEOUT_S", 0.5)  # an unreachable scheduler costs 0.5 s, not 10
     command = COMMANDS[path]
 
     @settings(max_examples=EXAMPLES_PER_COMMAND // SLOW.get(path, 1), deadline=None, database=None,
@@ -234,8 +306,10 @@ def test_fuzz_command(path, tmp_path_factory, capsys, monkeypatch):
                                      HealthCheck.function_scoped_fixture])
     @given(argv=_argv(path, command, workdir))
     def run(argv):
+        before = _snapshot(workdir)
         try:
             code = main(argv)
+            _check_files(path, argv, workdir, before)
         finally:
             out, err = capsys.readouterr()
             for child in workdir.iterdir():  # a clean directory for the next example

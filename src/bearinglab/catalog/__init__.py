@@ -61,6 +61,7 @@ import tomllib
 from importlib import resources
 from pathlib import Path
 
+from .. import _bounds
 from ..errors import CatalogError, InputError
 
 __all__ = [
@@ -197,6 +198,9 @@ def bearing_from_table(table, *, name="", file=None, materials=None):
             z = table["balls"]
             if isinstance(z, bool) or not isinstance(z, int):
                 raise CatalogError(f"{where}, field 'balls': must be a whole number, got {z!r}")
+            if z > _bounds.MAX_BALLS:  # before any per-ball array (bearinglab._bounds)
+                raise CatalogError(f"{where}, field 'balls': must be <= {_bounds.MAX_BALLS} (bearinglab's size "
+                                   f"limit), got {z}")
             kw["n_balls"] = z
         for key in _LENGTHS:
             if key in table:
@@ -277,8 +281,10 @@ def read_toml(path):
     bearinglab.errors.CatalogError: no-such-file.toml: no such file
     """
     path = Path(path)
-    try:
-        data = path.read_bytes()
+    try:  # a regular file of bounded size: not /dev/zero, a FIFO or a 10 GB log (bearinglab._bounds)
+        data = _bounds.read_input_bytes(path)
+    except InputError as exc:
+        raise CatalogError(str(exc)) from None
     except FileNotFoundError:
         raise CatalogError(f"{path}: no such file") from None
     except IsADirectoryError:

@@ -253,8 +253,8 @@ def main(argv=None) -> int:
     Returns
     -------
     int
-        0 on success, 2 for invalid or physically impossible input (one line on stderr), 3 for a solve
-        that did not converge.
+        0 on success, 2 for invalid or physically impossible input (one line on stderr; a run too big for
+        memory, an overflow and a too deeply nested input too), 3 for a solve that did not converge.
     """
     from ._common import flush_notes, reset_notes
 
@@ -285,7 +285,20 @@ def main(argv=None) -> int:
     except OSError as exc:
         print(f"bearinglab: error: {_target_name(exc.filename)}: {exc.strerror or exc}", file=sys.stderr)
         return 2
+    except (MemoryError, OverflowError, RecursionError) as exc:  # a size the input checks let through
+        print(f"bearinglab: error: {_TOO_BIG[type(exc)]}", file=sys.stderr)
+        return 2
     return rv if isinstance(rv, int) else 0
+
+
+# the last line of defence of the size limits (bearinglab._bounds): one line, never a traceback
+_TOO_BIG = {
+    MemoryError: "out of memory: the run is too big for this machine; a bigger study runs through "
+                 "`bearinglab sweep` on dask, in chunks",
+    OverflowError: "a number of the input is too large to compute with (overflow); check the values and "
+                   "units given",
+    RecursionError: "the input is nested too deeply to read",
+}
 
 
 class JsonRun(NamedTuple):

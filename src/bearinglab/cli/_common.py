@@ -6,7 +6,8 @@ Execution        ExecutorOpt, WorkersOpt, ChunkSizeOpt; execution (one parallel.
 Output           console, emit_json (one JSON document on stdout), table (a rich table), emit_csv,
                  print_warnings, plain_zero (no '-0' in printed numbers)
 Inputs echoed    inputs_echo (the bearing as used, the overrides, the quantities given)
-Input checks     choice, check_directory, check_output (directory and suffix of an output file),
+Input checks     choice, check_directory, check_output (directory and suffix of an output file, and
+                 check_not_input: not an input file of the command),
                  check_output_directory (its parent exists),
                  check_input (an input file exists), parse_speeds (one rule for every speed option),
                  parse_speed (one speed), speed_size (the d_m of the speed guard), parse_length (a
@@ -91,7 +92,9 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
         base = BallBearing(designation="inline")
     changes = {}
     if balls is not None:
-        changes["n_balls"] = balls
+        from .._bounds import MAX_BALLS, check_count
+
+        changes["n_balls"] = check_count("balls", balls, MAX_BALLS)
     for key, text in (("ball_diameter", ball_diameter), ("pitch_diameter", pitch_diameter)):
         if text is not None:
             changes[key] = parse_length(text, key.replace("_", "-"))
@@ -399,17 +402,48 @@ def check_directory(path: Path, what: str) -> None:
 FIGURE_SUFFIXES = (".png", ".pdf", ".svg", ".eps", ".ps", ".jpg", ".jpeg", ".tif", ".tiff")
 
 
-def check_output(path, what, suffixes=None):
+def check_output(path, what, suffixes=None, *, inputs=()):
     """An output file, checked before anything is computed: its directory exists, it is not a
-    directory itself, and its suffix is one of ``suffixes`` (if given)."""
+    directory itself, its suffix is one of ``suffixes`` (if given), and it is none of the command's
+    ``inputs`` (:func:`check_not_input`)."""
     path = Path(path)
     check_directory(path, what)
     if path.is_dir():
         raise InputError(f"{what}: {str(path)!r} is a directory; give a file name")
+    if path.exists() and not path.is_file():  # /dev/null: the atomic rename would replace the device
+        raise InputError(f"{what}: {str(path)!r} is not a regular file (a device, a pipe or a socket); "
+                         f"give a file name")
     if suffixes is not None and path.suffix.lower() not in suffixes:
-        raise InputError(f"{what}: {str(path)!r} must end in one of {', '.join(suffixes)}, "
-                         f"got {path.suffix or 'no suffix'!r}")
+        ends = suffixes[0] if len(suffixes) == 1 else f"one of {', '.join(suffixes)}"
+        raise InputError(f"{what}: {str(path)!r} must end in {ends}, got {path.suffix or 'no suffix'!r}")
+    check_not_input(path, what, inputs)
     return path
+
+
+def check_not_input(path, what, inputs=()):
+    """An output must not be an input file of the same command: writing it would replace the input.
+
+    ``inputs`` are the command's input paths (None skipped); the user catalog of ``$BEARINGLAB_CATALOG``
+    is always one. The same file under another name (a link, ``./a/../a``) counts as the same.
+    """
+    import os
+
+    path = Path(path)
+    env = os.environ.get("BEARINGLAB_CATALOG")
+    for source in [*inputs, env or None]:
+        if source is None or str(source) == "":
+            continue
+        source = Path(source)
+        try:
+            same = os.path.samefile(path, source)
+        except (OSError, ValueError):  # one of them does not exist (yet): compare the resolved names
+            try:
+                same = path.resolve() == source.resolve()
+            except (OSError, RuntimeError):  # a symlink loop: not the input
+                same = False
+        if same:
+            raise InputError(f"{what}: {str(path)!r} is an input file of this command ({source}); "
+                             f"write the output to another file")
 
 
 def check_output_directory(path, what):
@@ -423,13 +457,23 @@ def check_output_directory(path, what):
 
 
 def check_input(path, what):
-    """An input file, checked before anything is read: it exists and is a file (the message names the
-    option, ``what``)."""
+    """An input file, checked before anything is read: it exists, is a regular file (not a device such
+    as /dev/zero, nor a pipe) and is at most :data:`bearinglab._bounds.MAX_INPUT_BYTES` long (the message
+    names the option, ``what``)."""
+    from .._bounds import MAX_INPUT_BYTES
+
     path = Path(path)
     if not path.exists():
         raise InputError(f"{what}: {path}: no such file")
     if path.is_dir():
         raise InputError(f"{what}: {str(path)!r} is a directory; give a file name")
+    if not path.is_file():
+        raise InputError(f"{what}: {str(path)!r} is not a regular file (a device, a pipe or a socket); "
+                         f"give a file")
+    size = path.stat().st_size
+    if size > MAX_INPUT_BYTES:
+        raise InputError(f"{what}: {str(path)!r} has {size} bytes, more than the limit of {MAX_INPUT_BYTES} "
+                         f"bytes for an input file")
     return path
 
 
@@ -473,10 +517,10 @@ def parse_speeds(text, name="speed", *, pitch_diameter=None, zero=True, what="th
     >= 0 (> 0 with ``zero=False``, where a zero speed has no meaning, e.g. a life in hours), and below
     the d_m n that no ball bearing of the size runs (:func:`bearinglab.limits.check_speed`) when the
     pitch diameter is given. The message gives the offending value in rpm."""
-    from .. import limits
+    from .. import _bounds, limits
     from ..units import RPM, parse_values
 
-    w = parse_values(text, "speed", name)
+    w = parse_values(text, "speed", name, limit=_bounds.MAX_CASES)
     bad = ~(w >= 0) if zero else ~(w > 0)
     if bad.any():
         raise InputError(f"{name} must be {'>=' if zero else '>'} 0 [rpm] ({what}), got "

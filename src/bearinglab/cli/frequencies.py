@@ -28,6 +28,7 @@ from ._common import (
     OuterConformity,
     OuterRadius,
     PitchDiameter,
+    check_output,
     choice,
     console,
     emit_csv,
@@ -141,6 +142,8 @@ def frequencies(
         ball_material,
     )
     w_in, w_out, fa, band_fraction = _read(b, speed, outer_speed, axial_load, hertz, harmonics, sidebands, band)
+    if csv_file is not None:  # before anything is computed
+        check_output(csv_file, "csv", (".csv",), inputs=(bearing_file, catalog))
     choice("elastic-constant", elastic_constant, ("materials", "paper"))
     out, angle = _frequencies(b, w_in, w_out, fa, hertz, elastic_constant)
     mask_rows = []
@@ -168,6 +171,7 @@ def frequencies(
 def _read(b, speed, outer_speed, axial_load, hertz, harmonics, sidebands, band):
     """The options in SI, checked: ring speeds, axial load (or None), band as a fraction."""
     from .. import limits
+    from .._bounds import MAX_HARMONICS, MAX_SIDEBANDS, check_count
     from ..units import parse_quantity
     choice("hertz", hertz, ("exact", "table"))
     # one convention in every command: --speed is the inner ring's, >= 0, within the d_m n guard
@@ -182,10 +186,8 @@ def _read(b, speed, outer_speed, axial_load, hertz, harmonics, sidebands, band):
             f"{w_in / _HZ * 60:g} rpm"
         )
     band_fraction = _band(band)
-    if harmonics < 1:
-        raise InputError(f"harmonics must be an integer >= 1 [-], got {harmonics}")
-    if sidebands < 0:
-        raise InputError(f"sidebands must be an integer >= 0 [-], got {sidebands}")
+    check_count("harmonics", harmonics, MAX_HARMONICS)
+    check_count("sidebands", sidebands, MAX_SIDEBANDS, minimum=0)
     fa = None
     if axial_load is not None:
         fa = parse_quantity(axial_load, "force", "axial-load")

@@ -24,6 +24,7 @@ from ._common import (
     CatalogFile,
     ContactAngle,
     JsonFlag,
+    check_not_input,
     check_output_directory,
     console,
     emit_json,
@@ -110,8 +111,9 @@ def _friction_bearing(
 def _case_values(text, kind, name):
     import numpy as np
 
+    from .._bounds import MAX_CASES
     from ..units import parse_values
-    values = parse_values(text, kind, name)
+    values = parse_values(text, kind, name, limit=MAX_CASES)
     if np.any(~(values >= 0)):  # a force: its magnitude (P0 takes |F_r| and |F_a|)
         raise InputError(f"{name} must be >= 0 [N], got {float(values[~(values >= 0)][0]):g} N")
     return values
@@ -687,6 +689,7 @@ def template(
     if file is None or str(file) == "-":
         sys.stdout.write(measurement.template(bearing=bearing))
         return
+    check_not_input(file, "file")  # not even with --force: the user catalog is an input
     path = measurement.write_template(file, bearing=bearing, overwrite=force)
     console.print(
         f"Wrote {path}. Fill in the bearing, the calibration tables and the rows, then run:\n"

@@ -96,9 +96,9 @@ def high_speed(
     if plot is not None and (loads.size < 2 or speeds.size < 1):
         raise InputError("plot: needs a sweep over at least two thrusts (e.g. --axial-load 2.5kN:45kN:2.5kN)")
     if csv_file is not None:
-        check_output(csv_file, "csv")
+        check_output(csv_file, "csv", (".csv",), inputs=(bearing_file, catalog))
     if plot is not None:
-        check_output(plot, "plot", FIGURE_SUFFIXES)
+        check_output(plot, "plot", FIGURE_SUFFIXES, inputs=(bearing_file, catalog))
     single = loads.size == 1 and speeds.size == 1
     with execution("solving", executor, workers, chunk_size, progress=not single) as ex:
         state, notes = _solve(b, loads, speeds, options, ex)
@@ -156,11 +156,14 @@ def _grid(axial_load, speed):
     """The thrusts and speeds given (SI), checked."""
     import numpy as np
 
+    from .._bounds import MAX_CASES, check_cases
     from ..units import parse_values
-    loads = parse_values(axial_load, "force", "axial-load")
+    loads = parse_values(axial_load, "force", "axial-load", limit=MAX_CASES)
     if np.any(~(loads > 0)):
         raise InputError(f"axial-load must be > 0 [N], got {float(loads[~(loads > 0)][0]):g} N")
-    return loads, parse_speeds(speed)
+    speeds = parse_speeds(speed)
+    check_cases(loads.size * speeds.size, f"{loads.size} thrusts x {speeds.size} speeds")  # before the map
+    return loads, speeds
 
 
 def _solve(bearing, loads, speeds, options, ex):

@@ -109,10 +109,14 @@ def _duty_cycle(path, bearing):
     speed option (:func:`parse_speed`: > 0, one value, within the d_m n guard of ``bearing``)."""
     import numpy as np
 
+    from .._bounds import read_input_bytes
+
     try:
-        doc = tomllib.loads(Path(path).read_text(encoding="utf-8"))
+        doc = tomllib.loads(read_input_bytes(path).decode("utf-8"))  # a regular file of bounded size
     except tomllib.TOMLDecodeError as exc:
         raise InputError(f"duty-cycle: {path}: {exc}") from None
+    except UnicodeDecodeError:
+        raise InputError(f"duty-cycle: {path}: not a UTF-8 text file") from None
     steps = doc.get("step")
     if not isinstance(steps, list) or not steps or not all(isinstance(s, dict) for s in steps):
         raise InputError(f"duty-cycle: {path}: needs [[step]] tables with loads, speed and time")

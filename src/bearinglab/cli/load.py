@@ -239,9 +239,9 @@ def load_distribution(
     phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
     choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
     if plot is not None:
-        check_output(plot, "plot", FIGURE_SUFFIXES)
+        check_output(plot, "plot", FIGURE_SUFFIXES, inputs=(bearing_file, catalog))
     if ross is not None:
-        check_output(ross, "ross", (".json",))
+        check_output(ross, "ross", (".json",), inputs=(bearing_file, catalog))
     cases = np.broadcast_to(loads, w.shape + (5,))
     r, notes = _solve(combined.combined_analysis, b, cases, w, first_ball_angle=phi0, stiffness_at=stiffness_at,
                       prescribed_displacement=held)
@@ -372,7 +372,7 @@ def bearing_set(
     phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
     choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
     if plot is not None:
-        check_output(plot, "plot", FIGURE_SUFFIXES)
+        check_output(plot, "plot", FIGURE_SUFFIXES, inputs=(catalog,))
     st, notes = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], loads, w, arrangement_kind=arrangement,
                        spacing=s, preload=fp, preload_displacement=e, first_ball_angle=phi0, stiffness_at=stiffness_at)
     # issue 23: fits, temperatures and speed change each bearing's clearance, and so the set's interference

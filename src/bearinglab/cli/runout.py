@@ -15,6 +15,8 @@ from typing import Annotated
 
 import typer
 
+from .. import _bounds
+from .._bounds import check_count
 from ..errors import CatalogError, ConvergenceError, InputError
 from ._common import (
     BearingName,
@@ -22,6 +24,7 @@ from ._common import (
     ExecutorOpt,
     JsonFlag,
     WorkersOpt,
+    check_not_input,
     check_output,
     check_output_directory,
     console,
@@ -387,11 +390,13 @@ def runout_command(
         )
     _check_cage_ratio(cage_ratio)
     if csv_out is not None:
-        check_output(csv_out, "csv")
+        check_output(csv_out, "csv", (".csv",), inputs=(errors, geometry, catalog))
     if plot is not None:
         check_output_directory(plot, "plot")
     g, theta1 = _geometry(geometry, bearing, catalog, first_ball_angle)
     g, e = runout.files.load_error_file(errors, g)
+    if csv_out is not None:  # nor may it replace a measured profile the error file names
+        check_not_input(csv_out, "csv", runout.files.profile_files(errors))
     if theta1 is not None:
         g = g._replace(first_ball_angle=theta1)
     sequence = revolutions is not None or steps_per_rev is not None
@@ -408,8 +413,7 @@ def runout_command(
         return
     revs = 3 if revolutions is None else revolutions
     steps = 360 if steps_per_rev is None else steps_per_rev
-    if revs < 1:
-        raise InputError(f"revolutions must be an integer >= 1 [-], got {revs}")
+    _check_positions(revs, steps)
     if steps < MIN_STEPS_PER_REV:
         raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-] (the once-per-revolution "
                          f"line needs at least four positions per revolution), got {steps}")
@@ -587,15 +591,22 @@ def monte_carlo_command(
         raise InputError("geometry: give --geometry FILE or --bearing NAME")
     if samples < 2:
         raise InputError(f"samples must be >= 2 [-], got {samples}")
+    _check_positions(revolutions, steps_per_rev, _bounds.MAX_SAMPLE_POSITIONS)
+    check_count("samples", samples, _bounds.MAX_SAMPLES, minimum=2)
+    check_count("max-order", max_order, _bounds.MAX_ORDER, minimum=0)
     _check_cage_ratio(cage_ratio)
     if samples_csv is not None:
-        check_output(samples_csv, "samples-csv")
-    for option, directory in (("plot", plot), ("worst-dir", worst_dir)):
-        if directory is not None:
-            check_output_directory(directory, option)
+        check_output(samples_csv, "samples-csv", (".csv",), inputs=(geometry, catalog))
+    if plot is not None:
+        check_output_directory(plot, "plot")
     if steps_per_rev < MIN_STEPS_PER_REV:
         raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-], got {steps_per_rev}")
     _check_write_worst(write_worst, worst_by, worst_dir)
+    if worst_dir is not None and not worst_dir.is_dir():  # never created: a typo must not make a tree
+        if worst_dir.exists():
+            raise InputError(f"worst-dir: {str(worst_dir)!r} is a file; give a directory")
+        raise InputError(f"worst-dir: directory {str(worst_dir)!r} does not exist (it is never created; "
+                         f"create it first)")
     grade = runout.ball_grade(ball_grade)
     rings = runout.ring_class(ring_class)
     # rich for serial, dask's progress bar on a cluster; none off a terminal
@@ -619,6 +630,9 @@ def monte_carlo_command(
         info["samples_csv"] = str(samples_csv)
     if write_worst is not None:
         worst = runout.worst_samples(r, worst_by, write_worst)
+        for index in worst:  # the names write_sample_error_files gives: none may replace an input
+            check_not_input((worst_dir or Path(".")) / f"sample_{int(index)}.toml",
+                            "worst-dir", (geometry, catalog))
         files = runout.write_sample_error_files(worst_dir or Path("."), r, g, worst)
         info["worst_error_files"] = [str(p) for p in files]
     if plot is not None:
@@ -710,6 +724,15 @@ def _print_monte_carlo(info, grade, rings, samples, seed):
     for key in ("samples_csv", "worst_error_files", "figures"):
         if key in info:
             console.print(f"{key}: {info[key] if key == 'samples_csv' else ', '.join(info[key])}")
+
+
+def _check_positions(revolutions, steps_per_rev, limit=_bounds.MAX_POSITIONS):
+    """The size of a rotation sequence, checked before it is allocated (bearinglab._bounds)."""
+    check_count("revolutions", revolutions, _bounds.MAX_REVOLUTIONS)
+    check_count("steps-per-rev", steps_per_rev, _bounds.MAX_STEPS_PER_REV)
+    if revolutions * steps_per_rev > limit:
+        raise InputError(f"revolutions x steps-per-rev must be <= {limit} positions (bearinglab's size "
+                         f"limit), got {revolutions} x {steps_per_rev}")
 
 
 def _check_write_worst(count, metric, directory):

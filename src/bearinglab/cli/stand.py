@@ -63,6 +63,7 @@ def axial_angle(
     import numpy as np
 
     from .. import limits, stand, tables
+    from .._bounds import MAX_CASES, MAX_ROWS, check_count
     from ..units import KGF, format_dms, parse_values
     b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
                         outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
@@ -71,9 +72,9 @@ def axial_angle(
         raise InputError(f"hertz must be one of ['exact', 'table'], got {hertz!r}")
     if elastic_constant not in ("materials", "paper"):
         raise InputError(f"elastic-constant must be one of ['materials', 'paper'], got {elastic_constant!r}")
-    if rows is not None and rows < 1:
-        raise InputError(f"rows must be an integer >= 1 [-], got {rows}")
-    loads = parse_values(axial_load, "force", "axial-load")
+    if rows is not None:
+        check_count("rows", rows, MAX_ROWS)
+    loads = parse_values(axial_load, "force", "axial-load", limit=MAX_CASES)
     if np.any(~(loads > 0)):
         bad = float(loads[~(loads > 0)][0])
         raise InputError(f"axial-load must be > 0 [N], got {bad:g} N ({bad / KGF:g} kgf)")

@@ -32,6 +32,7 @@ def sweep(
     out: Annotated[Path | None, typer.Option("--out", "-o", help="Result table, .csv or .parquet (overrides the file).")] = None,
     executor: ExecutorOpt = None, workers: WorkersOpt = None, chunk_size: ChunkSizeOpt = None,
     memory_limit: Annotated[str | None, typer.Option("--memory-limit", help="Per local worker, e.g. '4GiB'.", rich_help_panel="Execution")] = None,
+    allow_remote_executor: Annotated[bool, typer.Option("--allow-remote-executor", help="Run on the scheduler the file names when it is on another machine.", rich_help_panel="Execution")] = False,
     json_out: JsonFlag = False,
 ):
     """Evaluate a model over the Cartesian product of parameter values; write the cases as CSV or Parquet."""
@@ -42,9 +43,12 @@ def sweep(
     from .. import tables
     spec = _sweep.load_sweep(file)
     add_notes(_catalog.provenance_notes(spec.bearing))  # an estimated catalog bearing says so
+    if executor is None:  # the file's scheduler: confirmed on the command line when it is another machine
+        _sweep.check_file_executor(spec, allow_remote_executor=allow_remote_executor,
+                                   option="--allow-remote-executor")
     target = out or spec.output
     if target is not None:  # checked before the sweep runs: the directory exists, the suffix is known
-        check_output(target, "out" if out is not None else "output", (".csv", ".parquet"))
+        check_output(target, "out" if out is not None else "output", (".csv", ".parquet"), inputs=(file,))
     with execution(f"sweep {spec.model.name}", executor or spec.executor, workers, chunk_size,
                    memory_limit=memory_limit) as ex:
         cols = _sweep.run_sweep(spec, execution=ex)

@@ -18,6 +18,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .._bounds import read_input_bytes
 from ..errors import InputError
 from ..units import parse_quantity
 
@@ -89,7 +90,7 @@ def read_rows(table, calibration, ctx, base_dir):
         rel = Path(str(table["file"]))
         path = rel if rel.is_absolute() else Path(base_dir or ".") / rel
         try:
-            text = path.read_text(encoding="utf-8")
+            text = read_input_bytes(path).decode("utf-8")  # a regular file of bounded size
         except FileNotFoundError:
             raise ctx.error(("measurements", "file"), f"no such file: {path}") from None
         except (OSError, UnicodeDecodeError) as exc:

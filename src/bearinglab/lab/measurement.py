@@ -51,6 +51,7 @@ from typing import NamedTuple
 
 from .. import catalog as _catalog
 from .. import friction
+from .._bounds import read_input_bytes
 from ..bearing import BallBearing
 from ..errors import CatalogError, InputError
 from ..units import parse_quantity
@@ -313,7 +314,7 @@ def read_session(path):
     """
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8")
+        text = read_input_bytes(path).decode("utf-8")  # a regular file of bounded size
     except FileNotFoundError:
         raise InputError(f"{path}: no such file") from None
     except UnicodeDecodeError as exc:

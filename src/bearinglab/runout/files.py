@@ -20,12 +20,14 @@ modified, and a file written is written whole or not at all.
 
 from __future__ import annotations
 
+import io
 import json
 import math
 from pathlib import Path
 
 import numpy as np
 
+from .. import _bounds
 from .._io import write_text
 from ..catalog import read_toml
 from ..errors import CatalogError, InputError
@@ -50,6 +52,7 @@ from .tolerances import MonteCarloResult, monte_carlo_errors
 __all__ = [
     "load_error_file",
     "load_geometry_file",
+    "profile_files",
     "write_error_file",
     "write_sample_error_files",
 ]
@@ -162,6 +165,41 @@ def load_error_file(path, geometry=None):
     return geometry, errors
 
 
+def profile_files(path):
+    """The measured-profile files an error file names (its ``profile`` keys), resolved next to it.
+
+    They are inputs of a run as much as the error file: an output must not replace them.
+
+    Parameters
+    ----------
+    path : str or Path
+        The error file (read, never modified).
+
+    Returns
+    -------
+    list of Path
+        The profile files named, in the order of the file; empty when it names none or cannot be read
+        (:func:`load_error_file` reports what is wrong with it).
+    """
+    try:
+        doc = read_toml(path)
+    except InputError:
+        return []
+    found = []
+
+    def walk(table):
+        for key, value in table.items():
+            if isinstance(value, dict):
+                walk(value)
+            elif key == "profile" and isinstance(value, str):
+                found.append(Path(path).parent / value)
+
+    errors = doc.get("errors")
+    if isinstance(errors, dict):
+        walk(errors)
+    return found
+
+
 def load_geometry_file(path):
     """The [geometry] table of a file (an error file or a geometry-only file).
 
@@ -270,6 +308,8 @@ def _balls_and_grooves(table, ctx):
     n = table["balls"]
     if isinstance(n, bool) or not isinstance(n, int):
         ctx.fail(t, "balls", f"must be a whole number, got {n!r}")
+    if n > _bounds.MAX_BALLS:  # before any per-ball array is allocated
+        ctx.fail(t, "balls", f"must be <= {_bounds.MAX_BALLS} (bearinglab's size limit), got {n}")
     if "ball_diameter" in table and "ball_radius" in table:
         ctx.fail(t, "ball_radius", "give ball_diameter or ball_radius, not both")
     r30 = _length(table, "ball_radius", ctx)
@@ -310,6 +350,8 @@ def _read_series(table, name, ctx):
         k = table["max_order"]
         if isinstance(k, bool) or not isinstance(k, int) or k < 0:
             ctx.fail(name, "max_order", f"must be a whole number >= 0, got {k!r}")
+        if k > _bounds.MAX_ORDER:
+            ctx.fail(name, "max_order", f"must be <= {_bounds.MAX_ORDER} (bearinglab's size limit), got {k}")
         ang_scale = ctx.unit(name, table, "angle_unit", _ANGLE_UNITS, "deg")
         if "profile" in table:
             if {"angle", "deviation"} & set(table):
@@ -319,10 +361,17 @@ def _read_series(table, name, ctx):
                     "give a profile file or inline angle/deviation arrays, not both",
                 )
             file = ctx.path.parent / str(table["profile"])
-            try:
-                data = np.loadtxt(file, delimiter=",", comments="#", ndmin=2)
+            try:  # a regular file of bounded size (not /dev/zero), then parsed
+                text = _bounds.read_input_bytes(file).decode("utf-8-sig")
+                data = np.loadtxt(io.StringIO(text), delimiter=",", comments="#", ndmin=2)
             except FileNotFoundError:
                 ctx.fail(name, "profile", f"no such file: {file}")
+            except (IsADirectoryError, PermissionError) as exc:
+                ctx.fail(name, "profile", f"{file}: {exc.strerror}")
+            except UnicodeDecodeError:
+                ctx.fail(name, "profile", f"{file}: not a UTF-8 text file")
+            except InputError as exc:
+                ctx.fail(name, "profile", str(exc))
             except ValueError as exc:
                 ctx.fail(
                     name,
@@ -358,6 +407,7 @@ def _read_series(table, name, ctx):
         raw = table.get(key, {})
         if not isinstance(raw, dict):
             ctx.fail(name, key, "expected a table of order = value, e.g. { 1 = 0.5, 2 = 0.12 }")
+        _check_orders(name, key, raw, ctx)
         parts[key] = {k: ctx.number(name, f"{key}.{k}", v, scale) for k, v in raw.items()}
     if 0 in parts["sin"] or "0" in parts["sin"]:
         ctx.fail(name, "sin.0", "sin has no order 0")
@@ -365,6 +415,18 @@ def _read_series(table, name, ctx):
         return fourier_series(parts["cos"], parts["sin"])
     except InputError as exc:
         ctx.fail(name, None, str(exc))
+
+
+def _check_orders(name, key, raw, ctx):
+    """The Fourier orders of a series table, bounded before its coefficient arrays are allocated."""
+    for k in raw:
+        try:
+            order = int(k)
+        except (TypeError, ValueError):  # not a whole number: fourier_series says so
+            continue
+        if order > _bounds.MAX_ORDER:
+            ctx.fail(name, f"{key}.{k}", f"Fourier order must be <= {_bounds.MAX_ORDER} (bearinglab's size "
+                     f"limit), got {order}")
 
 
 def _per_ball(table, key, n, scale, ctx):
@@ -393,6 +455,7 @@ def _read_tilt(value, name, ctx):
                     key,
                     "expected a table of order = value (orders of the rotation angle psi)",
                 )
+            _check_orders(name, key, raw, ctx)
             parts[key] = {
                 k: ctx.number(name, f"{key}.{k}", v, scale, "angle") for k, v in raw.items()
             }
