@@ -14,6 +14,7 @@ parallel    chunked batch execution, serial or on dask
 sweep       parameter sweeps of a model over a Cartesian grid (sweep files)
 kinematics  cage and ball speeds, characteristic (defect) frequencies, spectral masks
 runout      spindle-bearing manufacturing errors -> initial inner-ring displacement, runout (spec 003)
+film        lubricant film: Hamrock-Dowson EHL film per contact and per ball, Lambda, regime
 friction    friction torque: P0 max rule, one-term, two-term, Palmgren (spec 001 section 3)
 lab         the friction-rig lab: rig loads, calibration, measurement files, the three fits (spec 001)
 report      self-contained HTML reports of the friction lab, with PNG/SVG plots, CSV and JSON
@@ -37,6 +38,7 @@ __all__ = [
     "bearing",
     "catalog",
     "errors",
+    "film",
     "friction",
     "geometry",
     "hertz",
