@@ -55,3 +55,8 @@ RUNOUT_STRICT_WEIGHT = 1e-9  # a dual weight above this makes a triangle strict 
 # exact-geometry check of spec 003 example 4: Newton on the ball-centre position
 RUNOUT_EXACT_XTOL = 1e-14  # m
 RUNOUT_EXACT_MAX_ITER = 50
+
+# ASTM D2270 inverted: bisection on log(nu100) for the nu100 of a viscosity index
+# (bearinglab.ratings.lubrication.viscosity_100_from_index)
+VISCOSITY_INDEX_RTOL = 1e-12  # relative width of the bracket on nu100
+VISCOSITY_INDEX_MAX_ITER = 100

@@ -94,8 +94,8 @@ def test_iso_vg_and_temperature():
     np.testing.assert_allclose(nu, [68e-6, 8.7e-6], rtol=1e-9)
     with pytest.raises(InputError, match="iso_vg must be one of"):
         ratings.iso_vg_viscosity(70)
-    with pytest.raises(InputError, match="viscosity_100"):
-        ratings.kinematic_viscosity(343.15, iso_vg=68)
+    with pytest.raises(InputError, match="viscosity_100 or viscosity_index, not both"):
+        ratings.kinematic_viscosity(343.15, iso_vg=68, viscosity_100=8.7e-6, viscosity_index=95.0)
     with pytest.raises(InputError, match=">= 2"):
         ratings.walther_constants((313.15, 373.15), (10e-6, 1e-6))
 
@@ -114,3 +114,82 @@ def test_a_iso_is_continuous_where_its_branches_meet(kappa, ratio):
     below = ratings.life_modification_factor(kappa * (1 - 1e-12), 1.0, ratio, 1.0)
     above = ratings.life_modification_factor(kappa, 1.0, ratio, 1.0)
     assert above == pytest.approx(below, rel=1e-3)
+
+
+# ---------------------------------------------------------------- ASTM D2270 (issue 20)
+# The worked examples of ASTM D2270-10(2016) (nu40, nu100 in mm^2/s -> VI as the standard reports it, a whole
+# number): procedure A (VI <= 100) and procedure B (VI > 100).
+D2270_EXAMPLES = [(73.30, 8.86, 92), (22.83, 5.05, 156), (53.47, 7.80, 111), (73.50, 8.86, 92)]
+
+
+@pytest.mark.parametrize("nu40, nu100, vi", D2270_EXAMPLES)
+def test_viscosity_index_reproduces_the_standards_examples(nu40, nu100, vi):
+    assert round(float(ratings.viscosity_index(nu40 * 1e-6, nu100 * 1e-6))) == vi
+
+
+@pytest.mark.parametrize("nu40, nu100, vi", D2270_EXAMPLES)
+def test_viscosity_100_from_index_inverts_the_standards_examples(nu40, nu100, vi):
+    # the published VI is rounded to a whole number: its nu100 lies within the nu100 of VI +- 0.5, and
+    # the printed nu100 (2 decimals) within 0.02 mm^2/s of the one solved at the whole VI
+    lo, hi = (ratings.viscosity_100_from_index(nu40 * 1e-6, vi + d) * 1e6 for d in (-0.5, 0.5))
+    assert lo <= nu100 <= hi + 0.005
+    assert ratings.viscosity_100_from_index(nu40 * 1e-6, vi) * 1e6 == pytest.approx(nu100, abs=0.02)
+
+
+def test_procedure_a_by_hand():
+    # VG68 at nu100 = 8.0 mm^2/s: table 1 row 8.0 gives L = 100.0, H = 59.60 (read from the table, not the
+    # code): VI = 100 (L - U)/(L - H) = 100 (100 - 68)/(100 - 59.6) = 79.2079...
+    assert ratings.viscosity_index(68e-6, 8.0e-6) == pytest.approx(100 * 32 / 40.4, rel=1e-12)
+
+
+def test_procedure_b_by_hand():
+    # VG32 at nu100 = 6.0: row 6.0 gives H = 38.19 > U = 32, so procedure B:
+    # N = (log H - log U)/log Y, VI = (10^N - 1)/0.00715 + 100
+    n = (np.log10(38.19) - np.log10(32.0)) / np.log10(6.0)
+    assert ratings.viscosity_index(32e-6, 6.0e-6) == pytest.approx((10**n - 1) / 0.00715 + 100, rel=1e-12)
+
+
+def test_above_70_mm2s_uses_the_equations():
+    # nu100 = 100 mm^2/s: L = 0.8353 Y^2 + 14.67 Y - 216, H = 0.1684 Y^2 + 11.85 Y - 97 (eqs. (3)-(4))
+    y, u = 100.0, 5000.0
+    lo, hi = 0.8353 * y**2 + 14.67 * y - 216, 0.1684 * y**2 + 11.85 * y - 97
+    assert u > hi
+    assert ratings.viscosity_index(u * 1e-6, y * 1e-6) == pytest.approx(100 * (lo - u) / (lo - hi), rel=1e-12)
+
+
+@given(nu40=st.floats(10e-6, 3000e-6), vi=st.floats(0.0, 250.0))
+def test_viscosity_100_from_index_round_trips(nu40, vi):
+    try:
+        nu100 = ratings.viscosity_100_from_index(nu40, vi)
+    except InputError:  # a VI this low needs nu100 < 2 mm^2/s, outside the standard
+        assert ratings.viscosity_index(nu40, 2e-6) > vi
+        return
+    assert 2e-6 <= nu100 < nu40
+    assert ratings.viscosity_index(nu40, nu100) == pytest.approx(vi, abs=1e-7)
+
+
+def test_viscosity_index_is_increasing_in_nu100():
+    y = np.linspace(2.0, 60.0, 2000) * 1e-6
+    assert np.all(np.diff(ratings.viscosity_index(70e-6, y[y < 69e-6])) > 0)
+
+
+def test_default_viscosity_index_and_grade():
+    # SKF's viscosity-temperature diagram is compiled for VI 95 (the default); VG68 at 40 degC is 68 mm^2/s
+    # and at 100 degC the nu100 of VI 95, whatever path is taken
+    assert ratings.DEFAULT_VISCOSITY_INDEX == 95.0
+    nu100 = ratings.viscosity_100_from_index(68e-6, 95.0)
+    nu = ratings.kinematic_viscosity(np.array([313.15, 373.15]), iso_vg=68)
+    np.testing.assert_allclose(nu, [68e-6, nu100], rtol=1e-9)
+    np.testing.assert_allclose(ratings.kinematic_viscosity(343.15, iso_vg=68, viscosity_index=95.0),
+                               ratings.kinematic_viscosity(343.15, viscosity_40=68e-6, viscosity_100=nu100))
+
+
+def test_viscosity_index_refusals():
+    with pytest.raises(InputError, match="too low"):
+        ratings.viscosity_100_from_index(10e-6, -200.0)  # nu100 = 2 gives VI -125
+    with pytest.raises(InputError, match=">= 2"):
+        ratings.viscosity_index(10e-6, 1.5e-6)
+    with pytest.raises(InputError, match="below viscosity_40"):
+        ratings.viscosity_index(10e-6, 12e-6)
+    with pytest.raises(InputError, match="finite"):
+        ratings.viscosity_100_from_index(68e-6, float("nan"))

@@ -4,7 +4,7 @@ Modules
 -------
 static         C0 and f0 (ISO 76), Cu (ISO 281 annex B), P0 and the static safety factor s0
 dynamic        C and f_c, X / Y / e and P, L10 and the reliability factor a1 (ISO 281)
-lubrication    oil viscosity (ISO VG, ASTM D341), nu1 and kappa, e_C classes, a_ISO (ISO 281)
+lubrication    oil viscosity (ISO VG, ASTM D2270 viscosity index, ASTM D341), nu1 and kappa, e_C classes, a_ISO (ISO 281)
 reference      ISO/TS 16281 reference rating life from the ball loads
 life           the analysis of a BallBearing (every life quantity at once) and duty cycles
 
@@ -35,12 +35,15 @@ from .life import (
 )
 from .lubrication import (
     CONTAMINATION_CLASSES,
+    DEFAULT_VISCOSITY_INDEX,
     ISO_VG_GRADES,
     contamination_factor,
     iso_vg_viscosity,
     kinematic_viscosity,
     life_modification_factor,
     rated_viscosity,
+    viscosity_100_from_index,
+    viscosity_index,
     viscosity_ratio,
     walther_constants,
     walther_viscosity,
@@ -69,6 +72,7 @@ from .static import (
 
 __all__ = [
     "CONTAMINATION_CLASSES",
+    "DEFAULT_VISCOSITY_INDEX",
     "FATIGUE_CONTACT_STRESS",
     "ISO_VG_GRADES",
     "MATERIAL_FACTOR",
@@ -113,6 +117,8 @@ __all__ = [
     "static_load_factors",
     "static_load_rating",
     "static_safety_factor",
+    "viscosity_100_from_index",
+    "viscosity_index",
     "viscosity_ratio",
     "walther_constants",
     "walther_viscosity",

@@ -5,7 +5,11 @@ Viscosity
 iso_vg_viscosity           kinematic viscosity at 40 degC of an ISO VG grade (ISO 3448 mid-point)
 walther_constants          A, B of ASTM D341 (Walther) through two reference viscosities
 walther_viscosity          nu(T) from A, B
-kinematic_viscosity        nu at a temperature from a VG grade or nu40, and nu100 (ASTM D341)
+kinematic_viscosity        nu at a temperature from a VG grade or nu40, and nu100 or a viscosity index
+                           (ASTM D2270, ASTM D341)
+viscosity_index            VI of an oil from nu40 and nu100 (ASTM D2270 procedures A and B)
+viscosity_100_from_index   nu100 of an oil from nu40 and its VI (ASTM D2270 solved for nu100)
+DEFAULT_VISCOSITY_INDEX    95, the VI of SKF's viscosity-temperature diagram of mineral oils
 
 Lubrication condition
 ---------------------
@@ -24,26 +28,40 @@ References
 .. [2] ASTM D341-09, *Standard practice for viscosity-temperature charts for liquid petroleum
    products*, eqs. (1)-(2): log log (nu + 0.7) = A - B log T.
 .. [3] ISO 3448:1992, *Industrial liquid lubricants -- ISO viscosity classification* (VG mid-points).
+.. [4] ASTM D2270-10 (reapproved 2016), *Standard practice for calculating viscosity index from kinematic
+   viscosity at 40 and 100 degC*, doi:10.1520/D2270-10R16: table 1 (L, H for nu100 <= 70 mm^2/s; in
+   ``data/viscosity_index.toml`` with its source), eqs. (3)-(4) (L, H above 70 mm^2/s), procedure A
+   (VI <= 100) and procedure B (VI > 100).
+.. [5] SKF, *Rolling bearings*, PUB BU/P1 17000 EN, 2018, "Selecting lubricating oils": the
+   viscosity-temperature diagram of the ISO VG grades "is compiled for a viscosity index of 95", and
+   oils with VI >= 95 are recommended for rolling bearings (also on skf.com, "Selecting lubricating oils").
 """
 
 from __future__ import annotations
 
+import tomllib
 import warnings
+from functools import cache
+from importlib import resources
 
 import numpy as np
 
+from .. import _solve
 from .._validate import check_nonnegative, check_positive
-from ..errors import InputError
+from ..errors import ConvergenceError, InputError
 from .static import RatingWarning
 
 __all__ = [
     "CONTAMINATION_CLASSES",
+    "DEFAULT_VISCOSITY_INDEX",
     "ISO_VG_GRADES",
     "contamination_factor",
     "iso_vg_viscosity",
     "kinematic_viscosity",
     "life_modification_factor",
     "rated_viscosity",
+    "viscosity_100_from_index",
+    "viscosity_index",
     "viscosity_ratio",
     "walther_constants",
     "walther_viscosity",
@@ -52,6 +70,11 @@ __all__ = [
 _CST, _RPM, _MM = 1e-6, 2.0 * np.pi / 60.0, 1e-3  # m^2/s per mm^2/s, rad/s per rpm, m per mm
 _T40, _T100 = 313.15, 373.15  # K
 _WALTHER_MIN_CST = 2.0  # ASTM D341: the plain Z = nu + 0.7 holds down to 2 mm^2/s
+
+#: The viscosity index assumed for an oil given by its grade alone: 95, the VI for which SKF's
+#: viscosity-temperature diagram of the ISO VG grades of mineral oils is compiled ([5]; SKF recommends
+#: VI >= 95 for rolling bearings). A paraffinic mineral oil; give the oil's own VI or nu100 where known.
+DEFAULT_VISCOSITY_INDEX = 95.0
 
 # ISO 3448 viscosity grades (mid-point kinematic viscosity at 40 degC in mm^2/s = the grade number)
 ISO_VG_GRADES = (2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500, 2200, 3200)
@@ -157,7 +180,142 @@ def walther_viscosity(temperature, a, b):
     return ((10.0 ** (10.0 ** (a - b * np.log10(t))) - 0.7) * _CST)[()]
 
 
-def kinematic_viscosity(temperature, *, iso_vg=None, viscosity_40=None, viscosity_100=None):
+@cache
+def _d2270_table():
+    """nu100, L and H of ASTM D2270 table 1 [mm^2/s] (``data/viscosity_index.toml``)."""
+    with (resources.files("bearinglab") / "data" / "viscosity_index.toml").open("rb") as f:
+        t = tomllib.load(f)["astm_d2270_table1"]
+    return tuple(np.array(t[k], dtype=float) for k in ("nu100_mm2_s", "L_mm2_s", "H_mm2_s"))
+
+
+def _d2270_l_h(nu100):
+    """L and H of ASTM D2270 at nu100 [mm^2/s]: table 1 interpolated linearly up to 70 mm^2/s (as the
+    standard says), eqs. (3)-(4) above."""
+    y, l_tab, h_tab = _d2270_table()
+    big = nu100 > y[-1]
+    l_eq = 0.8353 * nu100**2 + 14.67 * nu100 - 216.0  # eq. (3)
+    h_eq = 0.1684 * nu100**2 + 11.85 * nu100 - 97.0  # eq. (4)
+    return (np.where(big, l_eq, np.interp(nu100, y, l_tab)), np.where(big, h_eq, np.interp(nu100, y, h_tab)))
+
+
+def _d2270_index(u, y):
+    """VI of ASTM D2270 from nu40 = u and nu100 = y [mm^2/s] (y >= 2), unrounded: procedure A where
+    u >= H (VI <= 100), procedure B below."""
+    lo, hi = _d2270_l_h(y)
+    a = (lo - u) / (lo - hi) * 100.0  # procedure A, eq. (1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        n = (np.log10(hi) - np.log10(u)) / np.log10(y)  # procedure B, eq. (5)
+        b = (10.0**n - 1.0) / 0.00715 + 100.0  # eq. (6)
+    return np.where(u >= hi, a, b)
+
+
+def viscosity_index(viscosity_40, viscosity_100):
+    r"""Viscosity index of an oil from its kinematic viscosities at 40 and 100 degC (ASTM D2270).
+
+    Parameters
+    ----------
+    viscosity_40 : array_like
+        nu40, > 0. [m^2/s]
+    viscosity_100 : array_like
+        nu100, >= 2 mm^2/s (the lower end of the standard's table) and < nu40. [m^2/s]
+
+    Returns
+    -------
+    ndarray or float
+        VI, unrounded (the standard rounds the reported value to a whole number). [-]
+
+    Notes
+    -----
+    With L and H the nu40 of the reference oils of VI 0 and 100 having the oil's nu100 (table 1 of [4]_,
+    linear interpolation; eqs. (3)-(4) above 70 mm^2/s), U = nu40 and Y = nu100 in mm^2/s:
+    :math:`VI = 100 (L - U)/(L - H)` where U >= H (procedure A, VI <= 100), else
+    :math:`VI = (10^N - 1)/0.00715 + 100` with :math:`N = (\log H - \log U)/\log Y` (procedure B).
+
+    References
+    ----------
+    .. [4] ASTM D2270-10(2016), doi:10.1520/D2270-10R16.
+
+    Examples
+    --------
+    The standard's example of procedure A (nu40 = 73.30, nu100 = 8.86 mm^2/s, VI 92):
+
+    >>> print(round(float(viscosity_index(73.30e-6, 8.86e-6))))
+    92
+    """
+    u = check_positive("viscosity_40", viscosity_40, "m^2/s") / _CST
+    y = check_positive("viscosity_100", viscosity_100, "m^2/s") / _CST
+    if (y < _WALTHER_MIN_CST).any():
+        raise InputError(f"viscosity_100 must be >= {_WALTHER_MIN_CST:g} [mm^2/s] (ASTM D2270), got "
+                         f"{float(y[y < _WALTHER_MIN_CST].flat[0])!r} mm^2/s")
+    if np.broadcast_to(y >= u, np.broadcast(u, y).shape).any():
+        raise InputError("viscosity_100 must be below viscosity_40 (an oil thins when heated)")
+    return _d2270_index(u, y)[()]
+
+
+def viscosity_100_from_index(viscosity_40, viscosity_index, *, rtol=_solve.VISCOSITY_INDEX_RTOL,
+                             max_iter=_solve.VISCOSITY_INDEX_MAX_ITER):
+    """Kinematic viscosity at 100 degC of an oil of known nu40 and viscosity index (ASTM D2270 solved).
+
+    Parameters
+    ----------
+    viscosity_40 : array_like
+        nu40 (for an ISO VG grade, the mid-point: :func:`iso_vg_viscosity`). [m^2/s]
+    viscosity_index : array_like
+        VI. [-]
+    rtol : float
+        Relative width of the bracket on nu100 at which the bisection stops. [-]
+    max_iter : int
+        Bisection steps before :class:`~bearinglab.errors.ConvergenceError`.
+
+    Returns
+    -------
+    ndarray or float
+        nu100 with :func:`viscosity_index` (nu40, nu100) = VI. [m^2/s]
+
+    Notes
+    -----
+    At fixed nu40 the VI of [4]_ rises monotonically with nu100 (a flatter oil), so the root is bracketed
+    in [2 mm^2/s, nu40) and found by bisection on log nu100 (the table's linear pieces make the function
+    only piecewise smooth). An oil whose VI is below what nu100 = 2 mm^2/s gives is refused.
+
+    References
+    ----------
+    .. [4] ASTM D2270-10(2016), doi:10.1520/D2270-10R16.
+
+    Examples
+    --------
+    An ISO VG 68 mineral oil of VI 95:
+
+    >>> print(f"{viscosity_100_from_index(68e-6, 95.0) * 1e6:.3f} mm^2/s")
+    8.530 mm^2/s
+    """
+    u = check_positive("viscosity_40", viscosity_40, "m^2/s") / _CST
+    vi = np.asarray(viscosity_index, dtype=float)
+    if not np.isfinite(vi).all():
+        raise InputError(f"viscosity_index must be finite [-], got {float(vi[~np.isfinite(vi)].flat[0])!r}")
+    u, vi = np.broadcast_arrays(u, vi)
+    if (u <= _WALTHER_MIN_CST).any():
+        raise InputError(f"viscosity_40 must be > {_WALTHER_MIN_CST:g} [mm^2/s] for a viscosity index, got "
+                         f"{float(u[u <= _WALTHER_MIN_CST].flat[0])!r} mm^2/s")
+    lo = np.full(u.shape, np.log(_WALTHER_MIN_CST))
+    hi = np.log(u) - 1e-12
+    low_vi = _d2270_index(u, np.exp(lo))
+    if (low_vi > vi).any():
+        k = np.flatnonzero((low_vi > vi).ravel())[0]
+        raise InputError(f"viscosity_index {float(vi.flat[k]):g} is too low for nu40 = {float(u.flat[k]):g} "
+                         f"mm^2/s: even nu100 = 2 mm^2/s gives VI {float(low_vi.flat[k]):.4g}")
+    for it in range(1, max_iter + 1):
+        mid = 0.5 * (lo + hi)
+        above = _d2270_index(u, np.exp(mid)) > vi
+        hi, lo = np.where(above, mid, hi), np.where(above, lo, mid)
+        if np.all(hi - lo < rtol):
+            return (np.exp(0.5 * (lo + hi)) * _CST)[()]
+    raise ConvergenceError("lubrication.viscosity_100_from_index", iterations=it, residual=hi - lo,
+                           estimate=np.exp(0.5 * (lo + hi)) * _CST)
+
+
+def kinematic_viscosity(temperature, *, iso_vg=None, viscosity_40=None, viscosity_100=None,
+                        viscosity_index=None):
     """Kinematic viscosity of an oil at the operating temperature (ASTM D341 through 40 and 100 degC).
 
     Parameters
@@ -168,8 +326,11 @@ def kinematic_viscosity(temperature, *, iso_vg=None, viscosity_40=None, viscosit
         ISO VG grade, giving nu40 (or give ``viscosity_40``).
     viscosity_40 : float, optional
         nu at 40 degC. [m^2/s]
-    viscosity_100 : float
-        nu at 100 degC (the second reference point). [m^2/s]
+    viscosity_100 : float, optional
+        nu at 100 degC (the second reference point), from the oil's data sheet. [m^2/s]
+    viscosity_index : float, optional
+        The oil's viscosity index, giving nu100 by ASTM D2270 (:func:`viscosity_100_from_index`); not
+        with ``viscosity_100``. Without either, :data:`DEFAULT_VISCOSITY_INDEX` (95, a mineral oil). [-]
 
     Returns
     -------
@@ -178,20 +339,29 @@ def kinematic_viscosity(temperature, *, iso_vg=None, viscosity_40=None, viscosit
 
     Notes
     -----
-    A viscosity index alone does not fix nu100 without the tables of ISO 2909 / ASTM D2270, which
-    are not implemented; give nu100 from the oil's data sheet.
+    nu100 is the data sheet's, or the one of the given (default 95) VI by ASTM D2270 [4]_; ASTM D341
+    (Walther) [2]_ then runs through (40 degC, nu40) and (100 degC, nu100).
+
+    References
+    ----------
+    .. [2] ASTM D341-09, eqs. (1)-(2).
+    .. [4] ASTM D2270-10(2016), doi:10.1520/D2270-10R16.
 
     Examples
     --------
     >>> print(f"{kinematic_viscosity(343.15, iso_vg=68, viscosity_100=8.7e-6) * 1e6:.2f} mm^2/s")
     20.12 mm^2/s
+    >>> print(f"{kinematic_viscosity(343.15, iso_vg=68) * 1e6:.2f} mm^2/s")
+    19.86 mm^2/s
     """
     if (iso_vg is None) == (viscosity_40 is None):
         raise InputError("give exactly one of iso_vg and viscosity_40")
-    if viscosity_100 is None:
-        raise InputError("viscosity_100 (nu at 100 degC) is needed with a VG grade or nu40 "
-                         "(a viscosity index alone is not supported)")
+    if viscosity_100 is not None and viscosity_index is not None:
+        raise InputError("give viscosity_100 or viscosity_index, not both (the index fixes nu100)")
     nu40 = iso_vg_viscosity(iso_vg) if iso_vg is not None else viscosity_40
+    if viscosity_100 is None:
+        vi = DEFAULT_VISCOSITY_INDEX if viscosity_index is None else viscosity_index
+        viscosity_100 = float(viscosity_100_from_index(nu40, vi))
     a, b = walther_constants((_T40, _T100), (nu40, viscosity_100))
     return walther_viscosity(temperature, a, b)
 
