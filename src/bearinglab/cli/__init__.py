@@ -13,6 +13,7 @@ friction torque | lab | template   friction torque models and the friction-rig l
 load-distribution              5-DOF load distribution, stiffness, ROSS file (issue 11) cli/load.py
 bearing-set                    preloaded DB/DF/DT sets on one shaft (issue 11)     cli/load.py
 life                           ISO 281 / ISO/TS 16281 lives, duty cycles (issue 12)  cli/life.py
+film                           EHL film, Lambda and regime per ball (issue 24)        cli/film.py
 runout | runout monte-carlo    manufacturing errors -> inner-ring runout (spec 003)   cli/runout.py
 
 Each command module defines ``COMMANDS`` (command name -> function, or a Typer group); the options
@@ -54,7 +55,7 @@ import typer.main
 
 from .. import __version__
 from ..errors import ConvergenceError, InputError
-from . import catalog, frequencies, friction, high_speed, life, load, runout, serve, stand, sweep
+from . import catalog, film, frequencies, friction, high_speed, life, load, runout, serve, stand, sweep
 
 __all__ = ["JsonRun", "app", "main", "run", "run_json"]
 
@@ -89,7 +90,7 @@ def _main_options(
     """Ball-bearing mechanics: combined loads and bearing sets, rating life, friction torque, high speed, test stand, runout, frequencies."""
 
 
-for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, friction, runout, serve):
+for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, film, friction, runout, serve):
     for _name, _command in _module.COMMANDS.items():
         if isinstance(_command, typer.Typer):
             app.add_typer(_command, name=_name)
