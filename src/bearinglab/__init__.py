@@ -23,6 +23,7 @@ tables      results -> engineering-unit columns; the CSV, Parquet and JSON write
 plots       all figures (matplotlib, loaded on first use); functions return Figures
 cli         the command line (imported on its own: ``bearinglab.cli``, ``python -m bearinglab``)
 ratings     load ratings and rating life: ISO 76, ISO 281, ISO/TS 16281
+thermal     steady bearing temperature: SKF friction power against the heat carried away
 limits      plausibility limits: warnings for results beyond ISO 76, C0, Hertz, the shoulder, light load
 
 The submodules are imported on first use (PEP 562): ``import bearinglab`` is instant, and
@@ -55,6 +56,7 @@ __all__ = [
     "static",
     "sweep",
     "tables",
+    "thermal",
     "units",
 ]
 
