@@ -14,6 +14,7 @@ load-distribution              5-DOF load distribution, stiffness, ROSS file (is
 bearing-set                    preloaded DB/DF/DT sets on one shaft (issue 11)     cli/load.py
 life                           ISO 281 / ISO/TS 16281 lives, duty cycles (issue 12)  cli/life.py
 film                           EHL film, Lambda and regime per ball (issue 24)        cli/film.py
+temperature                    steady bearing temperature, heat balance (issue 24)    cli/temperature.py
 runout | runout monte-carlo    manufacturing errors -> inner-ring runout (spec 003)   cli/runout.py
 
 Each command module defines ``COMMANDS`` (command name -> function, or a Typer group); the options
@@ -55,7 +56,20 @@ import typer.main
 
 from .. import __version__
 from ..errors import ConvergenceError, InputError
-from . import catalog, film, frequencies, friction, high_speed, life, load, runout, serve, stand, sweep
+from . import (
+    catalog,
+    film,
+    frequencies,
+    friction,
+    high_speed,
+    life,
+    load,
+    runout,
+    serve,
+    stand,
+    sweep,
+    temperature,
+)
 
 __all__ = ["JsonRun", "app", "main", "run", "run_json"]
 
@@ -90,7 +104,8 @@ def _main_options(
     """Ball-bearing mechanics: combined loads and bearing sets, rating life, friction torque, high speed, test stand, runout, frequencies."""
 
 
-for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, film, friction, runout, serve):
+for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, film, temperature, friction, runout,
+                serve):
     for _name, _command in _module.COMMANDS.items():
         if isinstance(_command, typer.Typer):
             app.add_typer(_command, name=_name)
