@@ -101,3 +101,38 @@ def test_no_speed_is_an_error(capsys):
     assert "speed" in capsys.readouterr().err
 
 
+
+
+def test_temperature_auto_takes_the_steady_temperature_and_its_viscosity(capsys):
+    import warnings
+
+    import numpy as np
+
+    from bearinglab import thermal
+    from bearinglab.ratings import lubrication
+
+    docs = _json(capsys, "film", "-b", "B218", "--fx", "3 kN", "--fz", "10 kN", "--speed", "3000, 9000 rpm",
+                 "--oil", "VG32", "--viscosity-index", "100", "--temperature", "auto", "--thermal-resistance",
+                 "0.05 K/W", "--skf-constants", "5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12", "--density", "870 kg/m^3",
+                 "--pressure-viscosity-coefficient", "20 1/GPa")
+    from bearinglab.friction import SKFConstants  # constants of this test only, not SKF's table
+
+    b = catalog.get("B218")
+    nu100 = lubrication.viscosity_100_from_index(32e-6, 100.0)
+    w = np.array([3000.0, 9000.0]) * RPM
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        t = thermal.thermal_balance(b, 3e3, 10e3, w, 293.15, 32e-6, nu100, conductance=20.0,
+                                    constants=SKFConstants(5e-7, 1.9, 0.013, 0.7, 1.9e-12, 1.9e-12))
+        r = film.film_analysis(b, [3e3, 0, 10e3, 0, 0], w, t.kinematic_viscosity * 870.0, 20e-9)
+    for k in range(2):
+        assert docs[k]["inputs"]["bearing_temperature_degC"] == pytest.approx(t.temperature[k] - 273.15, rel=1e-12)
+        assert docs[k]["film_min_um"] == pytest.approx(r.minimum_film[k] * 1e6, rel=1e-10)
+    assert docs[1]["inputs"]["bearing_temperature_degC"] > docs[0]["inputs"]["bearing_temperature_degC"]
+
+
+def test_temperature_auto_needs_the_oil_grade(capsys):
+    assert main([*BASE, "--viscosity", "20 cSt", "--temperature", "auto"]) == 2
+    assert "oil by grade" in capsys.readouterr().err
+    assert main([*BASE, "--viscosity", "20 cSt", "--ambient", "30 degC"]) == 2
+    assert "go with --temperature auto" in capsys.readouterr().err

@@ -66,6 +66,7 @@ RoughnessBallOpt = Annotated[str | None, typer.Option("--roughness-ball", help="
 RoughnessRaceOpt = Annotated[str | None, typer.Option("--roughness-race", help="R_q of the raceways, e.g. '0.15 um'.", rich_help_panel=_FILM)]
 LoadsAtOpt = Annotated[str, typer.Option("--loads-at", help="speed (quasi-static ball loads at the speed; default) | rest (loads at rest, pure rolling).", rich_help_panel=_FILM)]
 
+_AUTO = "Temperature auto (thermal balance)"
 #: Default density of a mineral oil [kg/m^3] when none is given: a typical value (0.86-0.89 g/cm^3 at
 #: 15 degC for ISO VG 10-460 mineral oils), an estimate labelled as one in the output.
 DEFAULT_DENSITY = 870.0
@@ -154,6 +155,10 @@ def film(
     pressure_viscosity_coefficient: AlphaOpt = None,
     roughness_both: RoughnessOpt = None, roughness_ball: RoughnessBallOpt = None, roughness_race: RoughnessRaceOpt = None,
     loads_at: LoadsAtOpt = "speed",
+    ambient: Annotated[str | None, typer.Option("--ambient", help="With --temperature auto: the ambient (default 20 degC).", rich_help_panel=_AUTO)] = None,
+    thermal_resistance: Annotated[str | None, typer.Option("--thermal-resistance", help="With --temperature auto: bearing to ambient, e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).", rich_help_panel=_AUTO)] = None,
+    lubrication: Annotated[str, typer.Option("--lubrication", help="With --temperature auto: the SKF model's oil-jet (default) | oil-air | grease.", rich_help_panel=_AUTO)] = "oil-jet",
+    skf_constants: Annotated[str | None, typer.Option("--skf-constants", help="With --temperature auto: SKF constants R1,R2,R3,S1,S2,S3 (angular contact).", rich_help_panel=_AUTO)] = None,
     bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
     balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
     inner_groove_radius: InnerRadius = None, outer_groove_radius: OuterRadius = None,
@@ -181,10 +186,15 @@ def film(
     alpha = pressure_viscosity(pressure_viscosity_coefficient)
     auto = temperature is not None and temperature.strip().lower() == "auto"
     if auto:
-        raise InputError("temperature: 'auto' needs the thermal balance of `bearinglab temperature`, which this "
-                         "build of `film` does not couple yet; give the temperature")
-    eta, _nu, how, lub_inputs, notes = lubricant(viscosity, dynamic_viscosity, oil, temperature, viscosity_index,
-                                                viscosity_100, density_text)
+        eta, how, lub_inputs, notes = _auto_temperature(b, loads, w, oil, viscosity, dynamic_viscosity,
+                                                        viscosity_index, viscosity_100, density_text, ambient,
+                                                        thermal_resistance, lubrication, skf_constants)
+    else:
+        if any(x is not None for x in (ambient, thermal_resistance, skf_constants)):
+            raise InputError("temperature: --ambient, --thermal-resistance and --skf-constants go with "
+                             "--temperature auto (the thermal balance)")
+        eta, _nu, how, lub_inputs, notes = lubricant(viscosity, dynamic_viscosity, oil, temperature,
+                                                    viscosity_index, viscosity_100, density_text)
     cases = np.broadcast_to(np.asarray(loads, dtype=float), w.shape + (5,))
     r = _solve(film_model.film_analysis, b, cases, w, eta, alpha, roughness_ball=rq_ball, roughness_race=rq_race,
                loads_at=loads_at)
@@ -197,6 +207,9 @@ def film(
                                     **lub_inputs, lubricant=how,
                                     pressure_viscosity_coefficient_per_GPa=None if alpha is None else alpha * 1e9,
                                     roughness_ball_um=rq_ball * 1e6, roughness_race_um=rq_race * 1e6)
+        temps = lub_inputs.get("bearing_temperature_degC")
+        if isinstance(temps, list):  # --temperature auto over several speeds: this case's temperature
+            doc["inputs"]["bearing_temperature_degC"] = temps[k]
         doc["warnings"] = notes
         docs.append(doc)
     if json_out:
@@ -205,6 +218,48 @@ def film(
     for doc in docs:
         _print(b, doc, how)
     print_warnings(notes)
+
+
+def _auto_temperature(b, loads, w, oil, viscosity, dynamic_viscosity, viscosity_index, viscosity_100, density_text,
+                      ambient, thermal_resistance, lubrication, skf_constants):
+    """--temperature auto: the steady temperature of each case (:func:`bearinglab.thermal.thermal_balance`)
+    and the oil's dynamic viscosity there; (eta per case, description, inputs, notes)."""
+    import math
+
+    import numpy as np
+
+    from .. import thermal
+    from . import temperature as temp_cli
+
+    if viscosity is not None or dynamic_viscosity is not None:
+        raise InputError("temperature: 'auto' needs the oil by grade (--oil VG32, with --viscosity-index or "
+                         "--viscosity-100), whose viscosity follows the temperature; not --viscosity")
+    if loads[3] or loads[4]:
+        raise InputError("temperature: 'auto' takes the SKF friction model, which has no tilting moment; give "
+                         "no --mx/--my")
+    rho, assumed = density(density_text)
+    nu40, nu100, how, oil_inputs = temp_cli.oil_reference_viscosities(oil, viscosity_index, viscosity_100)
+    heat, notes, heat_inputs = temp_cli.heat_options(b, ambient or "20 degC", thermal_resistance, None, None, None,
+                                                     None, "150 degC")
+    r = thermal.thermal_balance(b, math.hypot(loads[0], loads[1]), abs(loads[2]), w, heat.pop("ambient"), nu40,
+                                nu100, **heat, **temp_cli.skf_options(b, lubrication, skf_constants))
+    if not np.all(r.steady):
+        from ..units import RPM
+
+        bad = float(np.asarray(w)[~np.asarray(r.steady)][0]) / RPM
+        raise InputError(f"temperature: no steady temperature below 150 degC at {bad:g} rpm (thermal runaway); "
+                         "give the temperature, or more cooling (--thermal-resistance)")
+    if assumed:
+        notes.append(f"density: not given, so {DEFAULT_DENSITY:g} kg/m^3 (a typical mineral oil, an estimate) "
+                     "turns the kinematic viscosity into the dynamic one; give --density")
+    t = np.atleast_1d(r.temperature)
+    inputs = {**oil_inputs, **heat_inputs, "temperature": "auto",
+              "bearing_temperature_degC": (t - 273.15).tolist() if t.size > 1 else float(t[0] - 273.15),
+              "density_kg_m3": rho, "density_assumed": assumed}
+    nu = np.atleast_1d(r.kinematic_viscosity)
+    text = (f"{how} at the steady temperature {', '.join(f'{x - 273.15:.1f}' for x in t)} degC (thermal balance): "
+            f"nu = {', '.join(f'{x * 1e6:.4g}' for x in nu)} cSt")
+    return nu * rho, text, inputs, [*notes, *r.warnings]
 
 
 def _solve(model, *args, **kwargs):
