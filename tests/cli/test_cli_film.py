@@ -113,7 +113,7 @@ def test_temperature_auto_takes_the_steady_temperature_and_its_viscosity(capsys)
 
     docs = _json(capsys, "film", "-b", "B218", "--fx", "3 kN", "--fz", "10 kN", "--speed", "3000, 9000 rpm",
                  "--oil", "VG32", "--viscosity-index", "100", "--temperature", "auto", "--thermal-resistance",
-                 "0.05 K/W", "--skf-constants", "5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12", "--density", "870 kg/m^3",
+                 "0.05 K/W", "--skf-constants", "5e-7,1.9,0,0.013,0.7,0", "--density", "870 kg/m^3",
                  "--pressure-viscosity-coefficient", "20 1/GPa")
     from bearinglab.friction import SKFConstants  # constants of this test only, not SKF's table
 
@@ -123,7 +123,7 @@ def test_temperature_auto_takes_the_steady_temperature_and_its_viscosity(capsys)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         t = thermal.thermal_balance(b, 3e3, 10e3, w, 293.15, 32e-6, nu100, conductance=20.0,
-                                    constants=SKFConstants(5e-7, 1.9, 0.013, 0.7, 1.9e-12, 1.9e-12))
+                                    constants=SKFConstants(5e-7, 1.9, 0.013, 0.7, 0.0, 0.0))
         r = film.film_analysis(b, [3e3, 0, 10e3, 0, 0], w, t.kinematic_viscosity * 870.0, 20e-9)
     for k in range(2):
         assert docs[k]["inputs"]["bearing_temperature_degC"] == pytest.approx(t.temperature[k] - 273.15, rel=1e-12)
