@@ -11,7 +11,7 @@ The package re-exports the public names of both modules.
 """
 
 from . import analysis, ehl
-from .analysis import FilmAnalysis, entrainment_velocities, film_analysis
+from .analysis import FilmAnalysis, distribution_films, entrainment_velocities, film_analysis
 from .ehl import (
     REGIME_THRESHOLDS,
     REGIMES,
@@ -38,6 +38,7 @@ __all__ = [
     "analysis",
     "contact_radii",
     "dimensionless_groups",
+    "distribution_films",
     "ehl",
     "ellipticity",
     "entrainment_velocities",

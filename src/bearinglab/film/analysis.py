@@ -2,6 +2,7 @@ r"""The EHL film of every ball of a bearing under combined load, at rest or at s
 
 entrainment_velocities   mean rolling velocity at the inner and outer contact of a ball, from its angles
 film_analysis            ball loads and angles of the load distribution -> film and Lambda per contact
+distribution_films       the film stage alone, for a load distribution already solved
 FilmAnalysis             its result
 
 The ball loads and contact angles come from :func:`bearinglab.quasistatic.combined.combined_analysis`
@@ -28,7 +29,7 @@ from .._validate import check_nonnegative, check_positive
 from ..errors import InputError
 from . import ehl
 
-__all__ = ["LOADS_AT", "FilmAnalysis", "entrainment_velocities", "film_analysis"]
+__all__ = ["LOADS_AT", "FilmAnalysis", "distribution_films", "entrainment_velocities", "film_analysis"]
 
 #: Where the ball loads are solved: at the operating speed (quasi-static, spec 004) or at rest (the
 #: static distribution a handbook uses; the speeds then follow pure rolling at those angles).
@@ -216,6 +217,62 @@ def film_analysis(bearing, loads, shaft_speed, dynamic_viscosity, pressure_visco
     options.setdefault("raceway_control", raceway_control)
     ld = combined_analysis(bearing, f, w_b if loads_at == "speed" else np.zeros(shape), reduced_modulus=reduced_modulus,
                            **options)
+    return distribution_films(ld, bearing, w_b, eta, alpha, roughness_ball=rb, roughness_race=rr,
+                              raceway_control=raceway_control, inlet_heating=inlet_heating,
+                              reduced_modulus=reduced_modulus, notes=notes)
+
+
+def distribution_films(distribution, bearing, shaft_speed, dynamic_viscosity, pressure_viscosity_coefficient, *,
+                       roughness_ball=0.1e-6, roughness_race=0.1e-6, raceway_control="outer", inlet_heating=None,
+                       reduced_modulus=None, notes=()):
+    r"""The films of a solved load distribution: the film stage of :func:`film_analysis`.
+
+    Parameters
+    ----------
+    distribution : LoadDistribution
+        Of the bearing (:func:`bearinglab.quasistatic.combined.combined_analysis`), cases of shape (...).
+    bearing : BallBearing
+        The bearing it was solved for.
+    shaft_speed : array_like
+        Inner-ring speed of each case (the film's speed, whatever speed the loads were solved at). [rad/s]
+    dynamic_viscosity : array_like
+        eta0 per case. [Pa s]
+    pressure_viscosity_coefficient : array_like
+        alpha per case. [1/Pa]
+    roughness_ball, roughness_race : float, optional
+        R_q of balls and raceways. [m]
+    raceway_control : {"outer", "inner"}, optional
+        Ball attitude for the entrainment velocities.
+    inlet_heating : tuple of float, optional
+        See :func:`film_analysis`.
+    reduced_modulus : float, optional
+        E' instead of the bearing's. [Pa]
+    notes : sequence of str, optional
+        Warnings to carry into the result.
+
+    Returns
+    -------
+    FilmAnalysis
+
+    Examples
+    --------
+    >>> from bearinglab import catalog
+    >>> from bearinglab.quasistatic.combined import combined_analysis
+    >>> from bearinglab.units import RPM
+    >>> b = catalog.get("B218")
+    >>> ld = combined_analysis(b, [0, 0, 20e3, 0, 0], 10000 * RPM)
+    >>> r = distribution_films(ld, b, 10000 * RPM, 0.01, 2e-8)
+    >>> print(f"{r.minimum_film * 1e6:.3f} um")
+    0.887 um
+    """
+    ld = distribution
+    shape = np.shape(ld.converged)
+    w_b = np.broadcast_to(check_nonnegative("shaft_speed", shaft_speed, "rad/s"), shape)
+    eta = check_positive("dynamic_viscosity", dynamic_viscosity, "Pa s")
+    alpha = check_positive("pressure_viscosity_coefficient", pressure_viscosity_coefficient, "1/Pa")
+    rb = check_nonnegative("roughness_ball", roughness_ball, "m")
+    rr = check_nonnegative("roughness_race", roughness_race, "m")
+    notes = list(notes)
     ep = bearing.reduced_modulus if reduced_modulus is None else reduced_modulus
     d, dm = bearing.ball_diameter, bearing.pitch_diameter
     ai, ao = ld.contact_angle_inner, ld.contact_angle_outer
