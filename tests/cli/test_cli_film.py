@@ -136,3 +136,12 @@ def test_temperature_auto_needs_the_oil_grade(capsys):
     assert "oil by grade" in capsys.readouterr().err
     assert main([*BASE, "--viscosity", "20 cSt", "--ambient", "30 degC"]) == 2
     assert "go with --temperature auto" in capsys.readouterr().err
+
+
+def test_lubrication_gives_the_starvation_check(capsys):
+    args = ["film", "-b", "6205-2RS", "--inner-conformity", "0.52", "--outer-conformity", "0.53", "-R", "1 kN",
+            "--viscosity", "68 cSt", "--density", "870 kg/m^3", "--pressure-viscosity-coefficient", "20 1/GPa"]
+    fast = _json(capsys, *args, "--speed", "15000 rpm", "--lubrication", "grease")
+    assert any(w.startswith("starvation risk (grease)") for w in fast["warnings"])
+    assert main([*args, "--speed", "1000 rpm", "--lubrication", "splash"]) == 2
+    assert "lubrication must be one of" in capsys.readouterr().err

@@ -96,3 +96,22 @@ def test_inlet_heating_reduces_every_film():
     cold = analysis.film_analysis(B218, [0, 0, 5e3, 0, 0], 12000 * RPM, 0.02, 2e-8)
     hot = analysis.film_analysis(B218, [0, 0, 5e3, 0, 0], 12000 * RPM, 0.02, 2e-8, inlet_heating=(0.03, 0.14))
     assert np.all(hot.minimum_film_inner < cold.minimum_film_inner)
+
+
+def test_starvation_risk_from_skfs_replenishment_factor():
+    from bearinglab import friction
+
+    b = catalog.get("6205-2RS").replace(inner_conformity=0.52, outer_conformity=0.53)
+    w = 15000 * RPM
+    phi = friction.replenishment_factor(68e-6, w, b.bore, b.outside_diameter, lubrication="grease")
+    # by hand: K_rs = 6e-8 (grease), K_Z = 3.1, rpm, mm^2/s, mm
+    assert phi == pytest.approx(math.exp(-6e-8 * 68 * 15000 * 77 * math.sqrt(3.1 / 54)), rel=1e-13)
+    assert phi < analysis.STARVATION_LIMIT
+    starved = analysis.film_analysis(b, [1e3, 0, 0, 0, 0], w, 0.059, 2e-8, lubrication="grease",
+                                     kinematic_viscosity=68e-6)
+    assert any(n.startswith("starvation risk (grease)") for n in starved.warnings)
+    slow = analysis.film_analysis(b, [1e3, 0, 0, 0, 0], 1000 * RPM, 0.059, 2e-8, lubrication="oil-jet",
+                                  kinematic_viscosity=68e-6)
+    assert not any("starvation" in n for n in slow.warnings)
+    with pytest.raises(InputError, match="kinematic_viscosity is needed"):
+        analysis.film_analysis(b, [1e3, 0, 0, 0, 0], w, 0.059, 2e-8, lubrication="grease")

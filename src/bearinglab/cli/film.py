@@ -157,7 +157,7 @@ def film(
     loads_at: LoadsAtOpt = "speed",
     ambient: Annotated[str | None, typer.Option("--ambient", help="With --temperature auto: the ambient (default 20 degC).", rich_help_panel=_AUTO)] = None,
     thermal_resistance: Annotated[str | None, typer.Option("--thermal-resistance", help="With --temperature auto: bearing to ambient, e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).", rich_help_panel=_AUTO)] = None,
-    lubrication: Annotated[str, typer.Option("--lubrication", help="With --temperature auto: the SKF model's oil-jet (default) | oil-air | grease.", rich_help_panel=_AUTO)] = "oil-jet",
+    lubrication: Annotated[str | None, typer.Option("--lubrication", help="grease | oil-air | oil-jet | oil-bath: a starvation-risk check (SKF's replenishment factor); with --temperature auto also the SKF model's (default oil-jet).", rich_help_panel=_FILM)] = None,
     skf_constants: Annotated[str | None, typer.Option("--skf-constants", help="With --temperature auto: SKF constants R1,R2,R3,S1,S2,S3 (angular contact).", rich_help_panel=_AUTO)] = None,
     bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
     balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
@@ -188,16 +188,26 @@ def film(
     if auto:
         eta, how, lub_inputs, notes = _auto_temperature(b, loads, w, oil, viscosity, dynamic_viscosity,
                                                         viscosity_index, viscosity_100, density_text, ambient,
-                                                        thermal_resistance, lubrication, skf_constants)
+                                                        thermal_resistance, lubrication or "oil-jet",
+                                                        skf_constants)
+        nu = eta / lub_inputs["density_kg_m3"]
     else:
         if any(x is not None for x in (ambient, thermal_resistance, skf_constants)):
             raise InputError("temperature: --ambient, --thermal-resistance and --skf-constants go with "
                              "--temperature auto (the thermal balance)")
-        eta, _nu, how, lub_inputs, notes = lubricant(viscosity, dynamic_viscosity, oil, temperature,
-                                                    viscosity_index, viscosity_100, density_text)
+        eta, nu, how, lub_inputs, notes = lubricant(viscosity, dynamic_viscosity, oil, temperature,
+                                                   viscosity_index, viscosity_100, density_text)
     cases = np.broadcast_to(np.asarray(loads, dtype=float), w.shape + (5,))
+    starve = {}
+    if lubrication is not None:
+        from ..friction.skf import LUBRICATION_METHODS
+
+        choice("lubrication", lubrication, list(LUBRICATION_METHODS))
+        if nu is None:
+            nu = eta / density(density_text)[0]
+        starve = {"lubrication": lubrication, "kinematic_viscosity": nu}
     r = _solve(film_model.film_analysis, b, cases, w, eta, alpha, roughness_ball=rq_ball, roughness_race=rq_race,
-               loads_at=loads_at)
+               loads_at=loads_at, **starve)
     notes = list(dict.fromkeys([*notes, *r.warnings]))
     docs = []
     for k in range(w.size):

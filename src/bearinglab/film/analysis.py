@@ -29,11 +29,14 @@ from .._validate import check_nonnegative, check_positive
 from ..errors import InputError
 from . import ehl
 
-__all__ = ["LOADS_AT", "FilmAnalysis", "distribution_films", "entrainment_velocities", "film_analysis"]
+__all__ = ["LOADS_AT", "STARVATION_LIMIT", "FilmAnalysis", "distribution_films", "entrainment_velocities", "film_analysis"]
 
 #: Where the ball loads are solved: at the operating speed (quasi-static, spec 004) or at rest (the
 #: static distribution a handbook uses; the speeds then follow pure rolling at those angles).
 LOADS_AT = ("speed", "rest")
+#: Below this SKF replenishment factor Phi_rs a starvation risk is reported (a judgement of this library:
+#: the SKF model then removes more than a third of the rolling moment for an inlet that does not refill).
+STARVATION_LIMIT = 2.0 / 3.0
 
 
 class FilmAnalysis(NamedTuple):
@@ -141,7 +144,8 @@ def _contact(q, u, angle, d, dm, conformity, race, eta, alpha, ep, thermal, lubr
 
 def film_analysis(bearing, loads, shaft_speed, dynamic_viscosity, pressure_viscosity_coefficient=None, *,
                   roughness_ball=0.1e-6, roughness_race=0.1e-6, loads_at="speed", raceway_control="outer",
-                  inlet_heating=None, reduced_modulus=None, **options):
+                  inlet_heating=None, reduced_modulus=None, lubrication=None, kinematic_viscosity=None,
+                  **options):
     r"""Film thickness and film parameter at every ball's inner and outer contact.
 
     Parameters
@@ -169,6 +173,11 @@ def film_analysis(bearing, loads, shaft_speed, dynamic_viscosity, pressure_visco
         default, as in Hamrock and Dowson's isothermal formulas.
     reduced_modulus : float, optional
         E' instead of the one of the bearing's materials. [Pa]
+    lubrication : str, optional
+        The lubrication method ("grease", "oil-air", "oil-jet", "oil-bath"): with it, a starvation-risk
+        warning where SKF's replenishment factor falls below :data:`STARVATION_LIMIT`.
+    kinematic_viscosity : array_like, optional
+        nu per case, for that check. [m^2/s]
 
     Other Parameters
     ----------------
@@ -219,12 +228,13 @@ def film_analysis(bearing, loads, shaft_speed, dynamic_viscosity, pressure_visco
                            **options)
     return distribution_films(ld, bearing, w_b, eta, alpha, roughness_ball=rb, roughness_race=rr,
                               raceway_control=raceway_control, inlet_heating=inlet_heating,
-                              reduced_modulus=reduced_modulus, notes=notes)
+                              reduced_modulus=reduced_modulus, notes=notes, lubrication=lubrication,
+                              kinematic_viscosity=kinematic_viscosity)
 
 
 def distribution_films(distribution, bearing, shaft_speed, dynamic_viscosity, pressure_viscosity_coefficient, *,
                        roughness_ball=0.1e-6, roughness_race=0.1e-6, raceway_control="outer", inlet_heating=None,
-                       reduced_modulus=None, notes=()):
+                       reduced_modulus=None, notes=(), lubrication=None, kinematic_viscosity=None):
     r"""The films of a solved load distribution: the film stage of :func:`film_analysis`.
 
     Parameters
@@ -249,6 +259,10 @@ def distribution_films(distribution, bearing, shaft_speed, dynamic_viscosity, pr
         E' instead of the bearing's. [Pa]
     notes : sequence of str, optional
         Warnings to carry into the result.
+    lubrication : str, optional
+        See :func:`film_analysis` (the starvation check).
+    kinematic_viscosity : array_like, optional
+        nu per case, for the starvation check. [m^2/s]
 
     Returns
     -------
@@ -300,8 +314,31 @@ def distribution_films(distribution, bearing, shaft_speed, dynamic_viscosity, pr
     regime = ehl.lubrication_regime(lam_min)
     notes += list(ld.warnings)
     notes += _notes(ki, ko, qi0, qo0, lam_min)
+    if lubrication is not None:
+        notes += _starvation(bearing, lubrication, kinematic_viscosity, w_b)
     return FilmAnalysis(qi, qo, ai, ao, ui, uo, ki, ko, hci, hmi, hco, hmo, np.asarray(lam_i), np.asarray(lam_o),
                         h_min[()], lam_min[()], regime, ld.converged, tuple(dict.fromkeys(notes)))
+
+
+def _starvation(bearing, lubrication, nu, w):
+    """The starvation-risk warning from SKF's kinematic replenishment factor (a judgement: below
+    STARVATION_LIMIT the SKF model takes off more than a third of the rolling moment for a starved
+    inlet, and the fully flooded film of Hamrock and Dowson is then optimistic)."""
+    from ..friction.skf import replenishment_factor
+
+    if nu is None:
+        raise InputError("kinematic_viscosity is needed with lubrication= (the starvation check) [m^2/s]")
+    if bearing.bore is None or bearing.outside_diameter is None:
+        return [("starvation: not checked (the bearing has no bore and outside diameter for SKF's replenishment "
+                "factor)")]
+    phi = np.atleast_1d(replenishment_factor(nu, w, bearing.bore, bearing.outside_diameter, lubrication=lubrication,
+                                             bearing_type=bearing.type))
+    low = phi < STARVATION_LIMIT
+    if not low.any():
+        return []
+    return [(f"starvation risk ({lubrication}): SKF's kinematic replenishment factor Phi_rs = {float(phi.min()):.3g} "
+            f"< {STARVATION_LIMIT:.2f} in {int(low.sum())} of {phi.size} case(s): the oil may not flow back into the "
+            "track between balls, and the real film is thinner than the fully flooded one shown")]
 
 
 def _notes(ki, ko, qi, qo, lam_min):

@@ -13,6 +13,7 @@ bearing_series             the series of a designation ("6205-2RSH" -> "62", "61
 seal_constants             K_S1, beta, K_S2 of a seal type and outside diameter
 sliding_friction_coefficient   mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL
 drag_moment                M_drag of a ball bearing in an oil bath (SKF's drag losses)
+replenishment_factor       Phi_rs, the kinematic replenishment/starvation reduction factor
 DEEP_GROOVE_CONSTANTS, SEAL_CONSTANTS, LUBRICATION_METHODS   the tables
 
 The published model is in N, mm, rpm and mm^2/s with moments in N mm; the API is SI (N, m, rad/s,
@@ -49,6 +50,7 @@ __all__ = [
     "SealConstants",
     "bearing_series",
     "drag_moment",
+    "replenishment_factor",
     "seal_constants",
     "series_constants",
     "skf",
@@ -261,6 +263,45 @@ def sliding_friction_coefficient(kinematic_viscosity, shaft_speed, mean_diameter
 
 
 _mu_sl = sliding_friction_coefficient  # skf() takes a keyword of the same name
+
+
+def replenishment_factor(kinematic_viscosity, shaft_speed, bore, outside_diameter, *, lubrication="grease",
+                         bearing_type="radial"):
+    r"""Kinematic replenishment/starvation reduction factor Phi_rs of the SKF model.
+
+    Parameters
+    ----------
+    kinematic_viscosity : array_like
+        nu. [m^2/s]
+    shaft_speed : array_like
+        n. [rad/s]
+    bore, outside_diameter : array_like
+        d, D. [m]
+    lubrication : {"grease", "oil-air", "oil-jet", "oil-bath"}
+        Sets K_rs.
+    bearing_type : {"radial", "angular"}
+        Sets K_Z.
+
+    Returns
+    -------
+    ndarray or float
+        :math:`\Phi_{rs} = \exp(-K_{rs}\nu n (d + D)\sqrt{K_Z/(2(D-d))})` (rpm, mm^2/s, mm), 1 for a
+        fully replenished inlet, falling as the oil cannot flow back into the track. [-]
+
+    Examples
+    --------
+    >>> print(f"{replenishment_factor(20e-6, 10000 * 2 * np.pi / 60, 25e-3, 52e-3):.4f}")
+    0.8014
+    """
+    if lubrication not in LUBRICATION_METHODS:
+        raise InputError(f"lubrication must be one of {list(LUBRICATION_METHODS)}, got {lubrication!r}")
+    if bearing_type not in _KZ:
+        raise InputError(f"bearing_type must be one of {list(_KZ)}, got {bearing_type!r}")
+    nu = check_positive("kinematic_viscosity", kinematic_viscosity, "m^2/s") / _CST
+    n = np.abs(np.asarray(shaft_speed, dtype=float)) / _RPM
+    d = check_positive("bore", bore, "m") / _MM
+    big = check_positive("outside_diameter", outside_diameter, "m") / _MM
+    return np.exp(-LUBRICATION_METHODS[lubrication] * nu * n * (d + big) * np.sqrt(_KZ[bearing_type] / (2 * (big - d))))[()]
 
 
 def drag_moment(shaft_speed, kinematic_viscosity, bore, outside_diameter, oil_level, drag_loss_factor, *,
