@@ -6,6 +6,8 @@ import warnings
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from bearinglab import catalog
 from bearinglab.errors import InputError, ValidityWarning
@@ -115,3 +117,13 @@ def test_starvation_risk_from_skfs_replenishment_factor():
     assert not any("starvation" in n for n in slow.warnings)
     with pytest.raises(InputError, match="kinematic_viscosity is needed"):
         analysis.film_analysis(b, [1e3, 0, 0, 0, 0], w, 0.059, 2e-8, lubrication="grease")
+
+
+@settings(max_examples=15, deadline=None)
+@given(s=st.floats(1.1, 20.0), thrust=st.floats(2e3, 30e3))
+def test_every_film_scales_with_viscosity_to_the_power_of_its_fit(s, thrust):
+    """The loads and angles do not depend on the oil: each film scales as eta^0.68 (h_min), eta^0.67 (h_c)."""
+    base = analysis.film_analysis(B218, [0.1 * thrust, 0, thrust, 0, 0], 8000 * RPM, 0.01, 2e-8)
+    thick = analysis.film_analysis(B218, [0.1 * thrust, 0, thrust, 0, 0], 8000 * RPM, 0.01 * s, 2e-8)
+    np.testing.assert_allclose(thick.minimum_film_inner / base.minimum_film_inner, s**0.68, rtol=1e-11)
+    np.testing.assert_allclose(thick.central_film_outer / base.central_film_outer, s**0.67, rtol=1e-11)
