@@ -147,7 +147,7 @@ def test_high_speed_main_prints_a_result_line(load_bench, capsys):
     assert line[0].endswith("baseline_work=static_start+solve+state")
 
 
-@pytest.mark.parametrize("name", ["combined", "life", "skf_friction", "runout", "high_speed"])
+@pytest.mark.parametrize("name", ["combined", "life", "skf_friction", "runout", "high_speed", "film", "thermal"])
 def test_every_script_has_a_main(load_bench, name):
     assert callable(load_bench(name).main)
 
@@ -181,3 +181,10 @@ def test_combined_main_prints_both_result_lines(load_bench, capsys, monkeypatch)
     lines = [x for x in capsys.readouterr().out.splitlines() if x.startswith("RESULT combined_")]
     assert [x.split()[1] for x in lines] == ["combined_rest", "combined_speed"]
     assert all("baseline_label=fair_scalar" in x for x in lines) and "former_library_per_case_ratio" in lines[1]
+
+
+@pytest.mark.parametrize("name, kwargs", [("film", {"n_side": 4, "n_base": 8, "repeat": 1}),
+                                          ("thermal", {"n_batch": 40, "n_base": 10, "repeat": 1})])
+def test_film_and_thermal_scripts_agree_with_their_baselines(load_bench, capsys, name, kwargs):
+    assert load_bench(name).main(**kwargs) == 0  # 0: the per-case baseline agreed case by case
+    assert [x.split()[1] for x in capsys.readouterr().out.splitlines() if x.startswith("RESULT ")] == [name]

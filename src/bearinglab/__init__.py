@@ -17,6 +17,7 @@ parallel    chunked batch execution, serial or on dask
 sweep       parameter sweeps of a model over a Cartesian grid (sweep files)
 kinematics  cage and ball speeds, characteristic (defect) frequencies, spectral masks
 runout      spindle-bearing manufacturing errors -> initial inner-ring displacement, runout (spec 003)
+film        lubricant film: Hamrock-Dowson EHL film per contact and per ball, Lambda, regime
 friction    friction torque: P0 max rule, one-term, two-term, Palmgren (spec 001 section 3)
 lab         the friction-rig lab: rig loads, calibration, measurement files, the three fits (spec 001)
 report      self-contained HTML reports of the friction lab, with PNG/SVG plots, CSV and JSON
@@ -25,6 +26,7 @@ tables      results -> engineering-unit columns; the CSV, Parquet and JSON write
 plots       all figures (matplotlib, loaded on first use); functions return Figures
 cli         the command line (imported on its own: ``bearinglab.cli``, ``python -m bearinglab``)
 ratings     load ratings and rating life: ISO 76, ISO 281, ISO/TS 16281
+thermal     steady bearing temperature: SKF friction power against the heat carried away
 limits      plausibility limits: warnings for results beyond ISO 76, C0, Hertz, the shoulder, light load
 mounting    mounted clearance: ISO 286 fits, ISO 492 tolerances, Lamé, temperature, speed (issue 23)
 
@@ -43,6 +45,7 @@ __all__ = [
     "designation",
     "errors",
     "estimation",
+    "film",
     "friction",
     "geometry",
     "hertz",
@@ -61,6 +64,7 @@ __all__ = [
     "static",
     "sweep",
     "tables",
+    "thermal",
     "units",
 ]
 

@@ -60,3 +60,9 @@ RUNOUT_EXACT_MAX_ITER = 50
 # (bearinglab.ratings.lubrication.viscosity_100_from_index)
 VISCOSITY_INDEX_RTOL = 1e-12  # relative width of the bracket on nu100
 VISCOSITY_INDEX_MAX_ITER = 100
+
+# Bearing temperature (bearinglab.thermal): bracketed root of friction power - heat dissipated, all cases
+# together (Illinois regula falsi with a bisection fallback)
+THERMAL_XTOL = 1e-12  # K, width of the bracket on the temperature
+THERMAL_RTOL = 1e-12  # |P_f - P_d| relative to P_f at which a case is converged
+THERMAL_MAX_ITER = 200

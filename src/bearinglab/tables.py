@@ -69,6 +69,7 @@ __all__ = [
     "catalog_entry",
     "columns",
     "csv_text",
+    "film",
     "frequencies",
     "high_speed",
     "input_columns",
@@ -672,3 +673,47 @@ def skf_torque(result):
         Column name -> 1-D array, one row per case.
     """
     return _broadcast(columns(result, SKF_TORQUE))
+
+
+def film(result, case=()):
+    """One case of a film analysis in engineering units, JSON-ready.
+
+    Parameters
+    ----------
+    result : FilmAnalysis
+        A result of :func:`bearinglab.film.film_analysis`.
+    case : tuple of int, optional
+        Index of the case in a batched result (``()`` for a single case).
+
+    Returns
+    -------
+    dict
+        ``film_min_um``, ``lambda_min``, ``regime``, ``converged`` and ``balls``: one dict per ball with
+        ``load_inner_N``, ``load_outer_N``, ``contact_angle_inner_deg``, ``contact_angle_outer_deg``,
+        ``entrainment_velocity_inner_m_s``, ``entrainment_velocity_outer_m_s``, ``ellipticity_inner``,
+        ``ellipticity_outer``, ``film_central_inner_um``, ``film_min_inner_um``, ``film_central_outer_um``,
+        ``film_min_outer_um``, ``lambda_inner``, ``lambda_outer`` (null where a ball carries no load).
+    """
+    def pick(name):
+        return np.asarray(getattr(result, name), dtype=float)[case]
+
+    per_ball = {"load_inner_N": (pick("load_inner"), 1.0), "load_outer_N": (pick("load_outer"), 1.0),
+                "contact_angle_inner_deg": (pick("contact_angle_inner"), 180.0 / np.pi),
+                "contact_angle_outer_deg": (pick("contact_angle_outer"), 180.0 / np.pi),
+                "entrainment_velocity_inner_m_s": (pick("entrainment_velocity_inner"), 1.0),
+                "entrainment_velocity_outer_m_s": (pick("entrainment_velocity_outer"), 1.0),
+                "ellipticity_inner": (pick("ellipticity_inner"), 1.0),
+                "ellipticity_outer": (pick("ellipticity_outer"), 1.0),
+                "film_central_inner_um": (pick("central_film_inner"), 1e6),
+                "film_min_inner_um": (pick("minimum_film_inner"), 1e6),
+                "film_central_outer_um": (pick("central_film_outer"), 1e6),
+                "film_min_outer_um": (pick("minimum_film_outer"), 1e6),
+                "lambda_inner": (pick("film_parameter_inner"), 1.0),
+                "lambda_outer": (pick("film_parameter_outer"), 1.0)}
+    z = per_ball["load_inner_N"][0].shape[-1]
+    balls = [{k: json_value(float(np.broadcast_to(v, (z,))[j]) * f) for k, (v, f) in per_ball.items()}
+             for j in range(z)]
+    return {"film_min_um": json_value(float(pick("minimum_film")) * 1e6),
+            "lambda_min": json_value(float(pick("minimum_film_parameter"))),
+            "regime": str(np.asarray(result.regime)[case]) or None,
+            "converged": bool(np.asarray(result.converged)[case]), "balls": balls}

@@ -221,6 +221,12 @@ KINDS = {
     "density": ("[mass]/[length]**3", "kg/m**3", "'7850 kg/m^3', '3.2 g/cm^3'"),
     "torque": ("[force]*[length]", "N*m", "'0.07 N*mm'"),
     "kinematic_viscosity": ("[length]**2/[time]", "m**2/s", "'20 cSt', '2e-5 m^2/s'"),
+    "dynamic_viscosity": ("[pressure]*[time]", "Pa*s", "'0.04 Pa*s', '40 mPa*s', '40 cP'"),
+    "inverse_pressure": ("1/[pressure]", "1/Pa", "'2.3e-8 m^2/N', '23 1/GPa'"),
+    "thermal_resistance": ("[temperature]/[power]", "K/W", "'0.5 K/W'"),
+    "volume_flow": ("[length]**3/[time]", "m**3/s", "'0.5 l/min', '1e-5 m^3/s'"),
+    "specific_heat": ("[energy]/[mass]/[temperature]", "J/(kg*K)", "'1900 J/(kg*K)'"),
+    "heat_flux": ("[power]/[length]**2", "W/m**2", "'16 kW/m^2'"),
     "dimensionless": ("", "", "'0.52'"),
 }
 

@@ -440,7 +440,7 @@ def test_skf_table(capsys):
     assert "SKF model" in out and "M_seal" in out
 
 
-@pytest.mark.parametrize("args, name", [(("--lubrication", "oil-bath-low"), "oil bath"),
+@pytest.mark.parametrize("args, name", [(("--lubrication", "oil-bath-low"), "lubrication must be one of"),
                                         (("--viscosity", "30 kg"), "viscosity")])
 def test_skf_bad_input_is_one_line_and_exit_2(capsys, args, name):
     code, _, err = run(capsys, *_SKF_61811, *args)

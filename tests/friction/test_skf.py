@@ -71,8 +71,8 @@ def test_seal_moment_halved_for_one_side_and_zero_for_shields():
         friction.skf(6.51, 0.0, 2000 * RPM, 30e-6, 55e-3, 72e-3, series="618", seal="RS1")
 
 
-def test_refuses_oil_bath_and_unknowns():
-    with pytest.raises(InputError, match="oil bath: its drag moment is not modelled"):
+def test_refuses_oil_bath_without_its_level_and_unknowns():
+    with pytest.raises(InputError, match="oil bath needs the oil level"):  # issue 24: the drag is modelled
         friction.skf(100.0, 0.0, 100.0, 20e-6, 25e-3, 52e-3, series="62", lubrication="oil-bath")
     with pytest.raises(InputError, match="series must be one of"):
         friction.skf(100.0, 0.0, 100.0, 20e-6, 25e-3, 52e-3, series="99")

@@ -13,6 +13,8 @@ friction torque | lab | template   friction torque models and the friction-rig l
 load-distribution              5-DOF load distribution, stiffness, ROSS file (issue 11) cli/load.py
 bearing-set                    preloaded DB/DF/DT sets on one shaft (issue 11)     cli/load.py
 life                           ISO 281 / ISO/TS 16281 lives, duty cycles (issue 12)  cli/life.py
+film                           EHL film, Lambda and regime per ball (issue 24)        cli/film.py
+temperature                    steady bearing temperature, heat balance (issue 24)    cli/temperature.py
 runout | runout monte-carlo    manufacturing errors -> inner-ring runout (spec 003)   cli/runout.py
 clearance                      mounted clearance: fits, temperatures, speed (issue 23) cli/clearance.py
 
@@ -59,6 +61,7 @@ from ..errors import ConvergenceError, InputError
 from . import (
     catalog,
     clearance,
+    film,
     frequencies,
     friction,
     high_speed,
@@ -68,6 +71,7 @@ from . import (
     serve,
     stand,
     sweep,
+    temperature,
 )
 from ._console import ascii_spelling, needs_spelling, output_width, setup_streams
 
@@ -105,7 +109,8 @@ def _main_options(
     setup_streams()  # also when the app runs without main() (typer's test runner)
 
 
-for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, friction, runout, clearance, serve):
+for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, film, temperature, friction, runout,
+                clearance, serve):
     for _name, _command in _module.COMMANDS.items():
         if isinstance(_command, typer.Typer):
             app.add_typer(_command, name=_name)

@@ -24,11 +24,16 @@ from ._common import (
     CatalogFile,
     ContactAngle,
     JsonFlag,
+    OilOpt,
+    TemperatureOpt,
+    Viscosity100Opt,
+    ViscosityIndexOpt,
     check_not_input,
     check_output_directory,
     console,
     emit_json,
     inputs_echo,
+    lubricant_viscosity,
     parse_length,
     parse_speeds,
     parse_viscosity,
@@ -224,10 +229,32 @@ def torque(
         str,
         typer.Option(
             "--lubrication",
-            help="For --model skf: grease (default) | oil-air | oil-jet (oil bath is not modelled).",
+            help="For --model skf: grease (default) | oil-air | oil-jet | oil-bath (with --oil-level, "
+            "--drag-loss-factor).",
             rich_help_panel="Handbook constants",
         ),
     ] = "grease",
+    oil: OilOpt = None,
+    temperature: TemperatureOpt = None,
+    viscosity_index: ViscosityIndexOpt = None,
+    viscosity_100: Viscosity100Opt = None,
+    oil_level: Annotated[
+        str | None,
+        typer.Option(
+            "--oil-level",
+            help="For --model skf --lubrication oil-bath: H from the lowest point of the outer raceway, "
+            "e.g. '5 mm' (at most to the bearing's centre).",
+            rich_help_panel="Handbook constants",
+        ),
+    ] = None,
+    drag_loss_factor: Annotated[
+        float | None,
+        typer.Option(
+            "--drag-loss-factor",
+            help="For --lubrication oil-bath: V_M read from SKF's drag loss diagram at H/d_m.",
+            rich_help_panel="Handbook constants",
+        ),
+    ] = None,
     series: Annotated[
         str | None,
         typer.Option(
@@ -255,8 +282,12 @@ def torque(
         b = _skf_bearing(b, series)
         fr, fa, n = _cases(radial_load, axial_load, speed)
         _check_speed(b, n)
-        _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out)
+        _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out,
+                    oil=(oil, temperature, viscosity_index, viscosity_100), bath=(oil_level, drag_loss_factor))
         return
+    if any(x is not None for x in (oil, temperature, viscosity_index, viscosity_100, oil_level, drag_loss_factor)):
+        raise InputError("oil: --oil, --temperature, --viscosity-index, --viscosity-100, --oil-level and "
+                         "--drag-loss-factor go with --model skf")
     if series is not None:
         raise InputError("series: only the skf model takes --series (SKF's geometry constants)")
     b = _friction_bearing(
@@ -393,16 +424,32 @@ def _skf_bearing(b, series):
     return b
 
 
-def _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out):
+def _skf_torque(b, fr, fa, n, viscosity, lubrication, json_out, oil=(None,) * 4, bath=(None, None)):
     """The SKF four-term model (:func:`bearinglab.friction.skf_for_bearing`): moments, power loss, mu_sl."""
     from .. import friction, tables
     from ..units import RPM
-    if viscosity is None:
-        raise InputError("viscosity: the skf model needs --viscosity (e.g. '30 cSt'; of the base oil for grease)")
-    nu = parse_viscosity(viscosity)
+    if viscosity is None and oil[0] is None:
+        raise InputError("viscosity: the skf model needs --viscosity (e.g. '30 cSt'; of the base oil for grease), "
+                         "or --oil VG68 with --temperature")
+    nu = lubricant_viscosity(viscosity, *oil, required=True).viscosity
+    kw = {}
+    if lubrication == "oil-bath":
+        if bath[0] is None or bath[1] is None:
+            raise InputError("oil-level: --lubrication oil-bath needs --oil-level (e.g. '5 mm') and "
+                             "--drag-loss-factor (V_M of SKF's diagram at H/d_m)")
+        h = parse_length(bath[0], "oil-level", zero=True)
+        dm = b.mean_diameter
+        if h > dm / 2:
+            raise InputError(f"oil-level must be <= d_m/2 = {dm / 2 * 1e3:g} mm [mm] (at most up to the bearing's "
+                             f"centre), got {h * 1e3:g} mm")
+        if not 0.0 <= bath[1] <= 1.0:
+            raise InputError(f"drag-loss-factor must be in [0, 1] [-] (V_M of SKF's diagram), got {bath[1]:g}")
+        kw = {"oil_level": h, "drag_loss_factor": bath[1]}
+    elif bath[0] is not None or bath[1] is not None:
+        raise InputError("oil-level: --oil-level and --drag-loss-factor go with --lubrication oil-bath")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the result returns its warnings (a seal moment left out)
-        m = friction.skf_for_bearing(b, fr, fa, n, nu, lubrication=lubrication)  # checks the lubrication
+        m = friction.skf_for_bearing(b, fr, fa, n, nu, lubrication=lubrication, **kw)  # checks the lubrication
     notes = [*m.warnings, *_skf_warnings(b, fr, fa)]
     moments = tables.rows(tables.skf_torque(m))
     rpm = tables.significant(n / RPM)

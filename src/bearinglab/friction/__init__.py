@@ -11,6 +11,7 @@ SKF four-term model (:mod:`.skf`)
 ---------------------------------
 skf, skf_for_bearing                   M = M_rr + M_sl + M_seal + M_drag
 series_constants, bearing_series, seal_constants, sliding_friction_coefficient   its parts and tables
+drag_moment                            M_drag of an oil bath
 
 Dispatcher
 ----------
@@ -53,6 +54,8 @@ from .skf import (
     SKFConstants,
     SKFTorque,
     bearing_series,
+    drag_moment,
+    replenishment_factor,
     seal_constants,
     series_constants,
     skf,
@@ -81,12 +84,14 @@ __all__ = [
     "bearing_series",
     "classic",
     "combined_branch_governs",
+    "drag_moment",
     "equivalent_static_load",
     "handbook_friction_coefficient",
     "load_term",
     "load_term_constants",
     "one_term",
     "palmgren",
+    "replenishment_factor",
     "seal_constants",
     "series_constants",
     "skf",

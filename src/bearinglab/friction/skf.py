@@ -12,6 +12,8 @@ series_constants           the constants of a series (deep groove: SKF table, by
 bearing_series             the series of a designation ("6205-2RSH" -> "62", "61811-2RS1" -> "618")
 seal_constants             K_S1, beta, K_S2 of a seal type and outside diameter
 sliding_friction_coefficient   mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL
+drag_moment                M_drag of a ball bearing in an oil bath (SKF's drag losses)
+replenishment_factor       Phi_rs, the kinematic replenishment/starvation reduction factor
 DEEP_GROOVE_CONSTANTS, SEAL_CONSTANTS, LUBRICATION_METHODS   the tables
 
 The published model is in N, mm, rpm and mm^2/s with moments in N mm; the API is SI (N, m, rad/s,
@@ -22,7 +24,9 @@ References
 .. [1] SKF, *Rolling bearings*, catalogue PUB BU/P1 17000 EN, 2018, section "Friction": the SKF model
    for calculating the frictional moment (rolling, sliding, seal and drag moments; inlet shear heating
    and kinematic replenishment/starvation factors; the variables G_rr, G_sl of its table for radial
-   bearings; the geometry constants of deep-groove ball bearings by series; the seal constants).
+   bearings; the geometry constants of deep-groove ball bearings by series; the seal constants; the
+   drag losses of an oil bath, "Drag losses in oil bath lubrication", with the drag loss factor V_M read
+   from its diagram against H/d_m).
 """
 
 from __future__ import annotations
@@ -45,6 +49,8 @@ __all__ = [
     "SKFTorque",
     "SealConstants",
     "bearing_series",
+    "drag_moment",
+    "replenishment_factor",
     "seal_constants",
     "series_constants",
     "skf",
@@ -128,7 +134,7 @@ _NON_CONTACT = ("Z", "ZZ", "RZ", "VV")
 # Checked (issue 12): K_rs, K_Z = 3.1 (deep groove), mu_bl = 0.15, mu_EHL = 0.05 (mineral oil; 0.04
 # synthetic, 0.1 transmission fluids) and the factors phi_ish, phi_rs, phi_bl agree with the catalogue
 # text (yumpu.com document 55668573, page 105) and an independent public implementation.
-LUBRICATION_METHODS = {"grease": 6e-8, "oil-air": 6e-8, "oil-jet": 3e-8}
+LUBRICATION_METHODS = {"grease": 6e-8, "oil-air": 6e-8, "oil-jet": 3e-8, "oil-bath": 3e-8}
 _KZ = {"radial": 3.1, "angular": 4.4}  # bearing-type constant K_Z (deep groove, angular contact)
 # mu_bl and mu_EHL (mineral oil) of the sliding friction coefficient
 _MU_BOUNDARY, _MU_EHL = 0.15, 0.05
@@ -259,6 +265,116 @@ def sliding_friction_coefficient(kinematic_viscosity, shaft_speed, mean_diameter
 _mu_sl = sliding_friction_coefficient  # skf() takes a keyword of the same name
 
 
+def replenishment_factor(kinematic_viscosity, shaft_speed, bore, outside_diameter, *, lubrication="grease",
+                         bearing_type="radial"):
+    r"""Kinematic replenishment/starvation reduction factor Phi_rs of the SKF model.
+
+    Parameters
+    ----------
+    kinematic_viscosity : array_like
+        nu. [m^2/s]
+    shaft_speed : array_like
+        n. [rad/s]
+    bore, outside_diameter : array_like
+        d, D. [m]
+    lubrication : {"grease", "oil-air", "oil-jet", "oil-bath"}
+        Sets K_rs.
+    bearing_type : {"radial", "angular"}
+        Sets K_Z.
+
+    Returns
+    -------
+    ndarray or float
+        :math:`\Phi_{rs} = \exp(-K_{rs}\nu n (d + D)\sqrt{K_Z/(2(D-d))})` (rpm, mm^2/s, mm), 1 for a
+        fully replenished inlet, falling as the oil cannot flow back into the track. [-]
+
+    Examples
+    --------
+    >>> print(f"{replenishment_factor(20e-6, 10000 * 2 * np.pi / 60, 25e-3, 52e-3):.4f}")
+    0.8014
+    """
+    if lubrication not in LUBRICATION_METHODS:
+        raise InputError(f"lubrication must be one of {list(LUBRICATION_METHODS)}, got {lubrication!r}")
+    if bearing_type not in _KZ:
+        raise InputError(f"bearing_type must be one of {list(_KZ)}, got {bearing_type!r}")
+    nu = check_positive("kinematic_viscosity", kinematic_viscosity, "m^2/s") / _CST
+    n = np.abs(np.asarray(shaft_speed, dtype=float)) / _RPM
+    d = check_positive("bore", bore, "m") / _MM
+    big = check_positive("outside_diameter", outside_diameter, "m") / _MM
+    return np.exp(-LUBRICATION_METHODS[lubrication] * nu * n * (d + big) * np.sqrt(_KZ[bearing_type] / (2 * (big - d))))[()]
+
+
+def drag_moment(shaft_speed, kinematic_viscosity, bore, outside_diameter, oil_level, drag_loss_factor, *,
+                bearing_type="radial", rows=1):
+    r"""Drag moment of a ball bearing turning in an oil bath (SKF model).
+
+    Parameters
+    ----------
+    shaft_speed : array_like
+        n (its sign does not matter). [rad/s]
+    kinematic_viscosity : array_like
+        nu of the oil at the operating temperature. [m^2/s]
+    bore, outside_diameter : array_like
+        d and D; d_m = (d + D)/2. [m]
+    oil_level : array_like
+        H, from the lowest point of the outer ring raceway to the oil surface; 0 <= H <= d_m/2 (the
+        bearing's centre line: a higher level is refused). [m]
+    drag_loss_factor : array_like
+        V_M, read from SKF's diagram of the drag loss factor against H/d_m for ball bearings. [-]
+    bearing_type : {"radial", "angular"}
+        Deep groove (K_Z = 3.1) or angular contact (K_Z = 4.4).
+    rows : int
+        Ball rows i_rw. [-]
+
+    Returns
+    -------
+    ndarray or float
+        M_drag. [N m]
+
+    Notes
+    -----
+    In the catalogue's units (n in rpm, d_m, H in mm, nu in mm^2/s, M in N mm):
+
+    .. math::
+        M_{drag} = 0.4 V_M K_{ball} d_m^5 n^2 + 1.093\times10^{-7} n^2 d_m^3
+        \left(\frac{n d_m^2 f_t}{\nu}\right)^{-1.379} R_s
+
+    with :math:`K_{ball} = i_{rw} K_Z (d + D)/(D - d)\times10^{-12}`,
+    :math:`t = 2\cos^{-1}[(0.6 d_m - H)/(0.6 d_m)]`, :math:`f_t = \sin(t/2)` (t <= pi, always so for
+    H <= d_m/2), :math:`R_s = 0.36 d_m^2 (t - \sin t) f_A` and :math:`f_A = 0.05 K_Z (D + d)/(D - d)`.
+    The first term is the ball set ploughing through the bath, the second the oil's viscous drag.
+
+    Examples
+    --------
+    >>> m = drag_moment(3000 * 2 * np.pi / 60, 20e-6, 25e-3, 52e-3, 5e-3, 0.0002)
+    >>> print(f"{m * 1e3:.4f} N mm")
+    0.9350 N mm
+    """
+    n = np.abs(np.asarray(shaft_speed, dtype=float)) / _RPM
+    nu = check_positive("kinematic_viscosity", kinematic_viscosity, "m^2/s") / _CST
+    d = check_positive("bore", bore, "m") / _MM
+    big = check_positive("outside_diameter", outside_diameter, "m") / _MM
+    h = check_nonnegative("oil_level", oil_level, "m") / _MM
+    vm = check_nonnegative("drag_loss_factor", drag_loss_factor, "-")
+    if bearing_type not in _KZ:
+        raise InputError(f"bearing_type must be one of {list(_KZ)}, got {bearing_type!r}")
+    if isinstance(rows, bool) or rows not in (1, 2):
+        raise InputError(f"rows must be 1 or 2 [-], got {rows!r}")
+    dm = 0.5 * (d + big)
+    if np.any(h > 0.5 * dm):
+        raise InputError(f"oil_level must be <= d_m/2 = {float(np.min(0.5 * dm)):g} mm [mm] (at most up to the "
+                         f"bearing's centre), got {float(np.max(h)):g} mm")
+    kz = _KZ[bearing_type]
+    k_ball = rows * kz * (d + big) / (big - d) * 1e-12
+    t = 2.0 * np.arccos((0.6 * dm - h) / (0.6 * dm))
+    f_t = np.sin(0.5 * t)
+    r_s = 0.36 * dm**2 * (t - np.sin(t)) * 0.05 * kz * (big + d) / (big - d)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        viscous = np.where(h > 0, 1.093e-7 * n**2 * dm**3 * (n * dm**2 * f_t / nu) ** -1.379 * r_s, 0.0)
+    viscous = np.where(n > 0, viscous, 0.0)
+    return ((0.4 * vm * k_ball * dm**5 * n**2 + viscous) * _MM)[()]
+
+
 class SKFTorque(NamedTuple):
     """The four moments of the SKF model, their sum and the power loss (SI)."""
 
@@ -269,7 +385,7 @@ class SKFTorque(NamedTuple):
     seal_moment: np.ndarray
     """M_seal. [N m]"""
     drag_moment: np.ndarray
-    """M_drag (0: oil bath is not modelled). [N m]"""
+    """M_drag of an oil bath (0 for other lubrication). [N m]"""
     total_moment: np.ndarray
     """M. [N m]"""
     power_loss: np.ndarray
@@ -306,7 +422,7 @@ def _load_variables(fr, fa, n, dm, c, bearing_type, c0):
 def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside_diameter, *, series=None,
         constants=None, bearing_type="radial", lubrication="grease", static_load_rating=None, seal=None,
         seals=2, seal_diameter=None, seal_constants_override=None, sliding_friction_coefficient=None,
-        ehl_coefficient=_MU_EHL):
+        ehl_coefficient=_MU_EHL, oil_level=None, drag_loss_factor=None):
     r"""Frictional moment of a deep-groove or angular-contact ball bearing by the SKF four-term model.
 
     Parameters
@@ -325,8 +441,9 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
         The geometry constants directly (required for angular contact). [-]
     bearing_type : {"radial", "angular"}
         Deep groove (K_Z = 3.1) or angular contact (K_Z = 4.4).
-    lubrication : {"grease", "oil-air", "oil-jet"}
-        Sets K_rs; oil bath is refused (its drag moment is not modelled).
+    lubrication : {"grease", "oil-air", "oil-jet", "oil-bath"}
+        Sets K_rs; an oil bath adds its drag moment (:func:`drag_moment`; needs ``oil_level`` and
+        ``drag_loss_factor``).
     static_load_rating : float, optional
         C0, needed for a deep-groove bearing under axial load. [N]
     seal : str, optional
@@ -341,6 +458,10 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
         mu_sl in place of the model's (e.g. fitted on a rig). [-]
     ehl_coefficient : float
         mu_EHL of the lubricant, 0.05 for mineral oils. [-]
+    oil_level : float, optional
+        Oil bath: H from the lowest point of the outer raceway. [m]
+    drag_loss_factor : float, optional
+        Oil bath: V_M of SKF's diagram at H/d_m. [-]
 
     Returns
     -------
@@ -369,8 +490,14 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
     199.67 N mm, of which the seals 196.98
     """
     if lubrication not in LUBRICATION_METHODS:
-        hint = " (oil bath: its drag moment is not modelled here)" if "bath" in str(lubrication) else ""
-        raise InputError(f"lubrication must be one of {list(LUBRICATION_METHODS)}, got {lubrication!r}{hint}")
+        raise InputError(f"lubrication must be one of {list(LUBRICATION_METHODS)}, got {lubrication!r}")
+    bath = lubrication == "oil-bath"
+    if bath and (oil_level is None or drag_loss_factor is None):
+        raise InputError("oil_level: an oil bath needs the oil level H and the drag loss factor V_M (SKF's diagram "
+                         "at H/d_m) for its drag moment")
+    if not bath and (oil_level is not None or drag_loss_factor is not None):
+        raise InputError(f"oil_level: the oil level and drag loss factor belong to lubrication='oil-bath', not "
+                         f"{lubrication!r}")
     if bearing_type not in _KZ:
         raise InputError(f"bearing_type must be one of {list(_KZ)}, got {bearing_type!r}")
     if constants is None:
@@ -397,9 +524,11 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
           else check_nonnegative("sliding_friction_coefficient", sliding_friction_coefficient, "-"))
     m_sl = g_sl * mu
     m_seal = _seal_moment(seal, seals, seal_diameter, seal_constants_override, outside_diameter)
-    total = m_rr + m_sl + m_seal
+    m_drag = (drag_moment(omega, nu * _CST, d * _MM, big * _MM, oil_level, drag_loss_factor,
+                          bearing_type=bearing_type) / _MM if bath else 0.0)
+    total = m_rr + m_sl + m_seal + m_drag
     shape = np.broadcast(total, mu).shape
-    out = [np.broadcast_to(x * _MM, shape)[()] for x in (m_rr, m_sl, m_seal, 0.0, total)]
+    out = [np.broadcast_to(x * _MM, shape)[()] for x in (m_rr, m_sl, m_seal, m_drag, total)]
     return SKFTorque(*out, np.broadcast_to(total * _MM * omega, shape)[()], np.broadcast_to(mu, shape)[()])
 
 

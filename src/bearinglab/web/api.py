@@ -7,7 +7,7 @@ that compute are reachable: no option that reads or writes a file, none that sta
 
 Endpoints
 ---------
-ENDPOINTS     endpoint name -> the command's words (``friction`` -> ``friction torque``)
+ENDPOINTS     endpoint name -> the command's words (``friction`` -> ``friction torque``; ``film``, ``temperature``)
 options       the options an endpoint takes, by query-parameter name
 call          run an endpoint with query parameters -> ApiResult (status, document or error)
 error_body    the JSON body of a failed call: ``{"detail", "parameter", "error"}``
@@ -44,6 +44,8 @@ ENDPOINTS = {
     "life": ("life",),
     "friction": ("friction", "torque"),
     "clearance": ("clearance",),
+    "film": ("film",),
+    "temperature": ("temperature",),
 }
 
 # not reachable from the web: files (read or written), clusters, output format, help
