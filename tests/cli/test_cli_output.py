@@ -38,9 +38,13 @@ INVOCATIONS = {
     "load-distribution": ("-b B218 --fx 5kN --fz 10kN --my 50N*m", 0),
     "bearing-set": ("-b B218 --arrangement DB --spacing 100mm --preload 2kN --fx 3kN", 0),
     "life": ("-b 6205-2RS --fx 2kN --speed 3000rpm --viscosity 20cSt", 0),
+    "clearance": ("-b 6208-2RS1/C3 --shaft-fit k5 --housing-fit H7 --inner-ring-temperature 60degC", 0),
+    "film": ("-b B218 --fx 5kN --fz 10kN --speed 6000rpm --oil VG68 --temperature 70degC --roughness 0.1um", 0),
+    "temperature": ("-b 6208 -R 2kN --speed 3000rpm --oil VG68", 0),
     "serve": ("--port 99999", 2),  # refused before anything starts: the one-line error, no traceback
     "catalog list": ("", 0),
     "catalog show": ("B218", 0),
+    "catalog search": ("--bore 40mm --type deep-groove", 0),
     "friction torque": ("--model skf -b 6205-2RS --radial-load 0N:2000N:1000N -n 2000rpm --viscosity 30cSt", 0),
     "friction lab": ("examples/friction/s1_readings.toml --out {tmp}/lab", 0),
     "friction template": ("-b 18", 0),
