@@ -199,7 +199,8 @@ def _command_document(parsed, extra=()):
     def action(paths):
         code, out, err = _run_command([*argv(parsed, documents=paths), *extra])
         if code == 0:
-            return json.loads(out) if out.strip() else None
+            doc = json.loads(out) if out.strip() else None
+            return _posted(doc, {str(p) for p in paths.values()})
         errors = [line for line in err.splitlines() if line.startswith(_ERROR)]
         message = errors[-1][len(_ERROR):] if errors else (err.strip().splitlines() or ["failed"])[-1]
         for path in paths.values():  # the temporary file is the user's posted document
@@ -207,6 +208,13 @@ def _command_document(parsed, extra=()):
         raise _failure(parsed.calculation, message, "convergence" if code == 3 else "input")
 
     return _with_documents(parsed, action)
+
+
+def _posted(doc, paths):
+    """The document with the temporary file of a posted document named as what it is."""
+    if not paths or not isinstance(doc, dict):
+        return doc
+    return {k: ("(posted document)" if isinstance(v, str) and v in paths else v) for k, v in doc.items()}
 
 
 def _catalog_document(name):

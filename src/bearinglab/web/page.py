@@ -141,8 +141,8 @@ def _left_out(section, values):
             return "Left out: a set is built from a catalog bearing; pick one."
     if section.key == "friction":
         model = values.get("model") or "one-term"
-        if model == "palmgren" and not has.get("viscosity"):
-            return "Left out: the Palmgren model needs the lubricant viscosity."
+        if model in ("palmgren", "skf") and not has.get("viscosity"):
+            return f"Left out: the {model} model needs the lubricant viscosity."
         if model == "two-term":
             return "Left out: the two-term model needs its measured f0 (bearinglab friction lab)."
     return ""
