@@ -58,12 +58,15 @@ class Parsed(NamedTuple):
     values: dict
     """Field name -> the checked value (SI floats or arrays, ints, choices, flags, text)."""
     cases: int
-    """How many cases the request holds (the product of a grid, the longest list ...)."""
+    """How many cases the request holds (the product of a grid, the longest list, mask lines ...)."""
 
     @property
     def heavy(self):
-        """Whether the request may take long: more than one case, or a heavy calculation."""
-        return self.cases > 1 or self.calculation.heavy
+        """Whether the request may take long: a list or range of more than one value, or a heavy
+        calculation (runout)."""
+        lists = [v for f in self.calculation.fields if f.many and f.kind != "text"
+                 for v in [self.values.get(f.name)] if v is not None]
+        return self.calculation.heavy or any(len(v) > 1 for v in lists)
 
 
 def _cases(calc, values, given, limit):

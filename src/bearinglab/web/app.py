@@ -60,6 +60,29 @@ def _description(case_limit, time_budget):
     )
 
 
+class _BoundedBody:
+    """A request whose Content-Length is over :data:`BODY_LIMIT` is answered 413 before it is read.
+
+    A plain ASGI middleware (not Starlette's BaseHTTPMiddleware, which hides a client's disconnect
+    from the endpoint, so that its work would not be cancelled)."""
+
+    def __init__(self, app):
+        self.app = app
+
+    async def __call__(self, scope, receive, send):
+        if scope["type"] == "http":
+            length = dict(scope.get("headers") or ()).get(b"content-length")
+            if length is not None and (not length.isdigit() or int(length) > BODY_LIMIT):
+                body = tables.json_text(api.error_body(
+                    f"the request body is larger than {BODY_LIMIT} bytes", None, "limit")).encode()
+                await send({"type": "http.response.start", "status": 413,
+                            "headers": [(b"content-type", b"application/json"),
+                                        (b"content-length", str(len(body)).encode())]})
+                await send({"type": "http.response.body", "body": body})
+                return
+        await self.app(scope, receive, send)
+
+
 class _Server:
     """The pools and limits of one application."""
 
@@ -128,13 +151,7 @@ def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_
     templates.env.globals["scales"] = page.scales
     templates.env.globals["column_scales"] = page.column_scales
 
-    @app.middleware("http")
-    async def bounded_body(request: Request, call_next):
-        length = request.headers.get("content-length")
-        if length is not None and (not length.isdigit() or int(length) > BODY_LIMIT):
-            return _json(413, api.error_body(f"the request body is larger than {BODY_LIMIT} bytes",
-                                             None, "limit"))
-        return await call_next(request)
+    app.add_middleware(_BoundedBody)
 
     async def read_body(request):
         chunks, size = [], 0
