@@ -172,6 +172,11 @@ async def _section(section, values, server):
                 "query": {}}
     query = _query(section, values)
     status, doc = await server.compute(section.calculation, query)
+    if status == 422 and section.key == "friction" and doc.get("parameter") == "model":
+        # the model has no constants for this bearing (SKF's are for deep-groove bearings): the
+        # section does not apply; it is no error of the form
+        return {"section": section, "document": None, "message": "", "figure": "", "query": {},
+                "left_out": f"Left out: {doc['detail'].removeprefix('model: ')}."}
     result = {"section": section, "document": doc if status == 200 else None, "left_out": "",
               "message": "" if status == 200 else doc["detail"], "figure": "", "query": query,
               "parameter": None if status == 200 else doc.get("parameter"), "error": doc}
