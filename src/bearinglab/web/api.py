@@ -15,24 +15,34 @@ error_body    the JSON body of a failed call: ``{"detail", "parameter", "error"}
 web_error     a RequestError worded for the web: ``(status, body)``
 model         the pydantic model of a calculation's fields (the OpenAPI schema of its body)
 parameters    the OpenAPI query parameters of a calculation
+
+Deprecated (removed in the next release): ApiResult, call, options, parameter_of, web_message.
 """
 
 from __future__ import annotations
 
 import json
+import re
+import warnings
 from functools import cache
+from typing import NamedTuple
 
 from .. import calculations
 from ..calculations import CALCULATIONS, RequestError
 
 __all__ = [
     "ENDPOINTS",
+    "ApiResult",
     "body_values",
+    "call",
     "error_body",
     "model",
+    "options",
+    "parameter_of",
     "parameters",
     "query_values",
     "web_error",
+    "web_message",
 ]
 
 #: URL path under /api -> calculation name.
@@ -228,3 +238,105 @@ def parameters(name):
     """
     return [{"name": f.name, "in": "query", "required": f.required, "description": _describe(f),
              "schema": _schema(f)} for f in CALCULATIONS[name].fields]
+
+
+# ----------------------------------------------------------------------------- deprecated (0.2)
+# The names of the command-line shim this module was; they warn and are removed in the next release.
+class ApiResult(NamedTuple):
+    """The answer of :func:`call` (deprecated)."""
+
+    status: int
+    """HTTP status."""
+    document: object
+    """The document, or the error body."""
+
+
+def _deprecated(name, instead):
+    warnings.warn(f"bearinglab.web.api.{name} is deprecated; use {instead}", DeprecationWarning,
+                  stacklevel=3)
+
+
+def options(endpoint):
+    """Deprecated: the parameters of ``endpoint`` -> (command-line option, is a flag).
+
+    Parameters
+    ----------
+    endpoint : str
+        A key of :data:`ENDPOINTS`.
+
+    Returns
+    -------
+    dict
+    """
+    _deprecated("options", "bearinglab.calculations.CALCULATIONS[name].fields")
+    name = ENDPOINTS.get(endpoint)
+    fields = CALCULATIONS[name].fields if name else ()
+    return {f.name: (f.cli_option, f.kind == "flag") for f in fields}
+
+
+def call(endpoint, query):
+    """Deprecated: run ``endpoint`` in this process (the server runs it in a worker process).
+
+    Parameters
+    ----------
+    endpoint : str
+        A key of :data:`ENDPOINTS`.
+    query : mapping of str to str
+        The parameters.
+
+    Returns
+    -------
+    ApiResult
+    """
+    _deprecated("call", "bearinglab.calculations.parse and run, or the HTTP API")
+    name = ENDPOINTS.get(endpoint)
+    if name is None:
+        return ApiResult(404, error_body(f"{endpoint}: no such endpoint", None, "not-found"))
+    try:
+        return ApiResult(200, calculations.run(calculations.parse(name, dict(query))))
+    except RequestError as exc:
+        return ApiResult(*web_error(exc))
+
+
+def web_message(message, endpoint):
+    """Deprecated: a command-line message with the options of ``endpoint`` as API parameters.
+
+    Parameters
+    ----------
+    message : str
+        The one-line message.
+    endpoint : str
+        A key of :data:`ENDPOINTS`.
+
+    Returns
+    -------
+    str
+    """
+    _deprecated("web_message", "RequestError.worded")
+    from ..calculations.documents import _failure
+
+    return web_error(_failure(CALCULATIONS[ENDPOINTS[endpoint]], message, "input"))[1]["detail"]
+
+
+def parameter_of(message, known=()):
+    """Deprecated: the parameter a command-line message names (``axial-load: ...`` -> ``axial_load``).
+
+    Parameters
+    ----------
+    message : str
+        The one-line message.
+    known : collection of str
+        The endpoint's parameters; a name not among them is not returned (unless empty).
+
+    Returns
+    -------
+    str or None
+    """
+    _deprecated("parameter_of", "RequestError.parameter")
+    for pattern in (re.compile(r"'?--([a-z][a-z0-9-]*)"), re.compile(r"^([a-z][a-z0-9-]*)(?::| must | needs )")):
+        match = pattern.search(message)
+        if match:
+            name = match.group(1).replace("-", "_")
+            if not known or name in known:
+                return name
+    return None

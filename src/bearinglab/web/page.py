@@ -16,6 +16,8 @@ quantity        a result key with its unit suffix -> a readable label and unit
 number          a value as the page shows it: 6 significant digits, float noise as 0
 scales          the largest value of each unit in a document (what counts as noise next to it)
 column_scales   the same per column of a table of rows
+
+Deprecated (removed in the next release): Result, compute, figure_svg.
 """
 
 from __future__ import annotations
@@ -36,8 +38,11 @@ __all__ = [
     "FIELDS",
     "NOISE",
     "SECTIONS",
+    "Result",
     "Section",
     "column_scales",
+    "compute",
+    "figure_svg",
     "number",
     "quantity",
     "render_context",
@@ -427,3 +432,78 @@ def column_scales(rows):
         Column key -> scale.
     """
     return {key: max((_magnitude(row.get(key)) for row in rows), default=0.0) for key in rows[0]} if rows else {}
+
+
+# ----------------------------------------------------------------------------- deprecated (0.2)
+class Result(NamedTuple):
+    """A section's outcome (deprecated: :func:`render_context` gives dicts)."""
+
+    section: Section
+    document: object
+    message: str
+    figure: str
+
+
+class _InProcess:
+    """Runs calculations in this process (for the deprecated synchronous functions)."""
+
+    async def compute(self, name, given, request=None, *, what="document"):
+        from .. import calculations
+        from .api import web_error
+
+        try:
+            parsed = calculations.parse(name, given)
+            value = calculations.figure_svg(parsed) if what == "figure" else calculations.run(parsed)
+        except calculations.RequestError as exc:
+            return web_error(exc)
+        return 200, value
+
+
+def _warn(name):
+    import warnings
+
+    warnings.warn(f"bearinglab.web.page.{name} is deprecated; use render_context", DeprecationWarning,
+                  stacklevel=3)
+
+
+def compute(values):
+    """Deprecated: every section for the form ``values``, computed in this process.
+
+    Parameters
+    ----------
+    values : dict of str to str
+        The form.
+
+    Returns
+    -------
+    results : list of Result
+    field_errors : dict of str to str
+    """
+    _warn("compute")
+    context = asyncio.run(render_context(values, _InProcess()))
+    results = [Result(r["section"], r["document"], r["message"] or r["left_out"], r["figure"])
+               for r in context["results"]]
+    return results, context["errors"]
+
+
+def figure_svg(endpoint, query):
+    """Deprecated: the calculation's figure as SVG text, or ''.
+
+    Parameters
+    ----------
+    endpoint : str
+        A calculation name.
+    query : dict
+        Its parameters.
+
+    Returns
+    -------
+    str
+    """
+    _warn("figure_svg")
+    from .. import calculations
+
+    try:
+        return calculations.figure_svg(calculations.parse(endpoint, query))
+    except calculations.RequestError:
+        return ""
