@@ -9,7 +9,8 @@ process and measures, with a bounded number of requests and a bounded time:
 3. the server's memory (the server process with its forkserver and workers, resident set) after 1000
    mixed requests: light, lists, errors, catalog searches and a few heavy ones.
 
-Run: ``PYTHONPATH=src python bench/web_load.py`` (``--quick`` for a smoke run). The machine's load is
+Run: ``PYTHONPATH=src python bench/web_load.py`` (``--quick`` for a smoke run; ``--light-only`` for
+the first figure alone, e.g. against another version's server with its ``src`` on ``PYTHONPATH``). The machine's load is
 printed with the figures: on a shared machine they are a lower bound.
 """
 
@@ -142,10 +143,10 @@ async def _mixed(url, n):
 
 def _pct(values, q):
     values = sorted(values)
-    return values[min(len(values) - 1, int(round(q * (len(values) - 1))))]
+    return values[min(len(values) - 1, round(q * (len(values) - 1)))]
 
 
-def main(quick=False):
+def main(quick=False, light_only=False):
     n_light, n_beside, n_mixed = (200, 10, 100) if quick else (1500, 40, 1000)
     port = _free_port()
     proc, url = _start(port)
@@ -158,6 +159,8 @@ def main(quick=False):
         assert set(statuses) == {200}, set(statuses)
         print(f"RESULT web_light rate={rate:.0f}/s n={n_light} concurrency={CONCURRENCY} "
               f"p50={_pct(lat, 0.5) * 1e3:.1f}ms p99={_pct(lat, 0.99) * 1e3:.1f}ms")
+        if light_only:  # e.g. to compare with another version of the server under the same load
+            return 0
         beside, running, heavy_status = asyncio.run(_light_beside_heavy(url, n_beside))
         print(f"RESULT web_light_beside_4_heavy n={n_beside} p50={statistics.median(beside) * 1e3:.1f}ms "
               f"p99={_pct(beside, 0.99) * 1e3:.1f}ms max={max(beside) * 1e3:.1f}ms "
@@ -175,4 +178,4 @@ def main(quick=False):
 
 
 if __name__ == "__main__":
-    sys.exit(main(quick="--quick" in sys.argv))
+    sys.exit(main(quick="--quick" in sys.argv, light_only="--light-only" in sys.argv))

@@ -8,8 +8,8 @@ never pass by skipping them (``.ci/run`` installs Chromium).
 import os
 import re
 import shutil
-import subprocess
 import socket
+import subprocess
 import threading
 import time
 from pathlib import Path

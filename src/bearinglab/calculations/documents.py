@@ -4,7 +4,9 @@
 :mod:`bearinglab.tables`. The other calculations run their command's function in this process with
 the request's checked values as options and read the document it prints: the command line builds
 those documents inline, and until each is factored into a function of its own, running the command
-is what keeps the two identical (``tests/calculations/test_documents.py``). Capturing the printed
+is what keeps the two identical (``tests/calculations/test_documents.py``). The command's function is
+called with the checked values (no command line is parsed again); figures and posted documents go
+through the whole command line with a private temporary file. Capturing the printed
 document redirects this process's stdout, so a server runs these in worker processes, one request per
 process at a time (:mod:`bearinglab.web.workers`); never in threads of one process.
 
@@ -32,6 +34,8 @@ from .fields import RequestError
 
 __all__ = ["RunFailure", "argv", "figure_svg", "run"]
 
+# run through the whole command line: runout's command is a group callback that needs click's context
+_VIA_COMMAND_LINE = {"runout", "catalog"}
 _CAPTURE = threading.Lock()  # stdout is process-wide: one captured command at a time in a process
 _ERROR = "bearinglab: error: "
 
@@ -119,6 +123,61 @@ def _run_command(words):
     return code, out.getvalue(), err.getvalue()
 
 
+_DIRECT = {}  # command words -> (callback, option -> parameter name, defaults); built once a process
+
+
+def _direct(words):
+    """The command's function, the python name of each option and the defaults (from click's params)."""
+    if words not in _DIRECT:
+        from .. import cli
+
+        command = cli._click_command()
+        for word in words:
+            command = command.commands[word]
+        names = {o: p.name for p in command.params for o in p.opts if o.startswith("--")}
+        defaults = {p.name: (() if p.multiple and p.default is None else p.default)
+                    for p in command.params}
+        _DIRECT[words] = (command.callback, names, defaults)
+    return _DIRECT[words]
+
+
+def _call_command(parsed):
+    """Call the command's function with the checked values and ``--json``, without parsing a command
+    line: (exit code, stdout, stderr) as :func:`_run_command` gives them. The values the layer has
+    checked (whole numbers, numbers, flags) are passed as such, quantities as the text given."""
+    from .. import cli
+    from ..errors import ConvergenceError
+
+    calc = parsed.calculation
+    callback, names, defaults = _direct(calc.command)
+    kwargs = dict(defaults, json_out=True)
+    for f in calc.fields:
+        if f.name not in parsed.given:
+            continue
+        value = parsed.values[f.name]
+        name = names[f.cli_option]
+        if f.kind in ("int", "number", "flag"):
+            kwargs[name] = value
+        elif f.many and f.kind == "text":
+            kwargs[name] = list(value)
+        else:
+            kwargs[name] = str(parsed.given[f.name]).strip()
+    out, err = io.StringIO(), io.StringIO()
+    code = 0
+    with _CAPTURE, warnings.catch_warnings(), contextlib.redirect_stdout(out), \
+            contextlib.redirect_stderr(err):
+        warnings.simplefilter("ignore", RuntimeWarning)
+        try:
+            callback(**kwargs)
+        except ConvergenceError as exc:
+            code = 2 if exc.physical else 3
+            print(f"{_ERROR}{exc.summary}", file=err)
+        except InputError as exc:
+            code = 2
+            print(f"{_ERROR}{cli._name_option(str(exc), argv(parsed))}", file=err)
+    return code, out.getvalue(), err.getvalue()
+
+
 def _with_documents(parsed, action):
     """Write the posted documents to a temporary directory, run ``action(documents)`` there."""
     posted = {f.name: parsed.values[f.name] for f in parsed.calculation.fields
@@ -197,7 +256,10 @@ def _toml(doc):
 
 def _command_document(parsed, extra=()):
     def action(paths):
-        code, out, err = _run_command([*argv(parsed, documents=paths), *extra])
+        if not paths and not extra and parsed.calculation.name not in _VIA_COMMAND_LINE:
+            code, out, err = _call_command(parsed)
+        else:
+            code, out, err = _run_command([*argv(parsed, documents=paths), *extra])
         if code == 0:
             doc = json.loads(out) if out.strip() else None
             return _posted(doc, {str(p) for p in paths.values()})

@@ -102,7 +102,7 @@ class _Server:
         pool = self.heavy if (parsed.heavy or what == "figure") else self.light
         gone = request.is_disconnected if request is not None else None
         try:
-            kind, value = await pool.call((what, name, given, self.case_limit),
+            kind, value = await pool.call((what, name, given, self.case_limit, parsed),
                                           budget=self.time_budget, gone=gone)
         except Stopped as exc:
             status = 499 if exc.reason == "gone" else 503

@@ -49,11 +49,12 @@ def _serve(conn):
     warnings.simplefilter("ignore")
     while True:
         try:
-            what, name, given, limit = conn.recv()
+            what, name, given, limit, *checked = conn.recv()
         except (EOFError, OSError):
             return
         try:
-            parsed = calculations.parse(name, given, limit=limit)
+            # checked by the server already (sent along), or read here
+            parsed = checked[0] if checked else calculations.parse(name, given, limit=limit)
             value = calculations.figure_svg(parsed) if what.startswith("figure") else calculations.run(parsed)
             answer = ("ok", value)
         except calculations.RequestError as exc:
@@ -151,7 +152,7 @@ class Pool:
         Parameters
         ----------
         task : tuple
-            ``("document" | "figure", calculation name, values as given, case limit)``.
+            ``("document" | "figure", calculation name, values as given, case limit[, Parsed])``.
         budget : float
             Seconds the call may take, waiting for a worker included. [s]
         gone : async callable, optional
