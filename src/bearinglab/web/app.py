@@ -43,8 +43,10 @@ _IN_SERVER = ("catalog", "catalog-search")  # built here from the catalog: no wo
 
 
 def _json(status, document):
-    """The document as the command line prints it (:func:`bearinglab.tables.json_text`)."""
-    return Response(tables.json_text(document), status_code=status, media_type="application/json")
+    """The document as the command line prints it (:func:`bearinglab.tables.json_text`); a text is
+    the document already written so by a worker."""
+    text = document if isinstance(document, str) else tables.json_text(document)
+    return Response(text, status_code=status, media_type="application/json")
 
 
 def _description(case_limit, time_budget):
@@ -95,8 +97,9 @@ class _Server:
         """(status, document or error body) of calculation ``name`` with ``given``."""
         try:
             parsed = calculations.parse(name, given, limit=self.case_limit)
-            if name in _IN_SERVER and what == "document":
-                return 200, await asyncio.to_thread(calculations.run, parsed)
+            if name in _IN_SERVER and what in ("document", "json"):
+                doc = await asyncio.to_thread(calculations.run, parsed)
+                return 200, tables.json_text(doc) if what == "json" else doc
         except RequestError as exc:
             return api.web_error(exc)
         pool = self.heavy if (parsed.heavy or what == "figure") else self.light
@@ -172,7 +175,7 @@ def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_
                 values = api.query_values(path, request.query_params.multi_items())
             except RequestError as exc:
                 return _json(*api.web_error(exc))
-            return _json(*await server.compute(name, values, request))
+            return _json(*await server.compute(name, values, request, what="json"))
 
         async def post(request: Request):
             try:
@@ -180,7 +183,7 @@ def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_
             except RequestError as exc:
                 status, body = api.web_error(exc)
                 return _json(413 if "larger than" in body["detail"] else status, body)
-            return _json(*await server.compute(name, values, request))
+            return _json(*await server.compute(name, values, request, what="json"))
 
         schema = api.model(name).model_json_schema()
         app.add_api_route(f"/api/{path}", get, methods=["GET"], summary=summary, name=f"{name} (GET)",

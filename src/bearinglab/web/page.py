@@ -115,7 +115,8 @@ SECTIONS = (
     Section("load-distribution", "Load distribution and stiffness", "load-distribution", ""),
     Section("bearing-set", "Bearing set", "bearing-set", "Two bearings of the catalog bearing."),
     Section("life", "Rating life", "life", ""),
-    Section("friction", "Friction torque", "friction", ""),
+    Section("friction", "Friction torque", "friction",
+            "F_r = |(F_x, F_y)| where F_x, F_y are given; the moments do not enter these models."),
 )
 
 _LOADS = ("radial_load", "fx", "fy", "axial_load", "mx", "my")
@@ -160,9 +161,21 @@ def _query(section, values):
     out = {k: v for k, v in values.items() if k in names and _given(values, k)}
     if section.key == "bearing-set" and "bearing" in out:
         out["bearing"] = f"{out['bearing']}, {out['bearing']}"
-    if section.key == "frequencies":
-        out.pop("axial_load", None) if not _given(values, "axial_load") else None
+    if section.key == "friction" and "radial_load" not in out and (
+            _given(values, "fx") or _given(values, "fy")):
+        out["radial_load"] = _resultant(values)  # the friction models take F_r = |(F_x, F_y)|
     return out
+
+
+def _resultant(values):
+    """F_r = |(F_x, F_y)| as text in N (the form's F_x and F_y; a bad one is reported by its section)."""
+    from ..units import parse_quantity
+
+    try:
+        fx, fy = (parse_quantity(values.get(k) or "0 N", "force", k) for k in ("fx", "fy"))
+    except Exception:  # noqa: BLE001 -- the load sections name the bad field
+        return values.get("fx") or values.get("fy")
+    return f"{math.hypot(fx, fy)!r} N"
 
 
 def _label(name):

@@ -39,7 +39,7 @@ def _serve(conn):
     """A worker's loop: receive (what, name, given, limit), answer ('ok', value) or ('error', ...)."""
     import warnings
 
-    from .. import calculations
+    from .. import calculations, tables
     from ..errors import ConvergenceError, InputError
     from ..units import parse_quantity
 
@@ -55,7 +55,12 @@ def _serve(conn):
         try:
             # checked by the server already (sent along), or read here
             parsed = checked[0] if checked else calculations.parse(name, given, limit=limit)
-            value = calculations.figure_svg(parsed) if what.startswith("figure") else calculations.run(parsed)
+            if what == "figure":
+                value = calculations.figure_svg(parsed)
+            elif what == "json":  # the text the server sends: no large document in the server
+                value = tables.json_text(calculations.run(parsed))
+            else:
+                value = calculations.run(parsed)
             answer = ("ok", value)
         except calculations.RequestError as exc:
             answer = ("error", {"parameter": exc.parameter, "template": exc.template,
@@ -66,7 +71,7 @@ def _serve(conn):
         except Exception as exc:  # noqa: BLE001 -- a bug: the server answers 500 and names it
             answer = ("bug", f"{type(exc).__name__}: {exc}")
         peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-        leaving = what == "heavy-exit" or peak > _MEMORY_BOUND
+        leaving = peak > _MEMORY_BOUND
         conn.send((*answer, leaving))
         if leaving:
             return
@@ -152,7 +157,8 @@ class Pool:
         Parameters
         ----------
         task : tuple
-            ``("document" | "figure", calculation name, values as given, case limit[, Parsed])``.
+            ``("document" | "json" | "figure", calculation name, values as given, case limit[,
+            Parsed])``: the document, its JSON text, or the figure.
         budget : float
             Seconds the call may take, waiting for a worker included. [s]
         gone : async callable, optional
@@ -178,9 +184,6 @@ class Pool:
             worker = await self._take(start, budget, gone)
         finally:
             self._waiting -= 1
-        what = task[0]
-        if self.recycle:
-            task = ("heavy-exit", *task[1:]) if what == "document" else task
         try:
             worker.conn.send(task)
             await self._wait(worker, start, budget, gone)
@@ -192,7 +195,7 @@ class Pool:
             await asyncio.to_thread(self._replace, worker)
             raise Stopped("lost", "the calculation's worker process ended (out of memory?)") from None
         worker.tasks += 1
-        if leaving or not worker.alive():
+        if leaving or self.recycle or not worker.alive():
             await asyncio.to_thread(self._replace, worker)
         else:
             self._idle.put_nowait(worker)
