@@ -53,7 +53,7 @@ def base_url():
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
     server = uvicorn.Server(
-        uvicorn.Config(create_app(light_workers=2, heavy_workers=1), host="127.0.0.1", port=port,
+        uvicorn.Config(create_app(light_workers=2, heavy_workers=2), host="127.0.0.1", port=port,
                        log_level="warning")
     )
     thread = threading.Thread(target=server.run, daemon=True)

@@ -82,3 +82,17 @@ def test_a_client_that_goes_away_cancels_its_work(server):
     while set(app.state.server.heavy.pids()) == before and time.monotonic() < deadline:
         time.sleep(0.1)
     assert set(app.state.server.heavy.pids()) != before
+
+
+def test_a_worker_past_its_memory_bound_is_replaced():
+    """Memory comes back: a worker whose peak memory passed the bound after a request is replaced (a
+    bound of 1 MB, which every worker passes, replaces it after every request)."""
+    from fastapi.testclient import TestClient
+
+    with TestClient(create_app(light_workers=1, heavy_workers=1, memory_bound_mb=1)) as client:
+        pool = client.app.state.server.light
+        seen = []
+        for _ in range(3):
+            assert client.get("/api/frequencies", params=LIGHT).status_code == 200
+            seen.append(tuple(pool.pids()))
+        assert len(set(seen)) == 3, seen

@@ -34,7 +34,7 @@ from fastapi.templating import Jinja2Templates
 from .. import __version__, calculations, tables
 from ..calculations import BODY_LIMIT, CALCULATIONS, CASE_LIMIT, TIME_BUDGET, RequestError
 from . import api, page
-from .workers import Pool, Stopped
+from .workers import MEMORY_BOUND_MB, Pool, Stopped
 
 __all__ = ["create_app"]
 
@@ -88,9 +88,9 @@ class _BoundedBody:
 class _Server:
     """The pools and limits of one application."""
 
-    def __init__(self, light, heavy, case_limit, time_budget):
-        self.light = Pool(light)
-        self.heavy = Pool(heavy, queue=16)
+    def __init__(self, light, heavy, case_limit, time_budget, memory_bound_mb):
+        self.light = Pool(light, memory_bound_mb=memory_bound_mb)
+        self.heavy = Pool(heavy, queue=16, memory_bound_mb=memory_bound_mb)
         self.case_limit, self.time_budget = case_limit, time_budget
 
     async def compute(self, name, given, request=None, *, what="document"):
@@ -117,7 +117,8 @@ class _Server:
         return 500, api.error_body(f"internal error: {value}", None, "failed")
 
 
-def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_budget=TIME_BUDGET):
+def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_budget=TIME_BUDGET,
+               memory_bound_mb=MEMORY_BOUND_MB):
     """The web calculator as a FastAPI application.
 
     Parameters
@@ -128,13 +129,15 @@ def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_
         The most cases one request may hold.
     time_budget : float
         Seconds a request may compute before it is stopped. [s]
+    memory_bound_mb : float
+        A worker whose peak memory passed this after a request is replaced. [MB]
 
     Returns
     -------
     fastapi.FastAPI
         Serve it with ``uvicorn`` (``bearinglab serve``) or test it with ``fastapi.testclient``.
     """
-    server = _Server(light_workers, heavy_workers, case_limit, time_budget)
+    server = _Server(light_workers, heavy_workers, case_limit, time_budget, memory_bound_mb)
 
     @contextlib.asynccontextmanager
     async def lifespan(app):

@@ -12,6 +12,7 @@ Classes
 -------
 Pool           the worker processes of one kind; ``await pool.call(task, budget=..., gone=...)``
 Stopped        a call stopped: over its time budget, client gone, pool busy, or worker lost
+MEMORY_BOUND_MB  the peak memory of a worker after which it is replaced
 """
 
 from __future__ import annotations
@@ -22,9 +23,10 @@ import os
 import resource
 import time
 
-__all__ = ["Pool", "Stopped"]
+__all__ = ["MEMORY_BOUND_MB", "Pool", "Stopped"]
 
-_MEMORY_BOUND = 350 * 1024  # kB of peak resident memory after which a worker is replaced
+#: Peak resident memory of a worker after which it is replaced, so that its memory goes back [MB].
+MEMORY_BOUND_MB = 350
 
 
 class Stopped(Exception):
@@ -35,7 +37,7 @@ class Stopped(Exception):
         super().__init__(message)
 
 
-def _serve(conn):
+def _serve(conn, memory_bound_mb=MEMORY_BOUND_MB):
     """A worker's loop: receive (what, name, given, limit), answer ('ok', value) or ('error', ...)."""
     import warnings
 
@@ -71,7 +73,7 @@ def _serve(conn):
         except Exception as exc:  # noqa: BLE001 -- a bug: the server answers 500 and names it
             answer = ("bug", f"{type(exc).__name__}: {exc}")
         peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-        leaving = peak > _MEMORY_BOUND
+        leaving = peak > memory_bound_mb * 1024  # ru_maxrss is in kB on Linux
         conn.send((*answer, leaving))
         if leaving:
             return
@@ -82,14 +84,16 @@ def _context():
     worker starts in milliseconds, and no thread or lock of the web server is copied into it)."""
     ctx = multiprocessing.get_context("forkserver")
     ctx.set_forkserver_preload(["bearinglab.calculations", "bearinglab.cli", "bearinglab.units",
-                                "bearinglab.quasistatic", "numpy", "scipy", "pint"])
+                                "bearinglab.quasistatic", "bearinglab.plots.high_speed",
+                                "bearinglab.plots.load_distribution", "matplotlib.figure",
+                                "matplotlib.backends.backend_svg", "numpy", "scipy", "pint"])
     return ctx
 
 
 class _Worker:
-    def __init__(self, ctx):
+    def __init__(self, ctx, memory_bound_mb):
         self.conn, child = ctx.Pipe()
-        self.process = ctx.Process(target=_serve, args=(child,), daemon=True)
+        self.process = ctx.Process(target=_serve, args=(child, memory_bound_mb), daemon=True)
         self.process.start()
         child.close()
         self.tasks = 0
@@ -115,10 +119,13 @@ class Pool:
         Replace a worker after every call (for heavy requests: their memory goes back at once).
     queue : int
         Calls that may wait for a worker; one more is answered ``busy``.
+    memory_bound_mb : float
+        A worker whose peak resident memory passed this after a call is replaced. [MB]
     """
 
-    def __init__(self, size, *, recycle=False, queue=64):
+    def __init__(self, size, *, recycle=False, queue=64, memory_bound_mb=MEMORY_BOUND_MB):
         self.size, self.recycle, self.queue = size, recycle, queue
+        self.memory_bound_mb = memory_bound_mb
         self._ctx = _context()
         self._idle = None
         self._waiting = 0
@@ -131,7 +138,7 @@ class Pool:
             self._add()
 
     def _add(self):
-        w = _Worker(self._ctx)
+        w = _Worker(self._ctx, self.memory_bound_mb)
         self._workers.append(w)
         self._idle.put_nowait(w)
 
