@@ -183,3 +183,24 @@ def test_to_csv_keeps_every_digit_and_the_rows():
     lines = text.splitlines()
     assert lines[:3] == ["quantity,value,unit", "a_N,0.30000000000000004,N", "warning,w,"]
     assert lines[-3:] == ["x_N", "1.5", "2.5"]
+
+
+def test_catalog_stand_load_and_runout_sections(client):
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[2] / "examples" / "runout" /
+            "example1_oversize_ball.toml").read_text(encoding="utf-8")
+    html = client.get("/", params={"bearing": "B218", "speed": "3000 rpm", "errors": text,
+                                   "angle": "30 deg"}).text
+    for key in ("catalog", "stand-load", "runout"):
+        part = _section(html, key)
+        assert "Left out" not in part and 'class="message"' not in part, key
+        assert part.count('class="num"') > 3, key
+    runout = client.post("/api/runout", json={"errors": text, "angle": "30 deg", "bearing": "B218"}).json()
+    key = next(k for k, v in runout.items() if k.endswith("_um") and isinstance(v, float) and v)
+    assert f">{page.number(runout[key], page.scales(runout)[key])}<" in _section(html, "runout")
+    assert "<th>Error set</th><td class=\"num\">pasted," in html  # summarised in the inputs
+    empty = client.get("/", params={"radial_load": "1 kN", "balls": "9", "ball_diameter": "7.94 mm",
+                                    "pitch_diameter": "39.04 mm", "contact_angle": "0 deg"}).text
+    assert "Left out: no catalog bearing picked" in _section(empty, "catalog")
+    assert "Left out: no error set pasted." in _section(empty, "runout")

@@ -82,11 +82,14 @@ FIELDS = {
         _pick("bearing-set", "preload", group="set"),
         _pick("bearing-set", "spacing", group="set", default=None),
         *GEOMETRY,
+        _pick("runout", "errors", group="runout", required=False),
+        _pick("runout", "angle", group="runout"),
     )
 }
 _GROUPS = (("loads", "Loads and speed"), ("lubricant", "Lubricant, cleanliness, reliability"),
            ("model", "Models"), ("set", "Bearing set (leave the arrangement empty for one bearing)"),
-           ("geometry", "Inline geometry (overrides the catalog bearing's)"))
+           ("geometry", "Inline geometry (overrides the catalog bearing's)"),
+           ("runout", "Runout: paste an error set (TOML or JSON, as examples/runout/README.md)"))
 _EXAMPLES = {"radial_load": "10 kN", "fx": "1 kN", "fy": "0 N", "axial_load": "5 kN",
              "mx": "0 N*mm", "my": "0 N*mm", "speed": "6000 rpm", "viscosity": "20 cSt",
              "oil": "VG68", "temperature": "70 degC", "contamination_factor": "0.5",
@@ -106,6 +109,7 @@ class Section(NamedTuple):
 
 
 SECTIONS = (
+    Section("catalog", "Catalog bearing", "catalog", "Catalog data, derived geometry and ratings."),
     Section("high-speed", "Contact angles at speed", "high-speed",
             "Quasi-static model under thrust (Jones/Harris); radial loads and moments do not enter."),
     Section("axial-angle", "Contact angle at rest", "axial-angle",
@@ -115,6 +119,9 @@ SECTIONS = (
     Section("load-distribution", "Load distribution and stiffness", "load-distribution", ""),
     Section("bearing-set", "Bearing set", "bearing-set", "Two bearings of the catalog bearing."),
     Section("life", "Rating life", "life", ""),
+    Section("stand-load", "Test-stand load", "stand-load",
+            "Minimum axial load on a test stand at this speed (spec 000 section 3)."),
+    Section("runout", "Runout", "runout", "Inner-ring displacement from the error set."),
     Section("friction", "Friction torque", "friction",
             "F_r = |(F_x, F_y)| where F_x, F_y are given; the moments do not enter these models."),
 )
@@ -140,6 +147,12 @@ def _left_out(section, values):
         return "Left out: no load given."
     if section.key == "life" and not has.get("speed"):
         return "Left out: a life in hours needs a shaft speed."
+    if section.key == "catalog" and not has.get("bearing"):
+        return "Left out: no catalog bearing picked (inline geometry)."
+    if section.key == "stand-load" and not has.get("speed"):
+        return "Left out: the test-stand load needs a shaft speed."
+    if section.key == "runout" and not has.get("errors"):
+        return "Left out: no error set pasted."
     if section.key == "bearing-set":
         if not values.get("arrangement"):
             return "Left out: no set arrangement chosen (one bearing)."
@@ -159,6 +172,8 @@ def _query(section, values):
     calc = CALCULATIONS[section.calculation]
     names = {f.name for f in calc.fields}
     out = {k: v for k, v in values.items() if k in names and _given(values, k)}
+    if section.key == "catalog":
+        return {"name": values["bearing"]}
     if section.key == "bearing-set" and "bearing" in out:
         out["bearing"] = f"{out['bearing']}, {out['bearing']}"
     if section.key == "friction" and "radial_load" not in out and (
@@ -223,7 +238,12 @@ async def _figure(section, query, server):
 def _inputs(values):
     """The inputs as the report lists them: (label, value as given)."""
     out = [("Bearing", values.get("bearing") or "inline")]
-    out += [(FIELDS[k].title, str(values[k])) for k in FIELDS if _given(values, k)]
+    for k, field in FIELDS.items():
+        if _given(values, k):
+            text = str(values[k])
+            if field.kind == "document":  # the pasted document is summarised, not printed whole
+                text = f"pasted, {len(text.strip().splitlines())} lines"
+            out.append((field.title, text))
     return out
 
 
