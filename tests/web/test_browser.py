@@ -150,8 +150,8 @@ def test_browser_every_section_and_the_printed_report_carries_the_numbers(browse
     context = browser.new_context(viewport={"width": 1280, "height": 900})
     page = context.new_page()
     page.goto(base_url + "/" + FULL)
-    for key in ("high-speed", "axial-angle", "frequencies", "load-distribution", "bearing-set", "life",
-                "friction"):
+    for key in ("catalog", "high-speed", "axial-angle", "frequencies", "load-distribution", "bearing-set",
+                "life", "stand-load", "friction"):
         section = page.locator(f"#section-{key}")
         assert section.count() == 1 and "Left out" not in section.inner_text(), key
         assert section.locator("td.num").count() > 3, key
