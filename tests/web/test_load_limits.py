@@ -96,3 +96,20 @@ def test_a_worker_past_its_memory_bound_is_replaced():
             assert client.get("/api/frequencies", params=LIGHT).status_code == 200
             seen.append(tuple(pool.pids()))
         assert len(set(seen)) == 3, seen
+
+
+def test_a_worker_that_died_is_replaced_and_no_request_sees_a_500():
+    """A worker killed from outside (out of memory, an operator): the next requests are answered."""
+    import os
+    import signal
+
+    from fastapi.testclient import TestClient
+
+    with TestClient(create_app(light_workers=1, heavy_workers=1)) as client:
+        assert client.get("/api/frequencies", params=LIGHT).status_code == 200
+        (pid,) = client.app.state.server.light.pids()
+        os.kill(pid, signal.SIGKILL)
+        time.sleep(0.3)
+        statuses = [client.get("/api/frequencies", params=LIGHT).status_code for _ in range(3)]
+        assert 500 not in statuses and statuses[-1] == 200, statuses
+        assert client.app.state.server.light.pids() != [pid]
