@@ -9,6 +9,7 @@ import os
 import re
 import shutil
 import socket
+import subprocess
 import threading
 import time
 from pathlib import Path
@@ -52,7 +53,8 @@ def base_url():
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
     server = uvicorn.Server(
-        uvicorn.Config(create_app(), host="127.0.0.1", port=port, log_level="warning")
+        uvicorn.Config(create_app(light_workers=2, heavy_workers=2), host="127.0.0.1", port=port,
+                       log_level="warning")
     )
     thread = threading.Thread(target=server.run, daemon=True)
     thread.start()
@@ -89,7 +91,7 @@ def page(browser):
 
 def _fill_and_submit(page, base_url, axial_load):
     page.goto(base_url + "/")
-    page.select_option("#bearing", "B218")
+    page.fill("#bearing", "B218")
     page.fill("#axial_load", axial_load)
     page.fill("#speed", "10000 rpm")
     page.select_option("#constants", "harris")  # the constants of the published case
@@ -113,59 +115,93 @@ def test_browser_shows_a_bad_load_next_to_its_field(page, base_url):
     _fill_and_submit(page, base_url, "2,5 kN")
     message = page.locator("#error-axial_load")
     assert message.is_visible()
+    assert message.inner_text().startswith("Axial load F_a: ")  # the field as the page labels it
     assert "ambiguous" in message.inner_text() and "2.5 kN" in message.inner_text()
     assert page.get_attribute("#axial_load", "aria-invalid") == "true"
     assert page.input_value("#axial_load") == "2,5 kN"  # the input is kept for correction
     assert "Traceback" not in page.content()
-    ARTIFACTS.mkdir(exist_ok=True)
-    page.screenshot(path=ARTIFACTS / "web-bad-load.png")
 
 
-def test_browser_phone_width_and_print(browser, base_url):
-    context = browser.new_context(viewport={"width": 390, "height": 844}, device_scale_factor=2)
-    phone = context.new_page()
-    phone.goto(base_url + "/?bearing=B218&axial_load=20+kN&speed=10000+rpm&constants=harris")
-    assert phone.inner_text("#contact-angle-inner") == "49.308°"
-    # nothing wider than the screen: the page does not scroll sideways
-    assert phone.evaluate("document.documentElement.scrollWidth") <= 390
+def test_browser_picker_searches_by_designation_bore_and_outside_diameter(page, base_url):
+    page.goto(base_url + "/")
+    page.fill("#bearing", "620")
+    page.wait_for_selector("#matches button.match")
+    assert "6205-2RS" in page.inner_text("#matches")
+    page.fill("#bearing", "")
+    page.fill("#search-bore", "90 mm")
+    page.wait_for_function("document.querySelector('#matches').innerText.includes('B218')")
+    page.click("#matches button[data-name='B218']")
+    assert page.input_value("#bearing") == "B218"
+    page.fill("#search-od", "1 mm")
+    page.wait_for_function("document.querySelector('#matches').innerText.includes('no catalog bearing')")
+
+
+FULL = ("?bearing=B218&radial_load=3+kN&axial_load=20+kN&my=50+N*m&speed=3000+rpm&viscosity=20+cSt"
+        "&contamination=normal&reliability=95&model=one-term&arrangement=DB&preload=2+kN")
+
+
+def _api(base_url, path, **query):
+    import httpx
+
+    return httpx.get(f"{base_url}/api/{path}", params=query, timeout=60).json()
+
+
+def test_browser_every_section_and_the_printed_report_carries_the_numbers(browser, base_url):
+    context = browser.new_context(viewport={"width": 1280, "height": 900})
+    page = context.new_page()
+    page.goto(base_url + "/" + FULL)
+    for key in ("catalog", "high-speed", "axial-angle", "frequencies", "load-distribution", "bearing-set",
+                "life", "stand-load", "friction"):
+        section = page.locator(f"#section-{key}")
+        assert section.count() == 1 and "Left out" not in section.inner_text(), key
+        assert section.locator("td.num").count() > 3, key
+    page.emulate_media(media="print")
+    assert not page.locator("form").is_visible()
+    printed = page.inner_text("body")
     ARTIFACTS.mkdir(exist_ok=True)
-    phone.screenshot(path=ARTIFACTS / "web-b218-390.png", full_page=True)
-    phone.emulate_media(media="print")
-    assert not phone.locator("form").is_visible()  # the report prints without the form
-    phone.pdf(path=ARTIFACTS / "web-b218-report.pdf", format="A4")
-    pages = re.findall(rb"/Type\s*/Page[^s]", (ARTIFACTS / "web-b218-report.pdf").read_bytes())
-    assert len(pages) == 1  # a one-page report
+    pdf = ARTIFACTS / "web-report.pdf"
+    page.pdf(path=pdf, format="A4", print_background=True)
     context.close()
+    pages = re.findall(rb"/Type\s*/Page[^s]", pdf.read_bytes())
+    assert 1 <= len(pages) <= 2, len(pages)  # one or two A4 pages
+    text = printed
+    if shutil.which("pdftotext"):
+        text = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True,
+                              check=True).stdout
+    life = _api(base_url, "life", bearing="B218", radial_load="3 kN", axial_load="20 kN", my="50 N*m",
+                speed="3000 rpm", viscosity="20 cSt", contamination="normal", reliability="95")
+    load = _api(base_url, "load-distribution", bearing="B218", radial_load="3 kN", axial_load="20 kN",
+                my="50 N*m", speed="3000 rpm")
+    from bearinglab import __version__
+    from bearinglab.web import page as web_page
+
+    for doc in (life, load):
+        sc = web_page.scales(doc)
+        keys = [k for k, v in doc.items() if isinstance(v, float) and web_page.quantity(k)[1]]
+        assert keys
+        for key in keys:  # every result number with its unit is in the printed text
+            assert web_page.number(doc[key], sc[key]) in text, key
+    for note in life["warnings"][:2]:
+        assert note.split()[0] in text
+    assert __version__ in text and "UTC" in text
+    for label in ("Radial load F_r", "3 kN", "Reliability", "95", "Preload", "2 kN"):
+        assert label in text, label
 
 
-_OVERFLOW = """() => {
-  const form = document.querySelector('form');
-  const wide = [...form.querySelectorAll('input, select, button, label, .error, legend, summary, .hint')]
-    .filter(e => e.getBoundingClientRect().right > window.innerWidth + 0.5)
-    .map(e => e.id || e.tagName);
-  return {page: document.documentElement.scrollWidth, form: form.scrollWidth - form.clientWidth, wide};
-}"""
-
-
-@pytest.mark.parametrize(
-    "query, shot",
-    [
-        ("", "web-form-390.png"),
-        ("?bearing=&balls=16&ball_diameter=22.225+mm&axial_load=2%2C5+kN&speed=fast", "web-form-errors-390.png"),
-    ],
-)
-def test_browser_form_fits_a_phone(browser, base_url, query, shot):
-    """At 390 px (a phone) the form does not scroll sideways: empty, and with the geometry open and
-    long field messages next to their fields."""
-    context = browser.new_context(viewport={"width": 390, "height": 844}, device_scale_factor=2)
+@pytest.mark.parametrize("width", [375])
+def test_browser_narrow_layout_does_not_scroll_sideways_nor_wrap_numbers(browser, base_url, width):
+    context = browser.new_context(viewport={"width": width, "height": 812}, device_scale_factor=2)
     phone = context.new_page()
-    phone.goto(base_url + "/" + query)
+    phone.goto(base_url + "/" + FULL + "&balls=16&ball_diameter=22.225+mm&speed=fast")
     phone.evaluate("document.querySelector('details.geometry').open = true")
-    if query:
-        assert phone.locator("#error-axial_load").is_visible()
-    fit = phone.evaluate(_OVERFLOW)
-    assert fit["page"] <= 390 and fit["form"] <= 0 and not fit["wide"], fit
+    assert phone.locator("#error-speed").is_visible()
+    assert phone.evaluate("document.documentElement.scrollWidth") <= width
+    # a cell whose text lies on more than one line: its characters' boxes have more than one top
+    wrapped = phone.evaluate("""() => [...document.querySelectorAll('td.num, .value')].filter(e => {
+        const r = document.createRange(); r.selectNodeContents(e);
+        return new Set([...r.getClientRects()].map(b => Math.round(b.top))).size > 1;
+      }).map(e => e.textContent)""")
+    assert wrapped == []
     ARTIFACTS.mkdir(exist_ok=True)
-    phone.locator("form").screenshot(path=ARTIFACTS / shot)
-    assert (ARTIFACTS / shot).stat().st_size > 10_000
+    phone.screenshot(path=ARTIFACTS / f"web-{width}.png", full_page=True)
     context.close()

@@ -1,181 +1,64 @@
-"""The JSON API of the web calculator: each endpoint runs one command of the command line.
+"""The JSON API of the web calculator: one endpoint per calculation of :mod:`bearinglab.calculations`.
 
-``GET /api/<endpoint>?name=value&...`` maps every query parameter to the command's option of the same
-name (underscores become dashes: ``axial_load`` -> ``--axial-load``), runs the command in-process with
-``--json`` (:func:`bearinglab.cli.run_json`) and answers with the document it prints. Only the options
-that compute are reachable: no option that reads or writes a file, none that starts a cluster.
+``GET /api/<endpoint>?name=value&...`` (shareable links) and ``POST /api/<endpoint>`` with a JSON body
+take the calculation's fields by name; both answer with the document ``bearinglab <command> --json``
+prints. The request is read and checked here, in the server (cheap), and computed in a worker
+process (:mod:`bearinglab.web.workers`). Errors are one JSON object, ``{"detail", "parameter",
+"error"}``, worded with the API's parameter names.
 
 Endpoints
 ---------
-ENDPOINTS     endpoint name -> the command's words (``friction`` -> ``friction torque``; ``film``, ``temperature``)
-options       the options an endpoint takes, by query-parameter name
-call          run an endpoint with query parameters -> ApiResult (status, document or error)
+ENDPOINTS     URL path -> calculation name (``/api/friction`` -> ``friction``)
+query_values  the query parameters of a GET as the calculation's values (a repeated one is an error)
+body_values   the JSON body of a POST as the calculation's values
 error_body    the JSON body of a failed call: ``{"detail", "parameter", "error"}``
-parameter_of  the query parameter an error message names, if any
-web_message   a command-line message as the web says it: query parameters, not options
+web_error     a RequestError worded for the web: ``(status, body)``
+model         the pydantic model of a calculation's fields (the OpenAPI schema of its body)
+parameters    the OpenAPI query parameters of a calculation
+
+Deprecated (removed in the next release): ApiResult, call, options, parameter_of, web_message.
 """
 
 from __future__ import annotations
 
+import json
 import re
+import warnings
 from functools import cache
 from typing import NamedTuple
 
-import typer
-
-from .. import cli
+from .. import calculations
+from ..calculations import CALCULATIONS, RequestError
 
 __all__ = [
     "ENDPOINTS",
     "ApiResult",
+    "body_values",
     "call",
     "error_body",
+    "model",
     "options",
     "parameter_of",
+    "parameters",
+    "query_values",
+    "web_error",
     "web_message",
 ]
 
-#: Endpoint name -> the words of the command it runs.
+#: URL path under /api -> calculation name.
 ENDPOINTS = {
-    "high-speed": ("high-speed",),
-    "axial-angle": ("axial-angle",),
-    "frequencies": ("frequencies",),
-    "load-distribution": ("load-distribution",),
-    "life": ("life",),
-    "friction": ("friction", "torque"),
-    "clearance": ("clearance",),
-    "film": ("film",),
-    "temperature": ("temperature",),
+    "life": "life",
+    "load-distribution": "load-distribution",
+    "bearing-set": "bearing-set",
+    "friction": "friction",
+    "high-speed": "high-speed",
+    "frequencies": "frequencies",
+    "axial-angle": "axial-angle",
+    "stand-load": "stand-load",
+    "catalog": "catalog",
+    "catalog/search": "catalog-search",
+    "runout": "runout",
 }
-
-# not reachable from the web: files (read or written), clusters, output format, help
-_HIDDEN = {
-    "json",
-    "help",
-    "csv",
-    "plot",
-    "out",
-    "catalog",
-    "bearing-file",
-    "executor",
-    "workers",
-    "chunk-size",
-    "version",
-}
-_TRUE, _FALSE = {"true", "1", "yes", "on"}, {"false", "0", "no", "off", ""}
-
-
-class ApiResult(NamedTuple):
-    """The answer of :func:`call`."""
-
-    status: int
-    """HTTP status: 200, 404 (no such command in this version), 422 (bad input, no convergence)."""
-    document: object
-    """The command's JSON document (status 200) or the error body (:func:`error_body`)."""
-
-
-@cache
-def _command(words):
-    """The click command for ``words``, or None when this version has no such command."""
-    command = typer.main.get_command(cli.app)
-    for word in words:
-        command = getattr(command, "commands", {}).get(word)
-        if command is None:
-            return None
-    return command
-
-
-def _is_file(param):
-    """Whether an option takes a file (click's path type; typer >= 0.20 keeps the annotation instead)."""
-    click_type = getattr(getattr(param, "type", None), "name", "")
-    annotation = getattr(getattr(param, "type_descriptor", None), "annotation", "")
-    return click_type == "path" or "Path" in str(annotation)
-
-
-def _reachable(endpoint):
-    """The click parameters of ``endpoint`` reachable from the web, by query-parameter name."""
-    command = _command(ENDPOINTS[endpoint])
-    out = {}
-    for param in getattr(command, "params", ()):
-        longs = [o for o in getattr(param, "opts", ()) if o.startswith("--")]
-        if not longs or longs[0][2:] in _HIDDEN or _is_file(param):
-            continue
-        out[longs[0][2:].replace("-", "_")] = param
-    return out
-
-
-@cache
-def options(endpoint):
-    """The options of ``endpoint`` reachable from the web: query-parameter name -> (option, is_flag).
-
-    Parameters
-    ----------
-    endpoint : str
-        A key of :data:`ENDPOINTS`.
-
-    Returns
-    -------
-    dict
-        ``{"axial_load": ("--axial-load", False), ...}``; empty when the command does not exist.
-    """
-    return {
-        name: (
-            next(o for o in param.opts if o.startswith("--")),
-            bool(getattr(param, "is_flag", False)),
-        )
-        for name, param in _reachable(endpoint).items()
-    }
-
-
-@cache
-def _spellings(endpoint):
-    """Every way the command line spells a reachable option (``--axial-load``, ``-F``, ``--no-mask``)
-    -> its query-parameter name, from the command's own option definitions."""
-    return {
-        spelling: name
-        for name, param in _reachable(endpoint).items()
-        for spelling in (*param.opts, *getattr(param, "secondary_opts", ()))
-    }
-
-
-_QUOTED_OPTIONS = re.compile(r"'-[^'\s]+'(?: / '-[^'\s]+')*")  # click: '--axial-load' / '-F'
-_BARE_OPTION = re.compile(r"(?<![\w-])--[a-z][a-z0-9-]*(?![\w-])")  # a library message: --viscosity
-_LEADING = re.compile(r"^([a-z][a-z0-9-]*)(?=:| must | needs )")  # axial-load: ..., axial-load must
-
-
-def web_message(message, endpoint):
-    """A command-line message as the web says it: each option of ``endpoint`` the message names
-    becomes its query parameter.
-
-    ``Missing option '--axial-load' / '-F'.`` -> ``Missing parameter 'axial_load'.``;
-    ``give --viscosity, or --oil VG68 with --viscosity-100`` -> ``give viscosity, or oil VG68 with
-    viscosity_100``; ``axial-load: '2 m' is a length`` -> ``axial_load: '2 m' is a length``. Options
-    the web cannot reach (files, clusters) are left as the command line spells them.
-
-    Parameters
-    ----------
-    message : str
-        The one-line message of the command line (without its ``bearinglab: error:`` prefix).
-    endpoint : str
-        A key of :data:`ENDPOINTS`: the command whose options the message may name.
-
-    Returns
-    -------
-    str
-    """
-    spellings = _spellings(endpoint)
-
-    def quoted(match):
-        names = {spellings.get(o) for o in re.findall(r"'(-[^'\s]+)'", match.group(0))}
-        return f"'{names.pop()}'" if len(names) == 1 and None not in names else match.group(0)
-
-    def leading(match):
-        return spellings.get("--" + match.group(1), match.group(1))
-
-    text = _QUOTED_OPTIONS.sub(quoted, message)
-    text = _BARE_OPTION.sub(lambda m: spellings.get(m.group(0), m.group(0)), text)
-    text = _LEADING.sub(leading, text, count=1)
-    return text.replace("Missing option '", "Missing parameter '", 1)
 
 
 def error_body(detail, parameter=None, error="input"):
@@ -184,12 +67,12 @@ def error_body(detail, parameter=None, error="input"):
     Parameters
     ----------
     detail : str
-        The one-line message (as the command line prints it, without its prefix).
+        One line, naming API parameters.
     parameter : str, optional
-        The query parameter the message names.
+        The parameter at fault.
     error : str
-        ``input`` (bad input), ``convergence`` (the solve did not converge), ``not-found`` or
-        ``failed``.
+        ``input``, ``convergence``, ``not-found``, ``limit`` (a size or time limit), ``busy`` or
+        ``failed`` (a bug).
 
     Returns
     -------
@@ -199,90 +82,261 @@ def error_body(detail, parameter=None, error="input"):
     return {"detail": detail, "parameter": parameter, "error": error}
 
 
-_NAMED = (
-    re.compile(r"'?--([a-z][a-z0-9-]*)"),
-    re.compile(r"^([a-z][a-z0-9-]*)(?::| must | needs )"),
-)
-
-
-def parameter_of(message, known=()):
-    """The query parameter a command-line error message names (``axial-load: ...`` -> ``axial_load``).
+def web_error(exc):
+    """A RequestError (or a worker's error record) as the web says it: the status and the body.
 
     Parameters
     ----------
-    message : str
-        The one-line error message.
-    known : collection of str
-        The endpoint's parameters; a name not among them is not returned (unless ``known`` is empty).
+    exc : RequestError or dict
+        The error, or the worker's record ``{"parameter", "template", "kind"}``.
 
     Returns
     -------
-    str or None
+    tuple
+        ``(422, error_body(...))``.
     """
-    for pattern in _NAMED:
-        match = pattern.search(message)
-        if match:
-            name = match.group(1).replace("-", "_")
-            if not known or name in known:
-                return name
-    return None
+    if isinstance(exc, dict):
+        exc = calculations.RunFailure(exc["parameter"], None, exc["template"], exc.get("kind", "input"))
+    detail = exc.worded(lambda name: name)
+    kind = getattr(exc, "kind", "input")
+    if "limit of" in exc.template or "at most" in (exc.valid or ""):
+        kind = "limit"
+    return 422, error_body(detail, exc.parameter, kind)
+
+
+def query_values(endpoint, items):
+    """The query parameters of a GET as the calculation's values.
+
+    Parameters
+    ----------
+    endpoint : str
+        A key of :data:`ENDPOINTS`.
+    items : list of (str, str)
+        The query's pairs, in order (a parameter given twice is an error, never its last value).
+
+    Returns
+    -------
+    dict
+    """
+    values = {}
+    for name, value in items:
+        if name in values:
+            raise RequestError(name, value, "one value",
+                               "{name}: given more than once; give it once (a list is one value: "
+                               "'1 kN, 2 kN')")
+        values[name] = value
+    return values
+
+
+def body_values(endpoint, raw):
+    """The JSON body of a POST as the calculation's values.
+
+    Parameters
+    ----------
+    endpoint : str
+        A key of :data:`ENDPOINTS`.
+    raw : bytes
+        The body.
+
+    Returns
+    -------
+    dict
+    """
+    try:
+        values = json.loads(raw or b"{}")
+    except (ValueError, UnicodeDecodeError) as exc:
+        raise RequestError(None, None, "a JSON object", f"the body is not JSON ({exc})") from None
+    if not isinstance(values, dict):
+        raise RequestError(None, None, "a JSON object", "the body must be a JSON object of parameters")
+    for name, value in values.items():
+        if value is not None and not isinstance(value, (str, int, float, bool)):
+            raise RequestError(name, value, "a string, number or true/false",
+                               "{name}: expected a string, a number or true/false")
+    return values
+
+
+def _describe(field):
+    unit = f" [{field.unit}]" if field.unit and field.unit != "-" else ""
+    parts = [field.help + unit]
+    if field.valid() and not field.valid().startswith("a ") and field.kind != "flag":
+        parts.append(f"Valid: {field.valid()}.")
+    if field.many:
+        parts.append("A list ('1 kN, 2 kN') or a range ('1kN:5kN:1kN') is allowed.")
+    if field.default is not None:
+        parts.append(f"Default: {field.default}.")
+    return " ".join(parts)
+
+
+def _schema(field):
+    if field.kind == "flag":
+        out = {"type": "boolean"}
+    elif field.kind == "int":
+        out = {"type": "integer"}
+    elif field.kind == "number":
+        out = {"type": "number"}
+    elif field.kind == "choice":
+        out = {"type": "string", "enum": list(field.choices)}
+    else:
+        out = {"type": "string"}
+    for key, value in (("minimum", field.minimum), ("maximum", field.maximum)):
+        if value is not None and field.kind in ("int", "number"):
+            if key == "minimum" and field.exclusive:
+                out["exclusiveMinimum"] = value
+            else:
+                out[key] = value
+    out["description"] = _describe(field)
+    out["title"] = field.title
+    extra = {"x-unit": field.unit or None, "x-kind": field.kind, "x-many": field.many}
+    if field.minimum is not None or field.maximum is not None:
+        extra["x-range"] = field.valid()
+    out.update({k: v for k, v in extra.items() if v not in (None, "")})
+    if field.default is not None:
+        out["default"] = field.default
+    return out
+
+
+@cache
+def model(name):
+    """The pydantic model of calculation ``name``'s fields: the schema of its POST body.
+
+    Parameters
+    ----------
+    name : str
+        A key of :data:`bearinglab.calculations.CALCULATIONS`.
+
+    Returns
+    -------
+    type
+        A pydantic model; every field optional unless required, with its unit and range.
+    """
+    import pydantic
+
+    types = {"flag": bool, "int": int | str, "number": float | str, "choice": str}
+    fields = {}
+    for f in CALCULATIONS[name].fields:
+        annotation = types.get(f.kind, str)
+        extra = {k: v for k, v in _schema(f).items() if k.startswith("x-")}
+        info = pydantic.Field(
+            ... if f.required else None, description=_describe(f), title=f.title,
+            json_schema_extra=extra)
+        fields[f.name] = (annotation if f.required else annotation | None, info)
+    title = "".join(w.capitalize() for w in name.replace("-", " ").split()) + "Request"
+    return pydantic.create_model(title, __config__=pydantic.ConfigDict(extra="forbid"), **fields)
+
+
+def parameters(name):
+    """The OpenAPI query parameters of calculation ``name``.
+
+    Parameters
+    ----------
+    name : str
+        A key of :data:`bearinglab.calculations.CALCULATIONS`.
+
+    Returns
+    -------
+    list of dict
+    """
+    return [{"name": f.name, "in": "query", "required": f.required, "description": _describe(f),
+             "schema": _schema(f)} for f in CALCULATIONS[name].fields]
+
+
+# ----------------------------------------------------------------------------- deprecated (0.2)
+# The names of the command-line shim this module was; they warn and are removed in the next release.
+class ApiResult(NamedTuple):
+    """The answer of :func:`call` (deprecated)."""
+
+    status: int
+    """HTTP status."""
+    document: object
+    """The document, or the error body."""
+
+
+def _deprecated(name, instead):
+    warnings.warn(f"bearinglab.web.api.{name} is deprecated; use {instead}", DeprecationWarning,
+                  stacklevel=3)
+
+
+def options(endpoint):
+    """Deprecated: the parameters of ``endpoint`` -> (command-line option, is a flag).
+
+    Parameters
+    ----------
+    endpoint : str
+        A key of :data:`ENDPOINTS`.
+
+    Returns
+    -------
+    dict
+    """
+    _deprecated("options", "bearinglab.calculations.CALCULATIONS[name].fields")
+    name = ENDPOINTS.get(endpoint)
+    fields = CALCULATIONS[name].fields if name else ()
+    return {f.name: (f.cli_option, f.kind == "flag") for f in fields}
 
 
 def call(endpoint, query):
-    """Run ``endpoint`` with the query parameters ``query`` as its command would run with ``--json``.
+    """Deprecated: run ``endpoint`` in this process (the server runs it in a worker process).
 
     Parameters
     ----------
     endpoint : str
         A key of :data:`ENDPOINTS`.
     query : mapping of str to str
-        Query parameters (names with underscores), values as on the command line (``"20 kN"``).
+        The parameters.
 
     Returns
     -------
     ApiResult
-        200 and the command's document; 422 and :func:`error_body` for bad input (unknown parameter,
-        a value the command rejects) or a solve that did not converge; 404 when this version has no
-        such command; 500 if the command failed otherwise.
     """
-    known = options(endpoint)
-    if not known:
-        return ApiResult(
-            404, error_body(f"{endpoint}: not available in this version", None, "not-found")
-        )
-    unknown = sorted(set(query) - set(known))
-    if unknown:
-        return ApiResult(
-            422,
-            error_body(
-                f"{unknown[0]}: unknown parameter of /api/{endpoint}; valid: "
-                f"{', '.join(sorted(known))}",
-                unknown[0],
-            ),
-        )
-    argv = list(ENDPOINTS[endpoint])
-    for name, value in query.items():
-        option, flag = known[name]
-        if not flag:
-            argv.append(
-                f"{option}={value}"
-            )  # '=' keeps a value such as '-5 kN' from reading as an option
-        elif value.strip().lower() in _TRUE:
-            argv.append(option)
-        elif value.strip().lower() not in _FALSE:
-            return ApiResult(
-                422, error_body(f"{name}: expected true or false, got {value!r}", name)
-            )
+    _deprecated("call", "bearinglab.calculations.parse and run, or the HTTP API")
+    name = ENDPOINTS.get(endpoint)
+    if name is None:
+        return ApiResult(404, error_body(f"{endpoint}: no such endpoint", None, "not-found"))
     try:
-        run = cli.run_json(argv)
-    except ValueError as exc:  # a library check the command does not turn into its one-line error
-        run = cli.JsonRun(2, None, str(exc))
-    except Exception as exc:  # noqa: BLE001 -- an answer names the failure, never shows a traceback
-        run = cli.JsonRun(1, None, f"{type(exc).__name__}: {exc}")
-    if run.exit_code == 0:
-        return ApiResult(200, run.document)
-    detail = web_message(run.error, endpoint)
-    if run.exit_code not in (2, 3):
-        return ApiResult(500, error_body(detail, None, "failed"))
-    kind = "convergence" if run.exit_code == 3 else "input"
-    return ApiResult(422, error_body(detail, parameter_of(run.error, known), kind))
+        return ApiResult(200, calculations.run(calculations.parse(name, dict(query))))
+    except RequestError as exc:
+        return ApiResult(*web_error(exc))
+
+
+def web_message(message, endpoint):
+    """Deprecated: a command-line message with the options of ``endpoint`` as API parameters.
+
+    Parameters
+    ----------
+    message : str
+        The one-line message.
+    endpoint : str
+        A key of :data:`ENDPOINTS`.
+
+    Returns
+    -------
+    str
+    """
+    _deprecated("web_message", "RequestError.worded")
+    from ..calculations.documents import _failure
+
+    return web_error(_failure(CALCULATIONS[ENDPOINTS[endpoint]], message, "input"))[1]["detail"]
+
+
+def parameter_of(message, known=()):
+    """Deprecated: the parameter a command-line message names (``axial-load: ...`` -> ``axial_load``).
+
+    Parameters
+    ----------
+    message : str
+        The one-line message.
+    known : collection of str
+        The endpoint's parameters; a name not among them is not returned (unless empty).
+
+    Returns
+    -------
+    str or None
+    """
+    _deprecated("parameter_of", "RequestError.parameter")
+    for pattern in (re.compile(r"'?--([a-z][a-z0-9-]*)"), re.compile(r"^([a-z][a-z0-9-]*)(?::| must | needs )")):
+        match = pattern.search(message)
+        if match:
+            name = match.group(1).replace("-", "_")
+            if not known or name in known:
+                return name
+    return None

@@ -1,33 +1,37 @@
-"""The calculator page: form fields, the sections computed from them, and the figures.
+"""The calculator page: the form (from the calculations' fields), the sections, the report, the CSV.
 
-Every section runs one endpoint of the JSON API (:mod:`bearinglab.web.api`) with the fields its
-command takes, so the page shows the command line's numbers. A section whose command fails shows the
-command's one-line message; a message that names a form field is shown next to that field.
+Every section is one calculation of :mod:`bearinglab.calculations`, computed with the form's values
+that are fields of that calculation, so the page shows the command line's numbers. A section that does
+not apply to the input (no thrust for the high-speed model, no load for a life) is left out with one
+line saying why; an input error is shown next to the field it names, in the field's label.
 
-Form
-----
-FIELDS       the form fields: query name, label, placeholder (an example with its unit)
-Section      one section of results: title, endpoint, extra parameters
-SECTIONS     the sections, in the order shown
-compute      form values -> the sections' results and the field messages
-figure_svg   a command's own figure (its ``--plot`` option) as inline SVG
-quantity     a result key with its unit suffix -> a readable label and unit
-number       a value as the page shows it: 6 significant digits, float noise as 0
-scales       the largest value of each unit in a document (what counts as noise next to it)
-column_scales  the same per column of a table of rows
+Form and sections
+-----------------
+FIELDS          the form fields, by name, grouped (bearing, geometry, loads, lubricant, set, model)
+Section         one section of results: title, calculation, the rule that says when it applies
+SECTIONS        the sections, in the order shown
+render_context  form values -> what the template shows (async: the sections run in the workers)
+to_csv          a document as CSV text (quantity, value, unit; a table of cases as rows)
+quantity        a result key with its unit suffix -> a readable label and unit
+number          a value as the page shows it: 6 significant digits, float noise as 0
+scales          the largest value of each unit in a document (what counts as noise next to it)
+column_scales   the same per column of a table of rows
+
+Deprecated (removed in the next release): Result, compute, figure_svg.
 """
 
 from __future__ import annotations
 
+import asyncio
+import csv
+import datetime
+import io
 import math
-import tempfile
-from pathlib import Path
+import urllib.parse
 from typing import NamedTuple
 
-from .. import cli
-from ..errors import InputError
-from ..units import parse_quantity
-from . import api
+from ..calculations import CALCULATIONS
+from ..calculations.registry import GEOMETRY
 
 __all__ = [
     "DIGITS",
@@ -41,40 +45,58 @@ __all__ = [
     "figure_svg",
     "number",
     "quantity",
+    "render_context",
     "scales",
+    "to_csv",
 ]
 
 
-class Field(NamedTuple):
-    """One form field."""
+def _pick(calc, name, **change):
+    import dataclasses
 
-    name: str
-    label: str
-    placeholder: str
-    group: str
-    choices: tuple = ()  # a select; the first is the default
+    return dataclasses.replace(CALCULATIONS[calc].field(name), **change)
 
 
-#: The form fields, by query name; the geometry fields override the catalog bearing's.
+#: The form fields, by name: each is a field of one or more calculations (same name, same unit).
 FIELDS = {
     f.name: f
     for f in (
-        Field("axial_load", "Axial load", "20 kN", "loads"),
-        Field("radial_load", "Radial load", "0 kN", "loads"),
-        Field("speed", "Shaft speed", "10000 rpm", "loads"),
-        Field("viscosity", "Lubricant viscosity", "20 cSt", "loads"),
-        # the command line's default first (one answer per question); the published B218 results of
-        # spec 004 section 7 use Harris's constants, one choice away
-        Field("constants", "High-speed constants", "", "loads", ("mass", "harris", "paper")),
-        Field("balls", "Balls", "16", "geometry"),
-        Field("ball_diameter", "Ball diameter", "22.225 mm", "geometry"),
-        Field("pitch_diameter", "Pitch diameter", "125.26 mm", "geometry"),
-        Field("inner_conformity", "Inner conformity r/D", "0.52", "geometry"),
-        Field("outer_conformity", "Outer conformity r/D", "0.52", "geometry"),
-        Field("contact_angle", "Free contact angle", "40 deg", "geometry"),
-        Field("ball_material", "Ball material", "steel", "geometry"),
+        _pick("life", "radial_load", group="loads", label="Radial load F_r"),
+        _pick("life", "fx", group="loads"),
+        _pick("life", "fy", group="loads"),
+        _pick("life", "axial_load", group="loads", label="Axial load F_a"),
+        _pick("life", "mx", group="loads"),
+        _pick("life", "my", group="loads"),
+        _pick("high-speed", "speed", group="loads", many=False, required=False),
+        _pick("life", "viscosity", group="lubricant"),
+        _pick("life", "oil", group="lubricant"),
+        _pick("life", "temperature", group="lubricant"),
+        _pick("life", "contamination", group="lubricant"),
+        _pick("life", "contamination_factor", group="lubricant"),
+        _pick("life", "reliability", group="lubricant", default=None),
+        _pick("friction", "lubrication", group="lubricant"),
+        _pick("friction", "model", group="model"),
+        _pick("high-speed", "constants", group="model"),
+        _pick("bearing-set", "arrangement", group="set", default="",
+              choices=("", "DB", "DF", "DT"), label="Arrangement (a set of two)"),
+        _pick("bearing-set", "preload", group="set"),
+        _pick("bearing-set", "spacing", group="set", default=None),
+        *GEOMETRY,
+        _pick("runout", "errors", group="runout", required=False),
+        _pick("runout", "angle", group="runout"),
     )
 }
+_GROUPS = (("loads", "Loads and speed"), ("lubricant", "Lubricant, cleanliness, reliability"),
+           ("model", "Models"), ("set", "Bearing set (leave the arrangement empty for one bearing)"),
+           ("geometry", "Inline geometry (overrides the catalog bearing's)"),
+           ("runout", "Runout: paste an error set (TOML or JSON, as examples/runout/README.md)"))
+_EXAMPLES = {"radial_load": "10 kN", "fx": "1 kN", "fy": "0 N", "axial_load": "5 kN",
+             "mx": "0 N*mm", "my": "0 N*mm", "speed": "6000 rpm", "viscosity": "20 cSt",
+             "oil": "VG68", "temperature": "70 degC", "contamination_factor": "0.5",
+             "reliability": "90", "preload": "500 N", "spacing": "0 mm", "balls": "16",
+             "ball_diameter": "22.225 mm", "pitch_diameter": "125.26 mm", "inner_groove_radius": "",
+             "outer_groove_radius": "", "inner_conformity": "0.52", "outer_conformity": "0.52",
+             "contact_angle": "40 deg", "radial_clearance": "", "mean_diameter": ""}
 
 
 class Section(NamedTuple):
@@ -82,152 +104,229 @@ class Section(NamedTuple):
 
     key: str
     title: str
-    endpoint: str
-    extra: dict
+    calculation: str
     note: str
 
 
 SECTIONS = (
-    Section(
-        "high-speed",
-        "Contact angles at speed",
-        "high-speed",
-        {},
-        "Quasi-static model under thrust (Jones/Harris); the radial load does not enter.",
-    ),
-    Section(
-        "axial-angle",
-        "Contact angle at rest",
-        "axial-angle",
-        {},
-        "Operating contact angle under the axial load, at rest (test-stand method).",
-    ),
-    Section(
-        "frequencies",
-        "Defect frequencies",
-        "frequencies",
-        {},
-        "Characteristic frequencies at the operating contact angle under the axial load.",
-    ),
-    Section("load-distribution", "Load distribution and stiffness", "load-distribution", {}, ""),
-    Section("life", "Rating life", "life", {}, ""),
-    Section("friction", "Friction torque", "friction", {"model": "skf"}, "SKF model."),
+    Section("catalog", "Catalog bearing", "catalog", "Catalog data, derived geometry and ratings."),
+    Section("high-speed", "Contact angles at speed", "high-speed",
+            "Quasi-static model under thrust (Jones/Harris); radial loads and moments do not enter."),
+    Section("axial-angle", "Contact angle at rest", "axial-angle",
+            "Operating contact angle under the axial load, at rest (test-stand method)."),
+    Section("frequencies", "Defect frequencies", "frequencies",
+            "At the operating contact angle under the axial load, if one is given."),
+    Section("load-distribution", "Load distribution and stiffness", "load-distribution", ""),
+    Section("bearing-set", "Bearing set", "bearing-set", "Two bearings of the catalog bearing."),
+    Section("life", "Rating life", "life", ""),
+    Section("stand-load", "Test-stand load", "stand-load",
+            "Minimum axial load on a test stand at this speed (spec 000 section 3)."),
+    Section("runout", "Runout", "runout", "Inner-ring displacement from the error set."),
+    Section("friction", "Friction torque", "friction",
+            "F_r = |(F_x, F_y)| where F_x, F_y are given; the moments do not enter these models."),
 )
 
-
-class Result(NamedTuple):
-    """A section's outcome."""
-
-    section: Section
-    document: object  # the command's JSON document, or None
-    message: str  # the command's message when it failed ('' otherwise)
-    figure: str  # inline SVG, or ''
+_LOADS = ("radial_load", "fx", "fy", "axial_load", "mx", "my")
 
 
-def _argv_values(endpoint, values, extra):
-    """The form values the endpoint's command takes (empty fields left out), and the extra options."""
-    known = api.options(endpoint)
-    query = {k: v for k, v in values.items() if k in known and v.strip()}
-    query.update({k: v for k, v in extra.items() if k in known})
-    return query
+def _given(values, name):
+    return bool(str(values.get(name) or "").strip())
 
 
-def figure_svg(endpoint, query):
-    """The command's own figure for ``query`` (its ``--plot`` option, written as SVG) or ''.
+def _left_out(section, values):
+    """Why a section does not apply to the input (one line), or '' when it does."""
+    has = {k: _given(values, k) for k in values}
+    any_load = any(has.get(k) for k in _LOADS)
+    if section.key == "high-speed" and not (has.get("axial_load") and has.get("speed")):
+        return "Left out: the high-speed model solves a thrust at speed; give an axial load and a speed."
+    if section.key == "axial-angle" and not has.get("axial_load"):
+        return "Left out: the contact angle at rest needs an axial load."
+    if section.key == "frequencies" and not has.get("speed"):
+        return "Left out: the frequencies need a shaft speed."
+    if section.key in ("load-distribution", "life") and not any_load:
+        return "Left out: no load given."
+    if section.key == "life" and not has.get("speed"):
+        return "Left out: a life in hours needs a shaft speed."
+    if section.key == "catalog" and not has.get("bearing"):
+        return "Left out: no catalog bearing picked (inline geometry)."
+    if section.key == "stand-load" and not has.get("speed"):
+        return "Left out: the test-stand load needs a shaft speed."
+    if section.key == "runout" and not has.get("errors"):
+        return "Left out: no error set pasted."
+    if section.key == "bearing-set":
+        if not values.get("arrangement"):
+            return "Left out: no set arrangement chosen (one bearing)."
+        if not has.get("bearing"):
+            return "Left out: a set is built from a catalog bearing; pick one."
+    if section.key == "friction":
+        model = values.get("model") or "one-term"
+        if model in ("palmgren", "skf") and not has.get("viscosity"):
+            return f"Left out: the {model} model needs the lubricant viscosity."
+        if model == "two-term":
+            return "Left out: the two-term model needs its measured f0 (bearinglab friction lab)."
+    return ""
 
-    Parameters
-    ----------
-    endpoint : str
-        A key of :data:`bearinglab.web.api.ENDPOINTS`.
-    query : dict
-        Query parameters of the command (a sweep where the figure needs one).
 
-    Returns
-    -------
-    str
-        The ``<svg>`` element, or '' when the command has no figure or failed.
-    """
-    with tempfile.TemporaryDirectory() as tmp:
-        path = Path(tmp) / "figure.svg"
-        argv = list(api.ENDPOINTS[endpoint])
-        argv += [f"--{k.replace('_', '-')}={v}" for k, v in query.items()] + [f"--plot={path}"]
-        try:
-            drawn = cli.run_json(argv).exit_code == 0 and path.exists()
-        except Exception:  # noqa: BLE001 -- a figure that fails is left out; the numbers stand
-            drawn = False
-        if not drawn:
-            return ""
-        svg = path.read_text(encoding="utf-8")
-    start = svg.find("<svg")
-    return svg[start:] if start >= 0 else ""
+def _query(section, values):
+    """The form values that are fields of the section's calculation (empty ones left out)."""
+    calc = CALCULATIONS[section.calculation]
+    names = {f.name for f in calc.fields}
+    out = {k: v for k, v in values.items() if k in names and _given(values, k)}
+    if section.key == "catalog":
+        return {"name": values["bearing"]}
+    if section.key == "bearing-set" and "bearing" in out:
+        out["bearing"] = f"{out['bearing']}, {out['bearing']}"
+    if section.key == "friction" and "radial_load" not in out and (
+            _given(values, "fx") or _given(values, "fy")):
+        out["radial_load"] = _resultant(values)  # the friction models take F_r = |(F_x, F_y)|
+    return out
 
 
-def _high_speed_map(query):
-    """The high-speed map around the case: thrust from a tenth to twice the load, at rest and at speed."""
+def _resultant(values):
+    """F_r = |(F_x, F_y)| as text in N (the form's F_x and F_y; a bad one is reported by its section)."""
+    from ..units import parse_quantity
+
     try:
-        fa = parse_quantity(query["axial_load"], "force", "axial-load")
-        n = parse_quantity(query["speed"], "speed", "speed")
-    except (InputError, KeyError):
-        return ""
-    step = fa / 10.0
-    sweep = dict(
-        query,
-        axial_load=f"{step:.6g}N:{20 * step:.6g}N:{step:.6g}N",
-        speed=f"0 rpm; {query['speed']}" if n > 0 else query["speed"],
-    )
-    return figure_svg("high-speed", sweep)
+        fx, fy = (parse_quantity(values.get(k) or "0 N", "force", k) for k in ("fx", "fy"))
+    except Exception:  # noqa: BLE001 -- the load sections name the bad field
+        return values.get("fx") or values.get("fy")
+    return f"{math.hypot(fx, fy)!r} N"
 
 
-def compute(values):
-    """Run every section with the form ``values``.
+def _label(name):
+    field = FIELDS.get(name)
+    return field.title if field else ("Bearing" if name == "bearing" else name.replace("_", " "))
+
+
+async def _section(section, values, server):
+    reason = _left_out(section, values)
+    if reason:
+        return {"section": section, "document": None, "message": "", "left_out": reason, "figure": "",
+                "query": {}}
+    query = _query(section, values)
+    status, doc = await server.compute(section.calculation, query)
+    if status == 422 and section.key == "friction" and doc.get("parameter") == "model":
+        # the model has no constants for this bearing (SKF's are for deep-groove bearings): the
+        # section does not apply; it is no error of the form
+        return {"section": section, "document": None, "message": "", "figure": "", "query": {},
+                "left_out": f"Left out: {doc['detail'].removeprefix('model: ')}."}
+    result = {"section": section, "document": doc if status == 200 else None, "left_out": "",
+              "message": "" if status == 200 else doc["detail"], "figure": "", "query": query,
+              "parameter": None if status == 200 else doc.get("parameter"), "error": doc}
+    if status == 200 and section.key in ("high-speed", "load-distribution"):
+        result["figure"] = await _figure(section, query, server)
+    return result
+
+
+async def _figure(section, query, server):
+    fig_query = dict(query)
+    if section.key == "high-speed":  # the map around the case: a tenth to twice the thrust
+        try:
+            from ..units import parse_quantity
+
+            fa = parse_quantity(query["axial_load"], "force", "axial_load")
+            n = parse_quantity(query["speed"], "speed", "speed")
+        except Exception:  # noqa: BLE001 -- no figure; the numbers stand
+            return ""
+        step = fa / 10.0
+        fig_query["axial_load"] = f"{step:.6g}N:{20 * step:.6g}N:{step:.6g}N"
+        fig_query["speed"] = f"0 rpm; {query['speed']}" if n > 0 else query["speed"]
+    status, svg = await server.compute(section.calculation, fig_query, what="figure")
+    return svg if status == 200 and isinstance(svg, str) else ""
+
+
+def _inputs(values):
+    """The inputs as the report lists them: (label, value as given)."""
+    out = [("Bearing", values.get("bearing") or "inline")]
+    for k, field in FIELDS.items():
+        if _given(values, k):
+            text = str(values[k])
+            if field.kind == "document":  # the pasted document is summarised, not printed whole
+                text = f"pasted, {len(text.strip().splitlines())} lines"
+            out.append((field.title, text))
+    return out
+
+
+async def render_context(values, server):
+    """What the page template shows for the form ``values``.
 
     Parameters
     ----------
     values : dict of str to str
-        The form: ``bearing`` and the :data:`FIELDS` (empty strings for empty fields).
+        The query of the page.
+    server : object
+        Has ``async compute(name, given, request=None, what=...)`` -> (status, document).
 
     Returns
     -------
-    results : list of Result
-        One per section of :data:`SECTIONS`.
-    field_errors : dict of str to str
-        Field name -> the first message that names it.
+    dict
+        ``fields``, ``groups``, ``values``, ``submitted``, ``results`` (one dict per section),
+        ``errors`` (field -> message in the page's words), ``inputs``, ``date``, ``links``.
     """
-    results, field_errors = [], {}
-    for section in SECTIONS:
-        if not api.options(section.endpoint):
-            results.append(
-                Result(section, None, "Not available in this version of bearinglab.", "")
-            )
-            continue
-        if section.endpoint in ("life", "friction") and not values.get("viscosity", "").strip():
-            # no lubricant given: not an error of the form, just nothing to compute yet
-            results.append(Result(section, None, "Enter the lubricant viscosity to see this section.", ""))
-            continue
-        query = _argv_values(section.endpoint, values, section.extra)
-        status, doc = api.call(section.endpoint, query)  # never raises: errors come as a body
-        if status != 200:
-            name = doc.get("parameter")
-            if name in FIELDS or name == "bearing":
-                field_errors.setdefault(name, doc["detail"])
-            results.append(Result(section, None, doc["detail"], ""))
-            continue
-        svg = _high_speed_map(query) if section.endpoint == "high-speed" else ""
-        if not svg and "plot" in _plot_options(section.endpoint):
-            svg = figure_svg(section.endpoint, query)
-        results.append(Result(section, doc, "", svg))
-    return results, field_errors
-
-
-def _plot_options(endpoint):
-    """The file options of the command (the web API hides them; the page uses ``--plot`` for figures)."""
-    command = api._command(api.ENDPOINTS[endpoint])
+    values = {k: v for k, v in values.items() if k in FIELDS or k == "bearing"}
+    submitted = any(_given(values, k) for k in values)
+    results = []
+    if submitted:
+        results = list(await asyncio.gather(*(_section(s, values, server) for s in SECTIONS)))
+    errors = {}
+    for r in results:
+        name = r.get("parameter")
+        if r["message"] and name and (name in FIELDS or name == "bearing"):
+            detail = r["message"]
+            if detail.startswith(name):  # the field named as the page names it
+                detail = _label(name) + detail[len(name):]
+            errors.setdefault(name, detail)
+            r["message"] = detail
+    for r in results:
+        if r["document"] is not None:
+            q = urllib.parse.urlencode(r["query"])
+            path = r["section"].calculation
+            r["links"] = {"json": f"/api/{path}?{q}", "csv": f"/csv/{path}?{q}"}
     return {
-        o[2:]
-        for p in getattr(command, "params", ())
-        for o in getattr(p, "opts", ())
-        if o.startswith("--")
+        "fields": FIELDS, "groups": _GROUPS, "examples": _EXAMPLES, "values": values,
+        "submitted": submitted, "results": results, "errors": errors, "inputs": _inputs(values),
+        "date": datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC"),
+        "geometry_open": not values.get("bearing") or any(
+            _given(values, f.name) for f in GEOMETRY),
     }
+
+
+def to_csv(document):
+    """A document as CSV text: ``quantity,value,unit`` rows, then each table of cases as rows.
+
+    Parameters
+    ----------
+    document : dict or list
+        A calculation's JSON document.
+
+    Returns
+    -------
+    str
+    """
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    rows = document if isinstance(document, list) else None
+    if isinstance(document, dict):
+        writer.writerow(["quantity", "value", "unit"])
+        for key, value in document.items():
+            if isinstance(value, (dict, list)):
+                continue
+            _label_text, unit = quantity(key)
+            writer.writerow([key, value, unit])
+        for note in document.get("warnings") or []:
+            writer.writerow(["warning", note, ""])
+        for key, value in document.items():
+            if isinstance(value, list) and value and isinstance(value[0], dict):
+                rows = value
+                writer.writerow([])
+                writer.writerow([key])
+                break
+    if rows and isinstance(rows[0], dict):
+        keys = list(rows[0])
+        writer.writerow(keys)
+        for row in rows:
+            writer.writerow([row.get(k) if not isinstance(row.get(k), (dict, list)) else "" for k in keys])
+    return out.getvalue()
 
 
 _UNITS = (
@@ -366,3 +465,78 @@ def column_scales(rows):
         Column key -> scale.
     """
     return {key: max((_magnitude(row.get(key)) for row in rows), default=0.0) for key in rows[0]} if rows else {}
+
+
+# ----------------------------------------------------------------------------- deprecated (0.2)
+class Result(NamedTuple):
+    """A section's outcome (deprecated: :func:`render_context` gives dicts)."""
+
+    section: Section
+    document: object
+    message: str
+    figure: str
+
+
+class _InProcess:
+    """Runs calculations in this process (for the deprecated synchronous functions)."""
+
+    async def compute(self, name, given, request=None, *, what="document"):
+        from .. import calculations
+        from .api import web_error
+
+        try:
+            parsed = calculations.parse(name, given)
+            value = calculations.figure_svg(parsed) if what == "figure" else calculations.run(parsed)
+        except calculations.RequestError as exc:
+            return web_error(exc)
+        return 200, value
+
+
+def _warn(name):
+    import warnings
+
+    warnings.warn(f"bearinglab.web.page.{name} is deprecated; use render_context", DeprecationWarning,
+                  stacklevel=3)
+
+
+def compute(values):
+    """Deprecated: every section for the form ``values``, computed in this process.
+
+    Parameters
+    ----------
+    values : dict of str to str
+        The form.
+
+    Returns
+    -------
+    results : list of Result
+    field_errors : dict of str to str
+    """
+    _warn("compute")
+    context = asyncio.run(render_context(values, _InProcess()))
+    results = [Result(r["section"], r["document"], r["message"] or r["left_out"], r["figure"])
+               for r in context["results"]]
+    return results, context["errors"]
+
+
+def figure_svg(endpoint, query):
+    """Deprecated: the calculation's figure as SVG text, or ''.
+
+    Parameters
+    ----------
+    endpoint : str
+        A calculation name.
+    query : dict
+        Its parameters.
+
+    Returns
+    -------
+    str
+    """
+    _warn("figure_svg")
+    from .. import calculations
+
+    try:
+        return calculations.figure_svg(calculations.parse(endpoint, query))
+    except calculations.RequestError:
+        return ""

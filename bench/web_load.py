@@ -1,0 +1,181 @@
+"""Benchmark: the web calculator under load, on the loopback interface only (issue 22).
+
+Starts ``uvicorn`` with :func:`bearinglab.web.create_app` on 127.0.0.1 and a free port in a child
+process and measures, with a bounded number of requests and a bounded time:
+
+1. light requests per second and their p50/p99 latency (``/api/frequencies`` of the 6205-2RS, one
+   case) with ``CONCURRENCY`` clients;
+2. the latency of light requests while 4 heavy ones run (high-speed maps of ``HEAVY_CASES`` cases);
+3. the server's memory (the server process with its forkserver and workers, resident set) after 1000
+   mixed requests: light, lists, errors, catalog searches and a few heavy ones.
+
+Run: ``PYTHONPATH=src python bench/web_load.py`` (``--quick`` for a smoke run; ``--light-only`` for
+the first figure alone, e.g. against another version's server with its ``src`` on ``PYTHONPATH``). The machine's load is
+printed with the figures: on a shared machine they are a lower bound.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import os
+import socket
+import statistics
+import subprocess
+import sys
+import time
+
+import httpx
+
+LIGHT = ("/api/frequencies", {"bearing": "6205-2RS", "speed": "1797 rpm"})
+HEAVY_CASES = 20_000
+HEAVY = ("/api/high-speed", {"bearing": "B218", "axial_load": "1kN:200kN:1kN", "speed": "100rpm:10000rpm:100rpm"})
+MIXED = [
+    LIGHT,
+    ("/api/life", {"bearing": "6205-2RS", "radial_load": "2 kN", "speed": "3000 rpm", "oil": "VG68",
+                   "temperature": "70 degC"}),
+    ("/api/high-speed", {"bearing": "B218", "axial_load": "20 kN", "speed": "10000 rpm"}),
+    ("/api/friction", {"bearing": "101", "radial_load": "0N:50N:10N", "speed": "3000 rpm"}),
+    ("/api/catalog/search", {"query": "62"}),
+    ("/api/high-speed", {"bearing": "B218", "axial_load": "2,5 kN", "speed": "1 rpm"}),  # a 422
+    ("/api/axial-angle", {"bearing": "4-1006095", "axial_load": "1kgf:5kgf:1kgf"}),
+]
+CONCURRENCY = 8
+
+
+def _free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def _start(port):
+    env = dict(os.environ)
+    code = ("import uvicorn\nfrom bearinglab.web import create_app\n"
+            f"uvicorn.run(create_app(), host='127.0.0.1', port={port}, log_level='warning')\n")
+    proc = subprocess.Popen([sys.executable, "-c", code], env=env)
+    url = f"http://127.0.0.1:{port}"
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline:
+        try:
+            if httpx.get(url + LIGHT[0], params=LIGHT[1], timeout=60).status_code == 200:
+                return proc, url
+        except httpx.HTTPError:
+            time.sleep(0.2)
+    proc.kill()
+    raise RuntimeError("the server did not start")
+
+
+def _rss_mb(pid):
+    """Resident memory of a process and all its descendants [MB] (Linux /proc)."""
+    def kids(p):
+        out = []
+        for task in os.listdir(f"/proc/{p}/task"):
+            try:
+                with open(f"/proc/{p}/task/{task}/children") as fh:
+                    out += [int(c) for c in fh.read().split()]
+            except OSError:
+                pass
+        return out
+
+    total, stack = 0, [pid]
+    while stack:
+        p = stack.pop()
+        try:
+            with open(f"/proc/{p}/status") as fh:
+                total += next(int(line.split()[1]) for line in fh if line.startswith("VmRSS:"))
+            stack += kids(p)
+        except (OSError, StopIteration):
+            pass
+    return total / 1024
+
+
+async def _light_rate(url, n):
+    latencies, statuses = [], []
+    queue = asyncio.Queue()
+    for _ in range(n):
+        queue.put_nowait(LIGHT)
+
+    async def client(c):
+        while not queue.empty():
+            path, params = queue.get_nowait()
+            t = time.perf_counter()
+            r = await c.get(url + path, params=params)
+            latencies.append(time.perf_counter() - t)
+            statuses.append(r.status_code)
+
+    async with httpx.AsyncClient(timeout=60, limits=httpx.Limits(max_connections=CONCURRENCY)) as c:
+        start = time.perf_counter()
+        await asyncio.gather(*(client(c) for _ in range(CONCURRENCY)))
+        took = time.perf_counter() - start
+    return n / took, latencies, statuses
+
+
+async def _light_beside_heavy(url, n_light):
+    async with httpx.AsyncClient(timeout=120) as c:
+        heavy = [asyncio.create_task(c.get(url + HEAVY[0], params=HEAVY[1])) for _ in range(4)]
+        await asyncio.sleep(1.0)
+        latencies = []
+        for _ in range(n_light):
+            t = time.perf_counter()
+            r = await c.get(url + LIGHT[0], params=LIGHT[1])
+            latencies.append(time.perf_counter() - t)
+            assert r.status_code == 200
+            await asyncio.sleep(0.05)
+        running = sum(not h.done() for h in heavy)
+        statuses = [(await h).status_code for h in heavy]
+    return latencies, running, statuses
+
+
+async def _mixed(url, n):
+    statuses = {}
+    async with httpx.AsyncClient(timeout=120, limits=httpx.Limits(max_connections=CONCURRENCY)) as c:
+        sem = asyncio.Semaphore(CONCURRENCY)
+
+        async def one(i):
+            path, params = MIXED[i % len(MIXED)]
+            async with sem:
+                r = await c.get(url + path, params=params)
+            statuses[r.status_code] = statuses.get(r.status_code, 0) + 1
+
+        await asyncio.gather(*(one(i) for i in range(n)))
+    return statuses
+
+
+def _pct(values, q):
+    values = sorted(values)
+    return values[min(len(values) - 1, round(q * (len(values) - 1)))]
+
+
+def main(quick=False, light_only=False):
+    n_light, n_beside, n_mixed = (200, 10, 100) if quick else (1500, 40, 1000)
+    port = _free_port()
+    proc, url = _start(port)
+    try:
+        load = os.getloadavg()
+        print(f"machine: {os.cpu_count()} CPUs, load average {load[0]:.1f} {load[1]:.1f} {load[2]:.1f}")
+        start_mb = _rss_mb(proc.pid)
+        asyncio.run(_light_rate(url, 100))  # warm-up
+        rate, lat, statuses = asyncio.run(_light_rate(url, n_light))
+        assert set(statuses) == {200}, set(statuses)
+        print(f"RESULT web_light rate={rate:.0f}/s n={n_light} concurrency={CONCURRENCY} "
+              f"p50={_pct(lat, 0.5) * 1e3:.1f}ms p99={_pct(lat, 0.99) * 1e3:.1f}ms")
+        if light_only:  # e.g. to compare with another version of the server under the same load
+            return 0
+        beside, running, heavy_status = asyncio.run(_light_beside_heavy(url, n_beside))
+        print(f"RESULT web_light_beside_4_heavy n={n_beside} p50={statistics.median(beside) * 1e3:.1f}ms "
+              f"p99={_pct(beside, 0.99) * 1e3:.1f}ms max={max(beside) * 1e3:.1f}ms "
+              f"(heavy: {HEAVY_CASES} cases each, {running} still running after the light ones, "
+              f"status {heavy_status})")
+        mixed = asyncio.run(_mixed(url, n_mixed))
+        time.sleep(1.0)
+        print(f"RESULT web_memory after={_rss_mb(proc.pid):.0f}MB start={start_mb:.0f}MB "
+              f"mixed={n_mixed} statuses={dict(sorted(mixed.items()))}")
+        assert 500 not in mixed
+    finally:
+        proc.terminate()
+        proc.wait(10)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(quick="--quick" in sys.argv, light_only="--light-only" in sys.argv))

@@ -1,0 +1,389 @@
+"""The documents of the calculations: what ``bearinglab <command> --json`` prints, for a Parsed request.
+
+``catalog`` and ``catalog-search`` are built here from :mod:`bearinglab.catalog` and
+:mod:`bearinglab.tables`. The other calculations run their command's function in this process with
+the request's checked values as options and read the document it prints: the command line builds
+those documents inline, and until each is factored into a function of its own, running the command
+is what keeps the two identical (``tests/calculations/test_documents.py``). The command's function is
+called with the checked values (no command line is parsed again); figures and posted documents go
+through the whole command line with a private temporary file. Capturing the printed
+document redirects this process's stdout, so a server runs these in worker processes, one request per
+process at a time (:mod:`bearinglab.web.workers`); never in threads of one process.
+
+Functions
+---------
+run          Parsed -> the document
+figure_svg   Parsed -> the command's figure as SVG text, or ''
+argv         Parsed -> the command words and options
+RunFailure   a run that failed: input (exit 2) or convergence (exit 3), with the field it names
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import re
+import tempfile
+import threading
+import warnings
+from pathlib import Path
+
+from ..errors import InputError
+from .fields import RequestError
+
+__all__ = ["RunFailure", "argv", "figure_svg", "run"]
+
+# run through the whole command line: runout's command is a group callback that needs click's context
+_VIA_COMMAND_LINE = {"runout", "catalog"}
+_CAPTURE = threading.Lock()  # stdout is process-wide: one captured command at a time in a process
+_ERROR = "bearinglab: error: "
+
+
+class RunFailure(RequestError):
+    """A calculation that failed on its input (``kind="input"``) or did not converge
+    (``kind="convergence"``); the message names fields as ``{name}`` placeholders."""
+
+    def __init__(self, parameter, value, template, kind="input"):
+        self.kind = kind
+        super().__init__(parameter, value, "", template)
+
+
+def argv(parsed, *, documents=None):
+    """The command words and options for ``parsed`` (documents written to files named in ``documents``).
+
+    Parameters
+    ----------
+    parsed : Parsed
+        A checked request.
+    documents : dict, optional
+        Field name -> the path its posted document was written to.
+
+    Returns
+    -------
+    list of str
+    """
+    calc = parsed.calculation
+    words = list(calc.command)
+    for f in calc.fields:
+        if f.name not in parsed.given:
+            continue
+        value = parsed.values[f.name]
+        if f.kind == "flag":
+            if value:
+                words.append(f.cli_option)
+        elif f.kind == "document":
+            words.append(f"{f.cli_option}={documents[f.name]}")
+        elif f.cli_option == "NAME":
+            words.append(str(parsed.given[f.name]).strip())
+        elif f.many and f.kind == "text":
+            words += [f"{f.cli_option}={v}" for v in value]
+        else:  # '=' keeps a value such as '-5 kN' from reading as an option
+            words.append(f"{f.cli_option}={str(parsed.given[f.name]).strip()}")
+    return words
+
+
+# the option a message names: "--axial-load", "'--axial-load' / '-F'", or a leading "axial-load:"
+_OPTION = re.compile(r"'?(--[a-z][a-z0-9-]*)'?(?: / '-[^'\s]+')?")
+_LEADING = re.compile(r"^([a-z][a-z0-9-]*)(?=:| must | needs | is | has )")
+
+
+def _failure(calc, message, kind):
+    """The command's one-line message as a RunFailure naming the calculation's fields."""
+    by_option = {f.cli_option: f.name for f in calc.fields}
+    by_option.update({"--" + f.name.replace("_", "-"): f.name for f in calc.fields})
+    parameter = None
+    m = _LEADING.match(message)
+    if m and "--" + m.group(1) in by_option:
+        parameter = by_option["--" + m.group(1)]
+        message = "{field:" + parameter + "}" + message[m.end():]
+
+    def named(match):
+        nonlocal parameter
+        name = by_option.get(match.group(1))
+        if name is None:
+            return match.group(0)
+        parameter = parameter or name
+        return "{field:" + name + "}"
+
+    message = _OPTION.sub(named, message)
+    message = message.replace("Missing option ", "Missing ")
+    template = message.replace("{field:" + parameter + "}", "{name}") if parameter else message
+    return RunFailure(parameter, None, template, kind)
+
+
+def _run_command(words):
+    """Run the command line with ``words`` and ``--json`` here; its document, or a RunFailure."""
+    from .. import cli
+
+    out, err = io.StringIO(), io.StringIO()
+    with _CAPTURE, warnings.catch_warnings(), contextlib.redirect_stdout(out), \
+            contextlib.redirect_stderr(err):
+        code = cli.main([*words, "--json"])
+    return code, out.getvalue(), err.getvalue()
+
+
+_DIRECT = {}  # command words -> (callback, option -> parameter name, defaults); built once a process
+
+
+def _direct(words):
+    """The command's function, the python name of each option and the defaults (from click's params)."""
+    if words not in _DIRECT:
+        from .. import cli
+
+        command = cli._click_command()
+        for word in words:
+            command = command.commands[word]
+        names = {o: p.name for p in command.params for o in p.opts if o.startswith("--")}
+        defaults = {p.name: (() if p.multiple and p.default is None else p.default)
+                    for p in command.params}
+        _DIRECT[words] = (command.callback, names, defaults)
+    return _DIRECT[words]
+
+
+def _call_command(parsed):
+    """Call the command's function with the checked values and ``--json``, without parsing a command
+    line: (exit code, stdout, stderr) as :func:`_run_command` gives them. The values the layer has
+    checked (whole numbers, numbers, flags) are passed as such, quantities as the text given."""
+    from .. import cli
+    from ..errors import ConvergenceError
+
+    calc = parsed.calculation
+    callback, names, defaults = _direct(calc.command)
+    kwargs = dict(defaults, json_out=True)
+    for f in calc.fields:
+        if f.name not in parsed.given:
+            continue
+        value = parsed.values[f.name]
+        name = names[f.cli_option]
+        if f.kind in ("int", "number", "flag"):
+            kwargs[name] = value
+        elif f.many and f.kind == "text":
+            kwargs[name] = list(value)
+        else:
+            kwargs[name] = str(parsed.given[f.name]).strip()
+    out, err = io.StringIO(), io.StringIO()
+    code = 0
+    with _CAPTURE, warnings.catch_warnings(), contextlib.redirect_stdout(out), \
+            contextlib.redirect_stderr(err):
+        warnings.simplefilter("ignore", RuntimeWarning)
+        try:
+            callback(**kwargs)
+        except ConvergenceError as exc:
+            code = 2 if exc.physical else 3
+            print(f"{_ERROR}{exc.summary}", file=err)
+        except InputError as exc:
+            code = 2
+            print(f"{_ERROR}{cli._name_option(str(exc), argv(parsed))}", file=err)
+    return code, out.getvalue(), err.getvalue()
+
+
+def _with_documents(parsed, action):
+    """Write the posted documents to a temporary directory, run ``action(documents)`` there."""
+    posted = {f.name: parsed.values[f.name] for f in parsed.calculation.fields
+              if f.kind == "document" and f.name in parsed.values}
+    if not posted:
+        return action({})
+    with tempfile.TemporaryDirectory(prefix="bearinglab-") as tmp:
+        paths = {}
+        for name, text in posted.items():
+            doc = _document(name, text)
+            path = Path(tmp) / f"{name}.toml"
+            path.write_text(_toml(doc), encoding="utf-8")
+            paths[name] = path
+        return action(paths)
+
+
+def _document(name, text):
+    """A posted JSON or TOML document as a dict; one that refers to a file is refused."""
+    import tomllib
+
+    text = text.strip()
+    try:
+        doc = json.loads(text) if text.startswith("{") else tomllib.loads(text)
+    except (ValueError, tomllib.TOMLDecodeError) as exc:
+        raise RequestError(name, "...", "a JSON or TOML document",
+                           f"{{name}}: not a JSON or TOML document ({exc})") from None
+    if not isinstance(doc, dict):
+        raise RequestError(name, "...", "a JSON object", "{name}: expected a JSON object or TOML tables")
+
+    def walk(node, where):
+        if isinstance(node, dict):
+            for key, value in node.items():
+                if key == "profile":  # a file name: nothing is read from the server's disk
+                    raise RequestError(name, "...", "inline angle/deviation arrays",
+                                       f"{{name}}: [{where}] names a profile file; a request cannot "
+                                       "refer to files: give the inline 'angle' and 'deviation' arrays")
+                walk(value, f"{where}.{key}" if where else key)
+        elif isinstance(node, list):
+            for item in node:
+                walk(item, where)
+
+    walk(doc, "")
+    return doc
+
+
+def _toml(doc):
+    """A dict of tables as TOML text (strings, numbers, booleans, arrays, nested tables)."""
+    lines = []
+
+    def value(v):
+        if isinstance(v, bool):
+            return "true" if v else "false"
+        if isinstance(v, (int, float)):
+            return repr(v)
+        if isinstance(v, str):
+            return json.dumps(v)
+        if isinstance(v, list):
+            return "[" + ", ".join(value(x) for x in v) + "]"
+        if isinstance(v, dict):
+            return "{" + ", ".join(f"{json.dumps(k)} = {value(x)}" for k, x in v.items()) + "}"
+        raise InputError(f"cannot write {v!r} as TOML")
+
+    def table(prefix, node):
+        scalars = {k: v for k, v in node.items() if not isinstance(v, dict)}
+        if prefix and (scalars or not node):
+            lines.append(f"[{prefix}]")
+        for k, v in scalars.items():
+            lines.append(f"{json.dumps(k)} = {value(v)}")
+        for k, v in node.items():
+            if isinstance(v, dict):
+                table(f"{prefix}.{json.dumps(k)}" if prefix else json.dumps(k), v)
+
+    table("", doc)
+    return "\n".join(lines) + "\n"
+
+
+def _command_document(parsed, extra=()):
+    def action(paths):
+        if not paths and not extra and parsed.calculation.name not in _VIA_COMMAND_LINE:
+            code, out, err = _call_command(parsed)
+        else:
+            code, out, err = _run_command([*argv(parsed, documents=paths), *extra])
+        if code == 0:
+            doc = json.loads(out) if out.strip() else None
+            return _posted(doc, {str(p) for p in paths.values()})
+        errors = [line for line in err.splitlines() if line.startswith(_ERROR)]
+        message = errors[-1][len(_ERROR):] if errors else (err.strip().splitlines() or ["failed"])[-1]
+        for path in paths.values():  # the temporary file is the user's posted document
+            message = message.replace(str(path), "the posted document")
+        raise _failure(parsed.calculation, message, "convergence" if code == 3 else "input")
+
+    return _with_documents(parsed, action)
+
+
+def _posted(doc, paths):
+    """The document with the temporary file of a posted document named as what it is."""
+    if not paths or not isinstance(doc, dict):
+        return doc
+    return {k: ("(posted document)" if isinstance(v, str) and v in paths else v) for k, v in doc.items()}
+
+
+def _catalog_document(name):
+    """``catalog show NAME --json`` (the same steps as the command, for the built-in catalog)."""
+    from .. import catalog, ratings, tables
+
+    b = catalog.get(name)
+    info = tables.bearing_summary(b)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            info.update(tables.ratings(ratings.bearing_ratings(b)))
+        except InputError as exc:
+            given = {k: getattr(b, k) for k in ("dynamic_load_rating", "static_load_rating",
+                                                "fatigue_load_limit")}
+            info.update({f"{k}_N": v for k, v in given.items()})
+            info["rating_source"] = {k: "catalog" for k, v in given.items() if v is not None}
+            caught.append(warnings.WarningMessage(f"ratings: not computed ({exc})", UserWarning, "", 0))
+    notes = list(dict.fromkeys(str(c.message) for c in caught))
+    info.update(inputs={"name": name, "catalog": None}, warnings=notes)
+    return json.loads(json.dumps(info, default=float, allow_nan=True))
+
+
+def _search_document(values):
+    """The catalog bearings whose designation or alias contains ``query`` and whose bore and outside
+    diameter lie within the ranges given (a value matches within 0.5 mm)."""
+    from .. import catalog, tables
+
+    query = str(values.get("query", "")).strip().lower()
+    aliases = catalog.aliases()
+    out = []
+
+    def within(x, size):
+        if size is None:
+            return True
+        return x is not None and abs(x * 1e-3 - size) <= 0.5e-3
+
+    for name in catalog.names():
+        words = [name.lower(), *(a.lower() for a in aliases.get(name, []))]
+        if query and not any(query in w for w in words):
+            continue
+        row = dict(tables.catalog_entry(name, catalog.get(name)), aliases=aliases.get(name, []))
+        if within(row.get("bore_mm"), values.get("bore")) and within(
+                row.get("outside_diameter_mm"), values.get("outside_diameter")):
+            out.append(row)
+    limit = values.get("limit", 50)
+    return {"query": values.get("query", ""), "count": len(out), "truncated": len(out) > limit,
+            "matches": out[:limit]}
+
+
+def run(parsed):
+    """The JSON document of a checked request: what ``bearinglab <command> ... --json`` prints.
+
+    Parameters
+    ----------
+    parsed : Parsed
+        From :func:`bearinglab.calculations.parse`.
+
+    Returns
+    -------
+    dict or list
+        The document.
+
+    Raises
+    ------
+    RunFailure
+        The calculation rejected its input (``kind`` "input") or did not converge ("convergence").
+    """
+    name = parsed.calculation.name
+    if name == "catalog":
+        try:
+            return _catalog_document(parsed.values["name"])
+        except InputError as exc:
+            message = str(exc).removeprefix("bearing: ")
+            raise RunFailure("name", parsed.values["name"], "{name}: " + message) from None
+    if name == "catalog-search":
+        return _search_document(parsed.values)
+    return _command_document(parsed)
+
+
+#: the calculations whose command draws a figure, and the option it takes
+_PLOTS = {"high-speed": ".svg", "load-distribution": ".svg", "bearing-set": ".svg"}
+
+
+def figure_svg(parsed):
+    """The calculation's own figure (its command's ``--plot``) as SVG text, or '' when it has none.
+
+    Parameters
+    ----------
+    parsed : Parsed
+        A checked request (a high-speed figure needs at least two thrusts).
+
+    Returns
+    -------
+    str
+    """
+    name = parsed.calculation.name
+    if name not in _PLOTS:
+        return ""
+    with tempfile.TemporaryDirectory(prefix="bearinglab-") as tmp:
+        path = Path(tmp) / "figure.svg"
+        try:
+            _command_document(parsed, extra=(f"--plot={path}",))
+        except RequestError:
+            return ""
+        if not path.exists():
+            return ""
+        svg = path.read_text(encoding="utf-8")
+    start = svg.find("<svg")
+    return svg[start:] if start >= 0 else ""

@@ -1,0 +1,250 @@
+"""The inputs of a calculation, declared once: what each field is, how it is read and checked.
+
+A :class:`Field` says what a boundary needs to show, read and check one input: its name, the quantity
+kind and the unit it is shown in, the valid range, the default, the help text, its label on the page,
+and whether it may be a list or a range. :func:`parse_field` reads a value as a user wrote it with
+:mod:`bearinglab.units` and checks it once; a bad value raises :class:`RequestError`, which holds the
+field, the value and the valid range so that each boundary words it its own way (``--axial-load`` on
+the command line, *Axial load* on the page, ``axial_load`` in the API).
+
+Fields
+------
+Field           one input of a calculation
+RequestError    a bad input: field, value, valid range, and the message with the name left open
+parse_field     one value as written -> its checked value (SI floats, an int, a choice, a flag, text)
+count_values    how many values a list or range holds, without building it
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+from ..errors import InputError
+
+__all__ = ["Field", "RequestError", "count_values", "parse_field"]
+
+#: kinds that are not quantities of :data:`bearinglab.units.KINDS`
+_PLAIN = ("int", "number", "choice", "flag", "text", "document")
+_TRUE, _FALSE = {"true", "1", "yes", "on"}, {"false", "0", "no", "off"}
+# SI value -> shown value, per display unit (the unit a field is shown and bounded in)
+_SCALE = {
+    "N": 1.0, "kN": 1e3, "mm": 1e-3, "um": 1e-6, "deg": math.pi / 180.0, "rpm": 2.0 * math.pi / 60.0,
+    "N*mm": 1e-3, "cSt": 1e-6, "GPa": 1e9, "degC": 1.0, "%": 1.0, "-": 1.0, "": 1.0,
+}
+
+
+@dataclass(frozen=True)
+class Field:
+    """One input of a calculation.
+
+    ``minimum`` and ``maximum`` are in the display ``unit`` (``mm``, ``kN``); ``exclusive`` makes
+    the minimum strict (> rather than >=). ``many`` allows a list or a range (``2kN:20kN:2kN``),
+    whose values multiply into cases. ``option`` is the command line's spelling where it is not
+    ``--`` and the name with dashes.
+    """
+
+    name: str
+    kind: str
+    help: str
+    label: str = ""
+    unit: str = ""
+    default: object = None
+    required: bool = False
+    minimum: float | None = None
+    maximum: float | None = None
+    exclusive: bool = False
+    choices: tuple = ()
+    many: bool = False
+    group: str = ""
+    option: str = ""
+
+    @property
+    def cli_option(self):
+        """The command line's option: ``--axial-load``."""
+        return self.option or "--" + self.name.replace("_", "-")
+
+    @property
+    def title(self):
+        """The label on the page (the name in words when none is given)."""
+        return self.label or self.name.replace("_", " ").capitalize()
+
+    def valid(self):
+        """The valid values in words: ``> 0 kN``, ``1 ... 50``, ``one of newton, angle-iteration``."""
+        if self.choices:
+            return "one of " + ", ".join(self.choices)
+        unit = f" {self.unit}" if self.unit and self.unit != "-" else ""
+        low, high = self.minimum, self.maximum
+        if low is not None and high is not None:
+            return f"{'>' if self.exclusive else ''}{low:g} ... {high:g}{unit}"
+        if low is not None:
+            return f"{'>' if self.exclusive else '>='} {low:g}{unit}"
+        if high is not None:
+            return f"<= {high:g}{unit}"
+        if self.kind == "flag":
+            return "true or false"
+        return {"text": "text", "document": "a JSON or TOML document"}.get(self.kind, f"a {self.kind}")
+
+
+class RequestError(InputError):
+    """A bad input of a calculation, named as each boundary names it.
+
+    Attributes
+    ----------
+    parameter : str or None
+        The field's name (``axial_load``); None when the request as a whole is at fault.
+    value : object
+        The value given.
+    valid : str
+        The valid values in words (``>= 1 ... 50``), or '' where no range applies.
+    template : str
+        The message with ``{name}`` where the field's name goes.
+    """
+
+    def __init__(self, parameter, value, valid, template):
+        self.parameter, self.value, self.valid, self.template = parameter, value, valid, template
+        super().__init__(self.worded(lambda name: name))
+
+    def worded(self, name_of):
+        """The message with each field named by ``name_of(field name)`` (an option, a label ...):
+        ``{name}`` is the field at fault, ``{field:NAME}`` another field the message names."""
+        text = self.template.replace("{name}", name_of(self.parameter) if self.parameter else "request")
+        return _OTHER.sub(lambda m: name_of(m.group(1)), text)
+
+
+_OTHER = re.compile(r"\{field:([a-z0-9_]+)\}")
+_MALFORMED = re.compile(r"\d*\.\d*\.\d")
+_RANGE = re.compile(r"^([^:]+):([^:]+):([^:]+)$")
+
+
+def count_values(field, text):
+    """How many values ``text`` holds for ``field`` (a range is counted, not built).
+
+    Parameters
+    ----------
+    field : Field
+        A field with ``many``.
+    text : str
+        One value, a list ``a, b, c UNIT`` or a range ``start:stop:step``.
+
+    Returns
+    -------
+    int
+    """
+    from ..units import parse_values
+
+    m = _RANGE.match(str(text).strip())
+    if not m:
+        sep = ";" if ";" in text else ","
+        return len([s for s in str(text).split(sep) if s.strip()])
+    unit = re.sub(r"^\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", "", m.group(3)).strip()
+    ends = []
+    for part in m.groups():
+        part = part.strip()
+        if unit and re.fullmatch(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", part):
+            part = f"{part} {unit}"
+        ends.append(float(parse_values(part, field.kind, field.name)[0]))
+    start, stop, step = ends
+    if not (step > 0 and stop >= start):
+        raise RequestError(field.name, text, "start:stop:step with step > 0 and stop >= start",
+                           f"{{name}}: range {text!r} needs step > 0 and stop >= start")
+    return math.floor((stop - start) / step * (1 + 1e-12) + 1e-9) + 1
+
+
+def _bounded(field, shown, text):
+    """Check the value ``shown`` (in the field's display unit) against the field's range."""
+    low, high = field.minimum, field.maximum
+    bad = not math.isfinite(shown)
+    if low is not None:
+        bad |= shown <= low if field.exclusive else shown < low
+    if high is not None:
+        bad |= shown > high
+    if bad:
+        unit = f" {field.unit}" if field.unit and field.unit != "-" else ""
+        raise RequestError(field.name, text, field.valid(),
+                           f"{{name}} must be {field.valid()}, got {shown:g}{unit}")
+
+
+def parse_field(field, value, *, limit=None):
+    """Read and check one value of ``field`` as a user wrote it.
+
+    Parameters
+    ----------
+    field : Field
+        The field.
+    value : str, int, float or bool
+        The value as given (text from a form or a query, a number or a flag from a JSON body).
+    limit : int, optional
+        The most values a list or range may hold.
+
+    Returns
+    -------
+    object
+        A quantity in SI (a float; a numpy array for a field with ``many``), an int, a float, a
+        choice, a bool, or the text.
+
+    Raises
+    ------
+    RequestError
+        The value does not parse, has the wrong dimension, lies outside the range, or a list or range
+        holds more than ``limit`` values.
+    """
+    from ..units import parse_quantity, parse_values
+
+    kind = field.kind
+    if kind == "flag":
+        if isinstance(value, bool):
+            return value
+        text = str(value).strip().lower()
+        if text in _TRUE or text in _FALSE:
+            return text in _TRUE
+        raise RequestError(field.name, value, "true or false",
+                           f"{{name}}: expected true or false, got {value!r}")
+    if kind in ("text", "document"):
+        if not isinstance(value, str):
+            raise RequestError(field.name, value, field.valid(), f"{{name}}: expected text, got {value!r}")
+        return value
+    if kind == "choice":
+        text = str(value).strip()
+        if text not in field.choices:
+            raise RequestError(field.name, value, field.valid(),
+                               f"{{name}} must be {field.valid()}, got {value!r}")
+        return text
+    if kind in ("int", "number"):
+        if isinstance(value, bool):
+            raise RequestError(field.name, value, field.valid(), f"{{name}}: expected a number, got {value!r}")
+        try:
+            number = int(str(value).strip()) if kind == "int" else float(str(value).strip())
+        except ValueError:
+            what = "a whole number" if kind == "int" else "a plain number"
+            raise RequestError(field.name, value, field.valid(),
+                               f"{{name}}: expected {what}, got {value!r}") from None
+        _bounded(field, float(number), value)
+        return number
+    # a quantity
+    text = value if isinstance(value, str) else (f"{value} {field.unit}" if field.unit else str(value))
+    if _MALFORMED.search(text):  # '1.2.3 kN' is no number (pint would read 1.2 * 0.3 kN)
+        raise RequestError(field.name, value, field.valid(),
+                           f"{{name}}: {text!r} holds a malformed number (two decimal points)")
+    scale = _SCALE.get(field.unit, 1.0)
+    try:
+        if field.many:
+            count = count_values(field, text)
+            if limit is not None and count > limit:
+                raise RequestError(field.name, text, f"at most {limit} values",
+                                   f"{{name}}: {text!r} holds {count} values, more than the limit of {limit}")
+            values = parse_values(text, kind, field.name)
+            for v in values.flat:
+                _bounded(field, float(v) / scale if field.unit != "degC" else float(v) - 273.15, text)
+            return values
+        si = parse_quantity(text, kind, field.name)
+    except RequestError:
+        raise
+    except InputError as exc:  # the units' message opens with the field's name: leave it open
+        message = str(exc)
+        if message.startswith(field.name):
+            message = "{name}" + message[len(field.name):]
+        raise RequestError(field.name, value, field.valid(), message) from None
+    _bounded(field, si / scale if field.unit != "degC" else si - 273.15, text)
+    return si

@@ -1,0 +1,306 @@
+"""Every calculation's inputs, declared: the fields, how they combine into cases, the size bounds.
+
+One :class:`Calculation` per capability of the command line (``life``, ``load-distribution``,
+``bearing-set``, ``friction``, ``high-speed``, ``frequencies``, ``axial-angle``, ``stand-load``,
+``catalog``, ``catalog-search``, ``runout``). The command line's options and these fields are held
+equal by ``tests/calculations/test_cli_fields.py``; the web builds its models from them.
+
+Bounds (the strict-input work may move them to a shared module; they are defined here until then)
+-------------------------------------------------------------------------------------------------
+CASE_LIMIT       the most cases one request may hold (a list or range, or their grid)
+TIME_BUDGET      seconds one web request may run before it is stopped
+BODY_LIMIT       the largest request body the web accepts [bytes]
+DOCUMENT_LIMIT   the largest posted document (a runout error set) [characters]
+
+Calculations
+------------
+Calculation      one calculation: name, command words, title, fields, combination of cases
+CALCULATIONS     name -> Calculation
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .fields import Field
+
+__all__ = ["BODY_LIMIT", "CALCULATIONS", "CASE_LIMIT", "DOCUMENT_LIMIT", "TIME_BUDGET", "Calculation"]
+
+#: The most cases one request may hold: a full design map of 10^5 cases fits, with room.
+CASE_LIMIT = 200_000
+#: Seconds one web request may compute before its worker is stopped (>= 30 s by the issue; a map of
+#: 10^5 high-speed cases took 50 s with its 112 MB of JSON on the shared 2-core machine).
+TIME_BUDGET = 120.0
+#: The largest request body the web reads [bytes].
+BODY_LIMIT = 1 << 20
+#: The largest posted document, e.g. a runout error set [characters].
+DOCUMENT_LIMIT = 500_000
+
+
+@dataclass(frozen=True)
+class Calculation:
+    """One calculation as every boundary sees it.
+
+    ``combine`` says how list fields make cases: ``grid`` (every combination), ``broadcast`` (lists
+    of one length, or one value, taken element by element), ``single`` (no lists). ``heavy`` marks a
+    calculation whose single case may take seconds (it runs in the heavy pool of the web).
+    """
+
+    name: str
+    command: tuple
+    title: str
+    summary: str
+    fields: tuple
+    combine: str = "single"
+    heavy: bool = False
+
+    def field(self, name):
+        """The field called ``name`` (KeyError when there is none)."""
+        return {f.name: f for f in self.fields}[name]
+
+
+def _f(name, kind, help, **kw):
+    return Field(name, kind, help, **kw)
+
+
+_GEO = "geometry"
+BEARING = _f("bearing", "text", "Catalog name, e.g. B218, 4-1006095, 6205-2RS.", label="Bearing",
+             group="bearing")
+GEOMETRY = (
+    _f("balls", "int", "Number of balls.", label="Balls", minimum=3, maximum=200, group=_GEO),
+    _f("ball_diameter", "length", "Ball diameter D, e.g. '2 mm'.", label="Ball diameter", unit="mm",
+       minimum=0, exclusive=True, maximum=1000, group=_GEO),
+    _f("pitch_diameter", "length", "Pitch diameter d_m, e.g. '8.7355 mm'.", label="Pitch diameter",
+       unit="mm", minimum=0, exclusive=True, maximum=10000, group=_GEO),
+    _f("inner_groove_radius", "length", "Inner groove radius r_i, e.g. '1.05 mm'.",
+       label="Inner groove radius", unit="mm", minimum=0, exclusive=True, group=_GEO),
+    _f("outer_groove_radius", "length", "Outer groove radius r_o, e.g. '1.16 mm'.",
+       label="Outer groove radius", unit="mm", minimum=0, exclusive=True, group=_GEO),
+    _f("inner_conformity", "number", "f_i = r_i / D.", label="Inner conformity r/D", unit="-",
+       minimum=0.5, exclusive=True, maximum=1.0, group=_GEO),
+    _f("outer_conformity", "number", "f_o = r_o / D.", label="Outer conformity r/D", unit="-",
+       minimum=0.5, exclusive=True, maximum=1.0, group=_GEO),
+    _f("contact_angle", "angle", "Nominal (free) angle, e.g. '12 deg'.", label="Free contact angle",
+       unit="deg", minimum=0, maximum=90, group=_GEO),
+    _f("radial_clearance", "length", "Diametral clearance, e.g. '9 um'.", label="Radial clearance",
+       unit="um", minimum=0, group=_GEO),
+    _f("ball_material", "choice", "Ball material.", label="Ball material",
+       choices=("steel", "silicon_nitride"), group=_GEO),
+)
+_L = "loads"
+LOADS = (
+    _f("fx", "force", "Radial force along x, e.g. '1 kN'.", label="F_x", unit="N", group=_L),
+    _f("fy", "force", "Radial force along y, e.g. '200 N'.", label="F_y", unit="N", group=_L),
+    _f("fz", "force", "Axial force (along the bearing axis), e.g. '500 N'.", label="F_z", unit="N",
+       group=_L),
+    _f("mx", "torque", "Tilting moment about x, e.g. '1000 N*mm'.", label="M_x", unit="N*mm", group=_L),
+    _f("my", "torque", "Tilting moment about y, e.g. '2 N*m'.", label="M_y", unit="N*mm", group=_L),
+    _f("radial_load", "force", "Radial load F_r (same as fx).", label="Radial load F_r", unit="N",
+       group=_L),
+    _f("axial_load", "force", "Axial load F_a (same as fz).", label="Axial load F_a", unit="N", group=_L),
+)
+_SOLVE = (
+    _f("speed", "speed", "Inner-ring speed, e.g. '6000 rpm'.", label="Shaft speed", unit="rpm",
+       default="0 rpm", group=_L),
+    _f("first_ball_angle", "angle", "Azimuth of ball 0 from +x.", label="First ball azimuth",
+       unit="deg", default="0 deg", group="model"),
+    _f("stiffness_at", "choice", "Hertz constants at each contact's angle (operating) or at the free "
+       "angle (free, ISO/TS 16281).", label="Stiffness at", default="operating",
+       choices=("operating", "free"), group="model"),
+)
+_O = "lubricant"
+OIL = (
+    _f("viscosity", "kinematic_viscosity", "Operating kinematic viscosity, e.g. '20 cSt'.",
+       label="Viscosity", unit="cSt", minimum=0, exclusive=True, group=_O),
+    _f("oil", "text", "ISO VG grade, e.g. VG68 (with temperature).", label="Oil grade", group=_O),
+    _f("temperature", "text", "Operating temperature of the oil, e.g. '70 degC'.",
+       label="Oil temperature", unit="degC", group=_O),
+    _f("viscosity_index", "number", "The oil's viscosity index (default 95, a mineral oil).",
+       label="Viscosity index", unit="-", minimum=-100, maximum=400, group=_O),
+    _f("viscosity_100", "kinematic_viscosity", "The oil's viscosity at 100 degC, e.g. '8.7 cSt'.",
+       label="Viscosity at 100 degC", unit="cSt", minimum=0, exclusive=True, group=_O),
+)
+_CONTAMINATION = ("extreme", "high", "normal", "slight", "typical", "severe", "very-severe")
+_HERTZ = _f("hertz", "choice", "Hertz coefficients: exact | table (the bearing's tabulated 2K/(pi mu)).",
+            label="Hertz coefficients", default="exact", choices=("exact", "table"), group="model")
+_ELASTIC = _f("elastic_constant", "choice", "materials (from E, nu) | paper (0.592e-4 (cm^2/kgf)^(2/3)).",
+              label="Elastic constant", default="materials", choices=("materials", "paper"),
+              group="model")
+
+_CALCS = (
+    Calculation(
+        "life", ("life",), "Rating life",
+        "ISO 281 basic and modified rating lives, ISO/TS 16281 reference life.",
+        (*LOADS, _f("speed", "speed", "Inner-ring speed, e.g. '3000 rpm'.", label="Shaft speed",
+                    unit="rpm", minimum=0, group=_L),
+         *OIL,
+         _f("contamination_factor", "number", "e_C of ISO 281 table 13 (default 1).",
+            label="Contamination factor e_C", unit="-", minimum=0, maximum=1, group=_O),
+         _f("contamination", "choice", "Cleanliness of ISO 281 table 13.", label="Contamination",
+            choices=_CONTAMINATION, group=_O),
+         _f("reliability", "number", "Reliability in percent.", label="Reliability", unit="%",
+            default=90.0, minimum=90, maximum=99.95, group=_O),
+         BEARING, *GEOMETRY)),
+    Calculation(
+        "load-distribution", ("load-distribution",), "Load distribution and stiffness",
+        "5-DOF load distribution of one bearing under F_x, F_y, F_z, M_x, M_y; stiffness matrix.",
+        (*LOADS, *_SOLVE, BEARING, *GEOMETRY)),
+    Calculation(
+        "bearing-set", ("bearing-set",), "Bearing set",
+        "Preloaded DB/DF/DT sets on one shaft under F_x, F_y, F_z, M_x, M_y.",
+        (_f("bearing", "text", "Catalog name; once for every position, or a comma-separated list "
+            "from -z to +z.", label="Bearings", required=True, many=True, group="bearing"),
+         _f("arrangement", "choice", "DB (back-to-back) | DF (face-to-face) | DT (tandem).",
+            label="Arrangement", default="DB", choices=("DB", "DF", "DT"), group="set"),
+         _f("spacing", "length", "Distance between bearing centres, e.g. '100 mm'.", label="Spacing",
+            unit="mm", default="0 mm", minimum=0, group="set"),
+         _f("preload", "force", "Axial preload force at rest, e.g. '500 N'.", label="Preload",
+            unit="N", minimum=0, group="set"),
+         _f("preload_offset", "length", "Axial interference from first contact instead, e.g. '5 um'.",
+            label="Preload offset", unit="um", group="set"),
+         *LOADS, *_SOLVE)),
+    Calculation(
+        "friction", ("friction", "torque"), "Friction torque",
+        "Friction torque: one-term, two-term (handbook), Palmgren, SKF.",
+        (_f("radial_load", "force", "F_r, e.g. '10 N' (list/range allowed).", label="Radial load F_r",
+            unit="N", default="0 N", minimum=0, many=True, group=_L),
+         _f("axial_load", "force", "F_a, e.g. '5 N' (list/range allowed).", label="Axial load F_a",
+            unit="N", default="0 N", minimum=0, many=True, group=_L),
+         _f("speed", "speed", "Inner-ring speed, e.g. '3000 rpm' (list/range allowed).",
+            label="Shaft speed", unit="rpm", default="0 rpm", many=True, group=_L),
+         _f("model", "choice", "Friction model.", label="Friction model", default="one-term",
+            choices=("one-term", "two-term", "palmgren", "skf"), group="friction"),
+         BEARING,
+         _f("type", "choice", "Bearing type.", label="Bearing type", choices=("radial", "angular"),
+            group=_GEO),
+         _f("contact_angle", "angle", "Nominal (free) angle, e.g. '12 deg'.",
+            label="Free contact angle", unit="deg", minimum=0, maximum=90, group=_GEO),
+         _f("bore", "length", "Bore d, e.g. '12 mm'.", label="Bore d", unit="mm", minimum=0,
+            exclusive=True, group=_GEO),
+         _f("outside_diameter", "length", "Outside diameter D, e.g. '28 mm'.",
+            label="Outside diameter", unit="mm", minimum=0, exclusive=True, group=_GEO),
+         _f("mean_diameter", "length", "d_m = (d + D)/2, e.g. '20 mm'.", label="Mean diameter",
+            unit="mm", minimum=0, exclusive=True, group=_GEO),
+         _f("static_load_rating", "force", "C0, e.g. '2227 N'.", label="Static load rating C0",
+            unit="N", minimum=0, exclusive=True, group=_GEO),
+         _f("mu", "number", "Override of the handbook mu.", label="mu", unit="-", minimum=0,
+            group="friction"),
+         _f("x0", "number", "Override of x0 (Table 1).", label="x0", unit="-", group="friction"),
+         _f("y0", "number", "Override of y0 (Table 1).", label="y0", unit="-", group="friction"),
+         _f("f", "number", "Override of f (Table 2).", label="f", unit="-", group="friction"),
+         _f("c", "number", "Override of c (Table 2).", label="c", unit="-", group="friction"),
+         _f("f0", "number", "Speed-term factor of T0 = f0 d_m^3 n^(2/3) [N mm^-2 min^(2/3)].",
+            label="f0 (two-term)", unit="-", minimum=0, group="friction"),
+         _f("viscosity", "kinematic_viscosity", "Lubricant viscosity for model palmgren.",
+            label="Viscosity", unit="cSt", minimum=0, exclusive=True, group=_O),
+         _f("palmgren_f0", "number", "Palmgren's f0 (about 0.7-2 for deep-groove bearings).",
+            label="Palmgren f0", unit="-", minimum=0, group="friction"),
+         _f("lubrication", "choice", "For model skf: the lubrication method.",
+            label="Lubrication method", default="grease", choices=("grease", "oil-air", "oil-jet"),
+            group=_O),
+         _f("series", "text", "For model skf: the deep-groove series of SKF's constants, e.g. 62.",
+            label="SKF series", group="friction")),
+        combine="broadcast"),
+    Calculation(
+        "high-speed", ("high-speed",), "Contact angles at speed",
+        "High-speed quasi-static model under thrust (spec 004).",
+        (_f("axial_load", "force", "Thrust: '20 kN', or a list/range '2.5kN:45kN:2.5kN'.",
+            label="Axial load F_a", unit="N", required=True, minimum=0, exclusive=True, many=True,
+            group=_L),
+         _f("speed", "speed", "Inner-ring speed: '10000 rpm', or a list/range.", label="Shaft speed",
+            unit="rpm", required=True, minimum=0, many=True, group=_L),
+         BEARING, *GEOMETRY,
+         _f("solver", "choice", "newton | angle-iteration.", label="Solver", default="newton",
+            choices=("newton", "angle-iteration"), group="model"),
+         _f("raceway_control", "choice", "outer (the paper's) | inner.", label="Raceway control",
+            default="outer", choices=("outer", "inner"), group="model"),
+         _f("constants", "choice", "mass (from the ball mass) | harris | paper.",
+            label="High-speed constants", default="mass", choices=("mass", "harris", "paper"),
+            group="model"),
+         _f("gyroscopic_sign", "choice", "physical | reversed (for comparison only).",
+            label="Gyroscopic sign", default="physical", choices=("physical", "reversed"),
+            group="model"),
+         _f("reduced_modulus", "pressure", "E' of the contact pair, e.g. '228.04 GPa'.",
+            label="Reduced modulus E'", unit="GPa", minimum=0, exclusive=True, group="model")),
+        combine="grid"),
+    Calculation(
+        "frequencies", ("frequencies",), "Defect frequencies",
+        "Characteristic frequencies (FTF, BPFO, BPFI, BSF) and the spectral mask.",
+        (_f("speed", "speed", "Inner-ring (shaft) speed: '3000 rpm', '50 Hz'.", label="Shaft speed",
+            unit="rpm", required=True, group=_L),
+         _f("outer_speed", "speed", "Outer-ring speed, same sense as speed.", label="Outer-ring speed",
+            unit="rpm", default="0 rpm", group=_L),
+         _f("axial_load", "force", "Axial stand load: the frequencies at the operating angle.",
+            label="Axial load F_a", unit="N", minimum=0, exclusive=True, group=_L),
+         _HERTZ, _ELASTIC, BEARING, *GEOMETRY,
+         _f("harmonics", "int", "Harmonics 1..N in the spectral mask.", label="Harmonics",
+            default=3, minimum=1, maximum=100, group="mask"),
+         _f("sidebands", "int", "Sideband orders 1..S around BPFI and BSF.", label="Sidebands",
+            default=1, minimum=0, maximum=50, group="mask"),
+         _f("band", "text", "Full width of each mask line, in % of its frequency: '2 %'.",
+            label="Band", default="2 %", group="mask"),
+         _f("mask", "flag", "Add the spectral-mask table.", label="Spectral mask", default=False,
+            group="mask"))),
+    Calculation(
+        "axial-angle", ("axial-angle",), "Contact angle at rest",
+        "Operating contact angle under axial load (test-stand method, spec 000).",
+        (_f("axial_load", "force", "Axial load: '2 kgf', or a list/range '1kgf:5kgf:1kgf'.",
+            label="Axial load F_a", unit="N", required=True, minimum=0, exclusive=True, many=True,
+            group=_L),
+         BEARING, *GEOMETRY, _HERTZ, _ELASTIC,
+         _f("legacy", "flag", "Reproduce the paper's printed rounding.", label="Legacy rounding",
+            default=False, group="model"),
+         _f("x0", "number", "Start of the iteration table [rad].", label="x0 [rad]", unit="-",
+            group="model"),
+         _f("rows", "int", "Rows of the iteration table (default: to convergence).",
+            label="Iteration rows", minimum=1, maximum=1000, group="model")),
+        combine="grid"),
+    Calculation(
+        "stand-load", ("stand-load",), "Test-stand load",
+        "Minimum axial load on a test stand (spec 000 section 3).",
+        (_f("speed", "speed", "Inner-ring speed: '3000 rpm', or a list.", label="Shaft speed",
+            unit="rpm", required=True, many=True, group=_L),
+         BEARING, *GEOMETRY),
+        combine="grid"),
+    Calculation(
+        "catalog", ("catalog", "show"), "Catalog bearing",
+        "One bearing with its derived geometry and its ratings C, C0, Cu.",
+        (_f("name", "text", "Bearing name or alias.", label="Bearing", required=True,
+            option="NAME", group="bearing"),)),
+    Calculation(
+        "catalog-search", (), "Catalog search",
+        "Bearings of the catalog whose designation, bore and outside diameter match.",
+        (_f("query", "text", "Part of a designation or alias, e.g. 62.", label="Designation",
+            default="", group="bearing"),
+         _f("bore", "length", "Bore d (matches within 0.5 mm), e.g. '25 mm'.", label="Bore d",
+            unit="mm", group="bearing"),
+         _f("outside_diameter", "length", "Outside diameter D (matches within 0.5 mm).",
+            label="Outside diameter", unit="mm", group="bearing"),
+         _f("limit", "int", "The most matches returned.", label="Matches", default=50, minimum=1,
+            maximum=500, group="bearing"))),
+    Calculation(
+        "runout", ("runout",), "Runout",
+        "Inner-ring displacement at one angle, or the trajectory and runout over revolutions.",
+        (_f("errors", "document", "The error set as a TOML or JSON document (the format of "
+            "examples/runout/README.md), posted as text; never a file path.", label="Error set",
+            required=True, option="--errors", group="runout"),
+         BEARING,
+         _f("first_ball_angle", "angle", "Azimuth of ball 0.", label="First ball azimuth",
+            unit="deg", group="runout"),
+         _f("angle", "angle", "One rotation angle psi, e.g. '90 deg' (default 0).",
+            label="Rotation angle", unit="deg", group="runout"),
+         _f("revolutions", "int", "Rotation sequence over N inner-ring revolutions.",
+            label="Revolutions", minimum=1, maximum=100, group="runout"),
+         _f("steps_per_rev", "int", "Positions per revolution of the sequence (default 360).",
+            label="Steps per revolution", minimum=4, maximum=7200, group="runout"),
+         _f("start_angle", "angle", "psi of the first position of the sequence.",
+            label="Start angle", unit="deg", default="0 deg", group="runout"),
+         _f("cage_ratio", "number", "Cage speed / inner-ring speed (default (1 - gamma)/2).",
+            label="Cage ratio", unit="-", minimum=0, exclusive=True, maximum=1, group="runout"),
+         _f("refine", "flag", "Refine the contact points (spec 003 section 9).",
+            label="Refine contacts", default=False, group="runout")),
+        heavy=True),
+)
+
+#: Every calculation, by the name the API and the page use.
+CALCULATIONS = {c.name: c for c in _CALCS}
