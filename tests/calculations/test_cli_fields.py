@@ -65,7 +65,11 @@ def test_the_fields_spell_the_options_and_defaults_as_the_command_line(name):
             assert f.default in f.choices, f.name
 
 
-def test_catalog_search_is_a_calculation_of_the_web_only():
-    # bearinglab.catalog.search is being added on the catalog branch (issue 21); until it lands the
-    # layer searches over catalog.names() / catalog.get() with bore and outside-diameter filters
-    assert CALCULATIONS["catalog-search"].command == ()
+def test_catalog_search_takes_the_options_of_catalog_search_and_the_pickers_own():
+    # the web's search answers the page's picker (query, limit: part of a designation, within 0.5 mm)
+    # and, in "bearings", what `catalog search` prints for the same options
+    # (tests/calculations/test_documents.py), so it is no command of its own
+    calc = CALCULATIONS["catalog-search"]
+    assert calc.command == ()
+    options = set(_options(("catalog", "search"))) - _FILES_AND_OUTPUT
+    assert options | {"query", "limit"} == {f.name for f in calc.fields}

@@ -24,6 +24,23 @@ CASES = [
                   "viscosity": "20 cSt", "palmgren_f0": "1.5"}),
     ("catalog", {"name": "B218"}),
     ("catalog", {"name": "6205-2RS"}),
+    ("catalog", {"name": "6208-2RS1/C3", "clearance": "max"}),
+    ("catalog", {"name": "B218", "radial_clearance": "9 um"}),
+    ("clearance", {"bearing": "6205-2RS", "shaft_fit": "k5", "housing_fit": "H7",
+                   "inner_ring_temperature": "50 degC", "speed": "6000 rpm"}),
+    ("clearance", {"bearing": "6205-2RS", "shaft_interference": "5 um, 20 um", "monte_carlo": "200",
+                   "seed": "3", "distribution": "normal"}),
+    ("film", {"bearing": "B218", "fz": "10 kN", "speed": "3000, 6000 rpm", "viscosity": "20 cSt"}),
+    ("film", {"bearing": "6208", "radial_load": "1 kN", "speed": "6000 rpm", "oil": "VG68",
+              "temperature": "70 degC", "loads_at": "rest", "lubrication": "grease"}),
+    ("temperature", {"bearing": "6205-2RS", "radial_load": "1 kN", "speed": "6000 rpm", "oil": "VG32",
+                     "thermal_resistance": "1 K/W"}),
+    ("life", {"bearing": "6208", "radial_load": "2 kN", "speed": "1797 rpm", "shaft_fit": "j5",
+              "clearance_class": "C3", "inner_ring_temperature": "30 degC"}),
+    ("load-distribution", {"bearing": "B218", "dz": "700 um", "tilt_x": "0 mrad", "tilt_y": "0 mrad"}),
+    ("friction", {"bearing": "6205-2RS", "radial_load": "100 N", "speed": "3000 rpm", "model": "skf",
+                  "lubrication": "oil-bath", "oil_level": "3 mm", "drag_loss_factor": "0.0003",
+                  "oil": "VG68", "temperature": "60 degC"}),
 ]
 
 
@@ -73,5 +90,20 @@ def test_catalog_search_filters_by_designation_bore_and_outside_diameter():
     assert {"6205-2RS"} <= {m["name"] for m in doc["matches"]}
     assert all("62" in m["name"] or any("62" in a for a in m["aliases"]) for m in doc["matches"])
     by_size = run(parse("catalog-search", {"bore": "25 mm", "outside_diameter": "52 mm"}))
-    assert [m["name"] for m in by_size["matches"]] == ["6205-2RS"]
+    names = [m["name"] for m in by_size["matches"]]
+    assert names[0] == "6205-2RS" and "6205" in names  # the named bearing, then the standard series
+    assert all(m["bore_mm"] == pytest.approx(25) and m["outside_diameter_mm"] == pytest.approx(52)
+               for m in by_size["matches"])
     assert run(parse("catalog-search", {"bore": "26 mm"}))["count"] == 0
+
+
+@pytest.mark.parametrize("given, words", [
+    ({"bore": "40 mm", "outside_diameter": "80 mm"}, ["--bore=40 mm", "--outside-diameter=80 mm"]),
+    ({"series": "72B", "type": "angular", "width": "18 mm"}, ["--series=72B", "--type=angular",
+                                                               "--width=18 mm"]),
+])
+def test_catalog_search_bearings_are_what_catalog_search_prints(given, words):
+    doc = run(parse("catalog-search", given))
+    printed = cli.run_json(["catalog", "search", *words])
+    assert printed.exit_code == 0, printed.error
+    assert {k: doc[k] for k in ("bearings", "inputs", "warnings")} == printed.document

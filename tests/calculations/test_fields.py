@@ -100,3 +100,22 @@ def test_any_text_is_read_or_refused_with_a_request_error(name, data):
         assert value.size <= 1000 and np.all(np.isfinite(value))
     elif isinstance(value, float):
         assert math.isfinite(value)
+
+
+def test_the_web_limits_are_the_command_lines_or_lower():
+    from bearinglab import _bounds
+    from bearinglab.calculations import registry
+
+    assert CASE_LIMIT <= _bounds.MAX_CASES
+    assert registry.DOCUMENT_LIMIT <= registry.BODY_LIMIT <= _bounds.MAX_INPUT_BYTES
+    pairs = {"balls": _bounds.MAX_BALLS, "harmonics": _bounds.MAX_HARMONICS,
+             "sidebands": _bounds.MAX_SIDEBANDS, "rows": _bounds.MAX_ROWS,
+             "revolutions": _bounds.MAX_REVOLUTIONS, "steps_per_rev": _bounds.MAX_STEPS_PER_REV,
+             "monte_carlo": _bounds.MAX_SAMPLES}
+    seen = set()
+    for calc in CALCULATIONS.values():
+        for f in calc.fields:
+            if f.name in pairs:
+                assert f.maximum is not None and f.maximum <= pairs[f.name], (calc.name, f.name)
+                seen.add(f.name)
+    assert seen == set(pairs)

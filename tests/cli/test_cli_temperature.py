@@ -92,12 +92,19 @@ def test_angular_contact_without_constants_is_refused_in_one_line(capsys):
 
 
 def test_film_and_temperature_are_web_api_endpoints():
+    from bearinglab import calculations
     from bearinglab.web import api
 
-    status, doc = api.call("temperature", {"bearing": "6205-2RS", "radial_load": "1 kN", "speed": "6000 rpm",
-                                           "oil": "VG32", "thermal_resistance": "1 K/W"})
+    def call(endpoint, query):
+        try:
+            return 200, calculations.run(calculations.parse(api.ENDPOINTS[endpoint], query))
+        except calculations.RequestError as exc:
+            return api.web_error(exc)
+
+    status, doc = call("temperature", {"bearing": "6205-2RS", "radial_load": "1 kN", "speed": "6000 rpm",
+                                       "oil": "VG32", "thermal_resistance": "1 K/W"})
     assert status == 200 and doc["friction_power_W"] == pytest.approx(doc["heat_dissipated_W"], rel=1e-10)
-    status, doc = api.call("film", {"bearing": "B218", "fz": "10 kN", "speed": "6000 rpm", "viscosity": "20 cSt"})
+    status, doc = call("film", {"bearing": "B218", "fz": "10 kN", "speed": "6000 rpm", "viscosity": "20 cSt"})
     assert status == 200 and doc["regime"] in ("boundary", "mixed", "full film")
-    status, doc = api.call("temperature", {"bearing": "6205-2RS", "speed": "6000 rpm", "oil": "VG33"})
+    status, doc = call("temperature", {"bearing": "6205-2RS", "speed": "6000 rpm", "oil": "VG33"})
     assert status == 422 and doc["parameter"] == "oil"

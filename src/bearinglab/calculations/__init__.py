@@ -83,6 +83,8 @@ def _cases(calc, values, given, limit):
         cases = values["revolutions"] * values.get("steps_per_rev", 360)
     if calc.name == "axial-angle":
         cases *= values.get("rows", 1)
+    if calc.name == "clearance":  # the Monte Carlo samples are the cases
+        cases = values.get("monte_carlo", 1)
     if calc.name == "frequencies":
         cases = values.get("harmonics", 3) * (2 * values.get("sidebands", 1) + 1)
     if cases > limit:

@@ -146,6 +146,7 @@ def _call_command(parsed):
     line: (exit code, stdout, stderr) as :func:`_run_command` gives them. The values the layer has
     checked (whole numbers, numbers, flags) are passed as such, quantities as the text given."""
     from .. import cli
+    from ..cli._common import reset_notes
     from ..errors import ConvergenceError
 
     calc = parsed.calculation
@@ -167,6 +168,7 @@ def _call_command(parsed):
     with _CAPTURE, warnings.catch_warnings(), contextlib.redirect_stdout(out), \
             contextlib.redirect_stderr(err):
         warnings.simplefilter("ignore", RuntimeWarning)
+        reset_notes()  # the provenance notes of a previous request in this process
         try:
             callback(**kwargs)
         except ConvergenceError as exc:
@@ -279,52 +281,72 @@ def _posted(doc, paths):
     return {k: ("(posted document)" if isinstance(v, str) and v in paths else v) for k, v in doc.items()}
 
 
-def _catalog_document(name):
-    """``catalog show NAME --json`` (the same steps as the command, for the built-in catalog)."""
-    from .. import catalog, ratings, tables
+def _catalog_document(parsed):
+    """``catalog show NAME --json`` for the built-in catalog: the command's own document function."""
+    from ..cli.catalog import _show_document
 
-    b = catalog.get(name)
-    info = tables.bearing_summary(b)
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        try:
-            info.update(tables.ratings(ratings.bearing_ratings(b)))
-        except InputError as exc:
-            given = {k: getattr(b, k) for k in ("dynamic_load_rating", "static_load_rating",
-                                                "fatigue_load_limit")}
-            info.update({f"{k}_N": v for k, v in given.items()})
-            info["rating_source"] = {k: "catalog" for k, v in given.items() if v is not None}
-            caught.append(warnings.WarningMessage(f"ratings: not computed ({exc})", UserWarning, "", 0))
-    notes = list(dict.fromkeys(str(c.message) for c in caught))
-    info.update(inputs={"name": name, "catalog": None}, warnings=notes)
+    given = {k: (str(parsed.given[k]).strip() if k in parsed.given else None)
+             for k in ("clearance", "radial_clearance")}
+    from .. import catalog
+
+    with warnings.catch_warnings():
+        info, b = _show_document(parsed.values["name"], None, **given)
+    notes = list(info["warnings"])  # the command adds the provenance notes as emit_json does
+    info["warnings"] = notes + [n for n in dict.fromkeys(catalog.provenance_notes(b)) if n not in notes]
     return json.loads(json.dumps(info, default=float, allow_nan=True))
 
 
-def _search_document(values):
-    """The catalog bearings whose designation or alias contains ``query`` and whose bore and outside
-    diameter lie within the ranges given (a value matches within 0.5 mm)."""
+_SEARCH_TOLERANCE = 0.5e-3  # the page's search: a typed size matches within 0.5 mm [m]
+_SEARCH_KEYS = ("bore", "outside_diameter", "width", "type", "series")
+
+
+def _search_document(parsed):
+    """The catalog search of the web.
+
+    ``bearings``, ``inputs`` and ``warnings`` are what ``bearinglab catalog search --json`` prints for
+    the same ``bore``, ``outside_diameter``, ``width``, ``type`` and ``series`` (the standard series of
+    :func:`bearinglab.catalog.search`; ``bearings`` is empty when none of them is given). ``matches``
+    serves the page's picker: the named catalog bearings whose designation or alias contains
+    ``query``, then the standard-series bearings of ``catalog.search``, every size within 0.5 mm;
+    ``count`` matches in all, at most ``limit`` listed (``truncated``).
+    """
     from .. import catalog, tables
+    from ..catalog import _series
+
+    values = parsed.values
+    size = {k: values.get(k) for k in _SEARCH_KEYS}
+    echo = {k: (str(parsed.given[k]).strip() if k in parsed.given else None) for k in _SEARCH_KEYS}
+    given = any(v is not None for v in size.values())
+    bearings = catalog.search(**size) if given else []
 
     query = str(values.get("query", "")).strip().lower()
     aliases = catalog.aliases()
-    out = []
 
-    def within(x, size):
-        if size is None:
-            return True
-        return x is not None and abs(x * 1e-3 - size) <= 0.5e-3
+    def wanted(name):
+        return not query or any(query in w.lower() for w in (name, *aliases.get(name, [])))
 
-    for name in catalog.names():
-        words = [name.lower(), *(a.lower() for a in aliases.get(name, []))]
-        if query and not any(query in w for w in words):
-            continue
-        row = dict(tables.catalog_entry(name, catalog.get(name)), aliases=aliases.get(name, []))
-        if within(row.get("bore_mm"), values.get("bore")) and within(
-                row.get("outside_diameter_mm"), values.get("outside_diameter")):
-            out.append(row)
+    def within(x_mm, key):
+        return values.get(key) is None or (x_mm is not None and
+                                           abs(x_mm * 1e-3 - values[key]) <= _SEARCH_TOLERANCE)
+
+    matches = []
+    if values.get("width") is None and values.get("series") is None:  # named rows carry neither
+        series_names = set(_series.records())
+        for name in catalog.names():
+            if name in series_names or not wanted(name):
+                continue
+            row = dict(tables.catalog_entry(name, catalog.get(name)), aliases=aliases.get(name, []))
+            kind = {"radial": "deep-groove"}.get(row["type"], row["type"])
+            if (within(row.get("bore_mm"), "bore") and within(row.get("outside_diameter_mm"),
+                                                                "outside_diameter")
+                    and values.get("type") in (None, kind)):
+                matches.append(row)
+    for row in catalog.search(**size, tolerance=_SEARCH_TOLERANCE):  # every row when no size
+        if wanted(row["name"]):
+            matches.append(dict(row, aliases=aliases.get(row["name"], [])))
     limit = values.get("limit", 50)
-    return {"query": values.get("query", ""), "count": len(out), "truncated": len(out) > limit,
-            "matches": out[:limit]}
+    return {"bearings": bearings, "inputs": echo, "warnings": [], "query": values.get("query", ""),
+            "count": len(matches), "truncated": len(matches) > limit, "matches": matches[:limit]}
 
 
 def run(parsed):
@@ -348,12 +370,15 @@ def run(parsed):
     name = parsed.calculation.name
     if name == "catalog":
         try:
-            return _catalog_document(parsed.values["name"])
+            return _catalog_document(parsed)
         except InputError as exc:
-            message = str(exc).removeprefix("bearing: ")
-            raise RunFailure("name", parsed.values["name"], "{name}: " + message) from None
+            message = str(exc)
+            if not message.startswith("bearing: "):  # an option's message names its option
+                raise _failure(parsed.calculation, message, "input") from None
+            raise RunFailure("name", parsed.values["name"],
+                             "{name}: " + message.removeprefix("bearing: ")) from None
     if name == "catalog-search":
-        return _search_document(parsed.values)
+        return _search_document(parsed)
     return _command_document(parsed)
 
 

@@ -2,11 +2,11 @@
 
 One :class:`Calculation` per capability of the command line (``life``, ``load-distribution``,
 ``bearing-set``, ``friction``, ``high-speed``, ``frequencies``, ``axial-angle``, ``stand-load``,
-``catalog``, ``catalog-search``, ``runout``). The command line's options and these fields are held
+``catalog``, ``catalog-search``, ``clearance``, ``film``, ``temperature``, ``runout``). The command line's options and these fields are held
 equal by ``tests/calculations/test_cli_fields.py``; the web builds its models from them.
 
-Bounds (the strict-input work may move them to a shared module; they are defined here until then)
--------------------------------------------------------------------------------------------------
+Bounds (the command line's limits are :mod:`bearinglab._bounds`; the web's own are named here)
+---------------------------------------------------------------------------------------------
 CASE_LIMIT       the most cases one request may hold (a list or range, or their grid)
 TIME_BUDGET      seconds one web request may run before it is stopped
 BODY_LIMIT       the largest request body the web accepts [bytes]
@@ -22,19 +22,31 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .. import _bounds
 from .fields import Field
 
 __all__ = ["BODY_LIMIT", "CALCULATIONS", "CASE_LIMIT", "DOCUMENT_LIMIT", "TIME_BUDGET", "Calculation"]
 
-#: The most cases one request may hold: a full design map of 10^5 cases fits, with room.
-CASE_LIMIT = 200_000
+#: The most cases one request may hold: the command line's own limit (a full design map of 10^5 cases);
+#: a larger study runs through ``bearinglab sweep``, which the web does not offer.
+CASE_LIMIT = _bounds.MAX_CASES
 #: Seconds one web request may compute before its worker is stopped (>= 30 s by the issue; a map of
 #: 10^5 high-speed cases took 50 s with its 112 MB of JSON on the shared 2-core machine).
 TIME_BUDGET = 120.0
-#: The largest request body the web reads [bytes].
+#: The largest request body the web reads [bytes] (below the command line's input files,
+#: :data:`bearinglab._bounds.MAX_INPUT_BYTES`: a request is typed or posted, not a data file).
 BODY_LIMIT = 1 << 20
-#: The largest posted document, e.g. a runout error set [characters].
+#: The largest posted document, e.g. a runout error set [characters]; it travels in the body.
 DOCUMENT_LIMIT = 500_000
+
+# The web's own size limits: lower than the command line's (bearinglab._bounds), because one request
+# shares a small server with others and answers within TIME_BUDGET; each is <= its _bounds limit
+# (tests/calculations/test_fields.py checks it).
+WEB_MAX_BALLS = 200  # <= _bounds.MAX_BALLS; the catalog's largest bearing has under 40 balls
+WEB_MAX_HARMONICS = 100  # <= _bounds.MAX_HARMONICS; vibration analysis looks at the first 10 to 20
+WEB_MAX_SIDEBANDS = 50  # <= _bounds.MAX_SIDEBANDS
+WEB_MAX_REVOLUTIONS = 100  # <= _bounds.MAX_REVOLUTIONS; a real sequence is 1 to 100 revolutions
+WEB_MAX_STEPS_PER_REV = 7200  # <= _bounds.MAX_STEPS_PER_REV; 0.05 deg per step
 
 
 @dataclass(frozen=True)
@@ -67,7 +79,8 @@ _GEO = "geometry"
 BEARING = _f("bearing", "text", "Catalog name, e.g. B218, 4-1006095, 6205-2RS.", label="Bearing",
              group="bearing")
 GEOMETRY = (
-    _f("balls", "int", "Number of balls.", label="Balls", minimum=3, maximum=200, group=_GEO),
+    _f("balls", "int", "Number of balls.", label="Balls", minimum=3, maximum=WEB_MAX_BALLS,
+       group=_GEO),
     _f("ball_diameter", "length", "Ball diameter D, e.g. '2 mm'.", label="Ball diameter", unit="mm",
        minimum=0, exclusive=True, maximum=1000, group=_GEO),
     _f("pitch_diameter", "length", "Pitch diameter d_m, e.g. '8.7355 mm'.", label="Pitch diameter",
@@ -120,6 +133,65 @@ OIL = (
     _f("viscosity_100", "kinematic_viscosity", "The oil's viscosity at 100 degC, e.g. '8.7 cSt'.",
        label="Viscosity at 100 degC", unit="cSt", minimum=0, exclusive=True, group=_O),
 )
+_M, _T = "mounting", "mounting temperatures"
+_MATERIALS = ("steel", "structural_steel", "aluminium")
+#: the mounting options of every command that takes a bearing (``cli._mounting``, issue 23); the fits,
+#: classes and interference pairs are checked by the command (its tables), so they are text here
+MOUNTING = (
+    _f("shaft_fit", "text", "ISO 286 field of the shaft seat: g6 h5 h6 j5 j6 js5 js6 k5 k6 m5 m6 n6 p6.",
+       label="Shaft fit", group=_M),
+    _f("housing_fit", "text", "ISO 286 field of the housing bore: F7 G6 G7 H6 H7 H8 J6 J7 JS6 JS7 K6 "
+       "K7 M6 M7 N6 N7 P6 P7.", label="Housing fit", group=_M),
+    _f("shaft_interference", "text", "Inner-ring interference instead of shaft_fit: one value or "
+       "'least, largest', e.g. '5 um, 20 um' (negative: loose).", label="Shaft interference",
+       unit="um", group=_M),
+    _f("housing_interference", "text", "Outer-ring interference instead of housing_fit, as "
+       "shaft_interference.", label="Housing interference", unit="um", group=_M),
+    _f("shaft_bore", "length", "Bore of a hollow shaft, e.g. '20 mm' (default solid).",
+       label="Shaft bore", unit="mm", minimum=0, group=_M),
+    _f("housing_outside_diameter", "length", "Outside diameter of the housing, e.g. '120 mm' "
+       "(default: a thick housing).", label="Housing outside diameter", unit="mm", minimum=0,
+       exclusive=True, group=_M),
+    _f("shaft_material", "choice", "Shaft material (default steel).", label="Shaft material",
+       choices=_MATERIALS, group=_M),
+    _f("housing_material", "choice", "Housing material (default steel).", label="Housing material",
+       choices=_MATERIALS, group=_M),
+    _f("tolerance_class", "text", "ISO 492 class of the bearing: Normal, P6, P5, P4 (default: the "
+       "designation's, else Normal).", label="Tolerance class", group=_M),
+    _f("clearance_class", "text", "ISO 5753-1 class: C2, CN, C3, C4, C5 (default: the designation's, "
+       "else CN).", label="Clearance class", group=_M),
+    _f("inner_ring_temperature", "text", "e.g. '60 degC' (default 20 degC).",
+       label="Inner-ring temperature", unit="degC", group=_T),
+    _f("outer_ring_temperature", "text", "e.g. '50 degC' (default 20 degC).",
+       label="Outer-ring temperature", unit="degC", group=_T),
+    _f("ball_temperature", "text", "Default: the mean of the rings.", label="Ball temperature",
+       unit="degC", group=_T),
+    _f("shaft_temperature", "text", "Default: the inner ring's.", label="Shaft temperature",
+       unit="degC", group=_T),
+    _f("housing_temperature", "text", "Default: the outer ring's.", label="Housing temperature",
+       unit="degC", group=_T),
+)
+#: bearing-set takes its clearance from the preload, not from a clearance class
+_SET_MOUNTING = tuple(f for f in MOUNTING if f.name != "clearance_class")
+_ROUGHNESS = (
+    _f("shaft_roughness", "text", "Rz of shaft seat and ring bore for the smoothing of DIN 7190-1 "
+       "(off by default), e.g. '4 um' or '4 um, 1.6 um'.", label="Shaft seat roughness Rz",
+       unit="um", group=_M),
+    _f("housing_roughness", "text", "Rz of housing bore and ring outside, as shaft_roughness.",
+       label="Housing seat roughness Rz", unit="um", group=_M),
+)
+_DISPLACEMENTS = (
+    _f("dx", "length", "Hold delta_x at this value, e.g. '10 um' (instead of fx).", label="delta_x",
+       unit="um", group=_L),
+    _f("dy", "length", "Hold delta_y, e.g. '0 um' (instead of fy).", label="delta_y", unit="um",
+       group=_L),
+    _f("dz", "length", "Hold delta_z from the concentric position (half the axial play included), "
+       "e.g. '700 um' (instead of fz).", label="delta_z", unit="um", group=_L),
+    _f("tilt_x", "angle", "Hold theta_x, e.g. '0 mrad' (instead of mx).", label="theta_x",
+       unit="mrad", group=_L),
+    _f("tilt_y", "angle", "Hold theta_y, e.g. '0 mrad' (instead of my).", label="theta_y",
+       unit="mrad", group=_L),
+)
 _CONTAMINATION = ("extreme", "high", "normal", "slight", "typical", "severe", "very-severe")
 _HERTZ = _f("hertz", "choice", "Hertz coefficients: exact | table (the bearing's tabulated 2K/(pi mu)).",
             label="Hertz coefficients", default="exact", choices=("exact", "table"), group="model")
@@ -140,11 +212,11 @@ _CALCS = (
             choices=_CONTAMINATION, group=_O),
          _f("reliability", "number", "Reliability in percent.", label="Reliability", unit="%",
             default=90.0, minimum=90, maximum=99.95, group=_O),
-         BEARING, *GEOMETRY)),
+         BEARING, *GEOMETRY, *MOUNTING)),
     Calculation(
         "load-distribution", ("load-distribution",), "Load distribution and stiffness",
         "5-DOF load distribution of one bearing under F_x, F_y, F_z, M_x, M_y; stiffness matrix.",
-        (*LOADS, *_SOLVE, BEARING, *GEOMETRY)),
+        (*LOADS, *_DISPLACEMENTS, *_SOLVE, BEARING, *GEOMETRY, *MOUNTING)),
     Calculation(
         "bearing-set", ("bearing-set",), "Bearing set",
         "Preloaded DB/DF/DT sets on one shaft under F_x, F_y, F_z, M_x, M_y.",
@@ -152,13 +224,13 @@ _CALCS = (
             "from -z to +z.", label="Bearings", required=True, many=True, group="bearing"),
          _f("arrangement", "choice", "DB (back-to-back) | DF (face-to-face) | DT (tandem).",
             label="Arrangement", default="DB", choices=("DB", "DF", "DT"), group="set"),
-         _f("spacing", "length", "Distance between bearing centres, e.g. '100 mm'.", label="Spacing",
-            unit="mm", default="0 mm", minimum=0, group="set"),
+         _f("spacing", "length", "Distance between bearing centres, e.g. '100 mm'; default: side by "
+            "side, one ring width B.", label="Spacing", unit="mm", minimum=0, group="set"),
          _f("preload", "force", "Axial preload force at rest, e.g. '500 N'.", label="Preload",
             unit="N", minimum=0, group="set"),
          _f("preload_offset", "length", "Axial interference from first contact instead, e.g. '5 um'.",
             label="Preload offset", unit="um", group="set"),
-         *LOADS, *_SOLVE)),
+         *LOADS, *_SOLVE, *_SET_MOUNTING)),
     Calculation(
         "friction", ("friction", "torque"), "Friction torque",
         "Friction torque: one-term, two-term (handbook), Palmgren, SKF.",
@@ -196,8 +268,14 @@ _CALCS = (
          _f("palmgren_f0", "number", "Palmgren's f0 (about 0.7-2 for deep-groove bearings).",
             label="Palmgren f0", unit="-", minimum=0, group="friction"),
          _f("lubrication", "choice", "For model skf: the lubrication method.",
-            label="Lubrication method", default="grease", choices=("grease", "oil-air", "oil-jet"),
-            group=_O),
+            label="Lubrication method", default="grease",
+            choices=("grease", "oil-air", "oil-jet", "oil-bath"), group=_O),
+         *(f for f in OIL if f.name != "viscosity"),
+         _f("oil_level", "length", "For model skf, lubrication oil-bath: H from the lowest point of "
+            "the outer raceway, e.g. '5 mm' (at most to the bearing's centre).", label="Oil level H",
+            unit="mm", minimum=0, group=_O),
+         _f("drag_loss_factor", "number", "For lubrication oil-bath: V_M read from SKF's drag loss "
+            "diagram at H/d_m.", label="Drag loss factor V_M", unit="-", minimum=0, group=_O),
          _f("series", "text", "For model skf: the deep-groove series of SKF's constants, e.g. 62.",
             label="SKF series", group="friction")),
         combine="broadcast"),
@@ -221,7 +299,8 @@ _CALCS = (
             label="Gyroscopic sign", default="physical", choices=("physical", "reversed"),
             group="model"),
          _f("reduced_modulus", "pressure", "E' of the contact pair, e.g. '228.04 GPa'.",
-            label="Reduced modulus E'", unit="GPa", minimum=0, exclusive=True, group="model")),
+            label="Reduced modulus E'", unit="GPa", minimum=0, exclusive=True, group="model"),
+         *MOUNTING),
         combine="grid"),
     Calculation(
         "frequencies", ("frequencies",), "Defect frequencies",
@@ -234,9 +313,9 @@ _CALCS = (
             label="Axial load F_a", unit="N", minimum=0, exclusive=True, group=_L),
          _HERTZ, _ELASTIC, BEARING, *GEOMETRY,
          _f("harmonics", "int", "Harmonics 1..N in the spectral mask.", label="Harmonics",
-            default=3, minimum=1, maximum=100, group="mask"),
+            default=3, minimum=1, maximum=WEB_MAX_HARMONICS, group="mask"),
          _f("sidebands", "int", "Sideband orders 1..S around BPFI and BSF.", label="Sidebands",
-            default=1, minimum=0, maximum=50, group="mask"),
+            default=1, minimum=0, maximum=WEB_MAX_SIDEBANDS, group="mask"),
          _f("band", "text", "Full width of each mask line, in % of its frequency: '2 %'.",
             label="Band", default="2 %", group="mask"),
          _f("mask", "flag", "Add the spectral-mask table.", label="Spectral mask", default=False,
@@ -253,7 +332,7 @@ _CALCS = (
          _f("x0", "number", "Start of the iteration table [rad].", label="x0 [rad]", unit="-",
             group="model"),
          _f("rows", "int", "Rows of the iteration table (default: to convergence).",
-            label="Iteration rows", minimum=1, maximum=1000, group="model")),
+            label="Iteration rows", minimum=1, maximum=_bounds.MAX_ROWS, group="model")),
         combine="grid"),
     Calculation(
         "stand-load", ("stand-load",), "Test-stand load",
@@ -265,19 +344,118 @@ _CALCS = (
     Calculation(
         "catalog", ("catalog", "show"), "Catalog bearing",
         "One bearing with its derived geometry and its ratings C, C0, Cu.",
-        (_f("name", "text", "Bearing name or alias.", label="Bearing", required=True,
-            option="NAME", group="bearing"),)),
+        (_f("name", "text", "Bearing name, alias or designation (6208-2RS1/C3).", label="Bearing",
+            required=True, option="NAME", group="bearing"),
+         _f("clearance", "choice", "Value of the ISO 5753-1 clearance range the models use: mean "
+            "(default), min or max.", label="Clearance value", choices=("mean", "min", "max"),
+            group="bearing"),
+         _f("radial_clearance", "length", "Diametral clearance, e.g. '9 um'.",
+            label="Radial clearance", unit="um", minimum=0, group="bearing"))),
     Calculation(
         "catalog-search", (), "Catalog search",
-        "Bearings of the catalog whose designation, bore and outside diameter match.",
+        "Catalog bearings by designation, bore, outside diameter, width, type and series; "
+        "``bearings`` is ``bearinglab catalog search --json``, ``matches`` the page's picker.",
         (_f("query", "text", "Part of a designation or alias, e.g. 62.", label="Designation",
             default="", group="bearing"),
-         _f("bore", "length", "Bore d (matches within 0.5 mm), e.g. '25 mm'.", label="Bore d",
-            unit="mm", group="bearing"),
+         _f("bore", "length", "Bore d, e.g. '25 mm' (matches within 0.5 mm).", label="Bore d",
+            unit="mm", minimum=0, exclusive=True, group="bearing"),
          _f("outside_diameter", "length", "Outside diameter D (matches within 0.5 mm).",
-            label="Outside diameter", unit="mm", group="bearing"),
+            label="Outside diameter", unit="mm", minimum=0, exclusive=True, group="bearing"),
+         _f("width", "length", "Width B (matches within 0.5 mm).", label="Width B", unit="mm",
+            minimum=0, exclusive=True, group="bearing"),
+         _f("type", "choice", "deep-groove | angular.", label="Type",
+            choices=("deep-groove", "angular"), group="bearing"),
+         _f("series", "text", "Series, e.g. 62, 618, 72, 72B, 79C.", label="Series", group="bearing"),
          _f("limit", "int", "The most matches returned.", label="Matches", default=50, minimum=1,
             maximum=500, group="bearing"))),
+    Calculation(
+        "clearance", ("clearance",), "Mounted clearance",
+        "Operating clearance after fits, temperatures and speed (least, probable, largest); "
+        "optionally a Monte Carlo study of the tolerances.",
+        (BEARING, *MOUNTING, *_ROUGHNESS,
+         _f("radial_clearance", "text", "Unmounted diametral clearance instead of the class: one "
+            "value or 'min, max', e.g. '6 um, 20 um'.", label="Unmounted clearance", unit="um",
+            group=_M),
+         _f("speed", "speed", "Inner-ring (shaft) speed, e.g. '6000 rpm'.", label="Shaft speed",
+            unit="rpm", group=_L),
+         _f("monte_carlo", "int", "Samples of random tolerances through the chain.",
+            label="Monte Carlo samples", minimum=2, maximum=_bounds.MAX_SAMPLES, group="monte carlo"),
+         _f("seed", "int", "Root seed (results do not depend on chunking).", label="Seed", default=0,
+            minimum=0, group="monte carlo"),
+         _f("distribution", "choice", "uniform | normal (limits at +-3 sigma).",
+            label="Distribution", default="uniform", choices=("uniform", "normal"),
+            group="monte carlo"))),
+    Calculation(
+        "film", ("film",), "Lubricant film",
+        "EHL film thickness and lambda ratio at each contact (Hamrock-Dowson), the regime.",
+        (*LOADS,
+         _f("speed", "speed", "Inner-ring speed, e.g. '6000 rpm' (a list '3000, 6000 rpm' for several "
+            "cases).", label="Shaft speed", unit="rpm", many=True, group=_L),
+         *OIL,
+         _f("dynamic_viscosity", "dynamic_viscosity", "Dynamic viscosity at the bearing temperature, "
+            "e.g. '0.04 Pa*s' or '40 cP' (instead of viscosity).", label="Dynamic viscosity",
+            unit="Pa*s", minimum=0, exclusive=True, group=_O),
+         _f("density", "density", "Oil density (default 870 kg/m^3, a typical mineral oil: an "
+            "estimate).", label="Oil density", unit="kg/m^3", minimum=0, exclusive=True, group=_O),
+         _f("pressure_viscosity_coefficient", "inverse_pressure", "alpha, e.g. '2.3e-8 m^2/N' or "
+            "'23 1/GPa' (default: Wooster's estimate for mineral oils).",
+            label="Pressure-viscosity coefficient", unit="m^2/N", minimum=0, exclusive=True,
+            group=_O),
+         _f("roughness", "length", "RMS roughness R_q of balls and raceways alike, e.g. '0.1 um' "
+            "(default 0.1 um each).", label="Roughness R_q", unit="um", minimum=0, group="film"),
+         _f("roughness_ball", "length", "R_q of the balls, e.g. '0.05 um'.",
+            label="Ball roughness R_q", unit="um", minimum=0, group="film"),
+         _f("roughness_race", "length", "R_q of the raceways, e.g. '0.15 um'.",
+            label="Raceway roughness R_q", unit="um", minimum=0, group="film"),
+         _f("loads_at", "choice", "speed (quasi-static ball loads at the speed) | rest (loads at "
+            "rest, pure rolling).", label="Ball loads at", default="speed",
+            choices=("speed", "rest"), group="film"),
+         _f("ambient", "text", "With temperature auto: the ambient (default 20 degC).",
+            label="Ambient temperature", unit="degC", group="film"),
+         _f("thermal_resistance", "thermal_resistance", "With temperature auto: bearing to ambient, "
+            "e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).",
+            label="Thermal resistance", unit="K/W", minimum=0, exclusive=True, group="film"),
+         _f("lubrication", "choice", "A starvation-risk check (SKF's replenishment factor); with "
+            "temperature auto also the SKF model's (default oil-jet).", label="Lubrication method",
+            choices=("grease", "oil-air", "oil-jet", "oil-bath"), group=_O),
+         _f("skf_constants", "text", "With temperature auto: SKF constants R1,R2,R3,S1,S2,S3 "
+            "(angular contact).", label="SKF constants", group="film"),
+         BEARING, *GEOMETRY),
+        combine="broadcast"),
+    Calculation(
+        "temperature", ("temperature",), "Operating temperature",
+        "Thermal balance: the bearing temperature where the friction power equals the heat "
+        "dissipated; thermal runaway below the limit.",
+        (_f("radial_load", "force", "F_r, e.g. '1 kN'.", label="Radial load F_r", unit="N",
+            group=_L),
+         _f("axial_load", "force", "F_a, e.g. '500 N'.", label="Axial load F_a", unit="N", group=_L),
+         _f("speed", "speed", "Inner-ring speed, e.g. '6000 rpm' (a list for several cases).",
+            label="Shaft speed", unit="rpm", many=True, group=_L),
+         *(f for f in OIL if f.name in ("oil", "viscosity_index", "viscosity_100")),
+         _f("lubrication", "choice", "SKF model: oil-jet | oil-air | grease (oil bath: refused, its "
+            "drag loss needs SKF's V_M chart).", label="Lubrication method", default="oil-jet",
+            choices=("oil-jet", "oil-air", "grease", "oil-bath"), group=_O),
+         _f("skf_constants", "text", "SKF geometry constants R1,R2,R3,S1,S2,S3 of the series (needed "
+            "for angular-contact bearings).", label="SKF constants", group="heat"),
+         _f("ambient", "text", "Ambient temperature, e.g. '20 degC'.", label="Ambient temperature",
+            unit="degC", default="20 degC", group="heat"),
+         _f("thermal_resistance", "thermal_resistance", "Bearing to ambient, e.g. '0.5 K/W' "
+            "(default: ISO 15312's reference heat flow of the bearing).",
+            label="Thermal resistance", unit="K/W", minimum=0, exclusive=True, group="heat"),
+         _f("oil_flow", "volume_flow", "Oil jet or circulation flow through the bearing, e.g. "
+            "'0.5 l/min'.", label="Oil flow", unit="l/min", minimum=0, group="heat"),
+         _f("oil_inlet_temperature", "text", "Of the oil flow (default: the ambient), e.g. '40 degC'.",
+            label="Oil inlet temperature", unit="degC", group="heat"),
+         _f("oil_heat_capacity", "specific_heat", "c_p of the oil (default 1950 J/(kg*K), a mineral "
+            "oil: an estimate).", label="Oil heat capacity", unit="J/(kg*K)", minimum=0,
+            exclusive=True, group="heat"),
+         _f("density", "density", "Oil density (default 870 kg/m^3, a mineral oil: an estimate).",
+            label="Oil density", unit="kg/m^3", minimum=0, exclusive=True, group="heat"),
+         _f("max_temperature", "text", "Safe limit: no steady state below it is thermal runaway, "
+            "e.g. '150 degC'.", label="Temperature limit", unit="degC", default="150 degC",
+            group="heat"),
+         BEARING),
+        combine="broadcast"),
     Calculation(
         "runout", ("runout",), "Runout",
         "Inner-ring displacement at one angle, or the trajectory and runout over revolutions.",
@@ -290,9 +468,10 @@ _CALCS = (
          _f("angle", "angle", "One rotation angle psi, e.g. '90 deg' (default 0).",
             label="Rotation angle", unit="deg", group="runout"),
          _f("revolutions", "int", "Rotation sequence over N inner-ring revolutions.",
-            label="Revolutions", minimum=1, maximum=100, group="runout"),
+            label="Revolutions", minimum=1, maximum=WEB_MAX_REVOLUTIONS, group="runout"),
          _f("steps_per_rev", "int", "Positions per revolution of the sequence (default 360).",
-            label="Steps per revolution", minimum=4, maximum=7200, group="runout"),
+            label="Steps per revolution", minimum=4, maximum=WEB_MAX_STEPS_PER_REV,
+            group="runout"),
          _f("start_angle", "angle", "psi of the first position of the sequence.",
             label="Start angle", unit="deg", default="0 deg", group="runout"),
          _f("cage_ratio", "number", "Cage speed / inner-ring speed (default (1 - gamma)/2).",

@@ -96,11 +96,8 @@ _ClearanceChoice = Annotated[str | None, typer.Option(
     "--clearance", help="Value of the ISO 5753-1 clearance range the models use: mean (default), min or max.")]
 
 
-@catalog_app.command("show")
-def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name, alias or designation (6208-2RS1/C3).")],
-                 catalog: CatalogFile = None, clearance: _ClearanceChoice = None,
-                 radial_clearance: Clearance = None, json_out: JsonFlag = False):
-    """Show one bearing: geometry, ratings C, C0, Cu (catalog or computed), limits and where each comes from."""
+def _show_document(name, catalog=None, clearance=None, radial_clearance=None):
+    """The document of ``catalog show NAME --json`` and the bearing (also the web's ``/api/catalog``)."""
     from .. import catalog as _catalog
     from .. import ratings, tables
     if catalog is not None:
@@ -116,7 +113,6 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name, alias o
         est = tuple(f for f in b.estimated_fields if f not in ("radial_clearance",))
         b = b.replace(radial_clearance=value, estimated_fields=est,
                       sources={**b.sources, "radial_clearance": "given (--radial-clearance)"})
-    add_notes(_catalog.provenance_notes(b))
     info = tables.bearing_summary(b)
     extra = _catalog.details(name) if not _catalog._is_builtin_entry(name) else None
     if extra:
@@ -140,6 +136,17 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name, alias o
     info.update(sources=dict(b.sources), estimated_fields=list(b.estimated_fields),
                 inputs={"name": name, "catalog": None if catalog is None else str(catalog),
                         "clearance": clearance, "radial_clearance": radial_clearance}, warnings=notes)
+    return info, b
+
+
+@catalog_app.command("show")
+def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name, alias or designation (6208-2RS1/C3).")],
+                 catalog: CatalogFile = None, clearance: _ClearanceChoice = None,
+                 radial_clearance: Clearance = None, json_out: JsonFlag = False):
+    """Show one bearing: geometry, ratings C, C0, Cu (catalog or computed), limits and where each comes from."""
+    from .. import catalog as _catalog
+    info, b = _show_document(name, catalog, clearance, radial_clearance)
+    add_notes(_catalog.provenance_notes(b))
     if json_out:
         emit_json(info)
         return
@@ -150,7 +157,7 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name, alias o
                                           "source")],
           caption=("(estimated): no public source gives the value; catalog show --json lists every source"
                    if estimated else "catalog show --json lists the source of every value"))
-    print_warnings(notes)
+    print_warnings(info["warnings"])
 
 
 def _clearance_range(b, choice, given):

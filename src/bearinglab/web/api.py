@@ -57,6 +57,9 @@ ENDPOINTS = {
     "stand-load": "stand-load",
     "catalog": "catalog",
     "catalog/search": "catalog-search",
+    "clearance": "clearance",
+    "film": "film",
+    "temperature": "temperature",
     "runout": "runout",
 }
 
