@@ -53,6 +53,16 @@ CASES = [
      ["bearing-set", "--bearing=7218B", "--bearing=7218B", "--arrangement=DB", "--preload=1 kN",
       "--fy=2 kN", "--spacing=100 mm"]),
     ("catalog", {"name": "B218"}, ["catalog", "show", "B218"]),
+    ("catalog", {"name": "6208-2RS1/C3", "clearance": "min"},
+     ["catalog", "show", "6208-2RS1/C3", "--clearance=min"]),
+    ("clearance", {"bearing": "6205-2RS", "shaft_fit": "k5", "housing_fit": "H7",
+                   "inner_ring_temperature": "50 degC"},
+     ["clearance", "--bearing=6205-2RS", "--shaft-fit=k5", "--housing-fit=H7",
+      "--inner-ring-temperature=50 degC"]),
+    ("film", {"bearing": "B218", "fz": "10 kN", "speed": "6000 rpm", "viscosity": "20 cSt"},
+     ["film", "--bearing=B218", "--fz=10 kN", "--speed=6000 rpm", "--viscosity=20 cSt"]),
+    ("temperature", {"bearing": "6205-2RS", "radial_load": "1 kN", "speed": "6000 rpm", "oil": "VG32"},
+     ["temperature", "--bearing=6205-2RS", "--radial-load=1 kN", "--speed=6000 rpm", "--oil=VG32"]),
 ]
 
 
@@ -84,7 +94,11 @@ def test_post_takes_numbers_and_flags_as_json(client):
 def test_catalog_search(client):
     r = client.get("/api/catalog/search", params={"bore": "25 mm", "outside_diameter": "52 mm"})
     assert r.status_code == 200
-    assert [m["name"] for m in r.json()["matches"]] == ["6205-2RS"]
+    names = [m["name"] for m in r.json()["matches"]]
+    assert names[0] == "6205-2RS" and "6205" in names  # the named bearing, then the standard series
+    bearings = r.json()["bearings"]  # `catalog search --json` (tests/calculations/test_documents.py)
+    assert "6205" in [b["name"] for b in bearings]
+    assert all((b["bore_mm"], b["outside_diameter_mm"]) == (25, 52) for b in bearings)
     r = client.post("/api/catalog/search", json={"query": "B2"})
     assert "B218" in [m["name"] for m in r.json()["matches"]]
 
@@ -159,7 +173,9 @@ def test_unknown_endpoint_is_404(client):
 
 def test_openapi_documents_every_endpoint_and_field_with_unit_and_range(client):
     spec = client.get("/openapi.json").json()
-    assert "200000 cases" in spec["info"]["description"] and "120 s" in spec["info"]["description"]
+    from bearinglab.calculations import CASE_LIMIT
+
+    assert f"{CASE_LIMIT} cases" in spec["info"]["description"] and "120 s" in spec["info"]["description"]
     for path, name in api.ENDPOINTS.items():
         ops = spec["paths"][f"/api/{path}"]
         assert set(ops) == {"get", "post"}

@@ -1,6 +1,7 @@
 """The documents of the calculations: what ``bearinglab <command> --json`` prints, for a Parsed request.
 
-``catalog`` and ``catalog-search`` are built here from :mod:`bearinglab.catalog` and
+``catalog`` (:func:`catalog_document`, which ``catalog show`` prints too) and ``catalog-search``
+(:func:`bearinglab.catalog.search`) are built here from :mod:`bearinglab.catalog` and
 :mod:`bearinglab.tables`. The other calculations run their command's function in this process with
 the request's checked values as options and read the document it prints: the command line builds
 those documents inline, and until each is factored into a function of its own, running the command
@@ -13,6 +14,7 @@ process at a time (:mod:`bearinglab.web.workers`); never in threads of one proce
 Functions
 ---------
 run          Parsed -> the document
+catalog_document  a bearing's ``catalog show --json`` document (the command prints it)
 figure_svg   Parsed -> the command's figure as SVG text, or ''
 argv         Parsed -> the command words and options
 RunFailure   a run that failed: input (exit 2) or convergence (exit 3), with the field it names
@@ -32,7 +34,7 @@ from pathlib import Path
 from ..errors import InputError
 from .fields import RequestError
 
-__all__ = ["RunFailure", "argv", "figure_svg", "run"]
+__all__ = ["RunFailure", "argv", "catalog_document", "figure_svg", "run"]
 
 # run through the whole command line: runout's command is a group callback that needs click's context
 _VIA_COMMAND_LINE = {"runout", "catalog"}
@@ -281,16 +283,90 @@ def _posted(doc, paths):
     return {k: ("(posted document)" if isinstance(v, str) and v in paths else v) for k, v in doc.items()}
 
 
+def _clearance_range(b, choice, given):
+    """The ISO 5753-1 range of a deep-groove bearing and the value the models use, for `catalog show`."""
+    from .. import internal_clearance
+    if b.type != "radial" or b.bore is None or b.clearance_class is None and "radial_clearance" not in b.sources:
+        return None
+    cls = b.clearance_class or "CN"
+    try:
+        r = internal_clearance.radial_clearance_range(b.bore, cls)
+    except InputError:
+        return None
+    used = "given (--radial-clearance)" if given else (choice or "mean")
+    return {"class": cls, "minimum_um": r.minimum * 1e6, "maximum_um": r.maximum * 1e6, "used": used}
+
+
+
+def catalog_document(name, *, catalog=None, clearance=None, radial_clearance=None):
+    """The document of ``bearinglab catalog show NAME --json`` (the command prints this) and the bearing.
+
+    Parameters
+    ----------
+    name : str
+        Bearing name, alias or designation (``6208-2RS1/C3``).
+    catalog : str or Path, optional
+        A user catalog file (the command has checked it).
+    clearance : {"mean", "min", "max"}, optional
+        The value of the ISO 5753-1 range the models use.
+    radial_clearance : str, optional
+        A diametral clearance as written (``'9 um'``), instead of ``clearance``.
+
+    Returns
+    -------
+    tuple of (dict, BallBearing)
+        The document (its ``warnings`` without the bearing's provenance notes, which the command adds
+        as it prints) and the bearing.
+    """
+    from .. import catalog as _catalog
+    from .. import ratings, tables
+    if clearance is not None and radial_clearance is not None:
+        raise InputError("clearance: give --clearance or --radial-clearance, not both")
+    if clearance is not None and clearance not in ("mean", "min", "max"):
+        raise InputError(f"clearance must be one of ['mean', 'min', 'max'], got {clearance!r}")
+    b = _catalog.get(name, catalog=catalog, clearance=clearance or "mean")
+    if radial_clearance is not None:
+        from ..units import parse_quantity
+        value = parse_quantity(radial_clearance, "length", "radial-clearance")
+        if not value > 0:
+            raise InputError(f"radial-clearance must be > 0 [um], got {value / 1e-6:g} um")
+        est = tuple(f for f in b.estimated_fields if f not in ("radial_clearance",))
+        b = b.replace(radial_clearance=value, estimated_fields=est,
+                      sources={**b.sources, "radial_clearance": "given (--radial-clearance)"})
+    info = tables.bearing_summary(b)
+    extra = _catalog.details(name) if not _catalog._is_builtin_entry(name) else None
+    if extra:
+        info.update({k: v for k, v in extra.items() if k != "row"})
+    for key in ("seal", "seals", "tolerance_class"):
+        info[key] = getattr(b, key)
+    info["iso5753_clearance"] = _clearance_range(b, clearance, radial_clearance)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:  # one set of ratings per bearing, whichever command asks (ratings.bearing_ratings)
+            info.update(tables.ratings(ratings.bearing_ratings(b)))
+        except InputError as exc:  # neither catalog ratings nor the ball set to compute them
+            given = {k: getattr(b, k) for k in ("dynamic_load_rating", "static_load_rating", "fatigue_load_limit")}
+            info.update({f"{k}_N": v for k, v in given.items()})
+            info["rating_source"] = {k: "catalog" for k, v in given.items() if v is not None}
+            caught.append(warnings.WarningMessage(f"ratings: not computed ({exc})", UserWarning, "", 0))
+    if b.estimated_fields:  # a rating computed from the geometry is computed from an estimate
+        info["rating_source"] = {k: (f"{v}, from the estimated geometry" if v != "catalog" else v)
+                                 for k, v in (info.get("rating_source") or {}).items()}
+    notes = list(dict.fromkeys(str(c.message) for c in caught))
+    info.update(sources=dict(b.sources), estimated_fields=list(b.estimated_fields),
+                inputs={"name": name, "catalog": None if catalog is None else str(catalog),
+                        "clearance": clearance, "radial_clearance": radial_clearance}, warnings=notes)
+    return info, b
+
+
 def _catalog_document(parsed):
-    """``catalog show NAME --json`` for the built-in catalog: the command's own document function."""
-    from ..cli.catalog import _show_document
+    """``catalog show NAME --json`` for the built-in catalog, with the provenance notes the command adds."""
+    from .. import catalog
 
     given = {k: (str(parsed.given[k]).strip() if k in parsed.given else None)
              for k in ("clearance", "radial_clearance")}
-    from .. import catalog
-
     with warnings.catch_warnings():
-        info, b = _show_document(parsed.values["name"], None, **given)
+        info, b = catalog_document(parsed.values["name"], **given)
     notes = list(info["warnings"])  # the command adds the provenance notes as emit_json does
     info["warnings"] = notes + [n for n in dict.fromkeys(catalog.provenance_notes(b)) if n not in notes]
     return json.loads(json.dumps(info, default=float, allow_nan=True))

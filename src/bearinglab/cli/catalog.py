@@ -6,7 +6,6 @@ COMMANDS   the ``catalog`` command group, by name (the application adds it)
 """
 
 import re
-import warnings
 from typing import Annotated
 
 import typer
@@ -96,56 +95,16 @@ _ClearanceChoice = Annotated[str | None, typer.Option(
     "--clearance", help="Value of the ISO 5753-1 clearance range the models use: mean (default), min or max.")]
 
 
-def _show_document(name, catalog=None, clearance=None, radial_clearance=None):
-    """The document of ``catalog show NAME --json`` and the bearing (also the web's ``/api/catalog``)."""
-    from .. import catalog as _catalog
-    from .. import ratings, tables
-    if catalog is not None:
-        check_input(catalog, "catalog")
-    if clearance is not None and radial_clearance is not None:
-        raise InputError("clearance: give --clearance or --radial-clearance, not both")
-    if clearance is not None and clearance not in ("mean", "min", "max"):
-        raise InputError(f"clearance must be one of ['mean', 'min', 'max'], got {clearance!r}")
-    b = _catalog.get(name, catalog=catalog, clearance=clearance or "mean")
-    if radial_clearance is not None:
-        from ._common import parse_length
-        value = parse_length(radial_clearance, "radial-clearance", "um")
-        est = tuple(f for f in b.estimated_fields if f not in ("radial_clearance",))
-        b = b.replace(radial_clearance=value, estimated_fields=est,
-                      sources={**b.sources, "radial_clearance": "given (--radial-clearance)"})
-    info = tables.bearing_summary(b)
-    extra = _catalog.details(name) if not _catalog._is_builtin_entry(name) else None
-    if extra:
-        info.update({k: v for k, v in extra.items() if k != "row"})
-    for key in ("seal", "seals", "tolerance_class"):
-        info[key] = getattr(b, key)
-    info["iso5753_clearance"] = _clearance_range(b, clearance, radial_clearance)
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        try:  # one set of ratings per bearing, whichever command asks (ratings.bearing_ratings)
-            info.update(tables.ratings(ratings.bearing_ratings(b)))
-        except InputError as exc:  # neither catalog ratings nor the ball set to compute them
-            given = {k: getattr(b, k) for k in ("dynamic_load_rating", "static_load_rating", "fatigue_load_limit")}
-            info.update({f"{k}_N": v for k, v in given.items()})
-            info["rating_source"] = {k: "catalog" for k, v in given.items() if v is not None}
-            caught.append(warnings.WarningMessage(f"ratings: not computed ({exc})", UserWarning, "", 0))
-    if b.estimated_fields:  # a rating computed from the geometry is computed from an estimate
-        info["rating_source"] = {k: (f"{v}, from the estimated geometry" if v != "catalog" else v)
-                                 for k, v in (info.get("rating_source") or {}).items()}
-    notes = list(dict.fromkeys(str(c.message) for c in caught))
-    info.update(sources=dict(b.sources), estimated_fields=list(b.estimated_fields),
-                inputs={"name": name, "catalog": None if catalog is None else str(catalog),
-                        "clearance": clearance, "radial_clearance": radial_clearance}, warnings=notes)
-    return info, b
-
-
 @catalog_app.command("show")
 def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name, alias or designation (6208-2RS1/C3).")],
                  catalog: CatalogFile = None, clearance: _ClearanceChoice = None,
                  radial_clearance: Clearance = None, json_out: JsonFlag = False):
     """Show one bearing: geometry, ratings C, C0, Cu (catalog or computed), limits and where each comes from."""
     from .. import catalog as _catalog
-    info, b = _show_document(name, catalog, clearance, radial_clearance)
+    from ..calculations.documents import catalog_document
+    if catalog is not None:
+        check_input(catalog, "catalog")
+    info, b = catalog_document(name, catalog=catalog, clearance=clearance, radial_clearance=radial_clearance)
     add_notes(_catalog.provenance_notes(b))
     if json_out:
         emit_json(info)
@@ -158,20 +117,6 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name, alias o
           caption=("(estimated): no public source gives the value; catalog show --json lists every source"
                    if estimated else "catalog show --json lists the source of every value"))
     print_warnings(info["warnings"])
-
-
-def _clearance_range(b, choice, given):
-    """The ISO 5753-1 range of a deep-groove bearing and the value the models use, for `catalog show`."""
-    from .. import internal_clearance
-    if b.type != "radial" or b.bore is None or b.clearance_class is None and "radial_clearance" not in b.sources:
-        return None
-    cls = b.clearance_class or "CN"
-    try:
-        r = internal_clearance.radial_clearance_range(b.bore, cls)
-    except InputError:
-        return None
-    used = "given (--radial-clearance)" if given else (choice or "mean")
-    return {"class": cls, "minimum_um": r.minimum * 1e6, "maximum_um": r.maximum * 1e6, "used": used}
 
 
 def _value(key, value, sources, estimated):
