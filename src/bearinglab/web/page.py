@@ -74,7 +74,8 @@ FIELDS = {
         _pick("life", "contamination", group="lubricant"),
         _pick("life", "contamination_factor", group="lubricant"),
         _pick("life", "reliability", group="lubricant", default=None),
-        _pick("friction", "lubrication", group="lubricant"),
+        # no oil bath on the page: it needs the oil level and SKF's drag-loss factor (the API takes them)
+        _pick("friction", "lubrication", group="lubricant", choices=("grease", "oil-air", "oil-jet")),
         _pick("friction", "model", group="model"),
         _pick("high-speed", "constants", group="model"),
         _pick("bearing-set", "arrangement", group="set", default="",
