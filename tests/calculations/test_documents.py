@@ -38,6 +38,10 @@ CASES = [
     ("life", {"bearing": "6208", "radial_load": "2 kN", "speed": "1797 rpm", "shaft_fit": "j5",
               "clearance_class": "C3", "inner_ring_temperature": "30 degC"}),
     ("load-distribution", {"bearing": "B218", "dz": "700 um", "tilt_x": "0 mrad", "tilt_y": "0 mrad"}),
+    ("bearing-set", {"bearing": "7208 BE", "arrangement": "DB", "preload": "500 N", "fx": "1 kN",
+                     "shaft_fit": "k5", "housing_fit": "H7"}),  # the default spacing: side by side
+    ("high-speed", {"bearing": "6208", "axial_load": "2 kN", "speed": "3000 rpm", "shaft_fit": "j5",
+                    "clearance_class": "C3"}),
     ("friction", {"bearing": "6205-2RS", "radial_load": "100 N", "speed": "3000 rpm", "model": "skf",
                   "lubrication": "oil-bath", "oil_level": "3 mm", "drag_loss_factor": "0.0003",
                   "oil": "VG68", "temperature": "60 degC"}),

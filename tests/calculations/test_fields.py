@@ -119,3 +119,10 @@ def test_the_web_limits_are_the_command_lines_or_lower():
                 assert f.maximum is not None and f.maximum <= pairs[f.name], (calc.name, f.name)
                 seen.add(f.name)
     assert seen == set(pairs)
+
+
+def test_monte_carlo_samples_are_cases_of_the_clearance_request():
+    assert parse("clearance", {"bearing": "6205-2RS", "monte_carlo": "1000"}).cases == 1000
+    with pytest.raises(RequestError, match="more than the limit") as err:
+        parse("clearance", {"bearing": "6205-2RS", "monte_carlo": str(CASE_LIMIT + 1)})
+    assert err.value.parameter == "monte_carlo"

@@ -88,6 +88,9 @@ def _cases(calc, values, given, limit):
     if calc.name == "frequencies":
         cases = values.get("harmonics", 3) * (2 * values.get("sidebands", 1) + 1)
     if cases > limit:
+        if not counts:  # a size field makes the cases: name it
+            counts = {k: 1 for k in ("monte_carlo", "revolutions", "steps_per_rev", "rows", "harmonics")
+                      if k in values}
         names = ", ".join(sorted(counts)) or "request"
         raise RequestError(next(iter(sorted(counts)), None), cases, f"at most {limit} cases",
                            f"{{name}}: the request holds {cases} cases ({names}), more than the "

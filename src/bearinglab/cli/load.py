@@ -376,7 +376,9 @@ def bearing_set(
     st, notes = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], loads, w, arrangement_kind=arrangement,
                        spacing=s, preload=fp, preload_displacement=e, first_ball_angle=phi0, stiffness_at=stiffness_at)
     # issue 23: fits, temperatures and speed change each bearing's clearance, and so the set's interference
-    mounted = mo.mounted_set(bl, st.preload_displacement, arrangement, s, w, {
+    # the thermal expansion over the spacing needs its value: the solver's own when it is the default
+    gap = s if s is not None else (float(np.diff(st.positions)[0]) if len(st.positions) > 1 else 0.0)
+    mounted = mo.mounted_set(bl, st.preload_displacement, arrangement, gap, w, {
         "shaft_fit": shaft_fit, "housing_fit": housing_fit, "shaft_interference": shaft_interference,
         "housing_interference": housing_interference, "shaft_bore": shaft_bore,
         "housing_outside_diameter": housing_outside_diameter, "shaft_material": shaft_material,
