@@ -41,6 +41,7 @@ INVOCATIONS = {
     "serve": ("--port 99999", 2),  # refused before anything starts: the one-line error, no traceback
     "catalog list": ("", 0),
     "catalog show": ("B218", 0),
+    "catalog search": ("--bore 40mm --type angular", 0),
     "friction torque": ("--model skf -b 6205-2RS --radial-load 0N:2000N:1000N -n 2000rpm --viscosity 30cSt", 0),
     "friction lab": ("examples/friction/s1_readings.toml --out {tmp}/lab", 0),
     "friction template": ("-b 18", 0),
