@@ -102,7 +102,7 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name, alias o
                  radial_clearance: Clearance = None, json_out: JsonFlag = False):
     """Show one bearing: geometry, ratings C, C0, Cu (catalog or computed), limits and where each comes from."""
     from .. import catalog as _catalog
-    from .. import ratings, tables
+    from .. import tables
     if catalog is not None:
         check_input(catalog, "catalog")
     if clearance is not None and radial_clearance is not None:
@@ -124,15 +124,15 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name, alias o
     for key in ("seal", "seals", "tolerance_class"):
         info[key] = getattr(b, key)
     info["iso5753_clearance"] = _clearance_range(b, clearance, radial_clearance)
+    given = {k: getattr(b, k) for k in ("dynamic_load_rating", "static_load_rating", "fatigue_load_limit")}
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        try:  # one set of ratings per bearing, whichever command asks (ratings.bearing_ratings)
-            info.update(tables.ratings(ratings.bearing_ratings(b)))
-        except InputError as exc:  # neither catalog ratings nor the ball set to compute them
-            given = {k: getattr(b, k) for k in ("dynamic_load_rating", "static_load_rating", "fatigue_load_limit")}
-            info.update({f"{k}_N": v for k, v in given.items()})
-            info["rating_source"] = {k: "catalog" for k, v in given.items() if v is not None}
-            caught.append(warnings.WarningMessage(f"ratings: not computed ({exc})", UserWarning, "", 0))
+        if None not in given.values():  # the catalog's three ratings, as ratings.bearing_ratings gives them,
+            # without its f0 (not shown), whose Hertz contact imports scipy: show answers within 0.5 s
+            info.update({f"{k}_N": float(v) for k, v in given.items()})
+            info["rating_source"] = dict.fromkeys(given, "catalog")
+        else:
+            _computed_ratings(b, given, info, caught)
     if b.estimated_fields:  # a rating computed from the geometry is computed from an estimate
         info["rating_source"] = {k: (f"{v}, from the estimated geometry" if v != "catalog" else v)
                                  for k, v in (info.get("rating_source") or {}).items()}
@@ -151,6 +151,18 @@ def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name, alias o
           caption=("(estimated): no public source gives the value; catalog show --json lists every source"
                    if estimated else "catalog show --json lists the source of every value"))
     print_warnings(notes)
+
+
+def _computed_ratings(b, given, info, caught):
+    """The ratings the catalog lacks, by ISO 281 / ISO 76 from the ball set (ratings.bearing_ratings: one
+    set of ratings per bearing, whichever command asks)."""
+    from .. import ratings, tables
+    try:
+        info.update(tables.ratings(ratings.bearing_ratings(b)))
+    except InputError as exc:  # neither catalog ratings nor the ball set to compute them
+        info.update({f"{k}_N": v for k, v in given.items()})
+        info["rating_source"] = {k: "catalog" for k, v in given.items() if v is not None}
+        caught.append(warnings.WarningMessage(f"ratings: not computed ({exc})", UserWarning, "", 0))
 
 
 def _clearance_range(b, choice, given):
