@@ -328,6 +328,22 @@ def test_one_number_and_a_unit_still_read(text, kind, want):
     assert units.parse_quantity(text, kind, "x") == pytest.approx(want, rel=1e-14)
 
 
+@pytest.mark.parametrize(("text", "kind", "want"), [
+    ("1900 J/(kg*K)", "specific_heat", 1900.0),          # a bracketed denominator, as engineers write it
+    ("1.9 kJ/(kg K)", "specific_heat", 1900.0),
+    ("-1 J/(kg*K)", "specific_heat", -1.0),              # the sign is the command's to judge, not the parser's
+    ("16 kW/(m^2)", "heat_flux", 16e3),
+])
+def test_a_unit_with_one_level_of_brackets_reads(text, kind, want):
+    assert units.parse_quantity(text, kind, "x") == pytest.approx(want, rel=1e-14)
+
+
+@pytest.mark.parametrize("text", ["2 (3 N)", "(kg", "2 J/(kg*(K))", "2 J/(kg*K", "2 J/()"])
+def test_brackets_hold_units_only_once_and_balanced(text):
+    with pytest.raises(InputError):
+        units.parse_quantity(text, "specific_heat", "x")
+
+
 @pytest.mark.parametrize("text", ["70 degC", "70 °C", "70°C", "343.15 K", "158 degF"])
 def test_temperatures_read_with_their_offset(text):
     ureg = units._ureg()

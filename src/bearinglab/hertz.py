@@ -31,7 +31,6 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
-from scipy.special import ellipe, ellipk
 
 from . import _solve
 from ._validate import as_float, check_nonnegative, check_positive
@@ -77,6 +76,8 @@ def _f_of_m(m):
     """F(rho) as a function of the elliptic parameter m = 1 - 1/kappa^2, dF/dm, and the rounding error
     of F (a bound: the numerator cancels, so F is known to ~eps ((kappa^2+1)E + 2K) / |den|, about 5e-15
     at F = 0.07, not to eps)."""
+    from scipy.special import ellipe, ellipk  # here, not at import: a catalog lookup needs no scipy
+
     k = ellipk(m)
     e = ellipe(m)
     k2 = 1.0 / (1.0 - m)  # kappa^2
@@ -191,6 +192,8 @@ def coefficients(curvature_difference):
     """
     kappa = np.asarray(ellipticity(curvature_difference))
     m = 1.0 - 1.0 / kappa**2
+    from scipy.special import ellipe, ellipk  # here, not at import: a catalog lookup needs no scipy
+
     k = ellipk(m)
     e = ellipe(m)
     a_star = np.cbrt(2.0 * kappa**2 * e / np.pi)

@@ -53,7 +53,7 @@ __all__ = [
     "thermal_balance",
 ]
 
-#: ISO 15312 [1]_: reference bearing temperature and ambient [K], the limit of A_r of the constant heat
+#: ISO 15312 [1]: reference bearing temperature and ambient [K], the limit of A_r of the constant heat
 #: flow density [m^2], that density [W/m^2] and the exponent of its decrease above the limit.
 REFERENCE_CONDITIONS = {"bearing_temperature": 343.15, "ambient": 293.15, "surface_limit": 50_000e-6,
                         "heat_flow_density": 16e3, "exponent": -0.34}
@@ -61,7 +61,7 @@ _T40, _T100 = 313.15, 373.15
 
 
 def reference_surface(bore, outside_diameter, width):
-    r"""Reference heat-emitting surface A_r = pi B (D + d) of a radial bearing (ISO 15312 [1]_).
+    r"""Reference heat-emitting surface A_r = pi B (D + d) of a radial bearing (ISO 15312 [1]).
 
     Parameters
     ----------
@@ -85,7 +85,7 @@ def reference_surface(bore, outside_diameter, width):
 
 
 def reference_heat_flow_density(reference_surface):
-    r"""Reference heat flow density q_r of ISO 15312 [1]_ for a reference surface A_r.
+    r"""Reference heat flow density q_r of ISO 15312 [1] for a reference surface A_r.
 
     Parameters
     ----------
@@ -123,7 +123,7 @@ def reference_conductance(bore, outside_diameter, width):
 
     Notes
     -----
-    ISO 15312 [1]_ fixes the heat flow q_r A_r that a bearing in a reference housing carries away at
+    ISO 15312 [1] fixes the heat flow q_r A_r that a bearing in a reference housing carries away at
     70 degC with a 20 degC ambient. Dividing by those 50 K makes it a conductance, which assumes the
     heat flow proportional to the temperature rise (conduction through the housing and shaft;
     convection and radiation are not quite linear). This is the model's assumption, not the
@@ -298,7 +298,7 @@ def thermal_balance(bearing, radial_load, axial_load, shaft_speed, ambient, visc
     Solves :math:`P_f(T) = M(\nu(T))\,\omega = G (T - T_a) + G_{oil}(T - T_{in}) = P_d(T)` on
     [min(T_a, T_in), T_max] for all cases together (Illinois regula falsi, bracketed). The SKF moment
     depends on the temperature only through nu; the bearing is one lumped temperature (rings, balls and
-    oil alike), as in ISO 15312 and SKF's thermal reference speed [2]_. Where :math:`P_f > P_d` at T_max
+    oil alike), as in ISO 15312 and SKF's thermal reference speed [2]. Where :math:`P_f > P_d` at T_max
     the case has no steady state below the limit: its fields are NaN, ``steady`` is False and a
     thermal-runaway warning says so.
 

@@ -398,9 +398,9 @@ def _finite(x, text, name):
 _NUMBER_TEXT = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _UNIT_NAME = r"(?:[^\W\d]\w*|%)"
 _UNIT_TERM = rf"{_UNIT_NAME}(?:\s*(?:\^|\*\*)\s*[-+]?\d+)?"
-# one level of parentheses, as the examples of the thermal options write them: 'J/(kg*K)'
-_UNIT_GROUP = rf"\(\s*{_UNIT_TERM}(?:(?:\s*[*/]\s*|\s+){_UNIT_TERM})*\s*\)"
-_UNIT_FACTOR = rf"(?:{_UNIT_TERM}|{_UNIT_GROUP})"
+_UNIT_PRODUCT = rf"{_UNIT_TERM}(?:(?:\s*[*/]\s*|\s+){_UNIT_TERM})*"
+# one level of brackets, as engineers write a denominator: J/(kg*K), W/(m^2*K)
+_UNIT_FACTOR = rf"(?:{_UNIT_TERM}|\(\s*{_UNIT_PRODUCT}\s*\)(?:\s*(?:\^|\*\*)\s*[-+]?\d+)?)"
 _UNIT_EXPR = rf"(?:/\s*)?{_UNIT_FACTOR}(?:(?:\s*[*/]\s*|\s+){_UNIT_FACTOR})*"
 _QUANTITY = re.compile(rf"^\s*({_NUMBER_TEXT})\s*({_UNIT_EXPR})?\s*$")
 _NOT_FINITE = re.compile(r"^\s*[-+]?(?:nan|inf|infinity)(?![\w.])", re.IGNORECASE)

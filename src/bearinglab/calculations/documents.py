@@ -340,15 +340,20 @@ def catalog_document(name, *, catalog=None, clearance=None, radial_clearance=Non
     for key in ("seal", "seals", "tolerance_class"):
         info[key] = getattr(b, key)
     info["iso5753_clearance"] = _clearance_range(b, clearance, radial_clearance)
+    given = {k: getattr(b, k) for k in ("dynamic_load_rating", "static_load_rating", "fatigue_load_limit")}
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        try:  # one set of ratings per bearing, whichever command asks (ratings.bearing_ratings)
-            info.update(tables.ratings(ratings.bearing_ratings(b)))
-        except InputError as exc:  # neither catalog ratings nor the ball set to compute them
-            given = {k: getattr(b, k) for k in ("dynamic_load_rating", "static_load_rating", "fatigue_load_limit")}
-            info.update({f"{k}_N": v for k, v in given.items()})
-            info["rating_source"] = {k: "catalog" for k, v in given.items() if v is not None}
-            caught.append(warnings.WarningMessage(f"ratings: not computed ({exc})", UserWarning, "", 0))
+        if None not in given.values():  # the catalog's three ratings, as ratings.bearing_ratings gives them,
+            # without its f0 (not shown), whose Hertz contact imports scipy: show answers within 0.5 s
+            info.update({f"{k}_N": float(v) for k, v in given.items()})
+            info["rating_source"] = dict.fromkeys(given, "catalog")
+        else:
+            try:  # one set of ratings per bearing, whichever command asks (ratings.bearing_ratings)
+                info.update(tables.ratings(ratings.bearing_ratings(b)))
+            except InputError as exc:  # neither catalog ratings nor the ball set to compute them
+                info.update({f"{k}_N": v for k, v in given.items()})
+                info["rating_source"] = {k: "catalog" for k, v in given.items() if v is not None}
+                caught.append(warnings.WarningMessage(f"ratings: not computed ({exc})", UserWarning, "", 0))
     if b.estimated_fields:  # a rating computed from the geometry is computed from an estimate
         info["rating_source"] = {k: (f"{v}, from the estimated geometry" if v != "catalog" else v)
                                  for k, v in (info.get("rating_source") or {}).items()}

@@ -98,7 +98,7 @@ def entrainment_velocities(shaft_speed, contact_angle_inner, contact_angle_outer
         u_j = \omega \frac{d_m}{2}\,\frac{(1-\gamma_i)(1+\gamma_o)\cos(\alpha_j-\beta)}{\Delta}.
 
     At equal angles this is :math:`u = \omega (d_m^2 - D^2\cos^2\alpha)/(4 d_m)` at both contacts,
-    whatever beta, Hamrock's pure-rolling value ([1]_ ch. 24).
+    whatever beta, Hamrock's pure-rolling value ([1] ch. 24).
 
     Examples
     --------

@@ -119,7 +119,7 @@ def contact_radii(ball_diameter, pitch_diameter, conformity, contact_angle, *, r
 
     Notes
     -----
-    Hamrock et al. [2]_ ch. 24: :math:`R_x = D (d_m \mp D\cos\alpha) / (2 d_m)` (inner: minus, outer:
+    Hamrock et al. [2] ch. 24: :math:`R_x = D (d_m \mp D\cos\alpha) / (2 d_m)` (inner: minus, outer:
     plus) and :math:`R_y = f D / (2f - 1)`.
 
     Examples
@@ -162,7 +162,7 @@ def ellipticity(rx, ry):
     -----
     The curvature difference :math:`F = (1/R_x - 1/R_y)/(1/R_x + 1/R_y)` goes into
     :func:`bearinglab.hertz.ellipticity` (complete elliptic integrals), not into the approximation
-    :math:`k = 1.03 (R_y/R_x)^{0.64}` of [1]_; the two differ by about 1 % in ball bearings.
+    :math:`k = 1.03 (R_y/R_x)^{0.64}` of [1]; the two differ by about 1 % in ball bearings.
 
     Examples
     --------
@@ -243,7 +243,7 @@ def hamrock_dowson(load, entrainment_velocity, rx, ellipticity, dynamic_viscosit
 
     Notes
     -----
-    Hamrock and Dowson [1]_, with :func:`dimensionless_groups`:
+    Hamrock and Dowson [1], with :func:`dimensionless_groups`:
 
     .. math::
         H_c = h_c/R_x = 2.69\,U^{0.67} G^{0.53} W^{-0.067} (1 - 0.61 e^{-0.73 k}),\qquad
@@ -305,7 +305,7 @@ def thermal_reduction_factor(entrainment_velocity, dynamic_viscosity, temperatur
 
     Notes
     -----
-    Gupta et al. [3]_: with the thermal loading factor :math:`L = \beta \eta_0 u^2 / K`,
+    Gupta et al. [3]: with the thermal loading factor :math:`L = \beta \eta_0 u^2 / K`,
 
     .. math::
         \phi_T = \frac{1 - 13.2 (p_{max}/E') L^{0.42}}{1 + 0.213 (1 + 2.23 s^{0.83}) L^{0.64}}.
@@ -342,7 +342,7 @@ def pressure_viscosity_coefficient(dynamic_viscosity):
 
     Notes
     -----
-    Wooster's estimate, as given by Stachowiak and Batchelor [4]_:
+    Wooster's estimate, as given by Stachowiak and Batchelor [4]:
     :math:`\alpha = (0.6 + 0.965 \log_{10}\eta_0) \times 10^{-8}` m^2/N with eta0 in centipoise
     (mPa s). It is an estimate for mineral oils, good to perhaps 20-30 %: a measured alpha of the oil
     (its data sheet) should be preferred. Below 1 mPa s it would fall under 0.6e-8 m^2/N and is not

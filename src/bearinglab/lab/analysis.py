@@ -13,10 +13,10 @@ Task1, Task2, Task3, Task4, Indicators
 Grouping. T4 rows are grouped by (tilt, speed-column label): one task-1 and one task-3 fit per
 group, at the column speed = the mean n of its rows (section 6.1). T5 rows are grouped by (mass,
 tilt): one task-2 fit per group. Task 4 (the SKF model, when the session has an [skf] table) fits
-all rows, T4 and T5, grouped by tilt. All groups of a task are fitted at once (:mod:`.fits`).
+all rows, T4 and T5, grouped by tilt. All groups of a task are fitted at once (:mod:`bearinglab.lab.fits`).
 
 Every number here can be had from :mod:`bearinglab.friction`, :mod:`.rig`, :mod:`.calibration` and
-:mod:`.fits` directly; this module only composes them. The tables, plot data, conclusions and the
+:mod:`bearinglab.lab.fits` directly; this module only composes them. The tables, plot data, conclusions and the
 results dict (engineering units) are made by :mod:`bearinglab.lab.presentation`; its names
 (``table4``, ``table5``, ``rows_table``, ``plots``, ``conclusions``, ``to_dict``, ``TableData``,
 ``PlotData``, ``PlotSeries``, ``RESULTS_FORMAT``, ``WORDING_THRESHOLD``) stay reachable here too.

@@ -535,7 +535,9 @@ def _skf_settings(table, bearing, ctx):
     nu = _quantity(table, ("skf", "viscosity"), "kinematic_viscosity", ctx)
     if not nu > 0:
         raise ctx.error(("skf", "viscosity"), f"must be > 0 [mm^2/s], got {nu * 1e6!r}")
-    choices = {"lubrication": (friction.LUBRICATION_METHODS, "grease"),
+    # an oil bath needs its level and drag-loss factor, which a rig session does not describe
+    lab_methods = [m for m in friction.LUBRICATION_METHODS if m != "oil-bath"]
+    choices = {"lubrication": (lab_methods, "grease"),
                "fit": (SKF_FIT_PARAMETERS, "sliding")}
     picked = {}
     for key, (valid, default) in choices.items():

@@ -41,8 +41,8 @@ synchronous_part        average at equal rotation angle over the revolutions
 runout_spectrum         spectrum of the radial (forward/backward whirl) and axial motion, in orders
 spectrum_lines          the spectral lines, labelled as cage, ring or combination lines
 
-Plausibility (issue 20; ``plausibility``, not re-exported)
----------------------------------------------------------
+Plausibility (``plausibility``, not re-exported)
+------------------------------------------------
 check_errors            refuses errors of 5 % of D_w or more and tilts past 2 pi (InputError); called by
                         initial_displacement, which also warns (ValidityWarning) of displacements of 5 %
                         of A0 or more, beyond the first-order model's range
