@@ -319,7 +319,7 @@ def catalog_document(name, *, catalog=None, clearance=None, radial_clearance=Non
         as it prints) and the bearing.
     """
     from .. import catalog as _catalog
-    from .. import ratings, tables
+    from .. import tables
     if clearance is not None and radial_clearance is not None:
         raise InputError("clearance: give --clearance or --radial-clearance, not both")
     if clearance is not None and clearance not in ("mean", "min", "max"):
@@ -348,6 +348,9 @@ def catalog_document(name, *, catalog=None, clearance=None, radial_clearance=Non
             info.update({f"{k}_N": float(v) for k, v in given.items()})
             info["rating_source"] = dict.fromkeys(given, "catalog")
         else:
+            from .. import (
+                ratings,  # (its Hertz contact imports scipy: only when a rating is computed)
+            )
             try:  # one set of ratings per bearing, whichever command asks (ratings.bearing_ratings)
                 info.update(tables.ratings(ratings.bearing_ratings(b)))
             except InputError as exc:  # neither catalog ratings nor the ball set to compute them
