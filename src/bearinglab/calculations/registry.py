@@ -6,7 +6,7 @@ One :class:`Calculation` per capability of the command line (``life``, ``load-di
 equal by ``tests/calculations/test_cli_fields.py``; the web builds its models from them.
 
 Bounds (the command line's limits are :mod:`bearinglab._bounds`; the web's own are named here)
----------------------------------------------------------------------------------------------
+----------------------------------------------------------------------------------------------
 CASE_LIMIT       the most cases one request may hold (a list or range, or their grid)
 TIME_BUDGET      seconds one web request may run before it is stopped
 BODY_LIMIT       the largest request body the web accepts [bytes]
