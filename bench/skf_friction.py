@@ -37,8 +37,9 @@ def batched(fr, fa, rpm, nu):
                         static_load_rating=C0, lubrication="grease").total_moment
 
 
-def one_case(fr, fa, n, nu):
-    """M [N m] of one case in the catalogue's units."""
+def one_case(fr, fa, n, nu, krs=KRS):
+    """M [N m] of one case in the catalogue's units (``krs``: K_rs of the lubrication, grease by default;
+    bench/thermal.py calls it with the oil jet's)."""
     dm = 0.5 * (D + BIG)
     if fa > 0:
         s = math.sin(math.radians(24.6 * (fa / C0) ** 0.24))
@@ -48,7 +49,7 @@ def one_case(fr, fa, n, nu):
         grr = R1 * dm**1.96 * fr**0.54
         gsl = S1 * dm**-0.26 * fr ** (5 / 3)
     ish = 1 / (1 + 1.84e-9 * (n * dm) ** 1.28 * nu**0.64)
-    rs = math.exp(-KRS * nu * n * (D + BIG) * math.sqrt(KZ / (2 * (BIG - D))))
+    rs = math.exp(-krs * nu * n * (D + BIG) * math.sqrt(KZ / (2 * (BIG - D))))
     phi_bl = math.exp(-2.6e-8 * (n * nu) ** 1.4 * dm)
     mu = phi_bl * 0.15 + (1 - phi_bl) * 0.05
     return (ish * rs * grr * (nu * n) ** 0.6 + gsl * mu) * 1e-3

@@ -14,6 +14,7 @@ import math
 import sys
 
 import numpy as np
+import skf_friction
 from _timing import best_of
 
 from bearinglab import _solve, catalog, thermal
@@ -24,9 +25,7 @@ N_BASELINE = 1000
 BEARING = catalog.get("6205-2RS").replace(designation="6205", series="62", seal=None, seals=0)
 NU40 = 32e-6
 NU100 = float(lubrication.viscosity_100_from_index(NU40, 95.0))
-D, BIG, C0 = 25.0, 52.0, 7800.0  # mm, mm, N
-R1, R2, S1, S2 = 3.9e-7, 1.7, 3.23e-3, 36.5  # series 62 (SKF catalogue 2018)
-KRS, KZ = 3e-8, 3.1  # oil jet, deep groove
+KRS = 3e-8  # K_rs of an oil jet (SKF catalogue 2018); the rest of the baseline is bench/skf_friction.py's
 T_MAX = 423.15
 
 
@@ -44,20 +43,8 @@ def batched(fr, fa, rpm, ta):
 
 
 def _power(fr, fa, n, nu):
-    """M n [W] of the SKF model for one case in the catalogue's units."""
-    dm = 0.5 * (D + BIG)
-    if fa > 0:
-        s = math.sin(math.radians(24.6 * (fa / C0) ** 0.24))
-        grr = R1 * dm**1.96 * (fr + R2 * fa / s) ** 0.54
-        gsl = S1 * dm**-0.145 * (fr**5 + S2 * dm**1.5 * fa**4 / s) ** (1 / 3)
-    else:
-        grr = R1 * dm**1.96 * fr**0.54
-        gsl = S1 * dm**-0.26 * fr ** (5 / 3)
-    ish = 1 / (1 + 1.84e-9 * (n * dm) ** 1.28 * nu**0.64)
-    rs = math.exp(-KRS * nu * n * (D + BIG) * math.sqrt(KZ / (2 * (BIG - D))))
-    phi_bl = math.exp(-2.6e-8 * (n * nu) ** 1.4 * dm)
-    mu = phi_bl * 0.15 + (1 - phi_bl) * 0.05
-    return (ish * rs * grr * (nu * n) ** 0.6 + gsl * mu) * 1e-3 * n * math.pi / 30
+    """M n [W] of the SKF model for one case: bench/skf_friction.py's per-case moment, oil jet."""
+    return skf_friction.one_case(fr, fa, n, nu, krs=KRS) * n * math.pi / 30
 
 
 def solve_one(fr, fa, n, ta, a, b, g):
