@@ -19,6 +19,11 @@ KNOWN = {
     "catalog": {"name": "the command's argument NAME is the field 'name'"},
     "runout": {"geometry": "a file: the posted error set carries its [geometry] table, or a bearing",
                "errors": "a file on the command line; a posted document on the web"},
+    "runout-monte-carlo": {
+        "geometry": "a file: the web takes a catalog bearing",
+        "samples_csv": "a file written", "write_worst": "error files written into worst_dir",
+        "worst_by": "ranks the samples of write_worst", "worst_dir": "a directory written",
+        "progress": "a progress bar on the terminal"},
 }
 
 

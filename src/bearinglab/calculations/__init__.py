@@ -79,8 +79,10 @@ def _cases(calc, values, given, limit):
         cases = max(counts.values(), default=1)
     else:
         cases = 1
-    if calc.name == "runout" and "revolutions" in values:
-        cases = values["revolutions"] * values.get("steps_per_rev", 360)
+    if calc.name == "runout" and ("revolutions" in values or "steps_per_rev" in values):
+        cases = values.get("revolutions", 3) * values.get("steps_per_rev", 360)  # the positions
+    if calc.name == "runout-monte-carlo":  # the random bearings are the cases
+        cases = values.get("samples", 200)
     if calc.name == "axial-angle":
         cases *= values.get("rows", 1)
     if calc.name == "clearance":  # the Monte Carlo samples are the cases
@@ -91,6 +93,8 @@ def _cases(calc, values, given, limit):
         if not counts:  # a size field makes the cases: name it
             counts = {k: 1 for k in ("monte_carlo", "revolutions", "steps_per_rev", "rows", "harmonics")
                       if k in values}
+            if calc.name == "runout-monte-carlo":
+                counts = {"samples": 1}
         names = ", ".join(sorted(counts)) or "request"
         raise RequestError(next(iter(sorted(counts)), None), cases, f"at most {limit} cases",
                            f"{{name}}: the request holds {cases} cases ({names}), more than the "

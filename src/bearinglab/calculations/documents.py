@@ -23,6 +23,7 @@ RunFailure   a run that failed: input (exit 2) or convergence (exit 3), with the
 from __future__ import annotations
 
 import contextlib
+import importlib
 import io
 import json
 import re
@@ -36,6 +37,10 @@ from .fields import RequestError
 
 __all__ = ["RunFailure", "argv", "catalog_document", "figure_svg", "run"]
 
+#: the calculations computed by a module of this package (its ``document(parsed)``), not by the
+#: command line: name -> module
+_NATIVE = {"clearance": "clearance", "film": "film", "temperature": "temperature", "runout": "runout",
+           "runout-monte-carlo": "runout_monte_carlo"}
 # run through the whole command line: runout's command is a group callback that needs click's context
 _VIA_COMMAND_LINE = {"runout", "catalog"}
 _CAPTURE = threading.Lock()  # stdout is process-wide: one captured command at a time in a process
@@ -463,6 +468,8 @@ def run(parsed):
                              "{name}: " + message.removeprefix("bearing: ")) from None
     if name == "catalog-search":
         return _search_document(parsed)
+    if name in _NATIVE:
+        return importlib.import_module(f".{_NATIVE[name]}", __package__).document(parsed)
     return _command_document(parsed)
 
 

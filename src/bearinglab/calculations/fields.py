@@ -32,6 +32,7 @@ _TRUE, _FALSE = {"true", "1", "yes", "on"}, {"false", "0", "no", "off"}
 _SCALE = {
     "N": 1.0, "kN": 1e3, "mm": 1e-3, "um": 1e-6, "deg": math.pi / 180.0, "rpm": 2.0 * math.pi / 60.0,
     "N*mm": 1e-3, "cSt": 1e-6, "GPa": 1e9, "degC": 1.0, "%": 1.0, "-": 1.0, "": 1.0, "mrad": 1e-3,
+    "l/min": 1e-3 / 60.0,
 }
 
 

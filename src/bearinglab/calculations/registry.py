@@ -2,7 +2,8 @@
 
 One :class:`Calculation` per capability of the command line (``life``, ``load-distribution``,
 ``bearing-set``, ``friction``, ``high-speed``, ``frequencies``, ``axial-angle``, ``stand-load``,
-``catalog``, ``catalog-search``, ``clearance``, ``film``, ``temperature``, ``runout``). The command line's options and these fields are held
+``catalog``, ``catalog-search``, ``clearance``, ``film``, ``temperature``, ``runout``,
+``runout-monte-carlo``). The command line's options and these fields are held
 equal by ``tests/calculations/test_cli_fields.py``; the web builds its models from them.
 
 Bounds (the command line's limits are :mod:`bearinglab._bounds`; the web's own are named here)
@@ -45,8 +46,8 @@ DOCUMENT_LIMIT = 500_000
 WEB_MAX_BALLS = 200  # <= _bounds.MAX_BALLS; the catalog's largest bearing has under 40 balls
 WEB_MAX_HARMONICS = 100  # <= _bounds.MAX_HARMONICS; vibration analysis looks at the first 10 to 20
 WEB_MAX_SIDEBANDS = 50  # <= _bounds.MAX_SIDEBANDS
-WEB_MAX_REVOLUTIONS = 100  # <= _bounds.MAX_REVOLUTIONS; a real sequence is 1 to 100 revolutions
-WEB_MAX_STEPS_PER_REV = 7200  # <= _bounds.MAX_STEPS_PER_REV; 0.05 deg per step
+# a runout sequence is bounded by its positions (revolutions x steps per revolution), which are its
+# cases, and a runout Monte Carlo study by its samples: at most CASE_LIMIT on the web
 
 
 @dataclass(frozen=True)
@@ -394,19 +395,19 @@ _CALCS = (
          *OIL,
          _f("dynamic_viscosity", "dynamic_viscosity", "Dynamic viscosity at the bearing temperature, "
             "e.g. '0.04 Pa*s' or '40 cP' (instead of viscosity).", label="Dynamic viscosity",
-            unit="Pa*s", minimum=0, exclusive=True, group=_O),
+            unit="Pa*s", minimum=1e-4, maximum=1e4, group=_O),
          _f("density", "density", "Oil density (default 870 kg/m^3, a typical mineral oil: an "
-            "estimate).", label="Oil density", unit="kg/m^3", minimum=0, exclusive=True, group=_O),
+            "estimate).", label="Oil density", unit="kg/m^3", minimum=500, maximum=2500, group=_O),
          _f("pressure_viscosity_coefficient", "inverse_pressure", "alpha, e.g. '2.3e-8 m^2/N' or "
             "'23 1/GPa' (default: Wooster's estimate for mineral oils).",
-            label="Pressure-viscosity coefficient", unit="m^2/N", minimum=0, exclusive=True,
+            label="Pressure-viscosity coefficient", unit="m^2/N", minimum=1e-9, maximum=1e-7,
             group=_O),
          _f("roughness", "length", "RMS roughness R_q of balls and raceways alike, e.g. '0.1 um' "
-            "(default 0.1 um each).", label="Roughness R_q", unit="um", minimum=0, group="film"),
+            "(default 0.1 um each).", label="Roughness R_q", unit="um", minimum=0, maximum=10, group="film"),
          _f("roughness_ball", "length", "R_q of the balls, e.g. '0.05 um'.",
-            label="Ball roughness R_q", unit="um", minimum=0, group="film"),
+            label="Ball roughness R_q", unit="um", minimum=0, maximum=10, group="film"),
          _f("roughness_race", "length", "R_q of the raceways, e.g. '0.15 um'.",
-            label="Raceway roughness R_q", unit="um", minimum=0, group="film"),
+            label="Raceway roughness R_q", unit="um", minimum=0, maximum=10, group="film"),
          _f("loads_at", "choice", "speed (quasi-static ball loads at the speed) | rest (loads at "
             "rest, pure rolling).", label="Ball loads at", default="speed",
             choices=("speed", "rest"), group="film"),
@@ -414,7 +415,7 @@ _CALCS = (
             label="Ambient temperature", unit="degC", group="film"),
          _f("thermal_resistance", "thermal_resistance", "With temperature auto: bearing to ambient, "
             "e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).",
-            label="Thermal resistance", unit="K/W", minimum=0, exclusive=True, group="film"),
+            label="Thermal resistance", unit="K/W", minimum=1e-4, maximum=1e4, group="film"),
          _f("lubrication", "choice", "A starvation-risk check (SKF's replenishment factor); with "
             "temperature auto also the SKF model's (default oil-jet).", label="Lubrication method",
             choices=("grease", "oil-air", "oil-jet", "oil-bath"), group=_O),
@@ -441,16 +442,16 @@ _CALCS = (
             unit="degC", default="20 degC", group="heat"),
          _f("thermal_resistance", "thermal_resistance", "Bearing to ambient, e.g. '0.5 K/W' "
             "(default: ISO 15312's reference heat flow of the bearing).",
-            label="Thermal resistance", unit="K/W", minimum=0, exclusive=True, group="heat"),
+            label="Thermal resistance", unit="K/W", minimum=1e-4, maximum=1e4, group="heat"),
          _f("oil_flow", "volume_flow", "Oil jet or circulation flow through the bearing, e.g. "
-            "'0.5 l/min'.", label="Oil flow", unit="l/min", minimum=0, group="heat"),
+            "'0.5 l/min'.", label="Oil flow", unit="l/min", minimum=0, maximum=600, group="heat"),
          _f("oil_inlet_temperature", "text", "Of the oil flow (default: the ambient), e.g. '40 degC'.",
             label="Oil inlet temperature", unit="degC", group="heat"),
          _f("oil_heat_capacity", "specific_heat", "c_p of the oil (default 1950 J/(kg*K), a mineral "
-            "oil: an estimate).", label="Oil heat capacity", unit="J/(kg*K)", minimum=0,
-            exclusive=True, group="heat"),
+            "oil: an estimate).", label="Oil heat capacity", unit="J/(kg*K)", minimum=500,
+            maximum=5000, group="heat"),
          _f("density", "density", "Oil density (default 870 kg/m^3, a mineral oil: an estimate).",
-            label="Oil density", unit="kg/m^3", minimum=0, exclusive=True, group="heat"),
+            label="Oil density", unit="kg/m^3", minimum=500, maximum=2500, group="heat"),
          _f("max_temperature", "text", "Safe limit: no steady state below it is thermal runaway, "
             "e.g. '150 degC'.", label="Temperature limit", unit="degC", default="150 degC",
             group="heat"),
@@ -468,9 +469,9 @@ _CALCS = (
          _f("angle", "angle", "One rotation angle psi, e.g. '90 deg' (default 0).",
             label="Rotation angle", unit="deg", group="runout"),
          _f("revolutions", "int", "Rotation sequence over N inner-ring revolutions.",
-            label="Revolutions", minimum=1, maximum=WEB_MAX_REVOLUTIONS, group="runout"),
+            label="Revolutions", minimum=1, maximum=_bounds.MAX_REVOLUTIONS, group="runout"),
          _f("steps_per_rev", "int", "Positions per revolution of the sequence (default 360).",
-            label="Steps per revolution", minimum=4, maximum=WEB_MAX_STEPS_PER_REV,
+            label="Steps per revolution", minimum=4, maximum=_bounds.MAX_STEPS_PER_REV,
             group="runout"),
          _f("start_angle", "angle", "psi of the first position of the sequence.",
             label="Start angle", unit="deg", default="0 deg", group="runout"),
@@ -478,6 +479,28 @@ _CALCS = (
             label="Cage ratio", unit="-", minimum=0, exclusive=True, maximum=1, group="runout"),
          _f("refine", "flag", "Refine the contact points (spec 003 section 9).",
             label="Refine contacts", default=False, group="runout")),
+        heavy=True),
+    Calculation(
+        "runout-monte-carlo", ("runout", "monte-carlo"), "Runout Monte Carlo",
+        "Runout statistics over random bearings of an ISO 3290 ball grade and a ring class; the "
+        "samples are the request's cases.",
+        (BEARING,
+         _f("ball_grade", "text", "ISO 3290 grade: G3, G5, G10, G16, G20, G24, G28, G40.",
+            label="Ball grade", default="G5", group="runout"),
+         _f("ring_class", "text", "Ring-class preset: P5, P4, P2.", label="Ring class", default="P4",
+            group="runout"),
+         _f("samples", "int", "Number of random bearings (the request's cases).",
+            label="Samples", default=200, minimum=2, maximum=_bounds.MAX_SAMPLES, group="runout"),
+         _f("seed", "int", "Root seed (results do not depend on chunking).", label="Seed",
+            default=0, minimum=0, group="runout"),
+         _f("steps_per_rev", "int", "Positions per revolution.", label="Steps per revolution",
+            default=180, minimum=4, maximum=_bounds.MAX_STEPS_PER_REV, group="runout"),
+         _f("revolutions", "int", "Revolutions per sample.", label="Revolutions", default=2,
+            minimum=1, maximum=_bounds.MAX_REVOLUTIONS, group="runout"),
+         _f("max_order", "int", "Highest waviness order K_max.", label="Highest waviness order",
+            default=15, minimum=0, maximum=_bounds.MAX_ORDER, group="runout"),
+         _f("cage_ratio", "number", "Cage speed / inner-ring speed kappa (default (1 - gamma)/2).",
+            label="Cage ratio", unit="-", minimum=0, exclusive=True, maximum=1, group="runout")),
         heavy=True),
 )
 

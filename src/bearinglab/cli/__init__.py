@@ -57,6 +57,7 @@ import typer
 import typer.main
 
 from .. import __version__
+from ..calculations.fields import RequestError
 from ..errors import ConvergenceError, InputError
 from . import (
     catalog,
@@ -280,6 +281,11 @@ def main(argv=None) -> int:
     except typer.Abort:
         print("bearinglab: aborted", file=sys.stderr)
         return 1
+    except RequestError as exc:  # a calculation's input (bearinglab.calculations), named by its option
+        from ._common import request_message
+
+        print(f"bearinglab: error: {request_message(exc)}", file=sys.stderr)
+        return 3 if getattr(exc, "kind", "input") == "convergence" else 2
     except ConvergenceError as exc:  # no physical solution: the input is impossible (2); else the solver (3)
         print(f"bearinglab: error: {exc.summary}", file=sys.stderr)
         return 2 if exc.physical else 3

@@ -16,8 +16,7 @@ from typing import Annotated
 import typer
 
 from .. import _bounds
-from .._bounds import check_count
-from ..errors import CatalogError, ConvergenceError, InputError
+from ..errors import InputError
 from ._common import (
     BearingName,
     CatalogFile,
@@ -30,6 +29,7 @@ from ._common import (
     console,
     emit_json,
     execution,
+    fields_given,
     print_warnings,
     table,
 )
@@ -37,17 +37,10 @@ from ._common import (
 __all__ = ["COMMANDS"]
 
 UM = 1e-6
-MIN_STEPS_PER_REV = 4  # positions per revolution below which no line of the spectrum is resolved
 # bearinglab.runout.METRICS, spelled out for the help text (the help is built without importing the
 # model; tests/cli/test_cli_startup.py checks that the two agree)
 _METRICS = ("radial_ptp_x", "radial_ptp_y", "radial_ptp_max", "axial_ptp", "dz_mean")
 
-
-def _check_cage_ratio(cage_ratio):
-    """kappa = cage speed / inner-ring speed lies in (0, 1): the cage turns with the shaft, slower."""
-    if cage_ratio is not None and not 0.0 < cage_ratio < 1.0:
-        raise InputError(f"cage-ratio must be in (0, 1) [-] (the cage turns slower than the inner ring; "
-                         f"(1 - gamma)/2 is about 0.4), got {cage_ratio!r}")
 
 GeometryFile = Annotated[
     Path | None,
@@ -87,33 +80,6 @@ def _runout_figures():
 
 
 # ----------------------------------------------------------------------------- helpers
-def _geometry(geometry_file, bearing, catalog_file, first_ball_angle):
-    """The geometry given by --geometry or --bearing (None when neither is given)."""
-    from .. import catalog as _catalog
-    from .. import runout
-    from ..units import parse_quantity
-    if geometry_file and bearing:
-        raise InputError("geometry: give --geometry FILE or --bearing NAME, not both")
-    theta1 = (
-        None
-        if first_ball_angle is None
-        else parse_quantity(first_ball_angle, "angle", "first-ball-angle", default_unit="deg")
-    )
-    g = None
-    if bearing:
-        g = runout.geometry_from_bearing(_catalog.get(bearing, catalog=catalog_file))
-    elif geometry_file:
-        try:
-            g = runout.files.load_geometry_file(geometry_file)
-        except CatalogError as exc:
-            if "no [geometry] table" not in str(exc):
-                raise
-            g = runout.geometry_from_bearing(_catalog.load_bearing_file(geometry_file))
-    if g is not None and theta1 is not None:
-        g = g._replace(first_ball_angle=theta1)
-    return g, theta1
-
-
 def _atomic_write(path, text):
     """Write a whole file or nothing; its directory must exist (checked before the computation)."""
     from .._io import write_text
@@ -122,116 +88,6 @@ def _atomic_write(path, text):
 
 def _um(v):
     return float(v) / UM
-
-
-def _metrics_dict(m):
-    from .. import runout, tables
-    return tables.runout_metrics(m, runout.METRICS)
-
-
-def _geometry_dict(g):
-    from .. import tables
-    return tables.record(g, tables.RUNOUT_GEOMETRY)
-
-
-def _single_dict(d, g):
-    import numpy as np
-    c = d.contact
-    st = d.shifts
-    balls = []
-    for i in range(g.n_balls):
-        s_i = float(
-            c.constant + c.sine * np.sin(d.ball_angle[i]) + c.cosine * np.cos(d.ball_angle[i])
-        )
-        row = {
-            "ball": i + 1,
-            "theta_deg": math.degrees(d.ball_angle[i]) % 360.0,
-            "dk_um": _um(d.generalized_error[i]),
-            "s_um": _um(s_i),
-            "slack_um": _um(c.slack[i]),
-            "contact": bool(c.contact[i]),
-            "load_share": float(c.load_share[i]),
-        }
-        if int(d.passes):
-            row.update(
-                {
-                    "dtau1_rad": float(st.outer_angle_shift[i]),
-                    "dtau2_rad": float(st.inner_angle_shift[i]),
-                    "dtheta2_rad": float(st.inner_azimuth_shift[i]),
-                }
-            )
-        balls.append(row)
-    out = {
-        "mode": "single",
-        "psi_deg": math.degrees(d.rotation_angle),
-        "a0_um": _um(c.constant),
-        "B_um": _um(c.sine),
-        "D_um": _um(c.cosine),
-        "A_um": _um(c.amplitude),
-        "phi_deg": math.degrees(c.phase),
-        "dx_um": _um(d.x),
-        "dy_um": _um(d.y),
-        "dz_um": _um(d.z),
-        "contact_balls": [int(i) + 1 for i in np.flatnonzero(c.contact)],
-        "degenerate": bool(c.degenerate),
-        "free_play_um": _um(d.free_play),
-        "face_diameter_um": _um(c.face_diameter),
-        "tilt_alpha_urad": float(d.tilt_x) / UM,
-        "tilt_beta_urad": float(d.tilt_y) / UM,
-        "refined": bool(int(d.passes) > 0),
-        "passes": int(d.passes),
-        "converged": bool(d.converged),
-        "first_approximation": {
-            "dx_um": _um(d.first_approximation.x),
-            "dy_um": _um(d.first_approximation.y),
-            "dz_um": _um(d.first_approximation.z),
-        },
-        "balls": balls,
-    }
-    return out
-
-
-def _sequence_dict(t, lines):
-    import numpy as np
-    d = t.displacement
-    out = {
-        "mode": "sequence",
-        "revolutions": t.revolutions,
-        "steps_per_rev": t.steps_per_revolution,
-        "positions": int(t.rotation_angle.size),
-        "cage_ratio": t.cage_ratio,
-    }
-    out.update(_metrics_dict(t.metrics))
-    out["synchronous"] = _metrics_dict(t.synchronous)
-    out["asynchronous"] = _metrics_dict(t.asynchronous)
-    out["degenerate_fraction"] = t.degenerate_fraction
-    out["refined"] = bool(np.any(d.passes > 0))
-    out["passes_max"] = int(np.max(d.passes))
-    out["all_converged"] = bool(np.all(d.converged))
-    out["spectrum_lines"] = [
-        {
-            "component": ln.component,
-            "order": ln.order,
-            "bin_order": ln.bin_order,
-            "resolution": ln.resolution,
-            "amplitude_um": _um(ln.amplitude),
-            "label": ln.label,
-            "source": ln.source,
-            "cage_harmonic": ln.cage_harmonic,
-            "shaft_harmonic": ln.shaft_harmonic,
-        }
-        for ln in lines
-    ]
-    out["trajectory"] = {
-        "psi_deg": np.degrees(t.rotation_angle),
-        "dx_um": d.x / UM,
-        "dy_um": d.y / UM,
-        "dz_um": d.z / UM,
-        "contact_balls": [[int(i) + 1 for i in np.flatnonzero(row)] for row in d.contact.contact],
-        "degenerate": d.contact.degenerate,
-        "free_play_um": d.free_play / UM,
-    }
-    return out
 
 
 def _trajectory_csv(t):
@@ -377,10 +233,10 @@ def runout_command(
     Give the errors with --errors FILE and the geometry in that file's [geometry] table, with --geometry
     FILE or with --bearing NAME. `runout monte-carlo --help` for the tolerance-class study.
     """
-    import numpy as np
-
     from .. import runout
-    from ..units import parse_quantity
+    from ..calculations import parse
+    from ..calculations import runout as calculation
+
     if ctx.invoked_subcommand is not None:
         _reject_options_before(ctx)
         return
@@ -388,82 +244,55 @@ def runout_command(
         raise InputError(
             "errors: give the error file with --errors FILE (see examples/runout/README.md)"
         )
-    _check_cage_ratio(cage_ratio)
     if csv_out is not None:
         check_output(csv_out, "csv", (".csv",), inputs=(errors, geometry, catalog))
+        check_not_input(csv_out, "csv", runout.files.profile_files(errors))  # nor a measured profile
     if plot is not None:
         check_output_directory(plot, "plot")
-    g, theta1 = _geometry(geometry, bearing, catalog, first_ball_angle)
-    g, e = runout.files.load_error_file(errors, g)
-    if csv_out is not None:  # nor may it replace a measured profile the error file names
-        check_not_input(csv_out, "csv", runout.files.profile_files(errors))
-    if theta1 is not None:
-        g = g._replace(first_ball_angle=theta1)
     sequence = revolutions is not None or steps_per_rev is not None
-    if sequence and angle is not None:
-        raise InputError(
-            "angle: give --angle for one position or --revolutions/--steps-per-rev for a sequence, not both"
-        )
     if csv_out is not None and not sequence:
         raise InputError(
             "csv: --csv writes a trajectory; give --revolutions N (and --steps-per-rev M)"
         )
+    given = fields_given("runout", locals())
+    for key in ("angle", "start_angle", "first_ball_angle"):  # a bare number is in degrees here
+        if key in given and _is_number(given[key]):
+            given[key] = f"{given[key]} deg"
+    given["errors"] = str(errors)  # read as the file below, with its profiles
+    result = calculation.compute(parse("runout", given, limit=_bounds.MAX_POSITIONS), errors_file=errors,
+                                 geometry_file=geometry, catalog=catalog)
+    info = result.document
     if not sequence:
-        _single(g, e, angle, refine, cage_ratio, plot, json_out, errors)
+        if plot is not None:
+            info["figures"] = [str(p) for p in _runout_figures().save_single(result.displacement, plot)]
+        if json_out:
+            emit_json(info)
+            return
+        _print_single(info)
+        if plot is not None:
+            console.print(f"figures: {', '.join(info['figures'])}")
+        print_warnings(info["warnings"])
         return
-    revs = 3 if revolutions is None else revolutions
-    steps = 360 if steps_per_rev is None else steps_per_rev
-    _check_positions(revs, steps)
-    if steps < MIN_STEPS_PER_REV:
-        raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-] (the once-per-revolution "
-                         f"line needs at least four positions per revolution), got {steps}")
-    t, notes = _validity(
-        runout.rotation_sequence,
-        g,
-        e,
-        revolutions=revs,
-        steps_per_revolution=steps,
-        start_angle=parse_quantity(start_angle, "angle", "start-angle", default_unit="deg"),
-        cage_ratio=cage_ratio,
-        refine=refine,
-    )
-    if not np.all(t.displacement.converged):
-        bad = np.flatnonzero(~t.displacement.converged)
-        raise ConvergenceError(
-            "runout --refine",
-            iterations=int(t.displacement.passes.max()),
-            residual=t.displacement.last_change[bad],
-            estimate=t.displacement.z[bad],
-            reason=f"{bad.size} of {t.rotation_angle.size} positions did not converge",
-        )
-    d = t.displacement
-    spec = runout.runout_spectrum(d.x, d.y, d.z, steps)
-    lines = runout.spectrum_lines(spec, t.cage_ratio)
-    info = _sequence_dict(t, lines)
-    info.update(errors_file=str(errors), start_angle_deg=math.degrees(t.rotation_angle.flat[0]), refine=refine,
-                geometry=_geometry_dict(g), warnings=notes)
+    t = result.trajectory
     if csv_out is not None:
         _atomic_write(csv_out, _trajectory_csv(t))
         info["csv"] = str(csv_out)
     if plot is not None:
-        info["figures"] = [str(p) for p in _runout_figures().save_sequence(t, spec, lines, plot)]
+        info["figures"] = [str(p) for p in _runout_figures().save_sequence(t, result.spectrum, result.lines,
+                                                                              plot)]
     if json_out:
         emit_json(info)
         return
-    _print_sequence(info, t, lines, revs, steps, refine)
-    print_warnings(notes)
+    _print_sequence(info, t, result.lines, info["revolutions"], info["steps_per_rev"], info["refine"])
+    print_warnings(info["warnings"])
 
 
-def _validity(what, *args, **kwargs):
-    """Run a runout model; its result and the messages of its ValidityWarnings (issue 20 item 8)."""
-    import warnings
-
-    from ..errors import ValidityWarning
-
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", ValidityWarning)
-        result = what(*args, **kwargs)
-    return result, list(dict.fromkeys(str(c.message) for c in caught if issubclass(c.category, ValidityWarning)))
+def _is_number(text):
+    try:
+        float(str(text))
+    except ValueError:
+        return False
+    return True
 
 
 def _reject_options_before(ctx):
@@ -478,26 +307,6 @@ def _reject_options_before(ctx):
             f"runout: {', '.join(given)} given before '{ctx.invoked_subcommand}'; write the "
             f"options after the subcommand"
         )
-
-
-def _single(g, e, angle, refine, cage_ratio, plot, json_out, errors):
-    """The displacement at one rotation angle: compute, draw, print."""
-    from .. import runout
-    from ..units import parse_quantity
-    psi = 0.0 if angle is None else parse_quantity(angle, "angle", "angle", default_unit="deg")
-    d, notes = _validity(runout.initial_displacement, psi, g, e, refine=refine, cage_ratio=cage_ratio)
-    info = _single_dict(d, g)
-    info.update(errors_file=str(errors), refine=refine, cage_ratio=cage_ratio, geometry=_geometry_dict(g),
-                warnings=notes)
-    if plot is not None:
-        info["figures"] = [str(p) for p in _runout_figures().save_single(d, plot)]
-    if json_out:
-        emit_json(info)
-    else:
-        _print_single(info)
-        if plot is not None:
-            console.print(f"figures: {', '.join(info['figures'])}")
-        print_warnings(notes)
 
 
 def _print_sequence(info, t, lines, revs, steps, refine):
@@ -586,44 +395,27 @@ def monte_carlo_command(
 ):
     """Runout statistics over random bearings of a ball grade and a ring class (Monte Carlo)."""
     from .. import runout
-    g, _ = _geometry(geometry, bearing, catalog, None)
-    if g is None:
+    from ..calculations import parse
+    from ..calculations import runout as calculation
+
+    if geometry is None and bearing is None:
         raise InputError("geometry: give --geometry FILE or --bearing NAME")
-    if samples < 2:
-        raise InputError(f"samples must be >= 2 [-], got {samples}")
-    _check_positions(revolutions, steps_per_rev, _bounds.MAX_SAMPLE_POSITIONS)
-    check_count("samples", samples, _bounds.MAX_SAMPLES, minimum=2)
-    check_count("max-order", max_order, _bounds.MAX_ORDER, minimum=0)
-    _check_cage_ratio(cage_ratio)
     if samples_csv is not None:
         check_output(samples_csv, "samples-csv", (".csv",), inputs=(geometry, catalog))
     if plot is not None:
         check_output_directory(plot, "plot")
-    if steps_per_rev < MIN_STEPS_PER_REV:
-        raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-], got {steps_per_rev}")
     _check_write_worst(write_worst, worst_by, worst_dir)
     if worst_dir is not None and not worst_dir.is_dir():  # never created: a typo must not make a tree
         if worst_dir.exists():
             raise InputError(f"worst-dir: {str(worst_dir)!r} is a file; give a directory")
         raise InputError(f"worst-dir: directory {str(worst_dir)!r} does not exist (it is never created; "
                          f"create it first)")
-    grade = runout.ball_grade(ball_grade)
-    rings = runout.ring_class(ring_class)
+    parsed = parse("runout-monte-carlo", fields_given("runout-monte-carlo", locals()),
+                   limit=_bounds.MAX_SAMPLES)
     # rich for serial, dask's progress bar on a cluster; none off a terminal
     with execution("Monte Carlo", executor, workers, chunk_size, progress=progress) as ex:
-        r = runout.monte_carlo(
-            g,
-            grade,
-            rings,
-            samples,
-            seed,
-            steps_per_revolution=steps_per_rev,
-            revolutions=revolutions,
-            max_order=max_order,
-            cage_ratio=cage_ratio,
-            execution=ex,
-        )
-    info = _monte_carlo_info(r, g, grade, rings, samples, seed, steps_per_rev, revolutions, max_order)
+        info, r, g, grade, rings = calculation.compute_monte_carlo(parsed, geometry_file=geometry,
+                                                                   catalog=catalog, execution=ex)
     if samples_csv is not None:
         _atomic_write(samples_csv, _samples_csv(r, grade, rings, seed, samples, revolutions, steps_per_rev,
                                                 max_order))
@@ -641,38 +433,6 @@ def monte_carlo_command(
         emit_json(info)
         return
     _print_monte_carlo(info, grade, rings, samples, seed)
-
-
-def _monte_carlo_info(r, g, grade, rings, samples, seed, steps_per_rev, revolutions, max_order):
-    """The inputs and the summary statistics of a Monte Carlo study, in µm."""
-    import numpy as np
-
-    from .. import runout
-    info = {
-        "samples": samples,
-        "seed": seed,
-        "ball_grade": grade.name,
-        "ring_class": rings.name,
-        "steps_per_rev": steps_per_rev,
-        "revolutions": revolutions,
-        "max_order": max_order,
-        "ball_grade_source": grade.source,
-        "ring_class_source": rings.source,
-        "ball_grade_um": {
-            "V_DWS": grade.single_diameter_variation / UM,
-            "V_DWL": grade.lot_diameter_variation / UM,
-        },
-        "ring_class_um": {
-            "K_ia": rings.radial_runout / UM,
-            "S_ia": rings.axial_runout / UM,
-            "w_rms": rings.waviness_rms / UM,
-        },
-        "geometry": _geometry_dict(g),
-    }
-    for name in runout.METRICS:
-        info[f"{name}_um"] = {k: v / UM for k, v in r.summary[name]._asdict().items()}
-    info["degenerate_fraction_mean"] = float(np.mean(r.samples.degenerate_fraction))
-    return info
 
 
 def _samples_csv(r, grade, rings, seed, samples, revolutions, steps_per_rev, max_order):
@@ -724,15 +484,6 @@ def _print_monte_carlo(info, grade, rings, samples, seed):
     for key in ("samples_csv", "worst_error_files", "figures"):
         if key in info:
             console.print(f"{key}: {info[key] if key == 'samples_csv' else ', '.join(info[key])}")
-
-
-def _check_positions(revolutions, steps_per_rev, limit=_bounds.MAX_POSITIONS):
-    """The size of a rotation sequence, checked before it is allocated (bearinglab._bounds)."""
-    check_count("revolutions", revolutions, _bounds.MAX_REVOLUTIONS)
-    check_count("steps-per-rev", steps_per_rev, _bounds.MAX_STEPS_PER_REV)
-    if revolutions * steps_per_rev > limit:
-        raise InputError(f"revolutions x steps-per-rev must be <= {limit} positions (bearinglab's size "
-                         f"limit), got {revolutions} x {steps_per_rev}")
 
 
 def _check_write_worst(count, metric, directory):

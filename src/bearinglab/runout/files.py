@@ -3,6 +3,7 @@
 Reading
 -------
 load_error_file             (geometry, errors) of one bearing from an error file
+read_error_document         the same from an error file's content already read (a posted document)
 load_geometry_file          the [geometry] table of a file (an error file or a geometry-only file)
 
 Writing
@@ -53,6 +54,7 @@ __all__ = [
     "load_error_file",
     "load_geometry_file",
     "profile_files",
+    "read_error_document",
     "write_error_file",
     "write_sample_error_files",
 ]
@@ -84,8 +86,9 @@ _ANGLE_UNITS = {"deg": math.pi / 180, "rad": 1.0}
 
 
 class _Ctx:
-    def __init__(self, path):
+    def __init__(self, path, files=True):
         self.path = Path(path)
+        self.files = files  # whether the document may name files (a posted document may not)
 
     def fail(self, table, key, msg):
         where = f"{self.path}, [{table}]" + (f", key {key!r}" if key else "")
@@ -150,7 +153,36 @@ def load_error_file(path, geometry=None):
         Naming the file, the table and the key of a bad entry.
     """
     ctx = _Ctx(path)
-    doc = _load(ctx)
+    return _read_error_document(_load(ctx), geometry, ctx)
+
+
+def read_error_document(doc, geometry=None, *, source="the posted document"):
+    """The content of an error file already read (a posted document), as :func:`load_error_file`.
+
+    Parameters
+    ----------
+    doc : dict
+        The tables of an error file (format: ``examples/runout/README.md``), e.g. from JSON or TOML.
+    geometry : SpindleGeometry, optional
+        As for :func:`load_error_file`.
+    source : str
+        What the messages call the document.
+
+    Returns
+    -------
+    tuple
+        ``(geometry, errors)``.
+
+    Raises
+    ------
+    CatalogError
+        Naming ``source``, the table and the key of a bad entry; a ``profile`` key, which names a file,
+        is refused: nothing is read from the disk.
+    """
+    return _read_error_document(doc, geometry, _Ctx(source, files=False))
+
+
+def _read_error_document(doc, geometry, ctx):
     ctx.known("top level", doc, _TOP)
     if geometry is None:
         if "geometry" not in doc:
@@ -360,6 +392,9 @@ def _read_series(table, name, ctx):
                     "profile",
                     "give a profile file or inline angle/deviation arrays, not both",
                 )
+            if not ctx.files:
+                ctx.fail(name, "profile", "names a profile file; a posted document cannot refer to "
+                         "files: give the inline 'angle' and 'deviation' arrays")
             file = ctx.path.parent / str(table["profile"])
             try:  # a regular file of bounded size (not /dev/zero), then parsed
                 text = _bounds.read_input_bytes(file).decode("utf-8-sig")

@@ -61,6 +61,7 @@ ENDPOINTS = {
     "film": "film",
     "temperature": "temperature",
     "runout": "runout",
+    "runout-monte-carlo": "runout-monte-carlo",
 }
 
 
