@@ -162,3 +162,11 @@ def test_a_runout_sequence_counts_its_positions_with_steps_alone():
     assert parse("runout", {"errors": "x", "steps_per_rev": "100"}).cases == 300
     with pytest.raises(RequestError, match="more than the limit"):
         parse("runout", {"errors": "x", "steps_per_rev": "50000"})
+
+
+def test_a_posted_error_set_without_geometry_asks_for_a_bearing_in_web_words(no_command_line):
+    text = '[errors.balls]\nunit = "um"\ndiameter = [1.0, 0.0, 0.0]\n'
+    with pytest.raises(RequestError) as err:
+        run(parse("runout", {"errors": text}))
+    assert err.value.parameter == "errors" and "no [geometry] table" in err.value.template
+    assert "--" not in err.value.template and "a catalog bearing" in err.value.template

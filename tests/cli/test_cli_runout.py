@@ -269,14 +269,14 @@ def test_monte_carlo_text_and_bearing(capsys):
         (["runout", "--errors", EX3, "--bearing", "7218B", "--geometry", MC], "not both"),
         (["runout", "--errors", EX3, "--bearing", "nosuch"], "unknown name 'nosuch'"),
         (["runout", "--errors", EX3, "--csv", "x.csv"], "--csv writes a trajectory"),
-        (["runout", "--errors", EX3, "--revolutions", "0"], "revolutions must be 1 ... "),
+        (["runout", "--errors", EX3, "--revolutions", "0"], "revolutions must be an integer >= 1"),
         (["runout", "--errors", EX3, "monte-carlo"], "--errors given before 'monte-carlo'"),
         (["runout", "monte-carlo"], "give --geometry FILE or --bearing NAME"),
         (
             ["runout", "monte-carlo", "--geometry", MC, "--ball-grade", "G7"],
             "ball-grade must be one of",
         ),
-        (["runout", "monte-carlo", "--geometry", MC, "--samples", "1"], "samples must be 2 ... "),
+        (["runout", "monte-carlo", "--geometry", MC, "--samples", "1"], "samples must be >= 2"),
     ],
 )
 def test_bad_input_is_one_line_and_exit_2(capsys, args, match):

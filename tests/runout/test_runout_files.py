@@ -222,3 +222,29 @@ def test_sample_error_files_reproduce_the_samples(tmp_path, g):
             assert getattr(t.metrics, name) == getattr(r.samples, name)[i], name
     with pytest.raises(InputError, match="result must be a MonteCarloResult"):
         R.write_sample_error_files(tmp_path, r.samples, g, worst)
+
+
+def test_a_document_already_read_gives_what_its_file_gives_and_reads_no_file():
+    import tomllib
+    from pathlib import Path
+
+    from bearinglab.runout import files
+
+    folder = Path(__file__).resolve().parents[2] / "examples" / "runout"
+    path = folder / "example3_mixed.toml"
+    g1, e1 = files.load_error_file(path)
+    g2, e2 = files.read_error_document(tomllib.loads(path.read_text(encoding="utf-8")))
+    assert g1 == g2
+
+    def same(a, b):  # field by field, arrays exactly
+        if isinstance(a, tuple):
+            return type(a) is type(b) and len(a) == len(b) and all(map(same, a, b))
+        if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+            return np.array_equal(a, b)
+        return a == b
+
+    assert same(e1, e2)
+    doc = tomllib.loads((folder / "measured_profile.toml").read_text(encoding="utf-8"))
+    with pytest.raises(CatalogError, match="cannot refer to files") as err:
+        files.read_error_document(doc, source="the posted document")
+    assert str(err.value).startswith("the posted document, [")

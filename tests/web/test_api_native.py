@@ -53,6 +53,8 @@ def test_runout_monte_carlo_over_the_case_limit_is_422_naming_samples(client):
     assert "more than the limit" in r.json()["detail"]
     r = client.post("/api/runout-monte-carlo", json={**MC, "samples": 1})
     assert r.status_code == 422 and r.json()["parameter"] == "samples"
+    r = client.get("/api/runout-monte-carlo", params={"samples": "4"})  # no bearing: no geometry
+    assert r.status_code == 422 and r.json()["parameter"] == "bearing" and "--" not in r.json()["detail"]
 
 
 def test_runout_monte_carlo_is_in_the_openapi_schema(client):

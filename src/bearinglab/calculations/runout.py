@@ -13,6 +13,8 @@ document              Parsed ``runout`` request -> the JSON document ``bearingla
 compute               the same, with the model's results (for the command line's figures and CSV)
 monte_carlo_document  Parsed ``runout-monte-carlo`` request -> ``bearinglab runout monte-carlo --json``
 compute_monte_carlo   the same, with the study (for the command line's CSV, worst files and figures)
+check_sequence        the sizes of a rotation sequence and the cage ratio, in the model's words
+check_study           the sizes of a Monte Carlo study, likewise
 """
 
 from __future__ import annotations
@@ -25,8 +27,10 @@ from .._bounds import check_count
 from .._io import json_value
 from ..errors import CatalogError, ConvergenceError, InputError
 from ._failures import failures
+from .fields import RequestError
 
-__all__ = ["compute", "compute_monte_carlo", "document", "monte_carlo_document"]
+__all__ = ["check_sequence", "check_study", "compute", "compute_monte_carlo", "document",
+           "monte_carlo_document"]
 
 UM = 1e-6
 MIN_STEPS_PER_REV = 4  # positions per revolution below which no line of the spectrum is resolved
@@ -280,10 +284,7 @@ def _compute(parsed, errors_file, geometry_file, catalog):
         )
     revs = 3 if revolutions is None else revolutions
     steps = 360 if steps is None else steps
-    _check_positions(revs, steps)
-    if steps < MIN_STEPS_PER_REV:
-        raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-] (the once-per-revolution "
-                         f"line needs at least four positions per revolution), got {steps}")
+    check_sequence(revs, steps, cage_ratio)
     t, notes = _validity(
         runout.rotation_sequence,
         g,
@@ -318,7 +319,6 @@ def _posted_errors(parsed, geometry):
     from .. import runout
     from ..errors import CatalogError
     from .documents import _document
-    from .fields import RequestError
 
     doc = _document("errors", str(parsed.values["errors"]))  # refuses a 'profile' (a file name)
     try:
@@ -395,17 +395,11 @@ def _compute_monte_carlo(parsed, geometry_file, catalog, execution):
     samples, seed = v.get("samples", 200), v.get("seed", 0)
     steps_per_rev, revolutions = v.get("steps_per_rev", 180), v.get("revolutions", 2)
     max_order, cage_ratio = v.get("max_order", 15), v.get("cage_ratio")
+    if geometry_file is None and "bearing" not in parsed.given:  # the web's geometry is a bearing
+        raise RequestError("bearing", None, "a catalog bearing",
+                           "{name}: missing; a catalog bearing, e.g. 7218B (the geometry of the study)")
     g, _ = _geometry(geometry_file, _text(parsed, "bearing"), catalog, None)
-    if g is None:
-        raise InputError("geometry: give --geometry FILE or --bearing NAME")
-    if samples < 2:
-        raise InputError(f"samples must be >= 2 [-], got {samples}")
-    _check_positions(revolutions, steps_per_rev, _bounds.MAX_SAMPLE_POSITIONS)
-    check_count("samples", samples, _bounds.MAX_SAMPLES, minimum=2)
-    check_count("max-order", max_order, _bounds.MAX_ORDER, minimum=0)
-    _check_cage_ratio(cage_ratio)
-    if steps_per_rev < MIN_STEPS_PER_REV:
-        raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-], got {steps_per_rev}")
+    check_study(samples, steps_per_rev, revolutions, max_order, cage_ratio)
     grade = runout.ball_grade(v.get("ball_grade", "G5"))
     rings = runout.ring_class(v.get("ring_class", "P4"))
     r = runout.monte_carlo(g, grade, rings, samples, seed, steps_per_revolution=steps_per_rev,
@@ -445,6 +439,28 @@ def _monte_carlo_info(r, g, grade, rings, samples, seed, steps_per_rev, revoluti
         info[f"{name}_um"] = {k: v / UM for k, v in r.summary[name]._asdict().items()}
     info["degenerate_fraction_mean"] = float(np.mean(r.samples.degenerate_fraction))
     return info
+
+
+def check_sequence(revolutions, steps_per_rev, cage_ratio=None):
+    """The sizes of a rotation sequence and the cage ratio, in the words of the model's limits (the
+    command line checks them before the fields' ranges, whose messages say less)."""
+    _check_cage_ratio(cage_ratio)
+    _check_positions(revolutions, steps_per_rev)
+    if steps_per_rev < MIN_STEPS_PER_REV:
+        raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-] (the once-per-revolution "
+                         f"line needs at least four positions per revolution), got {steps_per_rev}")
+
+
+def check_study(samples, steps_per_rev, revolutions, max_order, cage_ratio=None):
+    """The sizes of a runout Monte Carlo study and the cage ratio, as :func:`check_sequence`."""
+    if samples < 2:
+        raise InputError(f"samples must be >= 2 [-], got {samples}")
+    _check_positions(revolutions, steps_per_rev, _bounds.MAX_SAMPLE_POSITIONS)
+    check_count("samples", samples, _bounds.MAX_SAMPLES, minimum=2)
+    check_count("max-order", max_order, _bounds.MAX_ORDER, minimum=0)
+    _check_cage_ratio(cage_ratio)
+    if steps_per_rev < MIN_STEPS_PER_REV:
+        raise InputError(f"steps-per-rev must be an integer >= {MIN_STEPS_PER_REV} [-], got {steps_per_rev}")
 
 
 def _check_positions(revolutions, steps_per_rev, limit=_bounds.MAX_POSITIONS):

@@ -254,6 +254,11 @@ def runout_command(
         raise InputError(
             "csv: --csv writes a trajectory; give --revolutions N (and --steps-per-rev M)"
         )
+    if sequence:  # the model's words for its limits, before the fields' ranges
+        calculation.check_sequence(3 if revolutions is None else revolutions,
+                                   360 if steps_per_rev is None else steps_per_rev, cage_ratio)
+    else:
+        calculation.check_sequence(1, 360, cage_ratio)
     given = fields_given("runout", locals())
     for key in ("angle", "start_angle", "first_ball_angle"):  # a bare number is in degrees here
         if key in given and _is_number(given[key]):
@@ -410,6 +415,7 @@ def monte_carlo_command(
             raise InputError(f"worst-dir: {str(worst_dir)!r} is a file; give a directory")
         raise InputError(f"worst-dir: directory {str(worst_dir)!r} does not exist (it is never created; "
                          f"create it first)")
+    calculation.check_study(samples, steps_per_rev, revolutions, max_order, cage_ratio)  # the model's words
     parsed = parse("runout-monte-carlo", fields_given("runout-monte-carlo", locals()),
                    limit=_bounds.MAX_SAMPLES)
     # rich for serial, dask's progress bar on a cluster; none off a terminal

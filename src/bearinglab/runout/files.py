@@ -186,10 +186,8 @@ def _read_error_document(doc, geometry, ctx):
     ctx.known("top level", doc, _TOP)
     if geometry is None:
         if "geometry" not in doc:
-            raise CatalogError(
-                f"{ctx.path}: no [geometry] table; add one or give the geometry "
-                f"(--geometry FILE or --bearing NAME)"
-            )
+            how = "(--geometry FILE or --bearing NAME)" if ctx.files else "(a catalog bearing)"
+            raise CatalogError(f"{ctx.path}: no [geometry] table; add one or give the geometry {how}")
         geometry = _read_geometry(doc["geometry"], ctx)
     elif "geometry" in doc:
         _read_geometry(doc["geometry"], ctx)  # still checked, so that a broken file is reported
