@@ -442,8 +442,21 @@ def _monte_carlo_info(r, g, grade, rings, samples, seed, steps_per_rev, revoluti
 
 
 def check_sequence(revolutions, steps_per_rev, cage_ratio=None):
-    """The sizes of a rotation sequence and the cage ratio, in the words of the model's limits (the
-    command line checks them before the fields' ranges, whose messages say less)."""
+    """Check the sizes of a rotation sequence and the cage ratio, in the words of the model's limits
+    (the command line checks them before the fields' ranges, whose messages say less).
+
+    Parameters
+    ----------
+    revolutions, steps_per_rev : int
+        The sequence: at least one revolution of at least four positions, within bearinglab's limits.
+    cage_ratio : float, optional
+        Cage speed / inner-ring speed, in (0, 1). [-]
+
+    Raises
+    ------
+    InputError
+        Naming the input at fault.
+    """
     _check_cage_ratio(cage_ratio)
     _check_positions(revolutions, steps_per_rev)
     if steps_per_rev < MIN_STEPS_PER_REV:
@@ -452,7 +465,24 @@ def check_sequence(revolutions, steps_per_rev, cage_ratio=None):
 
 
 def check_study(samples, steps_per_rev, revolutions, max_order, cage_ratio=None):
-    """The sizes of a runout Monte Carlo study and the cage ratio, as :func:`check_sequence`."""
+    """Check the sizes of a runout Monte Carlo study and the cage ratio, as :func:`check_sequence`.
+
+    Parameters
+    ----------
+    samples : int
+        Random bearings, >= 2.
+    steps_per_rev, revolutions : int
+        Each sample's sequence.
+    max_order : int
+        Highest waviness order, >= 0.
+    cage_ratio : float, optional
+        Cage speed / inner-ring speed, in (0, 1). [-]
+
+    Raises
+    ------
+    InputError
+        Naming the input at fault.
+    """
     if samples < 2:
         raise InputError(f"samples must be >= 2 [-], got {samples}")
     _check_positions(revolutions, steps_per_rev, _bounds.MAX_SAMPLE_POSITIONS)

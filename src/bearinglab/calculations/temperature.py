@@ -40,7 +40,23 @@ _LUBRICATIONS = ("oil-jet", "oil-air", "grease")
 
 
 def oil_reference_viscosities(oil, viscosity_index, viscosity_100):
-    """(nu40, nu100 [m^2/s], description, inputs) of an ISO VG oil, by the shared oil options."""
+    """The reference viscosities of an ISO VG oil, from the shared oil options.
+
+    Parameters
+    ----------
+    oil : str
+        The grade as written ('VG32', 'ISO VG 68'); None is refused (the balance needs the grade).
+    viscosity_index : float or None
+        The oil's VI (default 95, a mineral oil, said so in the description).
+    viscosity_100 : str or None
+        nu at 100 degC as written ('8.7 cSt'), instead of the VI.
+
+    Returns
+    -------
+    tuple
+        ``(nu40, nu100, description, inputs)``: the viscosities at 40 and 100 degC [m^2/s], one line
+        saying how they were obtained, and the oil inputs for the document's ``inputs``.
+    """
     from ..ratings import lubrication
 
     if oil is None:
@@ -60,7 +76,25 @@ def oil_reference_viscosities(oil, viscosity_index, viscosity_100):
 
 def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature, heat_capacity, density_text,
                  max_temperature):
-    """The heat-balance options in SI, the notes on assumed values and the inputs echoed."""
+    """The heat-balance inputs in SI, the notes on assumed values and the inputs echoed.
+
+    Parameters
+    ----------
+    b : BallBearing
+        The bearing (unused by the checks; kept for the callers' order).
+    ambient, max_temperature : str
+        Temperatures as written ('20 degC'); the limit must lie above the ambient.
+    thermal_resistance, oil_flow, oil_inlet_temperature, heat_capacity, density_text : str or None
+        As written ('0.5 K/W', '0.5 l/min', '40 degC', '1950 J/(kg*K)', '870 kg/m^3'); the last
+        three go with an oil flow (density and heat capacity default to a mineral oil's, an estimate).
+
+    Returns
+    -------
+    tuple
+        ``(options, notes, inputs)``: the keyword arguments of
+        :func:`bearinglab.thermal.thermal_balance` (with ``ambient`` [K]), the notes on assumed values,
+        and the inputs for the document.
+    """
     from .. import thermal
     from ..units import parse_quantity
 
@@ -105,8 +139,23 @@ def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature
 
 
 def skf_options(b, lubrication, constants):
-    """The SKF model's options for the bearing: its lubrication method and, for angular contact, the
-    constants given (the angular-contact table is not in this build: refused in one line without them)."""
+    """The SKF model's options for the bearing: its lubrication method and its geometry constants.
+
+    Parameters
+    ----------
+    b : BallBearing
+        The bearing; an angular-contact one needs ``constants`` (its table is not in this build).
+    lubrication : str
+        oil-jet, oil-air or grease (oil-bath is refused: its drag loss needs SKF's V_M chart).
+    constants : str or None
+        'R1,R2,R3,S1,S2,S3' as written.
+
+    Returns
+    -------
+    dict
+        Keyword arguments of :func:`bearinglab.thermal.thermal_balance` (``lubrication`` and, where
+        given, ``constants``).
+    """
     from .. import friction
 
     if lubrication == "oil-bath":

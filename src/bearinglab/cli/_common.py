@@ -16,7 +16,10 @@ Lubricant        ViscosityOpt, OilOpt, TemperatureOpt, ViscosityIndexOpt, Viscos
                  every command that needs a viscosity shares); parse_temperature; lubricant_viscosity (those
                  options -> the operating viscosity and how it was obtained)
 
-The command modules import these; none of them imports the package ``bearinglab.cli`` itself, so the
+The input readers (the bearing's resolution, inputs_echo, the speeds, loads, lengths and the lubricant)
+are :mod:`bearinglab.calculations._inputs`, shared with the calculations' documents, and imported
+here; request_message words a calculation's RequestError for the command line, fields_given collects
+a command's options as the request of its calculation. The command modules import these; none of them imports the package ``bearinglab.cli`` itself, so the
 application is built on import without a cycle. The physics (numpy, scipy, pint, matplotlib) is imported
 inside the functions that compute, never at the top of a command module: ``bearinglab --help`` builds
 every command without it (``tests/cli/test_cli_startup.py``).
@@ -39,7 +42,6 @@ from rich.table import Table
 
 from ..calculations._inputs import (  # noqa: F401 -- the commands import these from here
     LubricantViscosity,
-    _clean,
     choice,
     five_loads,
     inputs_echo,
