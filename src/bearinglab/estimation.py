@@ -170,5 +170,7 @@ def estimate_ball_set(bore, outside_diameter, width, *, family="deep-groove"):
     if key == "deep-groove":
         z = np.floor(math.radians(rule["filling_angle"]) / (2.0 * half)) + 1
     else:
+        # Each ball takes its diameter plus a cage web on the pitch circle; the web's fixed part is why
+        # thin sections (618) carry fewer balls than a filled fraction of the circle would give them.
         z = np.floor(math.pi * dm / (dw + rule["web"] + rule["web_per_pitch"] * dm))
     return EstimatedBallSet(z.astype(int)[()], np.asarray(dw)[()], dm[()])
