@@ -558,7 +558,7 @@ def thermal_reference_speed(bearing, *, static_load_rating=None, drag_loss_facto
                      "V_M given), so the speed is on the high side")
     else:
         lubrication = "oil-bath"
-        (dw,) = bearing.require("ball_diameter")
+        dw = bearing.require("ball_diameter")
         options.update(oil_level=0.5 * dw, drag_loss_factor=drag_loss_factor)
     caught = []
 
