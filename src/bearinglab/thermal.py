@@ -500,7 +500,7 @@ def thermal_reference_speed(bearing, *, static_load_rating=None, drag_loss_facto
         V_M of SKF's drag-loss diagram at H/d_m with H = D_w/2 (ISO 15312's oil bath reaches the middle
         of the lowest ball); without it the bath's drag moment is left out (a warning says so). [-]
     rtol : float, optional
-        Relative balance residual |P_f - q_r A_r| / q_r A_r at which the solve stops.
+        Relative balance residual abs(P_f - q_r A_r) / (q_r A_r) at which the solve stops.
     max_iter : int, optional
         Iterations of the bracketed solve.
 
