@@ -68,17 +68,17 @@ print(f"ISO 15312 thermal reference speed (SKF model, no bath drag): {ref.speed 
 fig, axes = plt.subplots(3, 1, figsize=(6.5, 8), sharex=True, layout="constrained")
 ax = axes[0]
 ax.plot(rpm, bal.temperature - 273.15, "o-", color="C3")
-ax.set_ylabel("bearing temperature [°C]")
+ax.set_ylabel("bearing temperature [°C] (o)", color="C3")
 ax2 = ax.twinx()
 ax2.plot(rpm, nu * 1e6, "s--", color="C0")
-ax2.set_ylabel("viscosity ν [mm²/s]")
+ax2.set_ylabel("viscosity ν [mm²/s] (□)", color="C0")
 ax.set_title("7210 BE, 6 kN radial + 3 kN axial, VG 32 oil jet 0.3 l/min")
 ax = axes[1]
-ax.plot(rpm, films.minimum_film * 1e6, "o-", color="C2", label="h_min (smallest contact)")
-ax.set_ylabel("minimum film [µm]")
+ax.plot(rpm, films.minimum_film * 1e6, "o-", color="C2")
+ax.set_ylabel("minimum film h_min [µm] (o)", color="C2")
 ax2 = ax.twinx()
 ax2.plot(rpm, life.viscosity_ratio, "s--", color="C1")
-ax2.set_ylabel("κ = ν/ν₁")
+ax2.set_ylabel("κ = ν/ν₁ (□)", color="C1")
 ax = axes[2]
 ax.semilogy(rpm, life.modified_rating_life_duration / 3600, "o-", color="C4")
 ax.set_ylabel("L_nm [h]")
