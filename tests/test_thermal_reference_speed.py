@@ -125,8 +125,17 @@ def test_the_oil_bath_drag_lowers_the_speed_and_seals_are_left_out():
     assert bath.speed < dry.speed
     assert not any("drag moment is left out" in m for m in bath.warnings)
     assert bath.friction_moment * bath.speed == pytest.approx(bath.reference_heat_flow, rel=1e-10)
-    sealed = thermal.thermal_reference_speed(catalog.get("6205-2RS"))
-    assert sealed.speed == pytest.approx(thermal.thermal_reference_speed(catalog.get("6205")).speed, rel=1e-12)
+    open_ = thermal.thermal_reference_speed(catalog.get("6205"))
+    assert not any("open bearings" in m for m in open_.warnings)
+    for sealed in (catalog.get("6205-2RS"),  # no seal data
+                   catalog.get("6207").replace(seal="RS1", seals=2, seal_diameter=45e-3)):
+        r = thermal.thermal_reference_speed(sealed)
+        assert any("rates open bearings; the seals are left out" in m for m in r.warnings)
+    r = thermal.thermal_reference_speed(catalog.get("6205-2RS"))
+    assert r.speed == pytest.approx(open_.speed, rel=1e-12)
+    sealed = catalog.get("6207").replace(seal="RS1", seals=2, seal_diameter=45e-3)
+    assert thermal.thermal_reference_speed(sealed).speed == pytest.approx(
+        thermal.thermal_reference_speed(sealed.replace(seal=None, seals=0)).speed, rel=1e-12)
 
 
 def test_bad_static_load_rating():

@@ -588,7 +588,7 @@ def thermal_reference_speed(bearing, *, static_load_rating=None, drag_loss_facto
                                   1e-12 * hi, rtol, max_iter)
     n_r = float(root[0])
     moment = q / n_r
-    if any("sealed" in m or "shields" in m for m in caught):
+    if getattr(bearing, "seal", None) is not None or any("sealed" in m or "shields" in m for m in caught):
         notes.append("thermal reference speed: ISO 15312 rates open bearings; the seals are left out")
     return ThermalReferenceSpeed(n_r, q, load, nu, moment, int(it[0]), tuple(dict.fromkeys(notes)))
 
