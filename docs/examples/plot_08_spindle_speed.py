@@ -1,6 +1,6 @@
 """
 A spindle bearing at rising speed: temperature, viscosity, film, kappa and life
-==============================================================================
+===============================================================================
 
 An SKF 7210 BECBP (the ``7210 BE`` of the catalog: 50 x 90 x 20 mm, 40 deg) carries 6 kN radial and
 3 kN axial, lubricated by an oil jet of ISO VG 32 (viscosity index 95) at

@@ -456,7 +456,7 @@ def reference_heat_flow(bore, outside_diameter, width):
     -------
     ndarray
         :math:`\Phi_r = q_r A_r` (:func:`reference_heat_flow_density`, :func:`reference_surface`) at
-        70 degC on the outer ring with a 20 degC ambient [1]_ [4]_. [W]
+        70 degC on the outer ring with a 20 degC ambient [1] [4]. [W]
 
     Examples
     --------
@@ -516,12 +516,12 @@ def thermal_reference_speed(bearing, *, static_load_rating=None, drag_loss_facto
 
     Notes
     -----
-    ISO 15312 [1]_ defines the thermal reference speed :math:`n_{\theta r}` as the inner-ring speed at
+    ISO 15312 [1] defines the thermal reference speed :math:`n_{\theta r}` as the inner-ring speed at
     which the friction power of an open bearing at the reference conditions equals the reference heat
     flow: :math:`M(n)\,n = q_r A_r` with the radial load :math:`P_{1r} = 0.05\,C_{0r}`, a mineral oil
     of 12 mm^2/s at the reference temperature of 70 degC and an oil bath up to the middle of the lowest
-    rolling element [4]_ [5]_. The standard computes M with its own coefficients f_0r, f_1r; here M is
-    the SKF four-term model [2]_ (as bearinglab's thermal balance uses), with K_rs = 3e-8 of an oil bath
+    rolling element [4] [5]. The standard computes M with its own coefficients f_0r, f_1r; here M is
+    the SKF four-term model [2] (as bearinglab's thermal balance uses), with K_rs = 3e-8 of an oil bath
     (the value of SKF's low-level oil bath and oil jet alike). Seals are left out (ISO 15312 rates open
     bearings). The lowest root is taken: the model's power is scanned on a log grid of speeds from 10
     to 10^7 rpm, then the bracket of its first crossing is solved (Illinois regula falsi). Against
@@ -619,9 +619,9 @@ def ring_temperatures(bearing_temperature, *, difference=RING_TEMPERATURE_DIFFER
     -----
     The balance has one temperature; the clearance needs two. The lumped temperature is read as the
     outer ring's, because that is where ISO 15312 and SKF measure the bearing temperature ("on the
-    bearing stationary outer ring" [5]_), and the inner ring, which sheds its heat only through the
-    balls and the shaft, is warmer - "which is usually the case" [6]_. The default split of 10 K is the
-    upper end of what Normal clearance is made for [6]_: a design value, not a prediction. A measured
+    bearing stationary outer ring" [5]), and the inner ring, which sheds its heat only through the
+    balls and the shaft, is warmer - "which is usually the case" [6]. The default split of 10 K is the
+    upper end of what Normal clearance is made for [6]: a design value, not a prediction. A measured
     or estimated difference of the machine should be given; 0 gives one temperature throughout.
 
     Examples
