@@ -454,6 +454,9 @@ _CALCS = (
          _f("max_temperature", "text", "Safe limit: no steady state below it is thermal runaway, "
             "e.g. '150 degC'.", label="Temperature limit", unit="degC", default="150 degC",
             group="heat"),
+         _f("reference_speed", "flag", "Also ISO 15312's thermal reference speed of the bearing by the "
+            "SKF model (JSON: thermal_reference_speed_rpm).", label="Thermal reference speed",
+            default=False, group="heat"),
          BEARING),
         combine="broadcast"),
     Calculation(

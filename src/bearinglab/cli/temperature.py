@@ -26,6 +26,7 @@ from ._common import (
     RadialLoadOpt,
     Viscosity100Opt,
     ViscosityIndexOpt,
+    console,
     emit_json,
     inputs_echo,
     lubricant_viscosity,
@@ -47,6 +48,7 @@ HeatCapacityOpt = Annotated[str | None, typer.Option("--oil-heat-capacity", help
 OilDensityOpt = Annotated[str | None, typer.Option("--density", help="Oil density (default 870 kg/m^3, a mineral oil: an estimate).", rich_help_panel=_HEAT)]
 MaxTemperatureOpt = Annotated[str, typer.Option("--max-temperature", help="Safe limit: no steady state below it is thermal runaway, e.g. '150 degC'.", rich_help_panel=_HEAT)]
 LubricationOpt = Annotated[str, typer.Option("--lubrication", help="SKF model: oil-jet (default) | oil-air | grease (oil bath: refused, its drag loss needs SKF's V_M chart).", rich_help_panel=_HEAT)]
+ReferenceSpeedOpt = Annotated[bool, typer.Option("--reference-speed", help="Also ISO 15312's thermal reference speed of the bearing by the SKF model (JSON: thermal_reference_speed_rpm).", rich_help_panel=_HEAT)]
 ConstantsOpt = Annotated[str | None, typer.Option("--skf-constants", help="SKF geometry constants R1,R2,R3,S1,S2,S3 of the series (needed for angular-contact bearings), e.g. '5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12'.", rich_help_panel=_HEAT)]
 
 #: Defaults of the oil's properties when not given: typical mineral-oil values, estimates labelled as such
@@ -168,6 +170,7 @@ def temperature(
     ambient: AmbientOpt = "20 degC", thermal_resistance: ResistanceOpt = None, oil_flow: OilFlowOpt = None,
     oil_inlet_temperature: OilInletOpt = None, oil_heat_capacity: HeatCapacityOpt = None,
     density_text: OilDensityOpt = None, max_temperature: MaxTemperatureOpt = "150 degC",
+    reference_speed: ReferenceSpeedOpt = False,
     bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
     json_out: JsonFlag = False,
 ):
@@ -186,7 +189,14 @@ def temperature(
     r = thermal.thermal_balance(b, fr, fa, w, heat.pop("ambient"), nu40, nu100, **heat,
                                 **skf_options(b, lubrication, skf_constants))
     notes = list(dict.fromkeys([*notes, *r.warnings]))
-    docs = [_doc(r, k, w.size) | {"inputs": inputs_echo(b, radial_load_N=fr, axial_load_N=fa,
+    extra = {}
+    if reference_speed:  # ISO 15312 (bearinglab.thermal.thermal_reference_speed); one value per bearing
+        ref = thermal.thermal_reference_speed(b, **{k: v for k, v in skf_options(b, lubrication, skf_constants).items()
+                                                  if k == "constants"})
+        extra = {"thermal_reference_speed_rpm": _json(ref.speed / RPM),
+                 "reference_heat_flow_W": _json(ref.reference_heat_flow)}
+        notes = list(dict.fromkeys([*notes, *ref.warnings]))
+    docs = [_doc(r, k, w.size) | extra | {"inputs": inputs_echo(b, radial_load_N=fr, axial_load_N=fa,
                                                          speed_rpm=float(w[k]) / RPM, lubrication=lubrication,
                                                          **oil_inputs, lubricant=how, **heat_inputs),
                                  "warnings": notes} for k in range(w.size)]
@@ -199,7 +209,18 @@ def temperature(
             _f(d["viscosity_mm2_s"], ".3g"), _f(d["kappa"], ".3g"), _f(d["friction_moment_Nmm"], ".4g"),
             _f(d["friction_power_W"], ".4g"), str(d["iterations"])] for d in docs],
           caption="P: friction power = heat carried away; — where no steady state exists (runaway)")
+    if extra:
+        n_r = extra["thermal_reference_speed_rpm"]
+        console.print(f"Thermal reference speed (ISO 15312, SKF model): "
+                      f"{'none found' if n_r is None else format(n_r, '.0f') + ' rpm'} at "
+                      f"{extra['reference_heat_flow_W']:.4g} W", highlight=False)
     print_warnings(notes)
+
+
+def _json(x):
+    from ..tables import json_value
+
+    return json_value(float(x))
 
 
 def _f(x, spec):
