@@ -78,7 +78,7 @@ def test_refuses_oil_bath_without_its_level_and_unknowns():
         friction.skf(100.0, 0.0, 100.0, 20e-6, 25e-3, 52e-3, series="99")
     with pytest.raises(InputError, match="static_load_rating"):
         friction.skf(100.0, 10.0, 100.0, 20e-6, 25e-3, 52e-3, series="62")
-    with pytest.raises(InputError, match="angular-contact constants are not tabulated"):
+    with pytest.raises(InputError, match="series constants are for deep-groove bearings"):
         friction.skf(100.0, 10.0, 100.0, 20e-6, 25e-3, 52e-3, series="62", bearing_type="angular")
 
 

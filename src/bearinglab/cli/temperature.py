@@ -47,7 +47,7 @@ HeatCapacityOpt = Annotated[str | None, typer.Option("--oil-heat-capacity", help
 OilDensityOpt = Annotated[str | None, typer.Option("--density", help="Oil density (default 870 kg/m^3, a mineral oil: an estimate).", rich_help_panel=_HEAT)]
 MaxTemperatureOpt = Annotated[str, typer.Option("--max-temperature", help="Safe limit: no steady state below it is thermal runaway, e.g. '150 degC'.", rich_help_panel=_HEAT)]
 LubricationOpt = Annotated[str, typer.Option("--lubrication", help="SKF model: oil-jet (default) | oil-air | grease (oil bath: refused, its drag loss needs SKF's V_M chart).", rich_help_panel=_HEAT)]
-ConstantsOpt = Annotated[str | None, typer.Option("--skf-constants", help="SKF geometry constants R1,R2,R3,S1,S2,S3 of the series (needed for angular-contact bearings), e.g. '5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12'.", rich_help_panel=_HEAT)]
+ConstantsOpt = Annotated[str | None, typer.Option("--skf-constants", help="SKF geometry constants R1,R2,R3,S1,S2,S3 in place of SKF's tables (angular contact other than 40 deg needs them), e.g. '5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12'.", rich_help_panel=_HEAT)]
 
 #: Defaults of the oil's properties when not given: typical mineral-oil values, estimates labelled as such
 #: in the output (density 0.86-0.89 g/cm^3, specific heat 1.8-2.1 kJ/(kg K) between 20 and 100 degC).
@@ -124,7 +124,7 @@ def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature
 
 def skf_options(b, lubrication, constants):
     """The SKF model's options for the bearing: its lubrication method and, for angular contact, the
-    constants given (the angular-contact table is not in this build: refused in one line without them)."""
+    constants given (else SKF's single-row ones, for 40 deg bearings only: others refused in one line)."""
     from .. import friction
 
     if lubrication == "oil-bath":
@@ -142,10 +142,8 @@ def skf_options(b, lubrication, constants):
             raise InputError(f"skf-constants must be six numbers >= 0, R1,R2,R3,S1,S2,S3, got {constants!r}")
         r1, r2, r3, s1, s2, s3 = values
         out["constants"] = friction.SKFConstants(r1, r2, s1, s2, r3, s3)
-    elif b.type != "radial":
-        raise InputError(f"skf-constants: {b.designation!r} is an angular-contact bearing, whose SKF geometry "
-                         "constants are not tabulated in this build; give --skf-constants R1,R2,R3,S1,S2,S3 from "
-                         "SKF's catalogue")
+    elif b.type != "radial":  # SKF's table covers single-row 40 deg bearings; others are refused in one line
+        friction.angular_contact_constants(b.contact_angle)
     return out
 
 
