@@ -17,6 +17,7 @@ import typer
 
 from ..errors import InputError
 from ._common import (
+    HOTTEST_OIL_DEGC,
     AxialLoadOpt,
     BearingFile,
     BearingName,
@@ -55,6 +56,7 @@ DEFAULT_DENSITY = 870.0
 DEFAULT_HEAT_CAPACITY = 1950.0
 _ZERO_C = 273.15
 _LUBRICATIONS = ("oil-jet", "oil-air", "grease")
+_HOTTEST = HOTTEST_OIL_DEGC  # the sanity bound on the balance's temperatures (issue 24)
 
 
 def oil_reference_viscosities(oil, viscosity_index, viscosity_100):
@@ -86,6 +88,8 @@ def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature
     t_max = parse_temperature(max_temperature, "max-temperature")
     if not t_max > ta:
         raise InputError(f"max-temperature must be above the ambient [degC], got {t_max - _ZERO_C:g} degC")
+    if not t_max <= _ZERO_C + _HOTTEST:
+        raise InputError(f"max-temperature must be <= {_HOTTEST:g} [degC], got {t_max - _ZERO_C:g} degC")
     notes, inputs = [], {"ambient_degC": ta - _ZERO_C, "max_temperature_degC": t_max - _ZERO_C}
     conductance = None
     if thermal_resistance is not None:
@@ -114,10 +118,12 @@ def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature
         inputs.update(oil_flow_l_min=q * 6e4, density_kg_m3=rho, oil_heat_capacity_J_kgK=cp)
         if oil_inlet_temperature is not None:
             t_in = parse_temperature(oil_inlet_temperature, "oil-inlet-temperature")
+            if not t_in <= _ZERO_C + _HOTTEST:
+                raise InputError(f"oil-inlet-temperature must be <= {_HOTTEST:g} [degC], got {t_in - _ZERO_C:g} degC")
             inputs["oil_inlet_temperature_degC"] = t_in - _ZERO_C
-    elif oil_inlet_temperature is not None or heat_capacity is not None:
-        raise InputError("oil-flow: --oil-inlet-temperature and --oil-heat-capacity describe an oil flow; give "
-                         "--oil-flow")
+    elif oil_inlet_temperature is not None or heat_capacity is not None or density_text is not None:
+        raise InputError("oil-flow: --oil-inlet-temperature, --oil-heat-capacity and --density describe an oil "
+                         "flow; give --oil-flow")
     return {"ambient": ta, "conductance": conductance, "oil_flow_conductance": g_oil,
             "oil_inlet_temperature": t_in, "maximum_temperature": t_max}, notes, inputs
 
