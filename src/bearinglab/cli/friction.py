@@ -412,6 +412,10 @@ def _skf_bearing(b, series):
         if series is not None:
             raise InputError(f"series: --series names SKF's deep-groove series; {b.designation!r} is {b.type}, "
                              f"whose constants are SKF's for its type")
+        try:  # the model, not a field, is what does not apply (the web page leaves the section out)
+            friction.angular_contact_constants(b.contact_angle)
+        except InputError as exc:
+            raise InputError(f"model: {exc}") from None
         return b
     known = list(friction.DEEP_GROOVE_CONSTANTS)
     for name, value in (("series", series), (f"series of {b.designation!r}", b.series)):
