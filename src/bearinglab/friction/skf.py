@@ -278,7 +278,7 @@ def seal_constants(seal, outside_diameter, *, bearing_type="radial"):
                      f"({lower.get(key, 0.0):g} < D <= {table[key][-1][0]:g} mm); give seal_constants=")
 
 
-def angular_contact_constants(contact_angle=None, *, arrangement="single row"):
+def angular_contact_constants(contact_angle=None, *, design="single row"):
     """SKF's geometry constants of an angular-contact ball bearing type.
 
     Parameters
@@ -286,7 +286,7 @@ def angular_contact_constants(contact_angle=None, *, arrangement="single row"):
     contact_angle : float, optional
         Nominal contact angle of a single-row bearing; the table's single-row row is SKF's for its 40 deg
         series (72 B, 73 B) and is given for 40 +- 1 deg only. Not used for the other arrangements. [rad]
-    arrangement : {"single row", "double row", "four-point"}
+    design : {"single row", "double row", "four-point"}
         A key of :data:`ANGULAR_CONTACT_CONSTANTS`.
 
     Returns
@@ -303,12 +303,12 @@ def angular_contact_constants(contact_angle=None, *, arrangement="single row"):
     --------
     >>> angular_contact_constants(np.radians(40.0)).r1
     5.03e-07
-    >>> angular_contact_constants(arrangement="four-point").s2
+    >>> angular_contact_constants(design="four-point").s2
     0.9
     """
-    if arrangement not in ANGULAR_CONTACT_CONSTANTS:
-        raise InputError(f"arrangement must be one of {list(ANGULAR_CONTACT_CONSTANTS)}, got {arrangement!r}")
-    if arrangement == "single row":
+    if design not in ANGULAR_CONTACT_CONSTANTS:
+        raise InputError(f"design must be one of {list(ANGULAR_CONTACT_CONSTANTS)}, got {design!r}")
+    if design == "single row":
         if contact_angle is None:
             raise InputError("contact_angle is needed: SKF's single-row angular-contact constants are for its 40 deg "
                              "series (72 B, 73 B) [deg]")
@@ -318,7 +318,7 @@ def angular_contact_constants(contact_angle=None, *, arrangement="single row"):
                              f"constants (single row: 40 deg, series 72 B and 73 B, 39 to 41 deg) [deg]; give the "
                              f"geometry constants R1,R2,R3,S1,S2,S3 from SKF (constants= in Python, --skf-constants "
                              f"of film and temperature)")
-    return ANGULAR_CONTACT_CONSTANTS[arrangement]
+    return ANGULAR_CONTACT_CONSTANTS[design]
 
 
 def inlet_shear_heating_factor(kinematic_viscosity, shaft_speed, mean_diameter):
@@ -632,12 +632,12 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
     if bearing_type not in _KZ:
         raise InputError(f"bearing_type must be one of {list(_KZ)}, got {bearing_type!r}")
     if constants is None:
-        arrangement = SKF_BEARING_TYPES[bearing_type][0]
-        if arrangement is not None:  # angular contact: SKF's constants are by type, not by series
+        design = SKF_BEARING_TYPES[bearing_type][0]
+        if design is not None:  # angular contact: SKF's constants are by type, not by series
             if series is not None:
                 raise InputError(f"series {series!r}: SKF's series constants are for deep-groove bearings; an "
                                  f"angular-contact bearing takes the constants of its type (no series=)")
-            constants = angular_contact_constants(contact_angle, arrangement=arrangement)
+            constants = angular_contact_constants(contact_angle, design=design)
         elif series is None:
             raise InputError("give the bearing series (series=) or its constants (constants=)")
         else:
