@@ -145,19 +145,20 @@ class SealConstants(NamedTuple):
     ks2: float
 
 
-# SKF Rolling bearings catalogue (2018), Friction, seal frictional moment constants of deep-groove ball
-# bearings: seal type -> [(upper limit of the outside diameter D [mm], constants)], first row that fits.
-# Non-contact seals (RZ) and shields (Z) have no seal moment in the model. Other rows: give the
-# constants (``seal_constants=``). The RS1 row (from the issue 12 brief) is not confirmed by a public
-# source found so far; the measured 61811-2RS1 pair (tests/validation/test_skf_61811.py) supports it.
+# SKF General Catalogue 6000/I RU (2006), "Friction", table 4 "Seal frictional moment: exponent and
+# constants", p. 96: seal type -> [(upper limit of the outside diameter D [mm], constants)], first row that
+# fits. RS1 seals of deep groove ball bearings (counterface d_s = d1 or d2 of the bearing table):
+# D <= 62 mm beta 2.25, K_S1 0.023, K_S2 2; 62 < D <= 80 mm 2.25, 0.018, 20 (the row of the issue 12 brief,
+# also supported by the measured 61811-2RS1 pair, tests/validation/test_skf_61811.py); 80 < D <= 100 mm
+# 2.25, 0.018, 15; D > 100 mm 2.25, 0.018, 0. Non-contact seals (RZ) and shields (Z) have no seal moment
+# in the model. Other seal types: give the constants (``seal_constants=``).
 SEAL_CONSTANTS = {
-    "RS1": [(80.0, SealConstants(0.018, 2.25, 20.0))],  # valid 62 < D <= 80 mm
+    "RS1": [(62.0, SealConstants(0.023, 2.25, 2.0)), (80.0, SealConstants(0.018, 2.25, 20.0)),
+            (100.0, SealConstants(0.018, 2.25, 15.0)), (math.inf, SealConstants(0.018, 2.25, 0.0))],
     "RZ": [(math.inf, SealConstants(0.0, 0.0, 0.0))],
     "Z": [(math.inf, SealConstants(0.0, 0.0, 0.0))],
 }
-_SEAL_LOWER = {"RS1": 62.0}  # mm: the row's lower limit of D (exclusive)
-# The deep-groove RS1 row above agrees with SKF General Catalogue 6000/I RU (2006), table 4, p. 96 (RS1 seals
-# of deep groove ball bearings, 62 < D <= 80 mm: beta = 2.25, K_S1 = 0.018, K_S2 = 20).
+_SEAL_LOWER = {}  # mm: a table's lower limit of D (exclusive), where its first row has one
 # Angular-contact ball bearings (single row), same table 4, p. 96: RS1 seals, 30 < D <= 120 mm, beta = 2,
 # K_S1 = 0.014, K_S2 = 10, counterface d_s = d1 (the inner ring shoulder diameter of the bearing table).
 ANGULAR_SEAL_CONSTANTS = {"RS1": [(120.0, SealConstants(0.014, 2.0, 10.0))]}
@@ -271,9 +272,10 @@ def seal_constants(seal, outside_diameter, *, bearing_type="radial"):
         raise InputError(f"seal must be one of {list(table)} ({bearing_type} bearings; or give "
                          f"seal_constants=), got {seal!r}")
     big = float(check_positive("outside_diameter", outside_diameter, "m")) / _MM
-    for upper, constants in table[key]:
-        if lower.get(key, 0.0) < big <= upper:
-            return constants
+    if big > lower.get(key, 0.0):
+        for upper, constants in table[key]:  # rows in rising D: the first that reaches D
+            if big <= upper:
+                return constants
     raise InputError(f"outside_diameter {big:g} mm is outside the tabulated rows of seal {key!r} "
                      f"({lower.get(key, 0.0):g} < D <= {table[key][-1][0]:g} mm); give seal_constants=")
 
