@@ -86,9 +86,11 @@ def test_bad_input_exits_2_with_one_line(capsys, extra, message):
 
 
 def test_angular_contact_without_constants_is_refused_in_one_line(capsys):
-    assert main(["temperature", "-b", "B218", "-A", "5 kN", "--speed", "6000 rpm", "--oil", "VG32"]) == 2
+    # issue 24: SKF's single-row constants cover its 40 deg bearings; a 15 deg spindle bearing is refused
+    assert main(["temperature", "-b", "7008 C", "-A", "500 N", "--speed", "6000 rpm", "--oil", "VG32"]) == 2
     err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "skf-constants" in err
+    assert len(err.splitlines()) == 1 and "skf-constants" in err and "15 deg is not covered" in err
+    assert main(["temperature", "-b", "B218", "-A", "5 kN", "--speed", "6000 rpm", "--oil", "VG32"]) == 0
 
 
 def test_film_and_temperature_are_web_api_endpoints():

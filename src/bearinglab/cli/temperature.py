@@ -17,6 +17,7 @@ import typer
 
 from ..errors import InputError
 from ._common import (
+    HOTTEST_OIL_DEGC,
     AxialLoadOpt,
     BearingFile,
     BearingName,
@@ -49,7 +50,7 @@ OilDensityOpt = Annotated[str | None, typer.Option("--density", help="Oil densit
 MaxTemperatureOpt = Annotated[str, typer.Option("--max-temperature", help="Safe limit: no steady state below it is thermal runaway, e.g. '150 degC'.", rich_help_panel=_HEAT)]
 LubricationOpt = Annotated[str, typer.Option("--lubrication", help="SKF model: oil-jet (default) | oil-air | grease (oil bath: refused, its drag loss needs SKF's V_M chart).", rich_help_panel=_HEAT)]
 ReferenceSpeedOpt = Annotated[bool, typer.Option("--reference-speed", help="Also ISO 15312's thermal reference speed of the bearing by the SKF model (JSON: thermal_reference_speed_rpm).", rich_help_panel=_HEAT)]
-ConstantsOpt = Annotated[str | None, typer.Option("--skf-constants", help="SKF geometry constants R1,R2,R3,S1,S2,S3 of the series (needed for angular-contact bearings), e.g. '5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12'.", rich_help_panel=_HEAT)]
+ConstantsOpt = Annotated[str | None, typer.Option("--skf-constants", help="SKF geometry constants R1,R2,R3,S1,S2,S3 in place of SKF's tables (angular contact other than 40 deg needs them), e.g. '5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12'.", rich_help_panel=_HEAT)]
 
 #: Defaults of the oil's properties when not given: typical mineral-oil values, estimates labelled as such
 #: in the output (density 0.86-0.89 g/cm^3, specific heat 1.8-2.1 kJ/(kg K) between 20 and 100 degC).
@@ -57,6 +58,7 @@ DEFAULT_DENSITY = 870.0
 DEFAULT_HEAT_CAPACITY = 1950.0
 _ZERO_C = 273.15
 _LUBRICATIONS = ("oil-jet", "oil-air", "grease")
+_HOTTEST = HOTTEST_OIL_DEGC  # the sanity bound on the balance's temperatures (issue 24)
 
 
 def oil_reference_viscosities(oil, viscosity_index, viscosity_100):
@@ -88,6 +90,8 @@ def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature
     t_max = parse_temperature(max_temperature, "max-temperature")
     if not t_max > ta:
         raise InputError(f"max-temperature must be above the ambient [degC], got {t_max - _ZERO_C:g} degC")
+    if not t_max <= _ZERO_C + _HOTTEST:
+        raise InputError(f"max-temperature must be <= {_HOTTEST:g} [degC], got {t_max - _ZERO_C:g} degC")
     notes, inputs = [], {"ambient_degC": ta - _ZERO_C, "max_temperature_degC": t_max - _ZERO_C}
     conductance = None
     if thermal_resistance is not None:
@@ -116,17 +120,19 @@ def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature
         inputs.update(oil_flow_l_min=q * 6e4, density_kg_m3=rho, oil_heat_capacity_J_kgK=cp)
         if oil_inlet_temperature is not None:
             t_in = parse_temperature(oil_inlet_temperature, "oil-inlet-temperature")
+            if not t_in <= _ZERO_C + _HOTTEST:
+                raise InputError(f"oil-inlet-temperature must be <= {_HOTTEST:g} [degC], got {t_in - _ZERO_C:g} degC")
             inputs["oil_inlet_temperature_degC"] = t_in - _ZERO_C
-    elif oil_inlet_temperature is not None or heat_capacity is not None:
-        raise InputError("oil-flow: --oil-inlet-temperature and --oil-heat-capacity describe an oil flow; give "
-                         "--oil-flow")
+    elif oil_inlet_temperature is not None or heat_capacity is not None or density_text is not None:
+        raise InputError("oil-flow: --oil-inlet-temperature, --oil-heat-capacity and --density describe an oil "
+                         "flow; give --oil-flow")
     return {"ambient": ta, "conductance": conductance, "oil_flow_conductance": g_oil,
             "oil_inlet_temperature": t_in, "maximum_temperature": t_max}, notes, inputs
 
 
 def skf_options(b, lubrication, constants):
     """The SKF model's options for the bearing: its lubrication method and, for angular contact, the
-    constants given (the angular-contact table is not in this build: refused in one line without them)."""
+    constants given (else SKF's single-row ones, for 40 deg bearings only: others refused in one line)."""
     from .. import friction
 
     if lubrication == "oil-bath":
@@ -144,10 +150,8 @@ def skf_options(b, lubrication, constants):
             raise InputError(f"skf-constants must be six numbers >= 0, R1,R2,R3,S1,S2,S3, got {constants!r}")
         r1, r2, r3, s1, s2, s3 = values
         out["constants"] = friction.SKFConstants(r1, r2, s1, s2, r3, s3)
-    elif b.type != "radial":
-        raise InputError(f"skf-constants: {b.designation!r} is an angular-contact bearing, whose SKF geometry "
-                         "constants are not tabulated in this build; give --skf-constants R1,R2,R3,S1,S2,S3 from "
-                         "SKF's catalogue")
+    elif b.type != "radial":  # SKF's table covers single-row 40 deg bearings; others are refused in one line
+        friction.angular_contact_constants(b.contact_angle)
     return out
 
 
