@@ -728,7 +728,7 @@ def skf_for_bearing(bearing, radial_load, axial_load, shaft_speed, kinematic_vis
             kw["series"] = bearing.series or bearing_series(bearing.designation)
         else:  # single-row angular contact: SKF's constants of the type, for its 40 deg bearings
             kw["contact_angle"] = bearing.contact_angle
-    if bearing.seal is not None:
+    if bearing.seal is not None and _tabulated_seal(bearing, big):
         kw.update(seal=bearing.seal, seals=2 if bearing.seals is None else bearing.seals,
                   seal_diameter=bearing.seal_diameter)
     if bearing.type == "radial" and np.any(np.asarray(axial_load) > 0):  # alpha_F of deep groove needs C0
@@ -745,6 +745,22 @@ def skf_for_bearing(bearing, radial_load, axial_load, shaft_speed, kinematic_vis
         return result
     warnings.warn(note, ValidityWarning, stacklevel=2)  # a physically doubtful result, as elsewhere
     return result._replace(warnings=(note,))
+
+
+def _tabulated_seal(bearing, outside_diameter):
+    """Whether the bearing's seal has SKF constants for its outside diameter. A seal read from the
+    designation (``6205-2RS``) without published constants is left out with the warning of
+    :func:`_unmodelled_seal`; a seal given in the bearing's data must be tabulated (InputError)."""
+    from_designation = str((bearing.sources or {}).get("seal", "")).startswith("designation suffix")
+    try:
+        k = seal_constants(bearing.seal, outside_diameter,
+                           bearing_type="angular" if bearing.type == "angular" else "radial")
+    except InputError:
+        if from_designation:
+            return False
+        raise
+    # a contact seal's moment needs its counterface diameter d_s, which no catalog row holds
+    return not (from_designation and bearing.seal_diameter is None and (k.ks1 != 0.0 or k.ks2 != 0.0))
 
 
 def _unmodelled_seal(bearing, kw):
