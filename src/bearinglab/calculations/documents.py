@@ -463,7 +463,33 @@ def run(parsed):
                              "{name}: " + message.removeprefix("bearing: ")) from None
     if name == "catalog-search":
         return _search_document(parsed)
+    if name in _NATIVE:
+        return _native(parsed)
     return _command_document(parsed)
+
+
+#: the calculations computed by a function of their own (calculation name -> module of this package,
+#: with ``document(parsed)``; the command line calls the same function)
+_NATIVE = {"life": "life"}
+
+
+def _native(parsed):
+    """The document of a calculation of :data:`_NATIVE`; its errors as RunFailures."""
+    import importlib
+
+    from ..errors import ConvergenceError
+
+    module = importlib.import_module(f".{_NATIVE[parsed.calculation.name]}", __package__)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)  # every result is checked finite
+            return module.document(parsed)
+    except RequestError:
+        raise
+    except ConvergenceError as exc:  # no physical solution is the input's fault (2); else the solver's
+        raise RunFailure(None, None, exc.summary, "input" if exc.physical else "convergence") from None
+    except InputError as exc:  # the physics names no field
+        raise RunFailure(None, None, str(exc)) from None
 
 
 #: the calculations whose command draws a figure, and the option it takes

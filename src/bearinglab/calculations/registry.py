@@ -212,6 +212,10 @@ _CALCS = (
             choices=_CONTAMINATION, group=_O),
          _f("reliability", "number", "Reliability in percent.", label="Reliability", unit="%",
             default=90.0, minimum=90, maximum=99.95, group=_O),
+         _f("duty_cycle", "document", "Duty cycle instead of the loads and speed: [[step]] tables of "
+            "fx, fy, fz, mx, my, speed and time share (the shares sum to 1) as TOML or JSON, posted as "
+            "text; never a file path. Gives the combined life.", label="Duty cycle",
+            option="--duty-cycle", group=_L),
          BEARING, *GEOMETRY, *MOUNTING)),
     Calculation(
         "load-distribution", ("load-distribution",), "Load distribution and stiffness",

@@ -409,3 +409,32 @@ OilOpt = Annotated[str | None, typer.Option("--oil", help="ISO VG grade, e.g. VG
 TemperatureOpt = Annotated[str | None, typer.Option("--temperature", help="Operating temperature of the oil, e.g. '70 degC'.", rich_help_panel=_LUBRICANT)]
 ViscosityIndexOpt = Annotated[float | None, typer.Option("--viscosity-index", help="The oil's viscosity index (default 95, a mineral oil).", rich_help_panel=_LUBRICANT)]
 Viscosity100Opt = Annotated[str | None, typer.Option("--viscosity-100", help="The oil's viscosity at 100 degC, e.g. '8.7 cSt' (instead of --viscosity-index).", rich_help_panel=_LUBRICANT)]
+
+
+# ----------------------------------------------------------------------------- calculations (issue 22)
+def request_message(exc):
+    """A :class:`bearinglab.calculations.RequestError` in the command line's words: the field at fault
+    opens the message as its option without dashes (``speed must be ...``, as every message of the
+    command line), and the options it names elsewhere carry their dashes (``give --fx or --radial-load``)."""
+    def option(name):
+        return "--" + name.replace("_", "-")
+
+    template, parameter = exc.template, exc.parameter or "request"
+    if template.startswith("{name}"):
+        template = parameter.replace("_", "-") + template[len("{name}"):]
+    text = template.replace("{name}", option(parameter))
+    return re.sub(r"\{field:([a-z0-9_]+)\}", lambda m: option(m.group(1)), text)
+
+
+def run_calculation(name, given, document, **options):
+    """Compute calculation ``name`` from the options as typed (field name -> value; None: not given)
+    with its ``document`` function, the one the web runs (:mod:`bearinglab.calculations`); a refused
+    input is an InputError in the command line's words (:func:`request_message`)."""
+    from ..calculations import parse
+    from ..calculations.fields import RequestError
+
+    given = {k: v for k, v in given.items() if v is not None}
+    try:  # typer has read the options; the calculation checks them by the command line's own rules
+        return document(parse(name, given, check=False), **options)
+    except RequestError as exc:
+        raise InputError(request_message(exc)) from None

@@ -5,6 +5,7 @@ Options       ShaftFitOpt, HousingFitOpt, ShaftInterferenceOpt, HousingInterfere
               ToleranceClassOpt, ClearanceClassOpt, ShaftRoughnessOpt, HousingRoughnessOpt
 parse_temperature   a temperature option [K] ('60 degC', '333 K'; a bare number is degC)
 mounting_options    decorator: adds the options to a command (load-distribution, life, high-speed, ...)
+given_options       inside such a command: its mounting options as typed (for a calculation's fields)
 operating_bearing   inside such a command: the bearing at its probable operating clearance, and the JSON
 mounted_set         the options of bearing-set applied to its bearings (MountedSet)
 MountedInputs       the parsed options: tolerance limits, Mounting, Conditions, unmounted clearance range
@@ -89,6 +90,11 @@ def mounting_options(command):
 
     wrapper.__signature__ = sig.replace(parameters=[*params, *extra])
     return wrapper
+
+
+def given_options():
+    """The mounting options of the running command as typed (name -> text; None: not given)."""
+    return dict(_GIVEN.get() or {})
 
 
 def operating_bearing(bearing, speed=0.0):

@@ -1,0 +1,113 @@
+"""Native calculations (issue 22 item 1): their document is computed by a function of
+:mod:`bearinglab.calculations`, which the command line calls too; the web never runs the command line.
+
+For each native calculation, ``bearinglab <command> ... --json`` (run through ``cli.main``) equals
+``calculations.run(calculations.parse(...))`` computed with the command line's entry points disabled.
+"""
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+from bearinglab import calculations, cli
+from bearinglab.calculations import RunFailure, documents, parse, run
+
+DUTY = ('[[step]]\nfx = "1 kN"\nfz = "3 kN"\nspeed = "1000 rpm"\ntime = 0.5\n\n'
+        '[[step]]\nfx = "2 kN"\nfz = "3 kN"\nspeed = "3000 rpm"\ntime = 0.5\n')
+
+LIFE = [
+    {"bearing": "6205-2RS", "radial_load": "2 kN", "speed": "1797 rpm", "oil": "VG68", "temperature": "70 degC",
+     "contamination": "normal", "reliability": "99"},
+    {"bearing": "B218", "fx": "10 kN", "fz": "5 kN", "my": "200 N*m", "speed": "3000 rpm",
+     "viscosity": "20 cSt", "contamination_factor": "0.5"},
+    {"bearing": "6208", "radial_load": "2 kN", "speed": "1000 rpm"},  # estimated: the provenance note
+    {"bearing": "6205-2RS", "balls": "10", "radial_load": "2 kN", "speed": "1000 rpm", "viscosity": "20 cSt"},
+    {"bearing": "6208", "radial_load": "2 kN", "speed": "1797 rpm", "shaft_fit": "j5", "clearance_class": "C3",
+     "inner_ring_temperature": "30 degC"},
+    {"bearing": "B218", "fz": "0 N", "speed": "3000 rpm", "viscosity": "20 cSt"},  # unbounded lives
+]
+
+
+@pytest.fixture
+def no_command_line(monkeypatch):
+    """The command line's entry points, disabled: a native document must not need them."""
+    def refuse(*args, **kwargs):
+        raise AssertionError("the calculation ran the command line")
+
+    for name in ("_call_command", "_run_command"):
+        monkeypatch.setattr(documents, name, refuse)
+    monkeypatch.setattr(cli, "main", refuse)
+
+
+def _printed(words):
+    printed = cli.run_json(words)
+    assert printed.exit_code == 0, printed.error
+    return printed.document
+
+
+@pytest.mark.parametrize("given", LIFE, ids=range(len(LIFE)))
+def test_life_is_what_the_command_line_prints(given, request):
+    parsed = parse("life", given)
+    printed = _printed(calculations.argv(parsed))
+    request.getfixturevalue("no_command_line")
+    assert run(parsed) == printed
+
+
+@pytest.mark.parametrize("text", [DUTY, json.dumps({"step": [
+    {"fx": "1 kN", "fz": "3 kN", "speed": "1000 rpm", "time": 0.5},
+    {"fx": "2 kN", "fz": "3 kN", "speed": "3000 rpm", "time": 0.5}]})], ids=["toml", "json"])
+def test_a_posted_duty_cycle_is_the_duty_cycle_file(tmp_path, text, request):
+    path = tmp_path / "duty.toml"
+    path.write_text(DUTY, encoding="utf-8")
+    printed = _printed(["life", "--bearing=B218", "--viscosity=20 cSt", f"--duty-cycle={path}"])
+    request.getfixturevalue("no_command_line")
+    doc = run(parse("life", {"bearing": "B218", "viscosity": "20 cSt", "duty_cycle": text}))
+    assert doc == printed
+    assert [s["speed_rpm"] for s in doc["inputs"]["steps"]] == [1000, 3000]
+
+
+@pytest.mark.parametrize("given, parameter, words", [
+    ({"bearing": "6205-2RS", "radial_load": "2 kN"}, "speed", "speed: missing"),
+    ({"bearing": "6205-2RS", "radial_load": "2 kN", "speed": "0 rpm"}, "speed", "speed must be > 0 [rpm]"),
+    ({"bearing": "6205-2RS", "speed": "1 rpm", "contamination": "normal", "contamination_factor": "0.5"},
+     "contamination", "contamination: give contamination_factor or contamination, not both"),
+    ({"bearing": "6205-2RS", "fx": "1 kN", "radial_load": "1 kN", "speed": "1 rpm"}, "radial_load",
+     "radial_load: give fx or radial_load, not both"),
+    ({"bearing": "6205-2RS", "speed": "1 rpm", "oil": "VG68"}, "temperature", "also needs temperature"),
+    ({"bearing": "NOPE", "speed": "1 rpm"}, "bearing", "NOPE"),
+    ({"bearing": "B218", "duty_cycle": "[[step]]\nfz = '1 kN'\nspeed = '0 rpm'\ntime = 1.0\n"},
+     "duty_cycle", "duty_cycle step 1 speed must be > 0 [rpm]"),
+    ({"bearing": "B218", "duty_cycle": "step = 3"}, "duty_cycle",
+     "duty_cycle: the posted document: needs [[step]] tables"),
+    ({"bearing": "B218", "duty_cycle": "{not json"}, "duty_cycle", "duty_cycle: the posted document: "),
+    ({"bearing": "B218", "speed": "1 rpm", "duty_cycle": DUTY}, "duty_cycle",
+     "the loads and speeds are in the duty cycle; give no fx ... speed"),
+])
+def test_life_failures_name_the_field(given, parameter, words, no_command_line):
+    with pytest.raises(RunFailure) as err:
+        run(parse("life", given))
+    assert err.value.parameter == parameter
+    text = err.value.worded(lambda name: name)
+    assert words in text and "--" not in text
+
+
+@pytest.mark.parametrize("args, line", [
+    (["--fx=1 kN", "--radial-load=1 kN", "--speed=1 rpm"], "radial-load: give --fx or --radial-load, not both"),
+    (["--radial-load=1 kN"], "speed: missing; give the inner-ring speed, e.g. '3000 rpm' (or --duty-cycle)"),
+    (["--speed=1 rpm", "--contamination=normal", "--contamination-factor=0.5"],
+     "contamination: give --contamination-factor or --contamination, not both"),
+])
+def test_the_command_line_words_the_same_failures_with_its_options(capsys, args, line):
+    assert cli.main(["life", "--bearing=6205-2RS", *args]) == 2
+    assert capsys.readouterr().err.strip() == f"bearinglab: error: {line}"
+
+
+def test_the_calculations_do_not_import_the_command_line():
+    code = ("import sys, bearinglab.calculations as c\n"
+            "c.run(c.parse('life', {'bearing': 'B218', 'fz': '5 kN', 'speed': '3000 rpm', 'viscosity': '20 cSt'}))\n"
+            "assert not [m for m in sys.modules if m.startswith('bearinglab.cli')], 'bearinglab.cli imported'\n"
+            "assert 'typer' not in sys.modules and 'rich' not in sys.modules\n")
+    done = subprocess.run([sys.executable, "-c", code], check=False, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
