@@ -104,6 +104,79 @@ def test_the_command_line_words_the_same_failures_with_its_options(capsys, args,
     assert capsys.readouterr().err.strip() == f"bearinglab: error: {line}"
 
 
+LOAD = [
+    {"bearing": "B218", "axial_load": "5 kN", "radial_load": "10 kN", "my": "2 N*m"},
+    {"bearing": "B218", "fz": "5 kN", "speed": "12000 rpm", "stiffness_at": "free", "first_ball_angle": "10 deg"},
+    {"bearing": "B218", "dz": "700 um", "tilt_x": "0 mrad", "tilt_y": "0 mrad"},  # held freedoms
+    {"bearing": "6208", "fx": "2 kN", "speed": "3000 rpm", "shaft_fit": "k5", "housing_fit": "H7"},
+    {"bearing": "B218", "balls": "15", "fz": "5 kN"},  # inline override
+]
+SETS = [
+    {"bearing": "7218B", "arrangement": "DF", "preload": "500 N", "fx": "1 kN"},
+    {"bearing": "7218B, 7218B", "arrangement": "DB", "preload": "1 kN", "fy": "2 kN", "spacing": "100 mm"},
+    {"bearing": "7208 BE", "arrangement": "DB", "preload": "500 N", "fx": "1 kN", "shaft_fit": "k5",
+     "housing_fit": "H7"},
+    {"bearing": "7218B", "arrangement": "DB", "preload_offset": "5 um", "fz": "2 kN", "speed": "3000 rpm"},
+    {"bearing": "7218B", "arrangement": "DT", "fz": "2 kN", "fx": "500 N"},
+]
+
+
+@pytest.mark.parametrize("name, given", [*(("load-distribution", g) for g in LOAD),
+                                         *(("bearing-set", g) for g in SETS)],
+                         ids=[*(f"load-{i}" for i in range(len(LOAD))), *(f"set-{i}" for i in range(len(SETS)))])
+def test_load_distribution_and_sets_are_what_the_command_line_prints(name, given, request):
+    parsed = parse(name, given)
+    printed = _printed(calculations.argv(parsed))
+    request.getfixturevalue("no_command_line")
+    assert run(parsed) == printed
+
+
+@pytest.mark.parametrize("name, given, parameter, words", [
+    ("load-distribution", {"bearing": "B218", "fz": "1 kN", "dz": "5 um"}, "dz", "dz: give fz or dz, not both"),
+    ("load-distribution", {"bearing": "B218", "fz": "1 kN", "speed": "1e7 rpm"}, "speed",
+     "speed must be <= "),
+    ("load-distribution", {"bearing": "B218", "fz": "1 kN", "shaft_fit": "zz9"}, "shaft_fit",
+     "shaft_fit must be one of"),
+    ("bearing-set", {"bearing": "7218B", "preload": "1 kN", "preload_offset": "5 um"}, "preload",
+     "preload: give preload or preload_offset, not both"),
+    ("bearing-set", {"bearing": "7218B, 7208 BE", "preload": "1 kN", "shaft_fit": "k5"}, "bearing",
+     "the mounting options need one bearing type"),
+    ("bearing-set", {"bearing": "NOPE", "preload": "1 kN"}, "bearing", "NOPE"),
+    # a field of the bearing, not an input given: named as the library names it, no parameter
+    ("load-distribution", {"bearing": "6205-2RS", "ball_diameter": "8 mm", "fx": "1 kN"}, None,
+     "inner_conformity of '6205-2RS (ball-diameter 8 mm)' is not known"),
+])
+def test_load_failures_name_the_field(name, given, parameter, words, no_command_line):
+    with pytest.raises(RunFailure) as err:
+        run(parse(name, given))
+    assert err.value.parameter == parameter
+    text = err.value.worded(lambda n: n)
+    assert words in text and "--" not in text
+
+
+@pytest.mark.parametrize("name, given, title", [
+    ("load-distribution", LOAD[1], "Bearing B218: ball loads at 12000 rpm"),
+    ("bearing-set", SETS[0], "Set DF: ball loads of bearing 0 (7218B)"),
+])
+def test_the_figure_is_drawn_from_the_document(name, given, title, no_command_line):
+    svg = calculations.figure_svg(parse(name, given))
+    assert svg.startswith("<svg") and svg.rstrip().endswith("</svg>")
+    assert title.replace(" ", "") in svg.replace(" ", "") or "ball loads" in svg or "<path" in svg
+
+
+def test_the_ball_loads_of_the_figure_are_the_documents():
+    from bearinglab.calculations import load_distribution
+
+    doc = run(parse("load-distribution", LOAD[0]))
+    fig = load_distribution.figure(doc)
+    ax = fig.axes[0]
+    outer = ax.lines[-2] if len(ax.lines) > 1 else ax.lines[0]  # the markers of the outer contacts
+    shown = sorted(y for line in ax.lines for y in line.get_ydata())
+    for ball in doc["balls"]:
+        assert ball["load_inner_N"] in shown or ball["load_inner_N"] == pytest.approx(0.0)
+    assert outer is not None and fig.axes[0].get_title() == "Bearing B218: ball loads at 0 rpm"
+
+
 def test_the_calculations_do_not_import_the_command_line():
     code = ("import sys, bearinglab.calculations as c\n"
             "c.run(c.parse('life', {'bearing': 'B218', 'fz': '5 kN', 'speed': '3000 rpm', 'viscosity': '20 cSt'}))\n"

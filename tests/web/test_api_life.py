@@ -40,6 +40,12 @@ def test_a_duty_cycle_is_never_a_path(client, tmp_path):
     ("life", {"bearing": "B218", "viscosity": "20 cSt",
               "duty_cycle": "[[step]]\nfz = '1 kN'\nspeed = '3000 rpm'\ntime = 2\n"},
      "duty_cycle", "duty_cycle step 1 time must be a share in [0, 1]"),
+    ("load-distribution", {"bearing": "B218", "fz": "1 kN", "dz": "5 um"}, "dz", "dz: give fz or dz, not both"),
+    ("load-distribution", {"bearing": "B218", "fz": "1 kN", "speed": "1e7 rpm"}, "speed", "speed must be <= "),
+    ("bearing-set", {"bearing": "7218B", "preload": "1 kN", "preload_offset": "5 um"}, "preload",
+     "preload: give preload or preload_offset, not both"),
+    ("bearing-set", {"bearing": "7218B, 7208 BE", "preload": "1 kN", "shaft_fit": "k5"}, "bearing",
+     "the mounting options need one bearing type"),
 ])
 def test_native_failures_are_422_in_web_words(client, endpoint, query, parameter, words):
     for r in (client.get(f"/api/{endpoint}", params=query), client.post(f"/api/{endpoint}", json=query)):

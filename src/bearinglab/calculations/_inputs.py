@@ -379,8 +379,8 @@ def failure(exc, parsed, field=None):
     key = head.replace("-", "_")
     if key in _FIELD_OF and _FIELD_OF[key] in parsed.given:
         key = _FIELD_OF[key]
-    if key in fields:
-        parameter, template = key, "{name}" + message[len(head):]
+    if key in fields and ("_" not in head or key in parsed.given):  # pitch_diameter of 'X' is not known:
+        parameter, template = key, "{name}" + message[len(head):]  # a bearing's field, not the input
     elif field is not None:
         parameter, template = field, "{name}: " + message
     else:
