@@ -18,7 +18,8 @@ import json
 import types
 
 from ..errors import InputError
-from ._inputs import choice, five_loads, given_text, parse_length, reading, with_notes
+from ._inputs import choice, five_loads, parse_length
+from ._request import given_text, reading, with_notes
 from .load_distribution import inputs, plausibility, solve, takeup_um, with_takeup
 
 __all__ = ["document", "figure"]

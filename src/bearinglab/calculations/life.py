@@ -28,14 +28,12 @@ import warnings
 from ..errors import InputError
 from ._inputs import (
     five_loads,
-    given_text,
     inputs_echo,
     lubricant_viscosity,
     parse_speed,
-    reading,
     resolve_bearing,
-    with_notes,
 )
+from ._request import given_text, reading, with_notes
 
 __all__ = ["document"]
 

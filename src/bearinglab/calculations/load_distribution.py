@@ -25,13 +25,11 @@ from ..errors import InputError
 from ._inputs import (
     choice,
     five_loads,
-    given_text,
     inputs_echo,
     parse_speeds,
-    reading,
     resolve_bearing,
-    with_notes,
 )
+from ._request import given_text, reading, with_notes
 
 __all__ = ["document", "figure"]
 
