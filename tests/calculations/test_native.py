@@ -184,3 +184,53 @@ def test_the_calculations_do_not_import_the_command_line():
             "assert 'typer' not in sys.modules and 'rich' not in sys.modules\n")
     done = subprocess.run([sys.executable, "-c", code], check=False, capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr
+
+
+# ----------------------------------------------------------------------------- life with temperature auto
+AUTO = {"bearing": "6205-2RS", "radial_load": "1 kN", "speed": "6000 rpm", "oil": "VG32", "temperature": "auto",
+        "thermal_resistance": "1 K/W"}
+
+
+def test_life_at_temperature_auto_takes_the_viscosity_of_the_thermal_balance(request):
+    from bearinglab.ratings import lubrication
+
+    parsed = parse("life", AUTO)
+    printed = _printed(calculations.argv(parsed))
+    balance = _printed(["temperature", "--bearing=6205-2RS", "--radial-load=1 kN", "--speed=6000 rpm",
+                        "--oil=VG32", "--thermal-resistance=1 K/W"])
+    request.getfixturevalue("no_command_line")
+    doc = run(parsed)
+    assert doc == printed
+    t = doc["bearing_temperature_degC"]
+    assert t == pytest.approx(balance["bearing_temperature_degC"], rel=1e-12)
+    assert doc["viscosity_mm2_s"] == pytest.approx(balance["viscosity_mm2_s"], rel=1e-12)
+    # the viscosity used is the oil's at the balance temperature (ASTM D341 through VG32 at 40 degC and its
+    # nu100 at VI 95), and the life's kappa is computed with it
+    nu100 = lubrication.viscosity_100_from_index(32e-6, 95.0)
+    nu = lubrication.kinematic_viscosity(t + 273.15, viscosity_40=32e-6, viscosity_100=nu100)
+    assert doc["viscosity_mm2_s"] == pytest.approx(float(nu) * 1e6, rel=1e-9)
+    assert doc["viscosity_ratio"] == pytest.approx(doc["viscosity_mm2_s"] / doc["rated_viscosity_mm2_s"], rel=1e-12)
+    assert doc["inputs"]["temperature"] == "auto" and doc["inputs"]["bearing_temperature_degC"] == pytest.approx(t)
+    assert 20.0 < t < 150.0
+
+
+def test_a_hotter_ambient_gives_a_hotter_bearing_and_a_thinner_oil(no_command_line):
+    cool = run(parse("life", AUTO))
+    hot = run(parse("life", {**AUTO, "ambient": "50 degC"}))
+    assert hot["bearing_temperature_degC"] > cool["bearing_temperature_degC"]
+    assert hot["viscosity_mm2_s"] < cool["viscosity_mm2_s"]
+    assert hot["modified_rating_life_Mrev"] <= cool["modified_rating_life_Mrev"]
+
+
+@pytest.mark.parametrize("given, words", [
+    ({**AUTO, "temperature": "70 degC"}, "thermal_resistance, lubrication and skf_constants go with temperature auto"),
+    ({**AUTO, "oil": None, "viscosity": "20 cSt"}, "'auto' needs the oil by grade"),
+    ({**AUTO, "my": "10 N*m"}, "'auto' takes the SKF friction model, which has no tilting moment"),
+    ({**{k: v for k, v in AUTO.items() if k not in ("speed", "radial_load")}, "duty_cycle": DUTY},
+     "'auto' takes the loads and speed of one case, not a duty cycle"),
+])
+def test_temperature_auto_failures_name_the_temperature(given, words, no_command_line):
+    with pytest.raises(RunFailure) as err:
+        run(parse("life", {k: v for k, v in given.items() if v is not None}))
+    assert err.value.parameter == "temperature"
+    assert words in err.value.worded(lambda n: n)

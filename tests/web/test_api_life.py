@@ -53,3 +53,16 @@ def test_native_failures_are_422_in_web_words(client, endpoint, query, parameter
         body = r.json()
         assert body["parameter"] == parameter and words in body["detail"], body
         assert "--" not in body["detail"] and body["error"] == "input"
+
+
+def test_life_takes_temperature_auto(client):
+    query = {"bearing": "6205-2RS", "radial_load": "1 kN", "speed": "6000 rpm", "oil": "VG32",
+             "temperature": "auto", "thermal_resistance": "1 K/W", "lubrication": "oil-air"}
+    printed = cli.run_json(["life", "--bearing=6205-2RS", "--radial-load=1 kN", "--speed=6000 rpm", "--oil=VG32",
+                            "--temperature=auto", "--thermal-resistance=1 K/W", "--lubrication=oil-air"])
+    assert printed.exit_code == 0, printed.error
+    r = client.get("/api/life", params=query)
+    assert r.status_code == 200, r.text
+    assert r.json() == printed.document and r.json()["bearing_temperature_degC"] > 20
+    r = client.post("/api/life", json={**query, "lubrication": "oil-bath"})
+    assert r.status_code == 422 and r.json()["parameter"] == "lubrication"

@@ -96,12 +96,24 @@ def document(parsed, *, catalog=None, bearing_file=None, duty_cycle_source=POSTE
                             *map(text, _GEOMETRY[2:]), v.get("inner_conformity"), v.get("outer_conformity"),
                             text("contact_angle"), text("radial_clearance"), text("ball_material"))
         notes = _catalog.provenance_notes(b)
-        lube = lubricant_viscosity(text("viscosity"), text("oil"), text("temperature"), v.get("viscosity_index"),
-                                   text("viscosity_100"))
-        options = {"kinematic_viscosity": lube.viscosity,
+        auto = (text("temperature") or "").lower() == "auto"
+        thermal = {k: text(k) for k in _THERMAL}
+        if auto:  # the viscosity of the steady temperature, once the loads and speed are known
+            lube = _AUTO_PENDING  # (viscosity None until then)
+            if "duty_cycle" in parsed.given:
+                raise InputError("temperature: 'auto' takes the loads and speed of one case, not a duty cycle; "
+                                 "give the temperature")
+        elif any(thermal.values()):
+            raise InputError("temperature: --ambient, --thermal-resistance, --lubrication and --skf-constants "
+                             "go with --temperature auto (the thermal balance)")
+        else:
+            lube = lubricant_viscosity(text("viscosity"), text("oil"), text("temperature"),
+                                       v.get("viscosity_index"), text("viscosity_100"))
+        options = {"kinematic_viscosity": None if lube is None else lube.viscosity,
                    "contamination": _cleanliness(v.get("contamination_factor"), text("contamination")),
                    "reliability": _reliability(float(v.get("reliability", 90.0)))}
-        assumed = _assumed(lube, v.get("contamination_factor") is None and "contamination" not in parsed.given)
+        no_cleanliness = v.get("contamination_factor") is None and "contamination" not in parsed.given
+        assumed = [] if auto else _assumed(lube, no_cleanliness)
         mounting = {k: text(k) for k in _MOUNTING}
         if "duty_cycle" in parsed.given:
             if any(k in parsed.given for k in (*_LOADS, "speed")):
@@ -115,11 +127,42 @@ def document(parsed, *, catalog=None, bearing_file=None, duty_cycle_source=POSTE
             n = parse_speed(text("speed"), bearing=b, zero=False)
             b, mounted = _mounting.operating_bearing(b, n, mounting)  # issue 23: the operating clearance
             loads = five_loads(*map(text, _LOADS))
+            if auto:
+                lube, temperature, notes_auto = _auto_viscosity(b, loads, n, text, v, thermal)
+                options["kinematic_viscosity"] = lube.viscosity
+                assumed = [*_assumed(lube, no_cleanliness), *notes_auto]
     if "duty_cycle" in parsed.given:
         doc = _life_of_duty_cycle(b, *steps, options, lube, assumed)
     else:
         doc = _life(b, loads, n, options, lube, assumed, mounted)
+        if auto:  # the steady temperature, after the viscosity it gives
+            items = list(doc.items())
+            at = list(doc).index("viscosity_mm2_s") + 1
+            doc = dict([*items[:at], ("bearing_temperature_degC", temperature), *items[at:]])
     return json.loads(tables.json_text(with_notes(doc, notes)))
+
+
+_THERMAL = ("ambient", "thermal_resistance", "lubrication", "skf_constants")
+#: the lubricant of temperature auto until the thermal balance gives it
+_AUTO_PENDING = None
+
+
+def _auto_viscosity(b, loads, n, text, values, thermal):
+    """Temperature ``auto``: the thermal balance of the case
+    (:func:`bearinglab.calculations.temperature.steady_temperature`, the path of ``film``'s ``auto``) and
+    the oil's viscosity at its temperature, as the lubricant; (lubricant, temperature [degC], notes)."""
+    from ._inputs import LubricantViscosity
+    from .temperature import steady_temperature
+
+    r, how, inputs, notes = steady_temperature(b, loads, n, text("oil"), text("viscosity"),
+                                               values.get("viscosity_index"), text("viscosity_100"),
+                                               thermal["ambient"], thermal["thermal_resistance"],
+                                               thermal["lubrication"] or "oil-jet", thermal["skf_constants"])
+    t, nu = float(r.temperature) - 273.15, float(r.kinematic_viscosity)
+    inputs = {k: x for k, x in inputs.items() if k not in ("bearing_temperature_degC", "max_temperature_degC")}
+    description = f"{how} at the steady temperature {t:.1f} degC (thermal balance): nu = {nu * 1e6:.4g} cSt"
+    return LubricantViscosity(nu, description, {**inputs, "bearing_temperature_degC": t}), t, [
+        *notes, *(f"thermal balance: {w}" for w in r.warnings)]
 
 
 def _life(b, loads, n, options, lube, assumed, mounted):

@@ -64,6 +64,7 @@ from ._common import (
 __all__ = ["COMMANDS"]
 
 _LUBRICANT = "Lubricant"  # the panel of the shared oil options (cli._common), with the cleanliness here
+_AUTO = "Temperature auto (thermal balance)"
 _NEEDS_VISCOSITY = "needs viscosity"  # the table's cell of a result that needs the lubricant
 
 
@@ -77,6 +78,10 @@ def life(
     contamination_factor: Annotated[float | None, typer.Option("--contamination-factor", help="e_C in [0, 1] (default 1).", rich_help_panel=_LUBRICANT)] = None,
     contamination: Annotated[str | None, typer.Option("--contamination", help="Cleanliness of ISO 281 table 13: " + " | ".join(_CONTAMINATION) + ".", rich_help_panel=_LUBRICANT)] = None,
     reliability: Annotated[float, typer.Option("--reliability", help="Reliability in percent, 90 to 99.95.")] = 90.0,
+    ambient: Annotated[str | None, typer.Option("--ambient", help="With --temperature auto: the ambient (default 20 degC).", rich_help_panel=_AUTO)] = None,
+    thermal_resistance: Annotated[str | None, typer.Option("--thermal-resistance", help="With --temperature auto: bearing to ambient, e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).", rich_help_panel=_AUTO)] = None,
+    lubrication: Annotated[str | None, typer.Option("--lubrication", help="With --temperature auto: the SKF model's oil-jet (default) | oil-air | grease.", rich_help_panel=_AUTO)] = None,
+    skf_constants: Annotated[str | None, typer.Option("--skf-constants", help="With --temperature auto: SKF constants R1,R2,R3,S1,S2,S3 (angular contact).", rich_help_panel=_AUTO)] = None,
     duty_cycle: Annotated[Path | None, typer.Option("--duty-cycle", help="TOML file of \\[\\[step]] loads, speed and time share: the combined life.")] = None,
     bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
     balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
@@ -88,7 +93,8 @@ def life(
     """Rating life (ISO 281, ISO/TS 16281): C, C0, Cu, P, L10, a_ISO, L_nm, L10r, L_nmr, s0; duty cycles.
 
     Without a lubricant (--viscosity, or --oil with --temperature) P, L10, L10r and s0 are given, and
-    a_ISO, L_nm and L_nmr are null ("needs viscosity").
+    a_ISO, L_nm and L_nmr are null ("needs viscosity"). --temperature auto takes the oil's viscosity at
+    the bearing's steady temperature (the thermal balance of `temperature`).
     """
     from ..calculations import life as calculation
     from ..errors import InputError
@@ -97,7 +103,8 @@ def life(
              "axial_load": axial_load, "speed": speed, "viscosity": viscosity, "oil": oil,
              "temperature": temperature, "viscosity_index": viscosity_index, "viscosity_100": viscosity_100,
              "contamination_factor": contamination_factor, "contamination": contamination,
-             "reliability": reliability, "bearing": bearing, "balls": balls, "ball_diameter": ball_diameter,
+             "reliability": reliability, "ambient": ambient, "thermal_resistance": thermal_resistance,
+             "lubrication": lubrication, "skf_constants": skf_constants, "bearing": bearing, "balls": balls, "ball_diameter": ball_diameter,
              "pitch_diameter": pitch_diameter, "inner_groove_radius": inner_groove_radius,
              "outer_groove_radius": outer_groove_radius, "inner_conformity": inner_conformity,
              "outer_conformity": outer_conformity, "contact_angle": contact_angle,
@@ -136,6 +143,7 @@ _LABELS = {
     "basic_rating_life_h": "basic rating life L10h [h]",
     "reliability_factor": "reliability factor a1 [-]",
     "viscosity_mm2_s": "operating viscosity nu [mm^2/s]",
+    "bearing_temperature_degC": "bearing temperature (balance) [degC]",
     "rated_viscosity_mm2_s": "rated viscosity nu1 [mm^2/s]",
     "rated_viscosity_diameter_mm": "diameter d_m of nu1 [mm]",
     "viscosity_ratio": "viscosity ratio κ [-]",
