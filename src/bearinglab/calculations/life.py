@@ -92,14 +92,14 @@ def document(parsed, *, catalog=None, bearing_file=None, duty_cycle_source=POSTE
         return given_text(parsed, name)
 
     with reading(parsed):
-        b = resolve_bearing(text("bearing"), bearing_file, catalog, v.get("balls"), *map(text, _GEOMETRY[:2]),
-                            *map(text, _GEOMETRY[2:]), v.get("inner_conformity"), v.get("outer_conformity"),
+        b = resolve_bearing(text("bearing"), bearing_file, catalog, v.get("balls"), *map(text, _GEOMETRY),
+                            v.get("inner_conformity"), v.get("outer_conformity"),
                             text("contact_angle"), text("radial_clearance"), text("ball_material"))
         notes = _catalog.provenance_notes(b)
         auto = (text("temperature") or "").lower() == "auto"
         thermal = {k: text(k) for k in _THERMAL}
         if auto:  # the viscosity of the steady temperature, once the loads and speed are known
-            lube = _AUTO_PENDING  # (viscosity None until then)
+            lube = None  # known after the thermal balance
             if "duty_cycle" in parsed.given:
                 raise InputError("temperature: 'auto' takes the loads and speed of one case, not a duty cycle; "
                                  "give the temperature")
@@ -143,8 +143,6 @@ def document(parsed, *, catalog=None, bearing_file=None, duty_cycle_source=POSTE
 
 
 _THERMAL = ("ambient", "thermal_resistance", "lubrication", "skf_constants")
-#: the lubricant of temperature auto until the thermal balance gives it
-_AUTO_PENDING = None
 
 
 def _auto_viscosity(b, loads, n, text, values, thermal):
