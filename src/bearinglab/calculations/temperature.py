@@ -26,7 +26,22 @@ _LUBRICATIONS = ("oil-jet", "oil-air", "grease")
 
 
 def oil_reference_viscosities(oil, viscosity_index, viscosity_100):
-    """(nu40, nu100 [m^2/s], description, inputs) of an ISO VG oil, by the shared oil options."""
+    """(nu40, nu100 [m^2/s], description, inputs) of an ISO VG oil, by the shared oil options.
+
+    Parameters
+    ----------
+    oil : str
+        The ISO VG grade as typed ('VG32').
+    viscosity_index : float or None
+        The oil's viscosity index (default 95, assumed).
+    viscosity_100 : str or None
+        Its viscosity at 100 degC as typed, instead of the index.
+
+    Returns
+    -------
+    tuple
+        ``(nu40, nu100, description, inputs)``.
+    """
     from ..ratings import lubrication
 
     if oil is None:
@@ -46,7 +61,22 @@ def oil_reference_viscosities(oil, viscosity_index, viscosity_100):
 
 def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature, heat_capacity, density_text,
                  max_temperature):
-    """The heat-balance options in SI, the notes on assumed values and the inputs echoed."""
+    """The heat-balance options in SI, the notes on assumed values and the inputs echoed.
+
+    Parameters
+    ----------
+    b : BallBearing
+        The bearing.
+    ambient, thermal_resistance, oil_flow, oil_inlet_temperature, heat_capacity, density_text, \
+max_temperature : str or None
+        The inputs as typed ('20 degC', '0.5 K/W', '0.5 l/min', ...).
+
+    Returns
+    -------
+    tuple
+        ``(options, notes, inputs)``: the keyword options of :func:`bearinglab.thermal.thermal_balance`
+        (with ``ambient``), the notes on assumed values, the inputs echoed.
+    """
     from .. import thermal
     from ..units import parse_quantity
 
@@ -92,7 +122,22 @@ def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature
 
 def skf_options(b, lubrication, constants):
     """The SKF model's options for the bearing: its lubrication method and, for angular contact, the
-    constants given (the angular-contact table is not in this build: refused in one line without them)."""
+    constants given (the angular-contact table is not in this build: refused in one line without them).
+
+    Parameters
+    ----------
+    b : BallBearing
+        The bearing.
+    lubrication : str
+        oil-jet, oil-air or grease.
+    constants : str or None
+        R1,R2,R3,S1,S2,S3 as typed.
+
+    Returns
+    -------
+    dict
+        ``lubrication`` and, where given, ``constants`` (:class:`bearinglab.friction.SKFConstants`).
+    """
     from .. import friction
 
     if lubrication == "oil-bath":
@@ -130,8 +175,9 @@ def steady_temperature(b, loads, w, oil, viscosity, viscosity_index, viscosity_1
     w : float or array_like
         Inner-ring speed(s). [rad/s]
     oil, viscosity_index, viscosity_100 : str, float, str or None
-        The oil by grade (its viscosity follows the temperature); ``viscosity`` and
-        ``dynamic_viscosity`` are refused.
+        The oil by grade (its viscosity follows the temperature).
+    viscosity, dynamic_viscosity : str or None
+        Refused when given: a fixed viscosity does not follow the temperature.
     ambient, thermal_resistance, lubrication, skf_constants : str or None
         The heat-balance inputs as typed (ambient default 20 degC).
 
