@@ -85,6 +85,7 @@ def browser():
 @pytest.fixture
 def page(browser):
     context = browser.new_context(viewport={"width": 1280, "height": 900})
+    context.set_default_timeout(120_000)  # a page computes every section: slow on a loaded machine
     yield context.new_page()
     context.close()
 
@@ -227,6 +228,7 @@ def test_browser_clearance_film_and_temperature_sections_and_their_printed_repor
     from bearinglab.web import page as web_page
 
     context = browser.new_context(viewport={"width": 1280, "height": 900})
+    context.set_default_timeout(120_000)
     page = context.new_page()
     page.goto(base_url + "/" + MOUNTED)
     for key in ("clearance", "film", "temperature"):

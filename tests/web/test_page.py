@@ -204,3 +204,97 @@ def test_catalog_stand_load_and_runout_sections(client):
                                     "pitch_diameter": "39.04 mm", "contact_angle": "0 deg"}).text
     assert "Left out: no catalog bearing picked" in _section(empty, "catalog")
     assert "Left out: no error set pasted." in _section(empty, "runout")
+
+
+# a clearance document's shape, written out by hand (the numbers are arbitrary, not the model's)
+_CLEARANCE = {
+    "bearing": "X", "unmounted_clearance_min_um": 6.0, "interference_inner_probable_um": [4.5, 18.25],
+    "ring_diameters_mm": {"inner_raceway": 52.3, "outer_raceway": 77.7, "estimated": False},
+    "chain": {c: {"unmounted_clearance": u, "fit_reduction": f, "thermal_reduction": 8.125,
+                  "centrifugal_reduction": 0.0234, "operating_clearance": u - f - 8.1484,
+                  "inner_pressure": p, "inner_loosened_by_speed": False}
+              for c, u, f, p in (("least", 6.0, 21.5, 14.9), ("probable", 14.5, 11.6, 8.0),
+                                 ("largest", 23.0, 1.7, 1.1))},
+    "warnings": ["w"],
+    "monte_carlo": {"samples": 100, "seed": 0, "distribution": "uniform", "mean_um": 1.5,
+                    "std_um": 2.5, "percentiles_um": {"p1": -3.0, "p50": 1.25, "p99": 6.0},
+                    "probability_negative_clearance": 0.25},
+}
+
+
+def test_the_clearance_chain_runs_from_unmounted_to_operating_least_probable_largest():
+    rows = page.chain_rows(_CLEARANCE)
+    labels = [label for label, _unit, _cells in rows]
+    assert labels == ["unmounted clearance", "− fit reduction", "− thermal reduction",
+                      "− centrifugal reduction", "= operating clearance", "inner fit pressure",
+                      "inner fit loosened by speed"]  # the stages the document holds, in order
+    assert rows[0] == ("unmounted clearance", "µm", [6.0, 14.5, 23.0])
+    assert rows[5][1] == "MPa" and rows[6][2] == [False, False, False]
+    assert page.chain_rows({"a_um": 1.0}) == [] and page.chain_rows([]) == []
+
+
+def test_the_monte_carlo_rows_hold_the_percentiles_and_the_probability_of_a_preload():
+    rows = page.percentile_rows(_CLEARANCE)
+    assert rows[:3] == [("operating clearance p1", -3.0, "µm"), ("operating clearance p50", 1.25, "µm"),
+                        ("operating clearance p99", 6.0, "µm")]
+    assert ("P(clearance < 0)", 0.25, "") in rows and ("samples", 100, "") in rows
+    assert page.percentile_rows({"chain": {}}) == []
+
+
+def test_value_rows_show_ranges_and_nested_numbers_with_their_units():
+    rows = {label: (text, unit) for label, text, unit, _css in page.value_rows(_CLEARANCE)}
+    assert rows["interference inner probable"] == ("4.5, 18.25", "µm")
+    assert rows["ring diameters inner raceway"] == ("52.3", "mm")
+    assert "ring diameters estimated" not in rows and "chain" not in rows and "bearing" not in rows
+    film = {"film_min_um": 0.25, "regime": "mixed", "balls": [{"a_N": 1.0}],
+            "inputs": {"lubricant": "VG68 at 70 degC", "dynamic_viscosity_mPas": 17.27, "fx_N": 3.0}}
+    rows = {label: (text, unit) for label, text, unit, _css in page.value_rows(film)}
+    assert rows == {"film min": ("0.25", "µm"), "regime": ("mixed", ""),
+                    "lubricant": ("VG68 at 70 degC", ""), "dynamic viscosity": ("17.27", "mPa·s")}
+
+
+def test_the_csv_of_a_clearance_carries_the_chain_and_the_monte_carlo_with_every_digit():
+    rows = list(csv.reader(io.StringIO(page.to_csv(_CLEARANCE))))
+    table = {r[0]: r[1:] for r in rows if len(r) == 3}
+    assert table["chain probable = operating clearance"] == [repr(14.5 - 11.6 - 8.1484), "µm"]
+    assert table["monte carlo operating clearance p50"] == ["1.25", "µm"]
+    assert table["interference_inner_probable_um"] == ["4.5, 18.25", "µm"]
+    assert table["ring_diameters_inner_raceway_mm"] == ["52.3", "mm"]
+
+
+@pytest.mark.parametrize("key, unit", [("bearing_temperature_degC", "°C"), ("viscosity_mm2_s", "mm²/s"),
+                                       ("entrainment_velocity_inner_m_s", "m/s"),
+                                       ("dynamic_viscosity_mPas", "mPa·s"), ("density_kg_m3", "kg/m³"),
+                                       ("pressure_viscosity_coefficient_per_GPa", "1/GPa")])
+def test_the_film_and_thermal_units_are_units_on_the_page(key, unit):
+    assert page.quantity(key)[1] == unit
+
+
+def test_every_registered_calculation_is_a_section_or_left_out_with_its_endpoint(monkeypatch):
+    from bearinglab.calculations import CALCULATIONS, registry
+    from bearinglab.web import api
+
+    shown = {s.calculation for s in page.sections()}
+    assert set(CALCULATIONS) - shown <= set(page.NOT_ON_PAGE)
+    assert set(CALCULATIONS) <= set(api.ENDPOINTS.values())  # an endpoint for each
+    new = registry.Calculation("runout-study", ("runout-study",), "Runout study", "A later model.", ())
+    monkeypatch.setitem(CALCULATIONS, "runout-study", new)
+    extra = [s for s in page.sections() if s.calculation == "runout-study"]
+    assert len(extra) == 1 and "/api/runout-study" in extra[0].note
+    assert page._left_out(extra[0], {"bearing": "B218"}).startswith("Left out: Runout study is not")
+
+
+def test_the_mounted_film_and_thermal_sections_say_why_they_do_not_apply(client):
+    html = client.get("/", params={"bearing": "B218", "radial_load": "2 kN", "speed": "3000 rpm",
+                                   "viscosity": "20 cSt"}).text
+    assert 'class="error"' not in html  # nothing the user gave is at fault
+    assert "Left out: no fit, interference, ring temperature" in _section(html, "clearance")
+    assert "Left out: the thermal balance needs an oil grade" in _section(html, "temperature")
+    film = _section(html, "film")
+    assert "Left out" not in film and "<th>film min</th>" in film
+    # SKF's constants of an angular-contact bearing are data the user did not give: left out, not
+    # an error at the (empty) field
+    html = client.get("/", params={"bearing": "B218", "radial_load": "2 kN", "speed": "3000 rpm",
+                                   "oil": "VG68"}).text
+    part = _section(html, "temperature")
+    assert part.count("Left out: SKF constants: ") == 1 and 'id="error-skf_constants"' not in html
