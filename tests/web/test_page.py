@@ -244,6 +244,8 @@ def test_the_monte_carlo_rows_hold_the_percentiles_and_the_probability_of_a_prel
 def test_value_rows_show_ranges_and_nested_numbers_with_their_units():
     rows = {label: (text, unit) for label, text, unit, _css in page.value_rows(_CLEARANCE)}
     assert rows["interference inner probable"] == ("4.5, 18.25", "µm")
+    series = page.value_rows({"series": [2.5e-7, 1.0]})
+    assert series == [("series", "2.5\u00a0×\u00a010⁻⁷, 1", "", "list")]  # breaks between values only
     assert rows["ring diameters inner raceway"] == ("52.3", "mm")
     assert "ring diameters estimated" not in rows and "chain" not in rows and "bearing" not in rows
     film = {"film_min_um": 0.25, "regime": "mixed", "balls": [{"a_N": 1.0}],

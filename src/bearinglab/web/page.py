@@ -497,7 +497,8 @@ def _nested(document):
 
 
 def value_rows(document):
-    """The rows of a section's table of values: (label, text, unit, css class).
+    """The rows of a section's table of values: (label, text, unit, css class ``num``, ``txt`` or
+    ``list``).
 
     Every scalar of the document, ranges of numbers (``4.77, 18.2``), the numbers of nested
     mappings and the lubricant used; the bearing's echo, the warnings and the tables shown apart
@@ -522,7 +523,9 @@ def value_rows(document):
             if not value or not all(_is_number(v) for v in value):
                 continue  # a table of cases, shown as rows
             scale = max(_magnitude(v) for v in value)
-            rows.append((label, ", ".join(number(v, scale) for v in value), unit, "num"))
+            # a line may break between the values, never inside one (no-break spaces in '1 × 10⁻⁵')
+            text = ", ".join(number(v, scale).replace(" ", "\u00a0") for v in value)
+            rows.append((label, text, unit, "list"))
             continue
         css = "num" if _is_number(value) else "txt"
         rows.append((label, number(value, sc.get(key, 0.0)), unit, css))
