@@ -300,3 +300,19 @@ def test_the_mounted_film_and_thermal_sections_say_why_they_do_not_apply(client)
                                    "oil": "VG68"}).text
     part = _section(html, "temperature")
     assert part.count("Left out: SKF constants: ") == 1 and 'id="error-skf_constants"' not in html
+
+
+def test_skf_friction_in_an_oil_bath_and_a_set_by_its_preload_offset_from_the_page(client):
+    query = {"bearing": "6209", "radial_load": "3 kN", "speed": "3000 rpm", "model": "skf",
+             "oil": "VG68", "temperature": "70 degC", "lubrication": "oil-bath", "oil_level": "5 mm",
+             "drag_loss_factor": "0.0002"}
+    html = client.get("/", params=query).text
+    api = client.get("/api/friction", params=query).json()
+    part = _section(html, "friction")
+    assert "<th>drag moment</th>" in part and api["drag_moment_Nmm"] > 0
+    assert f'>{page.number(api["drag_moment_Nmm"])}</td><td class="unit">N·mm<' in part
+    assert "Left out: the thermal balance takes no oil bath" in _section(html, "temperature")
+    assert 'class="error"' not in html
+    query = {"bearing": "7218B", "arrangement": "DB", "preload_offset": "5 um", "radial_load": "1 kN"}
+    part = _section(client.get("/", params=query).text, "bearing-set")
+    assert "<th>preload offset</th>" in part and "<th>operating preload</th>" in part

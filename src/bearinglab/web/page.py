@@ -77,14 +77,16 @@ FIELDS = {
         _pick("life", "contamination", group="lubricant"),
         _pick("life", "contamination_factor", group="lubricant"),
         _pick("life", "reliability", group="lubricant", default=None),
-        # no oil bath on the page: it needs the oil level and SKF's drag-loss factor (the API takes them)
-        _pick("friction", "lubrication", group="lubricant", choices=("grease", "oil-air", "oil-jet")),
+        _pick("friction", "lubrication", group="lubricant"),
+        _pick("friction", "oil_level", group="lubricant"),  # an oil bath: H and SKF's V_M read at H/d_m
+        _pick("friction", "drag_loss_factor", group="lubricant"),
         _pick("friction", "model", group="model"),
         _pick("high-speed", "constants", group="model"),
         _pick("bearing-set", "arrangement", group="set", default="",
               choices=("", "DB", "DF", "DT"), label="Arrangement (a set of two)"),
         _pick("bearing-set", "preload", group="set"),
         _pick("bearing-set", "spacing", group="set", default=None),
+        _pick("bearing-set", "preload_offset", group="set"),
         *GEOMETRY,
         *(_pick("clearance", f.name, group="mounting") for f in MOUNTING),
         _pick("clearance", "shaft_roughness", group="mounting"),
@@ -118,7 +120,8 @@ _GROUPS = (("loads", "Loads and speed"), ("lubricant", "Lubricant, cleanliness, 
 _EXAMPLES = {"radial_load": "10 kN", "fx": "1 kN", "fy": "0 N", "axial_load": "5 kN",
              "mx": "0 N*mm", "my": "0 N*mm", "speed": "6000 rpm", "viscosity": "20 cSt",
              "oil": "VG68", "temperature": "70 degC", "contamination_factor": "0.5",
-             "reliability": "90", "preload": "500 N", "spacing": "0 mm", "balls": "16",
+             "reliability": "90", "preload": "500 N", "spacing": "0 mm", "preload_offset": "5 um",
+             "oil_level": "5 mm", "drag_loss_factor": "0.0002", "balls": "16",
              "ball_diameter": "22.225 mm", "pitch_diameter": "125.26 mm", "inner_groove_radius": "",
              "outer_groove_radius": "", "inner_conformity": "0.52", "outer_conformity": "0.52",
              "contact_angle": "40 deg", "radial_clearance": "", "mean_diameter": "",
@@ -254,11 +257,15 @@ def _left_out(section, values):
                     "temperature); a fixed viscosity is not enough.")
         if not has.get("bearing"):
             return "Left out: the thermal balance needs a catalog bearing (its SKF friction data)."
+        if values.get("lubrication") == "oil-bath":
+            return ("Left out: the thermal balance takes no oil bath yet (its drag loss needs SKF's "
+                    "V_M chart at each temperature's oil level); choose oil-jet, oil-air or grease.")
     if section not in SECTIONS:
         return f"Left out: {section.note}"
     if section.key == "friction":
         model = values.get("model") or "one-term"
-        if model in ("palmgren", "skf") and not has.get("viscosity"):
+        oil = has.get("oil") and has.get("temperature") and model == "skf"  # SKF's takes a grade too
+        if model in ("palmgren", "skf") and not (has.get("viscosity") or oil):
             return f"Left out: the {model} model needs the lubricant viscosity."
         if model == "two-term":
             return "Left out: the two-term model needs its measured f0 (bearinglab friction lab)."
@@ -275,7 +282,8 @@ def _query(section, values):
     if section.key == "bearing-set" and "bearing" in out:
         out["bearing"] = f"{out['bearing']}, {out['bearing']}"
     if section.key == "friction" and (values.get("model") or "one-term") != "skf":
-        for name in ("oil", "temperature", "viscosity_index", "viscosity_100", "lubrication"):
+        for name in ("oil", "temperature", "viscosity_index", "viscosity_100", "lubrication",
+                     "oil_level", "drag_loss_factor"):
             out.pop(name, None)  # the lubricant of SKF's model; the others refuse it
     if section.key == "film" and str(values.get("temperature") or "").strip() != "auto":
         for name in ("ambient", "thermal_resistance", "skf_constants"):
