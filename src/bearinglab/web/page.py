@@ -7,9 +7,15 @@ line saying why; an input error is shown next to the field it names, in the fiel
 
 Form and sections
 -----------------
-FIELDS          the form fields, by name, grouped (bearing, geometry, loads, lubricant, set, model)
+FIELDS          the form fields, by name, grouped (loads, lubricant, model, set, geometry, mounting,
+                film, heat, runout)
 Section         one section of results: title, calculation, the rule that says when it applies
 SECTIONS        the sections, in the order shown
+NOT_ON_PAGE     registered calculations without a section of their own, and why
+sections        SECTIONS, then a left-out line for any registered calculation the page lacks
+value_rows      a document's table of values: label, text, unit (scalars, ranges, nested numbers)
+chain_rows      the mounted-clearance chain: stages x least / probable / largest (CHAIN, CHAIN_COLUMNS)
+percentile_rows the Monte Carlo study of a clearance: percentiles, mean, std, P(clearance < 0)
 render_context  form values -> what the template shows (async: the sections run in the workers)
 to_csv          a document as CSV text (quantity, value, unit; a table of cases as rows)
 quantity        a result key with its unit suffix -> a readable label and unit
@@ -34,6 +40,8 @@ from ..calculations import CALCULATIONS
 from ..calculations.registry import GEOMETRY, MOUNTING
 
 __all__ = [
+    "CHAIN",
+    "CHAIN_COLUMNS",
     "DIGITS",
     "FIELDS",
     "NOISE",
@@ -41,15 +49,18 @@ __all__ = [
     "SECTIONS",
     "Result",
     "Section",
+    "chain_rows",
     "column_scales",
     "compute",
     "figure_svg",
     "number",
+    "percentile_rows",
     "quantity",
     "render_context",
     "scales",
     "sections",
     "to_csv",
+    "value_rows",
 ]
 
 
