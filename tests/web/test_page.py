@@ -316,3 +316,28 @@ def test_skf_friction_in_an_oil_bath_and_a_set_by_its_preload_offset_from_the_pa
     query = {"bearing": "7218B", "arrangement": "DB", "preload_offset": "5 um", "radial_load": "1 kN"}
     part = _section(client.get("/", params=query).text, "bearing-set")
     assert "<th>preload offset</th>" in part and "<th>operating preload</th>" in part
+
+
+def test_a_clearance_csv_carries_the_chain_of_its_json_and_a_monte_carlo_runs_in_the_heavy_pool(
+        client, monkeypatch):
+    server = client.app.state.server
+    seen = []
+    original = server.heavy.call
+
+    async def call(job, **kw):
+        seen.append(job[1])
+        return await original(job, **kw)
+
+    monkeypatch.setattr(server.heavy, "call", call)
+    query = {"bearing": "6209", "shaft_fit": "k5", "housing_fit": "H7", "monte_carlo": "200"}
+    doc = client.get("/api/clearance", params=query).json()
+    assert seen == ["clearance"]  # up to 10^5 samples: never in the light pool
+    rows = {r[0]: r[1:] for r in csv.reader(io.StringIO(client.get("/csv/clearance", params=query).text))
+            if len(r) == 3}
+    for column in ("least", "probable", "largest"):
+        assert float(rows[f"chain {column} = operating clearance"][0]) == \
+            doc["chain"][column]["operating_clearance"]
+    assert float(rows["monte carlo operating clearance p50"][0]) == doc["monte_carlo"]["percentiles_um"]["p50"]
+    seen.clear()
+    client.get("/api/clearance", params={"bearing": "6209", "shaft_fit": "k5"})
+    assert seen == []  # one chain is light

@@ -12,7 +12,8 @@ GET  /static/...               the style sheet and the page's script
 Limits: a request holds at most ``case_limit`` cases, runs at most ``time_budget`` seconds (then its
 worker process is stopped and the answer is 503 naming the budget), and its body is at most
 :data:`bearinglab.calculations.BODY_LIMIT` bytes. Calculations run in worker processes
-(:mod:`bearinglab.web.workers`): a light pool for single cases and a heavy pool for lists, ranges and
+(:mod:`bearinglab.web.workers`): a light pool for single cases and a heavy pool for lists, ranges, a
+clearance Monte Carlo and
 runout, so that a light request never waits behind heavy ones; a client that goes away stops its work.
 
 Functions
@@ -102,7 +103,9 @@ class _Server:
                 return 200, tables.json_text(doc) if what == "json" else doc
         except RequestError as exc:
             return api.web_error(exc)
-        pool = self.heavy if (parsed.heavy or what == "figure") else self.light
+        # a Monte Carlo of the clearance (up to 10^5 samples) is heavy though it has no list
+        study = parsed.values.get("monte_carlo") is not None
+        pool = self.heavy if (parsed.heavy or study or what == "figure") else self.light
         gone = request.is_disconnected if request is not None else None
         try:
             kind, value = await pool.call((what, name, given, self.case_limit, parsed),
