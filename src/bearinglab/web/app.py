@@ -12,9 +12,9 @@ GET  /static/...               the style sheet and the page's script
 Limits: a request holds at most ``case_limit`` cases, runs at most ``time_budget`` seconds (then its
 worker process is stopped and the answer is 503 naming the budget), and its body is at most
 :data:`bearinglab.calculations.BODY_LIMIT` bytes. Calculations run in worker processes
-(:mod:`bearinglab.web.workers`): a light pool for single cases and a heavy pool for lists, ranges, a
-clearance Monte Carlo and
-runout, so that a light request never waits behind heavy ones; a client that goes away stops its work.
+(:mod:`bearinglab.web.workers`): a light pool for single cases and a heavy pool for lists, ranges,
+runout and a clearance Monte Carlo, so that a light request never waits behind heavy ones; a client
+that goes away stops its work.
 
 Functions
 ---------
