@@ -339,6 +339,13 @@ async def _section(section, values, server):
                 "query": {}}
     query = _query(section, values)
     status, doc = await server.compute(section.calculation, query)
+    if (status == 422 and doc.get("parameter") == "temperature" and "'auto'" in doc.get("detail", "")
+            and str(values.get("temperature")).strip() == "auto"):
+        # 'auto' (the thermal balance's temperature) is the film's; a calculation that does not take
+        # it yet is left out rather than marking the field the film section reads
+        return {"section": section, "document": None, "message": "", "figure": "", "query": {},
+                "left_out": f"Left out: {section.title.lower()} takes no oil temperature 'auto' yet; "
+                            "give the temperature (the operating temperature section computes one)."}
     name = doc.get("parameter") if status == 422 and doc.get("error") == "input" else ""
     if name != "" and name not in query and name not in values and (
             name is not None or section.key in _DATA_SECTIONS):
