@@ -294,12 +294,13 @@ def test_the_mounted_film_and_thermal_sections_say_why_they_do_not_apply(client)
     assert "Left out: the thermal balance needs an oil grade" in _section(html, "temperature")
     film = _section(html, "film")
     assert "Left out" not in film and "<th>film min</th>" in film
-    # SKF's constants of an angular-contact bearing are data the user did not give: left out, not
-    # an error at the (empty) field
-    html = client.get("/", params={"bearing": "B218", "radial_load": "2 kN", "speed": "3000 rpm",
+    # SKF's constants of a 12-degree angular-contact bearing are data the user did not give: left out,
+    # not an error at the (empty) field
+    html = client.get("/", params={"bearing": "4-1006095", "axial_load": "20 N", "speed": "3000 rpm",
                                    "oil": "VG68"}).text
     part = _section(html, "temperature")
-    assert part.count("Left out: SKF constants: ") == 1 and 'id="error-skf_constants"' not in html
+    assert part.count("Left out: ") == 1 and "SKF" in part and 'class="num"' not in part
+    assert 'id="error-skf_constants"' not in html
 
 
 def test_skf_friction_in_an_oil_bath_and_a_set_by_its_preload_offset_from_the_page(client):
