@@ -127,7 +127,7 @@ def test_browser_picker_searches_by_designation_bore_and_outside_diameter(page, 
     page.goto(base_url + "/")
     page.fill("#bearing", "620")
     page.wait_for_selector("#matches button.match")
-    assert "6205-2RS" in page.inner_text("#matches")
+    assert "6205" in page.inner_text("#matches")  # 6205-2RS, or since main 7bac7a1 the 6205 it is
     page.fill("#bearing", "")
     page.fill("#search-bore", "90 mm")
     page.wait_for_function("document.querySelector('#matches').innerText.includes('B218')")
