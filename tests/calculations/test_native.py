@@ -1,172 +1,237 @@
-"""The native documents (issue 22 item 1): ``run(parse(...))`` computes what ``bearinglab ... --json``
-prints without running the command line, and a bad input names its field."""
+"""Native calculations (issue 22 item 1): their document is computed by a function of
+:mod:`bearinglab.calculations`, which the command line calls too; the web never runs the command line.
+
+For each native calculation, ``bearinglab <command> ... --json`` (run through ``cli.main``) equals
+``calculations.run(calculations.parse(...))`` computed with the command line's entry points disabled.
+"""
 
 import json
-import tomllib
-from pathlib import Path
+import subprocess
+import sys
 
 import pytest
 
 from bearinglab import calculations, cli
-from bearinglab.calculations import RequestError, RunFailure, documents, parse, run
+from bearinglab.calculations import RunFailure, documents, parse, run
 
-#: calculation, request, the command line's words for the same request
-CASES = [
-    ("clearance", {"bearing": "6205-2RS", "shaft_fit": "k5", "housing_fit": "H7",
-                   "inner_ring_temperature": "50 degC", "speed": "6000 rpm"}, None),
-    ("clearance", {"bearing": "6208", "shaft_interference": "5 um, 20 um", "housing_fit": "J7",
-                   "shaft_roughness": "4 um", "clearance_class": "C3", "monte_carlo": "300",
-                   "seed": "7", "distribution": "normal"}, None),
-    ("clearance", {"bearing": "6205-2RS", "radial_clearance": "6 um, 20 um", "shaft_fit": "m6",
-                   "housing_material": "aluminium", "outer_ring_temperature": "60 degC"}, None),
-    ("film", {"bearing": "B218", "fz": "10 kN", "speed": "3000, 6000 rpm", "viscosity": "20 cSt"}, None),
-    ("film", {"bearing": "6208", "radial_load": "1 kN", "speed": "6000 rpm", "oil": "VG68",
-              "temperature": "70 degC", "loads_at": "rest", "lubrication": "grease",
-              "roughness_ball": "0.05 um", "roughness_race": "0.2 um", "density": "880 kg/m^3"}, None),
-    ("film", {"bearing": "6208", "radial_load": "500 N", "speed": "3000, 9000 rpm", "oil": "VG32",
-              "temperature": "auto", "thermal_resistance": "2 K/W"}, None),
-    ("film", {"balls": "9", "ball_diameter": "7.938 mm", "pitch_diameter": "39 mm",
-              "inner_conformity": "0.52", "outer_conformity": "0.53", "radial_clearance": "10 um",
-              "fx": "2 kN", "my": "1 N*m", "speed": "4000 rpm", "dynamic_viscosity": "30 cP",
-              "pressure_viscosity_coefficient": "20 1/GPa"}, None),
-    ("temperature", {"bearing": "6205-2RS", "radial_load": "1 kN", "speed": "6000 rpm", "oil": "VG32",
-                     "thermal_resistance": "1 K/W"}, None),
-    ("temperature", {"bearing": "6208", "radial_load": "2 kN", "axial_load": "300 N",
-                     "speed": "3000, 6000 rpm", "oil": "VG68", "viscosity_index": "120",
-                     "lubrication": "oil-air", "oil_flow": "0.5 l/min", "oil_inlet_temperature": "35 degC",
-                     "ambient": "25 degC"}, None),
-    ("temperature", {"bearing": "B218", "axial_load": "5 kN", "speed": "3000 rpm", "oil": "VG46",
-                     "viscosity_100": "6.5 cSt", "skf_constants": "5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12",
-                     "max_temperature": "200 degC"}, None),
+DUTY = ('[[step]]\nfx = "1 kN"\nfz = "3 kN"\nspeed = "1000 rpm"\ntime = 0.5\n\n'
+        '[[step]]\nfx = "2 kN"\nfz = "3 kN"\nspeed = "3000 rpm"\ntime = 0.5\n')
+
+LIFE = [
+    {"bearing": "6205-2RS", "radial_load": "2 kN", "speed": "1797 rpm", "oil": "VG68", "temperature": "70 degC",
+     "contamination": "normal", "reliability": "99"},
+    {"bearing": "B218", "fx": "10 kN", "fz": "5 kN", "my": "200 N*m", "speed": "3000 rpm",
+     "viscosity": "20 cSt", "contamination_factor": "0.5"},
+    {"bearing": "6208", "radial_load": "2 kN", "speed": "1000 rpm"},  # estimated: the provenance note
+    {"bearing": "6205-2RS", "balls": "10", "radial_load": "2 kN", "speed": "1000 rpm", "viscosity": "20 cSt"},
+    {"bearing": "6208", "radial_load": "2 kN", "speed": "1797 rpm", "shaft_fit": "j5", "clearance_class": "C3",
+     "inner_ring_temperature": "30 degC"},
+    {"bearing": "B218", "fz": "0 N", "speed": "3000 rpm", "viscosity": "20 cSt"},  # unbounded lives
 ]
 
 
 @pytest.fixture
 def no_command_line(monkeypatch):
-    """The command line may not run: a native document that called it would fail."""
+    """The command line's entry points, disabled: a native document must not need them."""
     def refuse(*args, **kwargs):
-        raise AssertionError("the command line ran")
+        raise AssertionError("the calculation ran the command line")
 
-    for name in ("_call_command", "_run_command", "_command_document"):
+    for name in ("_call_command", "_run_command"):
         monkeypatch.setattr(documents, name, refuse)
+    monkeypatch.setattr(cli, "main", refuse)
 
 
-def _printed(name, given, words):
-    words = words or calculations.argv(parse(name, given))
+def _printed(words):
     printed = cli.run_json(words)
     assert printed.exit_code == 0, printed.error
     return printed.document
 
 
-@pytest.mark.parametrize("name, given, words", CASES, ids=[f"{n}-{i}" for i, (n, _, _) in enumerate(CASES)])
-def test_the_native_document_is_what_the_command_line_prints(name, given, words, no_command_line):
-    assert name in documents._NATIVE
-    printed = _printed(name, given, words)  # the command computes it by the same function
-    assert json.loads(json.dumps(run(parse(name, given)))) == printed
+@pytest.mark.parametrize("given", LIFE, ids=range(len(LIFE)))
+def test_life_is_what_the_command_line_prints(given, request):
+    parsed = parse("life", given)
+    printed = _printed(calculations.argv(parsed))
+    request.getfixturevalue("no_command_line")
+    assert run(parsed) == printed
 
 
-#: calculation, request, the field at fault, words of the message
-FAILURES = [
-    ("clearance", {"bearing": "6205-2RS", "shaft_fit": "k9"}, "shaft_fit", "must be one of"),
-    ("clearance", {"bearing": "6205-2RS", "shaft_fit": "k5", "shaft_interference": "5 um"},
-     "shaft_interference", "give {field:shaft_fit} or {field:shaft_interference}"),
-    ("clearance", {"bearing": "6205-2RS", "shaft_fit": "k5", "shaft_bore": "25 mm"}, "shaft_bore",
-     "must be < the bearing bore"),
-    ("film", {"bearing": "6208", "radial_load": "1 kN", "speed": "6000 rpm", "viscosity": "20 cSt",
-              "dynamic_viscosity": "13 cP"}, "dynamic_viscosity", "give {field:dynamic_viscosity}"),
-    ("film", {"bearing": "6208", "radial_load": "1 kN", "speed": "6000 rpm", "oil": "VG33",
-              "temperature": "60 degC"}, "oil", "must be an ISO VG grade"),
-    ("temperature", {"bearing": "6208", "radial_load": "1 kN", "speed": "6000 rpm", "oil": "VG32",
-                     "oil_inlet_temperature": "40 degC"}, "oil_flow", "{field:oil_inlet_temperature}"),
-    ("temperature", {"bearing": "B218", "axial_load": "5 kN", "speed": "6000 rpm", "oil": "VG32"},
-     "skf_constants", "angular-contact"),
+@pytest.mark.parametrize("text", [DUTY, json.dumps({"step": [
+    {"fx": "1 kN", "fz": "3 kN", "speed": "1000 rpm", "time": 0.5},
+    {"fx": "2 kN", "fz": "3 kN", "speed": "3000 rpm", "time": 0.5}]})], ids=["toml", "json"])
+def test_a_posted_duty_cycle_is_the_duty_cycle_file(tmp_path, text, request):
+    path = tmp_path / "duty.toml"
+    path.write_text(DUTY, encoding="utf-8")
+    printed = _printed(["life", "--bearing=B218", "--viscosity=20 cSt", f"--duty-cycle={path}"])
+    request.getfixturevalue("no_command_line")
+    doc = run(parse("life", {"bearing": "B218", "viscosity": "20 cSt", "duty_cycle": text}))
+    assert doc == printed
+    assert [s["speed_rpm"] for s in doc["inputs"]["steps"]] == [1000, 3000]
+
+
+@pytest.mark.parametrize("given, parameter, words", [
+    ({"bearing": "6205-2RS", "radial_load": "2 kN"}, "speed", "speed: missing"),
+    ({"bearing": "6205-2RS", "radial_load": "2 kN", "speed": "0 rpm"}, "speed", "speed must be > 0 [rpm]"),
+    ({"bearing": "6205-2RS", "speed": "1 rpm", "contamination": "normal", "contamination_factor": "0.5"},
+     "contamination", "contamination: give contamination_factor or contamination, not both"),
+    ({"bearing": "6205-2RS", "fx": "1 kN", "radial_load": "1 kN", "speed": "1 rpm"}, "radial_load",
+     "radial_load: give fx or radial_load, not both"),
+    ({"bearing": "6205-2RS", "speed": "1 rpm", "oil": "VG68"}, "temperature", "also needs temperature"),
+    ({"bearing": "NOPE", "speed": "1 rpm"}, "bearing", "NOPE"),
+    ({"bearing": "B218", "duty_cycle": "[[step]]\nfz = '1 kN'\nspeed = '0 rpm'\ntime = 1.0\n"},
+     "duty_cycle", "duty_cycle step 1 speed must be > 0 [rpm]"),
+    ({"bearing": "B218", "duty_cycle": "step = 3"}, "duty_cycle",
+     "duty_cycle: the posted document: needs [[step]] tables"),
+    ({"bearing": "B218", "duty_cycle": "{not json"}, "duty_cycle", "duty_cycle: the posted document: "),
+    ({"bearing": "B218", "speed": "1 rpm", "duty_cycle": DUTY}, "duty_cycle",
+     "the loads and speeds are in the duty cycle; give no fx ... speed"),
+])
+def test_life_failures_name_the_field(given, parameter, words, no_command_line):
+    with pytest.raises(RunFailure) as err:
+        run(parse("life", given))
+    assert err.value.parameter == parameter
+    text = err.value.worded(lambda name: name)
+    assert words in text and "--" not in text
+
+
+@pytest.mark.parametrize("args, line", [
+    (["--fx=1 kN", "--radial-load=1 kN", "--speed=1 rpm"], "radial-load: give --fx or --radial-load, not both"),
+    (["--radial-load=1 kN"], "speed: missing; give the inner-ring speed, e.g. '3000 rpm' (or --duty-cycle)"),
+    (["--speed=1 rpm", "--contamination=normal", "--contamination-factor=0.5"],
+     "contamination: give --contamination-factor or --contamination, not both"),
+])
+def test_the_command_line_words_the_same_failures_with_its_options(capsys, args, line):
+    assert cli.main(["life", "--bearing=6205-2RS", *args]) == 2
+    assert capsys.readouterr().err.strip() == f"bearinglab: error: {line}"
+
+
+LOAD = [
+    {"bearing": "B218", "axial_load": "5 kN", "radial_load": "10 kN", "my": "2 N*m"},
+    {"bearing": "B218", "fz": "5 kN", "speed": "12000 rpm", "stiffness_at": "free", "first_ball_angle": "10 deg"},
+    {"bearing": "B218", "dz": "700 um", "tilt_x": "0 mrad", "tilt_y": "0 mrad"},  # held freedoms
+    {"bearing": "6208", "fx": "2 kN", "speed": "3000 rpm", "shaft_fit": "k5", "housing_fit": "H7"},
+    {"bearing": "B218", "balls": "15", "fz": "5 kN"},  # inline override
+]
+SETS = [
+    {"bearing": "7218B", "arrangement": "DF", "preload": "500 N", "fx": "1 kN"},
+    {"bearing": "7218B, 7218B", "arrangement": "DB", "preload": "1 kN", "fy": "2 kN", "spacing": "100 mm"},
+    {"bearing": "7208 BE", "arrangement": "DB", "preload": "500 N", "fx": "1 kN", "shaft_fit": "k5",
+     "housing_fit": "H7"},
+    {"bearing": "7218B", "arrangement": "DB", "preload_offset": "5 um", "fz": "2 kN", "speed": "3000 rpm"},
+    {"bearing": "7218B", "arrangement": "DT", "fz": "2 kN", "fx": "500 N"},
 ]
 
 
-@pytest.mark.parametrize("name, given, parameter, words", FAILURES)
-def test_a_failure_names_its_field_with_no_option(name, given, parameter, words, no_command_line):
+@pytest.mark.parametrize("name, given", [*(("load-distribution", g) for g in LOAD),
+                                         *(("bearing-set", g) for g in SETS)],
+                         ids=[*(f"load-{i}" for i in range(len(LOAD))), *(f"set-{i}" for i in range(len(SETS)))])
+def test_load_distribution_and_sets_are_what_the_command_line_prints(name, given, request):
+    parsed = parse(name, given)
+    printed = _printed(calculations.argv(parsed))
+    request.getfixturevalue("no_command_line")
+    assert run(parsed) == printed
+
+
+@pytest.mark.parametrize("name, given, parameter, words", [
+    ("load-distribution", {"bearing": "B218", "fz": "1 kN", "dz": "5 um"}, "dz", "dz: give fz or dz, not both"),
+    ("load-distribution", {"bearing": "B218", "fz": "1 kN", "speed": "1e7 rpm"}, "speed",
+     "speed must be <= "),
+    ("load-distribution", {"bearing": "B218", "fz": "1 kN", "shaft_fit": "zz9"}, "shaft_fit",
+     "shaft_fit must be one of"),
+    ("bearing-set", {"bearing": "7218B", "preload": "1 kN", "preload_offset": "5 um"}, "preload",
+     "preload: give preload or preload_offset, not both"),
+    ("bearing-set", {"bearing": "7218B, 7208 BE", "preload": "1 kN", "shaft_fit": "k5"}, "bearing",
+     "the mounting options need one bearing type"),
+    ("bearing-set", {"bearing": "NOPE", "preload": "1 kN"}, "bearing", "NOPE"),
+    # a field of the bearing, not an input given: named as the library names it, no parameter
+    ("load-distribution", {"balls": "9", "ball_diameter": "8 mm", "pitch_diameter": "39 mm",
+                           "contact_angle": "0 deg", "fx": "1 kN"}, None,
+     "inner_conformity of 'inline' is not known"),
+])
+def test_load_failures_name_the_field(name, given, parameter, words, no_command_line):
     with pytest.raises(RunFailure) as err:
         run(parse(name, given))
     assert err.value.parameter == parameter
-    assert words in err.value.template and "--" not in err.value.template
-    assert err.value.template.startswith("{name}")
+    text = err.value.worded(lambda n: n)
+    assert words in text and "--" not in text
 
 
-_EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "runout"
-
-
-@pytest.mark.parametrize("example, given, words", [
-    ("example1_oversize_ball.toml", {"angle": "30 deg"}, ["--angle=30 deg"]),
-    ("example3_mixed.toml", {"bearing": "7218B", "refine": "true"}, ["--bearing=7218B", "--refine"]),
-    ("example2_inner_ovality.toml", {"revolutions": "2", "steps_per_rev": "36", "start_angle": "5 deg"},
-     ["--revolutions=2", "--steps-per-rev=36", "--start-angle=5 deg"]),
-    ("example4_tilt.toml", {"revolutions": "1", "steps_per_rev": "24", "cage_ratio": "0.4"},
-     ["--revolutions=1", "--steps-per-rev=24", "--cage-ratio=0.4"]),
+@pytest.mark.parametrize("name, given, title", [
+    ("load-distribution", LOAD[1], "Bearing B218: ball loads at 12000 rpm"),
+    ("bearing-set", SETS[0], "Set DF: ball loads of bearing 0 (7218B)"),
 ])
-def test_runout_of_a_posted_error_set_is_what_the_command_prints_for_its_file(example, given, words,
-                                                                               no_command_line):
-    path = _EXAMPLES / example
-    printed = cli.run_json(["runout", f"--errors={path}", *words])
-    assert printed.exit_code == 0, printed.error
-    text = path.read_text(encoding="utf-8")
-    doc = json.loads(json.dumps(run(parse("runout", {"errors": text, **given}))))
-    assert doc["errors_file"] == "(posted document)"
-    assert doc == dict(printed.document, errors_file="(posted document)")
-    as_json = json.dumps(tomllib.loads(text))  # the same error set posted as JSON
-    assert json.loads(json.dumps(run(parse("runout", {"errors": as_json, **given})))) == doc
+def test_the_figure_is_drawn_from_the_document(name, given, title, no_command_line):
+    svg = calculations.figure_svg(parse(name, given))
+    assert svg.startswith("<svg") and svg.rstrip().endswith("</svg>")
+    assert title.replace(" ", "") in svg.replace(" ", "") or "ball loads" in svg or "<path" in svg
 
 
-def test_a_posted_error_set_names_no_file_and_a_bad_one_names_the_field(no_command_line):
-    text = (_EXAMPLES / "measured_profile.toml").read_text(encoding="utf-8")
-    with pytest.raises(RequestError) as err:  # it names its profile file: refused, nothing read
-        run(parse("runout", {"errors": text}))
-    assert err.value.parameter == "errors" and "cannot refer to files" in err.value.template
-    bad = (_EXAMPLES / "example1_oversize_ball.toml").read_text(encoding="utf-8") + "\n[bogus]\nx = 1\n"
-    with pytest.raises(RequestError) as err:
-        run(parse("runout", {"errors": bad}))
-    assert err.value.parameter == "errors" and "the posted document" in err.value.template
-    assert "bogus" in err.value.template
+def test_the_ball_loads_of_the_figure_are_the_documents():
+    from bearinglab.calculations import load_distribution
+
+    doc = run(parse("load-distribution", LOAD[0]))
+    fig = load_distribution.figure(doc)
+    ax = fig.axes[0]
+    outer = ax.lines[-2] if len(ax.lines) > 1 else ax.lines[0]  # the markers of the outer contacts
+    shown = sorted(y for line in ax.lines for y in line.get_ydata())
+    for ball in doc["balls"]:
+        assert ball["load_inner_N"] in shown or ball["load_inner_N"] == pytest.approx(0.0)
+    assert outer is not None and fig.axes[0].get_title() == "Bearing B218: ball loads at 0 rpm"
 
 
-MC = {"bearing": "7218B", "samples": "4", "steps_per_rev": "12", "revolutions": "1", "seed": "3"}
+def test_the_calculations_do_not_import_the_command_line():
+    code = ("import sys, bearinglab.calculations as c\n"
+            "c.run(c.parse('life', {'bearing': 'B218', 'fz': '5 kN', 'speed': '3000 rpm', 'viscosity': '20 cSt'}))\n"
+            "assert not [m for m in sys.modules if m.startswith('bearinglab.cli')], 'bearinglab.cli imported'\n"
+            "assert 'typer' not in sys.modules and 'rich' not in sys.modules\n")
+    done = subprocess.run([sys.executable, "-c", code], check=False, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
 
 
-def test_runout_monte_carlo_is_what_the_command_prints(no_command_line):
-    printed = cli.run_json(["runout", "monte-carlo", "--bearing=7218B", "--samples=4", "--steps-per-rev=12",
-                            "--revolutions=1", "--seed=3"])
-    assert printed.exit_code == 0, printed.error
-    assert json.loads(json.dumps(run(parse("runout-monte-carlo", MC)))) == printed.document
-    assert printed.document["samples"] == 4 and printed.document["seed"] == 3
+# ----------------------------------------------------------------------------- life with temperature auto
+AUTO = {"bearing": "6205-2RS", "radial_load": "1 kN", "speed": "6000 rpm", "oil": "VG32", "temperature": "auto",
+        "thermal_resistance": "1 K/W"}
 
 
-def test_runout_monte_carlo_is_bit_identical_for_a_seed_and_differs_for_another(no_command_line):
-    first, again = run(parse("runout-monte-carlo", MC)), run(parse("runout-monte-carlo", MC))
-    assert json.dumps(first) == json.dumps(again)
-    other = run(parse("runout-monte-carlo", {**MC, "seed": "4"}))
-    assert other["radial_ptp_max_um"] != first["radial_ptp_max_um"]
+def test_life_at_temperature_auto_takes_the_viscosity_of_the_thermal_balance(request):
+    from bearinglab.ratings import lubrication
+
+    parsed = parse("life", AUTO)
+    printed = _printed(calculations.argv(parsed))
+    balance = _printed(["temperature", "--bearing=6205-2RS", "--radial-load=1 kN", "--speed=6000 rpm",
+                        "--oil=VG32", "--thermal-resistance=1 K/W"])
+    request.getfixturevalue("no_command_line")
+    doc = run(parsed)
+    assert doc == printed
+    t = doc["bearing_temperature_degC"]
+    assert t == pytest.approx(balance["bearing_temperature_degC"], rel=1e-12)
+    assert doc["viscosity_mm2_s"] == pytest.approx(balance["viscosity_mm2_s"], rel=1e-12)
+    # the viscosity used is the oil's at the balance temperature (ASTM D341 through VG32 at 40 degC and its
+    # nu100 at VI 95), and the life's kappa is computed with it
+    nu100 = lubrication.viscosity_100_from_index(32e-6, 95.0)
+    nu = lubrication.kinematic_viscosity(t + 273.15, viscosity_40=32e-6, viscosity_100=nu100)
+    assert doc["viscosity_mm2_s"] == pytest.approx(float(nu) * 1e6, rel=1e-9)
+    assert doc["viscosity_ratio"] == pytest.approx(doc["viscosity_mm2_s"] / doc["rated_viscosity_mm2_s"], rel=1e-12)
+    assert doc["inputs"]["temperature"] == "auto" and doc["inputs"]["bearing_temperature_degC"] == pytest.approx(t)
+    assert 20.0 < t < 150.0
 
 
-def test_runout_monte_carlo_samples_are_the_cases():
-    assert parse("runout-monte-carlo", MC).cases == 4
-    assert parse("runout-monte-carlo", {"bearing": "7218B"}).cases == 200  # the default
-    with pytest.raises(RequestError, match="more than the limit") as err:
-        parse("runout-monte-carlo", {"bearing": "7218B", "samples": str(calculations.CASE_LIMIT + 1)})
-    assert err.value.parameter == "samples"
-    assert parse("runout-monte-carlo", {"bearing": "7218B", "samples": "10"}, limit=10).cases == 10
-    with pytest.raises(RequestError):
-        parse("runout-monte-carlo", {"bearing": "7218B", "samples": "11"}, limit=10)
+def test_a_hotter_ambient_gives_a_hotter_bearing_and_a_thinner_oil(no_command_line):
+    cool = run(parse("life", AUTO))
+    hot = run(parse("life", {**AUTO, "ambient": "50 degC"}))
+    assert hot["bearing_temperature_degC"] > cool["bearing_temperature_degC"]
+    assert hot["viscosity_mm2_s"] < cool["viscosity_mm2_s"]
+    assert hot["modified_rating_life_Mrev"] <= cool["modified_rating_life_Mrev"]
 
 
-def test_a_runout_sequence_counts_its_positions_with_steps_alone():
-    # steps_per_rev alone runs 3 revolutions: the positions are bounded, not only with revolutions
-    assert parse("runout", {"errors": "x", "steps_per_rev": "100"}).cases == 300
-    with pytest.raises(RequestError, match="more than the limit"):
-        parse("runout", {"errors": "x", "steps_per_rev": "50000"})
-
-
-def test_a_posted_error_set_without_geometry_asks_for_a_bearing_in_web_words(no_command_line):
-    text = '[errors.balls]\nunit = "um"\ndiameter = [1.0, 0.0, 0.0]\n'
-    with pytest.raises(RequestError) as err:
-        run(parse("runout", {"errors": text}))
-    assert err.value.parameter == "errors" and "no [geometry] table" in err.value.template
-    assert "--" not in err.value.template and "a catalog bearing" in err.value.template
+@pytest.mark.parametrize("given, words", [
+    ({**AUTO, "temperature": "70 degC"}, "thermal_resistance, lubrication and skf_constants go with temperature auto"),
+    ({**AUTO, "oil": None, "viscosity": "20 cSt"}, "'auto' needs the oil by grade"),
+    ({**AUTO, "my": "10 N*m"}, "'auto' takes the SKF friction model, which has no tilting moment"),
+    ({**{k: v for k, v in AUTO.items() if k not in ("speed", "radial_load")}, "duty_cycle": DUTY},
+     "'auto' takes the loads and speed of one case, not a duty cycle"),
+])
+def test_temperature_auto_failures_name_the_temperature(given, words, no_command_line):
+    with pytest.raises(RunFailure) as err:
+        run(parse("life", {k: v for k, v in given.items() if v is not None}))
+    assert err.value.parameter == "temperature"
+    assert words in err.value.worded(lambda n: n)

@@ -1,14 +1,16 @@
-"""The inputs the calculations share with the command line: the bearing, speeds, loads, the lubricant.
+"""The inputs every boundary reads the same way: a bearing, loads, speeds, lengths and the lubricant.
 
-These read the values of a request as a user wrote them ('6000 rpm', 'VG68', '70 degC') and check them;
-a bad value raises :class:`bearinglab.errors.InputError` whose message opens with the input's name (the
-option's long name without its dashes). The command line (``bearinglab.cli._common``) and the documents
-of :mod:`bearinglab.calculations` use the same functions, so the two read every input alike; nothing
-here imports typer, rich or the command line.
+The command line's options and the calculations' fields (:mod:`bearinglab.calculations`) are read by
+these functions, so that a value means the same and is refused with the same message whichever
+boundary gives it. Each message opens with the input's name as the command line spells it without its
+dashes (``radial-load: ...``, ``speed must be ...``); other inputs it names carry their dashes
+(``give --fx or --radial-load``). Nothing here prints, and nothing imports the command line.
 
-Bearing     resolve_bearing (named, from a file, or inline; inline values override), inputs_echo
-Values      parse_length, speed_size, parse_speed, parse_speeds, parse_viscosity, choice, five_loads
-Lubricant   parse_temperature, LubricantViscosity, lubricant_viscosity
+Bearing         resolve_bearing (a catalog name, a bearing file or the inline geometry -> BallBearing),
+                inputs_echo (the bearing as used and the quantities given, for a JSON document)
+Quantities      five_loads, parse_length, speed_size, parse_speed, parse_speeds, parse_viscosity,
+                parse_temperature, choice
+Lubricant       LubricantViscosity, lubricant_viscosity (the oil options -> the operating viscosity)
 """
 
 from __future__ import annotations
@@ -18,83 +20,16 @@ import math
 import re
 import typing
 import weakref
+from typing import TYPE_CHECKING
 
 from ..errors import InputError
 
-if typing.TYPE_CHECKING:
+if TYPE_CHECKING:
     from ..bearing import BallBearing
 
-_MM, _UM = 1e-3, 1e-6  # m per mm, per um
-_LENGTH_UNITS = {"mm": _MM, "um": _UM}
-
-
-def parse_length(text, name, unit="mm", *, zero=False):
-    """A length option [m], > 0 (>= 0 with ``zero``): the message gives the value in ``unit`` ("mm" or
-    "um"), the unit in which such a length is typed, never in metres."""
-    from ..units import parse_quantity
-
-    x = parse_quantity(text, "length", name)
-    if not (x >= 0 if zero else x > 0):
-        raise InputError(f"{name} must be {'>=' if zero else '>'} 0 [{unit}], got {x / _LENGTH_UNITS[unit]:g} {unit}")
-    return x
-
-
-def speed_size(bearing):
-    """d_m of the speed guard (:func:`bearinglab.limits.check_speed`) [m]: the pitch diameter, else the
-    mean of bore and outside diameter (the handbook's d_m); None when neither is known."""
-    if bearing.pitch_diameter is not None:
-        return bearing.pitch_diameter
-    if bearing.bore is not None and bearing.outside_diameter is not None:
-        return bearing.mean_diameter
-    return None
-
-
-def parse_speed(text, name="speed", *, bearing=None, zero=True, what="the inner-ring speed, a magnitude"):
-    """One speed [rad/s] by the rule of :func:`parse_speeds` (the d_m n guard with ``bearing``'s
-    :func:`speed_size`); a list is refused, never cut to its first value."""
-    w = parse_speeds(text, name, pitch_diameter=None if bearing is None else speed_size(bearing), zero=zero,
-                     what=what)
-    if w.size != 1:
-        raise InputError(f"{name}: give one speed, got {w.size} values in {text!r}")
-    return float(w[0])
-
-
-def parse_speeds(text, name="speed", *, pitch_diameter=None, zero=True, what="the inner-ring speed, a magnitude"):
-    """The speeds of a speed option [rad/s]: one convention for every command. A speed is a magnitude,
-    >= 0 (> 0 with ``zero=False``, where a zero speed has no meaning, e.g. a life in hours), and below
-    the d_m n that no ball bearing of the size runs (:func:`bearinglab.limits.check_speed`) when the
-    pitch diameter is given. The message gives the offending value in rpm."""
-    from .. import _bounds, limits
-    from ..units import RPM, parse_values
-
-    w = parse_values(text, "speed", name, limit=_bounds.MAX_CASES)
-    bad = ~(w >= 0) if zero else ~(w > 0)
-    if bad.any():
-        raise InputError(f"{name} must be {'>=' if zero else '>'} 0 [rpm] ({what}), got "
-                         f"{float(w[bad][0]) / RPM:g} rpm")
-    if pitch_diameter is not None:
-        limits.check_speed(w, pitch_diameter, name)
-    return w
-
-
-def parse_viscosity(text, name="viscosity"):
-    """A kinematic viscosity option [m^2/s], > 0 (the message in cSt, the unit of oil data sheets)."""
-    from ..units import parse_quantity
-
-    nu = parse_quantity(text, "kinematic_viscosity", name)
-    if not nu > 0:
-        raise InputError(f"{name} must be > 0 [cSt], got {float(nu) * 1e6:.6g} cSt")
-    return nu
-
-
-def choice(name, value, choices):
-    """``value`` if it is one of ``choices``; otherwise an InputError listing them."""
-    if value not in choices:
-        raise InputError(f"{name} must be one of {list(choices)}, got {value!r}")
-    return value
-
-
-
+__all__ = ["LubricantViscosity", "choice", "five_loads", "inputs_echo", "lubricant_viscosity",
+           "parse_length", "parse_speed", "parse_speeds", "parse_temperature", "parse_viscosity",
+           "resolve_bearing", "speed_size"]
 
 def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, ball_diameter=None,
                     pitch_diameter=None, inner_groove_radius=None, outer_groove_radius=None,
@@ -102,8 +37,7 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
                     radial_clearance=None, ball_material=None) -> BallBearing:
     """The bearing named, read from a file, or given inline; inline options override named fields.
 
-    Its provenance notes are :func:`bearinglab.catalog.provenance_notes` of the bearing returned (the
-    command line prints them, a document carries them in its ``warnings``)."""
+    Its provenance notes (:func:`bearinglab.catalog.provenance_notes`) are the caller's to report."""
     from .. import catalog as _catalog
     from ..bearing import MATERIALS, BallBearing
     from ..units import parse_quantity
@@ -175,7 +109,6 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
     return b
 
 
-
 _OVERRIDES = weakref.WeakKeyDictionary()  # bearing -> the catalog bearing and the options that changed it
 
 
@@ -226,6 +159,89 @@ def inputs_echo(bearing, **quantities):
     return _clean(out)
 
 
+_MM, _UM = 1e-3, 1e-6  # m per mm, per um
+_LENGTH_UNITS = {"mm": _MM, "um": _UM}
+
+
+def parse_length(text, name, unit="mm", *, zero=False):
+    """A length option [m], > 0 (>= 0 with ``zero``): the message gives the value in ``unit`` ("mm" or
+    "um"), the unit in which such a length is typed, never in metres."""
+    from ..units import parse_quantity
+
+    x = parse_quantity(text, "length", name)
+    if not (x >= 0 if zero else x > 0):
+        raise InputError(f"{name} must be {'>=' if zero else '>'} 0 [{unit}], got {x / _LENGTH_UNITS[unit]:g} {unit}")
+    return x
+
+
+def speed_size(bearing):
+    """d_m of the speed guard (:func:`bearinglab.limits.check_speed`) [m]: the pitch diameter, else the
+    mean of bore and outside diameter (the handbook's d_m); None when neither is known."""
+    if bearing.pitch_diameter is not None:
+        return bearing.pitch_diameter
+    if bearing.bore is not None and bearing.outside_diameter is not None:
+        return bearing.mean_diameter
+    return None
+
+
+def parse_speed(text, name="speed", *, bearing=None, zero=True, what="the inner-ring speed, a magnitude"):
+    """One speed [rad/s] by the rule of :func:`parse_speeds` (the d_m n guard with ``bearing``'s
+    :func:`speed_size`); a list is refused, never cut to its first value."""
+    w = parse_speeds(text, name, pitch_diameter=None if bearing is None else speed_size(bearing), zero=zero,
+                     what=what)
+    if w.size != 1:
+        raise InputError(f"{name}: give one speed, got {w.size} values in {text!r}")
+    return float(w[0])
+
+
+def parse_speeds(text, name="speed", *, pitch_diameter=None, zero=True, what="the inner-ring speed, a magnitude"):
+    """The speeds of a speed option [rad/s]: one convention for every command. A speed is a magnitude,
+    >= 0 (> 0 with ``zero=False``, where a zero speed has no meaning, e.g. a life in hours), and below
+    the d_m n that no ball bearing of the size runs (:func:`bearinglab.limits.check_speed`) when the
+    pitch diameter is given. The message gives the offending value in rpm."""
+    from .. import _bounds, limits
+    from ..units import RPM, parse_values
+
+    w = parse_values(text, "speed", name, limit=_bounds.MAX_CASES)
+    bad = ~(w >= 0) if zero else ~(w > 0)
+    if bad.any():
+        raise InputError(f"{name} must be {'>=' if zero else '>'} 0 [rpm] ({what}), got "
+                         f"{float(w[bad][0]) / RPM:g} rpm")
+    if pitch_diameter is not None:
+        limits.check_speed(w, pitch_diameter, name)
+    return w
+
+
+#: Kinematic viscosities accepted from the command line [m^2/s]: 0.1 to 1e7 cSt, the dynamic range the film
+#: command takes (0.1 to 1e7 mPa s) at about 1000 kg/m^3. A sanity bound, not a property of any oil: outside
+#: it a value is taken for a typing or unit error (issue 24: absurd viscosities are refused in one line).
+VISCOSITY_BOUNDS = (1e-7, 10.0)
+#: The hottest oil temperature accepted from the command line [degC]. A sanity bound, not an oil's limit
+#: (SKF rates its angular-contact bearings with steel or brass cages to +150 degC, General Catalogue 6000/I RU,
+#: 2006, p. 413): above it a value is taken for a typing or unit error, and ASTM D341 is far outside its data.
+HOTTEST_OIL_DEGC = 400.0
+
+
+def parse_viscosity(text, name="viscosity"):
+    """A kinematic viscosity option [m^2/s], > 0 and within :data:`VISCOSITY_BOUNDS` (the message in cSt,
+    the unit of oil data sheets)."""
+    from ..units import parse_quantity
+
+    nu = parse_quantity(text, "kinematic_viscosity", name)
+    if not nu > 0:
+        raise InputError(f"{name} must be > 0 [cSt], got {float(nu) * 1e6:.6g} cSt")
+    lo, hi = VISCOSITY_BOUNDS
+    if not lo <= nu <= hi:
+        raise InputError(f"{name} must be in [{lo * 1e6:g}, {hi * 1e6:g}] [cSt], got {float(nu) * 1e6:.6g} cSt")
+    return nu
+
+
+def choice(name, value, choices):
+    """``value`` if it is one of ``choices``; otherwise an InputError listing them."""
+    if value not in choices:
+        raise InputError(f"{name} must be one of {list(choices)}, got {value!r}")
+    return value
+
 
 def five_loads(fx=None, fy=None, fz=None, mx=None, my=None, radial_load=None, axial_load=None):
     """(F_x, F_y, F_z, M_x, M_y) in N and N m from the load options (missing ones are 0)."""
@@ -240,7 +256,6 @@ def five_loads(fx=None, fy=None, fz=None, mx=None, my=None, radial_load=None, ax
              ("fz" if axial_load is None else "axial-load", axial_load if fz is None else fz, "force"),
              ("mx", mx, "torque"), ("my", my, "torque"))
     return [0.0 if text is None else parse_quantity(text, kind, name) for name, text, kind in names]
-
 
 
 _ZERO_C = 273.15  # K at 0 degC
@@ -336,7 +351,15 @@ def lubricant_viscosity(viscosity=None, oil=None, temperature=None, viscosity_in
             raise InputError(f"viscosity-index: VG{grade} with VI {vi:g} is outside ASTM D2270 ({exc})") from None
         how = (f"VI {vi:g} ({'given' if viscosity_index is not None else 'assumed: a mineral oil, SKF'}), "
                f"nu100 {nu100 * 1e6:.4g} cSt by ASTM D2270")
+    if not t <= _ZERO_C + HOTTEST_OIL_DEGC:
+        raise InputError(f"temperature must be <= {HOTTEST_OIL_DEGC:g} [degC] (the oil's operating temperature), got "
+                         f"{t - _ZERO_C:g} degC")
     nu = float(lubrication.kinematic_viscosity(t, viscosity_40=nu40, viscosity_100=nu100))
+    lo, hi = VISCOSITY_BOUNDS
+    if not lo <= nu <= hi:  # ASTM D341 extrapolated far outside the oil's liquid range
+        raise InputError(f"temperature: VG{grade} at {t - _ZERO_C:g} degC would have nu = {nu * 1e6:.3g} cSt by "
+                         f"ASTM D341, outside [{lo * 1e6:g}, {hi * 1e6:g}] cSt; give an operating temperature of "
+                         f"the oil")
     text = f"VG{grade} at {t - _ZERO_C:.4g} degC, {how}: nu = {nu * 1e6:.4g} cSt (ASTM D341)"
     inputs = {"oil": f"VG{grade}", "temperature_degC": t - _ZERO_C, "viscosity_100_cSt": nu100 * 1e6,
               "viscosity_index": vi, "viscosity_index_assumed": viscosity_index is None and viscosity_100 is None}

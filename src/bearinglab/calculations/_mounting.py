@@ -1,16 +1,14 @@
-"""The mounting inputs the calculations share with the command line: fits, seats, materials, temperatures.
+"""The mounting inputs of every calculation that takes a bearing: fits, seats, materials, temperatures
+(issue 23), read the same way by the command line and the calculations.
 
-:func:`mounted_inputs` reads the mounting values of a request as a user wrote them (ISO 286 fields, the
-interferences, the seats, the materials, the ISO 492 and ISO 5753-1 classes, the five temperatures)
-into what :mod:`bearinglab.mounting` takes; a bad value raises :class:`bearinglab.errors.InputError`
-whose message opens with the input's name. The command line's options (``bearinglab.cli._mounting``)
-and the ``clearance`` document use it alike; nothing here imports the command line.
-
-Functions
----------
 parse_temperature   a temperature [K] ('60 degC', '333 K'; a bare number is degC)
-MountedInputs       the parsed values: tolerance limits, Mounting, Conditions, unmounted clearance range
-mounted_inputs      the mounting values -> MountedInputs (None when none was given)
+MountedInputs       the parsed inputs: tolerance limits, Mounting, Conditions, unmounted clearance range
+mounted_inputs      the inputs -> MountedInputs (None when none was given)
+operating_bearing   the bearing at its probable operating clearance, and the JSON entries to add
+MountedSet, mounted_set   the inputs of a bearing set applied to its bearings
+
+The options are :mod:`bearinglab.cli._mounting`'s; the physics is :mod:`bearinglab.mounting`. Messages
+name the inputs as the command line spells them without their dashes (``shaft-fit must be ...``).
 """
 
 from __future__ import annotations
@@ -20,6 +18,9 @@ from typing import NamedTuple
 
 from ..errors import InputError
 from ._inputs import parse_length
+
+__all__ = ["MountedInputs", "MountedSet", "mounted_inputs", "mounted_set", "operating_bearing",
+           "parse_temperature"]
 
 _ABSOLUTE_ZERO_C = -273.15
 _UM, _MM = 1e-6, 1e-3
@@ -202,3 +203,69 @@ def _unmounted(bearing, radial_clearance, clearance_class):
         raise InputError(f"clearance-class: {exc}; give --radial-clearance for this bearing") from None
     lo, hi = (float(r[0]), float(r[1]))
     return (lo, hi), f"ISO 5753-1 class {str(klass).upper()}"
+
+
+class MountedSet(NamedTuple):
+    """A bearing set with its mounting: the bearings at their operating clearance and the interference."""
+
+    bearings: list
+    interference: float
+    """The set's axial interference in operation. [m]"""
+    clearance: float
+    """The probable operating diametral clearance of each bearing. [m]"""
+    echo: dict
+    warnings: list
+
+
+def mounted_set(bearings, assembled_interference, arrangement, spacing, speed, options):
+    """The mounting options of ``bearing-set`` applied to its (like) bearings; None without options."""
+    if all(v is None for v in options.values()):
+        return None
+    if len({b.designation for b in bearings}) > 1:
+        raise InputError("bearing: the mounting options need one bearing type for the whole set")
+    from ..mounting import chain, preload
+
+    b = bearings[0]
+    inp = mounted_inputs(b, **options, speed=speed, require=True)
+    r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
+    p = r.probable
+    reduction = float(p.fit_reduction + p.thermal_reduction + p.centrifugal_reduction)
+    c = inp.conditions
+    t_s = c.inner_temperature if c.shaft_temperature is None else c.shaft_temperature
+    t_h = c.outer_temperature if c.housing_temperature is None else c.housing_temperature
+    interference, clearance = preload.operating_interference(
+        b, assembled_interference, reduction, arrangement_kind=arrangement, spacing=spacing,
+        shaft_temperature=t_s, housing_temperature=t_h, shaft_expansion=inp.mounting.shaft.thermal_expansion,
+        housing_expansion=inp.mounting.housing.thermal_expansion)
+    new = [x.replace(radial_clearance=clearance) for x in bearings]
+    echo = dict(inp.echo, unmounted_clearance_um=inp.unmounted[0] / _UM,
+                clearance_reduction_um=reduction / _UM, fit_reduction_um=float(p.fit_reduction) / _UM,
+                thermal_reduction_um=float(p.thermal_reduction) / _UM,
+                centrifugal_reduction_um=float(p.centrifugal_reduction) / _UM,
+                assembled_interference_um=assembled_interference / _UM, operating_interference_um=interference / _UM)
+    notes = [n for n in r.warnings if "negative" not in n]  # an angular set runs preloaded by design
+    return MountedSet(new, interference, clearance, echo, notes)
+
+
+def operating_bearing(bearing, speed=0.0, options=None):
+    """The bearing at its probable operating clearance under the mounting ``options`` (name -> text as
+    given, None for not given), and the JSON entries to add (``operating_clearance_um`` and the range);
+    ``(bearing, {})`` without options."""
+    given = {k: v for k, v in (options or {}).items() if v is not None}
+    if not given:
+        return bearing, {}
+    from ..mounting import chain
+
+    inp = mounted_inputs(bearing, **given, speed=float(speed), require=True)
+    r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
+    e = float(r.probable.operating_clearance)
+    if not e > 0:
+        raise InputError(f"operating clearance must be > 0 [um] for this model, got {e / _UM:.3g} um (the fits and "
+                         "temperatures preload the bearing); give a larger --clearance-class, or model a "
+                         "preloaded pair with bearing-set")
+    doc = {"operating_clearance_um": e / _UM,
+           "operating_clearance_min_um": float(r.least.operating_clearance) / _UM,
+           "operating_clearance_max_um": float(r.largest.operating_clearance) / _UM,
+           "unmounted_clearance_um": [inp.unmounted[0] / _UM, inp.unmounted[1] / _UM],
+           "mounting": inp.echo, "mounting_warnings": list(r.warnings)}
+    return bearing.replace(radial_clearance=e), doc

@@ -2,7 +2,10 @@
 
 ``catalog`` (:func:`catalog_document`, which ``catalog show`` prints too) and ``catalog-search``
 (:func:`bearinglab.catalog.search`) are built here from :mod:`bearinglab.catalog` and
-:mod:`bearinglab.tables`. The other calculations run their command's function in this process with
+:mod:`bearinglab.tables`. The calculations of ``_NATIVE`` (life, load-distribution, bearing-set,
+clearance, film, temperature, runout, runout-monte-carlo) are computed by ``document(parsed)`` of their
+module of this package, the function their command calls too, and their figures are drawn from that
+document. The other calculations run their command's function in this process with
 the request's checked values as options and read the document it prints: the command line builds
 those documents inline, and until each is factored into a function of its own, running the command
 is what keeps the two identical (``tests/calculations/test_documents.py``). The command's function is
@@ -37,10 +40,6 @@ from .fields import RequestError
 
 __all__ = ["RunFailure", "argv", "catalog_document", "figure_svg", "run"]
 
-#: the calculations computed by a module of this package (its ``document(parsed)``), not by the
-#: command line: name -> module
-_NATIVE = {"clearance": "clearance", "film": "film", "temperature": "temperature", "runout": "runout",
-           "runout-monte-carlo": "runout_monte_carlo"}
 # run through the whole command line: runout's command is a group callback that needs click's context
 _VIA_COMMAND_LINE = {"runout", "catalog"}
 _CAPTURE = threading.Lock()  # stdout is process-wide: one captured command at a time in a process
@@ -469,8 +468,32 @@ def run(parsed):
     if name == "catalog-search":
         return _search_document(parsed)
     if name in _NATIVE:
-        return importlib.import_module(f".{_NATIVE[name]}", __package__).document(parsed)
+        return _native(parsed)
     return _command_document(parsed)
+
+
+#: the calculations computed by a function of their own (calculation name -> module of this package,
+#: with ``document(parsed)``; the command line calls the same function)
+_NATIVE = {"life": "life", "load-distribution": "load_distribution", "bearing-set": "bearing_set",
+           "clearance": "clearance", "film": "film", "temperature": "temperature", "runout": "runout",
+           "runout-monte-carlo": "runout_monte_carlo"}
+
+
+def _native(parsed):
+    """The document of a calculation of :data:`_NATIVE`; its errors as RunFailures."""
+    from ..errors import ConvergenceError
+
+    module = importlib.import_module(f".{_NATIVE[parsed.calculation.name]}", __package__)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)  # every result is checked finite
+            return module.document(parsed)
+    except RequestError:
+        raise
+    except ConvergenceError as exc:  # no physical solution is the input's fault (2); else the solver's
+        raise RunFailure(None, None, exc.summary, "input" if exc.physical else "convergence") from None
+    except InputError as exc:  # the physics names no field
+        raise RunFailure(None, None, str(exc)) from None
 
 
 #: the calculations whose command draws a figure, and the option it takes
@@ -492,6 +515,8 @@ def figure_svg(parsed):
     name = parsed.calculation.name
     if name not in _PLOTS:
         return ""
+    if name in _NATIVE:  # drawn from the document by the calculation's own figure function
+        return _native_figure(parsed)
     with tempfile.TemporaryDirectory(prefix="bearinglab-") as tmp:
         path = Path(tmp) / "figure.svg"
         try:
@@ -501,5 +526,21 @@ def figure_svg(parsed):
         if not path.exists():
             return ""
         svg = path.read_text(encoding="utf-8")
+    start = svg.find("<svg")
+    return svg[start:] if start >= 0 else ""
+
+
+def _native_figure(parsed):
+    """The SVG of a native calculation's figure, drawn from its document; '' where it has none."""
+    module = importlib.import_module(f".{_NATIVE[parsed.calculation.name]}", __package__)
+    try:
+        doc = _native(parsed)
+    except RequestError:
+        return ""
+    if isinstance(doc, list):
+        doc = doc[0]
+    buffer = io.BytesIO()
+    module.figure(doc).savefig(buffer, format="svg", dpi=120)
+    svg = buffer.getvalue().decode("utf-8")
     start = svg.find("<svg")
     return svg[start:] if start >= 0 else ""

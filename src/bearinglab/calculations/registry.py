@@ -213,6 +213,20 @@ _CALCS = (
             choices=_CONTAMINATION, group=_O),
          _f("reliability", "number", "Reliability in percent.", label="Reliability", unit="%",
             default=90.0, minimum=90, maximum=99.95, group=_O),
+         _f("duty_cycle", "document", "Duty cycle instead of the loads and speed: [[step]] tables of "
+            "fx, fy, fz, mx, my, speed and time share (the shares sum to 1) as TOML or JSON, posted as "
+            "text; never a file path. Gives the combined life.", label="Duty cycle",
+            option="--duty-cycle", group=_L),
+         _f("ambient", "text", "With temperature auto: the ambient (default 20 degC).",
+            label="Ambient temperature", unit="degC", group="temperature auto"),
+         _f("thermal_resistance", "thermal_resistance", "With temperature auto: bearing to ambient, "
+            "e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).", label="Thermal resistance",
+            unit="K/W", minimum=0, exclusive=True, group="temperature auto"),
+         _f("lubrication", "choice", "With temperature auto: the SKF model's lubrication method "
+            "(default oil-jet).", label="Lubrication method", choices=("oil-jet", "oil-air", "grease"),
+            group="temperature auto"),
+         _f("skf_constants", "text", "With temperature auto: SKF constants R1,R2,R3,S1,S2,S3 "
+            "(angular contact).", label="SKF constants", group="temperature auto"),
          BEARING, *GEOMETRY, *MOUNTING)),
     Calculation(
         "load-distribution", ("load-distribution",), "Load distribution and stiffness",
@@ -436,8 +450,8 @@ _CALCS = (
          _f("lubrication", "choice", "SKF model: oil-jet | oil-air | grease (oil bath: refused, its "
             "drag loss needs SKF's V_M chart).", label="Lubrication method", default="oil-jet",
             choices=("oil-jet", "oil-air", "grease", "oil-bath"), group=_O),
-         _f("skf_constants", "text", "SKF geometry constants R1,R2,R3,S1,S2,S3 of the series (needed "
-            "for angular-contact bearings).", label="SKF constants", group="heat"),
+         _f("skf_constants", "text", "SKF geometry constants R1,R2,R3,S1,S2,S3 in place of SKF's tables "
+            "(angular contact other than 40 deg needs them).", label="SKF constants", group="heat"),
          _f("ambient", "text", "Ambient temperature, e.g. '20 degC'.", label="Ambient temperature",
             unit="degC", default="20 degC", group="heat"),
          _f("thermal_resistance", "thermal_resistance", "Bearing to ambient, e.g. '0.5 K/W' "
@@ -455,6 +469,9 @@ _CALCS = (
          _f("max_temperature", "text", "Safe limit: no steady state below it is thermal runaway, "
             "e.g. '150 degC'.", label="Temperature limit", unit="degC", default="150 degC",
             group="heat"),
+         _f("reference_speed", "flag", "Also ISO 15312's thermal reference speed of the bearing by the "
+            "SKF model (JSON: thermal_reference_speed_rpm).", label="Thermal reference speed",
+            default=False, group="heat"),
          BEARING),
         combine="broadcast"),
     Calculation(

@@ -1,18 +1,22 @@
-"""The ``temperature`` document: the steady temperature of a bearing (issue 24).
+"""The ``temperature`` document: the steady temperature of a bearing (issue 24), and the thermal-balance
+inputs ``film`` and ``life`` read alike with their temperature ``auto``.
 
 The temperature where the SKF friction power at the viscosity of that temperature equals the heat
 carried away (:func:`bearinglab.thermal.thermal_balance`): to the ambient through a thermal resistance
 (or ISO 15312's reference heat flow), and by an oil flow. The oil is an ISO VG grade with its viscosity
 index or its viscosity at 100 degC. Where no steady state exists below the safe limit, a
-thermal-runaway warning and no number. The command line (``bearinglab temperature``) and the web compute
-it here alike; ``film`` with its temperature ``auto`` takes the same oil and heat inputs.
+thermal-runaway warning and no number. With ``reference_speed``, also ISO 15312's thermal reference
+speed of the bearing (:func:`bearinglab.thermal.thermal_reference_speed`). The command line
+(``bearinglab temperature``) and the web compute it here alike.
 
 Functions
 ---------
-document                  Parsed request -> the JSON document ``bearinglab temperature --json`` prints
+document                   Parsed request -> the JSON document ``bearinglab temperature --json`` prints
 oil_reference_viscosities  an ISO VG oil's nu40 and nu100, from its grade and VI or nu100
-heat_options              the heat-balance inputs in SI, the notes on assumed values, their echo
-skf_options               the SKF model's lubrication method and constants for a bearing
+heat_options               the heat-balance inputs in SI, the notes on assumed values, their echo
+skf_options                the SKF model's lubrication method and constants for a bearing
+steady_temperature         temperature ``auto``: the thermal balance of each case, its temperature and
+                           the oil's viscosity there (thermal runaway refused in one line)
 """
 
 from __future__ import annotations
@@ -22,6 +26,7 @@ from .._io import json_value
 from ..errors import InputError
 from ._failures import failures
 from ._inputs import (
+    HOTTEST_OIL_DEGC,
     inputs_echo,
     lubricant_viscosity,
     parse_speeds,
@@ -29,7 +34,7 @@ from ._inputs import (
     resolve_bearing,
 )
 
-__all__ = ["document", "heat_options", "oil_reference_viscosities", "skf_options"]
+__all__ = ["document", "heat_options", "oil_reference_viscosities", "skf_options", "steady_temperature"]
 
 #: Defaults of the oil's properties when not given: typical mineral-oil values, estimates labelled as such
 #: in the output (density 0.86-0.89 g/cm^3, specific heat 1.8-2.1 kJ/(kg K) between 20 and 100 degC).
@@ -37,25 +42,25 @@ DEFAULT_DENSITY = 870.0
 DEFAULT_HEAT_CAPACITY = 1950.0
 _ZERO_C = 273.15
 _LUBRICATIONS = ("oil-jet", "oil-air", "grease")
+_HOTTEST = HOTTEST_OIL_DEGC  # the sanity bound on the balance's temperatures (issue 24)
 
 
 def oil_reference_viscosities(oil, viscosity_index, viscosity_100):
-    """The reference viscosities of an ISO VG oil, from the shared oil options.
+    """(nu40, nu100 [m^2/s], description, inputs) of an ISO VG oil, by the shared oil options.
 
     Parameters
     ----------
     oil : str
-        The grade as written ('VG32', 'ISO VG 68'); None is refused (the balance needs the grade).
+        The ISO VG grade as typed ('VG32').
     viscosity_index : float or None
-        The oil's VI (default 95, a mineral oil, said so in the description).
+        The oil's viscosity index (default 95, assumed).
     viscosity_100 : str or None
-        nu at 100 degC as written ('8.7 cSt'), instead of the VI.
+        Its viscosity at 100 degC as typed, instead of the index.
 
     Returns
     -------
     tuple
-        ``(nu40, nu100, description, inputs)``: the viscosities at 40 and 100 degC [m^2/s], one line
-        saying how they were obtained, and the oil inputs for the document's ``inputs``.
+        ``(nu40, nu100, description, inputs)``.
     """
     from ..ratings import lubrication
 
@@ -76,24 +81,21 @@ def oil_reference_viscosities(oil, viscosity_index, viscosity_100):
 
 def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature, heat_capacity, density_text,
                  max_temperature):
-    """The heat-balance inputs in SI, the notes on assumed values and the inputs echoed.
+    """The heat-balance options in SI, the notes on assumed values and the inputs echoed.
 
     Parameters
     ----------
     b : BallBearing
-        The bearing (unused by the checks; kept for the callers' order).
-    ambient, max_temperature : str
-        Temperatures as written ('20 degC'); the limit must lie above the ambient.
-    thermal_resistance, oil_flow, oil_inlet_temperature, heat_capacity, density_text : str or None
-        As written ('0.5 K/W', '0.5 l/min', '40 degC', '1950 J/(kg*K)', '870 kg/m^3'); the last
-        three go with an oil flow (density and heat capacity default to a mineral oil's, an estimate).
+        The bearing.
+    ambient, thermal_resistance, oil_flow, oil_inlet_temperature, heat_capacity, density_text, \
+max_temperature : str or None
+        The inputs as typed ('20 degC', '0.5 K/W', '0.5 l/min', ...).
 
     Returns
     -------
     tuple
-        ``(options, notes, inputs)``: the keyword arguments of
-        :func:`bearinglab.thermal.thermal_balance` (with ``ambient`` [K]), the notes on assumed values,
-        and the inputs for the document.
+        ``(options, notes, inputs)``: the keyword options of :func:`bearinglab.thermal.thermal_balance`
+        (with ``ambient``), the notes on assumed values, the inputs echoed.
     """
     from .. import thermal
     from ..units import parse_quantity
@@ -102,6 +104,8 @@ def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature
     t_max = parse_temperature(max_temperature, "max-temperature")
     if not t_max > ta:
         raise InputError(f"max-temperature must be above the ambient [degC], got {t_max - _ZERO_C:g} degC")
+    if not t_max <= _ZERO_C + _HOTTEST:
+        raise InputError(f"max-temperature must be <= {_HOTTEST:g} [degC], got {t_max - _ZERO_C:g} degC")
     notes, inputs = [], {"ambient_degC": ta - _ZERO_C, "max_temperature_degC": t_max - _ZERO_C}
     conductance = None
     if thermal_resistance is not None:
@@ -130,31 +134,33 @@ def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature
         inputs.update(oil_flow_l_min=q * 6e4, density_kg_m3=rho, oil_heat_capacity_J_kgK=cp)
         if oil_inlet_temperature is not None:
             t_in = parse_temperature(oil_inlet_temperature, "oil-inlet-temperature")
+            if not t_in <= _ZERO_C + _HOTTEST:
+                raise InputError(f"oil-inlet-temperature must be <= {_HOTTEST:g} [degC], got {t_in - _ZERO_C:g} degC")
             inputs["oil_inlet_temperature_degC"] = t_in - _ZERO_C
-    elif oil_inlet_temperature is not None or heat_capacity is not None:
-        raise InputError("oil-flow: --oil-inlet-temperature and --oil-heat-capacity describe an oil flow; give "
-                         "--oil-flow")
+    elif oil_inlet_temperature is not None or heat_capacity is not None or density_text is not None:
+        raise InputError("oil-flow: --oil-inlet-temperature, --oil-heat-capacity and --density describe an oil "
+                         "flow; give --oil-flow")
     return {"ambient": ta, "conductance": conductance, "oil_flow_conductance": g_oil,
             "oil_inlet_temperature": t_in, "maximum_temperature": t_max}, notes, inputs
 
 
 def skf_options(b, lubrication, constants):
-    """The SKF model's options for the bearing: its lubrication method and its geometry constants.
+    """The SKF model's options for the bearing: its lubrication method and, for angular contact, the
+    constants given (else SKF's single-row ones, for 40 deg bearings only: others refused in one line).
 
     Parameters
     ----------
     b : BallBearing
-        The bearing; an angular-contact one needs ``constants`` (its table is not in this build).
+        The bearing.
     lubrication : str
-        oil-jet, oil-air or grease (oil-bath is refused: its drag loss needs SKF's V_M chart).
+        oil-jet, oil-air or grease.
     constants : str or None
-        'R1,R2,R3,S1,S2,S3' as written.
+        R1,R2,R3,S1,S2,S3 as typed.
 
     Returns
     -------
     dict
-        Keyword arguments of :func:`bearinglab.thermal.thermal_balance` (``lubrication`` and, where
-        given, ``constants``).
+        ``lubrication`` and, where given, ``constants`` (:class:`bearinglab.friction.SKFConstants`).
     """
     from .. import friction
 
@@ -173,11 +179,65 @@ def skf_options(b, lubrication, constants):
             raise InputError(f"skf-constants must be six numbers >= 0, R1,R2,R3,S1,S2,S3, got {constants!r}")
         r1, r2, r3, s1, s2, s3 = values
         out["constants"] = friction.SKFConstants(r1, r2, s1, s2, r3, s3)
-    elif b.type != "radial":
-        raise InputError(f"skf-constants: {b.designation!r} is an angular-contact bearing, whose SKF geometry "
-                         "constants are not tabulated in this build; give --skf-constants R1,R2,R3,S1,S2,S3 from "
-                         "SKF's catalogue")
+    elif b.type != "radial":  # SKF's table covers single-row 40 deg bearings; others are refused in one line
+        friction.angular_contact_constants(b.contact_angle)
     return out
+
+
+def steady_temperature(b, loads, w, oil, viscosity, viscosity_index, viscosity_100, ambient, thermal_resistance,
+                       lubrication, skf_constants, dynamic_viscosity=None):
+    """Temperature ``auto``: the steady temperature of each case (:func:`bearinglab.thermal.thermal_balance`).
+
+    Parameters
+    ----------
+    b : BallBearing
+        The bearing.
+    loads : sequence of float
+        (F_x, F_y, F_z, M_x, M_y) [N, N m]; the SKF model takes no tilting moment.
+    w : float or array_like
+        Inner-ring speed(s). [rad/s]
+    oil, viscosity_index, viscosity_100 : str, float, str or None
+        The oil by grade (its viscosity follows the temperature).
+    viscosity, dynamic_viscosity : str or None
+        Refused when given: a fixed viscosity does not follow the temperature.
+    ambient, thermal_resistance, lubrication, skf_constants : str or None
+        The heat-balance inputs as typed (ambient default 20 degC).
+
+    Returns
+    -------
+    tuple
+        ``(result, how, inputs, notes)``: the :class:`~bearinglab.thermal.ThermalBalance` (its
+        ``temperature`` [K] and ``kinematic_viscosity`` [m^2/s] per case, its own ``warnings``), the
+        oil in words, the inputs echoed (``temperature: "auto"`` and ``bearing_temperature_degC``) and
+        the notes on assumed values.
+    """
+    import math
+
+    import numpy as np
+
+    from .. import thermal
+
+    if viscosity is not None or dynamic_viscosity is not None:
+        raise InputError("temperature: 'auto' needs the oil by grade (--oil VG32, with --viscosity-index or "
+                         "--viscosity-100), whose viscosity follows the temperature; not --viscosity")
+    if loads[3] or loads[4]:
+        raise InputError("temperature: 'auto' takes the SKF friction model, which has no tilting moment; give "
+                         "no --mx/--my")
+    nu40, nu100, how, oil_inputs = oil_reference_viscosities(oil, viscosity_index, viscosity_100)
+    heat, notes, heat_inputs = heat_options(b, ambient or "20 degC", thermal_resistance, None, None, None,
+                                            None, "150 degC")
+    r = thermal.thermal_balance(b, math.hypot(loads[0], loads[1]), abs(loads[2]), w, heat.pop("ambient"), nu40,
+                                nu100, **heat, **skf_options(b, lubrication, skf_constants))
+    if not np.all(r.steady):
+        from ..units import RPM
+
+        bad = float(np.atleast_1d(w)[~np.atleast_1d(r.steady)][0]) / RPM
+        raise InputError(f"temperature: no steady temperature below 150 degC at {bad:g} rpm (thermal runaway); "
+                         "give the temperature, or more cooling (--thermal-resistance)")
+    t = np.atleast_1d(r.temperature)
+    inputs = {**oil_inputs, **heat_inputs, "temperature": "auto",
+              "bearing_temperature_degC": (t - 273.15).tolist() if t.size > 1 else float(t[0] - 273.15)}
+    return r, how, inputs, notes
 
 
 def radial_axial(radial_load, axial_load):
@@ -237,11 +297,17 @@ def _document(parsed, bearing_file, catalog):
                                             text("oil_heat_capacity"), text("density"),
                                             text("max_temperature", "150 degC"))
     lubrication = v.get("lubrication", "oil-jet")
-    r = thermal.thermal_balance(b, fr, fa, w, heat.pop("ambient"), nu40, nu100, **heat,
-                                **skf_options(b, lubrication, text("skf_constants")))
+    skf = skf_options(b, lubrication, text("skf_constants"))
+    r = thermal.thermal_balance(b, fr, fa, w, heat.pop("ambient"), nu40, nu100, **heat, **skf)
     notes = list(dict.fromkeys([*notes, *r.warnings]))
+    extra = {}
+    if v.get("reference_speed"):  # ISO 15312 (bearinglab.thermal.thermal_reference_speed); one per bearing
+        ref = thermal.thermal_reference_speed(b, **{k: x for k, x in skf.items() if k == "constants"})
+        extra = {"thermal_reference_speed_rpm": json_value(float(ref.speed / RPM)),
+                 "reference_heat_flow_W": json_value(float(ref.reference_heat_flow))}
+        notes = list(dict.fromkeys([*notes, *ref.warnings]))
     notes += [n for n in dict.fromkeys(_catalog.provenance_notes(b)) if n not in notes]
-    docs = [_doc(r, k, w.size) | {"inputs": inputs_echo(b, radial_load_N=fr, axial_load_N=fa,
+    docs = [_doc(r, k, w.size) | extra | {"inputs": inputs_echo(b, radial_load_N=fr, axial_load_N=fa,
                                                          speed_rpm=float(w[k]) / RPM,
                                                          lubrication=lubrication, **oil_inputs,
                                                          lubricant=how, **heat_inputs),

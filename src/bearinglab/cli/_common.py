@@ -19,8 +19,9 @@ Lubricant        ViscosityOpt, OilOpt, TemperatureOpt, ViscosityIndexOpt, Viscos
 The input readers (the bearing's resolution, inputs_echo, the speeds, loads, lengths and the lubricant)
 are :mod:`bearinglab.calculations._inputs`, shared with the calculations' documents, and imported
 here; request_message words a calculation's RequestError for the command line, fields_given collects
-a command's options as the request of its calculation. The command modules import these; none of them imports the package ``bearinglab.cli`` itself, so the
-application is built on import without a cycle. The physics (numpy, scipy, pint, matplotlib) is imported
+a command's options as the request of its calculation, run_calculation computes a calculation's document
+from them. The command modules import these; none of them imports the package ``bearinglab.cli`` itself,
+so the application is built on import without a cycle. The physics (numpy, scipy, pint, matplotlib) is imported
 inside the functions that compute, never at the top of a command module: ``bearinglab --help`` builds
 every command without it (``tests/cli/test_cli_startup.py``).
 """
@@ -40,7 +41,8 @@ from rich.cells import cell_len
 from rich.markup import escape
 from rich.table import Table
 
-from ..calculations._inputs import (  # noqa: F401 -- the commands import these from here
+from ..calculations import _inputs
+from ..calculations._inputs import (  # noqa: F401 -- the commands import them from here
     LubricantViscosity,
     choice,
     five_loads,
@@ -53,7 +55,6 @@ from ..calculations._inputs import (  # noqa: F401 -- the commands import these 
     parse_viscosity,
     speed_size,
 )
-from ..calculations._inputs import resolve_bearing as _resolve_bearing
 from ..errors import InputError
 from ._console import Console, needs_spelling
 
@@ -89,10 +90,10 @@ ChunkSizeOpt = Annotated[int | None, typer.Option("--chunk-size", help="Cases pe
 
 def resolve_bearing(*args, **kwargs) -> BallBearing:
     """The bearing named, read from a file, or given inline (:func:`bearinglab.calculations._inputs.
-    resolve_bearing`); its provenance notes go out with the command's output."""
+    resolve_bearing`); its provenance notes go with the command's output (:func:`add_notes`)."""
     from .. import catalog as _catalog
 
-    b = _resolve_bearing(*args, **kwargs)
+    b = _inputs.resolve_bearing(*args, **kwargs)
     add_notes(_catalog.provenance_notes(b))
     return b
 
@@ -270,17 +271,6 @@ def table(title, columns, rows, *, caption=None):
                                   caption if k == len(cells) else None, [False, True]))
 
 
-def request_message(exc):
-    """A :class:`bearinglab.calculations.RequestError` (or RunFailure) worded for the command line: the
-    field at fault by its long option without the dashes, as every message of the command line opens
-    (``monte-carlo must be ...``), the other fields it names by their option (``--shaft-fit``)."""
-    def option(name):
-        return "--" + name.replace("_", "-")
-
-    text = exc.template.replace("{name}", option(exc.parameter)[2:] if exc.parameter else "request")
-    return re.sub(r"\{field:([a-z0-9_]+)\}", lambda m: option(m.group(1)), text)
-
-
 def fields_given(name, values, **renamed):
     """The values of a command's options that are fields of calculation ``name``, as typed (an option
     not given, None, is left out): the ``given`` of :func:`bearinglab.calculations.parse`.
@@ -438,3 +428,31 @@ TemperatureOpt = Annotated[str | None, typer.Option("--temperature", help="Opera
 ViscosityIndexOpt = Annotated[float | None, typer.Option("--viscosity-index", help="The oil's viscosity index (default 95, a mineral oil).", rich_help_panel=_LUBRICANT)]
 Viscosity100Opt = Annotated[str | None, typer.Option("--viscosity-100", help="The oil's viscosity at 100 degC, e.g. '8.7 cSt' (instead of --viscosity-index).", rich_help_panel=_LUBRICANT)]
 
+
+# ----------------------------------------------------------------------------- calculations (issue 22)
+def request_message(exc):
+    """A :class:`bearinglab.calculations.RequestError` in the command line's words: the field at fault
+    opens the message as its option without dashes (``speed must be ...``, as every message of the
+    command line), and the options it names elsewhere carry their dashes (``give --fx or --radial-load``)."""
+    def option(name):
+        return "--" + name.replace("_", "-")
+
+    template, parameter = exc.template, exc.parameter or "request"
+    if template.startswith("{name}"):
+        template = parameter.replace("_", "-") + template[len("{name}"):]
+    text = template.replace("{name}", option(parameter))
+    return re.sub(r"\{field:([a-z0-9_]+)\}", lambda m: option(m.group(1)), text)
+
+
+def run_calculation(name, given, document, **options):
+    """Compute calculation ``name`` from the options as typed (field name -> value; None: not given)
+    with its ``document`` function, the one the web runs (:mod:`bearinglab.calculations`); a refused
+    input is an InputError in the command line's words (:func:`request_message`)."""
+    from ..calculations import parse
+    from ..calculations.fields import RequestError
+
+    given = {k: v for k, v in given.items() if v is not None}
+    try:  # typer has read the options; the calculation checks them by the command line's own rules
+        return document(parse(name, given, check=False), **options)
+    except RequestError as exc:
+        raise InputError(request_message(exc)) from None

@@ -5,6 +5,7 @@ Options       ShaftFitOpt, HousingFitOpt, ShaftInterferenceOpt, HousingInterfere
               ToleranceClassOpt, ClearanceClassOpt, ShaftRoughnessOpt, HousingRoughnessOpt
 parse_temperature   a temperature option [K] ('60 degC', '333 K'; a bare number is degC)
 mounting_options    decorator: adds the options to a command (load-distribution, life, high-speed, ...)
+given_options       inside such a command: its mounting options as typed (for a calculation's fields)
 operating_bearing   inside such a command: the bearing at its probable operating clearance, and the JSON
 mounted_set         the options of bearing-set applied to its bearings (MountedSet)
 MountedInputs       the parsed options: tolerance limits, Mounting, Conditions, unmounted clearance range
@@ -20,16 +21,18 @@ from __future__ import annotations
 import contextvars
 import functools
 import inspect
-from typing import Annotated, NamedTuple
+from typing import Annotated
 
 import typer
 
-from ..calculations._mounting import (  # noqa: F401 -- shared with the calculations
+from ..calculations import _mounting as _calc_mounting
+from ..calculations._mounting import (  # noqa: F401 -- the commands import them from here
     MountedInputs,
+    MountedSet,
     mounted_inputs,
+    mounted_set,
     parse_temperature,
 )
-from ..errors import InputError
 
 __all__: list[str] = []  # private to the command line
 
@@ -52,51 +55,6 @@ OuterTempOpt = Annotated[str | None, typer.Option("--outer-ring-temperature", he
 BallTempOpt = Annotated[str | None, typer.Option("--ball-temperature", help="Default: the mean of the rings.", rich_help_panel=_TEMP)]
 ShaftTempOpt = Annotated[str | None, typer.Option("--shaft-temperature", help="Default: the inner ring's.", rich_help_panel=_TEMP)]
 HousingTempOpt = Annotated[str | None, typer.Option("--housing-temperature", help="Default: the outer ring's.", rich_help_panel=_TEMP)]
-
-_UM, _MM = 1e-6, 1e-3
-
-
-class MountedSet(NamedTuple):
-    """A bearing set with its mounting: the bearings at their operating clearance and the interference."""
-
-    bearings: list
-    interference: float
-    """The set's axial interference in operation. [m]"""
-    clearance: float
-    """The probable operating diametral clearance of each bearing. [m]"""
-    echo: dict
-    warnings: list
-
-
-def mounted_set(bearings, assembled_interference, arrangement, spacing, speed, options):
-    """The mounting options of ``bearing-set`` applied to its (like) bearings; None without options."""
-    if all(v is None for v in options.values()):
-        return None
-    if len({b.designation for b in bearings}) > 1:
-        raise InputError("bearing: the mounting options need one bearing type for the whole set")
-    from ..mounting import chain, preload
-
-    b = bearings[0]
-    inp = mounted_inputs(b, **options, speed=speed, require=True)
-    r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
-    p = r.probable
-    reduction = float(p.fit_reduction + p.thermal_reduction + p.centrifugal_reduction)
-    c = inp.conditions
-    t_s = c.inner_temperature if c.shaft_temperature is None else c.shaft_temperature
-    t_h = c.outer_temperature if c.housing_temperature is None else c.housing_temperature
-    interference, clearance = preload.operating_interference(
-        b, assembled_interference, reduction, arrangement_kind=arrangement, spacing=spacing,
-        shaft_temperature=t_s, housing_temperature=t_h, shaft_expansion=inp.mounting.shaft.thermal_expansion,
-        housing_expansion=inp.mounting.housing.thermal_expansion)
-    new = [x.replace(radial_clearance=clearance) for x in bearings]
-    echo = dict(inp.echo, unmounted_clearance_um=inp.unmounted[0] / _UM,
-                clearance_reduction_um=reduction / _UM, fit_reduction_um=float(p.fit_reduction) / _UM,
-                thermal_reduction_um=float(p.thermal_reduction) / _UM,
-                centrifugal_reduction_um=float(p.centrifugal_reduction) / _UM,
-                assembled_interference_um=assembled_interference / _UM, operating_interference_um=interference / _UM)
-    notes = [n for n in r.warnings if "negative" not in n]  # an angular set runs preloaded by design
-    return MountedSet(new, interference, clearance, echo, notes)
-
 
 # ----------------------------------------------------------------------------- the options on any command
 # name -> option type: every command that takes a bearing takes these through ``mounting_options``
@@ -134,24 +92,13 @@ def mounting_options(command):
     return wrapper
 
 
+def given_options():
+    """The mounting options of the running command as typed (name -> text; None: not given)."""
+    return dict(_GIVEN.get() or {})
+
+
 def operating_bearing(bearing, speed=0.0):
     """The bearing at its probable operating clearance under the command's mounting options, and the
-    JSON entries to add (``operating_clearance_um`` and the range); ``(bearing, {})`` without options."""
-    given = {k: v for k, v in (_GIVEN.get() or {}).items() if v is not None}
-    if not given:
-        return bearing, {}
-    from ..mounting import chain
-
-    inp = mounted_inputs(bearing, **given, speed=float(speed), require=True)
-    r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
-    e = float(r.probable.operating_clearance)
-    if not e > 0:
-        raise InputError(f"operating clearance must be > 0 [um] for this model, got {e / _UM:.3g} um (the fits and "
-                         "temperatures preload the bearing); give a larger --clearance-class, or model a "
-                         "preloaded pair with bearing-set")
-    doc = {"operating_clearance_um": e / _UM,
-           "operating_clearance_min_um": float(r.least.operating_clearance) / _UM,
-           "operating_clearance_max_um": float(r.largest.operating_clearance) / _UM,
-           "unmounted_clearance_um": [inp.unmounted[0] / _UM, inp.unmounted[1] / _UM],
-           "mounting": inp.echo, "mounting_warnings": list(r.warnings)}
-    return bearing.replace(radial_clearance=e), doc
+    JSON entries to add (``operating_clearance_um`` and the range); ``(bearing, {})`` without options
+    (:func:`bearinglab.calculations._mounting.operating_bearing`)."""
+    return _calc_mounting.operating_bearing(bearing, speed, _GIVEN.get())

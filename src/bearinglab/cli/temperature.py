@@ -25,6 +25,7 @@ from ._common import (
     RadialLoadOpt,
     Viscosity100Opt,
     ViscosityIndexOpt,
+    console,
     emit_json,
     fields_given,
     print_warnings,
@@ -42,7 +43,8 @@ HeatCapacityOpt = Annotated[str | None, typer.Option("--oil-heat-capacity", help
 OilDensityOpt = Annotated[str | None, typer.Option("--density", help="Oil density (default 870 kg/m^3, a mineral oil: an estimate).", rich_help_panel=_HEAT)]
 MaxTemperatureOpt = Annotated[str, typer.Option("--max-temperature", help="Safe limit: no steady state below it is thermal runaway, e.g. '150 degC'.", rich_help_panel=_HEAT)]
 LubricationOpt = Annotated[str, typer.Option("--lubrication", help="SKF model: oil-jet (default) | oil-air | grease (oil bath: refused, its drag loss needs SKF's V_M chart).", rich_help_panel=_HEAT)]
-ConstantsOpt = Annotated[str | None, typer.Option("--skf-constants", help="SKF geometry constants R1,R2,R3,S1,S2,S3 of the series (needed for angular-contact bearings), e.g. '5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12'.", rich_help_panel=_HEAT)]
+ReferenceSpeedOpt = Annotated[bool, typer.Option("--reference-speed", help="Also ISO 15312's thermal reference speed of the bearing by the SKF model (JSON: thermal_reference_speed_rpm).", rich_help_panel=_HEAT)]
+ConstantsOpt = Annotated[str | None, typer.Option("--skf-constants", help="SKF geometry constants R1,R2,R3,S1,S2,S3 in place of SKF's tables (angular contact other than 40 deg needs them), e.g. '5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12'.", rich_help_panel=_HEAT)]
 
 
 def temperature(
@@ -53,6 +55,7 @@ def temperature(
     ambient: AmbientOpt = "20 degC", thermal_resistance: ResistanceOpt = None, oil_flow: OilFlowOpt = None,
     oil_inlet_temperature: OilInletOpt = None, oil_heat_capacity: HeatCapacityOpt = None,
     density_text: OilDensityOpt = None, max_temperature: MaxTemperatureOpt = "150 degC",
+    reference_speed: ReferenceSpeedOpt = False,
     bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
     json_out: JsonFlag = False,
 ):
@@ -74,6 +77,11 @@ def temperature(
             _f(d["viscosity_mm2_s"], ".3g"), _f(d["kappa"], ".3g"), _f(d["friction_moment_Nmm"], ".4g"),
             _f(d["friction_power_W"], ".4g"), str(d["iterations"])] for d in docs],
           caption="P: friction power = heat carried away; — where no steady state exists (runaway)")
+    if "reference_heat_flow_W" in docs[0]:  # --reference-speed: one value per bearing
+        n_r = docs[0]["thermal_reference_speed_rpm"]
+        console.print(f"Thermal reference speed (ISO 15312, SKF model): "
+                      f"{'none found' if n_r is None else format(n_r, '.0f') + ' rpm'} at "
+                      f"{docs[0]['reference_heat_flow_W']:.4g} W", highlight=False)
     print_warnings(docs[0]["warnings"])
 
 
