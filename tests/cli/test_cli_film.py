@@ -76,17 +76,17 @@ def test_table_fits_80_columns(monkeypatch):
 
 
 @pytest.mark.parametrize("extra, message", [
-    (["--dynamic-viscosity", "-1 Pa*s"], "dynamic-viscosity must be "),
-    (["--dynamic-viscosity", "1e9 Pa*s"], "dynamic-viscosity must be "),
+    (["--dynamic-viscosity", "-1 Pa*s"], "dynamic-viscosity must be in"),
+    (["--dynamic-viscosity", "1e9 Pa*s"], "dynamic-viscosity must be in"),
     (["--viscosity", "-5 cSt"], "viscosity must be > 0"),
-    (["--viscosity", "20 cSt", "--density", "-870 kg/m^3"], "density must be "),
-    (["--viscosity", "20 cSt", "--density", "87000 kg/m^3"], "density must be "),
+    (["--viscosity", "20 cSt", "--density", "-870 kg/m^3"], "density must be in"),
+    (["--viscosity", "20 cSt", "--density", "87000 kg/m^3"], "density must be in"),
     (["--oil", "VG33", "--temperature", "60 degC"], "oil must be an ISO VG grade"),
-    (["--dynamic-viscosity", "13 cP", "--roughness", "-0.1 um"], "roughness must be 0 ... 10"),
-    (["--dynamic-viscosity", "13 cP", "--roughness", "50 um"], "roughness must be 0 ... 10"),
+    (["--dynamic-viscosity", "13 cP", "--roughness", "-0.1 um"], "roughness must be >= 0"),
+    (["--dynamic-viscosity", "13 cP", "--roughness", "50 um"], "roughness must be in"),
     (["--dynamic-viscosity", "13 cP", "--roughness", "0 um"], "roughness must not be 0"),
     (["--dynamic-viscosity", "13 cP", "--pressure-viscosity-coefficient", "-2e-8 m^2/N"],
-     "pressure-viscosity-coefficient must be "),
+     "pressure-viscosity-coefficient must be in"),
     (["--dynamic-viscosity", "13 cP", "--loads-at", "now"], "loads-at must be one of"),
     (["--dynamic-viscosity", "13 cP", "--viscosity", "20 cSt"], "dynamic-viscosity: give"),
 ])

@@ -67,14 +67,14 @@ def test_table_fits_80_columns(monkeypatch):
 
 @pytest.mark.parametrize("extra, message", [
     (["--oil", "VG33"], "oil must be an ISO VG grade"),
-    (["--thermal-resistance", "-1 K/W"], "thermal-resistance must be "),
-    (["--oil-flow", "-1 l/min"], "oil-flow must be "),
-    (["--oil-flow", "1 l/min", "--density", "-870 kg/m^3"], "density must be "),
-    (["--oil-flow", "1 l/min", "--oil-heat-capacity", "-1 J/(kg*K)"], "oil-heat-capacity must be "),
+    (["--thermal-resistance", "-1 K/W"], "thermal-resistance must be in"),
+    (["--oil-flow", "-1 l/min"], "oil-flow must be in"),
+    (["--oil-flow", "1 l/min", "--density", "-870 kg/m^3"], "density must be in"),
+    (["--oil-flow", "1 l/min", "--oil-heat-capacity", "-1 J/(kg*K)"], "oil-heat-capacity must be in"),
     (["--oil-inlet-temperature", "40 degC"], "oil-flow: --oil-inlet-temperature"),
     (["--lubrication", "oil-bath"], "lubrication: oil-bath is not covered"),
     (["--max-temperature", "10 degC"], "max-temperature must be above the ambient"),
-    (["--viscosity-index", "900"], "viscosity-index must be "),
+    (["--viscosity-index", "900"], "viscosity-index must be in"),
 ])
 def test_bad_input_exits_2_with_one_line(capsys, extra, message):
     args = [*BASE, *extra]
