@@ -463,7 +463,33 @@ def run(parsed):
                              "{name}: " + message.removeprefix("bearing: ")) from None
     if name == "catalog-search":
         return _search_document(parsed)
+    if name in _NATIVE:
+        return _native(parsed)
     return _command_document(parsed)
+
+
+#: the calculations computed by a module of this package (its ``document(parsed)``), name -> module
+_NATIVE = {"frequencies": "frequencies", "stand-load": "stand", "axial-angle": "stand", "high-speed": "high_speed"}
+
+
+def _native(parsed):
+    """The document of a native calculation; its failures as RunFailure (no command line involved)."""
+    import importlib
+
+    from .._io import json_value
+    from ..errors import ConvergenceError
+
+    module = importlib.import_module(f".{_NATIVE[parsed.calculation.name]}", __package__)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)
+            return json_value(module.document(parsed))  # NaN as null, numpy as plain numbers
+    except RequestError:
+        raise
+    except ConvergenceError as exc:  # no physical solution is the input's fault; else the solver's
+        raise RunFailure(None, None, exc.summary, "input" if exc.physical else "convergence") from None
+    except InputError as exc:
+        raise RunFailure(None, None, str(exc)) from None
 
 
 #: the calculations whose command draws a figure, and the option it takes
@@ -483,6 +509,8 @@ def figure_svg(parsed):
     str
     """
     name = parsed.calculation.name
+    if name == "high-speed":
+        return _high_speed_svg(parsed)
     if name not in _PLOTS:
         return ""
     with tempfile.TemporaryDirectory(prefix="bearinglab-") as tmp:
@@ -494,5 +522,24 @@ def figure_svg(parsed):
         if not path.exists():
             return ""
         svg = path.read_text(encoding="utf-8")
+    start = svg.find("<svg")
+    return svg[start:] if start >= 0 else ""
+
+
+def _high_speed_svg(parsed):
+    """The high-speed map drawn from the request's solve (:func:`.high_speed.figure`), as SVG text; ''
+    for fewer than two thrusts or a request that fails."""
+    from ..errors import ConvergenceError
+    from . import high_speed
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)
+            fig, _ = high_speed.figure(high_speed.compute(parsed))
+    except (InputError, ConvergenceError):  # a RequestError too: the document says why
+        return ""
+    out = io.StringIO()
+    fig.savefig(out, format="svg")
+    svg = out.getvalue()
     start = svg.find("<svg")
     return svg[start:] if start >= 0 else ""
