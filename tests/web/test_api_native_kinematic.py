@@ -20,3 +20,10 @@ def test_a_failure_of_the_calculation_is_422_naming_the_parameter(client, endpoi
         body = r.json()
         assert body["parameter"] == parameter and body["error"] == "input", body
         assert words in body["detail"] and "--" not in body["detail"], body
+
+
+def test_a_friction_failure_is_422_naming_the_parameter(client):
+    query = {"bearing": "101", "radial_load": "10 N", "model": "two-term"}
+    r = client.get("/api/friction", params=query)
+    assert r.status_code == 422, r.text
+    assert r.json()["parameter"] == "f0" and r.json()["detail"].startswith("f0: the two-term model needs")

@@ -469,7 +469,8 @@ def run(parsed):
 
 
 #: the calculations computed by a module of this package (its ``document(parsed)``), name -> module
-_NATIVE = {"frequencies": "frequencies", "stand-load": "stand", "axial-angle": "stand", "high-speed": "high_speed"}
+_NATIVE = {"frequencies": "frequencies", "stand-load": "stand", "axial-angle": "stand", "high-speed": "high_speed",
+           "friction": "friction_torque"}
 
 
 def _native(parsed):
