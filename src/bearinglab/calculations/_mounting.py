@@ -2,6 +2,7 @@
 and checked (moved from the command line's ``cli._mounting``, which adds them as options).
 
 parse_temperature   a temperature [K] ('60 degC', '333 K'; a bare number is degC)
+operating_clearance the operating clearance under the mounting inputs, as JSON entries (a preload allowed)
 operating_bearing   the bearing at its probable operating clearance under the mounting inputs, and the JSON
 mounted_set         the mounting inputs of bearing-set applied to its bearings (MountedSet)
 MountedInputs       the parsed inputs: tolerance limits, Mounting, Conditions, unmounted clearance range
@@ -252,25 +253,40 @@ def mounted_set(bearings, assembled_interference, arrangement, spacing, speed, o
     return MountedSet(new, interference, clearance, echo, notes)
 
 
-def operating_bearing(bearing, given, speed=0.0):
-    """The bearing at its probable operating clearance under the mounting inputs ``given`` (field name ->
-    text as typed), and the JSON entries to add (``operating_clearance_um`` and the range);
-    ``(bearing, {})`` without mounting inputs."""
+def operating_clearance(bearing, given, speed=0.0):
+    """The operating clearance of ``bearing`` under the mounting inputs ``given`` (field name -> text as
+    typed) as the JSON entries ``operating_clearance_um`` (probable), ``operating_clearance_min_um``,
+    ``operating_clearance_max_um``, ``unmounted_clearance_um``, ``mounting`` and ``mounting_warnings``;
+    ``{}`` without mounting inputs. A negative clearance (a preload) is reported, not refused."""
+    return _operating(bearing, given, speed)[1]
+
+
+def _operating(bearing, given, speed):
+    """(probable operating clearance [m] or None, the JSON entries of :func:`operating_clearance`)."""
     given = {k: v for k, v in given.items() if v is not None and k in NAMES}
     if not given:
-        return bearing, {}
+        return None, {}
     from ..mounting import chain
 
     inp = mounted_inputs(bearing, **given, speed=float(speed), require=True)
     r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
     e = float(r.probable.operating_clearance)
+    return e, {"operating_clearance_um": e / _UM,
+            "operating_clearance_min_um": float(r.least.operating_clearance) / _UM,
+            "operating_clearance_max_um": float(r.largest.operating_clearance) / _UM,
+            "unmounted_clearance_um": [inp.unmounted[0] / _UM, inp.unmounted[1] / _UM],
+            "mounting": inp.echo, "mounting_warnings": list(r.warnings)}
+
+
+def operating_bearing(bearing, given, speed=0.0):
+    """The bearing at its probable operating clearance under the mounting inputs ``given`` (field name ->
+    text as typed), and the JSON entries to add (:func:`operating_clearance`); ``(bearing, {})`` without
+    mounting inputs. A clearance <= 0 is refused: the models that take the bearing's clearance need play."""
+    e, doc = _operating(bearing, given, speed)
+    if e is None:
+        return bearing, {}
     if not e > 0:
         raise InputError(f"operating clearance must be > 0 [um] for this model, got {e / _UM:.3g} um (the fits and "
                          "temperatures preload the bearing); give a larger --clearance-class, or model a "
                          "preloaded pair with bearing-set")
-    doc = {"operating_clearance_um": e / _UM,
-           "operating_clearance_min_um": float(r.least.operating_clearance) / _UM,
-           "operating_clearance_max_um": float(r.largest.operating_clearance) / _UM,
-           "unmounted_clearance_um": [inp.unmounted[0] / _UM, inp.unmounted[1] / _UM],
-           "mounting": inp.echo, "mounting_warnings": list(r.warnings)}
     return bearing.replace(radial_clearance=e), doc

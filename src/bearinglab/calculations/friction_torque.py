@@ -54,7 +54,7 @@ def compute(parsed, *, bearing_file=None, catalog=None):
     t, v = inp.text, inp.value
     resolved = []
     with inp.fields(parsed):
-        doc, m = _torque(
+        doc, m, b, n = _torque(
             t(parsed, "radial_load", "0 N"), t(parsed, "axial_load", "0 N"), t(parsed, "speed", "0 rpm"),
             v(parsed, "model", "one-term"), t(parsed, "bearing"), bearing_file, catalog, v(parsed, "type"),
             t(parsed, "contact_angle"), t(parsed, "bore"), t(parsed, "outside_diameter"),
@@ -63,6 +63,7 @@ def compute(parsed, *, bearing_file=None, catalog=None):
             v(parsed, "palmgren_f0"), v(parsed, "lubrication", "grease"), t(parsed, "oil"),
             t(parsed, "temperature"), v(parsed, "viscosity_index"), t(parsed, "viscosity_100"),
             t(parsed, "oil_level"), v(parsed, "drag_loss_factor"), parsed.given.get("series"), resolved)  # series as typed: "  " is no series
+        doc = _with_operating_clearance(doc, parsed, b, n)
     for b in resolved:  # the provenance notes of a catalog bearing, as the command line adds them
         doc = inp.notes_in(doc, b)
     return FrictionResult(doc, m)
@@ -91,8 +92,8 @@ def _torque(radial_load, axial_load, speed, model, bearing, bearing_file, catalo
             bore, outside_diameter, mean_diameter, static_load_rating, mu, x0, y0, f, c, f0, viscosity,
             palmgren_f0, lubrication, oil, temperature, viscosity_index, viscosity_100, oil_level,
             drag_loss_factor, series, resolved):
-    """The document of one request, and SKF's result (None for the handbook models); the bearing
-    resolved from the catalog or a file is appended to ``resolved``."""
+    """The document of one request, SKF's result (None for the handbook models), the bearing and the
+    speeds; the bearing resolved from the catalog or a file is appended to ``resolved``."""
     import numpy as np
 
     from .. import friction, tables
@@ -109,8 +110,9 @@ def _torque(radial_load, axial_load, speed, model, bearing, bearing_file, catalo
         b = _skf_bearing(b, series)
         fr, fa, n = _cases(radial_load, axial_load, speed)
         _check_speed(b, n)
-        return _skf_torque(b, fr, fa, n, viscosity, lubrication,
-                           oil=(oil, temperature, viscosity_index, viscosity_100), bath=(oil_level, drag_loss_factor))
+        doc, m = _skf_torque(b, fr, fa, n, viscosity, lubrication,
+                             oil=(oil, temperature, viscosity_index, viscosity_100), bath=(oil_level, drag_loss_factor))
+        return doc, m, b, n
     if any(x is not None for x in (oil, temperature, viscosity_index, viscosity_100, oil_level, drag_loss_factor)):
         raise InputError("oil: --oil, --temperature, --viscosity-index, --viscosity-100, --oil-level and "
                          "--drag-loss-factor go with --model skf")
@@ -168,7 +170,7 @@ def _torque(radial_load, axial_load, speed, model, bearing, bearing_file, catalo
                             viscosity_cSt=None if viscosity is None else _viscosity_cst(viscosity),
                             palmgren_f0=palmgren_f0), "warnings": notes}
     doc = {**info, **cases[0], **echo} if len(cases) == 1 else {**info, "cases": cases, **echo}
-    return doc, None
+    return doc, None, b, n
 
 
 def _friction_bearing(
@@ -454,3 +456,21 @@ def _two_term(b, model, angle, p0, n, f, c, f0, viscosity, palmgren_f0, info):
     return speed_term, load_term
 
 
+
+
+def _with_operating_clearance(doc, parsed, bearing, speeds):
+    """The document with the operating clearance of the mounting inputs (issue 23), where given: the
+    entries of :func:`bearinglab.calculations._mounting.operating_clearance` (at the highest speed) before
+    ``inputs``, and a warning that the friction model does not depend on it. None of the four takes the
+    clearance: the handbook models take P0 of ISO 76 from the loads (and the tabulated x0, y0 of the
+    nominal angle), SKF's the loads, d_m and its series constants."""
+    from . import _mounting
+
+    given = {k: parsed.given.get(k) for k in _mounting.NAMES}
+    if not any(v is not None for v in given.values()):
+        return doc
+    mounted = _mounting.operating_clearance(bearing, given, float(max(speeds)))
+    note = (f"operating clearance: the {doc['model']} friction model does not depend on the clearance; "
+            f"operating_clearance_um is reported, the torque is the same without the mounting inputs")
+    head = {k: v for k, v in doc.items() if k not in ("inputs", "warnings")}
+    return {**head, **mounted, "inputs": doc["inputs"], "warnings": [*doc.get("warnings", []), note]}

@@ -15,6 +15,7 @@ from typing import Annotated
 
 import typer
 
+from . import _mounting as mo
 from ._common import (
     BearingFile,
     BearingName,
@@ -186,7 +187,7 @@ def torque(
     json_out: JsonFlag = False,
 ):
     """Friction torque under combined load: the handbook models of the friction-rig lab (P0, T, T0 and T_F) or SKF's."""
-    options = dict(locals(), type=bearing_type)  # the options as typed, by name: the calculation's fields
+    options = dict(locals(), type=bearing_type, **mo.given_options())  # the options as typed: the fields
     from ..calculations import _inputs
     from ..calculations import friction_torque as calculation
 
@@ -199,7 +200,11 @@ def torque(
         _print_skf(out, r.skf)
     else:
         _print_torque(out, model)
-    print_warnings(out.get("warnings", []))
+    if "operating_clearance_um" in out:  # issue 23: the mounted bearing's clearance, for information
+        console.print(f"operating clearance {out['operating_clearance_um']:.3g} um (least "
+                      f"{out['operating_clearance_min_um']:.3g}, largest {out['operating_clearance_max_um']:.3g} um)",
+                      highlight=False)
+    print_warnings([*out.get("warnings", []), *out.get("mounting_warnings", [])])
 
 
 def _print_skf(out, m):
@@ -400,7 +405,7 @@ def template(
     )
 
 
-friction_app.command("torque")(torque)
+friction_app.command("torque")(mo.mounting_options(torque))
 friction_app.command("lab")(lab)
 friction_app.command("template")(template)
 
