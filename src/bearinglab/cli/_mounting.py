@@ -3,16 +3,14 @@
 Options       ShaftFitOpt, HousingFitOpt, ShaftInterferenceOpt, HousingInterferenceOpt, ShaftBoreOpt,
               HousingOutsideDiameterOpt, ShaftMaterialOpt, HousingMaterialOpt, the five temperatures,
               ToleranceClassOpt, ClearanceClassOpt, ShaftRoughnessOpt, HousingRoughnessOpt
-parse_temperature   a temperature option [K] ('60 degC', '333 K'; a bare number is degC)
 mounting_options    decorator: adds the options to a command (load-distribution, life, high-speed, ...)
+given_options       inside such a command: the mounting options as typed, by name
 operating_bearing   inside such a command: the bearing at its probable operating clearance, and the JSON
-mounted_set         the options of bearing-set applied to its bearings (MountedSet)
-MountedInputs       the parsed options: tolerance limits, Mounting, Conditions, unmounted clearance range
-mounted_inputs      the options of a command -> MountedInputs (None when no mounting option was given)
 
 ``bearinglab clearance`` takes all of them; a command that uses the operating clearance takes the same
-options through this module, so that they mean the same everywhere. The physics is
-:mod:`bearinglab.mounting`; nothing here computes beyond parsing and choosing the tables.
+options through this module, so that they mean the same everywhere. Their parsing and checks
+(``parse_temperature``, ``mounted_inputs``, ``MountedInputs``, ``mounted_set``, re-exported here) are
+:mod:`bearinglab.calculations._mounting`, shared with the web; the physics is :mod:`bearinglab.mounting`.
 """
 
 from __future__ import annotations
