@@ -14,6 +14,19 @@ Balance
 thermal_balance                T where M(nu(T)) omega = P_d(T), batched; runaway when there is none
 ThermalBalance                 its result
 
+Thermal reference speed (ISO 15312)
+-----------------------------------
+reference_heat_flow            q_r A_r: the heat a bearing sheds at ISO 15312's reference conditions
+thermal_reference_speed        n_theta_r where the SKF friction power at the reference load and viscosity
+                               equals that heat flow
+ThermalReferenceSpeed          its result
+
+Ring temperatures (coupling to the mounted clearance)
+-----------------------------------------------------
+ring_temperatures              inner and outer ring from the lumped bearing temperature and a split
+clearance_conditions           the same as :class:`bearinglab.mounting.chain.Conditions`
+RingTemperatures               their result
+
 The friction moment is :func:`bearinglab.friction.skf_for_bearing` at the viscosity nu(T) of the oil
 (ASTM D341 through nu40 and nu100, :mod:`bearinglab.ratings.lubrication`); M rises as the oil cools,
 P_d as the bearing heats, so the balance has one root between the ambient and a safe maximum when it
@@ -29,10 +42,22 @@ References
    and "Speeds" (the thermal reference speed and its heat balance).
 .. [3] T. A. Harris and M. N. Kotzalas, *Advanced Concepts of Bearing Technology*, 5th ed., CRC Press,
    2006, ch. 6 (friction heat generation and the thermal balance of a bearing).
+.. [4] Schaeffler, *Rolling bearings*, catalogue HR 1, 2006, pp. 62-65, "Speeds": ISO 15312's reference
+   conditions (ambient 20 degC, outer ring 70 degC, P_1r = 0.05 C_0r, 12 mm^2/s (ISO VG 32) for radial
+   bearings), q_r = 0.016 W/mm^2 for A_r <= 50 000 mm^2 and 0.016 (A_r/50 000)^-0.34 W/mm^2 above
+   (radial bearings), A_r = pi B (D + d); DIN 732's heat flow through the seats Q_S = k_q A_r dT
+   (linear in the temperature rise; k_q 0.2-1.0e-6 kW/(mm^2 K) for A_r up to 25 000 mm^2).
+.. [5] SKF, "Reference speeds" (skf.com, rolling bearings, principles, speeds): ISO 15312:2003's reference
+   conditions, the bearing temperature "measured on the bearing stationary outer ring", oil bath up to
+   the middle of the lowest rolling element; bearings with contact seals are not rated.
+.. [6] KRW, *Rolling bearings* catalogue, "Bearing clearance", p. 95: the radial clearance is reduced "when
+   the inner ring becomes warmer than the outer ring, which is usually the case"; a temperature
+   difference above 10 K calls for a larger clearance group than Normal.
 """
 
 from __future__ import annotations
 
+import math
 import warnings
 from typing import NamedTuple
 
@@ -44,19 +69,35 @@ from .errors import ConvergenceError, InputError
 
 __all__ = [
     "REFERENCE_CONDITIONS",
+    "RING_TEMPERATURE_DIFFERENCE",
+    "RingTemperatures",
     "ThermalBalance",
+    "ThermalReferenceSpeed",
+    "clearance_conditions",
     "heat_dissipated",
     "oil_flow_conductance",
     "reference_conductance",
+    "reference_heat_flow",
     "reference_heat_flow_density",
     "reference_surface",
+    "ring_temperatures",
     "thermal_balance",
+    "thermal_reference_speed",
 ]
 
 #: ISO 15312 [1]: reference bearing temperature and ambient [K], the limit of A_r of the constant heat
-#: flow density [m^2], that density [W/m^2] and the exponent of its decrease above the limit.
+#: flow density [m^2], that density [W/m^2] and the exponent of its decrease above the limit (radial
+#: bearings); the reference load of a radial bearing as a fraction of C_0r [-] and the oil's kinematic
+#: viscosity at the reference temperature [m^2/s]. All checked against Schaeffler HR 1 (2006), p. 62 [4]
+#: (q_r = 0.016 W/mm^2, 0.016 (A_r/50 000)^-0.34 W/mm^2, P_1r = 0.05 C_0r, 12 mm^2/s, ISO VG 32) and
+#: SKF's "Reference speeds" [5] (70 degC bearing, 20 degC ambient, 0.05 C0, 12 mm^2/s at 70 degC).
 REFERENCE_CONDITIONS = {"bearing_temperature": 343.15, "ambient": 293.15, "surface_limit": 50_000e-6,
-                        "heat_flow_density": 16e3, "exponent": -0.34}
+                        "heat_flow_density": 16e3, "exponent": -0.34, "load_ratio": 0.05,
+                        "viscosity": 12e-6}
+#: Inner ring warmer than the outer by this much by default [K]: the upper end of the ring temperature
+#: difference that Normal clearance is made for (KRW catalogue, p. 95 [6]: more than 10 K calls for a
+#: larger clearance group). A design value, not a prediction; give the machine's own where known.
+RING_TEMPERATURE_DIFFERENCE = 10.0
 _T40, _T100 = 313.15, 373.15
 
 
@@ -401,3 +442,230 @@ def thermal_balance(bearing, radial_load, axial_load, shaft_speed, ambient, visc
 
     return ThermalBalance(shaped(temp), shaped(nu), shaped(m), shaped(p_f), shaped(p_d), shaped(kappa),
                           shaped(its), shaped(steady), tuple(dict.fromkeys(notes)))
+
+
+def reference_heat_flow(bore, outside_diameter, width):
+    r"""Heat flow a radial bearing sheds at ISO 15312's reference conditions, q_r A_r.
+
+    Parameters
+    ----------
+    bore, outside_diameter, width : array_like
+        d, D and B. [m]
+
+    Returns
+    -------
+    ndarray
+        :math:`\Phi_r = q_r A_r` (:func:`reference_heat_flow_density`, :func:`reference_surface`) at
+        70 degC on the outer ring with a 20 degC ambient [1] [4]. [W]
+
+    Examples
+    --------
+    >>> print(f"{reference_heat_flow(0.025, 0.052, 0.015):.2f} W")
+    58.06 W
+    """
+    a = reference_surface(bore, outside_diameter, width)
+    return (reference_heat_flow_density(a) * a)[()]
+
+
+class ThermalReferenceSpeed(NamedTuple):
+    """ISO 15312's thermal reference speed by the SKF friction model (SI); NaN where none was found."""
+
+    speed: float  # n_theta_r [rad/s]
+    reference_heat_flow: float  # q_r A_r [W]
+    radial_load: float  # P_1r = 0.05 C_0r [N]
+    kinematic_viscosity: float  # nu_r [m^2/s]
+    friction_moment: float  # M at n_theta_r [N m]; M n_theta_r = q_r A_r
+    iterations: int  # of the root solve
+    warnings: tuple  # messages
+
+
+#: Speeds scanned for the first crossing of P_f(n) = q_r A_r [rpm]: the SKF model's friction power is not
+#: monotonic in the speed at 12 mm^2/s (its starvation factor Phi_rs lowers M faster than n rises above a
+#: peak), so the *lowest* speed of the balance is sought by scanning before the bracketed solve.
+_SCAN_RPM = np.geomspace(10.0, 1e7, 421)
+
+
+def thermal_reference_speed(bearing, *, static_load_rating=None, drag_loss_factor=None,
+                            rtol=_solve.THERMAL_RTOL, max_iter=_solve.THERMAL_MAX_ITER, **friction_options):
+    r"""Thermal reference speed of ISO 15312 from the SKF friction model at the reference conditions.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        A radial ball bearing (deep groove; angular contact with ``constants=``): bore, outside
+        diameter, width and C_0 (else ISO 76 from the ball set).
+    static_load_rating : float, optional
+        C_0r in place of the bearing's. [N]
+    drag_loss_factor : float, optional
+        V_M of SKF's drag-loss diagram at H/d_m with H = D_w/2 (ISO 15312's oil bath reaches the middle
+        of the lowest ball); without it the bath's drag moment is left out (a warning says so). [-]
+    rtol : float, optional
+        Relative balance residual abs(P_f - q_r A_r) / (q_r A_r) at which the solve stops.
+    max_iter : int, optional
+        Iterations of the bracketed solve.
+
+    Other Parameters
+    ----------------
+    **friction_options
+        Passed to :func:`bearinglab.friction.skf_for_bearing` (``constants`` of an angular-contact
+        series, ``ehl_coefficient`` ...).
+
+    Returns
+    -------
+    ThermalReferenceSpeed
+
+    Notes
+    -----
+    ISO 15312 [1] defines the thermal reference speed :math:`n_{\theta r}` as the inner-ring speed at
+    which the friction power of an open bearing at the reference conditions equals the reference heat
+    flow: :math:`M(n)\,n = q_r A_r` with the radial load :math:`P_{1r} = 0.05\,C_{0r}`, a mineral oil
+    of 12 mm^2/s at the reference temperature of 70 degC and an oil bath up to the middle of the lowest
+    rolling element [4] [5]. The standard computes M with its own coefficients f_0r, f_1r; here M is
+    the SKF four-term model [2] (as bearinglab's thermal balance uses), with K_rs = 3e-8 of an oil bath
+    (the value of SKF's low-level oil bath and oil jet alike). Seals are left out (ISO 15312 rates open
+    bearings). The lowest root is taken: the model's power is scanned on a log grid of speeds from 10
+    to 10^7 rpm, then the bracket of its first crossing is solved (Illinois regula falsi). Against
+    SKF's catalogue reference speeds of the deep-groove series the result is within a factor 0.6 to 2
+    (see the theory page's table): an estimate, not the maker's rating.
+
+    Examples
+    --------
+    >>> from bearinglab import catalog
+    >>> from bearinglab.units import RPM
+    >>> r = thermal_reference_speed(catalog.get("6205"))
+    >>> print(f"{r.speed / RPM:.0f} rpm at {r.reference_heat_flow:.2f} W")
+    35400 rpm at 58.06 W
+    """
+    from .friction import skf_for_bearing
+
+    c = REFERENCE_CONDITIONS
+    d, big, width = bearing.require("bore", "outside_diameter", "width")
+    if static_load_rating is None:
+        static_load_rating = bearing.static_load_rating
+        if static_load_rating is None:
+            from .ratings import bearing_ratings
+
+            static_load_rating = bearing_ratings(bearing).static_load_rating
+    c0 = float(check_positive("static_load_rating", static_load_rating, "N"))
+    q = float(reference_heat_flow(d, big, width))
+    load = c["load_ratio"] * c0
+    nu = c["viscosity"]
+    options = dict(friction_options, seals=0)
+    notes = []
+    if drag_loss_factor is None:
+        lubrication = "oil-jet"  # the oil bath's K_rs (3e-8) without its drag moment
+        notes.append("thermal reference speed: the oil bath's drag moment is left out (no drag loss factor "
+                     "V_M given), so the speed is on the high side")
+    else:
+        lubrication = "oil-bath"
+        dw = bearing.require("ball_diameter")
+        options.update(oil_level=0.5 * dw, drag_loss_factor=drag_loss_factor)
+    caught = []
+
+    def power(n):
+        with warnings.catch_warnings(record=True) as rec:
+            warnings.simplefilter("always")
+            m = skf_for_bearing(bearing, load, 0.0, n, nu, lubrication=lubrication, **options)
+        caught.extend(str(w.message) for w in rec)
+        return m.power_loss
+
+    from .units import RPM
+
+    scan = _SCAN_RPM * RPM
+    excess = power(scan) - q
+    above = np.flatnonzero(excess >= 0)
+    if above.size == 0 or above[0] == 0:
+        notes.append(f"thermal reference speed: the friction power does not cross the reference heat flow "
+                     f"{q:.4g} W between {_SCAN_RPM[0]:g} and {_SCAN_RPM[-1]:g} rpm")
+        return ThermalReferenceSpeed(math.nan, q, load, nu, math.nan, 0, tuple(dict.fromkeys(notes)))
+    k = above[0]
+    lo, hi = scan[k - 1:k], scan[k:k + 1]
+
+    def f(n, active):
+        return q - power(n)
+
+    root, _, it = _bracketed_root(f, lo, hi, -excess[k - 1:k], -excess[k:k + 1], lambda n: np.full(n.shape, q),
+                                  1e-12 * hi, rtol, max_iter)
+    n_r = float(root[0])
+    moment = q / n_r
+    if getattr(bearing, "seal", None) is not None or any("sealed" in m or "shields" in m for m in caught):
+        notes.append("thermal reference speed: ISO 15312 rates open bearings; the seals are left out")
+    return ThermalReferenceSpeed(n_r, q, load, nu, moment, int(it[0]), tuple(dict.fromkeys(notes)))
+
+
+class RingTemperatures(NamedTuple):
+    """Inner and outer ring temperatures from a lumped bearing temperature [K]."""
+
+    inner: np.ndarray
+    outer: np.ndarray
+
+
+def ring_temperatures(bearing_temperature, *, difference=RING_TEMPERATURE_DIFFERENCE):
+    r"""Inner and outer ring temperatures from the lumped temperature of the thermal balance.
+
+    Parameters
+    ----------
+    bearing_temperature : array_like
+        T of :func:`thermal_balance` (or any lumped bearing temperature). [K]
+    difference : array_like, optional
+        T_inner - T_outer; by default :data:`RING_TEMPERATURE_DIFFERENCE` (10 K). [K]
+
+    Returns
+    -------
+    RingTemperatures
+        T_outer = T and T_inner = T + difference. [K]
+
+    Notes
+    -----
+    The balance has one temperature; the clearance needs two. The lumped temperature is read as the
+    outer ring's, because that is where ISO 15312 and SKF measure the bearing temperature ("on the
+    bearing stationary outer ring" [5]), and the inner ring, which sheds its heat only through the
+    balls and the shaft, is warmer - "which is usually the case" [6]. The default split of 10 K is the
+    upper end of what Normal clearance is made for [6]: a design value, not a prediction. A measured
+    or estimated difference of the machine should be given; 0 gives one temperature throughout.
+
+    Examples
+    --------
+    >>> r = ring_temperatures(343.15)
+    >>> print(f"inner {r.inner - 273.15:.1f} degC, outer {r.outer - 273.15:.1f} degC")
+    inner 80.0 degC, outer 70.0 degC
+    """
+    t = check_positive("bearing_temperature", bearing_temperature, "K")
+    dt = np.asarray(difference, dtype=float)
+    if not np.all(np.isfinite(dt)) or np.any(np.abs(dt) > 100.0):
+        raise InputError(f"difference must be in [-100, 100] [K] (inner minus outer ring), got "
+                         f"{float(np.max(np.abs(dt)))!r}")
+    return RingTemperatures((t + dt)[()], (t + 0 * dt)[()])
+
+
+def clearance_conditions(bearing_temperature, *, difference=RING_TEMPERATURE_DIFFERENCE, speed=0.0):
+    r"""The mounted-clearance chain's operating conditions from a bearing temperature.
+
+    Parameters
+    ----------
+    bearing_temperature : float
+        Lumped T of :func:`thermal_balance`. [K]
+    difference : float, optional
+        T_inner - T_outer (:func:`ring_temperatures`). [K]
+    speed : float, optional
+        Inner-ring speed for the chain's centrifugal stage. [rad/s]
+
+    Returns
+    -------
+    bearinglab.mounting.chain.Conditions
+        Inner and outer ring temperatures of :func:`ring_temperatures`; the balls at their mean, the
+        shaft at the inner ring's and the housing at the outer ring's (the chain's defaults).
+
+    Examples
+    --------
+    >>> from bearinglab.mounting.chain import Mounting, operating_clearance
+    >>> m = Mounting(0.025, 0.052, 0.03110, 0.04698, 0.00794)
+    >>> r = operating_clearance(20e-6, 0.0, 0.0, m, clearance_conditions(343.15, difference=10.0))
+    >>> print(f"{r.thermal_reduction * 1e6:.2f} um")
+    4.88 um
+    """
+    from .mounting.chain import Conditions
+
+    r = ring_temperatures(bearing_temperature, difference=difference)
+    w = check_nonnegative("speed", speed, "rad/s")
+    return Conditions(inner_temperature=float(r.inner), outer_temperature=float(r.outer), speed=float(w))

@@ -43,11 +43,11 @@ def test_sweep_takes_a_designation(tmp_path):
 
 
 def test_the_skf_friction_model_says_what_it_cannot_do(capsys):
-    # the SKF model's constants are tabulated for deep-groove bearings: an angular one is refused, by name
-    code = main(["friction", "torque", "-b", "7205 BECBP", "--model", "skf", "--radial-load", "500 N",
+    # the SKF model's angular-contact constants are published for 40 deg bearings: a 15 deg one is refused
+    code = main(["friction", "torque", "-b", "7005 C", "--model", "skf", "--radial-load", "500 N",
                  "--speed", "3000 rpm", "--viscosity", "32 cSt"])
     err = capsys.readouterr().err
-    assert code == 2 and "deep-groove (radial) bearings only" in err
+    assert code == 2 and "15 deg is not covered by SKF's published friction constants" in err
 
 
 def test_show_json_sources_and_estimated_fields(capsys):

@@ -491,10 +491,14 @@ def test_skf_series_from_a_bearing_file_is_checked(capsys, tmp_path):
     assert "--series, e.g. --series 62" in one_line_error(code, err)
 
 
-def test_skf_refuses_angular_contact_and_series_without_skf(capsys):
+def test_skf_refuses_uncovered_angular_contact_and_series_without_skf(capsys):
+    # issue 24: SKF's single-row constants cover 40 deg bearings (B218 runs); a 15 deg one is refused
+    code, _, err = run(capsys, "friction", "torque", "--model", "skf", "-b", "7008 C", "-R", "100 N", "-n",
+                       "1000 rpm", "--viscosity", "30 cSt")
+    assert "contact_angle 15 deg is not covered by SKF's published friction constants" in one_line_error(code, err)
     code, _, err = run(capsys, "friction", "torque", "--model", "skf", "-b", "B218", "-R", "100 N", "-n", "1000 rpm",
                        "--viscosity", "30 cSt")
-    assert "deep-groove (radial) bearings only; 'B218' is angular" in one_line_error(code, err)
+    assert code == 0, err
     code, _, err = run(capsys, "friction", "torque", "-b", "101", "-R", "10 N", "--series", "62")
     assert "only the skf model takes --series" in one_line_error(code, err)
 

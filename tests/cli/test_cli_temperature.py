@@ -86,9 +86,11 @@ def test_bad_input_exits_2_with_one_line(capsys, extra, message):
 
 
 def test_angular_contact_without_constants_is_refused_in_one_line(capsys):
-    assert main(["temperature", "-b", "B218", "-A", "5 kN", "--speed", "6000 rpm", "--oil", "VG32"]) == 2
+    # issue 24: SKF's single-row constants cover its 40 deg bearings; a 15 deg spindle bearing is refused
+    assert main(["temperature", "-b", "7008 C", "-A", "500 N", "--speed", "6000 rpm", "--oil", "VG32"]) == 2
     err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "skf-constants" in err
+    assert len(err.splitlines()) == 1 and "skf-constants" in err and "15 deg is not covered" in err
+    assert main(["temperature", "-b", "B218", "-A", "5 kN", "--speed", "6000 rpm", "--oil", "VG32"]) == 0
 
 
 def test_film_and_temperature_are_web_api_endpoints():
@@ -108,3 +110,15 @@ def test_film_and_temperature_are_web_api_endpoints():
     assert status == 200 and doc["regime"] in ("boundary", "mixed", "full film")
     status, doc = call("temperature", {"bearing": "6205-2RS", "speed": "6000 rpm", "oil": "VG33"})
     assert status == 422 and doc["parameter"] == "oil"
+
+
+def test_reference_speed_option_adds_iso_15312_thermal_reference_speed(capsys):
+    doc = _json(capsys, *BASE, "--reference-speed")
+    r = thermal.thermal_reference_speed(catalog.get("6205-2RS"))
+    assert doc["thermal_reference_speed_rpm"] == pytest.approx(r.speed / RPM, rel=1e-12)
+    assert doc["reference_heat_flow_W"] == pytest.approx(r.reference_heat_flow, rel=1e-12)
+    assert any("drag moment is left out" in w for w in doc["warnings"])
+    assert "thermal_reference_speed_rpm" not in _json(capsys, *BASE)
+    code = main([*BASE, "--reference-speed"])
+    out = capsys.readouterr().out
+    assert code == 0 and "Thermal reference speed (ISO 15312, SKF model): 35400 rpm" in out

@@ -53,8 +53,12 @@ def test_issue_example_constants_and_seal_row():
     c618 = friction.series_constants("618")
     assert (c618.r1, c618.s1) == (4.7e-7, 6.5e-3)
     assert friction.seal_constants("RS1", 72e-3) == friction.SealConstants(0.018, 2.25, 20.0)
-    with pytest.raises(InputError, match="outside the tabulated rows"):
-        friction.seal_constants("RS1", 52e-3)
+    # SKF General Catalogue 6000/I RU (2006), table 4, p. 96: the other RS1 rows of deep groove bearings
+    assert friction.seal_constants("RS1", 52e-3) == friction.SealConstants(0.023, 2.25, 2.0)
+    assert friction.seal_constants("RS1", 62e-3) == friction.SealConstants(0.023, 2.25, 2.0)
+    assert friction.seal_constants("RS1", 80e-3) == friction.SealConstants(0.018, 2.25, 20.0)
+    assert friction.seal_constants("RS1", 90e-3) == friction.SealConstants(0.018, 2.25, 15.0)
+    assert friction.seal_constants("RS1", 150e-3) == friction.SealConstants(0.018, 2.25, 0.0)
     with pytest.raises(InputError, match="seal must be one of"):
         friction.seal_constants("LS", 72e-3)
 
@@ -78,7 +82,7 @@ def test_refuses_oil_bath_without_its_level_and_unknowns():
         friction.skf(100.0, 0.0, 100.0, 20e-6, 25e-3, 52e-3, series="99")
     with pytest.raises(InputError, match="static_load_rating"):
         friction.skf(100.0, 10.0, 100.0, 20e-6, 25e-3, 52e-3, series="62")
-    with pytest.raises(InputError, match="angular-contact constants are not tabulated"):
+    with pytest.raises(InputError, match="series constants are for deep-groove bearings"):
         friction.skf(100.0, 10.0, 100.0, 20e-6, 25e-3, 52e-3, series="62", bearing_type="angular")
 
 

@@ -18,13 +18,27 @@ from ..errors import InputError
 __all__: list[str] = []  # private to the calculations and the command line
 
 
+#: Kinematic viscosities accepted from the command line [m^2/s]: 0.1 to 1e7 cSt, the dynamic range the film
+#: command takes (0.1 to 1e7 mPa s) at about 1000 kg/m^3. A sanity bound, not a property of any oil: outside
+#: it a value is taken for a typing or unit error (issue 24: absurd viscosities are refused in one line).
+VISCOSITY_BOUNDS = (1e-7, 10.0)
+#: The hottest oil temperature accepted from the command line [degC]. A sanity bound, not an oil's limit
+#: (SKF rates its angular-contact bearings with steel or brass cages to +150 degC, General Catalogue 6000/I RU,
+#: 2006, p. 413): above it a value is taken for a typing or unit error, and ASTM D341 is far outside its data.
+HOTTEST_OIL_DEGC = 400.0
+
+
 def parse_viscosity(text, name="viscosity"):
-    """A kinematic viscosity option [m^2/s], > 0 (the message in cSt, the unit of oil data sheets)."""
+    """A kinematic viscosity option [m^2/s], > 0 and within :data:`VISCOSITY_BOUNDS` (the message in cSt,
+    the unit of oil data sheets)."""
     from ..units import parse_quantity
 
     nu = parse_quantity(text, "kinematic_viscosity", name)
     if not nu > 0:
         raise InputError(f"{name} must be > 0 [cSt], got {float(nu) * 1e6:.6g} cSt")
+    lo, hi = VISCOSITY_BOUNDS
+    if not lo <= nu <= hi:
+        raise InputError(f"{name} must be in [{lo * 1e6:g}, {hi * 1e6:g}] [cSt], got {float(nu) * 1e6:.6g} cSt")
     return nu
 
 
@@ -122,7 +136,15 @@ def lubricant_viscosity(viscosity=None, oil=None, temperature=None, viscosity_in
             raise InputError(f"viscosity-index: VG{grade} with VI {vi:g} is outside ASTM D2270 ({exc})") from None
         how = (f"VI {vi:g} ({'given' if viscosity_index is not None else 'assumed: a mineral oil, SKF'}), "
                f"nu100 {nu100 * 1e6:.4g} cSt by ASTM D2270")
+    if not t <= _ZERO_C + HOTTEST_OIL_DEGC:
+        raise InputError(f"temperature must be <= {HOTTEST_OIL_DEGC:g} [degC] (the oil's operating temperature), got "
+                         f"{t - _ZERO_C:g} degC")
     nu = float(lubrication.kinematic_viscosity(t, viscosity_40=nu40, viscosity_100=nu100))
+    lo, hi = VISCOSITY_BOUNDS
+    if not lo <= nu <= hi:  # ASTM D341 extrapolated far outside the oil's liquid range
+        raise InputError(f"temperature: VG{grade} at {t - _ZERO_C:g} degC would have nu = {nu * 1e6:.3g} cSt by "
+                         f"ASTM D341, outside [{lo * 1e6:g}, {hi * 1e6:g}] cSt; give an operating temperature of "
+                         f"the oil")
     text = f"VG{grade} at {t - _ZERO_C:.4g} degC, {how}: nu = {nu * 1e6:.4g} cSt (ASTM D341)"
     inputs = {"oil": f"VG{grade}", "temperature_degC": t - _ZERO_C, "viscosity_100_cSt": nu100 * 1e6,
               "viscosity_index": vi, "viscosity_index_assumed": viscosity_index is None and viscosity_100 is None}

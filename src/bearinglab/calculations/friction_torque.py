@@ -307,9 +307,15 @@ def _skf_bearing(b, series):
     never taken as 'not given'."""
     from .. import friction
 
-    if b.type != "radial":
-        raise InputError(f"model: the skf model's geometry constants are tabulated for deep-groove (radial) "
-                         f"bearings only; {b.designation!r} is {b.type}")
+    if b.type != "radial":  # angular contact: SKF's constants of the type (40 deg; others refused there)
+        if series is not None:
+            raise InputError(f"series: --series names SKF's deep-groove series; {b.designation!r} is {b.type}, "
+                             f"whose constants are SKF's for its type")
+        try:  # the model, not a field, is what does not apply (the web page leaves the section out)
+            friction.angular_contact_constants(b.contact_angle)
+        except InputError as exc:
+            raise InputError(f"model: {exc}") from None
+        return b
     known = list(friction.DEEP_GROOVE_CONSTANTS)
     for name, value in (("series", series), (f"series of {b.designation!r}", b.series)):
         if value is not None:

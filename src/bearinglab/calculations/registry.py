@@ -436,8 +436,8 @@ _CALCS = (
          _f("lubrication", "choice", "SKF model: oil-jet | oil-air | grease (oil bath: refused, its "
             "drag loss needs SKF's V_M chart).", label="Lubrication method", default="oil-jet",
             choices=("oil-jet", "oil-air", "grease", "oil-bath"), group=_O),
-         _f("skf_constants", "text", "SKF geometry constants R1,R2,R3,S1,S2,S3 of the series (needed "
-            "for angular-contact bearings).", label="SKF constants", group="heat"),
+         _f("skf_constants", "text", "SKF geometry constants R1,R2,R3,S1,S2,S3 in place of SKF's tables "
+            "(angular contact other than 40 deg needs them).", label="SKF constants", group="heat"),
          _f("ambient", "text", "Ambient temperature, e.g. '20 degC'.", label="Ambient temperature",
             unit="degC", default="20 degC", group="heat"),
          _f("thermal_resistance", "thermal_resistance", "Bearing to ambient, e.g. '0.5 K/W' "
@@ -455,6 +455,9 @@ _CALCS = (
          _f("max_temperature", "text", "Safe limit: no steady state below it is thermal runaway, "
             "e.g. '150 degC'.", label="Temperature limit", unit="degC", default="150 degC",
             group="heat"),
+         _f("reference_speed", "flag", "Also ISO 15312's thermal reference speed of the bearing by the "
+            "SKF model (JSON: thermal_reference_speed_rpm).", label="Thermal reference speed",
+            default=False, group="heat"),
          BEARING),
         combine="broadcast"),
     Calculation(

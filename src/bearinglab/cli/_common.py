@@ -49,6 +49,8 @@ from ..calculations._inputs import (  # noqa: F401 -- the commands import them f
     speed_size,
 )
 from ..calculations._lubricant import (  # noqa: F401 -- the commands import them from here
+    HOTTEST_OIL_DEGC,
+    VISCOSITY_BOUNDS,
     LubricantViscosity,
     lubricant_viscosity,
     parse_temperature,

@@ -17,6 +17,7 @@ import typer
 
 from ..errors import InputError
 from ._common import (
+    HOTTEST_OIL_DEGC,
     AxialLoadOpt,
     BearingFile,
     BearingName,
@@ -26,6 +27,7 @@ from ._common import (
     RadialLoadOpt,
     Viscosity100Opt,
     ViscosityIndexOpt,
+    console,
     emit_json,
     inputs_echo,
     lubricant_viscosity,
@@ -47,7 +49,8 @@ HeatCapacityOpt = Annotated[str | None, typer.Option("--oil-heat-capacity", help
 OilDensityOpt = Annotated[str | None, typer.Option("--density", help="Oil density (default 870 kg/m^3, a mineral oil: an estimate).", rich_help_panel=_HEAT)]
 MaxTemperatureOpt = Annotated[str, typer.Option("--max-temperature", help="Safe limit: no steady state below it is thermal runaway, e.g. '150 degC'.", rich_help_panel=_HEAT)]
 LubricationOpt = Annotated[str, typer.Option("--lubrication", help="SKF model: oil-jet (default) | oil-air | grease (oil bath: refused, its drag loss needs SKF's V_M chart).", rich_help_panel=_HEAT)]
-ConstantsOpt = Annotated[str | None, typer.Option("--skf-constants", help="SKF geometry constants R1,R2,R3,S1,S2,S3 of the series (needed for angular-contact bearings), e.g. '5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12'.", rich_help_panel=_HEAT)]
+ReferenceSpeedOpt = Annotated[bool, typer.Option("--reference-speed", help="Also ISO 15312's thermal reference speed of the bearing by the SKF model (JSON: thermal_reference_speed_rpm).", rich_help_panel=_HEAT)]
+ConstantsOpt = Annotated[str | None, typer.Option("--skf-constants", help="SKF geometry constants R1,R2,R3,S1,S2,S3 in place of SKF's tables (angular contact other than 40 deg needs them), e.g. '5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12'.", rich_help_panel=_HEAT)]
 
 #: Defaults of the oil's properties when not given: typical mineral-oil values, estimates labelled as such
 #: in the output (density 0.86-0.89 g/cm^3, specific heat 1.8-2.1 kJ/(kg K) between 20 and 100 degC).
@@ -55,6 +58,7 @@ DEFAULT_DENSITY = 870.0
 DEFAULT_HEAT_CAPACITY = 1950.0
 _ZERO_C = 273.15
 _LUBRICATIONS = ("oil-jet", "oil-air", "grease")
+_HOTTEST = HOTTEST_OIL_DEGC  # the sanity bound on the balance's temperatures (issue 24)
 
 
 def oil_reference_viscosities(oil, viscosity_index, viscosity_100):
@@ -86,6 +90,8 @@ def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature
     t_max = parse_temperature(max_temperature, "max-temperature")
     if not t_max > ta:
         raise InputError(f"max-temperature must be above the ambient [degC], got {t_max - _ZERO_C:g} degC")
+    if not t_max <= _ZERO_C + _HOTTEST:
+        raise InputError(f"max-temperature must be <= {_HOTTEST:g} [degC], got {t_max - _ZERO_C:g} degC")
     notes, inputs = [], {"ambient_degC": ta - _ZERO_C, "max_temperature_degC": t_max - _ZERO_C}
     conductance = None
     if thermal_resistance is not None:
@@ -114,17 +120,19 @@ def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature
         inputs.update(oil_flow_l_min=q * 6e4, density_kg_m3=rho, oil_heat_capacity_J_kgK=cp)
         if oil_inlet_temperature is not None:
             t_in = parse_temperature(oil_inlet_temperature, "oil-inlet-temperature")
+            if not t_in <= _ZERO_C + _HOTTEST:
+                raise InputError(f"oil-inlet-temperature must be <= {_HOTTEST:g} [degC], got {t_in - _ZERO_C:g} degC")
             inputs["oil_inlet_temperature_degC"] = t_in - _ZERO_C
-    elif oil_inlet_temperature is not None or heat_capacity is not None:
-        raise InputError("oil-flow: --oil-inlet-temperature and --oil-heat-capacity describe an oil flow; give "
-                         "--oil-flow")
+    elif oil_inlet_temperature is not None or heat_capacity is not None or density_text is not None:
+        raise InputError("oil-flow: --oil-inlet-temperature, --oil-heat-capacity and --density describe an oil "
+                         "flow; give --oil-flow")
     return {"ambient": ta, "conductance": conductance, "oil_flow_conductance": g_oil,
             "oil_inlet_temperature": t_in, "maximum_temperature": t_max}, notes, inputs
 
 
 def skf_options(b, lubrication, constants):
     """The SKF model's options for the bearing: its lubrication method and, for angular contact, the
-    constants given (the angular-contact table is not in this build: refused in one line without them)."""
+    constants given (else SKF's single-row ones, for 40 deg bearings only: others refused in one line)."""
     from .. import friction
 
     if lubrication == "oil-bath":
@@ -142,10 +150,8 @@ def skf_options(b, lubrication, constants):
             raise InputError(f"skf-constants must be six numbers >= 0, R1,R2,R3,S1,S2,S3, got {constants!r}")
         r1, r2, r3, s1, s2, s3 = values
         out["constants"] = friction.SKFConstants(r1, r2, s1, s2, r3, s3)
-    elif b.type != "radial":
-        raise InputError(f"skf-constants: {b.designation!r} is an angular-contact bearing, whose SKF geometry "
-                         "constants are not tabulated in this build; give --skf-constants R1,R2,R3,S1,S2,S3 from "
-                         "SKF's catalogue")
+    elif b.type != "radial":  # SKF's table covers single-row 40 deg bearings; others are refused in one line
+        friction.angular_contact_constants(b.contact_angle)
     return out
 
 
@@ -168,6 +174,7 @@ def temperature(
     ambient: AmbientOpt = "20 degC", thermal_resistance: ResistanceOpt = None, oil_flow: OilFlowOpt = None,
     oil_inlet_temperature: OilInletOpt = None, oil_heat_capacity: HeatCapacityOpt = None,
     density_text: OilDensityOpt = None, max_temperature: MaxTemperatureOpt = "150 degC",
+    reference_speed: ReferenceSpeedOpt = False,
     bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
     json_out: JsonFlag = False,
 ):
@@ -186,7 +193,14 @@ def temperature(
     r = thermal.thermal_balance(b, fr, fa, w, heat.pop("ambient"), nu40, nu100, **heat,
                                 **skf_options(b, lubrication, skf_constants))
     notes = list(dict.fromkeys([*notes, *r.warnings]))
-    docs = [_doc(r, k, w.size) | {"inputs": inputs_echo(b, radial_load_N=fr, axial_load_N=fa,
+    extra = {}
+    if reference_speed:  # ISO 15312 (bearinglab.thermal.thermal_reference_speed); one value per bearing
+        ref = thermal.thermal_reference_speed(b, **{k: v for k, v in skf_options(b, lubrication, skf_constants).items()
+                                                  if k == "constants"})
+        extra = {"thermal_reference_speed_rpm": _json(ref.speed / RPM),
+                 "reference_heat_flow_W": _json(ref.reference_heat_flow)}
+        notes = list(dict.fromkeys([*notes, *ref.warnings]))
+    docs = [_doc(r, k, w.size) | extra | {"inputs": inputs_echo(b, radial_load_N=fr, axial_load_N=fa,
                                                          speed_rpm=float(w[k]) / RPM, lubrication=lubrication,
                                                          **oil_inputs, lubricant=how, **heat_inputs),
                                  "warnings": notes} for k in range(w.size)]
@@ -199,7 +213,18 @@ def temperature(
             _f(d["viscosity_mm2_s"], ".3g"), _f(d["kappa"], ".3g"), _f(d["friction_moment_Nmm"], ".4g"),
             _f(d["friction_power_W"], ".4g"), str(d["iterations"])] for d in docs],
           caption="P: friction power = heat carried away; — where no steady state exists (runaway)")
+    if extra:
+        n_r = extra["thermal_reference_speed_rpm"]
+        console.print(f"Thermal reference speed (ISO 15312, SKF model): "
+                      f"{'none found' if n_r is None else format(n_r, '.0f') + ' rpm'} at "
+                      f"{extra['reference_heat_flow_W']:.4g} W", highlight=False)
     print_warnings(notes)
+
+
+def _json(x):
+    from ..tables import json_value
+
+    return json_value(float(x))
 
 
 def _f(x, spec):

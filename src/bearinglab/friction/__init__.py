@@ -11,6 +11,8 @@ SKF four-term model (:mod:`.skf`)
 ---------------------------------
 skf, skf_for_bearing                   M = M_rr + M_sl + M_seal + M_drag
 series_constants, bearing_series, seal_constants, sliding_friction_coefficient   its parts and tables
+angular_contact_constants              SKF's constants of an angular-contact type (single row 40 deg, ...)
+inlet_shear_heating_factor, replenishment_factor   Phi_ish and Phi_rs
 drag_moment                            M_drag of an oil bath
 
 Dispatcher
@@ -47,14 +49,19 @@ from .classic import (
     two_term,
 )
 from .skf import (
+    ANGULAR_CONTACT_CONSTANTS,
+    ANGULAR_SEAL_CONSTANTS,
     DEEP_GROOVE_CONSTANTS,
     LUBRICATION_METHODS,
     SEAL_CONSTANTS,
+    SKF_BEARING_TYPES,
     SealConstants,
     SKFConstants,
     SKFTorque,
+    angular_contact_constants,
     bearing_series,
     drag_moment,
+    inlet_shear_heating_factor,
     replenishment_factor,
     seal_constants,
     series_constants,
@@ -64,8 +71,10 @@ from .skf import (
 )
 
 __all__ = [
+    "ANGULAR_CONTACT_CONSTANTS",
     "ANGULAR_LOAD_TERM_BELOW_30",
     "ANGULAR_LOAD_TERM_FROM_30",
+    "ANGULAR_SEAL_CONSTANTS",
     "ANGULAR_STATIC_FACTORS",
     "BEARING_TYPES",
     "DEEP_GROOVE_CONSTANTS",
@@ -75,18 +84,21 @@ __all__ = [
     "RADIAL_LOAD_TERM",
     "RADIAL_STATIC_FACTORS",
     "SEAL_CONSTANTS",
+    "SKF_BEARING_TYPES",
     "LoadTermConstants",
     "SKFConstants",
     "SKFTorque",
     "SealConstants",
     "StaticLoadFactors",
     "TwoTermTorque",
+    "angular_contact_constants",
     "bearing_series",
     "classic",
     "combined_branch_governs",
     "drag_moment",
     "equivalent_static_load",
     "handbook_friction_coefficient",
+    "inlet_shear_heating_factor",
     "load_term",
     "load_term_constants",
     "one_term",

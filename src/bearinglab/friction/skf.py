@@ -9,12 +9,15 @@ Parts and tables
 ----------------
 SKFConstants               the geometry constants R1, R2, R3, S1, S2, S3 of a bearing series
 series_constants           the constants of a series (deep groove: SKF table, by series)
+angular_contact_constants  the constants of an angular-contact type (single row 40 deg, double row, four-point)
 bearing_series             the series of a designation ("6205-2RSH" -> "62", "61811-2RS1" -> "618")
 seal_constants             K_S1, beta, K_S2 of a seal type and outside diameter
 sliding_friction_coefficient   mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL
 drag_moment                M_drag of a ball bearing in an oil bath (SKF's drag losses)
 replenishment_factor       Phi_rs, the kinematic replenishment/starvation reduction factor
-DEEP_GROOVE_CONSTANTS, SEAL_CONSTANTS, LUBRICATION_METHODS   the tables
+inlet_shear_heating_factor Phi_ish, the inlet shear heating reduction factor
+DEEP_GROOVE_CONSTANTS, ANGULAR_CONTACT_CONSTANTS, SEAL_CONSTANTS, ANGULAR_SEAL_CONSTANTS,
+LUBRICATION_METHODS, SKF_BEARING_TYPES   the tables
 
 The published model is in N, mm, rpm and mm^2/s with moments in N mm; the API is SI (N, m, rad/s,
 m^2/s, N m) and :func:`skf` converts its inputs and outputs once, in plain sight.
@@ -27,6 +30,11 @@ References
    bearings; the geometry constants of deep-groove ball bearings by series; the seal constants; the
    drag losses of an oil bath, "Drag losses in oil bath lubrication", with the drag loss factor V_M read
    from its diagram against H/d_m).
+.. [2] SKF, *General Catalogue* 6000/I RU (Russian edition, 2006), section "Friction" (Трение): table 3,
+   p. 92 (geometry constants of angular-contact ball bearings: single row, double row, four-point
+   contact), table 4, p. 96 (seal constants, RS1 seals of angular-contact ball bearings), table 5, p. 98
+   (K_Z), and the worked example of a 22208 E bearing, pp. 104-105; section "Single row angular contact
+   ball bearings", p. 410 (SKF's single-row range: series 72 B and 73 B, 40 deg contact angle).
 """
 
 from __future__ import annotations
@@ -42,14 +50,19 @@ from .._validate import check_nonnegative, check_positive
 from ..errors import InputError, ValidityWarning
 
 __all__ = [
+    "ANGULAR_CONTACT_CONSTANTS",
+    "ANGULAR_SEAL_CONSTANTS",
     "DEEP_GROOVE_CONSTANTS",
     "LUBRICATION_METHODS",
     "SEAL_CONSTANTS",
+    "SKF_BEARING_TYPES",
     "SKFConstants",
     "SKFTorque",
     "SealConstants",
+    "angular_contact_constants",
     "bearing_series",
     "drag_moment",
+    "inlet_shear_heating_factor",
     "replenishment_factor",
     "seal_constants",
     "series_constants",
@@ -102,6 +115,27 @@ DEEP_GROOVE_CONSTANTS = {
     "639": SKFConstants(4.3e-7, 1.7, 4.75e-3, 3.6),
 }
 
+# SKF General Catalogue 6000/I RU (2006), "Friction", table 3 "Geometry constants for rolling and sliding
+# frictional moments", p. 92: one row per angular-contact type, not per series, as (R1, R2, S1, S2, R3, S3)
+# in the units of the published model (N, mm, rpm). The same catalogue's single-row angular contact ball
+# bearings are the series 72 B(E) and 73 B(E), all of 40 deg contact angle (p. 410): the single-row row is
+# used for 40 deg bearings only (:func:`angular_contact_constants`). No per-series rows (72 B / 73 B apart,
+# 25 deg or 15 deg, the super-precision 70, 719, 718 series) were found in a public SKF source.
+ANGULAR_CONTACT_CONSTANTS = {
+    "single row": SKFConstants(5.03e-7, 1.97, 1.30e-2, 0.68, 1.90e-12, 1.91e-12),
+    "double row": SKFConstants(6.34e-7, 1.41, 7.56e-3, 1.21, 7.83e-13, 7.83e-13),
+    "four-point": SKFConstants(4.78e-7, 2.42, 1.20e-2, 0.9, 1.40e-12, 1.40e-12),
+}
+#: The nominal contact angle of SKF's single-row range the table's row was published for, and the
+#: tolerance within which a bearing's contact angle is taken to be it. [rad]
+SINGLE_ROW_CONTACT_ANGLE, _ANGLE_TOLERANCE = math.radians(40.0), math.radians(1.0)
+
+# Bearing type of the SKF model -> (constants of the angular-contact table or None for deep groove by
+# series, K_Z of the catalogue's table 5, p. 98: 3.1 deep groove, 4.4 single-row angular contact, 3.1
+# double-row angular contact and four-point contact).
+SKF_BEARING_TYPES = {"radial": (None, 3.1), "angular": ("single row", 4.4), "double-row-angular": ("double row", 3.1),
+                 "four-point": ("four-point", 3.1)}
+
 
 class SealConstants(NamedTuple):
     """M_seal = K_S1 d_s^beta + K_S2 [N mm, d_s in mm] for a bearing sealed on both sides."""
@@ -111,17 +145,24 @@ class SealConstants(NamedTuple):
     ks2: float
 
 
-# SKF Rolling bearings catalogue (2018), Friction, seal frictional moment constants of deep-groove ball
-# bearings: seal type -> [(upper limit of the outside diameter D [mm], constants)], first row that fits.
-# Non-contact seals (RZ) and shields (Z) have no seal moment in the model. Other rows: give the
-# constants (``seal_constants=``). The RS1 row (from the issue 12 brief) is not confirmed by a public
-# source found so far; the measured 61811-2RS1 pair (tests/validation/test_skf_61811.py) supports it.
+# SKF General Catalogue 6000/I RU (2006), "Friction", table 4 "Seal frictional moment: exponent and
+# constants", p. 96: seal type -> [(upper limit of the outside diameter D [mm], constants)], first row that
+# fits. RS1 seals of deep groove ball bearings (counterface d_s = d1 or d2 of the bearing table):
+# D <= 62 mm beta 2.25, K_S1 0.023, K_S2 2; 62 < D <= 80 mm 2.25, 0.018, 20 (the row of the issue 12 brief,
+# also supported by the measured 61811-2RS1 pair, tests/validation/test_skf_61811.py); 80 < D <= 100 mm
+# 2.25, 0.018, 15; D > 100 mm 2.25, 0.018, 0. Non-contact seals (RZ) and shields (Z) have no seal moment
+# in the model. Other seal types: give the constants (``seal_constants=``).
 SEAL_CONSTANTS = {
-    "RS1": [(80.0, SealConstants(0.018, 2.25, 20.0))],  # valid 62 < D <= 80 mm
+    "RS1": [(62.0, SealConstants(0.023, 2.25, 2.0)), (80.0, SealConstants(0.018, 2.25, 20.0)),
+            (100.0, SealConstants(0.018, 2.25, 15.0)), (math.inf, SealConstants(0.018, 2.25, 0.0))],
     "RZ": [(math.inf, SealConstants(0.0, 0.0, 0.0))],
     "Z": [(math.inf, SealConstants(0.0, 0.0, 0.0))],
 }
-_SEAL_LOWER = {"RS1": 62.0}  # mm: the row's lower limit of D (exclusive)
+_SEAL_LOWER = {}  # mm: a table's lower limit of D (exclusive), where its first row has one
+# Angular-contact ball bearings (single row), same table 4, p. 96: RS1 seals, 30 < D <= 120 mm, beta = 2,
+# K_S1 = 0.014, K_S2 = 10, counterface d_s = d1 (the inner ring shoulder diameter of the bearing table).
+ANGULAR_SEAL_CONSTANTS = {"RS1": [(120.0, SealConstants(0.014, 2.0, 10.0))]}
+_ANGULAR_SEAL_LOWER = {"RS1": 30.0}
 
 # Seal and shield suffixes of a designation, one or two sides: contact seals (SKF RS, RS1, RSH, RSL, LS;
 # LLU, DDU elsewhere) and shields or non-contact seals (Z, ZZ, RZ, VV): "6205-2RSH", "6205-Z/C3", "6205ZZ".
@@ -135,7 +176,7 @@ _NON_CONTACT = ("Z", "ZZ", "RZ", "VV")
 # synthetic, 0.1 transmission fluids) and the factors phi_ish, phi_rs, phi_bl agree with the catalogue
 # text (yumpu.com document 55668573, page 105) and an independent public implementation.
 LUBRICATION_METHODS = {"grease": 6e-8, "oil-air": 6e-8, "oil-jet": 3e-8, "oil-bath": 3e-8}
-_KZ = {"radial": 3.1, "angular": 4.4}  # bearing-type constant K_Z (deep groove, angular contact)
+_KZ = {kind: kz for kind, (_, kz) in SKF_BEARING_TYPES.items()}  # bearing-type constant K_Z
 # mu_bl and mu_EHL (mineral oil) of the sliding friction coefficient
 _MU_BOUNDARY, _MU_EHL = 0.15, 0.05
 
@@ -197,15 +238,18 @@ def series_constants(series):
     return DEEP_GROOVE_CONSTANTS[key]
 
 
-def seal_constants(seal, outside_diameter):
+def seal_constants(seal, outside_diameter, *, bearing_type="radial"):
     """K_S1, beta and K_S2 of a seal type for a bearing of outside diameter D.
 
     Parameters
     ----------
     seal : str
-        Seal type, a key of :data:`SEAL_CONSTANTS` (``"RS1"``, ``"RZ"``, ``"Z"``).
+        Seal type, a key of :data:`SEAL_CONSTANTS` (``"RS1"``, ``"RZ"``, ``"Z"``) for deep-groove
+        bearings, of :data:`ANGULAR_SEAL_CONSTANTS` (``"RS1"``) for single-row angular-contact ones.
     outside_diameter : float
         D. [m]
+    bearing_type : {"radial", "angular"}
+        Deep groove or single-row angular contact (SKF's table 4 has rows for both).
 
     Returns
     -------
@@ -215,16 +259,98 @@ def seal_constants(seal, outside_diameter):
     --------
     >>> seal_constants("RS1", 0.072)
     SealConstants(ks1=0.018, beta=2.25, ks2=20.0)
+    >>> seal_constants("RS1", 0.080, bearing_type="angular")
+    SealConstants(ks1=0.014, beta=2.0, ks2=10.0)
     """
+    if bearing_type not in ("radial", "angular"):
+        raise InputError(f"bearing_type must be 'radial' or 'angular' for SKF's seal constants (no rows for "
+                         f"other types), got {bearing_type!r}")
+    table, lower = ((SEAL_CONSTANTS, _SEAL_LOWER) if bearing_type == "radial"
+                    else (ANGULAR_SEAL_CONSTANTS, _ANGULAR_SEAL_LOWER))
     key = str(seal).strip().upper()
-    if key not in SEAL_CONSTANTS:
-        raise InputError(f"seal must be one of {list(SEAL_CONSTANTS)} (or give seal_constants=), got {seal!r}")
+    if key not in table:
+        raise InputError(f"seal must be one of {list(table)} ({bearing_type} bearings; or give "
+                         f"seal_constants=), got {seal!r}")
     big = float(check_positive("outside_diameter", outside_diameter, "m")) / _MM
-    for upper, constants in SEAL_CONSTANTS[key]:
-        if _SEAL_LOWER.get(key, 0.0) < big <= upper:
-            return constants
+    if big > lower.get(key, 0.0):
+        for upper, constants in table[key]:  # rows in rising D: the first that reaches D
+            if big <= upper:
+                return constants
     raise InputError(f"outside_diameter {big:g} mm is outside the tabulated rows of seal {key!r} "
-                     f"({_SEAL_LOWER.get(key, 0.0):g} < D <= {SEAL_CONSTANTS[key][-1][0]:g} mm); give seal_constants=")
+                     f"({lower.get(key, 0.0):g} < D <= {table[key][-1][0]:g} mm); give seal_constants=")
+
+
+def angular_contact_constants(contact_angle=None, *, design="single row"):
+    """SKF's geometry constants of an angular-contact ball bearing type.
+
+    Parameters
+    ----------
+    contact_angle : float, optional
+        Nominal contact angle of a single-row bearing; the table's single-row row is SKF's for its 40 deg
+        series (72 B, 73 B) and is given for 40 +- 1 deg only. Not used for the other arrangements. [rad]
+    design : {"single row", "double row", "four-point"}
+        A key of :data:`ANGULAR_CONTACT_CONSTANTS`.
+
+    Returns
+    -------
+    SKFConstants
+
+    Notes
+    -----
+    SKF General Catalogue 6000/I RU (2006), table 3, p. 92 [2]_ publishes one row per type. A 15 deg or 25 deg
+    single-row bearing (spindle series 70 C, 70 ACD, 718, 719) is refused: no public SKF source was found
+    for them; give the constants (``constants=SKFConstants(...)``) from SKF.
+
+    Examples
+    --------
+    >>> angular_contact_constants(np.radians(40.0)).r1
+    5.03e-07
+    >>> angular_contact_constants(design="four-point").s2
+    0.9
+    """
+    if design not in ANGULAR_CONTACT_CONSTANTS:
+        raise InputError(f"design must be one of {list(ANGULAR_CONTACT_CONSTANTS)}, got {design!r}")
+    if design == "single row":
+        if contact_angle is None:
+            raise InputError("contact_angle is needed: SKF's single-row angular-contact constants are for its 40 deg "
+                             "series (72 B, 73 B) [deg]")
+        a = float(contact_angle)
+        if not abs(a - SINGLE_ROW_CONTACT_ANGLE) <= _ANGLE_TOLERANCE:
+            raise InputError(f"contact_angle {math.degrees(a):.4g} deg is not covered by SKF's published friction "
+                             f"constants (single row: 40 deg, series 72 B and 73 B, 39 to 41 deg) [deg]; give the "
+                             f"geometry constants R1,R2,R3,S1,S2,S3 from SKF (constants= in Python, --skf-constants "
+                             f"of film and temperature)")
+    return ANGULAR_CONTACT_CONSTANTS[design]
+
+
+def inlet_shear_heating_factor(kinematic_viscosity, shaft_speed, mean_diameter):
+    r"""Inlet shear heating reduction factor Phi_ish of the SKF model.
+
+    Parameters
+    ----------
+    kinematic_viscosity : array_like
+        nu at the operating temperature (of the base oil for grease). [m^2/s]
+    shaft_speed : array_like
+        n (its sign does not matter). [rad/s]
+    mean_diameter : array_like
+        d_m = (d + D)/2. [m]
+
+    Returns
+    -------
+    ndarray or float
+        :math:`\Phi_{ish} = 1/(1 + 1.84\times10^{-9} (n d_m)^{1.28} \nu^{0.64})` (rpm, mm, mm^2/s). [-]
+
+    Examples
+    --------
+    The SKF catalogue's worked example (22208 E, 3500 rpm, d_m = 60 mm, 68 mm^2/s) prints about 0.85:
+
+    >>> print(f"{inlet_shear_heating_factor(68e-6, 3500 * 2 * np.pi / 60, 60e-3):.3f}")
+    0.849
+    """
+    nu = check_nonnegative("kinematic_viscosity", kinematic_viscosity, "m^2/s") / _CST
+    n = np.abs(np.asarray(shaft_speed, dtype=float)) / _RPM
+    dm = check_positive("mean_diameter", mean_diameter, "m") / _MM
+    return (1.0 / (1.0 + 1.84e-9 * (n * dm) ** 1.28 * nu**0.64))[()]
 
 
 def sliding_friction_coefficient(kinematic_viscosity, shaft_speed, mean_diameter, *,
@@ -279,8 +405,8 @@ def replenishment_factor(kinematic_viscosity, shaft_speed, bore, outside_diamete
         d, D. [m]
     lubrication : {"grease", "oil-air", "oil-jet", "oil-bath"}
         Sets K_rs.
-    bearing_type : {"radial", "angular"}
-        Sets K_Z.
+    bearing_type : {"radial", "angular", "double-row-angular", "four-point"}
+        Sets K_Z (:data:`SKF_BEARING_TYPES`).
 
     Returns
     -------
@@ -321,8 +447,9 @@ def drag_moment(shaft_speed, kinematic_viscosity, bore, outside_diameter, oil_le
         bearing's centre line: a higher level is refused). [m]
     drag_loss_factor : array_like
         V_M, read from SKF's diagram of the drag loss factor against H/d_m for ball bearings. [-]
-    bearing_type : {"radial", "angular"}
-        Deep groove (K_Z = 3.1) or angular contact (K_Z = 4.4).
+    bearing_type : {"radial", "angular", "double-row-angular", "four-point"}
+        Deep groove (K_Z = 3.1), single-row angular contact (K_Z = 4.4), double-row angular or
+        four-point contact (K_Z = 3.1).
     rows : int
         Ball rows i_rw. [-]
 
@@ -422,7 +549,7 @@ def _load_variables(fr, fa, n, dm, c, bearing_type, c0):
 def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside_diameter, *, series=None,
         constants=None, bearing_type="radial", lubrication="grease", static_load_rating=None, seal=None,
         seals=2, seal_diameter=None, seal_constants_override=None, sliding_friction_coefficient=None,
-        ehl_coefficient=_MU_EHL, oil_level=None, drag_loss_factor=None):
+        ehl_coefficient=_MU_EHL, oil_level=None, drag_loss_factor=None, contact_angle=None):
     r"""Frictional moment of a deep-groove or angular-contact ball bearing by the SKF four-term model.
 
     Parameters
@@ -438,9 +565,11 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
     series : str, optional
         Deep-groove series for the constants (see :func:`series_constants`).
     constants : SKFConstants, optional
-        The geometry constants directly (required for angular contact). [-]
-    bearing_type : {"radial", "angular"}
-        Deep groove (K_Z = 3.1) or angular contact (K_Z = 4.4).
+        The geometry constants directly, in place of SKF's tables. [-]
+    bearing_type : {"radial", "angular", "double-row-angular", "four-point"}
+        Deep groove (K_Z = 3.1), single-row angular contact (K_Z = 4.4), double-row angular contact or
+        four-point contact (K_Z = 3.1); the angular types take SKF's constants of their type
+        (:func:`angular_contact_constants`) unless ``constants`` are given.
     lubrication : {"grease", "oil-air", "oil-jet", "oil-bath"}
         Sets K_rs; an oil bath adds its drag moment (:func:`drag_moment`; needs ``oil_level`` and
         ``drag_loss_factor``).
@@ -462,6 +591,8 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
         Oil bath: H from the lowest point of the outer raceway. [m]
     drag_loss_factor : float, optional
         Oil bath: V_M of SKF's diagram at H/d_m. [-]
+    contact_angle : float, optional
+        Nominal contact angle of a single-row angular-contact bearing, for SKF's constants (40 deg). [rad]
 
     Returns
     -------
@@ -478,7 +609,9 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
     \sin\alpha_F)^{0.54}` and :math:`G_{sl} = S_1 d_m^{-0.145}(F_r^5 + S_2 d_m^{1.5} F_a^4/\sin
     \alpha_F)^{1/3}`. Angular contact: :math:`G_{rr} = R_1 d_m^{1.97}(F_r + F_g + R_2 F_a)^{0.54}`,
     :math:`F_g = R_3 d_m^4 n^2`, :math:`G_{sl} = S_1 d_m^{0.26}((F_r + F_g)^{4/3} + S_2 F_a^{4/3})`,
-    :math:`F_g = S_3 d_m^4 n^2`. The seal moment is halved for one sealed side.
+    :math:`F_g = S_3 d_m^4 n^2`; F_a is the external axial load (SKF's footnote to its table of G_rr,
+    G_sl). Double-row angular and four-point contact bearings take the same forms with the constants of
+    their type [2]_. The seal moment is halved for one sealed side.
 
     Examples
     --------
@@ -501,11 +634,16 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
     if bearing_type not in _KZ:
         raise InputError(f"bearing_type must be one of {list(_KZ)}, got {bearing_type!r}")
     if constants is None:
-        if series is None:
+        design = SKF_BEARING_TYPES[bearing_type][0]
+        if design is not None:  # angular contact: SKF's constants are by type, not by series
+            if series is not None:
+                raise InputError(f"series {series!r}: SKF's series constants are for deep-groove bearings; an "
+                                 f"angular-contact bearing takes the constants of its type (no series=)")
+            constants = angular_contact_constants(contact_angle, design=design)
+        elif series is None:
             raise InputError("give the bearing series (series=) or its constants (constants=)")
-        if bearing_type != "radial":
-            raise InputError("angular-contact constants are not tabulated here; give constants=SKFConstants(...)")
-        constants = series_constants(series)
+        else:
+            constants = series_constants(series)
     fr = check_nonnegative("radial_load", radial_load, "N")
     fa = check_nonnegative("axial_load", axial_load, "N")
     omega = np.abs(np.asarray(shaft_speed, dtype=float))
@@ -523,7 +661,7 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
           if sliding_friction_coefficient is None
           else check_nonnegative("sliding_friction_coefficient", sliding_friction_coefficient, "-"))
     m_sl = g_sl * mu
-    m_seal = _seal_moment(seal, seals, seal_diameter, seal_constants_override, outside_diameter)
+    m_seal = _seal_moment(seal, seals, seal_diameter, seal_constants_override, outside_diameter, bearing_type)
     m_drag = (drag_moment(omega, nu * _CST, d * _MM, big * _MM, oil_level, drag_loss_factor,
                           bearing_type=bearing_type) / _MM if bath else 0.0)
     total = m_rr + m_sl + m_seal + m_drag
@@ -532,13 +670,14 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
     return SKFTorque(*out, np.broadcast_to(total * _MM * omega, shape)[()], np.broadcast_to(mu, shape)[()])
 
 
-def _seal_moment(seal, seals, seal_diameter, override, outside_diameter):
+def _seal_moment(seal, seals, seal_diameter, override, outside_diameter, bearing_type="radial"):
     """K_S1 d_s^beta + K_S2 for two sealed sides, half for one [N mm]."""
     if seals not in (0, 1, 2) or isinstance(seals, bool):
         raise InputError(f"seals must be 0, 1 or 2 [-], got {seals!r}")
     if (seal is None and override is None) or seals == 0:
         return 0.0
-    k = override if override is not None else seal_constants(seal, float(np.max(outside_diameter)))
+    k = override if override is not None else seal_constants(seal, float(np.max(outside_diameter)),
+                                                             bearing_type=bearing_type)
     if k.ks1 == 0.0 and k.ks2 == 0.0:
         return 0.0
     if seal_diameter is None:
@@ -554,9 +693,10 @@ def skf_for_bearing(bearing, radial_load, axial_load, shaft_speed, kinematic_vis
     Parameters
     ----------
     bearing : BallBearing
-        Needs ``bore`` and ``outside_diameter``; ``series`` (else read from the designation), ``seal``,
-        ``seals`` and ``seal_diameter`` when sealed, ``static_load_rating`` under axial load (else
-        ISO 76 from the ball set).
+        Needs ``bore`` and ``outside_diameter``; a deep-groove one its ``series`` (else read from the
+        designation) and ``static_load_rating`` under axial load (else ISO 76 from the ball set); an
+        angular-contact one its ``contact_angle`` (SKF's single-row constants: 40 deg); ``seal``,
+        ``seals`` and ``seal_diameter`` when sealed.
     radial_load, axial_load : array_like
         Fr, Fa. [N]
     shaft_speed : array_like
@@ -584,11 +724,14 @@ def skf_for_bearing(bearing, radial_load, axial_load, shaft_speed, kinematic_vis
     d, big = bearing.require("bore", "outside_diameter")
     kw = {"bearing_type": bearing.type, "lubrication": lubrication}
     if "constants" not in options:
-        kw["series"] = bearing.series or bearing_series(bearing.designation)
-    if bearing.seal is not None:
+        if bearing.type == "radial":
+            kw["series"] = bearing.series or bearing_series(bearing.designation)
+        else:  # single-row angular contact: SKF's constants of the type, for its 40 deg bearings
+            kw["contact_angle"] = bearing.contact_angle
+    if bearing.seal is not None and _tabulated_seal(bearing, big):
         kw.update(seal=bearing.seal, seals=2 if bearing.seals is None else bearing.seals,
                   seal_diameter=bearing.seal_diameter)
-    if np.any(np.asarray(axial_load) > 0):
+    if bearing.type == "radial" and np.any(np.asarray(axial_load) > 0):  # alpha_F of deep groove needs C0
         if bearing.static_load_rating is not None:
             kw["static_load_rating"] = bearing.static_load_rating
         else:
@@ -602,6 +745,22 @@ def skf_for_bearing(bearing, radial_load, axial_load, shaft_speed, kinematic_vis
         return result
     warnings.warn(note, ValidityWarning, stacklevel=2)  # a physically doubtful result, as elsewhere
     return result._replace(warnings=(note,))
+
+
+def _tabulated_seal(bearing, outside_diameter):
+    """Whether the bearing's seal has SKF constants for its outside diameter. A seal read from the
+    designation (``6205-2RS``) without published constants is left out with the warning of
+    :func:`_unmodelled_seal`; a seal given in the bearing's data must be tabulated (InputError)."""
+    from_designation = str((bearing.sources or {}).get("seal", "")).startswith("designation suffix")
+    try:
+        k = seal_constants(bearing.seal, outside_diameter,
+                           bearing_type="angular" if bearing.type == "angular" else "radial")
+    except InputError:
+        if from_designation:
+            return False
+        raise
+    # a contact seal's moment needs its counterface diameter d_s, which no catalog row holds
+    return not (from_designation and bearing.seal_diameter is None and (k.ks1 != 0.0 or k.ks2 != 0.0))
 
 
 def _unmodelled_seal(bearing, kw):
