@@ -9,8 +9,10 @@ process and measures, with a bounded number of requests and a bounded time:
 3. the server's memory (the server process with its forkserver and workers, resident set) after 1000
    mixed requests: light, lists, errors, catalog searches and a few heavy ones.
 
-Run: ``PYTHONPATH=src python bench/web_load.py`` (``--quick`` for a smoke run; ``--light-only`` for
-the first figure alone, e.g. against another version's server with its ``src`` on ``PYTHONPATH``). The machine's load is
+Run: ``PYTHONPATH=src python bench/web_load.py`` (``--quick`` for a short run; ``--light-only`` for
+the first figure alone, e.g. against another version's server with its ``src`` on ``PYTHONPATH``;
+``--smoke`` for a few requests and a small heavy map on one worker of each pool, which
+``tests/web/test_web_load_smoke.py`` runs so that the script cannot rot). The machine's load is
 printed with the figures: on a shared machine they are a lower bound.
 """
 
@@ -40,6 +42,10 @@ MIXED = [
     ("/api/axial-angle", {"bearing": "4-1006095", "axial_load": "1kgf:5kgf:1kgf"}),
 ]
 CONCURRENCY = 8
+#: ``--smoke``: a heavy map of 15 cases, and (light, beside heavy, mixed, warm-up) request counts
+SMOKE_HEAVY = ("/api/high-speed", {"bearing": "B218", "axial_load": "1kN:5kN:1kN",
+                                   "speed": "1000rpm:3000rpm:1000rpm"})
+SMOKE_COUNTS = (20, 3, 14, 5)
 
 
 def _free_port():
@@ -48,10 +54,11 @@ def _free_port():
         return s.getsockname()[1]
 
 
-def _start(port):
+def _start(port, workers=None):
     env = dict(os.environ)
+    pools = f"light_workers={workers[0]}, heavy_workers={workers[1]}" if workers else ""
     code = ("import uvicorn\nfrom bearinglab.web import create_app\n"
-            f"uvicorn.run(create_app(), host='127.0.0.1', port={port}, log_level='warning')\n")
+            f"uvicorn.run(create_app({pools}), host='127.0.0.1', port={port}, log_level='warning')\n")
     proc = subprocess.Popen([sys.executable, "-c", code], env=env)
     url = f"http://127.0.0.1:{port}"
     deadline = time.monotonic() + 120
@@ -110,9 +117,10 @@ async def _light_rate(url, n):
     return n / took, latencies, statuses
 
 
-async def _light_beside_heavy(url, n_light):
+async def _light_beside_heavy(url, n_light, heavy_request=HEAVY):
     async with httpx.AsyncClient(timeout=120) as c:
-        heavy = [asyncio.create_task(c.get(url + HEAVY[0], params=HEAVY[1])) for _ in range(4)]
+        heavy = [asyncio.create_task(c.get(url + heavy_request[0], params=heavy_request[1]))
+                 for _ in range(4)]
         await asyncio.sleep(1.0)
         latencies = []
         for _ in range(n_light):
@@ -146,25 +154,38 @@ def _pct(values, q):
     return values[min(len(values) - 1, round(q * (len(values) - 1)))]
 
 
-def main(quick=False, light_only=False):
-    n_light, n_beside, n_mixed = (200, 10, 100) if quick else (1500, 40, 1000)
+def _cases(request):
+    """The cases of a map request: the product of its ranges' lengths (start:stop:step, inclusive)."""
+    count = 1
+    for value in request[1].values():
+        if value.count(":") == 2:
+            start, stop, step = (float("".join(c for c in v if c in "0123456789.e-")) for v in value.split(":"))
+            count *= round((stop - start) / step) + 1
+    return count
+
+
+def main(quick=False, light_only=False, smoke=False):
+    n_light, n_beside, n_mixed, n_warm = (200, 10, 100, 100) if quick else (1500, 40, 1000, 100)
+    heavy, workers = HEAVY, None
+    if smoke:  # the script's every path on a few requests (a test, not a measurement)
+        (n_light, n_beside, n_mixed, n_warm), heavy, workers = SMOKE_COUNTS, SMOKE_HEAVY, (1, 1)
     port = _free_port()
-    proc, url = _start(port)
+    proc, url = _start(port, workers)
     try:
         load = os.getloadavg()
         print(f"machine: {os.cpu_count()} CPUs, load average {load[0]:.1f} {load[1]:.1f} {load[2]:.1f}")
         start_mb = _rss_mb(proc.pid)
-        asyncio.run(_light_rate(url, 100))  # warm-up
+        asyncio.run(_light_rate(url, n_warm))  # warm-up
         rate, lat, statuses = asyncio.run(_light_rate(url, n_light))
         assert set(statuses) == {200}, set(statuses)
         print(f"RESULT web_light rate={rate:.0f}/s n={n_light} concurrency={CONCURRENCY} "
               f"p50={_pct(lat, 0.5) * 1e3:.1f}ms p99={_pct(lat, 0.99) * 1e3:.1f}ms")
         if light_only:  # e.g. to compare with another version of the server under the same load
             return 0
-        beside, running, heavy_status = asyncio.run(_light_beside_heavy(url, n_beside))
+        beside, running, heavy_status = asyncio.run(_light_beside_heavy(url, n_beside, heavy))
         print(f"RESULT web_light_beside_4_heavy n={n_beside} p50={statistics.median(beside) * 1e3:.1f}ms "
               f"p99={_pct(beside, 0.99) * 1e3:.1f}ms max={max(beside) * 1e3:.1f}ms "
-              f"(heavy: {HEAVY_CASES} cases each, {running} still running after the light ones, "
+              f"(heavy: {_cases(heavy)} cases each, {running} still running after the light ones, "
               f"status {heavy_status})")
         mixed = asyncio.run(_mixed(url, n_mixed))
         time.sleep(1.0)
@@ -178,4 +199,5 @@ def main(quick=False, light_only=False):
 
 
 if __name__ == "__main__":
-    sys.exit(main(quick="--quick" in sys.argv, light_only="--light-only" in sys.argv))
+    sys.exit(main(quick="--quick" in sys.argv, light_only="--light-only" in sys.argv,
+                  smoke="--smoke" in sys.argv))

@@ -15,7 +15,6 @@ _FILES_AND_OUTPUT = {"json", "help", "csv", "plot", "out", "catalog", "bearing_f
                      "workers", "chunk_size", "ross"}
 #: calculation -> {option or field: reason}, the known differences
 KNOWN = {
-    "life": {"duty_cycle": "a TOML file of steps: not a web input yet (a posted document would be)"},
     "catalog": {"name": "the command's argument NAME is the field 'name'"},
     "runout": {"geometry": "a file: the posted error set carries its [geometry] table, or a bearing",
                "errors": "a file on the command line; a posted document on the web"},

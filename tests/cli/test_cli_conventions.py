@@ -126,7 +126,7 @@ def test_bad_input_exits_2_with_one_line_naming_the_option(capsys, option, comma
 def test_a_library_name_the_user_did_not_type_is_left_as_it_is(capsys):
     """A field of a catalog or input file keeps its name: only options typed are renamed."""
     line = one_line(*run(capsys, ["frequencies", "-b", "6205-2RS", "--speed", "3000 rpm", "-F", "2 kgf"])[::2])
-    assert "inner_conformity of '6205-2RS' is not known" in line
+    assert "contact_angle must be in (0, 90) [deg]" in line  # not --contact-angle: the catalog's field
 
 
 # ----------------------------------------------------------------------------- negative speed, every command

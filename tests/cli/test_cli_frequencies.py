@@ -217,10 +217,11 @@ def test_inline_geometry(capsys):
             ["-b", "4-1006095", "--speed", "3000 rpm", "-F", "2 kgf", "--hertz", "rough"],
             r"hertz must be one of",
         ),
-        # the axial-load method needs the groove conformities (not in the CWRU data) ...
+        # the axial-load method needs the groove conformities ...
         (
-            ["-b", "6205-2RS", "--speed", "3000 rpm", "-F", "2 kgf"],
-            r"inner_conformity of '6205-2RS' is not known",
+            ["--balls", "9", "--ball-diameter", "7.94 mm", "--pitch-diameter", "39.04 mm", "--contact-angle",
+             "10 deg", "--speed", "3000 rpm", "-F", "2 kgf"],
+            r"inner_conformity of 'inline' is not known",
         ),
         # ... and a nominal angle in (0, 90 deg)
         (

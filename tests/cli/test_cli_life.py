@@ -287,7 +287,7 @@ def test_no_load_says_why_the_lives_and_s0_are_not_shown(capsys):
     assert doc["equivalent_dynamic_load_N"] == 0.0
     assert doc["basic_rating_life_Mrev"] is None and doc["static_safety_factor"] is None
     notes = [w for w in doc["warnings"] if w.startswith("P = 0")]
-    assert notes == ["P = 0: no equivalent load, so L10, L_nm and s0 are unbounded (shown as —, null in --json)"]
+    assert notes == ["P = 0: no equivalent load, so L10, L_nm, L10r, L_nmr and s0 are unbounded (shown as —, null in --json)"]
     code, out, err = run(capsys, *args)
     assert code == 0, err
     assert "— (see the warnings)" in out and "warning: P = 0: no equivalent load" in out

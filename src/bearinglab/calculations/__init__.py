@@ -98,7 +98,7 @@ def _cases(calc, values, given, limit):
     return cases
 
 
-def parse(name, given, *, limit=CASE_LIMIT):
+def parse(name, given, *, limit=CASE_LIMIT, check=True):
     """Read and check the values of a request for calculation ``name``.
 
     Parameters
@@ -110,6 +110,10 @@ def parse(name, given, *, limit=CASE_LIMIT):
         an empty string, counts as not given.
     limit : int
         The most cases the request may hold.
+    check : bool
+        Read and check each value against its field (the web). False keeps the values as given: the
+        command line, whose options typer has read, and whose calculation checks each value by the
+        command line's own rules and bounds (:mod:`bearinglab._bounds`, not the web's lower ones).
 
     Returns
     -------
@@ -131,6 +135,9 @@ def parse(name, given, *, limit=CASE_LIMIT):
     values = {}
     for f in calc.fields:
         if f.name in given:
+            if not check:
+                values[f.name] = given[f.name]
+                continue
             if f.kind == "document" and len(str(given[f.name])) > DOCUMENT_LIMIT:
                 raise RequestError(f.name, "...", f"at most {DOCUMENT_LIMIT} characters",
                                    f"{{name}}: the document is longer than {DOCUMENT_LIMIT} characters")
@@ -144,4 +151,4 @@ def parse(name, given, *, limit=CASE_LIMIT):
                 values[f.name] = parse_field(f, given[f.name], limit=limit)
         elif f.required:
             raise RequestError(f.name, None, f.valid(), f"{{name}}: missing; {f.help}")
-    return Parsed(calc, given, values, _cases(calc, values, given, limit))
+    return Parsed(calc, given, values, _cases(calc, values, given, limit) if check else 1)

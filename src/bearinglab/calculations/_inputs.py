@@ -1,25 +1,24 @@
-"""The inputs every calculation shares: the bearing (named, from a file, inline), the speeds and
-lengths as typed, and the echo of the inputs in a document.
+"""The inputs every boundary reads the same way: a bearing, loads, speeds, lengths and the lubricant.
 
-Used by the calculations' documents (:mod:`bearinglab.calculations`) and by the command line (which
-imports them through ``bearinglab.cli._common``); nothing here prints or knows a boundary.
+The command line's options and the calculations' fields (:mod:`bearinglab.calculations`) are read by
+these functions, so that a value means the same and is refused with the same message whichever
+boundary gives it. Each message opens with the input's name as the command line spells it without its
+dashes (``radial-load: ...``, ``speed must be ...``); other inputs it names carry their dashes
+(``give --fx or --radial-load``). Nothing here prints, and nothing imports the command line.
 
-Functions
----------
-resolve_bearing   the bearing named, read from a file, or given inline; inline options override
-inputs_echo       the inputs a result was computed from, for its JSON
-parse_length      a length > 0 (the message in mm or um)
-speed_size        d_m of the speed guard
-parse_speeds      the speeds of a speed option (one rule for every command); parse_speed: one speed
-choice            a value among choices
-field             context: an InputError of the command's wording about a field -> RunFailure
+Bearing         resolve_bearing (a catalog name, a bearing file or the inline geometry -> BallBearing),
+                inputs_echo (the bearing as used and the quantities given, for a JSON document)
+Quantities      five_loads, parse_length, speed_size, parse_speed, parse_speeds, parse_viscosity,
+                parse_temperature, choice
+Lubricant       LubricantViscosity, lubricant_viscosity (the oil options -> the operating viscosity)
 """
 
 from __future__ import annotations
 
-import contextlib
 import dataclasses
 import math
+import re
+import typing
 import weakref
 from typing import TYPE_CHECKING
 
@@ -28,14 +27,17 @@ from ..errors import InputError
 if TYPE_CHECKING:
     from ..bearing import BallBearing
 
-__all__: list[str] = []  # private to the calculations and the command line
-
+__all__ = ["LubricantViscosity", "choice", "five_loads", "inputs_echo", "lubricant_viscosity",
+           "parse_length", "parse_speed", "parse_speeds", "parse_temperature", "parse_viscosity",
+           "resolve_bearing", "speed_size"]
 
 def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, ball_diameter=None,
                     pitch_diameter=None, inner_groove_radius=None, outer_groove_radius=None,
                     inner_conformity=None, outer_conformity=None, contact_angle=None,
                     radial_clearance=None, ball_material=None) -> BallBearing:
-    """The bearing named, read from a file, or given inline; inline options override named fields."""
+    """The bearing named, read from a file, or given inline; inline options override named fields.
+
+    Its provenance notes (:func:`bearinglab.catalog.provenance_notes`) are the caller's to report."""
     from .. import catalog as _catalog
     from ..bearing import MATERIALS, BallBearing
     from ..units import parse_quantity
@@ -86,9 +88,9 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
         if key not in MATERIALS:
             raise InputError(f"ball-material must be one of {sorted(MATERIALS)}, got {ball_material!r}")
         changes["ball_material"] = MATERIALS[key]
-    if not changes and not (bearing or bearing_file):
-        raise InputError("bearing: give --bearing NAME, --bearing-file FILE or the inline geometry (--balls, --ball-diameter, ...)")
     if not changes:
+        if not (bearing or bearing_file):
+            raise InputError("bearing: give --bearing NAME, --bearing-file FILE or the inline geometry (--balls, --ball-diameter, ...)")
         return base
     given = {"balls": balls, "ball-diameter": ball_diameter, "pitch-diameter": pitch_diameter,
              "inner-groove-radius": inner_groove_radius, "outer-groove-radius": outer_groove_radius,
@@ -108,7 +110,6 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
 
 
 _OVERRIDES = weakref.WeakKeyDictionary()  # bearing -> the catalog bearing and the options that changed it
-
 
 
 def _clean(value):
@@ -211,6 +212,30 @@ def parse_speeds(text, name="speed", *, pitch_diameter=None, zero=True, what="th
     return w
 
 
+#: Kinematic viscosities accepted from the command line [m^2/s]: 0.1 to 1e7 cSt, the dynamic range the film
+#: command takes (0.1 to 1e7 mPa s) at about 1000 kg/m^3. A sanity bound, not a property of any oil: outside
+#: it a value is taken for a typing or unit error (issue 24: absurd viscosities are refused in one line).
+VISCOSITY_BOUNDS = (1e-7, 10.0)
+#: The hottest oil temperature accepted from the command line [degC]. A sanity bound, not an oil's limit
+#: (SKF rates its angular-contact bearings with steel or brass cages to +150 degC, General Catalogue 6000/I RU,
+#: 2006, p. 413): above it a value is taken for a typing or unit error, and ASTM D341 is far outside its data.
+HOTTEST_OIL_DEGC = 400.0
+
+
+def parse_viscosity(text, name="viscosity"):
+    """A kinematic viscosity option [m^2/s], > 0 and within :data:`VISCOSITY_BOUNDS` (the message in cSt,
+    the unit of oil data sheets)."""
+    from ..units import parse_quantity
+
+    nu = parse_quantity(text, "kinematic_viscosity", name)
+    if not nu > 0:
+        raise InputError(f"{name} must be > 0 [cSt], got {float(nu) * 1e6:.6g} cSt")
+    lo, hi = VISCOSITY_BOUNDS
+    if not lo <= nu <= hi:
+        raise InputError(f"{name} must be in [{lo * 1e6:g}, {hi * 1e6:g}] [cSt], got {float(nu) * 1e6:.6g} cSt")
+    return nu
+
+
 def choice(name, value, choices):
     """``value`` if it is one of ``choices``; otherwise an InputError listing them."""
     if value not in choices:
@@ -218,91 +243,126 @@ def choice(name, value, choices):
     return value
 
 
+def five_loads(fx=None, fy=None, fz=None, mx=None, my=None, radial_load=None, axial_load=None):
+    """(F_x, F_y, F_z, M_x, M_y) in N and N m from the load options (missing ones are 0)."""
+    from ..units import parse_quantity
+
+    if fx is not None and radial_load is not None:
+        raise InputError("radial-load: give --fx or --radial-load, not both")
+    if fz is not None and axial_load is not None:
+        raise InputError("axial-load: give --fz or --axial-load, not both")
+    names = (("fx" if radial_load is None else "radial-load", radial_load if fx is None else fx, "force"),
+             ("fy", fy, "force"),
+             ("fz" if axial_load is None else "axial-load", axial_load if fz is None else fz, "force"),
+             ("mx", mx, "torque"), ("my", my, "torque"))
+    return [0.0 if text is None else parse_quantity(text, kind, name) for name, text, kind in names]
 
 
-# ----------------------------------------------------------------------------- requests and their failures
-def request(name, given):
-    """The command line's request for calculation ``name``: the options as typed (``given``, field name
-    -> value; None for an option not given) as a :class:`bearinglab.calculations.Parsed`.
+_ZERO_C = 273.15  # K at 0 degC
+_TEMPERATURE = re.compile(r"^\s*([-+]?\d+(?:\.\d*)?(?:[eE][-+]?\d+)?)\s*(°C|degC|C|K|°F|degF|F)\s*$")
 
-    The command line does not run the fields' range checks of :func:`bearinglab.calculations.parse`:
-    those hold the web's smaller limits (``balls <= 200``, ``harmonics <= 100``), while the command
-    line keeps its own (:mod:`bearinglab._bounds`). The document checks every input itself, with the
-    same messages for both boundaries, so ``values`` holds the typed values (whole numbers, numbers,
-    flags, choices, text) and the quantities as the text given.
+
+def parse_temperature(text, name="temperature"):
+    """A temperature '70 degC', '343 K' or '158 degF' [K], above absolute zero."""
+    m = _TEMPERATURE.match(text or "")
+    if not m:
+        raise InputError(f"{name} must be a number with degC, K or degF (e.g. '70 degC'), got {text!r}")
+    v, unit = float(m.group(1)), m.group(2).lstrip("°").removeprefix("deg")
+    t = {"C": v + _ZERO_C, "K": v, "F": (v - 32.0) / 1.8 + _ZERO_C}[unit]
+    if not (t > 0 and math.isfinite(t)):
+        raise InputError(f"{name} must be above absolute zero (0 K = -273.15 degC), got {text!r}")
+    return t
+
+
+class LubricantViscosity(typing.NamedTuple):
+    """The operating viscosity from the oil options (:func:`lubricant_viscosity`)."""
+
+    viscosity: float | None
+    """nu at the operating temperature [m^2/s]; None when no oil option was given."""
+    description: str
+    """How nu was obtained, one line for the output ("VG68 at 70 degC, VI 95 (assumed ...): 19.86 cSt")."""
+    inputs: dict
+    """The oil options as used, for the JSON's ``inputs`` (engineering units in the key names)."""
+
+
+def lubricant_viscosity(viscosity=None, oil=None, temperature=None, viscosity_index=None, viscosity_100=None,
+                        *, required=False):
+    """The operating viscosity from the shared oil options: ``--viscosity``, or ``--oil`` with
+    ``--temperature`` and at most one of ``--viscosity-index`` / ``--viscosity-100`` (neither: the oil's
+    VI is :data:`bearinglab.ratings.DEFAULT_VISCOSITY_INDEX`, 95, and the description says it was assumed).
+
+    Parameters
+    ----------
+    viscosity, oil, temperature, viscosity_100 : str or None
+        The options' texts ('20 cSt', 'VG68' or 'ISO VG 68', '70 degC', '8.7 cSt').
+    viscosity_index : float or None
+        The option's value.
+    required : bool
+        Whether the command needs a viscosity (no option given is then an error; otherwise the result's
+        viscosity is None).
+
+    Returns
+    -------
+    LubricantViscosity
+        ``(viscosity [m^2/s] or None, description, inputs)``.
     """
-    from . import CALCULATIONS, Parsed
+    from ..ratings import lubrication
 
-    calc = CALCULATIONS[name]
-    names = {f.name for f in calc.fields}
-    given = {k: v for k, v in given.items() if v is not None and k in names}
-    return Parsed(calc, given, dict(given), 1)
-
-
-def text(parsed, name, default=None):
-    """The value of field ``name`` as the user wrote it (a number from a JSON body with the field's
-    unit), or ``default`` when it was not given."""
-    if name not in parsed.given:
-        return default
-    value = parsed.given[name]
-    if isinstance(value, str):
-        return value.strip()
-    unit = parsed.calculation.field(name).unit
-    return f"{value} {unit}" if unit and unit != "-" else str(value)
-
-
-def value(parsed, name, default=None):
-    """The checked value of a whole-number, number, flag or choice field, or ``default``."""
-    return parsed.values.get(name, default)
-
-
-def failure(exc, names=()):
-    """An InputError as a RunFailure: it names the field of ``names`` (field names) whose option its
-    message opens with (``axial-load must be ...``, ``speed: ...``); otherwise it names no field."""
-    from .documents import RunFailure
-
-    message = str(exc)
-    for name in sorted(names, key=len, reverse=True):  # 'outer-speed' before 'speed'
-        spelled = name.replace("_", "-")
-        rest = message[len(spelled):]
-        if message.startswith(spelled) and (rest[:1] in (":", " ", "")):
-            return RunFailure(name, None, "{name}" + rest)
-    return RunFailure(None, None, message)
-
-
-@contextlib.contextmanager
-def fields(parsed):
-    """Run a document's computation: an InputError that opens with one of the calculation's options
-    becomes a RunFailure naming that field (the command line words it back as the option)."""
-    from .fields import RequestError
-
-    try:
-        yield
-    except RequestError:
-        raise
-    except InputError as exc:
-        raise failure(exc, [f.name for f in parsed.calculation.fields]) from None
-
-
-def notes_in(doc, bearing):
-    """The document with the bearing's provenance notes after its own warnings, as the command line's
-    ``emit_json`` adds them."""
-    from .. import catalog
-
-    notes = list(dict.fromkeys(catalog.provenance_notes(bearing)))
-    if not notes:  # emit_json adds no key of its own then
-        return doc
-    own = list(doc.get("warnings") or [])
-    doc["warnings"] = own + [n for n in notes if n not in own]
-    return doc
-
-
-def bearing_of(parsed, *, bearing_file=None, catalog=None):
-    """The bearing of a request: the ``bearing`` field, a bearing file or catalog file (command line
-    only), and the inline geometry fields, by :func:`resolve_bearing`."""
-    return resolve_bearing(
-        text(parsed, "bearing"), bearing_file, catalog, value(parsed, "balls"),
-        text(parsed, "ball_diameter"), text(parsed, "pitch_diameter"), text(parsed, "inner_groove_radius"),
-        text(parsed, "outer_groove_radius"), value(parsed, "inner_conformity"),
-        value(parsed, "outer_conformity"), text(parsed, "contact_angle"), text(parsed, "radial_clearance"),
-        text(parsed, "ball_material"))
+    oil_opts = {"oil": oil, "temperature": temperature, "viscosity-index": viscosity_index,
+                "viscosity-100": viscosity_100}
+    given = [k for k, v in oil_opts.items() if v is not None]
+    if viscosity is not None:
+        if given:
+            raise InputError(f"viscosity: give --viscosity, or --oil with --temperature, not both (also given: "
+                             f"{', '.join('--' + k for k in given)})")
+        nu = parse_viscosity(viscosity, "viscosity")
+        return LubricantViscosity(nu, f"{nu * 1e6:.4g} cSt (given)", {"viscosity_cSt": nu * 1e6})
+    if not given:
+        if required:
+            raise InputError("viscosity: give --viscosity (e.g. '20 cSt'), or --oil VG68 with --temperature "
+                             "(and --viscosity-index or --viscosity-100 if known)")
+        return LubricantViscosity(None, "no lubricant given", {})
+    if oil is None or temperature is None:
+        missing = "--oil (e.g. VG68)" if oil is None else "--temperature (e.g. '70 degC')"
+        raise InputError(f"{'oil' if oil is None else 'temperature'}: {', '.join('--' + k for k in given)} "
+                         f"also need{'s' if len(given) == 1 else ''} {missing}")
+    if viscosity_index is not None and viscosity_100 is not None:
+        raise InputError("viscosity-index: give --viscosity-index or --viscosity-100, not both (the index fixes "
+                         "the viscosity at 100 degC)")
+    m = re.fullmatch(r"(?:ISO\s*)?VG\s*(\d+)", oil.strip(), flags=re.IGNORECASE)
+    grades = lubrication.ISO_VG_GRADES
+    if not m or int(m.group(1)) not in grades:
+        raise InputError(f"oil must be an ISO VG grade (VG{grades[0]} ... VG{grades[-1]}), got {oil!r}")
+    grade, t = int(m.group(1)), parse_temperature(temperature)
+    nu40 = lubrication.iso_vg_viscosity(grade)
+    if viscosity_100 is not None:
+        nu100 = parse_viscosity(viscosity_100, "viscosity-100")
+        if not nu100 < nu40:
+            raise InputError(f"viscosity-100 must be below the grade's {nu40 * 1e6:g} cSt at 40 degC, got "
+                             f"{nu100 * 1e6:g} cSt")
+        how, vi = f"nu100 {nu100 * 1e6:.4g} cSt (given)", None
+    else:
+        vi = lubrication.DEFAULT_VISCOSITY_INDEX if viscosity_index is None else float(viscosity_index)
+        if not (math.isfinite(vi) and -100.0 <= vi <= 400.0):
+            raise InputError(f"viscosity-index must be in [-100, 400] [-], got {viscosity_index!r}")
+        try:
+            nu100 = float(lubrication.viscosity_100_from_index(nu40, vi))
+        except InputError as exc:  # the library's message names its own parameters
+            raise InputError(f"viscosity-index: VG{grade} with VI {vi:g} is outside ASTM D2270 ({exc})") from None
+        how = (f"VI {vi:g} ({'given' if viscosity_index is not None else 'assumed: a mineral oil, SKF'}), "
+               f"nu100 {nu100 * 1e6:.4g} cSt by ASTM D2270")
+    if not t <= _ZERO_C + HOTTEST_OIL_DEGC:
+        raise InputError(f"temperature must be <= {HOTTEST_OIL_DEGC:g} [degC] (the oil's operating temperature), got "
+                         f"{t - _ZERO_C:g} degC")
+    nu = float(lubrication.kinematic_viscosity(t, viscosity_40=nu40, viscosity_100=nu100))
+    lo, hi = VISCOSITY_BOUNDS
+    if not lo <= nu <= hi:  # ASTM D341 extrapolated far outside the oil's liquid range
+        raise InputError(f"temperature: VG{grade} at {t - _ZERO_C:g} degC would have nu = {nu * 1e6:.3g} cSt by "
+                         f"ASTM D341, outside [{lo * 1e6:g}, {hi * 1e6:g}] cSt; give an operating temperature of "
+                         f"the oil")
+    text = f"VG{grade} at {t - _ZERO_C:.4g} degC, {how}: nu = {nu * 1e6:.4g} cSt (ASTM D341)"
+    inputs = {"oil": f"VG{grade}", "temperature_degC": t - _ZERO_C, "viscosity_100_cSt": nu100 * 1e6,
+              "viscosity_index": vi, "viscosity_index_assumed": viscosity_index is None and viscosity_100 is None}
+    if vi is None:
+        del inputs["viscosity_index"], inputs["viscosity_index_assumed"]
+    return LubricantViscosity(nu, text, inputs)

@@ -1,14 +1,14 @@
-"""The mounting inputs every calculation shares: fits, seats, materials, temperatures (issue 23), parsed
-and checked (moved from the command line's ``cli._mounting``, which adds them as options).
+"""The mounting inputs of every calculation that takes a bearing: fits, seats, materials, temperatures
+(issue 23), read the same way by the command line and the calculations.
 
 parse_temperature   a temperature [K] ('60 degC', '333 K'; a bare number is degC)
-operating_clearance the operating clearance under the mounting inputs, as JSON entries (a preload allowed)
-operating_bearing   the bearing at its probable operating clearance under the mounting inputs, and the JSON
-mounted_set         the mounting inputs of bearing-set applied to its bearings (MountedSet)
 MountedInputs       the parsed inputs: tolerance limits, Mounting, Conditions, unmounted clearance range
-mounted_inputs      the inputs of a calculation -> MountedInputs (None when no mounting input was given)
+mounted_inputs      the inputs -> MountedInputs (None when none was given)
+operating_bearing   the bearing at its probable operating clearance, and the JSON entries to add
+MountedSet, mounted_set   the inputs of a bearing set applied to its bearings
 
-The physics is :mod:`bearinglab.mounting`; nothing here computes beyond parsing and choosing the tables.
+The options are :mod:`bearinglab.cli._mounting`'s; the physics is :mod:`bearinglab.mounting`. Messages
+name the inputs as the command line spells them without their dashes (``shaft-fit must be ...``).
 """
 
 from __future__ import annotations
@@ -19,14 +19,8 @@ from typing import NamedTuple
 from ..errors import InputError
 from ._inputs import parse_length
 
-__all__: list[str] = []  # private to the calculations and the command line
-
-#: the mounting fields (``registry.MOUNTING``) by name
-NAMES = ("shaft_fit", "housing_fit", "shaft_interference", "housing_interference", "shaft_bore",
-         "housing_outside_diameter", "shaft_material", "housing_material", "tolerance_class", "clearance_class",
-         "inner_ring_temperature", "outer_ring_temperature", "ball_temperature", "shaft_temperature",
-         "housing_temperature")
-
+__all__ = ["MountedInputs", "MountedSet", "mounted_inputs", "mounted_set", "operating_bearing",
+           "parse_temperature"]
 
 _ABSOLUTE_ZERO_C = -273.15
 _UM, _MM = 1e-6, 1e-3
@@ -253,40 +247,52 @@ def mounted_set(bearings, assembled_interference, arrangement, spacing, speed, o
     return MountedSet(new, interference, clearance, echo, notes)
 
 
-def operating_clearance(bearing, given, speed=0.0):
-    """The operating clearance of ``bearing`` under the mounting inputs ``given`` (field name -> text as
-    typed) as the JSON entries ``operating_clearance_um`` (probable), ``operating_clearance_min_um``,
-    ``operating_clearance_max_um``, ``unmounted_clearance_um``, ``mounting`` and ``mounting_warnings``;
-    ``{}`` without mounting inputs. A negative clearance (a preload) is reported, not refused."""
-    return _operating(bearing, given, speed)[1]
-
-
-def _operating(bearing, given, speed):
-    """(probable operating clearance [m] or None, the JSON entries of :func:`operating_clearance`)."""
-    given = {k: v for k, v in given.items() if v is not None and k in NAMES}
+def operating_bearing(bearing, speed=0.0, options=None):
+    """The bearing at its probable operating clearance under the mounting ``options`` (name -> text as
+    given, None for not given), and the JSON entries to add (``operating_clearance_um`` and the range);
+    ``(bearing, {})`` without options."""
+    given = {k: v for k, v in (options or {}).items() if v is not None}
     if not given:
-        return None, {}
+        return bearing, {}
     from ..mounting import chain
 
     inp = mounted_inputs(bearing, **given, speed=float(speed), require=True)
     r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
     e = float(r.probable.operating_clearance)
-    return e, {"operating_clearance_um": e / _UM,
-            "operating_clearance_min_um": float(r.least.operating_clearance) / _UM,
-            "operating_clearance_max_um": float(r.largest.operating_clearance) / _UM,
-            "unmounted_clearance_um": [inp.unmounted[0] / _UM, inp.unmounted[1] / _UM],
-            "mounting": inp.echo, "mounting_warnings": list(r.warnings)}
-
-
-def operating_bearing(bearing, given, speed=0.0):
-    """The bearing at its probable operating clearance under the mounting inputs ``given`` (field name ->
-    text as typed), and the JSON entries to add (:func:`operating_clearance`); ``(bearing, {})`` without
-    mounting inputs. A clearance <= 0 is refused: the models that take the bearing's clearance need play."""
-    e, doc = _operating(bearing, given, speed)
-    if e is None:
-        return bearing, {}
     if not e > 0:
         raise InputError(f"operating clearance must be > 0 [um] for this model, got {e / _UM:.3g} um (the fits and "
                          "temperatures preload the bearing); give a larger --clearance-class, or model a "
                          "preloaded pair with bearing-set")
+    doc = {"operating_clearance_um": e / _UM,
+           "operating_clearance_min_um": float(r.least.operating_clearance) / _UM,
+           "operating_clearance_max_um": float(r.largest.operating_clearance) / _UM,
+           "unmounted_clearance_um": [inp.unmounted[0] / _UM, inp.unmounted[1] / _UM],
+           "mounting": inp.echo, "mounting_warnings": list(r.warnings)}
     return bearing.replace(radial_clearance=e), doc
+
+
+#: the mounting fields (``registry.MOUNTING``) by name
+NAMES = ("shaft_fit", "housing_fit", "shaft_interference", "housing_interference", "shaft_bore",
+         "housing_outside_diameter", "shaft_material", "housing_material", "tolerance_class", "clearance_class",
+         "inner_ring_temperature", "outer_ring_temperature", "ball_temperature", "shaft_temperature",
+         "housing_temperature")
+
+
+def operating_clearance(bearing, given, speed=0.0):
+    """The operating clearance of ``bearing`` under the mounting inputs ``given`` (field name -> text as
+    typed; other names are left out) as the JSON entries of :func:`operating_bearing`
+    (``operating_clearance_um`` probable, ``_min_um``, ``_max_um``, ``unmounted_clearance_um``,
+    ``mounting``, ``mounting_warnings``); ``{}`` without mounting inputs. A negative clearance (a
+    preload) is reported, not refused: for a model that does not take the clearance (friction)."""
+    given = {k: v for k, v in given.items() if v is not None and k in NAMES}
+    if not given:
+        return {}
+    from ..mounting import chain
+
+    inp = mounted_inputs(bearing, **given, speed=float(speed), require=True)
+    r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
+    return {"operating_clearance_um": float(r.probable.operating_clearance) / _UM,
+            "operating_clearance_min_um": float(r.least.operating_clearance) / _UM,
+            "operating_clearance_max_um": float(r.largest.operating_clearance) / _UM,
+            "unmounted_clearance_um": [inp.unmounted[0] / _UM, inp.unmounted[1] / _UM],
+            "mounting": inp.echo, "mounting_warnings": list(r.warnings)}

@@ -2,7 +2,9 @@
 
 ``catalog`` (:func:`catalog_document`, which ``catalog show`` prints too) and ``catalog-search``
 (:func:`bearinglab.catalog.search`) are built here from :mod:`bearinglab.catalog` and
-:mod:`bearinglab.tables`. The other calculations run their command's function in this process with
+:mod:`bearinglab.tables`. The calculations of ``_NATIVE`` (life, load-distribution, bearing-set) are
+computed by ``document(parsed)`` of their module of this package, the function their command calls too,
+and their figures are drawn from that document. The other calculations run their command's function in this process with
 the request's checked values as options and read the document it prints: the command line builds
 those documents inline, and until each is factored into a function of its own, running the command
 is what keeps the two identical (``tests/calculations/test_documents.py``). The command's function is
@@ -468,13 +470,15 @@ def run(parsed):
     return _command_document(parsed)
 
 
-#: the calculations computed by a module of this package (its ``document(parsed)``), name -> module
-_NATIVE = {"frequencies": "frequencies", "stand-load": "stand", "axial-angle": "stand", "high-speed": "high_speed",
+#: the calculations computed by a function of their own (calculation name -> module of this package,
+#: with ``document(parsed)``; the command line calls the same function)
+_NATIVE = {"life": "life", "load-distribution": "load_distribution", "bearing-set": "bearing_set",
+           "frequencies": "frequencies", "stand-load": "stand", "axial-angle": "stand", "high-speed": "high_speed",
            "friction": "friction_torque"}
 
 
 def _native(parsed):
-    """The document of a native calculation; its failures as RunFailure (no command line involved)."""
+    """The document of a calculation of :data:`_NATIVE`; its errors as RunFailures."""
     import importlib
 
     from .._io import json_value
@@ -483,13 +487,13 @@ def _native(parsed):
     module = importlib.import_module(f".{_NATIVE[parsed.calculation.name]}", __package__)
     try:
         with warnings.catch_warnings():
-            warnings.simplefilter("ignore", RuntimeWarning)
+            warnings.simplefilter("ignore", RuntimeWarning)  # every result is checked finite
             return json_value(module.document(parsed))  # NaN as null, numpy as plain numbers
     except RequestError:
         raise
-    except ConvergenceError as exc:  # no physical solution is the input's fault; else the solver's
+    except ConvergenceError as exc:  # no physical solution is the input's fault (2); else the solver's
         raise RunFailure(None, None, exc.summary, "input" if exc.physical else "convergence") from None
-    except InputError as exc:
+    except InputError as exc:  # the physics names no field
         raise RunFailure(None, None, str(exc)) from None
 
 
@@ -514,6 +518,8 @@ def figure_svg(parsed):
         return _high_speed_svg(parsed)
     if name not in _PLOTS:
         return ""
+    if name in _NATIVE:  # drawn from the document by the calculation's own figure function
+        return _native_figure(parsed)
     with tempfile.TemporaryDirectory(prefix="bearinglab-") as tmp:
         path = Path(tmp) / "figure.svg"
         try:
@@ -542,5 +548,23 @@ def _high_speed_svg(parsed):
     out = io.StringIO()
     fig.savefig(out, format="svg")
     svg = out.getvalue()
+    start = svg.find("<svg")
+    return svg[start:] if start >= 0 else ""
+
+
+def _native_figure(parsed):
+    """The SVG of a native calculation's figure, drawn from its document; '' where it has none."""
+    import importlib
+
+    module = importlib.import_module(f".{_NATIVE[parsed.calculation.name]}", __package__)
+    try:
+        doc = _native(parsed)
+    except RequestError:
+        return ""
+    if isinstance(doc, list):
+        doc = doc[0]
+    buffer = io.BytesIO()
+    module.figure(doc).savefig(buffer, format="svg", dpi=120)
+    svg = buffer.getvalue().decode("utf-8")
     start = svg.find("<svg")
     return svg[start:] if start >= 0 else ""

@@ -15,7 +15,7 @@ import math
 import re
 
 from ..errors import InputError
-from . import _inputs as inp
+from . import _reading as inp
 
 __all__ = ["document"]
 

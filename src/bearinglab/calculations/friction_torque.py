@@ -18,8 +18,8 @@ import warnings
 from typing import NamedTuple
 
 from ..errors import InputError
-from . import _inputs as inp
-from ._lubricant import lubricant_viscosity, parse_viscosity
+from . import _reading as inp
+from ._inputs import lubricant_viscosity, parse_viscosity
 
 __all__ = ["MODELS", "FrictionResult", "compute", "document"]
 
@@ -391,7 +391,7 @@ def _cases(radial_load, axial_load, speed):
     if len(sizes) > 1:
         from .documents import RunFailure
 
-        raise RunFailure("radial_load", None, "{name}, {field:axial_load}, {field:speed}: lists are paired "
+        raise RunFailure("radial_load", None, "{name}, axial-load, speed: lists are paired "
                          "element by element (rows of a log) and must have the same length, or one value")
     return np.broadcast_arrays(fr, fa, n)
 

@@ -20,8 +20,8 @@ import warnings
 from typing import NamedTuple
 
 from ..errors import ConvergenceError, InputError, ValidityWarning
-from . import _inputs as inp
 from . import _mounting
+from . import _reading as inp
 
 __all__ = ["HighSpeedResult", "compute", "document", "figure"]
 
@@ -82,7 +82,7 @@ def compute(parsed, *, bearing_file=None, catalog=None, execution=None, check=No
         loads, speeds = _grid(inp.text(parsed, "axial_load"), inp.text(parsed, "speed"))
         limits.check_speed(speeds, b.require("pitch_diameter"))
         # issue 23: the operating clearance (at the highest speed)
-        b, mounted = _mounting.operating_bearing(b, parsed.given, speeds.max())
+        b, mounted = _mounting.operating_bearing(b, speeds.max(), {k: parsed.given.get(k) for k in _mounting.NAMES})
         if check is not None:
             check(loads, speeds)
         single = loads.size == 1 and speeds.size == 1

@@ -212,6 +212,20 @@ _CALCS = (
             choices=_CONTAMINATION, group=_O),
          _f("reliability", "number", "Reliability in percent.", label="Reliability", unit="%",
             default=90.0, minimum=90, maximum=99.95, group=_O),
+         _f("duty_cycle", "document", "Duty cycle instead of the loads and speed: [[step]] tables of "
+            "fx, fy, fz, mx, my, speed and time share (the shares sum to 1) as TOML or JSON, posted as "
+            "text; never a file path. Gives the combined life.", label="Duty cycle",
+            option="--duty-cycle", group=_L),
+         _f("ambient", "text", "With temperature auto: the ambient (default 20 degC).",
+            label="Ambient temperature", unit="degC", group="temperature auto"),
+         _f("thermal_resistance", "thermal_resistance", "With temperature auto: bearing to ambient, "
+            "e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).", label="Thermal resistance",
+            unit="K/W", minimum=0, exclusive=True, group="temperature auto"),
+         _f("lubrication", "choice", "With temperature auto: the SKF model's lubrication method "
+            "(default oil-jet).", label="Lubrication method", choices=("oil-jet", "oil-air", "grease"),
+            group="temperature auto"),
+         _f("skf_constants", "text", "With temperature auto: SKF constants R1,R2,R3,S1,S2,S3 "
+            "(angular contact).", label="SKF constants", group="temperature auto"),
          BEARING, *GEOMETRY, *MOUNTING)),
     Calculation(
         "load-distribution", ("load-distribution",), "Load distribution and stiffness",

@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 
 from ..errors import InputError
-from . import _inputs as inp
+from . import _reading as inp
 
 __all__ = ["document"]
 

@@ -39,22 +39,17 @@ from rich.table import Table
 
 from ..calculations import _inputs
 from ..calculations._inputs import (  # noqa: F401 -- the commands import them from here
-    _MM,
-    _UM,
+    LubricantViscosity,
     choice,
+    five_loads,
     inputs_echo,
+    lubricant_viscosity,
     parse_length,
     parse_speed,
     parse_speeds,
-    speed_size,
-)
-from ..calculations._lubricant import (  # noqa: F401 -- the commands import them from here
-    HOTTEST_OIL_DEGC,
-    VISCOSITY_BOUNDS,
-    LubricantViscosity,
-    lubricant_viscosity,
     parse_temperature,
     parse_viscosity,
+    speed_size,
 )
 from ..errors import InputError
 from ._console import Console, needs_spelling
@@ -91,19 +86,12 @@ ChunkSizeOpt = Annotated[int | None, typer.Option("--chunk-size", help="Cases pe
 
 def resolve_bearing(*args, **kwargs) -> BallBearing:
     """The bearing named, read from a file, or given inline (:func:`bearinglab.calculations._inputs.
-    resolve_bearing`); its provenance notes go out with the command's output."""
+    resolve_bearing`); its provenance notes go with the command's output (:func:`add_notes`)."""
     from .. import catalog as _catalog
 
     b = _inputs.resolve_bearing(*args, **kwargs)
     add_notes(_catalog.provenance_notes(b))
     return b
-
-
-def request_message(exc):
-    """A calculation's RequestError or RunFailure (:mod:`bearinglab.calculations`) in the command line's
-    words: each field named as its long option without the dashes (``axial-load must be > 0``), as
-    every message of the command line names its options."""
-    return exc.worded(lambda name: name.replace("_", "-"))
 
 
 _NOTES: list[str] = []  # provenance notes of the bearings resolved by the command that runs
@@ -412,21 +400,6 @@ RadialLoadOpt = Annotated[str | None, typer.Option("--radial-load", "-R", help="
 AxialLoadOpt = Annotated[str | None, typer.Option("--axial-load", "-A", help="Same as --fz.", rich_help_panel=_LOADS)]
 
 
-def five_loads(fx=None, fy=None, fz=None, mx=None, my=None, radial_load=None, axial_load=None):
-    """(F_x, F_y, F_z, M_x, M_y) in N and N m from the load options (missing ones are 0)."""
-    from ..units import parse_quantity
-
-    if fx is not None and radial_load is not None:
-        raise InputError("radial-load: give --fx or --radial-load, not both")
-    if fz is not None and axial_load is not None:
-        raise InputError("axial-load: give --fz or --axial-load, not both")
-    names = (("fx" if radial_load is None else "radial-load", radial_load if fx is None else fx, "force"),
-             ("fy", fy, "force"),
-             ("fz" if axial_load is None else "axial-load", axial_load if fz is None else fz, "force"),
-             ("mx", mx, "torque"), ("my", my, "torque"))
-    return [0.0 if text is None else parse_quantity(text, kind, name) for name, text, kind in names]
-
-
 # ----------------------------------------------------------------------------- lubricant (issue 20)
 # The oil options shared by every command that needs the operating viscosity (life; film, friction, ...):
 # --viscosity alone, or --oil with --temperature (and --viscosity-index or --viscosity-100).
@@ -436,3 +409,32 @@ OilOpt = Annotated[str | None, typer.Option("--oil", help="ISO VG grade, e.g. VG
 TemperatureOpt = Annotated[str | None, typer.Option("--temperature", help="Operating temperature of the oil, e.g. '70 degC'.", rich_help_panel=_LUBRICANT)]
 ViscosityIndexOpt = Annotated[float | None, typer.Option("--viscosity-index", help="The oil's viscosity index (default 95, a mineral oil).", rich_help_panel=_LUBRICANT)]
 Viscosity100Opt = Annotated[str | None, typer.Option("--viscosity-100", help="The oil's viscosity at 100 degC, e.g. '8.7 cSt' (instead of --viscosity-index).", rich_help_panel=_LUBRICANT)]
+
+
+# ----------------------------------------------------------------------------- calculations (issue 22)
+def request_message(exc):
+    """A :class:`bearinglab.calculations.RequestError` in the command line's words: the field at fault
+    opens the message as its option without dashes (``speed must be ...``, as every message of the
+    command line), and the options it names elsewhere carry their dashes (``give --fx or --radial-load``)."""
+    def option(name):
+        return "--" + name.replace("_", "-")
+
+    template, parameter = exc.template, exc.parameter or "request"
+    if template.startswith("{name}"):
+        template = parameter.replace("_", "-") + template[len("{name}"):]
+    text = template.replace("{name}", option(parameter))
+    return re.sub(r"\{field:([a-z0-9_]+)\}", lambda m: option(m.group(1)), text)
+
+
+def run_calculation(name, given, document, **options):
+    """Compute calculation ``name`` from the options as typed (field name -> value; None: not given)
+    with its ``document`` function, the one the web runs (:mod:`bearinglab.calculations`); a refused
+    input is an InputError in the command line's words (:func:`request_message`)."""
+    from ..calculations import parse
+    from ..calculations.fields import RequestError
+
+    given = {k: v for k, v in given.items() if v is not None}
+    try:  # typer has read the options; the calculation checks them by the command line's own rules
+        return document(parse(name, given, check=False), **options)
+    except RequestError as exc:
+        raise InputError(request_message(exc)) from None

@@ -3,14 +3,17 @@
 Options       ShaftFitOpt, HousingFitOpt, ShaftInterferenceOpt, HousingInterferenceOpt, ShaftBoreOpt,
               HousingOutsideDiameterOpt, ShaftMaterialOpt, HousingMaterialOpt, the five temperatures,
               ToleranceClassOpt, ClearanceClassOpt, ShaftRoughnessOpt, HousingRoughnessOpt
+parse_temperature   a temperature option [K] ('60 degC', '333 K'; a bare number is degC)
 mounting_options    decorator: adds the options to a command (load-distribution, life, high-speed, ...)
-given_options       inside such a command: the mounting options as typed, by name
+given_options       inside such a command: its mounting options as typed (for a calculation's fields)
 operating_bearing   inside such a command: the bearing at its probable operating clearance, and the JSON
+mounted_set         the options of bearing-set applied to its bearings (MountedSet)
+MountedInputs       the parsed options: tolerance limits, Mounting, Conditions, unmounted clearance range
+mounted_inputs      the options of a command -> MountedInputs (None when no mounting option was given)
 
 ``bearinglab clearance`` takes all of them; a command that uses the operating clearance takes the same
-options through this module, so that they mean the same everywhere. Their parsing and checks
-(``parse_temperature``, ``mounted_inputs``, ``MountedInputs``, ``mounted_set``, re-exported here) are
-:mod:`bearinglab.calculations._mounting`, shared with the web; the physics is :mod:`bearinglab.mounting`.
+options through this module, so that they mean the same everywhere. The physics is
+:mod:`bearinglab.mounting`; nothing here computes beyond parsing and choosing the tables.
 """
 
 from __future__ import annotations
@@ -22,7 +25,7 @@ from typing import Annotated
 
 import typer
 
-from ..calculations import _mounting as _calc
+from ..calculations import _mounting as _calc_mounting
 from ..calculations._mounting import (  # noqa: F401 -- the commands import them from here
     MountedInputs,
     MountedSet,
@@ -90,7 +93,7 @@ def mounting_options(command):
 
 
 def given_options():
-    """Inside a command with :func:`mounting_options`: the mounting options as typed, by name."""
+    """The mounting options of the running command as typed (name -> text; None: not given)."""
     return dict(_GIVEN.get() or {})
 
 
@@ -98,4 +101,4 @@ def operating_bearing(bearing, speed=0.0):
     """The bearing at its probable operating clearance under the command's mounting options, and the
     JSON entries to add (``operating_clearance_um`` and the range); ``(bearing, {})`` without options
     (:func:`bearinglab.calculations._mounting.operating_bearing`)."""
-    return _calc.operating_bearing(bearing, _GIVEN.get() or {}, speed)
+    return _calc_mounting.operating_bearing(bearing, speed, _GIVEN.get())

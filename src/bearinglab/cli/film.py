@@ -232,40 +232,22 @@ def film(
 
 def _auto_temperature(b, loads, w, oil, viscosity, dynamic_viscosity, viscosity_index, viscosity_100, density_text,
                       ambient, thermal_resistance, lubrication, skf_constants):
-    """--temperature auto: the steady temperature of each case (:func:`bearinglab.thermal.thermal_balance`)
-    and the oil's dynamic viscosity there; (eta per case, description, inputs, notes)."""
-    import math
-
+    """--temperature auto: the steady temperature of each case
+    (:func:`bearinglab.calculations.temperature.steady_temperature`, as ``life`` takes it) and the oil's
+    dynamic viscosity there; (eta per case, description, inputs, notes)."""
     import numpy as np
 
-    from .. import thermal
-    from . import temperature as temp_cli
+    from ..calculations.temperature import steady_temperature
 
-    if viscosity is not None or dynamic_viscosity is not None:
-        raise InputError("temperature: 'auto' needs the oil by grade (--oil VG32, with --viscosity-index or "
-                         "--viscosity-100), whose viscosity follows the temperature; not --viscosity")
-    if loads[3] or loads[4]:
-        raise InputError("temperature: 'auto' takes the SKF friction model, which has no tilting moment; give "
-                         "no --mx/--my")
+    r, how, inputs, notes = steady_temperature(b, loads, w, oil, viscosity, viscosity_index, viscosity_100, ambient,
+                                               thermal_resistance, lubrication, skf_constants,
+                                               dynamic_viscosity=dynamic_viscosity)
     rho, assumed = density(density_text)
-    nu40, nu100, how, oil_inputs = temp_cli.oil_reference_viscosities(oil, viscosity_index, viscosity_100)
-    heat, notes, heat_inputs = temp_cli.heat_options(b, ambient or "20 degC", thermal_resistance, None, None, None,
-                                                     None, "150 degC")
-    r = thermal.thermal_balance(b, math.hypot(loads[0], loads[1]), abs(loads[2]), w, heat.pop("ambient"), nu40,
-                                nu100, **heat, **temp_cli.skf_options(b, lubrication, skf_constants))
-    if not np.all(r.steady):
-        from ..units import RPM
-
-        bad = float(np.asarray(w)[~np.asarray(r.steady)][0]) / RPM
-        raise InputError(f"temperature: no steady temperature below 150 degC at {bad:g} rpm (thermal runaway); "
-                         "give the temperature, or more cooling (--thermal-resistance)")
     if assumed:
         notes.append(f"density: not given, so {DEFAULT_DENSITY:g} kg/m^3 (a typical mineral oil, an estimate) "
                      "turns the kinematic viscosity into the dynamic one; give --density")
+    inputs = {**inputs, "density_kg_m3": rho, "density_assumed": assumed}
     t = np.atleast_1d(r.temperature)
-    inputs = {**oil_inputs, **heat_inputs, "temperature": "auto",
-              "bearing_temperature_degC": (t - 273.15).tolist() if t.size > 1 else float(t[0] - 273.15),
-              "density_kg_m3": rho, "density_assumed": assumed}
     nu = np.atleast_1d(r.kinematic_viscosity)
     text = (f"{how} at the steady temperature {', '.join(f'{x - 273.15:.1f}' for x in t)} degC (thermal balance): "
             f"nu = {', '.join(f'{x * 1e6:.4g}' for x in nu)} cSt")

@@ -109,7 +109,7 @@ def frequencies(
     nominal ones and the shift are shown too.
     """
     options = dict(locals())  # the options as typed, by name: the calculation's fields among them
-    from ..calculations import _inputs
+    from ..calculations import _reading as _inputs
     from ..calculations import frequencies as calculation
 
     if csv_file is not None:  # before anything is computed

@@ -188,7 +188,7 @@ def torque(
 ):
     """Friction torque under combined load: the handbook models of the friction-rig lab (P0, T, T0 and T_F) or SKF's."""
     options = dict(locals(), type=bearing_type, **mo.given_options())  # the options as typed: the fields
-    from ..calculations import _inputs
+    from ..calculations import _reading as _inputs
     from ..calculations import friction_torque as calculation
 
     r = calculation.compute(_inputs.request("friction", options), bearing_file=bearing_file, catalog=catalog)

@@ -71,7 +71,7 @@ def high_speed(
     """High-speed angular-contact bearing under thrust (the high-speed quasi-static model): α_i, α_e, δ_a, loads, F_c, M_g, speeds."""
     options = dict(locals(), **mo.given_options())  # the options as typed, by name: the calculation's fields
     from .. import plots
-    from ..calculations import _inputs
+    from ..calculations import _reading as _inputs
     from ..calculations import high_speed as calculation
 
     def check(loads, speeds):  # the output files, before anything is solved

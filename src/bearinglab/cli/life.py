@@ -4,7 +4,8 @@ ISO 281 and ISO/TS 16281 lives of a bearing under (F_x, F_y, F_z, M_x, M_y) at a
 (:func:`bearinglab.ratings.rating_life`; the ball loads of the reference life from the combined-load
 model), or of a duty cycle (``--duty-cycle FILE``, :func:`bearinglab.ratings.duty_cycle_life`). The columns
 are :func:`bearinglab.tables.rating_life`. Where ISO 281's P is not defined (under a moment) its fields
-are null and a warning says why; the ISO/TS 16281 fields are still given.
+are null and a warning says why; the ISO/TS 16281 fields are still given. The document is
+:func:`bearinglab.calculations.life.document`, the web's too; this module reads the options and prints.
 
 Duty-cycle file (TOML; the time shares sum to 1)::
 
@@ -19,14 +20,12 @@ Commands
 COMMANDS   the ``life`` command, by name (the application adds it)
 """
 
-import tomllib
-import warnings
 from pathlib import Path
 from typing import Annotated
 
 import typer
 
-from ..errors import InputError
+from ..calculations.life import _CONTAMINATION, _CONTAMINATION_CLASSES  # noqa: F401 -- the help; startup test
 from . import _mounting as mo
 from ._common import (
     AxialLoadOpt,
@@ -57,83 +56,16 @@ from ._common import (
     ViscosityOpt,
     check_input,
     emit_json,
-    five_loads,
-    inputs_echo,
-    lubricant_viscosity,
-    parse_speed,
     print_warnings,
-    resolve_bearing,
+    run_calculation,
     table,
 )
 
 __all__ = ["COMMANDS"]
 
-# the keys of bearinglab.ratings.CONTAMINATION_CLASSES, spelled out for the help text (the help is built
-# without importing the model; tests/cli/test_cli_startup.py checks that the two agree)
-_CONTAMINATION_CLASSES = ("extreme_cleanliness", "high_cleanliness", "normal_cleanliness", "slight_contamination",
-                          "typical_contamination", "severe_contamination", "very_severe_contamination")
-_CONTAMINATION = {k.split("_")[0] if k != "very_severe_contamination" else "very-severe": k
-                  for k in _CONTAMINATION_CLASSES}
 _LUBRICANT = "Lubricant"  # the panel of the shared oil options (cli._common), with the cleanliness here
+_AUTO = "Temperature auto (thermal balance)"
 _NEEDS_VISCOSITY = "needs viscosity"  # the table's cell of a result that needs the lubricant
-
-
-# Said whenever the user gave no cleanliness: e_C = 1 is the laboratory's extreme cleanliness of ISO 281
-# table 13, and with a good lubricant it drives a_ISO to its limit of 50; service conditions are dirtier.
-_CLEANLINESS_ASSUMED = ("contamination: none given, so e_C = 1 (extreme cleanliness, ISO 281 table 13) is used "
-                        "for a_ISO and L_nm; give --contamination (e.g. normal) or --contamination-factor for "
-                        "the bearing's service")
-
-
-def _cleanliness(factor, name):
-    if factor is not None and name is not None:
-        raise InputError("contamination: give --contamination-factor or --contamination, not both")
-    if name is not None:
-        key = name.strip().lower().replace("_", "-")
-        if key not in _CONTAMINATION:
-            raise InputError(f"contamination must be one of {list(_CONTAMINATION)}, got {name!r}")
-        return _CONTAMINATION[key]
-    if factor is not None and not 0.0 <= factor <= 1.0:
-        raise InputError(f"contamination-factor must be in [0, 1] [-] (e_C of ISO 281 table 13), got {factor:g}")
-    return 1.0 if factor is None else factor
-
-
-def _reliability(percent):
-    if not 90.0 <= percent <= 99.95:
-        raise InputError(f"reliability must be in [90, 99.95] [%], got {percent:g}")
-    return percent / 100.0
-
-
-def _duty_cycle(path, bearing):
-    """Loads (k, 5), speeds (k,) and time shares (k,) of a duty-cycle file; each speed by the rule of every
-    speed option (:func:`parse_speed`: > 0, one value, within the d_m n guard of ``bearing``)."""
-    import numpy as np
-
-    from .._bounds import read_input_bytes
-
-    try:
-        doc = tomllib.loads(read_input_bytes(path).decode("utf-8"))  # a regular file of bounded size
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"duty-cycle: {path}: {exc}") from None
-    except UnicodeDecodeError:
-        raise InputError(f"duty-cycle: {path}: not a UTF-8 text file") from None
-    steps = doc.get("step")
-    if not isinstance(steps, list) or not steps or not all(isinstance(s, dict) for s in steps):
-        raise InputError(f"duty-cycle: {path}: needs [[step]] tables with loads, speed and time")
-    loads, speeds, times = [], [], []
-    for k, s in enumerate(steps, 1):
-        unknown = set(s) - {"fx", "fy", "fz", "mx", "my", "radial_load", "axial_load", "speed", "time"}
-        if unknown or "speed" not in s or "time" not in s:
-            raise InputError(f"duty-cycle: step {k} needs speed and time and takes fx, fy, fz, mx, my; got "
-                             f"{sorted(s)}")
-        loads.append(five_loads(*(s.get(n) for n in ("fx", "fy", "fz", "mx", "my", "radial_load", "axial_load"))))
-        speeds.append(parse_speed(s["speed"], f"duty-cycle step {k} speed", bearing=bearing, zero=False))
-        t = s["time"]
-        if isinstance(t, bool) or not isinstance(t, (int, float)) or not 0.0 <= t <= 1.0:
-            raise InputError(f"duty-cycle step {k} time must be a share in [0, 1] [-] (the shares sum to 1), "
-                             f"got {t!r}")
-        times.append(float(t))
-    return np.array(loads), np.array(speeds), np.array(times)
 
 
 @mo.mounting_options
@@ -146,6 +78,10 @@ def life(
     contamination_factor: Annotated[float | None, typer.Option("--contamination-factor", help="e_C in [0, 1] (default 1).", rich_help_panel=_LUBRICANT)] = None,
     contamination: Annotated[str | None, typer.Option("--contamination", help="Cleanliness of ISO 281 table 13: " + " | ".join(_CONTAMINATION) + ".", rich_help_panel=_LUBRICANT)] = None,
     reliability: Annotated[float, typer.Option("--reliability", help="Reliability in percent, 90 to 99.95.")] = 90.0,
+    ambient: Annotated[str | None, typer.Option("--ambient", help="With --temperature auto: the ambient (default 20 degC).", rich_help_panel=_AUTO)] = None,
+    thermal_resistance: Annotated[str | None, typer.Option("--thermal-resistance", help="With --temperature auto: bearing to ambient, e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).", rich_help_panel=_AUTO)] = None,
+    lubrication: Annotated[str | None, typer.Option("--lubrication", help="With --temperature auto: the SKF model's oil-jet (default) | oil-air | grease.", rich_help_panel=_AUTO)] = None,
+    skf_constants: Annotated[str | None, typer.Option("--skf-constants", help="With --temperature auto: SKF constants R1,R2,R3,S1,S2,S3 (angular contact).", rich_help_panel=_AUTO)] = None,
     duty_cycle: Annotated[Path | None, typer.Option("--duty-cycle", help="TOML file of \\[\\[step]] loads, speed and time share: the combined life.")] = None,
     bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
     balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
@@ -157,188 +93,44 @@ def life(
     """Rating life (ISO 281, ISO/TS 16281): C, C0, Cu, P, L10, a_ISO, L_nm, L10r, L_nmr, s0; duty cycles.
 
     Without a lubricant (--viscosity, or --oil with --temperature) P, L10, L10r and s0 are given, and
-    a_ISO, L_nm and L_nmr are null ("needs viscosity").
+    a_ISO, L_nm and L_nmr are null ("needs viscosity"). --temperature auto takes the oil's viscosity at
+    the bearing's steady temperature (the thermal balance of `temperature`).
     """
-    from .. import ratings, tables
-    from ..units import RPM
-    b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
-                        outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
-                        ball_material)
-    lube = lubricant_viscosity(viscosity, oil, temperature, viscosity_index, viscosity_100)
-    options = {"kinematic_viscosity": lube.viscosity,
-               "contamination": _cleanliness(contamination_factor, contamination),
-               "reliability": _reliability(reliability)}
-    assumed = _assumed(lube, contamination_factor is None and contamination is None)
+    from ..calculations import life as calculation
+    from ..errors import InputError
+
+    given = {"fx": fx, "fy": fy, "fz": fz, "mx": mx, "my": my, "radial_load": radial_load,
+             "axial_load": axial_load, "speed": speed, "viscosity": viscosity, "oil": oil,
+             "temperature": temperature, "viscosity_index": viscosity_index, "viscosity_100": viscosity_100,
+             "contamination_factor": contamination_factor, "contamination": contamination,
+             "reliability": reliability, "ambient": ambient, "thermal_resistance": thermal_resistance,
+             "lubrication": lubrication, "skf_constants": skf_constants, "bearing": bearing, "balls": balls, "ball_diameter": ball_diameter,
+             "pitch_diameter": pitch_diameter, "inner_groove_radius": inner_groove_radius,
+             "outer_groove_radius": outer_groove_radius, "inner_conformity": inner_conformity,
+             "outer_conformity": outer_conformity, "contact_angle": contact_angle,
+             "radial_clearance": radial_clearance, "ball_material": ball_material, **mo.given_options()}
+    source = calculation.POSTED
     if duty_cycle is not None:
-        if any(x is not None for x in (fx, fy, fz, mx, my, radial_load, axial_load, speed)):
-            raise InputError("duty-cycle: the loads and speeds are in the file; give no --fx ... --speed")
-        b, _ = mo.operating_bearing(b)  # issue 23: fits and temperatures (no single speed for the centrifugal)
-        _life_of_duty_cycle(b, *_duty_cycle(check_input(duty_cycle, "duty-cycle"), b), options, lube, json_out,
-                            assumed)
-        return
-    if speed is None:
-        raise InputError("speed: give the inner-ring speed, e.g. --speed '3000 rpm'")
-    n = parse_speed(speed, bearing=b, zero=False)
-    b, mounted = mo.operating_bearing(b, n)  # issue 23: the operating clearance
-    loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
-    dist = _distribution(b, loads)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # the analysis returns its warnings
-        r = ratings.rating_life(b, loads, n, **options, load_distribution=dist)
-    doc = {**tables.rows(tables.rating_life(r))[0], "rating_source": r.rating_source,
-           "inputs": _echo(b, options, lube, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
-                           my_Nmm=loads[4] * 1e3, speed_rpm=n / RPM),
-           "warnings": assumed + _diameter_note(r) + _notes(b, loads, r.warnings, dist) + _unbounded(r)}
-    doc = {**{k: doc[k] for k in _KEYS}, **mounted}
+        from .._bounds import read_input_bytes
+
+        try:  # a regular file of bounded size
+            given["duty_cycle"] = read_input_bytes(check_input(duty_cycle, "duty-cycle")).decode("utf-8")
+        except UnicodeDecodeError:
+            raise InputError(f"duty-cycle: {duty_cycle}: not a UTF-8 text file") from None
+        source = str(duty_cycle)
+    doc = run_calculation("life", given, calculation.document, catalog=catalog, bearing_file=bearing_file,
+                          duty_cycle_source=source)
     if json_out:
         emit_json(doc)
         return
-    doc["lubricated"] = lube.viscosity is not None
-    _print(f"Rating life of {b.designation} at {doc['inputs']['speed_rpm']:g} rpm", doc)
-
-
-def _distribution(b, loads):
-    """The load distribution of the ISO/TS 16281 reference life
-    (:func:`bearinglab.ratings.reference_load_distribution`), computed here so that the plausibility limits
-    see the ball loads. A case without equilibrium is flagged, not raised: the ISO 281 lives do not need
-    the distribution. None without the ball set (the reference lives are then NaN, and say why)."""
-    from .. import ratings
-
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # the life analysis reports what matters to it
-        return ratings.reference_load_distribution(b, loads, on_failure="flag")
-
-
-def _notes(b, loads, rating_notes, dist):
-    """The warnings of a life: the analysis's, why the reference lives are missing where the load
-    distribution failed, and the plausibility limits of the ball loads (bearinglab.limits; s0 < 1 is
-    the analysis's own warning, so the limits do not repeat it)."""
-
-    import numpy as np
-
-    from .. import limits
-
-    notes = list(rating_notes)
-    if dist is not None:
-        # the model's own warnings (e.g. a thrust the angular-contact bearing cannot carry) qualify the
-        # reference lives; its failure notes are replaced by the reason _unavailable gives
-        steps = "" if np.reshape(loads, (-1, 5)).shape[0] == 1 else " (case k is duty-cycle step k + 1)"
-        notes += [f"load distribution of the reference lives{steps}: {w}" for w in dist.warnings
-                  if "not converged" not in w]
-        notes += _unavailable(b, loads, dist)
-        notes += limits.combined_warnings(b, loads, dist.ball_load_inner, dist.ball_load_outer,
-                                          dist.contact_angle_inner, dist.contact_angle_outer, static=False)
-    return list(dict.fromkeys(notes))
-
-
-# the lives and s0 that are infinite without load, by their symbols
-_UNBOUNDED = {"basic_rating_life": "L10", "modified_rating_life": "L_nm", "reference_rating_life": "L10r",
-              "modified_reference_rating_life": "L_nmr", "static_safety_factor": "s0"}
-
-
-def _unbounded(result):
-    """Why a life or s0 is shown as '—' where it is infinite: no load (P = 0, P0 = 0); a RatingLife or a
-    DutyCycleLife (whose combined lives are infinite only when every step is unloaded)."""
-    import numpy as np
-
-    names = [symbol for field, symbol in _UNBOUNDED.items()  # None: not computed (no lubricant)
-             if getattr(result, field, None) is not None and np.any(np.isposinf(getattr(result, field)))]
-    if not names:
-        return []
-    where = " at every step" if hasattr(result, "steps") else ""
-    listed = ", ".join(names[:-1]) + " and " + names[-1] if len(names) > 1 else names[0]
-    verb = "are" if len(names) > 1 else "is"
-    return [f"P = 0{where}: no equivalent load, so {listed} {verb} unbounded (shown as —, null in --json)"]
-
-
-def _unavailable(b, loads, dist):
-    """Why the reference lives are missing where the load distribution found no equilibrium: the reason of
-    the first such case, from its :class:`~bearinglab.errors.ConvergenceError` (that case solved again alone:
-    a flagged result keeps no reason per case)."""
-    import numpy as np
-
-    from .. import ratings
-    from ..errors import ConvergenceError
-
-    failed = np.flatnonzero(~np.ravel(dist.converged))
-    if not failed.size:
-        return []
-    f = np.reshape(loads, (-1, 5))
-    where = "" if len(f) == 1 else f" at {failed.size} of {len(f)} steps (first: step {failed[0] + 1})"
-    try:
-        ratings.reference_load_distribution(b, f[failed[0]], on_failure="raise")
-        why = "the combined-load model found no equilibrium"
-    except ConvergenceError as exc:
-        why = exc.summary
-    return [f"ISO/TS 16281 reference lives not available{where}: {why}"]
-
-
-def _echo(b, options, lube, **quantities):
-    """The inputs as used (:func:`inputs_echo`): the bearing, the loads and speed, lubricant and cleanliness."""
-    c = options["contamination"]
-    return inputs_echo(b, **quantities, **lube.inputs, contamination=c,
-                       reliability_percent=options["reliability"] * 100)
-
-
-def _diameter_note(result):
-    """Say so where nu1 is not at ISO 281's d_m = (d + D)/2 (bore or outside diameter unknown)."""
-    if result.rated_viscosity_diameter_source == "pitch diameter":
-        return [("rated viscosity nu1: bore and outside diameter not known, so nu1 is taken at the pitch "
-                 "diameter instead of ISO 281's mean diameter d_m = (d + D)/2")]
-    return []
-
-
-def _assumed(lube, no_cleanliness):
-    """What was assumed for want of an input: no lubricant (the modified lives are not computed), the oil's
-    viscosity index, the cleanliness (only where a lubricant makes it matter)."""
-    if lube.viscosity is None:
-        return [("lubricant: none given, so a_ISO, L_nm and L_nmr are not computed (null in --json); give "
-                 "--viscosity, or --oil (e.g. VG68) with --temperature")]
-    notes = [f"viscosity: {lube.description}"] if lube.inputs.get("viscosity_index_assumed") else []
-    return notes + ([_CLEANLINESS_ASSUMED] if no_cleanliness else [])
-
-
-_KEYS = ("dynamic_load_rating_N", "static_load_rating_N", "fatigue_load_limit_N", "rating_source",
-         "equivalent_dynamic_load_N", "basic_rating_life_Mrev", "basic_rating_life_h", "reliability_factor",
-         "viscosity_mm2_s", "rated_viscosity_mm2_s", "rated_viscosity_diameter_mm", "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev", "modified_rating_life_h",
-         "reference_rating_life_Mrev", "modified_reference_rating_life_Mrev", "static_safety_factor", "inputs",
-         "warnings")
-
-
-def _life_of_duty_cycle(b, loads, speeds, times, options, lube, json_out, assumed=()):
-    import numpy as np
-
-    from .. import ratings, tables
-    from ..units import RPM
-    dist = _distribution(b, loads)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        d = ratings.duty_cycle_life(b, loads, speeds, times, **options, load_distribution=dist)
-    steps = tables.rows(tables.rating_life(d.steps))
-    hours = 2 * np.pi / d.mean_speed / 3600.0
-
-    def scaled(life, factor):  # None: not computed (no lubricant)
-        return None if life is None else life * factor
-
-    doc = {**tables.ratings(d.steps), "reliability_factor": d.steps.reliability_factor,
-           "basic_rating_life_Mrev": d.basic_rating_life * 1e-6, "basic_rating_life_h": d.basic_rating_life * hours,
-           "modified_rating_life_Mrev": scaled(d.modified_rating_life, 1e-6),
-           "modified_rating_life_h": scaled(d.modified_rating_life, hours),
-           "reference_rating_life_Mrev": d.reference_rating_life * 1e-6,
-           "modified_reference_rating_life_Mrev": scaled(d.modified_reference_rating_life, 1e-6),
-           "mean_speed_rpm": d.mean_speed / RPM, "steps": steps,
-           "inputs": _echo(b, options, lube, steps=[{"fx_N": f[0], "fy_N": f[1], "fz_N": f[2], "mx_Nmm": f[3] * 1e3,
-                                                "my_Nmm": f[4] * 1e3, "speed_rpm": w / RPM, "time": t}
-                                               for f, w, t in zip(loads.tolist(), speeds.tolist(), times.tolist())]),
-           "warnings": [*assumed, *_diameter_note(d.steps), *_notes(b, loads, d.steps.warnings, dist),
-                        *_unbounded(d)]}
-    doc = tables.json_value(doc)
-    if json_out:
-        emit_json(doc)
+    lubricated = bool({"viscosity_cSt", "oil"} & set(doc["inputs"]))
+    if duty_cycle is not None:
+        _print(f"Duty cycle of {doc['inputs']['bearing']}: {len(doc['steps'])} steps, mean speed "
+               f"{doc['mean_speed_rpm']:g} rpm",
+               {**{k: v for k, v in doc.items() if k not in ("steps", "inputs")}, "lubricated": lubricated})
         return
-    doc["lubricated"] = lube.viscosity is not None
-    _print(f"Duty cycle of {b.designation}: {len(steps)} steps, mean speed {doc['mean_speed_rpm']:g} rpm",
-           {k: v for k, v in doc.items() if k not in ("steps", "inputs")})
+    _print(f"Rating life of {doc['inputs']['bearing']} at {doc['inputs']['speed_rpm']:g} rpm",
+           {**doc, "lubricated": lubricated})
 
 
 # The printed names of the JSON keys: the symbols of ISO 281 and ISO/TS 16281, with the unit.
@@ -351,6 +143,7 @@ _LABELS = {
     "basic_rating_life_h": "basic rating life L10h [h]",
     "reliability_factor": "reliability factor a1 [-]",
     "viscosity_mm2_s": "operating viscosity nu [mm^2/s]",
+    "bearing_temperature_degC": "bearing temperature (balance) [degC]",
     "rated_viscosity_mm2_s": "rated viscosity nu1 [mm^2/s]",
     "rated_viscosity_diameter_mm": "diameter d_m of nu1 [mm]",
     "viscosity_ratio": "viscosity ratio κ [-]",

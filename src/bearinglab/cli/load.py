@@ -6,6 +6,8 @@
 speeds (``--ross``, :mod:`bearinglab.quasistatic.rotordynamics`). ``bearing-set`` does the same for a
 preloaded DB / DF / DT set (:func:`bearinglab.quasistatic.sets.set_analysis`). The columns are
 :func:`bearinglab.tables.load_distribution`; the figure is :func:`bearinglab.plots.load_distribution.ball_loads`.
+The documents (and the figures, drawn from them) are :mod:`bearinglab.calculations.load_distribution` and
+:mod:`bearinglab.calculations.bearing_set`, the web's too; this module reads the options and prints.
 
 Commands
 --------
@@ -13,14 +15,11 @@ COMMANDS   the ``load-distribution`` and ``bearing-set`` commands, by name (the 
 """
 
 import math
-import types
-import warnings
 from pathlib import Path
 from typing import Annotated
 
 import typer
 
-from ..errors import InputError
 from . import _mounting as mo
 from ._common import (
     FIGURE_SUFFIXES,
@@ -45,17 +44,12 @@ from ._common import (
     OuterRadius,
     PitchDiameter,
     RadialLoadOpt,
-    add_notes,
     check_output,
-    choice,
     console,
     emit_json,
-    five_loads,
-    inputs_echo,
-    parse_length,
     parse_speeds,
     print_warnings,
-    resolve_bearing,
+    run_calculation,
     table,
 )
 
@@ -71,140 +65,6 @@ DyOpt = Annotated[str | None, typer.Option("--dy", help="Hold delta_y, e.g. '0 u
 DzOpt = Annotated[str | None, typer.Option("--dz", help="Hold delta_z, from the concentric position (half the axial play included), e.g. '700 um' (instead of --fz).", rich_help_panel=_HELD)]
 TiltXOpt = Annotated[str | None, typer.Option("--tilt-x", help="Hold theta_x, e.g. '0 mrad' (instead of --mx).", rich_help_panel=_HELD)]
 TiltYOpt = Annotated[str | None, typer.Option("--tilt-y", help="Hold theta_y, e.g. '0 mrad' (instead of --my); --tilt-x/--tilt-y '0 mrad' hold the ring square.", rich_help_panel=_HELD)]
-#: The freedoms, their load options, the JSON keys of their reactions and their displacement options.
-_FREEDOMS = (("fx", "fx_N", "dx", "length"), ("fy", "fy_N", "dy", "length"), ("fz", "fz_N", "dz", "length"),
-             ("mx", "mx_Nmm", "tilt-x", "angle"), ("my", "my_Nmm", "tilt-y", "angle"))
-
-
-def _speeds(text, allow_list, pitch_diameter):
-    w = parse_speeds(text, pitch_diameter=pitch_diameter)
-    if w.size > 1 and not allow_list:
-        raise InputError("speed: a list of speeds needs --ross FILE (one speed otherwise)")
-    return w
-
-
-def _solve(what, *args, **kwargs):
-    """Run a model; return its result and every warning raised on the way (as messages)."""
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        result = what(*args, **kwargs)
-    return result, [str(c.message) for c in caught]
-
-
-def _inputs(b, loads, speed, phi0, **options):
-    """The inputs as used, in engineering units (echoed in the JSON; :func:`inputs_echo`)."""
-    from ..units import RPM
-
-    fx, fy, fz, mx, my = loads
-    return inputs_echo(b, fx_N=fx, fy_N=fy, fz_N=fz, mx_Nmm=mx * 1e3, my_Nmm=my * 1e3, speed_rpm=float(speed) / RPM,
-                       first_ball_angle_deg=math.degrees(phi0), **options,
-                       radial_clearance_um=None if b.radial_clearance is None else b.radial_clearance * 1e6,
-                       reduced_modulus_GPa=b.reduced_modulus / 1e9)
-
-
-def _warnings(b, loads, r, notes):
-    """The analysis's warnings, those raised on the way and the plausibility limits (bearinglab.limits)."""
-    import numpy as np
-
-    from .. import limits
-
-    z = np.shape(r.ball_load_inner)[-1]
-    ok = np.ravel(np.asarray(getattr(r, "converged", True), dtype=bool)) & np.ones(np.size(loads) // 5, bool)
-    if ok.any():
-        def pick(name):
-            return np.reshape(getattr(r, name), (-1, z))[ok]
-
-        notes = [*notes, *limits.combined_warnings(b, np.reshape(loads, (-1, 5))[ok], pick("ball_load_inner"),
-                                                   pick("ball_load_outer"), pick("contact_angle_inner"),
-                                                   pick("contact_angle_outer"))]
-    return list(dict.fromkeys(notes))
-
-
-def _held(texts, given):
-    """The prescribed displacements [m, rad] (NaN: free) from the five options, or None; ``given`` tells
-    which load options were typed (a freedom takes a load or a displacement, not both)."""
-    import numpy as np
-
-    from ..units import parse_quantity
-
-    if all(t is None for t in texts):
-        return None
-    held = np.full(5, np.nan)
-    for k, ((load, _, name, kind), text) in enumerate(zip(_FREEDOMS, texts, strict=True)):
-        if text is None:
-            continue
-        if given[k]:
-            raise InputError(f"{name}: give --{load} or --{name}, not both (a freedom takes a load or a "
-                             "displacement)")
-        held[k] = parse_quantity(text, kind, name)
-        if not np.isfinite(held[k]):
-            raise InputError(f"{name} must be finite, got {text!r}")
-    return held
-
-
-def _reactions(reactions, held):
-    """The reactions on the held freedoms, by JSON key (N, N mm); empty without held freedoms."""
-    if held is None:
-        return {}
-    import numpy as np
-
-    out = {}
-    for k, (_, key, _, _) in enumerate(_FREEDOMS):
-        if not np.isnan(held[k]):
-            out[key] = float(reactions[k]) * (1e3 if key.endswith("Nmm") else 1.0)
-    return out
-
-
-def _prescribed_echo(held):
-    """The prescribed displacements as typed, in engineering units (um, mrad), for the inputs echo."""
-    if held is None:
-        return {}
-    import numpy as np
-
-    keys = ("dx_um", "dy_um", "dz_um", "tilt_x_mrad", "tilt_y_mrad")
-    scale = (1e6, 1e6, 1e6, 1e3, 1e3)
-    return {"prescribed": {k: float(v * f) for k, v, f in zip(keys, held, scale, strict=True) if not np.isnan(v)}}
-
-
-def _takeup_um(b):
-    """Half the axial play, A sin(alpha0) [um]: the part of delta_z a thrust spends before any ball carries
-    (displacements are counted from the concentric position, MASTA's convention; issue 20 item 11)."""
-    from ..quasistatic import combined
-
-    _, d, _, fi, fo, a0, _, _ = combined._bearing_args(b)
-    return combined.axial_play_takeup(d, fi, fo, a0) * 1e6
-
-
-def _set_takeup_um(bearings, orient):
-    """The axial play inside the shaft's delta_z [um]: none for opposed bearings (the shaft is counted from
-    the assembled set, play taken up or preloaded), else that of the bearing whose balls touch first."""
-    import numpy as np
-
-    if not np.all(orient == orient[0]):
-        return 0.0
-    return min(_takeup_um(b) for b in bearings)
-
-
-def _with_takeup(doc, takeup_um, reactions=None):
-    """``doc`` with ``axial_play_takeup_um`` after the tilts (so the elastic part is one subtraction) and,
-    with ``reactions``, the reactions of the held freedoms after it."""
-    out = {}
-    for key, value in doc.items():
-        out[key] = value
-        if key == "tilt_y_mrad":
-            out["axial_play_takeup_um"] = takeup_um
-            if reactions is not None:
-                out["reactions"] = reactions
-    return out
-
-
-def _case(r, k):
-    """Case k of a batched LoadDistribution (cases on the first axis), as an object with one case's fields."""
-    import numpy as np
-    fields = {f: np.asarray(getattr(r, f))[k] for f in r._fields if f not in ("warnings", "azimuth")}
-    return types.SimpleNamespace(**fields, azimuth=r.azimuth, warnings=r.warnings)
-
-
 @mo.mounting_options
 def load_distribution(
     fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
@@ -223,47 +83,36 @@ def load_distribution(
     """Ball bearing under combined load (5-DOF): displacement, ball loads, contact angles, pressures, stiffness."""
     import numpy as np
 
-    from .. import plots, tables
-    from ..plots import load_distribution as load_plots
-    from ..quasistatic import combined, rotordynamics
-    from ..units import parse_quantity
-    b = resolve_bearing(bearing, bearing_file, catalog, balls, ball_diameter, pitch_diameter, inner_groove_radius,
-                        outer_groove_radius, inner_conformity, outer_conformity, contact_angle, radial_clearance,
-                        ball_material)
-    loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
-    held = _held((dx, dy, dz, tilt_x, tilt_y), (fx is not None or radial_load is not None, fy is not None,
-                                                fz is not None or axial_load is not None, mx is not None,
-                                                my is not None))
-    w = _speeds(speed, ross is not None, b.require("pitch_diameter"))
-    b, mounted = mo.operating_bearing(b, w.max())  # issue 23: the operating clearance (at the highest speed)
-    phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
-    choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
+    from .. import plots
+    from ..calculations import load_distribution as calculation
+    from ..quasistatic import rotordynamics
+
     if plot is not None:
         check_output(plot, "plot", FIGURE_SUFFIXES, inputs=(bearing_file, catalog))
     if ross is not None:
         check_output(ross, "ross", (".json",), inputs=(bearing_file, catalog))
-    cases = np.broadcast_to(loads, w.shape + (5,))
-    r, notes = _solve(combined.combined_analysis, b, cases, w, first_ball_angle=phi0, stiffness_at=stiffness_at,
-                      prescribed_displacement=held)
-    notes = _warnings(b, np.reshape(r.loads, (-1, 5)), r, [*r.warnings, *notes])
-    docs = []
-    for k in range(w.size):
-        case = _case(r, k)
-        docs.append({**_with_takeup(tables.load_distribution(case), _takeup_um(b),
-                                    _reactions(np.reshape(r.reactions, (-1, 5))[k], held)), **mounted,
-                     "inputs": _inputs(b, loads, w[k], phi0, stiffness_at=stiffness_at, **_prescribed_echo(held)),
-                     "warnings": notes})
-    if ross is not None:
-        rotordynamics.write_coefficients(rotordynamics.from_stiffness(np.reshape(r.stiffness, (-1, 5, 5)), w), ross)
+    given = {"fx": fx, "fy": fy, "fz": fz, "mx": mx, "my": my, "radial_load": radial_load,
+             "axial_load": axial_load, "dx": dx, "dy": dy, "dz": dz, "tilt_x": tilt_x, "tilt_y": tilt_y,
+             "speed": speed, "first_ball_angle": first_ball_angle, "stiffness_at": stiffness_at,
+             "bearing": bearing, "balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
+             "inner_groove_radius": inner_groove_radius, "outer_groove_radius": outer_groove_radius,
+             "inner_conformity": inner_conformity, "outer_conformity": outer_conformity,
+             "contact_angle": contact_angle, "radial_clearance": radial_clearance, "ball_material": ball_material,
+             **mo.given_options()}
+    doc = run_calculation("load-distribution", given, calculation.document, catalog=catalog,
+                          bearing_file=bearing_file, speeds=ross is not None)
+    docs = doc if isinstance(doc, list) else [doc]
+    if ross is not None:  # the speeds the document was computed at (checked there)
+        stiffness = np.array([d["stiffness_matrix"] for d in docs], dtype=float)
+        rotordynamics.write_coefficients(rotordynamics.from_stiffness(stiffness, parse_speeds(speed)), ross)
     if plot is not None:
-        title = f"Bearing {b.designation}: ball loads at {docs[0]['inputs']['speed_rpm']:g} rpm"
-        plots.save(load_plots.ball_loads(_case(r, 0), title=title), plot)
+        plots.save(calculation.figure(docs[0]), plot)
     if json_out:
-        emit_json(docs[0] if w.size == 1 else docs)
+        emit_json(doc)
         return
-    for doc in docs:
-        _print_case(f"Bearing {b.designation} at {doc['inputs']['speed_rpm']:g} rpm", doc)
-    print_warnings(notes)
+    for d in docs:
+        _print_case(f"Bearing {d['inputs']['bearing']} at {d['inputs']['speed_rpm']:g} rpm", d)
+    print_warnings(docs[0]["warnings"])
     _print_written(plot, ross)
 
 
@@ -350,106 +199,42 @@ def bearing_set(
     """Preloaded bearing set (DB/DF/DT) on a rigid shaft: shaft displacement, each bearing's ball loads, set stiffness."""
     import numpy as np
 
-    from .. import catalog as _catalog
-    from .. import plots, tables
-    from ..plots import load_distribution as load_plots
-    from ..quasistatic import combined, sets
-    from ..units import parse_quantity
-    bl = [_catalog.get(name, catalog=catalog) for name in bearing]
-    for b in bl:  # each estimated bearing says so in the result (cli._common.add_notes)
-        add_notes(_catalog.provenance_notes(b))
-    choice("arrangement", arrangement, tuple(sets.ARRANGEMENTS))
-    s = None if spacing is None else parse_length(spacing, "spacing", zero=True)
-    if preload is not None and preload_offset is not None:
-        raise InputError("preload: give --preload or --preload-offset, not both")
-    fp = 0.0 if preload is None else parse_quantity(preload, "force", "preload")
-    if not fp >= 0:
-        raise InputError(f"preload must be >= 0 [N] (an axial force at rest), got {fp:g} N")
-    e = None if preload_offset is None else parse_quantity(preload_offset, "length", "preload-offset")
-    loads = five_loads(fx, fy, fz, mx, my, radial_load, axial_load)
-    # the speed guard of the largest bearing of the set (the highest d_m n)
-    w = float(_speeds(speed, False, max(b.require("pitch_diameter") for b in bl))[0])
-    phi0 = parse_quantity(first_ball_angle, "angle", "first-ball-angle")
-    choice("stiffness-at", stiffness_at, combined.STIFFNESS_AT)
+    from .. import plots
+    from ..calculations import bearing_set as calculation
+
     if plot is not None:
         check_output(plot, "plot", FIGURE_SUFFIXES, inputs=(catalog,))
-    st, notes = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], loads, w, arrangement_kind=arrangement,
-                       spacing=s, preload=fp, preload_displacement=e, first_ball_angle=phi0, stiffness_at=stiffness_at)
-    # issue 23: fits, temperatures and speed change each bearing's clearance, and so the set's interference
-    # the thermal expansion over the spacing needs its value: the solver's own when it is the default
-    gap = s if s is not None else (float(np.diff(st.positions)[0]) if len(st.positions) > 1 else 0.0)
-    mounted = mo.mounted_set(bl, st.preload_displacement, arrangement, gap, w, {
-        "shaft_fit": shaft_fit, "housing_fit": housing_fit, "shaft_interference": shaft_interference,
-        "housing_interference": housing_interference, "shaft_bore": shaft_bore,
-        "housing_outside_diameter": housing_outside_diameter, "shaft_material": shaft_material,
-        "housing_material": housing_material, "tolerance_class": tolerance_class,
-        "inner_ring_temperature": inner_ring_temperature, "outer_ring_temperature": outer_ring_temperature,
-        "ball_temperature": ball_temperature, "shaft_temperature": shaft_temperature,
-        "housing_temperature": housing_temperature})
-    if mounted is not None:
-        bl = mounted.bearings
-        st, notes = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], loads, w, arrangement_kind=arrangement,
-                           spacing=s, preload_displacement=mounted.interference, first_ball_angle=phi0,
-                           stiffness_at=stiffness_at)
-        notes = [*mounted.warnings, *notes]
-    idle, _ = _solve(sets.set_analysis, bl if len(bl) > 1 else bl[0], [0.0] * 5, w, arrangement_kind=arrangement,
-                     spacing=s, preload_displacement=st.preload_displacement, first_ball_angle=phi0,
-                     stiffness_at=stiffness_at)
-    operating_preload = float(abs(np.asarray(idle.bearing_loads)[0][2]))
-    notes = list(dict.fromkeys([*st.warnings, *notes]))
-    orient, pos = sets.arrangement(arrangement, np.diff(st.positions), len(st.bearings))
-    gaps_mm = [float(g) * 1e3 for g in np.diff(st.positions)]
-    spacing_mm = gaps_mm[0] if len(set(gaps_mm)) == 1 else gaps_mm  # one value, or one per gap
-    names = [b.designation for b in bl] * (len(st.bearings) if len(bl) == 1 else 1)
-    members = []
-    for k, part in enumerate(st.bearings):
-        bk = bl[k % len(bl)]
-        ns = types.SimpleNamespace(**part, azimuth=combined.ball_azimuths(bk.n_balls, phi0))
-        carried = st.bearing_loads[k]
-        if bool(np.all(st.converged)):
-            notes += [f"bearing {k}: {m}" for m in _warnings(bk, carried, ns, [])]
-        members.append({"bearing": names[k], "orientation": int(orient[k]), "position_mm": float(pos[k] * 1e3) + 0.0,  # + 0.0: no -0
-                        "loads": {"fx_N": carried[0], "fy_N": carried[1], "fz_N": carried[2],
-                                  "mx_Nmm": carried[3] * 1e3, "my_Nmm": carried[4] * 1e3},
-                        **_with_takeup(tables.load_distribution(ns), _takeup_um(bk))})
-    doc = {**_with_takeup(tables.load_distribution(_shaft(st)), _set_takeup_um(bl, orient)),
-           "preload_offset_um": st.preload_displacement * 1e6,
-           "operating_preload_N": operating_preload,
-           **({} if mounted is None else {"operating_clearance_um": mounted.clearance * 1e6,
-                                          "mounting": mounted.echo}),
-           "bearings": members,
-           "inputs": {**_inputs(bl[0], loads, w, phi0, stiffness_at=stiffness_at), "bearings": names,
-                      "arrangement": arrangement, "spacing_mm": spacing_mm, "spacing_default": st.default_spacing,
-                      "preload_N": fp,
-                      "preload_offset_um": None if e is None else e * 1e6},
-           "warnings": notes}
-    del doc["balls"], doc["max_ball_load_N"]
+    given = {"bearing": bearing, "arrangement": arrangement, "spacing": spacing, "preload": preload,
+             "preload_offset": preload_offset, "fx": fx, "fy": fy, "fz": fz, "mx": mx, "my": my,
+             "radial_load": radial_load, "axial_load": axial_load, "speed": speed,
+             "first_ball_angle": first_ball_angle, "stiffness_at": stiffness_at, "shaft_fit": shaft_fit,
+             "housing_fit": housing_fit, "shaft_interference": shaft_interference,
+             "housing_interference": housing_interference, "shaft_bore": shaft_bore,
+             "housing_outside_diameter": housing_outside_diameter, "shaft_material": shaft_material,
+             "housing_material": housing_material, "tolerance_class": tolerance_class,
+             "inner_ring_temperature": inner_ring_temperature, "outer_ring_temperature": outer_ring_temperature,
+             "ball_temperature": ball_temperature, "shaft_temperature": shaft_temperature,
+             "housing_temperature": housing_temperature}
+    doc = run_calculation("bearing-set", given, calculation.document, catalog=catalog)
     if plot is not None:
-        plots.save(load_plots.ball_loads(types.SimpleNamespace(**st.bearings[0], azimuth=combined.ball_azimuths(
-            bl[0].n_balls, phi0)), title=f"Set {arrangement}: ball loads of bearing 0 ({names[0]})"), plot)
+        plots.save(calculation.figure(doc), plot)
     if json_out:
-        emit_json(tables.json_value(doc))
+        emit_json(doc)
         return
+    members = doc["bearings"]
     for k, m in enumerate(members):
         _print_case(f"Bearing {k} ({m['bearing']}, orientation {m['orientation']:+d}, z = {m['position_mm']:g} mm)", m)
     loads = [m["max_ball_load_N"] for m in members if m["max_ball_load_N"] is not None]
+    spacing_mm = doc["inputs"]["spacing_mm"]
     gaps = ", ".join(f"{g:g}" for g in np.atleast_1d(spacing_mm))
-    spacing_row = ["spacing [mm]", f"{gaps} ({'default: side by side, one width' if st.default_spacing else 'given'})"]
-    origin = "concentric" if np.all(orient == orient[0]) else "assembled"
-    _print_case(f"Set {arrangement} of {len(members)}", {**doc, "max_ball_load_N": max(loads, default=None)},
+    default = doc["inputs"]["spacing_default"]
+    spacing_row = ["spacing [mm]", f"{gaps} ({'default: side by side, one width' if default else 'given'})"]
+    orient = [m["orientation"] for m in members]
+    origin = "concentric" if all(o == orient[0] for o in orient) else "assembled"
+    _print_case(f"Set {doc['inputs']['arrangement']} of {len(members)}", {**doc, "max_ball_load_N": max(loads, default=None)},
                 balls=False, body="shaft", origin=origin, extra=[spacing_row])  # the balls: each bearing's table
-    print_warnings(notes)
+    print_warnings(doc["warnings"])
     _print_written(plot)
-
-
-def _shaft(st):
-    """The shaft of a set as the fields :func:`bearinglab.tables.load_distribution` reads."""
-    import numpy as np
-    return types.SimpleNamespace(displacement=st.displacement, stiffness=st.stiffness, converged=st.converged,
-                                 residual=st.residual, iterations=st.iterations, ball_load_inner=np.zeros(1),
-                                 azimuth=np.zeros(0), ball_load_outer=np.zeros(0),
-                                 contact_angle_inner=np.zeros(0), contact_angle_outer=np.zeros(0),
-                                 max_pressure_inner=np.zeros(0), max_pressure_outer=np.zeros(0))
 
 
 #: The commands of this module, as the application adds them.

@@ -51,7 +51,7 @@ def axial_angle(
     options = dict(locals())  # the options as typed, by name: the calculation's fields among them
     import numpy as np
 
-    from ..calculations import _inputs
+    from ..calculations import _reading as _inputs
     from ..calculations import stand as calculation
     out = calculation.document(_inputs.request("axial-angle", options), bearing_file=bearing_file,
                                catalog=catalog)
@@ -105,7 +105,7 @@ def stand_load(
 ):
     """Minimum axial load against gyroscopic slip on a test stand, and the +20 % maximum (the test-stand method)."""
     options = dict(locals())  # the options as typed, by name: the calculation's fields among them
-    from ..calculations import _inputs
+    from ..calculations import _reading as _inputs
     from ..calculations import stand as calculation
     out = calculation.document(_inputs.request("stand-load", options), bearing_file=bearing_file,
                                catalog=catalog)

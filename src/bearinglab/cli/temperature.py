@@ -17,7 +17,6 @@ import typer
 
 from ..errors import InputError
 from ._common import (
-    HOTTEST_OIL_DEGC,
     AxialLoadOpt,
     BearingFile,
     BearingName,
@@ -30,9 +29,7 @@ from ._common import (
     console,
     emit_json,
     inputs_echo,
-    lubricant_viscosity,
     parse_speeds,
-    parse_temperature,
     print_warnings,
     resolve_bearing,
     table,
@@ -52,107 +49,14 @@ LubricationOpt = Annotated[str, typer.Option("--lubrication", help="SKF model: o
 ReferenceSpeedOpt = Annotated[bool, typer.Option("--reference-speed", help="Also ISO 15312's thermal reference speed of the bearing by the SKF model (JSON: thermal_reference_speed_rpm).", rich_help_panel=_HEAT)]
 ConstantsOpt = Annotated[str | None, typer.Option("--skf-constants", help="SKF geometry constants R1,R2,R3,S1,S2,S3 in place of SKF's tables (angular contact other than 40 deg needs them), e.g. '5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12'.", rich_help_panel=_HEAT)]
 
-#: Defaults of the oil's properties when not given: typical mineral-oil values, estimates labelled as such
-#: in the output (density 0.86-0.89 g/cm^3, specific heat 1.8-2.1 kJ/(kg K) between 20 and 100 degC).
-DEFAULT_DENSITY = 870.0
-DEFAULT_HEAT_CAPACITY = 1950.0
-_ZERO_C = 273.15
-_LUBRICATIONS = ("oil-jet", "oil-air", "grease")
-_HOTTEST = HOTTEST_OIL_DEGC  # the sanity bound on the balance's temperatures (issue 24)
-
-
-def oil_reference_viscosities(oil, viscosity_index, viscosity_100):
-    """(nu40, nu100 [m^2/s], description, inputs) of an ISO VG oil, by the shared oil options."""
-    from ..ratings import lubrication
-
-    if oil is None:
-        raise InputError("oil: give --oil, an ISO VG grade (e.g. VG32), with --viscosity-index or --viscosity-100 "
-                         "if known (its viscosity follows the temperature)")
-    at100 = lubricant_viscosity(None, oil, "100 degC", viscosity_index, viscosity_100)
-    nu100 = at100.viscosity
-    grade = int(at100.inputs["oil"][2:])
-    nu40 = lubrication.iso_vg_viscosity(grade)
-    inputs = {k: v for k, v in at100.inputs.items() if k != "temperature_degC"}
-    if "viscosity_index" in inputs:
-        how = f"VG{grade}, VI {inputs['viscosity_index']:g}{' (assumed)' if inputs['viscosity_index_assumed'] else ''}"
-    else:
-        how = f"VG{grade}, nu100 {nu100 * 1e6:.4g} cSt"
-    return nu40, nu100, how, inputs
-
-
-def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature, heat_capacity, density_text,
-                 max_temperature):
-    """The heat-balance options in SI, the notes on assumed values and the inputs echoed."""
-    from .. import thermal
-    from ..units import parse_quantity
-
-    ta = parse_temperature(ambient, "ambient")
-    t_max = parse_temperature(max_temperature, "max-temperature")
-    if not t_max > ta:
-        raise InputError(f"max-temperature must be above the ambient [degC], got {t_max - _ZERO_C:g} degC")
-    if not t_max <= _ZERO_C + _HOTTEST:
-        raise InputError(f"max-temperature must be <= {_HOTTEST:g} [degC], got {t_max - _ZERO_C:g} degC")
-    notes, inputs = [], {"ambient_degC": ta - _ZERO_C, "max_temperature_degC": t_max - _ZERO_C}
-    conductance = None
-    if thermal_resistance is not None:
-        r = parse_quantity(thermal_resistance, "thermal_resistance", "thermal-resistance")
-        if not 1e-4 <= r <= 1e4:
-            raise InputError(f"thermal-resistance must be in [0.0001, 10000] [K/W], got {r:g} K/W")
-        conductance, inputs["thermal_resistance_K_W"] = 1.0 / r, r
-    g_oil, t_in = 0.0, None
-    if oil_flow is not None:
-        q = parse_quantity(oil_flow, "volume_flow", "oil-flow")
-        if not 0.0 <= q <= 1e-2:
-            raise InputError(f"oil-flow must be in [0, 600] [l/min], got {q * 6e4:g} l/min")
-        rho = DEFAULT_DENSITY if density_text is None else parse_quantity(density_text, "density", "density")
-        if not 500.0 <= rho <= 2500.0:
-            raise InputError(f"density must be in [500, 2500] [kg/m^3], got {rho:g} kg/m^3")
-        cp = DEFAULT_HEAT_CAPACITY if heat_capacity is None else parse_quantity(heat_capacity, "specific_heat",
-                                                                              "oil-heat-capacity")
-        if not 500.0 <= cp <= 5000.0:
-            raise InputError(f"oil-heat-capacity must be in [500, 5000] [J/(kg K)], got {cp:g} J/(kg K)")
-        for name, text, value in (("density", density_text, DEFAULT_DENSITY),
-                                  ("oil-heat-capacity", heat_capacity, DEFAULT_HEAT_CAPACITY)):
-            if text is None:
-                notes.append(f"{name}: not given, so {value:g} (a typical mineral oil, an estimate) is used for "
-                             "the heat the oil flow carries; give --" + name)
-        g_oil = thermal.oil_flow_conductance(q, rho, cp)
-        inputs.update(oil_flow_l_min=q * 6e4, density_kg_m3=rho, oil_heat_capacity_J_kgK=cp)
-        if oil_inlet_temperature is not None:
-            t_in = parse_temperature(oil_inlet_temperature, "oil-inlet-temperature")
-            if not t_in <= _ZERO_C + _HOTTEST:
-                raise InputError(f"oil-inlet-temperature must be <= {_HOTTEST:g} [degC], got {t_in - _ZERO_C:g} degC")
-            inputs["oil_inlet_temperature_degC"] = t_in - _ZERO_C
-    elif oil_inlet_temperature is not None or heat_capacity is not None or density_text is not None:
-        raise InputError("oil-flow: --oil-inlet-temperature, --oil-heat-capacity and --density describe an oil "
-                         "flow; give --oil-flow")
-    return {"ambient": ta, "conductance": conductance, "oil_flow_conductance": g_oil,
-            "oil_inlet_temperature": t_in, "maximum_temperature": t_max}, notes, inputs
-
-
-def skf_options(b, lubrication, constants):
-    """The SKF model's options for the bearing: its lubrication method and, for angular contact, the
-    constants given (else SKF's single-row ones, for 40 deg bearings only: others refused in one line)."""
-    from .. import friction
-
-    if lubrication == "oil-bath":
-        raise InputError("lubrication: oil-bath is not covered by `temperature` yet (SKF's drag loss needs V_M "
-                         "from the catalogue's chart); use oil-jet, oil-air or grease")
-    if lubrication not in _LUBRICATIONS:
-        raise InputError(f"lubrication must be one of {list(_LUBRICATIONS)}, got {lubrication!r}")
-    out = {"lubrication": lubrication}
-    if constants is not None:
-        try:
-            values = [float(x) for x in constants.split(",")]
-        except ValueError:
-            values = []
-        if len(values) != 6 or not all(v >= 0 and v < 1e6 for v in values):
-            raise InputError(f"skf-constants must be six numbers >= 0, R1,R2,R3,S1,S2,S3, got {constants!r}")
-        r1, r2, r3, s1, s2, s3 = values
-        out["constants"] = friction.SKFConstants(r1, r2, s1, s2, r3, s3)
-    elif b.type != "radial":  # SKF's table covers single-row 40 deg bearings; others are refused in one line
-        friction.angular_contact_constants(b.contact_angle)
-    return out
+from ..calculations.temperature import (  # noqa: F401 -- shared with film and life (temperature auto)
+    _ZERO_C,
+    DEFAULT_DENSITY,
+    DEFAULT_HEAT_CAPACITY,
+    heat_options,
+    oil_reference_viscosities,
+    skf_options,
+)
 
 
 def radial_axial(radial_load, axial_load):

@@ -62,6 +62,8 @@ ENDPOINTS = {
     "temperature": "temperature",
     "runout": "runout",
 }
+# a calculation registered later (e.g. by another model's work) gets its endpoint at its own name
+ENDPOINTS.update({name: name for name in CALCULATIONS if name not in ENDPOINTS.values()})
 
 
 def error_body(detail, parameter=None, error="input"):

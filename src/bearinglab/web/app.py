@@ -12,8 +12,9 @@ GET  /static/...               the style sheet and the page's script
 Limits: a request holds at most ``case_limit`` cases, runs at most ``time_budget`` seconds (then its
 worker process is stopped and the answer is 503 naming the budget), and its body is at most
 :data:`bearinglab.calculations.BODY_LIMIT` bytes. Calculations run in worker processes
-(:mod:`bearinglab.web.workers`): a light pool for single cases and a heavy pool for lists, ranges and
-runout, so that a light request never waits behind heavy ones; a client that goes away stops its work.
+(:mod:`bearinglab.web.workers`): a light pool for single cases and a heavy pool for lists, ranges,
+runout and a clearance Monte Carlo, so that a light request never waits behind heavy ones; a client
+that goes away stops its work.
 
 Functions
 ---------
@@ -102,7 +103,9 @@ class _Server:
                 return 200, tables.json_text(doc) if what == "json" else doc
         except RequestError as exc:
             return api.web_error(exc)
-        pool = self.heavy if (parsed.heavy or what == "figure") else self.light
+        # a Monte Carlo of the clearance (up to 10^5 samples) is heavy though it has no list
+        study = parsed.values.get("monte_carlo") is not None
+        pool = self.heavy if (parsed.heavy or study or what == "figure") else self.light
         gone = request.is_disconnected if request is not None else None
         try:
             kind, value = await pool.call((what, name, given, self.case_limit, parsed),
@@ -156,6 +159,10 @@ def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_
     templates.env.globals["quantity"] = page.quantity
     templates.env.globals["scales"] = page.scales
     templates.env.globals["column_scales"] = page.column_scales
+    templates.env.globals["value_rows"] = page.value_rows
+    templates.env.globals["chain_rows"] = page.chain_rows
+    templates.env.globals["chain_columns"] = page.CHAIN_COLUMNS
+    templates.env.globals["percentile_rows"] = page.percentile_rows
 
     app.add_middleware(_BoundedBody)
 

@@ -7,9 +7,15 @@ line saying why; an input error is shown next to the field it names, in the fiel
 
 Form and sections
 -----------------
-FIELDS          the form fields, by name, grouped (bearing, geometry, loads, lubricant, set, model)
+FIELDS          the form fields, by name, grouped (loads, lubricant, model, set, geometry, mounting,
+                film, heat, runout)
 Section         one section of results: title, calculation, the rule that says when it applies
 SECTIONS        the sections, in the order shown
+NOT_ON_PAGE     registered calculations without a section of their own, and why
+sections        SECTIONS, then a left-out line for any registered calculation the page lacks
+value_rows      a document's table of values: label, text, unit (scalars, ranges, nested numbers)
+chain_rows      the mounted-clearance chain: stages x least / probable / largest (CHAIN, CHAIN_COLUMNS)
+percentile_rows the Monte Carlo study of a clearance: percentiles, mean, std, P(clearance < 0)
 render_context  form values -> what the template shows (async: the sections run in the workers)
 to_csv          a document as CSV text (quantity, value, unit; a table of cases as rows)
 quantity        a result key with its unit suffix -> a readable label and unit
@@ -31,23 +37,30 @@ import urllib.parse
 from typing import NamedTuple
 
 from ..calculations import CALCULATIONS
-from ..calculations.registry import GEOMETRY
+from ..calculations.registry import GEOMETRY, MOUNTING
 
 __all__ = [
+    "CHAIN",
+    "CHAIN_COLUMNS",
     "DIGITS",
     "FIELDS",
     "NOISE",
+    "NOT_ON_PAGE",
     "SECTIONS",
     "Result",
     "Section",
+    "chain_rows",
     "column_scales",
     "compute",
     "figure_svg",
     "number",
+    "percentile_rows",
     "quantity",
     "render_context",
     "scales",
+    "sections",
     "to_csv",
+    "value_rows",
 ]
 
 
@@ -71,18 +84,39 @@ FIELDS = {
         _pick("life", "viscosity", group="lubricant"),
         _pick("life", "oil", group="lubricant"),
         _pick("life", "temperature", group="lubricant"),
+        _pick("life", "viscosity_index", group="lubricant"),
         _pick("life", "contamination", group="lubricant"),
         _pick("life", "contamination_factor", group="lubricant"),
         _pick("life", "reliability", group="lubricant", default=None),
-        # no oil bath on the page: it needs the oil level and SKF's drag-loss factor (the API takes them)
-        _pick("friction", "lubrication", group="lubricant", choices=("grease", "oil-air", "oil-jet")),
+        _pick("friction", "lubrication", group="lubricant"),
+        _pick("friction", "oil_level", group="lubricant"),  # an oil bath: H and SKF's V_M read at H/d_m
+        _pick("friction", "drag_loss_factor", group="lubricant"),
         _pick("friction", "model", group="model"),
         _pick("high-speed", "constants", group="model"),
         _pick("bearing-set", "arrangement", group="set", default="",
               choices=("", "DB", "DF", "DT"), label="Arrangement (a set of two)"),
         _pick("bearing-set", "preload", group="set"),
         _pick("bearing-set", "spacing", group="set", default=None),
+        _pick("bearing-set", "preload_offset", group="set"),
         *GEOMETRY,
+        *(_pick("clearance", f.name, group="mounting") for f in MOUNTING),
+        _pick("clearance", "shaft_roughness", group="mounting"),
+        _pick("clearance", "housing_roughness", group="mounting"),
+        _pick("clearance", "monte_carlo", group="mounting"),
+        _pick("clearance", "seed", group="mounting", default=None),
+        _pick("clearance", "distribution", group="mounting", default=None),
+        _pick("film", "roughness", group="film"),
+        _pick("film", "roughness_ball", group="film"),
+        _pick("film", "roughness_race", group="film"),
+        _pick("film", "density", group="film"),
+        _pick("film", "pressure_viscosity_coefficient", group="film"),
+        _pick("film", "loads_at", group="film", default=None),
+        _pick("temperature", "ambient", group="heat", default=None),
+        _pick("temperature", "thermal_resistance", group="heat"),
+        _pick("temperature", "oil_flow", group="heat"),
+        _pick("temperature", "oil_inlet_temperature", group="heat"),
+        _pick("temperature", "max_temperature", group="heat", default=None),
+        _pick("temperature", "skf_constants", group="heat"),
         _pick("runout", "errors", group="runout", required=False),
         _pick("runout", "angle", group="runout"),
     )
@@ -90,14 +124,31 @@ FIELDS = {
 _GROUPS = (("loads", "Loads and speed"), ("lubricant", "Lubricant, cleanliness, reliability"),
            ("model", "Models"), ("set", "Bearing set (leave the arrangement empty for one bearing)"),
            ("geometry", "Inline geometry (overrides the catalog bearing's)"),
+           ("mounting", "Mounting: fits, ring temperatures, Monte Carlo of the tolerances"),
+           ("film", "Lubricant film: roughness, oil density and pressure-viscosity coefficient"),
+           ("heat", "Heat balance: ambient, dissipation, oil flow"),
            ("runout", "Runout: paste an error set (TOML or JSON, as examples/runout/README.md)"))
 _EXAMPLES = {"radial_load": "10 kN", "fx": "1 kN", "fy": "0 N", "axial_load": "5 kN",
              "mx": "0 N*mm", "my": "0 N*mm", "speed": "6000 rpm", "viscosity": "20 cSt",
              "oil": "VG68", "temperature": "70 degC", "contamination_factor": "0.5",
-             "reliability": "90", "preload": "500 N", "spacing": "0 mm", "balls": "16",
+             "reliability": "90", "preload": "500 N", "spacing": "0 mm", "preload_offset": "5 um",
+             "oil_level": "5 mm", "drag_loss_factor": "0.0002", "balls": "16",
              "ball_diameter": "22.225 mm", "pitch_diameter": "125.26 mm", "inner_groove_radius": "",
              "outer_groove_radius": "", "inner_conformity": "0.52", "outer_conformity": "0.52",
-             "contact_angle": "40 deg", "radial_clearance": "", "mean_diameter": ""}
+             "contact_angle": "40 deg", "radial_clearance": "", "mean_diameter": "",
+             "viscosity_index": "95", "shaft_fit": "k5", "housing_fit": "H7",
+             "shaft_interference": "5 um, 20 um", "housing_interference": "-10 um, 5 um",
+             "shaft_bore": "20 mm", "housing_outside_diameter": "120 mm", "tolerance_class": "P6",
+             "clearance_class": "C3", "inner_ring_temperature": "60 degC",
+             "outer_ring_temperature": "50 degC", "ball_temperature": "55 degC",
+             "shaft_temperature": "60 degC", "housing_temperature": "45 degC",
+             "shaft_roughness": "4 um", "housing_roughness": "4 um", "monte_carlo": "10000",
+             "seed": "0", "roughness": "0.1 um", "roughness_ball": "0.05 um",
+             "roughness_race": "0.15 um", "density": "870 kg/m^3",
+             "pressure_viscosity_coefficient": "23 1/GPa", "ambient": "20 degC",
+             "thermal_resistance": "0.5 K/W", "oil_flow": "0.5 l/min",
+             "oil_inlet_temperature": "40 degC", "max_temperature": "150 degC",
+             "skf_constants": "R1,R2,R3,S1,S2,S3"}
 
 
 class Section(NamedTuple):
@@ -125,9 +176,45 @@ SECTIONS = (
     Section("runout", "Runout", "runout", "Inner-ring displacement from the error set."),
     Section("friction", "Friction torque", "friction",
             "F_r = |(F_x, F_y)| where F_x, F_y are given; the moments do not enter these models."),
+    Section("clearance", "Mounted clearance", "clearance",
+            "Diametral clearance from the unmounted class range through the fits, the ring "
+            "temperatures and the speed (issue 23); least / probable / largest."),
+    Section("film", "Lubricant film", "film",
+            "EHL film per contact (Hamrock-Dowson), at the ball loads of the load distribution."),
+    Section("temperature", "Operating temperature", "temperature",
+            "Thermal balance: SKF friction power = heat dissipated. F_r = |(F_x, F_y)| where F_x, "
+            "F_y are given; the moments do not enter."),
 )
+#: Calculations of :data:`~bearinglab.calculations.CALCULATIONS` with no section of their own, and why
+#: (one line on the page). A calculation that is in neither SECTIONS nor here (a newly registered one)
+#: gets a left-out line pointing to its API endpoint, so the page never misses one silently.
+NOT_ON_PAGE = {
+    "catalog-search": "the bearing picker of the form",
+}
 
 _LOADS = ("radial_load", "fx", "fy", "axial_load", "mx", "my")
+#: the form's fields that make a mounted clearance differ from the unmounted one (or ask for its study)
+_MOUNTED = (*(f.name for f in MOUNTING if f.name not in ("tolerance_class", "clearance_class")),
+            "monte_carlo")
+
+
+def sections():
+    """:data:`SECTIONS`, then a left-out section for every registered calculation the page does not
+    show (not in :data:`NOT_ON_PAGE`): its line names the API endpoint that computes it.
+
+    Returns
+    -------
+    tuple of Section
+    """
+    from .api import ENDPOINTS
+
+    shown = {s.calculation for s in SECTIONS} | set(NOT_ON_PAGE)
+    paths = {name: path for path, name in ENDPOINTS.items()}
+    extra = tuple(
+        Section(name, calc.title, name, f"{calc.title} is not on this page yet; the JSON API computes "
+                f"it at /api/{paths.get(name, name)} (see /docs).")
+        for name, calc in CALCULATIONS.items() if name not in shown)
+    return SECTIONS + extra
 
 
 def _given(values, name):
@@ -159,9 +246,37 @@ def _left_out(section, values):
             return "Left out: no set arrangement chosen (one bearing)."
         if not has.get("bearing"):
             return "Left out: a set is built from a catalog bearing; pick one."
+    if section.key == "clearance":
+        if not has.get("bearing"):
+            return ("Left out: the mounted clearance needs a catalog bearing (its bore, outside "
+                    "diameter and clearance class); pick one.")
+        if not any(has.get(f) for f in _MOUNTED):
+            return ("Left out: no fit, interference, ring temperature or Monte Carlo given "
+                    "(Mounting); the clearance is the unmounted one.")
+    if section.key == "film":
+        if not any_load:
+            return "Left out: no load given (the film is computed at each ball's load)."
+        if not has.get("speed"):
+            return "Left out: no film forms at rest; give a shaft speed."
+        if not (has.get("viscosity") or has.get("oil")):
+            return "Left out: the film needs the lubricant: a viscosity, or an oil grade and temperature."
+    if section.key == "temperature":
+        if not has.get("speed"):
+            return "Left out: the thermal balance needs a shaft speed."
+        if not has.get("oil"):
+            return ("Left out: the thermal balance needs an oil grade (its viscosity follows the "
+                    "temperature); a fixed viscosity is not enough.")
+        if not has.get("bearing"):
+            return "Left out: the thermal balance needs a catalog bearing (its SKF friction data)."
+        if values.get("lubrication") == "oil-bath":
+            return ("Left out: the thermal balance takes no oil bath yet (its drag loss needs SKF's "
+                    "V_M chart at each temperature's oil level); choose oil-jet, oil-air or grease.")
+    if section not in SECTIONS:
+        return f"Left out: {section.note}"
     if section.key == "friction":
         model = values.get("model") or "one-term"
-        if model in ("palmgren", "skf") and not has.get("viscosity"):
+        oil = has.get("oil") and has.get("temperature") and model == "skf"  # SKF's takes a grade too
+        if model in ("palmgren", "skf") and not (has.get("viscosity") or oil):
             return f"Left out: the {model} model needs the lubricant viscosity."
         if model == "two-term":
             return "Left out: the two-term model needs its measured f0 (bearinglab friction lab)."
@@ -177,10 +292,28 @@ def _query(section, values):
         return {"name": values["bearing"]}
     if section.key == "bearing-set" and "bearing" in out:
         out["bearing"] = f"{out['bearing']}, {out['bearing']}"
-    if section.key == "friction" and "radial_load" not in out and (
+    if section.key == "friction" and (values.get("model") or "one-term") != "skf":
+        for name in ("oil", "temperature", "viscosity_index", "viscosity_100", "lubrication",
+                     "oil_level", "drag_loss_factor"):
+            out.pop(name, None)  # the lubricant of SKF's model; the others refuse it
+    if section.key == "film" and str(values.get("temperature") or "").strip() != "auto":
+        for name in ("ambient", "thermal_resistance", "skf_constants"):
+            out.pop(name, None)  # the heat balance's, which the film takes with temperature auto only
+    if section.key in ("friction", "temperature") and "radial_load" not in out and (
             _given(values, "fx") or _given(values, "fy")):
         out["radial_load"] = _resultant(values)  # the friction models take F_r = |(F_x, F_y)|
     return out
+
+
+_DATA_SECTIONS = ("clearance", "film", "temperature")
+
+
+def _worded(detail):
+    """A web error line with its leading parameter name as the page labels the field."""
+    name, sep, rest = detail.partition(": ")
+    if sep and name in FIELDS:
+        return f"{FIELDS[name].title}: {rest}"
+    return detail
 
 
 def _resultant(values):
@@ -206,6 +339,22 @@ async def _section(section, values, server):
                 "query": {}}
     query = _query(section, values)
     status, doc = await server.compute(section.calculation, query)
+    if (status == 422 and doc.get("parameter") == "temperature" and "'auto'" in doc.get("detail", "")
+            and str(values.get("temperature")).strip() == "auto"):
+        # 'auto' (the thermal balance's temperature) is the film's; a calculation that does not take
+        # it yet is left out rather than marking the field the film section reads
+        return {"section": section, "document": None, "message": "", "figure": "", "query": {},
+                "left_out": f"Left out: {section.title.lower()} takes no oil temperature 'auto' yet; "
+                            "give the temperature (the operating temperature section computes one)."}
+    name = doc.get("parameter") if status == 422 and doc.get("error") == "input" else ""
+    if name != "" and name not in query and name not in values and (
+            name is not None or section.key in _DATA_SECTIONS):
+        # what is missing or out of range is nothing the user gave (the film's groove conformities,
+        # SKF's constants of an angular-contact bearing, a clearance the fits turned into a
+        # preload): the section does not apply as it stands; an error of a field the user filled
+        # is shown at that field
+        return {"section": section, "document": None, "message": "", "figure": "", "query": {},
+                "left_out": f"Left out: {_worded(doc['detail'])}"}
     if status == 422 and section.key == "friction" and doc.get("parameter") == "model":
         # the model has no constants for this bearing (SKF's are for deep-groove bearings): the
         # section does not apply; it is no error of the form
@@ -268,7 +417,7 @@ async def render_context(values, server):
     submitted = any(_given(values, k) for k in values)
     results = []
     if submitted:
-        results = list(await asyncio.gather(*(_section(s, values, server) for s in SECTIONS)))
+        results = list(await asyncio.gather(*(_section(s, values, server) for s in sections())))
     errors = {}
     for r in results:
         name = r.get("parameter")
@@ -289,6 +438,11 @@ async def render_context(values, server):
         "date": datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC"),
         "geometry_open": not values.get("bearing") or any(
             _given(values, f.name) for f in GEOMETRY),
+        # the groups folded in <details>, and whether each is open (no bearing, or a value given)
+        "folded": {g: (g == "geometry" and not values.get("bearing")) or any(
+            _given(values, f.name) for f in FIELDS.values()
+            if f.group == g and f.name not in ("seed", "distribution", "loads_at"))
+            for g in ("geometry", "mounting", "film", "heat")},
     }
 
 
@@ -310,10 +464,19 @@ def to_csv(document):
     if isinstance(document, dict):
         writer.writerow(["quantity", "value", "unit"])
         for key, value in document.items():
-            if isinstance(value, (dict, list)):
+            if isinstance(value, list) and value and all(_is_number(v) for v in value):
+                value = ", ".join(repr(v) for v in value)  # a range such as a probable interference
+            elif isinstance(value, (dict, list)):
                 continue
             _label_text, unit = quantity(key)
             writer.writerow([key, value, unit])
+        for key, value in _nested(document):
+            writer.writerow([key, value, quantity(key)[1]])
+        for label, unit, cells in chain_rows(document):
+            for column, value in zip(CHAIN_COLUMNS, cells):
+                writer.writerow([f"chain {column} {label}", value, unit])
+        for label, value, unit in percentile_rows(document):
+            writer.writerow([f"monte carlo {label}", value, unit])
         for note in document.get("warnings") or []:
             writer.writerow(["warning", note, ""])
         for key, value in document.items():
@@ -330,8 +493,150 @@ def to_csv(document):
     return out.getvalue()
 
 
+def _is_number(value):
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+#: Keys of a document that are not result rows: the echo of the bearing and the inputs, and the
+#: nested tables shown by :func:`chain_rows` and :func:`percentile_rows`.
+_NOT_ROWS = ("warnings", "geometry", "bearing", "inputs", "chain", "monte_carlo")
+
+
+def _nested(document):
+    """(key, value) of the numbers one level down in a document's mappings (``ring_diameters_mm``
+    -> ``ring_diameters_inner_raceway_mm``), and the lubricant a film or thermal balance used."""
+    out = []
+    for key, value in document.items():
+        if key in _NOT_ROWS or not isinstance(value, dict):
+            continue
+        label, unit = quantity(key)
+        suffix = key[len(label):] if unit else ""
+        for sub, v in value.items():
+            if _is_number(v):
+                out.append((f"{key[:len(key) - len(suffix)]}_{sub}{suffix}", v))
+    inputs = document.get("inputs")
+    if isinstance(inputs, dict):
+        for sub in ("lubricant", "dynamic_viscosity_mPas"):
+            if inputs.get(sub) is not None:
+                out.append((sub, inputs[sub]))
+    return out
+
+
+def value_rows(document):
+    """The rows of a section's table of values: (label, text, unit, css class ``num``, ``txt`` or
+    ``list``).
+
+    Every scalar of the document, ranges of numbers (``4.77, 18.2``), the numbers of nested
+    mappings and the lubricant used; the bearing's echo, the warnings and the tables shown apart
+    (cases, the clearance chain, the Monte Carlo) are left out.
+
+    Parameters
+    ----------
+    document : mapping
+        A calculation's JSON document.
+
+    Returns
+    -------
+    list of tuple
+    """
+    sc = scales(document)
+    rows = []
+    for key, value in document.items():
+        if key in _NOT_ROWS or isinstance(value, dict):
+            continue
+        label, unit = quantity(key)
+        if isinstance(value, list):
+            if not value or not all(_is_number(v) for v in value):
+                continue  # a table of cases, shown as rows
+            scale = max(_magnitude(v) for v in value)
+            # a line may break between the values, never inside one (no-break spaces in '1 × 10⁻⁵')
+            text = ", ".join(number(v, scale).replace(" ", "\u00a0") for v in value)
+            rows.append((label, text, unit, "list"))
+            continue
+        css = "num" if _is_number(value) else "txt"
+        rows.append((label, number(value, sc.get(key, 0.0)), unit, css))
+    nested = dict(_nested(document))
+    nsc = scales(nested)
+    for key, value in nested.items():
+        label, unit = quantity(key)
+        rows.append((label, number(value, nsc[key]), unit, "num" if _is_number(value) else "txt"))
+    return rows
+
+
+#: The clearance chain: its stages in order, as (key, label, unit); then its columns.
+CHAIN = (
+    ("unmounted_clearance", "unmounted clearance", "µm"),
+    ("inner_interference", "inner interference", "µm"),
+    ("outer_interference", "outer interference", "µm"),
+    ("fit_reduction", "− fit reduction", "µm"),
+    ("thermal_reduction", "− thermal reduction", "µm"),
+    ("centrifugal_reduction", "− centrifugal reduction", "µm"),
+    ("operating_clearance", "= operating clearance", "µm"),
+    ("inner_operating_interference", "inner interference at speed", "µm"),
+    ("outer_operating_interference", "outer interference at temperature", "µm"),
+    ("inner_pressure", "inner fit pressure", "MPa"),
+    ("outer_pressure", "outer fit pressure", "MPa"),
+    ("inner_loosened_by_speed", "inner fit loosened by speed", ""),
+)
+CHAIN_COLUMNS = ("least", "probable", "largest")
+
+
+def chain_rows(document):
+    """The mounted-clearance chain of a ``clearance`` document as rows of least / probable / largest.
+
+    Parameters
+    ----------
+    document : mapping
+        A ``clearance`` document (any other gives no rows).
+
+    Returns
+    -------
+    list of (label, unit, [least, probable, largest])
+        Raw values (the page formats them with :func:`number`); a stage the document does not
+        hold is left out.
+    """
+    chain = document.get("chain") if isinstance(document, dict) else None
+    if not isinstance(chain, dict) or not all(isinstance(chain.get(c), dict) for c in CHAIN_COLUMNS):
+        return []
+    return [(label, unit, [chain[c].get(key) for c in CHAIN_COLUMNS]) for key, label, unit in CHAIN
+            if any(key in chain[c] for c in CHAIN_COLUMNS)]
+
+
+def percentile_rows(document):
+    """The Monte Carlo study of a ``clearance`` document: (label, value, unit) rows.
+
+    Parameters
+    ----------
+    document : mapping
+        A ``clearance`` document; without ``monte_carlo`` there are no rows.
+
+    Returns
+    -------
+    list of tuple
+        The operating clearance's percentiles, mean and standard deviation [µm], the probability of
+        a negative clearance, the samples, the seed and the distribution.
+    """
+    mc = document.get("monte_carlo") if isinstance(document, dict) else None
+    if not isinstance(mc, dict):
+        return []
+    rows = [(f"operating clearance {p}", v, "µm") for p, v in (mc.get("percentiles_um") or {}).items()]
+    for key in ("mean_um", "std_um"):
+        if key in mc:
+            rows.append((f"operating clearance {quantity(key)[0]}", mc[key], "µm"))
+    if "probability_negative_clearance" in mc:
+        rows.append(("P(clearance < 0)", mc["probability_negative_clearance"], ""))
+    rows += [(k, mc[k], "") for k in ("samples", "seed", "distribution") if k in mc]
+    return rows
+
+
 _UNITS = (
     ("_cm2_per_kgf_2_3", "cm²/kgf^⅔"),
+    ("_per_GPa", "1/GPa"),
+    ("_mm2_s", "mm²/s"),
+    ("_m_s", "m/s"),
+    ("_mPas", "mPa·s"),
+    ("_kg_m3", "kg/m³"),
+    ("_degC", "°C"),
     ("_N_per_um", "N/µm"),
     ("_per_mm", "1/mm"),
     ("_Nmm", "N·mm"),

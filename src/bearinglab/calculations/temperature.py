@@ -1,0 +1,221 @@
+"""The thermal-balance inputs of a bearing (issue 24), read alike by ``temperature``, by ``film`` and
+``life`` with their temperature ``auto``: the oil, the heat paths and the SKF model's options.
+
+Functions
+---------
+oil_reference_viscosities  an ISO VG oil's nu40 and nu100, from its grade and VI or nu100
+heat_options               the heat-balance inputs in SI, the notes on assumed values, their echo
+skf_options                the SKF model's lubrication method and constants for a bearing
+steady_temperature         temperature ``auto``: the thermal balance of each case, its temperature and
+                           the oil's viscosity there (thermal runaway refused in one line)
+"""
+
+from __future__ import annotations
+
+from ..errors import InputError
+from ._inputs import HOTTEST_OIL_DEGC, lubricant_viscosity, parse_temperature
+
+__all__ = ["heat_options", "oil_reference_viscosities", "skf_options", "steady_temperature"]
+
+#: Defaults of the oil's properties when not given: typical mineral-oil values, estimates labelled as such
+#: in the output (density 0.86-0.89 g/cm^3, specific heat 1.8-2.1 kJ/(kg K) between 20 and 100 degC).
+DEFAULT_DENSITY = 870.0
+DEFAULT_HEAT_CAPACITY = 1950.0
+_ZERO_C = 273.15
+_LUBRICATIONS = ("oil-jet", "oil-air", "grease")
+_HOTTEST = HOTTEST_OIL_DEGC  # the sanity bound on the balance's temperatures (issue 24)
+
+
+def oil_reference_viscosities(oil, viscosity_index, viscosity_100):
+    """(nu40, nu100 [m^2/s], description, inputs) of an ISO VG oil, by the shared oil options.
+
+    Parameters
+    ----------
+    oil : str
+        The ISO VG grade as typed ('VG32').
+    viscosity_index : float or None
+        The oil's viscosity index (default 95, assumed).
+    viscosity_100 : str or None
+        Its viscosity at 100 degC as typed, instead of the index.
+
+    Returns
+    -------
+    tuple
+        ``(nu40, nu100, description, inputs)``.
+    """
+    from ..ratings import lubrication
+
+    if oil is None:
+        raise InputError("oil: give --oil, an ISO VG grade (e.g. VG32), with --viscosity-index or --viscosity-100 "
+                         "if known (its viscosity follows the temperature)")
+    at100 = lubricant_viscosity(None, oil, "100 degC", viscosity_index, viscosity_100)
+    nu100 = at100.viscosity
+    grade = int(at100.inputs["oil"][2:])
+    nu40 = lubrication.iso_vg_viscosity(grade)
+    inputs = {k: v for k, v in at100.inputs.items() if k != "temperature_degC"}
+    if "viscosity_index" in inputs:
+        how = f"VG{grade}, VI {inputs['viscosity_index']:g}{' (assumed)' if inputs['viscosity_index_assumed'] else ''}"
+    else:
+        how = f"VG{grade}, nu100 {nu100 * 1e6:.4g} cSt"
+    return nu40, nu100, how, inputs
+
+
+def heat_options(b, ambient, thermal_resistance, oil_flow, oil_inlet_temperature, heat_capacity, density_text,
+                 max_temperature):
+    """The heat-balance options in SI, the notes on assumed values and the inputs echoed.
+
+    Parameters
+    ----------
+    b : BallBearing
+        The bearing.
+    ambient, thermal_resistance, oil_flow, oil_inlet_temperature, heat_capacity, density_text, \
+max_temperature : str or None
+        The inputs as typed ('20 degC', '0.5 K/W', '0.5 l/min', ...).
+
+    Returns
+    -------
+    tuple
+        ``(options, notes, inputs)``: the keyword options of :func:`bearinglab.thermal.thermal_balance`
+        (with ``ambient``), the notes on assumed values, the inputs echoed.
+    """
+    from .. import thermal
+    from ..units import parse_quantity
+
+    ta = parse_temperature(ambient, "ambient")
+    t_max = parse_temperature(max_temperature, "max-temperature")
+    if not t_max > ta:
+        raise InputError(f"max-temperature must be above the ambient [degC], got {t_max - _ZERO_C:g} degC")
+    if not t_max <= _ZERO_C + _HOTTEST:
+        raise InputError(f"max-temperature must be <= {_HOTTEST:g} [degC], got {t_max - _ZERO_C:g} degC")
+    notes, inputs = [], {"ambient_degC": ta - _ZERO_C, "max_temperature_degC": t_max - _ZERO_C}
+    conductance = None
+    if thermal_resistance is not None:
+        r = parse_quantity(thermal_resistance, "thermal_resistance", "thermal-resistance")
+        if not 1e-4 <= r <= 1e4:
+            raise InputError(f"thermal-resistance must be in [0.0001, 10000] [K/W], got {r:g} K/W")
+        conductance, inputs["thermal_resistance_K_W"] = 1.0 / r, r
+    g_oil, t_in = 0.0, None
+    if oil_flow is not None:
+        q = parse_quantity(oil_flow, "volume_flow", "oil-flow")
+        if not 0.0 <= q <= 1e-2:
+            raise InputError(f"oil-flow must be in [0, 600] [l/min], got {q * 6e4:g} l/min")
+        rho = DEFAULT_DENSITY if density_text is None else parse_quantity(density_text, "density", "density")
+        if not 500.0 <= rho <= 2500.0:
+            raise InputError(f"density must be in [500, 2500] [kg/m^3], got {rho:g} kg/m^3")
+        cp = DEFAULT_HEAT_CAPACITY if heat_capacity is None else parse_quantity(heat_capacity, "specific_heat",
+                                                                              "oil-heat-capacity")
+        if not 500.0 <= cp <= 5000.0:
+            raise InputError(f"oil-heat-capacity must be in [500, 5000] [J/(kg K)], got {cp:g} J/(kg K)")
+        for name, text, value in (("density", density_text, DEFAULT_DENSITY),
+                                  ("oil-heat-capacity", heat_capacity, DEFAULT_HEAT_CAPACITY)):
+            if text is None:
+                notes.append(f"{name}: not given, so {value:g} (a typical mineral oil, an estimate) is used for "
+                             "the heat the oil flow carries; give --" + name)
+        g_oil = thermal.oil_flow_conductance(q, rho, cp)
+        inputs.update(oil_flow_l_min=q * 6e4, density_kg_m3=rho, oil_heat_capacity_J_kgK=cp)
+        if oil_inlet_temperature is not None:
+            t_in = parse_temperature(oil_inlet_temperature, "oil-inlet-temperature")
+            if not t_in <= _ZERO_C + _HOTTEST:
+                raise InputError(f"oil-inlet-temperature must be <= {_HOTTEST:g} [degC], got {t_in - _ZERO_C:g} degC")
+            inputs["oil_inlet_temperature_degC"] = t_in - _ZERO_C
+    elif oil_inlet_temperature is not None or heat_capacity is not None or density_text is not None:
+        raise InputError("oil-flow: --oil-inlet-temperature, --oil-heat-capacity and --density describe an oil "
+                         "flow; give --oil-flow")
+    return {"ambient": ta, "conductance": conductance, "oil_flow_conductance": g_oil,
+            "oil_inlet_temperature": t_in, "maximum_temperature": t_max}, notes, inputs
+
+
+def skf_options(b, lubrication, constants):
+    """The SKF model's options for the bearing: its lubrication method and, for angular contact, the
+    constants given (else SKF's single-row ones, for 40 deg bearings only: others refused in one line).
+
+    Parameters
+    ----------
+    b : BallBearing
+        The bearing.
+    lubrication : str
+        oil-jet, oil-air or grease.
+    constants : str or None
+        R1,R2,R3,S1,S2,S3 as typed.
+
+    Returns
+    -------
+    dict
+        ``lubrication`` and, where given, ``constants`` (:class:`bearinglab.friction.SKFConstants`).
+    """
+    from .. import friction
+
+    if lubrication == "oil-bath":
+        raise InputError("lubrication: oil-bath is not covered by `temperature` yet (SKF's drag loss needs V_M "
+                         "from the catalogue's chart); use oil-jet, oil-air or grease")
+    if lubrication not in _LUBRICATIONS:
+        raise InputError(f"lubrication must be one of {list(_LUBRICATIONS)}, got {lubrication!r}")
+    out = {"lubrication": lubrication}
+    if constants is not None:
+        try:
+            values = [float(x) for x in constants.split(",")]
+        except ValueError:
+            values = []
+        if len(values) != 6 or not all(v >= 0 and v < 1e6 for v in values):
+            raise InputError(f"skf-constants must be six numbers >= 0, R1,R2,R3,S1,S2,S3, got {constants!r}")
+        r1, r2, r3, s1, s2, s3 = values
+        out["constants"] = friction.SKFConstants(r1, r2, s1, s2, r3, s3)
+    elif b.type != "radial":  # SKF's table covers single-row 40 deg bearings; others are refused in one line
+        friction.angular_contact_constants(b.contact_angle)
+    return out
+
+
+def steady_temperature(b, loads, w, oil, viscosity, viscosity_index, viscosity_100, ambient, thermal_resistance,
+                       lubrication, skf_constants, dynamic_viscosity=None):
+    """Temperature ``auto``: the steady temperature of each case (:func:`bearinglab.thermal.thermal_balance`).
+
+    Parameters
+    ----------
+    b : BallBearing
+        The bearing.
+    loads : sequence of float
+        (F_x, F_y, F_z, M_x, M_y) [N, N m]; the SKF model takes no tilting moment.
+    w : float or array_like
+        Inner-ring speed(s). [rad/s]
+    oil, viscosity_index, viscosity_100 : str, float, str or None
+        The oil by grade (its viscosity follows the temperature).
+    viscosity, dynamic_viscosity : str or None
+        Refused when given: a fixed viscosity does not follow the temperature.
+    ambient, thermal_resistance, lubrication, skf_constants : str or None
+        The heat-balance inputs as typed (ambient default 20 degC).
+
+    Returns
+    -------
+    tuple
+        ``(result, how, inputs, notes)``: the :class:`~bearinglab.thermal.ThermalBalance` (its
+        ``temperature`` [K] and ``kinematic_viscosity`` [m^2/s] per case, its own ``warnings``), the
+        oil in words, the inputs echoed (``temperature: "auto"`` and ``bearing_temperature_degC``) and
+        the notes on assumed values.
+    """
+    import math
+
+    import numpy as np
+
+    from .. import thermal
+
+    if viscosity is not None or dynamic_viscosity is not None:
+        raise InputError("temperature: 'auto' needs the oil by grade (--oil VG32, with --viscosity-index or "
+                         "--viscosity-100), whose viscosity follows the temperature; not --viscosity")
+    if loads[3] or loads[4]:
+        raise InputError("temperature: 'auto' takes the SKF friction model, which has no tilting moment; give "
+                         "no --mx/--my")
+    nu40, nu100, how, oil_inputs = oil_reference_viscosities(oil, viscosity_index, viscosity_100)
+    heat, notes, heat_inputs = heat_options(b, ambient or "20 degC", thermal_resistance, None, None, None,
+                                            None, "150 degC")
+    r = thermal.thermal_balance(b, math.hypot(loads[0], loads[1]), abs(loads[2]), w, heat.pop("ambient"), nu40,
+                                nu100, **heat, **skf_options(b, lubrication, skf_constants))
+    if not np.all(r.steady):
+        from ..units import RPM
+
+        bad = float(np.atleast_1d(w)[~np.atleast_1d(r.steady)][0]) / RPM
+        raise InputError(f"temperature: no steady temperature below 150 degC at {bad:g} rpm (thermal runaway); "
+                         "give the temperature, or more cooling (--thermal-resistance)")
+    t = np.atleast_1d(r.temperature)
+    inputs = {**oil_inputs, **heat_inputs, "temperature": "auto",
+              "bearing_temperature_degC": (t - 273.15).tolist() if t.size > 1 else float(t[0] - 273.15)}
+    return r, how, inputs, notes
