@@ -269,3 +269,30 @@ def operating_bearing(bearing, speed=0.0, options=None):
            "unmounted_clearance_um": [inp.unmounted[0] / _UM, inp.unmounted[1] / _UM],
            "mounting": inp.echo, "mounting_warnings": list(r.warnings)}
     return bearing.replace(radial_clearance=e), doc
+
+
+#: the mounting fields (``registry.MOUNTING``) by name
+NAMES = ("shaft_fit", "housing_fit", "shaft_interference", "housing_interference", "shaft_bore",
+         "housing_outside_diameter", "shaft_material", "housing_material", "tolerance_class", "clearance_class",
+         "inner_ring_temperature", "outer_ring_temperature", "ball_temperature", "shaft_temperature",
+         "housing_temperature")
+
+
+def operating_clearance(bearing, given, speed=0.0):
+    """The operating clearance of ``bearing`` under the mounting inputs ``given`` (field name -> text as
+    typed; other names are left out) as the JSON entries of :func:`operating_bearing`
+    (``operating_clearance_um`` probable, ``_min_um``, ``_max_um``, ``unmounted_clearance_um``,
+    ``mounting``, ``mounting_warnings``); ``{}`` without mounting inputs. A negative clearance (a
+    preload) is reported, not refused: for a model that does not take the clearance (friction)."""
+    given = {k: v for k, v in given.items() if v is not None and k in NAMES}
+    if not given:
+        return {}
+    from ..mounting import chain
+
+    inp = mounted_inputs(bearing, **given, speed=float(speed), require=True)
+    r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
+    return {"operating_clearance_um": float(r.probable.operating_clearance) / _UM,
+            "operating_clearance_min_um": float(r.least.operating_clearance) / _UM,
+            "operating_clearance_max_um": float(r.largest.operating_clearance) / _UM,
+            "unmounted_clearance_um": [inp.unmounted[0] / _UM, inp.unmounted[1] / _UM],
+            "mounting": inp.echo, "mounting_warnings": list(r.warnings)}

@@ -3,8 +3,9 @@
 ``catalog`` (:func:`catalog_document`, which ``catalog show`` prints too) and ``catalog-search``
 (:func:`bearinglab.catalog.search`) are built here from :mod:`bearinglab.catalog` and
 :mod:`bearinglab.tables`. The calculations of ``_NATIVE`` (life, load-distribution, bearing-set,
-clearance, film, temperature, runout, runout-monte-carlo) are computed by ``document(parsed)`` of their
-module of this package, the function their command calls too, and their figures are drawn from that
+frequencies, stand-load, axial-angle, high-speed, friction, clearance, film, temperature, runout,
+runout-monte-carlo) are computed by ``document(parsed)`` of their module of this package, the function
+their command calls too, and their figures are drawn from that
 document. The other calculations run their command's function in this process with
 the request's checked values as options and read the document it prints: the command line builds
 those documents inline, and until each is factored into a function of its own, running the command
@@ -475,19 +476,21 @@ def run(parsed):
 #: the calculations computed by a function of their own (calculation name -> module of this package,
 #: with ``document(parsed)``; the command line calls the same function)
 _NATIVE = {"life": "life", "load-distribution": "load_distribution", "bearing-set": "bearing_set",
-           "clearance": "clearance", "film": "film", "temperature": "temperature", "runout": "runout",
-           "runout-monte-carlo": "runout_monte_carlo"}
+           "frequencies": "frequencies", "stand-load": "stand", "axial-angle": "stand", "high-speed": "high_speed",
+           "friction": "friction_torque", "clearance": "clearance", "film": "film", "temperature": "temperature",
+           "runout": "runout", "runout-monte-carlo": "runout_monte_carlo"}
 
 
 def _native(parsed):
     """The document of a calculation of :data:`_NATIVE`; its errors as RunFailures."""
+    from .._io import json_value
     from ..errors import ConvergenceError
 
     module = importlib.import_module(f".{_NATIVE[parsed.calculation.name]}", __package__)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", RuntimeWarning)  # every result is checked finite
-            return module.document(parsed)
+            return json_value(module.document(parsed))  # NaN as null, numpy as plain numbers
     except RequestError:
         raise
     except ConvergenceError as exc:  # no physical solution is the input's fault (2); else the solver's
@@ -513,6 +516,8 @@ def figure_svg(parsed):
     str
     """
     name = parsed.calculation.name
+    if name == "high-speed":
+        return _high_speed_svg(parsed)
     if name not in _PLOTS:
         return ""
     if name in _NATIVE:  # drawn from the document by the calculation's own figure function
@@ -526,6 +531,25 @@ def figure_svg(parsed):
         if not path.exists():
             return ""
         svg = path.read_text(encoding="utf-8")
+    start = svg.find("<svg")
+    return svg[start:] if start >= 0 else ""
+
+
+def _high_speed_svg(parsed):
+    """The high-speed map drawn from the request's solve (:func:`.high_speed.figure`), as SVG text; ''
+    for fewer than two thrusts or a request that fails."""
+    from ..errors import ConvergenceError
+    from . import high_speed
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)
+            fig, _ = high_speed.figure(high_speed.compute(parsed))
+    except (InputError, ConvergenceError):  # a RequestError too: the document says why
+        return ""
+    out = io.StringIO()
+    fig.savefig(out, format="svg")
+    svg = out.getvalue()
     start = svg.find("<svg")
     return svg[start:] if start >= 0 else ""
 

@@ -292,7 +292,8 @@ _CALCS = (
          _f("drag_loss_factor", "number", "For lubrication oil-bath: V_M read from SKF's drag loss "
             "diagram at H/d_m.", label="Drag loss factor V_M", unit="-", minimum=0, group=_O),
          _f("series", "text", "For model skf: the deep-groove series of SKF's constants, e.g. 62.",
-            label="SKF series", group="friction")),
+            label="SKF series", group="friction"),
+         *MOUNTING),  # issue 23: reported as operating_clearance_um; no friction model depends on it
         combine="broadcast"),
     Calculation(
         "high-speed", ("high-speed",), "Contact angles at speed",

@@ -74,6 +74,7 @@ from . import (
     sweep,
     temperature,
 )
+from ._common import request_message
 from ._console import ascii_spelling, needs_spelling, output_width, setup_streams
 
 __all__ = ["JsonRun", "app", "main", "run", "run_json"]
@@ -281,14 +282,13 @@ def main(argv=None) -> int:
     except typer.Abort:
         print("bearinglab: aborted", file=sys.stderr)
         return 1
-    except RequestError as exc:  # a calculation's input (bearinglab.calculations), named by its option
-        from ._common import request_message
-
-        print(f"bearinglab: error: {request_message(exc)}", file=sys.stderr)
-        return 3 if getattr(exc, "kind", "input") == "convergence" else 2
     except ConvergenceError as exc:  # no physical solution: the input is impossible (2); else the solver (3)
         print(f"bearinglab: error: {exc.summary}", file=sys.stderr)
         return 2 if exc.physical else 3
+    except RequestError as exc:  # a calculation's input (bearinglab.calculations): named as its option
+        print(f"bearinglab: error: {_name_option(request_message(exc), sys.argv[1:] if argv is None else argv)}",
+              file=sys.stderr)
+        return 3 if getattr(exc, "kind", "input") == "convergence" else 2  # a RunFailure that did not converge
     except InputError as exc:
         print(f"bearinglab: error: {_name_option(str(exc), sys.argv[1:] if argv is None else argv)}",
               file=sys.stderr)

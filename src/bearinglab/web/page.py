@@ -296,9 +296,10 @@ def _query(section, values):
         for name in ("oil", "temperature", "viscosity_index", "viscosity_100", "lubrication",
                      "oil_level", "drag_loss_factor"):
             out.pop(name, None)  # the lubricant of SKF's model; the others refuse it
-    if section.key == "film" and str(values.get("temperature") or "").strip() != "auto":
-        for name in ("ambient", "thermal_resistance", "skf_constants"):
-            out.pop(name, None)  # the heat balance's, which the film takes with temperature auto only
+    if section.key in ("film", "life") and str(values.get("temperature") or "").strip() != "auto":
+        for name in ("ambient", "thermal_resistance", "skf_constants") + (("lubrication",) if section.key
+                                                                            == "life" else ()):
+            out.pop(name, None)  # the heat balance's, which film and life take with temperature auto only
     if section.key in ("friction", "temperature") and "radial_load" not in out and (
             _given(values, "fx") or _given(values, "fy")):
         out["radial_load"] = _resultant(values)  # the friction models take F_r = |(F_x, F_y)|
