@@ -2,18 +2,12 @@
 
 ``catalog`` (:func:`catalog_document`, which ``catalog show`` prints too) and ``catalog-search``
 (:func:`bearinglab.catalog.search`) are built here from :mod:`bearinglab.catalog` and
-:mod:`bearinglab.tables`. The calculations of ``_NATIVE`` (life, load-distribution, bearing-set,
-frequencies, stand-load, axial-angle, high-speed, friction, clearance, film, temperature, runout,
-runout-monte-carlo) are computed by ``document(parsed)`` of their module of this package, the function
-their command calls too, and their figures are drawn from that
-document. The other calculations run their command's function in this process with
-the request's checked values as options and read the document it prints: the command line builds
-those documents inline, and until each is factored into a function of its own, running the command
-is what keeps the two identical (``tests/calculations/test_documents.py``). The command's function is
-called with the checked values (no command line is parsed again); figures and posted documents go
-through the whole command line with a private temporary file. Capturing the printed
-document redirects this process's stdout, so a server runs these in worker processes, one request per
-process at a time (:mod:`bearinglab.web.workers`); never in threads of one process.
+:mod:`bearinglab.tables`. Every other calculation (life, load-distribution, bearing-set, frequencies,
+stand-load, axial-angle, high-speed, friction, clearance, film, temperature, runout, runout-monte-carlo)
+is computed by ``document(parsed)`` of its module of this package, the function its command calls too,
+and its figure is drawn from that document: no request runs the command line, and no message of the
+command line is read back (``tests/calculations/test_native*.py`` hold the documents equal to what
+the commands print).
 
 Functions
 ---------
@@ -26,26 +20,16 @@ RunFailure   a run that failed: input (exit 2) or convergence (exit 3), with the
 
 from __future__ import annotations
 
-import contextlib
 import importlib
 import io
 import json
 import re
-import tempfile
-import threading
 import warnings
-from pathlib import Path
 
 from ..errors import InputError
 from .fields import RequestError
 
 __all__ = ["RunFailure", "argv", "catalog_document", "figure_svg", "run"]
-
-# run through the whole command line: runout's command is a group callback that needs click's context
-_VIA_COMMAND_LINE = {"runout", "catalog"}
-_CAPTURE = threading.Lock()  # stdout is process-wide: one captured command at a time in a process
-_ERROR = "bearinglab: error: "
-
 
 class RunFailure(RequestError):
     """A calculation that failed on its input (``kind="input"``) or did not converge
@@ -119,90 +103,6 @@ def _failure(calc, message, kind):
     return RunFailure(parameter, None, template, kind)
 
 
-def _run_command(words):
-    """Run the command line with ``words`` and ``--json`` here; its document, or a RunFailure."""
-    from .. import cli
-
-    out, err = io.StringIO(), io.StringIO()
-    with _CAPTURE, warnings.catch_warnings(), contextlib.redirect_stdout(out), \
-            contextlib.redirect_stderr(err):
-        code = cli.main([*words, "--json"])
-    return code, out.getvalue(), err.getvalue()
-
-
-_DIRECT = {}  # command words -> (callback, option -> parameter name, defaults); built once a process
-
-
-def _direct(words):
-    """The command's function, the python name of each option and the defaults (from click's params)."""
-    if words not in _DIRECT:
-        from .. import cli
-
-        command = cli._click_command()
-        for word in words:
-            command = command.commands[word]
-        names = {o: p.name for p in command.params for o in p.opts if o.startswith("--")}
-        defaults = {p.name: (() if p.multiple and p.default is None else p.default)
-                    for p in command.params}
-        _DIRECT[words] = (command.callback, names, defaults)
-    return _DIRECT[words]
-
-
-def _call_command(parsed):
-    """Call the command's function with the checked values and ``--json``, without parsing a command
-    line: (exit code, stdout, stderr) as :func:`_run_command` gives them. The values the layer has
-    checked (whole numbers, numbers, flags) are passed as such, quantities as the text given."""
-    from .. import cli
-    from ..cli._common import reset_notes
-    from ..errors import ConvergenceError
-
-    calc = parsed.calculation
-    callback, names, defaults = _direct(calc.command)
-    kwargs = dict(defaults, json_out=True)
-    for f in calc.fields:
-        if f.name not in parsed.given:
-            continue
-        value = parsed.values[f.name]
-        name = names[f.cli_option]
-        if f.kind in ("int", "number", "flag"):
-            kwargs[name] = value
-        elif f.many and f.kind == "text":
-            kwargs[name] = list(value)
-        else:
-            kwargs[name] = str(parsed.given[f.name]).strip()
-    out, err = io.StringIO(), io.StringIO()
-    code = 0
-    with _CAPTURE, warnings.catch_warnings(), contextlib.redirect_stdout(out), \
-            contextlib.redirect_stderr(err):
-        warnings.simplefilter("ignore", RuntimeWarning)
-        reset_notes()  # the provenance notes of a previous request in this process
-        try:
-            callback(**kwargs)
-        except ConvergenceError as exc:
-            code = 2 if exc.physical else 3
-            print(f"{_ERROR}{exc.summary}", file=err)
-        except InputError as exc:
-            code = 2
-            print(f"{_ERROR}{cli._name_option(str(exc), argv(parsed))}", file=err)
-    return code, out.getvalue(), err.getvalue()
-
-
-def _with_documents(parsed, action):
-    """Write the posted documents to a temporary directory, run ``action(documents)`` there."""
-    posted = {f.name: parsed.values[f.name] for f in parsed.calculation.fields
-              if f.kind == "document" and f.name in parsed.values}
-    if not posted:
-        return action({})
-    with tempfile.TemporaryDirectory(prefix="bearinglab-") as tmp:
-        paths = {}
-        for name, text in posted.items():
-            doc = _document(name, text)
-            path = Path(tmp) / f"{name}.toml"
-            path.write_text(_toml(doc), encoding="utf-8")
-            paths[name] = path
-        return action(paths)
-
-
 def _document(name, text):
     """A posted JSON or TOML document as a dict; one that refers to a file is refused."""
     import tomllib
@@ -230,62 +130,6 @@ def _document(name, text):
 
     walk(doc, "")
     return doc
-
-
-def _toml(doc):
-    """A dict of tables as TOML text (strings, numbers, booleans, arrays, nested tables)."""
-    lines = []
-
-    def value(v):
-        if isinstance(v, bool):
-            return "true" if v else "false"
-        if isinstance(v, (int, float)):
-            return repr(v)
-        if isinstance(v, str):
-            return json.dumps(v)
-        if isinstance(v, list):
-            return "[" + ", ".join(value(x) for x in v) + "]"
-        if isinstance(v, dict):
-            return "{" + ", ".join(f"{json.dumps(k)} = {value(x)}" for k, x in v.items()) + "}"
-        raise InputError(f"cannot write {v!r} as TOML")
-
-    def table(prefix, node):
-        scalars = {k: v for k, v in node.items() if not isinstance(v, dict)}
-        if prefix and (scalars or not node):
-            lines.append(f"[{prefix}]")
-        for k, v in scalars.items():
-            lines.append(f"{json.dumps(k)} = {value(v)}")
-        for k, v in node.items():
-            if isinstance(v, dict):
-                table(f"{prefix}.{json.dumps(k)}" if prefix else json.dumps(k), v)
-
-    table("", doc)
-    return "\n".join(lines) + "\n"
-
-
-def _command_document(parsed, extra=()):
-    def action(paths):
-        if not paths and not extra and parsed.calculation.name not in _VIA_COMMAND_LINE:
-            code, out, err = _call_command(parsed)
-        else:
-            code, out, err = _run_command([*argv(parsed, documents=paths), *extra])
-        if code == 0:
-            doc = json.loads(out) if out.strip() else None
-            return _posted(doc, {str(p) for p in paths.values()})
-        errors = [line for line in err.splitlines() if line.startswith(_ERROR)]
-        message = errors[-1][len(_ERROR):] if errors else (err.strip().splitlines() or ["failed"])[-1]
-        for path in paths.values():  # the temporary file is the user's posted document
-            message = message.replace(str(path), "the posted document")
-        raise _failure(parsed.calculation, message, "convergence" if code == 3 else "input")
-
-    return _with_documents(parsed, action)
-
-
-def _posted(doc, paths):
-    """The document with the temporary file of a posted document named as what it is."""
-    if not paths or not isinstance(doc, dict):
-        return doc
-    return {k: ("(posted document)" if isinstance(v, str) and v in paths else v) for k, v in doc.items()}
 
 
 def _clearance_range(b, choice, given):
@@ -468,9 +312,7 @@ def run(parsed):
                              "{name}: " + message.removeprefix("bearing: ")) from None
     if name == "catalog-search":
         return _search_document(parsed)
-    if name in _NATIVE:
-        return _native(parsed)
-    return _command_document(parsed)
+    return _native(parsed)  # every other calculation has a document function of its own
 
 
 #: the calculations computed by a function of their own (calculation name -> module of this package,
@@ -520,19 +362,7 @@ def figure_svg(parsed):
         return _high_speed_svg(parsed)
     if name not in _PLOTS:
         return ""
-    if name in _NATIVE:  # drawn from the document by the calculation's own figure function
-        return _native_figure(parsed)
-    with tempfile.TemporaryDirectory(prefix="bearinglab-") as tmp:
-        path = Path(tmp) / "figure.svg"
-        try:
-            _command_document(parsed, extra=(f"--plot={path}",))
-        except RequestError:
-            return ""
-        if not path.exists():
-            return ""
-        svg = path.read_text(encoding="utf-8")
-    start = svg.find("<svg")
-    return svg[start:] if start >= 0 else ""
+    return _native_figure(parsed)  # drawn from the document by the calculation's own figure function
 
 
 def _high_speed_svg(parsed):
