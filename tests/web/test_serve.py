@@ -111,6 +111,24 @@ def test_the_command_line_does_not_import_the_web_framework():
     assert out.strip() == "False"
 
 
+def test_the_web_does_not_import_the_command_line():
+    # issue 22: the web answers through the typed layer; neither the server nor a worker's warm-up and
+    # calculations (life, the high-speed figure, a posted runout error set) load bearinglab.cli
+    code = (
+        "import importlib, sys\n"
+        "import bearinglab.web.app, bearinglab.web.api, bearinglab.web.page, bearinglab.web.workers as w\n"
+        "from bearinglab import calculations\n"
+        "for m in w._CALCULATION_MODULES: importlib.import_module(m)\n"
+        "calculations.run(calculations.parse('life', {'bearing': '6205-2RS', 'radial_load': '2 kN', "
+        "'speed': '3000 rpm'}))\n"
+        "calculations.figure_svg(calculations.parse('high-speed', {'bearing': 'B218', "
+        "'axial_load': '10 kN, 20 kN', 'speed': '6000 rpm'}))\n"
+        "print(sorted(m for m in sys.modules if m == 'bearinglab.cli' or m.startswith('bearinglab.cli.')))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "[]"
+
+
 def test_run_json_gives_the_document_the_command_prints(capsys):
     argv = ["axial-angle", "--bearing", "4-1006095", "--axial-load", "2 kgf"]
     run = cli.run_json(argv)

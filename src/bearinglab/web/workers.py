@@ -18,6 +18,7 @@ MEMORY_BOUND_MB  the peak memory of a worker after which it is replaced
 from __future__ import annotations
 
 import asyncio
+import importlib
 import multiprocessing
 import os
 import resource
@@ -37,6 +38,16 @@ class Stopped(Exception):
         super().__init__(message)
 
 
+def _calculation_modules():
+    """The modules of the calculations' document functions (no command line: the web never runs it)."""
+    from ..calculations import documents
+
+    return tuple(sorted({f"bearinglab.calculations.{m}" for m in documents._NATIVE.values()}))
+
+
+_CALCULATION_MODULES = _calculation_modules()
+
+
 def _serve(conn, memory_bound_mb=MEMORY_BOUND_MB):
     """A worker's loop: receive (what, name, given, limit), answer ('ok', value) or ('error', ...)."""
     import warnings
@@ -46,7 +57,8 @@ def _serve(conn, memory_bound_mb=MEMORY_BOUND_MB):
     from ..units import parse_quantity
 
     parse_quantity("1 N", "force", "warm-up")  # load the unit registry before the first request
-    from .. import cli  # noqa: F401 -- the commands, imported before the first request
+    for module in _CALCULATION_MODULES:  # the calculations, imported before the first request
+        importlib.import_module(module)
 
     warnings.simplefilter("ignore")
     while True:
@@ -83,7 +95,7 @@ def _context():
     """Workers fork from a clean server process that has imported the calculations once (so a new
     worker starts in milliseconds, and no thread or lock of the web server is copied into it)."""
     ctx = multiprocessing.get_context("forkserver")
-    ctx.set_forkserver_preload(["bearinglab.calculations", "bearinglab.cli", "bearinglab.units",
+    ctx.set_forkserver_preload(["bearinglab.calculations", *_CALCULATION_MODULES, "bearinglab.units",
                                 "bearinglab.quasistatic", "bearinglab.plots.high_speed",
                                 "bearinglab.plots.load_distribution", "matplotlib.figure",
                                 "matplotlib.backends.backend_svg", "numpy", "scipy", "pint"])
