@@ -542,8 +542,9 @@ def value_rows(document):
     """
     sc = scales(document)
     rows = []
+    chained = isinstance(document.get("chain"), dict)
     for key, value in document.items():
-        if key in _NOT_ROWS or isinstance(value, dict):
+        if key in _NOT_ROWS or isinstance(value, dict) or chained and key in _IN_CHAIN:
             continue
         label, unit = quantity(key)
         if isinstance(value, list):
@@ -565,6 +566,14 @@ def value_rows(document):
 
 
 #: The clearance chain: its stages in order, as (key, label, unit); then its columns.
+#: the scalars of a ``clearance`` document that its chain table shows (as least / probable / largest):
+#: not repeated as rows, so the printed report stays on two pages
+_IN_CHAIN = frozenset(f"{k}_um" for k in (
+    "interference_inner_min", "interference_inner_max", "interference_outer_min", "interference_outer_max",
+    "fit_reduction_min", "fit_reduction_max", "thermal_reduction", "centrifugal_reduction",
+    "unmounted_clearance_min", "unmounted_clearance_max", "operating_clearance_min",
+    "operating_clearance_max", "operating_clearance_probable")) | {"fit_pressure_inner_MPa",
+                                                                   "fit_pressure_outer_MPa"}
 CHAIN = (
     ("unmounted_clearance", "unmounted clearance", "µm"),
     ("inner_interference", "inner interference", "µm"),
