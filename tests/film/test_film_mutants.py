@@ -1,0 +1,77 @@
+"""Tests written for the survivors of the seventh mutation run (TESTING.md) on bearinglab.film.ehl: the
+parameter names and units of the input checks, the sliding term and the clip of Gupta's inlet heating
+factor, and the lower limit of Wooster's pressure-viscosity estimate.
+
+The references are the printed formulas (Gupta et al. 1992 as quoted by Harris and Kotzalas; Wooster's
+alpha = (0.6 + 0.965 log10 eta[cP]) 1e-8 m^2/N of Stachowiak and Batchelor), evaluated here in ``math``.
+"""
+
+import math
+import re
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from bearinglab.errors import InputError
+from bearinglab.film import ehl
+
+# the arguments of thermal_reduction_factor in order, all valid
+_TRF = {"entrainment_velocity": 20.0, "dynamic_viscosity": 0.01, "temperature_viscosity_coefficient": 0.03,
+            "thermal_conductivity": 0.14, "max_pressure": 2e9, "reduced_modulus": 2.3e11}
+
+
+def _gupta(u, eta, beta, k, p, ep, s):
+    ell = beta * eta * u**2 / k
+    return (1 - 13.2 * (p / ep) * ell**0.42) / (1 + 0.213 * (1 + 2.23 * s**0.83) * ell**0.64)
+
+
+@pytest.mark.parametrize("name, rule, unit", [
+    ("entrainment_velocity", ">= 0", "m/s"),
+    ("dynamic_viscosity", "> 0", "Pa s"),
+    ("temperature_viscosity_coefficient", "> 0", "1/K"),
+    ("thermal_conductivity", "> 0", "W/(m K)"),
+    ("max_pressure", ">= 0", "Pa"),
+    ("reduced_modulus", "> 0", "Pa"),
+    ("slide_roll_ratio", ">= 0", "-"),
+])
+def test_thermal_factor_checks_name_the_parameter_and_its_unit(name, rule, unit):
+    kw = dict(_TRF, slide_roll_ratio=0.0)
+    kw[name] = -1.0
+    with pytest.raises(InputError, match="^" + re.escape(f"{name} must be {rule} [{unit}], got -1.0")):
+        ehl.thermal_reduction_factor(**kw)
+
+
+def test_pressure_viscosity_check_names_its_unit():
+    with pytest.raises(InputError, match=r"^dynamic_viscosity must be > 0 \[Pa s\], got -1.0"):
+        ehl.pressure_viscosity_coefficient(-1.0)
+
+
+def test_pressure_viscosity_estimate_holds_down_to_one_centipoise():
+    # 1 mPa s is the bottom of the estimate's range, not below it: log10(1 cP) = 0, alpha = 0.6e-8 m^2/N
+    assert ehl.pressure_viscosity_coefficient(1e-3) == pytest.approx(0.6e-8, rel=1e-14)
+
+
+@pytest.mark.parametrize("s", [0.1, 0.5, 2.0])
+def test_sliding_term_of_the_thermal_factor_by_hand(s):
+    # s = 1 would hide the exponent 0.83 (1**0.83 = 1); these ratios do not
+    ref = _gupta(20.0, 0.01, 0.03, 0.14, 2e9, 2.3e11, s)
+    assert 0 < ref < 1
+    assert ehl.thermal_reduction_factor(**_TRF, slide_roll_ratio=s) == pytest.approx(ref, rel=1e-14)
+
+
+def test_thermal_factor_is_clipped_at_zero_where_the_fit_goes_negative():
+    # a heavy, fast, viscous contact: 13.2 (p/E') L^0.42 > 1, the formula's numerator is negative
+    kw = {"entrainment_velocity": 100.0, "dynamic_viscosity": 0.1, "temperature_viscosity_coefficient": 0.03,
+              "thermal_conductivity": 0.14, "max_pressure": 5e9, "reduced_modulus": 2.3e11}
+    assert _gupta(100.0, 0.1, 0.03, 0.14, 5e9, 2.3e11, 0.0) < 0
+    assert ehl.thermal_reduction_factor(**kw) == 0.0
+
+
+@given(u=st.floats(0.0, 200.0), eta=st.floats(1e-4, 1.0), p=st.floats(0.0, 5e9), s=st.floats(0.0, 2.0))
+def test_thermal_factor_stays_in_zero_one(u, eta, p, s):
+    phi = ehl.thermal_reduction_factor(u, eta, 0.03, 0.14, p, 2.3e11, slide_roll_ratio=s)
+    ref = _gupta(u, eta, 0.03, 0.14, p, 2.3e11, s)
+    assert 0.0 <= phi <= 1.0
+    assert phi == pytest.approx(min(max(ref, 0.0), 1.0), rel=1e-12, abs=1e-15)
+    assert math.isfinite(phi)
