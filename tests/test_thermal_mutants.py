@@ -159,3 +159,12 @@ def test_reference_speed_load_is_005_of_the_bearings_own_c0_else_iso_76():
     c0 = bearing_ratings(bare).static_load_rating
     assert c0 != pytest.approx(b.static_load_rating, rel=1e-3)  # the catalogue and ISO 76 differ here
     assert thermal.thermal_reference_speed(bare).radial_load == pytest.approx(0.05 * c0, rel=1e-15)
+
+
+def test_reference_speed_passes_friction_options_and_says_the_drag_is_left_out():
+    b = catalog.get("6205")
+    plain = thermal.thermal_reference_speed(b)
+    rough = thermal.thermal_reference_speed(b, sliding_friction_coefficient=0.1)
+    assert rough.speed < 0.95 * plain.speed  # more friction power at every speed: the balance comes earlier
+    assert ("thermal reference speed: the oil bath's drag moment is left out (no drag loss factor V_M given), "
+            "so the speed is on the high side") in plain.warnings
