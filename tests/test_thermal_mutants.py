@@ -37,6 +37,14 @@ def _msg(name, rule, unit, got="-1.0"):
     (lambda: thermal.oil_flow_conductance(1e-5, 870.0, -1.0), "specific_heat", "> 0", "J/(kg K)"),
     (lambda: thermal.ring_temperatures(-1.0), "bearing_temperature", "> 0", "K"),
     (lambda: thermal.clearance_conditions(343.15, speed=-1.0), "speed", ">= 0", "rad/s"),
+    (lambda: thermal.reference_surface(-1.0, 0.052, 0.015), "bore", "> 0", "m"),
+    (lambda: thermal.reference_surface(0.025, -1.0, 0.015), "outside_diameter", "> 0", "m"),
+    (lambda: thermal.reference_surface(0.025, 0.052, -1.0), "width", "> 0", "m"),
+    (lambda: thermal.reference_heat_flow_density(-1.0), "reference_surface", "> 0", "m^2"),
+    (lambda: thermal.thermal_balance(B, 1000.0, 0.0, 600.0, 293.15, NU40, NU100, conductance=1.0,
+                                     maximum_temperature=-1.0), "maximum_temperature", "> 0", "K"),
+    (lambda: thermal.thermal_reference_speed(catalog.get("6205"), static_load_rating=-1.0), "static_load_rating",
+     "> 0", "N"),
 ])
 def test_checks_name_the_parameter_and_its_unit(call, name, rule, unit):
     with pytest.raises(InputError, match=_msg(name, rule, unit)):
@@ -104,11 +112,11 @@ def test_runaway_message_counts_the_cases_and_names_the_default_limit():
 
 def test_oil_flow_decides_runaway_by_its_own_inlet_temperature():
     # no housing path, only an oil flow entering at ambient: P_d(T_max) = G_oil (T_max - T_in).
-    # P_f at 150 degC lies between G_oil (150 - 20) K and G_oil (150 + 20 + 2 * 273.15) K here,
-    # so only the right sign of T_in gives runaway.
+    # P_f at 150 degC (38.4 W by the SKF model) lies between G_oil (150 - 20) K = 13 W and
+    # G_oil (423.15 + 293.15) K = 71.6 W for G_oil = 0.1 W/K, so only the right sign of T_in gives runaway.
     w = 20000 * RPM
     hot = thermal.thermal_balance(B, 1000.0, 0.0, w, 293.15, NU40, NU100, conductance=0.0,
-                                  oil_flow_conductance=0.01, maximum_temperature=423.15)
+                                  oil_flow_conductance=0.1, maximum_temperature=423.15)
     assert not hot.steady
     cool = thermal.thermal_balance(B, 1000.0, 0.0, w, 293.15, NU40, NU100, conductance=0.0,
                                    oil_flow_conductance=1.0, maximum_temperature=423.15)

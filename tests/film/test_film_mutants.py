@@ -75,3 +75,21 @@ def test_thermal_factor_stays_in_zero_one(u, eta, p, s):
     assert 0.0 <= phi <= 1.0
     assert phi == pytest.approx(min(max(ref, 0.0), 1.0), rel=1e-12, abs=1e-15)
     assert math.isfinite(phi)
+
+
+@pytest.mark.parametrize("call, name", [
+    (lambda: ehl.contact_radii(-1.0, 0.065, 0.52, 0.0, race="inner"), "ball_diameter"),
+    (lambda: ehl.contact_radii(0.0127, -1.0, 0.52, 0.0, race="inner"), "pitch_diameter"),
+    (lambda: ehl.ellipticity(-1.0, 0.1), "rx"),
+    (lambda: ehl.ellipticity(0.005, -1.0), "ry"),
+])
+def test_geometry_checks_name_the_parameter_in_metres(call, name):
+    with pytest.raises(InputError, match="^" + re.escape(f"{name} must be > 0 [m], got -1.0")):
+        call()
+
+
+def test_equal_radii_are_a_circular_contact_and_ry_below_rx_is_refused():
+    # R_y = R_x (equal principal curvature sums): F = 0, the contact is a circle, k = 1
+    assert ehl.ellipticity(0.005, 0.005) == pytest.approx(1.0, abs=1e-9)
+    with pytest.raises(InputError, match=r"^ry must be >= rx \[m\] \(the x axis is the rolling direction"):
+        ehl.ellipticity(0.005, 0.004)
