@@ -13,7 +13,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from bearinglab.errors import InputError
+from bearinglab.errors import InputError, ValidityWarning
 from bearinglab.film import ehl
 
 # the arguments of thermal_reduction_factor in order, all valid
@@ -93,3 +93,69 @@ def test_equal_radii_are_a_circular_contact_and_ry_below_rx_is_refused():
     assert ehl.ellipticity(0.005, 0.005) == pytest.approx(1.0, abs=1e-9)
     with pytest.raises(InputError, match=r"^ry must be >= rx \[m\] \(the x axis is the rolling direction"):
         ehl.ellipticity(0.005, 0.004)
+
+
+@pytest.mark.parametrize("name, rule, unit", [
+    ("load", ">= 0", "N"), ("entrainment_velocity", ">= 0", "m/s"), ("rx", "> 0", "m"),
+    ("dynamic_viscosity", "> 0", "Pa s"), ("pressure_viscosity_coefficient", "> 0", "1/Pa"),
+    ("reduced_modulus", "> 0", "Pa"),
+])
+def test_dimensionless_group_checks_name_the_parameter_and_its_unit(name, rule, unit):
+    kw = {"load": 1000.0, "entrainment_velocity": 10.0, "rx": 5e-3, "dynamic_viscosity": 0.04,
+          "pressure_viscosity_coefficient": 2.3e-8, "reduced_modulus": 2.2e11}
+    kw[name] = -1.0
+    with pytest.raises(InputError, match="^" + re.escape(f"{name} must be {rule} [{unit}], got -1.0")):
+        ehl.dimensionless_groups(**kw)
+    with pytest.raises(InputError, match="^" + re.escape(f"{name} must be {rule} [{unit}], got -1.0")):
+        ehl.hamrock_dowson(ellipticity=2.0, **kw)
+
+
+def test_ellipticity_and_conformity_checks_name_their_unit():
+    with pytest.raises(InputError, match=r"^ellipticity must be > 0 \[-\], got -1.0"):
+        ehl.hamrock_dowson(1000.0, 10.0, 5e-3, -1.0, 0.04, 2.3e-8, 2.2e11)
+    with pytest.raises(InputError, match=r"^conformity must be > 0 \[-\], got -1.0"):
+        ehl.contact_radii(0.0127, 0.065, -1.0, 0.0, race="inner")
+
+
+@pytest.mark.parametrize("dm", [0.0127, 0.010])
+def test_pitch_diameter_not_above_the_ball_is_refused(dm):
+    with pytest.raises(InputError, match=r"^pitch_diameter must be > ball_diameter \[m\]$"):
+        ehl.contact_radii(0.0127, dm, 0.52, 0.0, race="inner")
+
+
+@pytest.mark.parametrize("race, sign", [("inner", -1), ("outer", 1)])
+def test_radius_along_rolling_with_a_contact_angle(race, sign):
+    # Hamrock et al. ch. 24: R_x = D (d_m -/+ D cos alpha) / (2 d_m), here at alpha = 40 deg
+    d, dm, a = 12.7e-3, 65e-3, math.radians(40.0)
+    ref = d * (dm + sign * d * math.cos(a)) / (2 * dm)
+    assert ehl.contact_radii(d, dm, 0.52, a, race=race).rx == pytest.approx(ref, rel=1e-14)
+
+
+@pytest.mark.parametrize("name, args", [
+    ("roughness_ball", (1e-6, -1.0, 1e-7)), ("roughness_race", (1e-6, 1e-7, -1.0)),
+])
+def test_roughness_checks_name_the_parameter_in_metres(name, args):
+    with pytest.raises(InputError, match="^" + re.escape(f"{name} must be >= 0 [m], got -1.0")):
+        ehl.film_parameter(*args)
+
+
+def test_zero_roughness_message_is_worded():
+    with pytest.raises(InputError, match=r"^roughness_ball and roughness_race must not both be 0 \[m\] "
+                                         r"\(Lambda would be infinite\)$"):
+        ehl.film_parameter(1e-6, 0.0, 0.0)
+
+
+def test_ellipticity_eight_is_inside_the_fit_and_the_warning_points_at_the_caller():
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ehl.hamrock_dowson(1000.0, 10.0, 5e-3, 8.0, 0.04, 2.3e-8, 2.2e11)  # k = 8 is the fit's own bound
+    with pytest.warns(ValidityWarning, match=r"ellipticity k = 9 is beyond the k <= 8") as rec:
+        ehl.hamrock_dowson(1000.0, 10.0, 5e-3, 9.0, 0.04, 2.3e-8, 2.2e11)
+    assert rec[0].filename == __file__  # stacklevel=2: the user's line, not ehl.py
+
+
+def test_scalar_regime_is_a_plain_str():
+    assert type(ehl.lubrication_regime(2.0)) is str
+    assert type(ehl.lubrication_regime(float("nan"))) is str
