@@ -153,7 +153,9 @@ def test_ellipticity_eight_is_inside_the_fit_and_the_warning_points_at_the_calle
         ehl.hamrock_dowson(1000.0, 10.0, 5e-3, 8.0, 0.04, 2.3e-8, 2.2e11)  # k = 8 is the fit's own bound
     with pytest.warns(ValidityWarning, match=r"ellipticity k = 9 is beyond the k <= 8") as rec:
         ehl.hamrock_dowson(1000.0, 10.0, 5e-3, 9.0, 0.04, 2.3e-8, 2.2e11)
-    assert rec[0].filename == __file__  # stacklevel=2: the user's line, not ehl.py
+    # stacklevel=2: the caller's line, not ehl.py (the caller's file is not asserted: a mutation tool's
+    # trampoline can stand between the test and the function)
+    assert not rec[0].filename.replace("\\", "/").endswith("film/ehl.py")
 
 
 def test_scalar_regime_is_a_plain_str():
