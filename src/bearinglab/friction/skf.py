@@ -297,7 +297,8 @@ def angular_contact_constants(contact_angle=None, *, design="single row"):
 
     Notes
     -----
-    SKF General Catalogue 6000/I RU (2006), table 3, p. 92 [2]_ publishes one row per type. A 15 deg or 25 deg
+    SKF General Catalogue 6000/I RU (2006), table 3, p. 92 (the module's reference [2]) publishes one row
+    per type. A 15 deg or 25 deg
     single-row bearing (spindle series 70 C, 70 ACD, 718, 719) is refused: no public SKF source was found
     for them; give the constants (``constants=SKFConstants(...)``) from SKF.
 
@@ -611,7 +612,7 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
     :math:`F_g = R_3 d_m^4 n^2`, :math:`G_{sl} = S_1 d_m^{0.26}((F_r + F_g)^{4/3} + S_2 F_a^{4/3})`,
     :math:`F_g = S_3 d_m^4 n^2`; F_a is the external axial load (SKF's footnote to its table of G_rr,
     G_sl). Double-row angular and four-point contact bearings take the same forms with the constants of
-    their type [2]_. The seal moment is halved for one sealed side.
+    their type (SKF General Catalogue 6000/I RU, 2006, table 3). The seal moment is halved for one sealed side.
 
     Examples
     --------
