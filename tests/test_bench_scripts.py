@@ -113,6 +113,9 @@ def test_cli_help_times_the_help_and_prints_a_result_line(load_bench, capsys):
     line = [x for x in out.splitlines() if x.startswith("RESULT cli_help ")]
     assert len(line) == 1 and "seconds=" in line[0] and "within_goal=" in line[0]
     assert "bearinglab high-speed --help" in out and "0.3 s goal" in out
+    catalog = [x for x in out.splitlines() if x.startswith("RESULT catalog_startup ")]
+    assert len(catalog) == 1 and "baseline_label=goal_0.5_s" in catalog[0] and "within_goal=" in catalog[0]
+    assert "bearinglab catalog show 6208-2RS1/C3" in out and "0.5 s goal" in out
 
 
 def test_high_speed_fair_baseline_and_batched_agree_case_by_case(load_bench):

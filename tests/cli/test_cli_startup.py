@@ -94,3 +94,47 @@ def test_help_texts_spell_out_the_library_names():
 
     assert life_cli._CONTAMINATION_CLASSES == tuple(ratings.CONTAMINATION_CLASSES)
     assert runout_cli._METRICS == tuple(runout.METRICS)
+
+
+def _through_the_whole_app(words):
+    """What ``bearinglab WORDS`` prints (stdout, stderr and exit code) through the application built with
+    every command, as the root's own help builds it."""
+    import contextlib
+    import io
+
+    from bearinglab.cli import _USAGE_ERRORS
+
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            code = _click_command().main(args=words, prog_name="bearinglab", standalone_mode=False)
+        except _USAGE_ERRORS as exc:
+            print(f"bearinglab: error: {exc.format_message()}", file=sys.stderr)
+            code = 2
+    return out.getvalue(), err.getvalue(), code or 0
+
+
+@pytest.mark.parametrize("words", [[*w, "--help"] for w in _all_commands() if w]
+                         + [["life", "--no-such-option"], ["catalog", "shw"], ["high-speed", "-F"]],
+                         ids=" ".join)
+def test_a_command_built_alone_reads_as_in_the_whole_app(capsys, words):
+    """Issue 21, item 8: a run builds only the command it names (``_click_command(name)``); its help, usage
+    lines and usage errors are those of the whole application."""
+    from bearinglab.cli import _command_named
+
+    assert _command_named(words) == words[0]
+    alone = _click_command(words[0])
+    assert list(alone.commands) == [words[0]]
+    code = main(words)
+    got = capsys.readouterr()
+    assert (got.out, got.err, code) == _through_the_whole_app(words)
+
+
+@pytest.mark.parametrize(("words", "named"), [
+    (["--help"], None), (["--version"], None), (["-h", "life"], None), (["lif"], None), ([], None),
+    (["catalog", "show", "6208"], "catalog"), (["life", "--help"], "life"),
+])
+def test_only_a_first_word_that_names_a_command_builds_it_alone(words, named):
+    from bearinglab.cli import _command_named
+
+    assert _command_named(words) == named
