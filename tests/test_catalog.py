@@ -439,7 +439,7 @@ def test_new_keys_are_checked(tmp_path, entry, message):
 
 
 @pytest.mark.parametrize(("typed", "hint"), [("b21", "did you mean B218"),
-                                             ("7218", "did you mean 7218 BE or 7218 A or 7218 B or 7218 C?")])
+                                             ("7218", "did you mean 7218 BE or 7218 A or 7218 B or 7218 C or 7218 ACD?")])
 def test_unknown_name_suggests_the_close_names(typed, hint):
     with pytest.raises(CatalogError, match=re.escape(hint)):
         catalog.get(typed)

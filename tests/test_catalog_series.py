@@ -205,6 +205,19 @@ def test_spindle_series_without_a_public_rating_are_computed_and_say_so():
     assert catalog.get("7010 CD").designation == "7010 CD" and "NSK 7010 C" in catalog.get("7010 CD").source
 
 
+def test_72_acd_takes_the_iso_15_dimensions_of_the_62_row_and_computes_its_ratings():
+    # 25 deg of the 02 dimension series: d, D, B, r are those of the deep groove 62 bearing of the bore
+    # (ISO 15), and no public source in the catalog's gives its ratings
+    for size in ("7200", "7208", "7220", "7240"):
+        b, dg = catalog.get(f"{size} ACD"), catalog.get(f"62{size[2:]}")
+        assert (b.bore, b.outside_diameter, b.width) == (dg.bore, dg.outside_diameter, dg.width)
+        assert math.degrees(b.contact_angle) == pytest.approx(25.0) and b.type == "angular"
+        assert b.dynamic_load_rating is None and "ISO 281" in b.sources["dynamic_load_rating"]
+    assert catalog.get("7210 ACD/P4A").tolerance_class == "P4A"
+    assert catalog.get("7208 AC").designation == "7208 AC"
+    assert math.degrees(catalog.get("7208 AC").contact_angle) == pytest.approx(25.0)
+
+
 # --------------------------------------------------------------------- search
 def test_search_by_bore_and_type():
     hits = catalog.search(bore=0.040, type="deep-groove")

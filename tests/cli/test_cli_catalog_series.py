@@ -93,7 +93,7 @@ def test_search_command(capsys, monkeypatch):
     assert max(len(line) for line in out.splitlines()) <= 80
     code = main(["catalog", "search", "--bore", "40", "--series", "72", "--json"])
     doc = json.loads(capsys.readouterr().out)
-    assert code == 0 and [b["name"] for b in doc["bearings"]] == ["7208 BE", "7208 A", "7208 B", "7208 C"]
+    assert code == 0 and [b["name"] for b in doc["bearings"]] == ["7208 BE", "7208 A", "7208 B", "7208 C", "7208 ACD"]
 
 
 def test_search_needs_a_criterion(capsys):
