@@ -576,7 +576,7 @@ def search(*, bore=None, outside_diameter=None, width=None, type=None, series=No
     Examples
     --------
     >>> [r["name"] for r in search(bore=0.040, outside_diameter=0.080)]
-    ['6208', '7208 BE', '7208 A', '7208 B', '7208 C']
+    ['6208', '7208 BE', '7208 A', '7208 B', '7208 C', '7208 ACD']
     """
     from . import _series
 
