@@ -1,6 +1,6 @@
 """Benchmark: ISO 281 rating life of 10^5 load cases in one call vs an engineer's per-case loop.
 
-The batched path is :func:`bearinglab.ratings.rating_life` on the 6205-2RS of the catalog (catalog C,
+The batched path is :func:`bearinglab.life.rating_life` on the 6205-2RS of the catalog (catalog C,
 C0, Cu; f0 from its ball set) for 10^5 random (Fr, Fa, speed) cases: P from the X, Y, e table, L10,
 kappa, a_ISO, L_nm and s0. The baseline computes the same quantities case by case with plain ``math``
 on Python floats (``bisect`` for the table), as an engineer's script would. Both are timed best-of-k on
@@ -17,7 +17,7 @@ import warnings
 import numpy as np
 from _timing import best_of
 
-from bearinglab import catalog, ratings
+from bearinglab import catalog, life, ratings
 
 N_BATCH = 100_000
 N_BASELINE = 20_000
@@ -41,7 +41,7 @@ def cases(n, seed=0):
 def batched(bearing, loads, speeds):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ratings.RatingWarning)  # no load distribution; low s0
-        r = ratings.rating_life(bearing, loads, speeds, kinematic_viscosity=NU, contamination=EC,
+        r = life.rating_life(bearing, loads, speeds, kinematic_viscosity=NU, contamination=EC,
                                 reliability=RELIABILITY)
     return np.stack([r.equivalent_dynamic_load, r.basic_rating_life, r.modified_rating_life,
                      r.static_safety_factor])

@@ -21,8 +21,9 @@ from pathlib import Path
 
 import numpy as np
 
-from bearinglab import catalog, friction, ratings, tables
+from bearinglab import catalog, friction, tables
 from bearinglab.bearing import BallBearing, Material
+from bearinglab.life import rating_life
 from bearinglab.quasistatic import combined, sets
 from bearinglab.units import RPM
 
@@ -50,7 +51,7 @@ def masta_cases(out):
         r = combined.combined_analysis(b, loads)
         axial = loads[2] != 0
         delta = abs(r.displacement[2] if axial else math.hypot(r.displacement[0], r.displacement[1])) * 1e6
-        life = ratings.rating_life(b, loads, 1000 * RPM, kinematic_viscosity=20e-6, load_distribution=r)
+        life = rating_life(b, loads, 1000 * RPM, kinematic_viscosity=20e-6, load_distribution=r)
         l10r = float(life.reference_rating_life) / 1e6
         rows.append((case, clearance * 1e6, "delta_z" if axial else "delta_r", delta, delta_pub,
                      float(r.max_ball_load), l10r, life_pub))

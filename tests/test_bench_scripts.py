@@ -53,7 +53,7 @@ def test_axial_angle_baseline_takes_the_library_steps_case_by_case(load_bench):
     assert_allclose([x[0] for x in newton], stand.operating_contact_angle(fa, cs, a0, ftol_percent=0.0,
                                                                            engine="numpy"), rtol=0, atol=xtol)
     if kernels.available():
-        from bearinglab import _stand_compiled
+        from bearinglab.stand import _compiled as _stand_compiled
 
         alpha, iterations, residual, n_bad = _stand_compiled.solve(fa, cs, a0, fa.size, xtol, 0.0, max_iter)
         assert np.all(residual == 0.0)

@@ -333,7 +333,7 @@ def _angle_by_bisection(t, a0):
 def test_the_start_is_the_root_of_eq1_so_it_passes_the_load_test(log_t, a0):
     t = 10.0**log_t
     ref = _angle_by_bisection(t, a0)
-    y = stand._gap_start(np.array(t), math.cos(a0), math.sin(a0), 1)
+    y = stand.method._gap_start(np.array(t), math.cos(a0), math.sin(a0), 1)
     # the polynomial start is the root of eq. (1) squared: to 1e-12 rad (brentq's own error is ~1e-15)
     assert abs(math.acos(math.cos(a0) - y[0]) - ref) < 1e-12
     # ... so it passes the load test of section 6.3 without a Newton step, and is the same root
@@ -349,12 +349,12 @@ def test_the_start_is_above_the_root_and_halley_settles_in_a_few_steps(log_t, a0
     t = 10.0**log_t
     c, s = math.cos(a0), math.sin(a0)
 
-    def poly(y):  # eq. (1) squared in the gap y, written out independently of stand._gap_step
+    def poly(y):  # eq. (1) squared in the gap y, written out independently of stand.method._gap_step
         return y**3 * (1.0 - (c - y) ** 2) - t * t * (c - y) ** 3
 
-    y0 = stand._gap_start(np.array(t), c, s, 1, max_iter=0)[0]  # the start itself, no step taken
+    y0 = stand.method._gap_start(np.array(t), c, s, 1, max_iter=0)[0]  # the start itself, no step taken
     assert 0.0 < y0 <= c and poly(y0) >= 0.0  # P increases through its root: the start is above it
-    y = stand._gap_start(np.array(t), c, s, 1, max_iter=12)[0]  # cubic convergence: a few steps suffice
+    y = stand.method._gap_start(np.array(t), c, s, 1, max_iter=12)[0]  # cubic convergence: a few steps suffice
     assert abs(math.acos(c - y) - _angle_by_bisection(t, a0)) < 1e-12
 
 

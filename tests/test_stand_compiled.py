@@ -1,5 +1,5 @@
 """The compiled engine of the test-stand solve (``stand.operating_contact_angle(engine=...)``,
-``bearinglab._stand_compiled``): the numpy path's angles and convergence case by case, the same results for
+``bearinglab.stand._compiled``): the numpy path's angles and convergence case by case, the same results for
 any batch, the engine choice of ``engine="auto"``, and the numpy fallback without numba."""
 
 import importlib.util
@@ -65,7 +65,7 @@ def test_compiled_engine_gives_the_numpy_angles_where_the_newton_of_section_6_3_
 
 @needs_numba
 def test_compiled_newton_flags_the_same_cases_as_the_numpy_newton():
-    from bearinglab import _stand_compiled
+    from bearinglab.stand import _compiled as _stand_compiled
 
     fa, cs, a0 = _cases(700, seed=2)
     root = stand.operating_contact_angle(fa, cs, a0, engine="numpy")
@@ -74,7 +74,7 @@ def test_compiled_newton_flags_the_same_cases_as_the_numpy_newton():
     # step by ~1e-16 of itself, so no case sits within it of the threshold), unlike a tolerance at 1e-16.
     start = 0.5 * (a0 + root)
     for max_iter in (2, 3):
-        ref_alpha, ref_ok, ref_res = stand._section_newton(fa, cs, a0, np.cos(a0), start, 1e-8, 0.0, max_iter)
+        ref_alpha, ref_ok, ref_res = stand.method._section_newton(fa, cs, a0, np.cos(a0), start, 1e-8, 0.0, max_iter)
         one = [_stand_compiled._section_newton(*x, math.cos(x[2]), s, 1e-8, 0.0, max_iter)
                for *x, s in zip(fa, cs, a0, start)]
         alpha, iterations, residual = (np.array(v) for v in zip(*one))
@@ -87,11 +87,11 @@ def test_compiled_newton_flags_the_same_cases_as_the_numpy_newton():
 
 @needs_numba
 def test_compiled_solve_flags_every_case_that_does_not_converge():
-    from bearinglab import _stand_compiled
+    from bearinglab.stand import _compiled as _stand_compiled
 
     fa, cs, a0 = _cases(700, seed=2)
     # no tolerance can be met: every case runs its max_iter steps and is flagged, on both engines
-    ref_alpha, ref_ok, ref_res = stand._newton(fa, cs, a0, fa.size, 0.0, 0.0, 2)
+    ref_alpha, ref_ok, ref_res = stand.method._newton(fa, cs, a0, fa.size, 0.0, 0.0, 2)
     alpha, iterations, residual, n_bad = _stand_compiled.solve(fa, cs, a0, fa.size, 0.0, 0.0, 2)
     assert n_bad == fa.size and not ref_ok.any() and np.all(iterations == -2)
     assert np.all(np.isfinite(residual)) and np.all(np.isfinite(ref_res))
@@ -145,29 +145,29 @@ def test_engine_must_be_a_known_name():
 def test_without_numba_auto_falls_back_to_numpy_and_compiled_says_why(monkeypatch):
     real = importlib.util.find_spec
     monkeypatch.setattr(importlib.util, "find_spec", lambda name, *a: None if name == "numba" else real(name, *a))
-    monkeypatch.delitem(sys.modules, "bearinglab._stand_compiled", raising=False)
+    monkeypatch.delitem(sys.modules, "bearinglab.stand._compiled", raising=False)
     monkeypatch.setattr(_solve, "AXIAL_ANGLE_COMPILED_CASES", 10)  # a batch large enough for the kernel
     loads = np.geomspace(0.05, 50.0, 50) * KGF
     got = stand.operating_contact_angle(loads, CS, A0)
     assert np.array_equal(got, stand.operating_contact_angle(loads, CS, A0, engine="numpy"))
-    assert "bearinglab._stand_compiled" not in sys.modules
+    assert "bearinglab.stand._compiled" not in sys.modules
     with pytest.raises(InputError, match="engine='compiled' needs numba, which is not installed"):
         stand.operating_contact_angle(loads, CS, A0, engine="compiled")
 
 
 @needs_numba
 def test_auto_chooses_the_engine_from_the_batch_size_alone(monkeypatch):
-    from bearinglab import _stand_compiled
+    from bearinglab.stand import _compiled as _stand_compiled
 
     calls = []
     solve = _stand_compiled.solve
     monkeypatch.setattr(_stand_compiled, "solve", lambda *a: calls.append(a[3]) or solve(*a))
-    monkeypatch.delitem(sys.modules, "bearinglab._stand_compiled")  # as in a fresh process
+    monkeypatch.delitem(sys.modules, "bearinglab.stand._compiled")  # as in a fresh process
     monkeypatch.setattr(_solve, "AXIAL_ANGLE_COMPILED_CASES", 40)
     stand.operating_contact_angle(np.full(39, 2 * KGF), CS, A0)  # small: numpy, the kernel is not loaded
-    assert calls == [] and "bearinglab._stand_compiled" not in sys.modules
+    assert calls == [] and "bearinglab.stand._compiled" not in sys.modules
     assert stand.engine_for(39) == "numpy" and stand.engine_for(40) == "compiled"
-    monkeypatch.setitem(sys.modules, "bearinglab._stand_compiled", _stand_compiled)
+    monkeypatch.setitem(sys.modules, "bearinglab.stand._compiled", _stand_compiled)
     stand.operating_contact_angle(np.full((5, 8), 2 * KGF), CS, A0)  # 40 cases once broadcast: the kernel
     stand.operating_contact_angle(2 * KGF, CS, A0)  # the kernel is loaded now, and still not used for one case
     stand.operating_contact_angle(np.full(39, 2 * KGF), CS, A0)
@@ -180,7 +180,7 @@ def test_auto_chooses_the_engine_from_the_batch_size_alone(monkeypatch):
 def test_the_same_call_gives_the_same_bits_before_and_after_a_large_batch():
     # engine="auto" must not depend on what ran earlier in the process (it once ran the kernel for any batch
     # as soon as it was loaded, which changes the last bits on hosts where the engines round differently)
-    from bearinglab import _stand_compiled
+    from bearinglab.stand import _compiled as _stand_compiled
 
     fa, cs, a0 = _cases(2000, seed=4)
     before = stand.operating_contact_angle(fa, cs, a0)
@@ -194,7 +194,7 @@ def test_the_same_call_gives_the_same_bits_before_and_after_a_large_batch():
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(_stand_compiled, "solve", lambda *a: calls.append(a[3]) or solve(*a))
         stand.operating_contact_angle(np.geomspace(1e-2, 1e4, big), CS, A0)
-        assert calls == [big] and "bearinglab._stand_compiled" in sys.modules
+        assert calls == [big] and "bearinglab.stand._compiled" in sys.modules
         after = stand.operating_contact_angle(fa, cs, a0)
         consts2, alpha2 = stand.constants_at_operating_angle(*args)
         assert calls == [big]  # the small calls stayed on numpy

@@ -121,7 +121,7 @@ def test_the_newton_of_section_6_3_from_any_start(load, a0_deg, where, max_iter,
     fa, cs, a0 = load * KGF, 7792.357 * KGF, math.radians(a0_deg)
     start = a0 + where * (math.pi / 2 - a0)
     want = _independent_section_newton(fa, cs, a0, start, 1e-12, ftol_percent, max_iter)
-    alpha, ok, residual = stand._section_newton(np.array([fa]), cs, a0, math.cos(a0), np.array([start]), 1e-12,
+    alpha, ok, residual = stand.method._section_newton(np.array([fa]), cs, a0, math.cos(a0), np.array([start]), 1e-12,
                                                 ftol_percent, max_iter)
     assert bool(ok[0]) == want[1]
     # the same iterates up to rounding (pow against cbrt, tan against sin/cos); an iterate still far from the
@@ -141,7 +141,7 @@ def test_the_newton_of_section_6_3_from_any_start(load, a0_deg, where, max_iter,
 def test_the_newton_of_section_6_3_converges_from_far_starts_to_the_root():
     fa, cs, a0 = 2 * KGF, 7792.357 * KGF, math.radians(12.0)
     starts = a0 + np.array([1e-6, 0.01, 0.3, 0.9, 0.999]) * (math.pi / 2 - a0)
-    alpha, ok, residual = stand._section_newton(np.full(5, fa), cs, a0, math.cos(a0), starts, 1e-12, 1e-10, 50)
+    alpha, ok, residual = stand.method._section_newton(np.full(5, fa), cs, a0, math.cos(a0), starts, 1e-12, 1e-10, 50)
     assert ok.all() and (residual == 0.0).all()
     for a in alpha:
         assert _thrust(a, cs, a0) == pytest.approx(fa, rel=1e-10)
@@ -151,7 +151,7 @@ def test_a_converged_case_has_no_residual_next_to_one_that_did_not_converge():
     fa, cs, a0 = 2 * KGF, 7792.357 * KGF, math.radians(12.0)
     root = stand.operating_contact_angle(fa, cs, a0)
     starts = np.array([root, a0 + 0.999 * (math.pi / 2 - a0)])  # at the root; far above it
-    _, ok, residual = stand._section_newton(np.full(2, fa), cs, a0, math.cos(a0), starts, 1e-12, 1e-10, 2)
+    _, ok, residual = stand.method._section_newton(np.full(2, fa), cs, a0, math.cos(a0), starts, 1e-12, 1e-10, 2)
     assert ok.tolist() == [True, False]
     assert residual[0] == 0.0
     want = _independent_section_newton(fa, cs, a0, starts[1], 1e-12, 1e-10, 2)
@@ -164,7 +164,7 @@ def test_the_load_test_of_section_6_3_uses_the_error_in_percent():
     start = stand.operating_contact_angle(fa, cs, a0) + 1e-4
     error = abs(fa / _thrust(start, cs, a0) - 1.0) * 100.0
     for ftol, converged in ((error * 1.005, True), (error / 1.005, False)):
-        _, ok, _ = stand._section_newton(np.array([fa]), cs, a0, math.cos(a0), np.array([start]), 1e-30, ftol, 1)
+        _, ok, _ = stand.method._section_newton(np.array([fa]), cs, a0, math.cos(a0), np.array([start]), 1e-30, ftol, 1)
         assert bool(ok[0]) is converged
 
 

@@ -63,7 +63,8 @@ def test_the_sweep_chooses_one_engine_for_all_its_chunks(sweep_file, monkeypatch
     # count (24 here), so that a chunk smaller than the threshold does not switch engines midway
     import importlib.util
 
-    from bearinglab import _solve, stand
+    from bearinglab import _solve
+    from bearinglab.stand import method as stand
 
     if threshold == 10 and importlib.util.find_spec("numba") is None:
         pytest.skip("numba is not installed")

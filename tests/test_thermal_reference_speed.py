@@ -18,7 +18,7 @@ from bearinglab.errors import InputError
 from bearinglab.mounting.chain import Mounting, mounting_of, operating_clearance
 from bearinglab.units import RPM
 
-CATALOG = Path(thermal.__file__).parent / "data" / "catalog_series.csv"
+CATALOG = Path(thermal.__file__).parent.parent / "data" / "catalog_series.csv"
 
 
 def test_reference_conditions_are_the_printed_ones():

@@ -17,7 +17,8 @@ Two worked examples of :mod:`bearinglab.mounting` (theory: :doc:`/theory/clearan
 import matplotlib.pyplot as plt
 import numpy as np
 
-from bearinglab import catalog, internal_clearance, ratings
+from bearinglab import catalog, internal_clearance
+from bearinglab.life import rating_life
 from bearinglab.mounting import chain, fits, preload, tables
 from bearinglab.quasistatic import sets
 
@@ -71,7 +72,7 @@ for f in names:
     ig = fits.inner_interference(tables.field_limits(f, g.bore), tables.bore_limits(g.bore))
     e = float(chain.operating_range((lo, hi), ig, og, mg, cond).probable.operating_clearance)
     clearance.append(e * 1e6)
-    r = ratings.rating_life(g.replace(radial_clearance=e), [2000.0, 0, 0, 0, 0], 3000 * np.pi / 30,
+    r = rating_life(g.replace(radial_clearance=e), [2000.0, 0, 0, 0, 0], 3000 * np.pi / 30,
                             kinematic_viscosity=20e-6)  # 20 cSt at the operating temperature
     life.append(float(r.reference_rating_life) / 1e6)  # revolutions -> Mrev
     print(f"{f}: operating clearance {e * 1e6:5.2f} um, L10r {life[-1]:8.1f} Mrev")

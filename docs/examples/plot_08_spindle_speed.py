@@ -12,7 +12,7 @@ conductance of the bearing. As the speed rises from 1000 to 12 000 rpm:
 2. the oil's viscosity follows that temperature (ASTM D341);
 3. the Hamrock-Dowson film at every ball contact (:func:`bearinglab.film.film_analysis`, loads solved at
    speed) uses the viscosity at that temperature (theory: :doc:`/theory/film`);
-4. kappa = nu / nu1 and L_nm of ISO 281 (:func:`bearinglab.ratings.rating_life`) follow.
+4. kappa = nu / nu1 and L_nm of ISO 281 (:func:`bearinglab.life.rating_life`) follow.
 
 The film thickens with speed at first (the entrainment speed), then the warmer, thinner oil takes the
 gain back: h_min peaks near 4000 rpm. kappa peaks earlier (nu1 falls only as n^-0.5, nu faster once the
@@ -32,8 +32,9 @@ import warnings
 import matplotlib.pyplot as plt
 import numpy as np
 
-from bearinglab import catalog, film, ratings, thermal
+from bearinglab import catalog, film, thermal
 from bearinglab.friction import SKFConstants
+from bearinglab.life import rating_life
 from bearinglab.ratings import lubrication
 from bearinglab.units import RPM
 
@@ -53,7 +54,7 @@ bal = thermal.thermal_balance(b, fr, fa, w, 293.15, nu40, nu100, oil_flow_conduc
                               oil_inlet_temperature=303.15, lubrication="oil-jet", constants=constants)
 nu = bal.kinematic_viscosity
 films = film.film_analysis(b, [fr, 0.0, fa, 0.0, 0.0], w, nu * density)
-life = ratings.rating_life(b, [fr, 0.0, fa, 0.0, 0.0], w, kinematic_viscosity=nu, load_distribution=False)
+life = rating_life(b, [fr, 0.0, fa, 0.0, 0.0], w, kinematic_viscosity=nu, load_distribution=False)
 ref = thermal.thermal_reference_speed(b, constants=constants)
 
 for k in range(rpm.size):

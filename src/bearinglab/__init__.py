@@ -11,8 +11,9 @@ catalog     built-in bearings and user TOML catalogs
 designation designations as engineers write them: base size, seals, clearance, angle, tolerance
 estimation  estimated ball set of a catalog bearing from its boundary dimensions
 internal_clearance  ISO 5753-1 radial internal clearance classes of deep-groove ball bearings
-static      static contact angle under thrust (zero speed): load-angle relation, displacement
-stand       test-stand method (spec 000): stand load, C*, operating contact angle, iteration table
+static      static contact angle under thrust (zero speed): the public path of stand.static
+stand       test-stand method (spec 000): stand load, C*, operating contact angle, iteration table;
+            the static contact angle under thrust it builds on (stand.static)
 parallel    chunked batch execution, serial or on dask
 sweep       parameter sweeps of a model over a Cartesian grid (sweep files)
 kinematics  cage and ball speeds, characteristic (defect) frequencies, spectral masks
@@ -25,7 +26,8 @@ quasistatic high-speed angular-contact bearing under thrust: centrifugal force, 
 tables      results -> engineering-unit columns; the CSV, Parquet and JSON writers
 plots       all figures (matplotlib, loaded on first use); functions return Figures
 cli         the command line (imported on its own: ``bearinglab.cli``, ``python -m bearinglab``)
-ratings     load ratings and rating life: ISO 76, ISO 281, ISO/TS 16281
+ratings     load ratings and the life formulas: ISO 76, ISO 281, ISO/TS 16281
+life        rating life of a bearing (ISO 281, ISO/TS 16281) and duty cycles
 thermal     steady bearing temperature: SKF friction power against the heat carried away
 limits      plausibility limits: warnings for results beyond ISO 76, C0, Hertz, the shoulder, light load
 mounting    mounted clearance: ISO 286 fits, ISO 492 tolerances, Lamé, temperature, speed (issue 23)
@@ -52,6 +54,7 @@ __all__ = [
     "internal_clearance",
     "kinematics",
     "lab",
+    "life",
     "limits",
     "mounting",
     "parallel",

@@ -37,9 +37,10 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import _bounds, catalog, geometry, hertz, kinematics, parallel, stand, static, tables
+from . import _bounds, catalog, geometry, hertz, kinematics, parallel, stand, tables
 from .bearing import BallBearing
 from .errors import CatalogError, ConvergenceError, InputError
+from .stand import static
 from .units import KGF, parse_quantity, parse_values
 
 __all__ = [

@@ -12,7 +12,7 @@ HIGH_SPEED      the columns of a :class:`bearinglab.quasistatic.HighSpeedState`
 AXIAL_ANGLE     the per-case columns of :func:`bearinglab.stand.stand_analysis`
 RUNOUT_GEOMETRY the fields of a runout geometry (:func:`bearinglab.runout.geometry_from_bearing`)
 BALLS           the per-ball columns of a combined-load distribution
-RATINGS, RATING_LIFE   the ratings and the lives of :func:`bearinglab.ratings.rating_life`
+RATINGS, RATING_LIFE   the ratings and the lives of :func:`bearinglab.life.rating_life`
 SKF_TORQUE      the moments of :func:`bearinglab.friction.skf`
 KIND_UNITS      quantity kind -> (column suffix, factor from SI), for inputs given by kind
 
@@ -540,7 +540,7 @@ RATINGS = (
     Column("fatigue_load_limit_N", "fatigue_load_limit", "N"),
 )
 
-#: Per-case columns of :func:`bearinglab.ratings.rating_life` (Mrev: 10^6 revolutions).
+#: Per-case columns of :func:`bearinglab.life.rating_life` (Mrev: 10^6 revolutions).
 RATING_LIFE = (
     Column("equivalent_dynamic_load_N", "equivalent_dynamic_load", "N"),
     Column("basic_rating_life_Mrev", "basic_rating_life", "Mrev", 1e-6),
@@ -629,7 +629,7 @@ def rating_life(result):
     Parameters
     ----------
     result : RatingLife
-        A result of :func:`bearinglab.ratings.rating_life` (one or more load cases).
+        A result of :func:`bearinglab.life.rating_life` (one or more load cases).
 
     Returns
     -------

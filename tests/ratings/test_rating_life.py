@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from numpy.testing import assert_allclose
 
-from bearinglab import ratings
+from bearinglab import life, ratings
 from bearinglab.bearing import BallBearing
 from bearinglab.errors import InputError
 
@@ -20,7 +20,7 @@ N = 3000 * math.pi / 30  # rad/s
 def _quiet(*args, **kw):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ratings.RatingWarning)
-        return ratings.rating_life(*args, **kw)
+        return life.rating_life(*args, **kw)
 
 
 def test_catalog_values_take_precedence():
@@ -64,7 +64,7 @@ def test_moment_makes_iso281_fields_nan_but_not_the_reference_life():
     loads = np.array([[1000.0, 0, 0, 0, 0], [1000.0, 0, 0, 5.0, 0]])
     q = np.array([[300.0] * 9, [400.0] * 9])
     with pytest.warns(ratings.RatingWarning, match="tilting moment"):
-        r = ratings.rating_life(B6205, loads, N, kinematic_viscosity=20e-6, load_distribution=q)
+        r = life.rating_life(B6205, loads, N, kinematic_viscosity=20e-6, load_distribution=q)
     assert np.isfinite(r.basic_rating_life[0]) and math.isnan(r.basic_rating_life[1])
     assert math.isnan(r.static_safety_factor[1]) and math.isnan(r.modified_rating_life[1])
     assert np.all(np.isfinite(r.reference_rating_life))
@@ -112,9 +112,9 @@ def test_lubricant_from_oil_data():
     b = _quiet(B6205, [1000.0, 0, 0, 0, 0], N, kinematic_viscosity=nu)
     assert a.viscosity_ratio == b.viscosity_ratio
     with pytest.raises(InputError, match="not both"):
-        ratings.rating_life(B6205, [1000.0, 0, 0, 0, 0], N, kinematic_viscosity=nu, iso_vg=68)
+        life.rating_life(B6205, [1000.0, 0, 0, 0, 0], N, kinematic_viscosity=nu, iso_vg=68)
     with pytest.raises(InputError, match="give kinematic_viscosity, or temperature"):  # an oil without temperature
-        ratings.rating_life(B6205, [1000.0, 0, 0, 0, 0], N, iso_vg=68)
+        life.rating_life(B6205, [1000.0, 0, 0, 0, 0], N, iso_vg=68)
 
 
 def test_contamination_class_and_bad_inputs():
@@ -122,9 +122,9 @@ def test_contamination_class_and_bad_inputs():
     b = _quiet(B6205, [1000.0, 0, 0, 0, 0], N, kinematic_viscosity=20e-6, contamination=0.55)
     assert a.life_modification_factor == b.life_modification_factor
     with pytest.raises(InputError, match="loads must have the five components"):
-        ratings.rating_life(B6205, [1000.0, 0, 0], N, kinematic_viscosity=20e-6)
+        life.rating_life(B6205, [1000.0, 0, 0], N, kinematic_viscosity=20e-6)
     with pytest.raises(InputError, match="contamination must be a factor"):
-        ratings.rating_life(B6205, [1000.0, 0, 0, 0, 0], N, kinematic_viscosity=20e-6, contamination=2.0)
+        life.rating_life(B6205, [1000.0, 0, 0, 0, 0], N, kinematic_viscosity=20e-6, contamination=2.0)
 
 
 @settings(max_examples=30, deadline=None)
@@ -144,16 +144,16 @@ def test_duty_cycle_is_palmgren_miner():
     loads = np.array([[1000.0, 0, 0, 0, 0], [2000.0, 0, 0, 0, 0], [500.0, 0, 0, 0, 0]])
     speeds = np.array([100.0, 300.0, 50.0])
     t = np.array([0.2, 0.5, 0.3])
-    d = ratings.duty_cycle_life(B6205, loads, speeds, t, kinematic_viscosity=30e-6)
+    d = life.duty_cycle_life(B6205, loads, speeds, t, kinematic_viscosity=30e-6)
     lives = d.steps.basic_rating_life
     u = t * speeds / np.sum(t * speeds)
     assert d.basic_rating_life == pytest.approx(1 / np.sum(u / lives), rel=1e-14)
     assert d.mean_speed == pytest.approx(np.sum(t * speeds))
     # one step run all the time gives that step's life
-    one = ratings.duty_cycle_life(B6205, loads, speeds, [0.0, 1.0, 0.0], kinematic_viscosity=30e-6)
+    one = life.duty_cycle_life(B6205, loads, speeds, [0.0, 1.0, 0.0], kinematic_viscosity=30e-6)
     assert one.basic_rating_life == pytest.approx(lives[1], rel=1e-14)
     with pytest.raises(InputError, match="time_shares must sum to 1"):
-        ratings.duty_cycle_life(B6205, loads, speeds, [0.2, 0.2, 0.2], kinematic_viscosity=30e-6)
+        life.duty_cycle_life(B6205, loads, speeds, [0.2, 0.2, 0.2], kinematic_viscosity=30e-6)
 
 
 def test_benchmark_paths_agree_on_a_small_input(load_bench):
@@ -189,7 +189,7 @@ def test_without_lubricant_the_lubrication_results_are_none():
 
 def test_duty_cycle_without_lubricant():
     with pytest.warns(ratings.RatingWarning, match="no load distribution"):
-        d = ratings.duty_cycle_life(B6205_DM, [[1000.0, 0, 0, 0, 0], [2000.0, 0, 0, 0, 0]], [300.0, 300.0],
+        d = life.duty_cycle_life(B6205_DM, [[1000.0, 0, 0, 0, 0], [2000.0, 0, 0, 0, 0]], [300.0, 300.0],
                                     [0.5, 0.5], load_distribution=False)
     assert d.modified_rating_life is None and d.modified_reference_rating_life is None
     assert d.basic_rating_life > 0

@@ -1,4 +1,4 @@
-"""A native calculation's errors as :class:`~.documents.RunFailure`, naming the calculation's fields.
+"""A native calculation's errors as :class:`~.fields.RunFailure`, naming the calculation's fields.
 
 The input checks the calculations share with the command line (:mod:`._inputs`, :mod:`._mounting`,
 the physics) raise :class:`bearinglab.errors.InputError` with the project's message convention: the
@@ -19,8 +19,7 @@ from __future__ import annotations
 import contextlib
 
 from ..errors import ConvergenceError, InputError
-from .documents import RunFailure
-from .fields import RequestError
+from .fields import RequestError, RunFailure
 
 
 def _dashed(field):

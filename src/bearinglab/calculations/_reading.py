@@ -53,7 +53,7 @@ def value(parsed, name, default=None):
 def failure(exc, names=()):
     """An InputError as a RunFailure: it names the field of ``names`` (field names) whose option its
     message opens with (``axial-load must be ...``, ``speed: ...``); otherwise it names no field."""
-    from .documents import RunFailure
+    from .fields import RunFailure
 
     message = str(exc)
     for name in sorted(names, key=len, reverse=True):  # 'outer-speed' before 'speed'

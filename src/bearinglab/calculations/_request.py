@@ -32,8 +32,7 @@ def failure(exc, parsed, field=None):
     way. A message that names no field of the calculation is about ``field`` where given, else about
     the request as a whole.
     """
-    from .documents import RunFailure
-    from .fields import RequestError
+    from .fields import RequestError, RunFailure
 
     if isinstance(exc, RequestError):
         return exc

@@ -27,17 +27,10 @@ import re
 import warnings
 
 from ..errors import InputError
-from .fields import RequestError
+from .fields import RequestError, RunFailure
 
 __all__ = ["RunFailure", "argv", "catalog_document", "figure_svg", "run"]
 
-class RunFailure(RequestError):
-    """A calculation that failed on its input (``kind="input"``) or did not converge
-    (``kind="convergence"``); the message names fields as ``{name}`` placeholders."""
-
-    def __init__(self, parameter, value, template, kind="input"):
-        self.kind = kind
-        super().__init__(parameter, value, "", template)
 
 
 def argv(parsed, *, documents=None):

@@ -11,6 +11,7 @@ Fields
 ------
 Field           one input of a calculation
 RequestError    a bad input: field, value, valid range, and the message with the name left open
+RunFailure      a run that failed on its input (exit 2) or did not converge (exit 3), naming its field
 parse_field     one value as written -> its checked value (SI floats, an int, a choice, a flag, text)
 count_values    how many values a list or range holds, without building it
 """
@@ -23,7 +24,7 @@ from dataclasses import dataclass
 
 from ..errors import InputError
 
-__all__ = ["Field", "RequestError", "count_values", "parse_field"]
+__all__ = ["Field", "RequestError", "RunFailure", "count_values", "parse_field"]
 
 #: kinds that are not quantities of :data:`bearinglab.units.KINDS`
 _PLAIN = ("int", "number", "choice", "flag", "text", "document")
@@ -112,6 +113,15 @@ class RequestError(InputError):
         ``{name}`` is the field at fault, ``{field:NAME}`` another field the message names."""
         text = self.template.replace("{name}", name_of(self.parameter) if self.parameter else "request")
         return _OTHER.sub(lambda m: name_of(m.group(1)), text)
+
+
+class RunFailure(RequestError):
+    """A calculation that failed on its input (``kind="input"``) or did not converge
+    (``kind="convergence"``); the message names fields as ``{name}`` placeholders."""
+
+    def __init__(self, parameter, value, template, kind="input"):
+        self.kind = kind
+        super().__init__(parameter, value, "", template)
 
 
 _OTHER = re.compile(r"\{field:([a-z0-9_]+)\}")

@@ -389,7 +389,7 @@ def _cases(radial_load, axial_load, speed):
     n = inp.parse_speeds(speed)
     sizes = {v.size for v in (fr, fa, n) if v.size > 1}
     if len(sizes) > 1:
-        from .documents import RunFailure
+        from .fields import RunFailure
 
         raise RunFailure("radial_load", None, "{name}, axial-load, speed: lists are paired "
                          "element by element (rows of a log) and must have the same length, or one value")

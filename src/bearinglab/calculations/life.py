@@ -1,8 +1,8 @@
 """The rating life (issue 12) as a calculation: the document of ``bearinglab life --json``.
 
 ISO 281 and ISO/TS 16281 lives of a bearing under (F_x, F_y, F_z, M_x, M_y) at a speed
-(:func:`bearinglab.ratings.rating_life`; the ball loads of the reference life from the combined-load
-model), or of a duty cycle (:func:`bearinglab.ratings.duty_cycle_life`). The columns are
+(:func:`bearinglab.life.rating_life`; the ball loads of the reference life from the combined-load
+model), or of a duty cycle (:func:`bearinglab.life.duty_cycle_life`). The columns are
 :func:`bearinglab.tables.rating_life`. Where ISO 281's P is not defined (under a moment) its fields
 are null and a warning says why; the ISO/TS 16281 fields are still given. The command line
 (:mod:`bearinglab.cli.life`) and the web compute the same document with :func:`document`.
@@ -164,13 +164,14 @@ def _auto_viscosity(b, loads, n, text, values, thermal):
 
 
 def _life(b, loads, n, options, lube, assumed, mounted):
-    from .. import ratings, tables
+    from .. import tables
+    from ..life import rating_life
     from ..units import RPM
 
     dist = _distribution(b, loads)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the analysis returns its warnings
-        r = ratings.rating_life(b, loads, n, **options, load_distribution=dist)
+        r = rating_life(b, loads, n, **options, load_distribution=dist)
     doc = {**tables.rows(tables.rating_life(r))[0], "rating_source": r.rating_source,
            "inputs": _echo(b, options, lube, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
                            my_Nmm=loads[4] * 1e3, speed_rpm=n / RPM),
@@ -235,14 +236,14 @@ def _duty_cycle(text, source, bearing):
 
 def _distribution(b, loads):
     """The load distribution of the ISO/TS 16281 reference life
-    (:func:`bearinglab.ratings.reference_load_distribution`), computed here so that the plausibility limits
+    (:func:`bearinglab.life.reference_load_distribution`), computed here so that the plausibility limits
     see the ball loads. A case without equilibrium is flagged, not raised: the ISO 281 lives do not need
     the distribution. None without the ball set (the reference lives are then NaN, and say why)."""
-    from .. import ratings
+    from ..life import reference_load_distribution
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the life analysis reports what matters to it
-        return ratings.reference_load_distribution(b, loads, on_failure="flag")
+        return reference_load_distribution(b, loads, on_failure="flag")
 
 
 def _notes(b, loads, rating_notes, dist):
@@ -293,8 +294,8 @@ def _unavailable(b, loads, dist):
     a flagged result keeps no reason per case)."""
     import numpy as np
 
-    from .. import ratings
     from ..errors import ConvergenceError
+    from ..life import reference_load_distribution
 
     failed = np.flatnonzero(~np.ravel(dist.converged))
     if not failed.size:
@@ -302,7 +303,7 @@ def _unavailable(b, loads, dist):
     f = np.reshape(loads, (-1, 5))
     where = "" if len(f) == 1 else f" at {failed.size} of {len(f)} steps (first: step {failed[0] + 1})"
     try:
-        ratings.reference_load_distribution(b, f[failed[0]], on_failure="raise")
+        reference_load_distribution(b, f[failed[0]], on_failure="raise")
         why = "the combined-load model found no equilibrium"
     except ConvergenceError as exc:
         why = exc.summary
@@ -345,13 +346,14 @@ _KEYS = ("dynamic_load_rating_N", "static_load_rating_N", "fatigue_load_limit_N"
 def _life_of_duty_cycle(b, loads, speeds, times, options, lube, assumed=()):
     import numpy as np
 
-    from .. import ratings, tables
+    from .. import tables
+    from ..life import duty_cycle_life
     from ..units import RPM
 
     dist = _distribution(b, loads)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        d = ratings.duty_cycle_life(b, loads, speeds, times, **options, load_distribution=dist)
+        d = duty_cycle_life(b, loads, speeds, times, **options, load_distribution=dist)
     steps = tables.rows(tables.rating_life(d.steps))
     hours = 2 * np.pi / d.mean_speed / 3600.0
 

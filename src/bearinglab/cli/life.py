@@ -1,8 +1,8 @@
 """Command line of the rating life (issue 12): ``life``.
 
 ISO 281 and ISO/TS 16281 lives of a bearing under (F_x, F_y, F_z, M_x, M_y) at a speed
-(:func:`bearinglab.ratings.rating_life`; the ball loads of the reference life from the combined-load
-model), or of a duty cycle (``--duty-cycle FILE``, :func:`bearinglab.ratings.duty_cycle_life`). The columns
+(:func:`bearinglab.life.rating_life`; the ball loads of the reference life from the combined-load
+model), or of a duty cycle (``--duty-cycle FILE``, :func:`bearinglab.life.duty_cycle_life`). The columns
 are :func:`bearinglab.tables.rating_life`. Where ISO 281's P is not defined (under a moment) its fields
 are null and a warning says why; the ISO/TS 16281 fields are still given. The document is
 :func:`bearinglab.calculations.life.document`, the web's too; this module reads the options and prints.

@@ -328,3 +328,11 @@ class _Row:
                 f"{reading:g} is outside the calibrated range [{lo:g}, {hi:g}] of the "
                 f"{table.name} table (no extrapolation)",
             )
+
+
+def _by_tilt(tilt):
+    """Row indices grouped by their tilt (in order of first appearance): tilt -> [k, ...]."""
+    out = {}
+    for k, t in enumerate(tilt):
+        out.setdefault(float(t), []).append(k)
+    return out

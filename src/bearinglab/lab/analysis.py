@@ -34,6 +34,7 @@ from .. import friction
 from ..errors import InputError
 from . import fits
 from ._compat import renamed_field
+from ._rows import _by_tilt
 from .calibration import convert, convert_torque
 from .rig import rig_equivalent_load
 
@@ -544,13 +545,6 @@ def _task4(session, rows):
         np.sqrt(np.bincount(gid, weights=f4.model_residuals**2, minlength=len(members)) / m),
         tuple(members),
     )
-
-
-def _by_tilt(tilt):
-    out = {}
-    for k, t in enumerate(tilt):
-        out.setdefault(float(t), []).append(k)
-    return out
 
 
 def _indicators(task1, task2, task3, c, mean_f0):

@@ -31,7 +31,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .analysis import _by_tilt
+from ._rows import _by_tilt
 from .rig import branch_switch_tilt
 
 __all__ = [

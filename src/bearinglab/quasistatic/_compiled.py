@@ -46,12 +46,11 @@ References
 from __future__ import annotations
 
 import math
-import threading
 import types
 
 import numpy as np
 
-from .. import _solve
+from .. import _numba, _solve
 from ..errors import ConvergenceError
 from .equations import _ANGLE_OUT, _INNER_LOST, _NOCONV, _OK, _OUTER_LOST
 
@@ -495,7 +494,7 @@ def _threads():
     return 1 if numba is None else numba.config.NUMBA_NUM_THREADS
 
 
-_LOCK = threading.Lock()  # numba's default (workqueue) threading layer does not allow concurrent launches
+_LOCK = _numba.LOCK  # numba's default (workqueue) threading layer does not allow concurrent launches
 
 
 def _parameters(model):

@@ -23,7 +23,8 @@ import dataclasses
 
 import numpy as np
 
-from .. import _solve, static
+from .. import _solve
+from ..stand import static
 from .equations import _NOCONV, _OK, _equations
 
 __all__: list[str] = []

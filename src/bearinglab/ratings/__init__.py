@@ -7,13 +7,22 @@ dynamic        C and f_c, X / Y / e and P, L10 and the reliability factor a1 (IS
 lubrication    oil viscosity (ISO VG, ASTM D2270 viscosity index, ASTM D341), nu1 and kappa, e_C classes, a_ISO (ISO 281)
 reference      ISO/TS 16281 reference rating life from the ball loads
 minimum_load   the minimum load of a running ball bearing (SKF's rules)
-life           the analysis of a BallBearing (every life quantity at once) and duty cycles
+bearing        the ratings of one BallBearing: catalog values first, else from the geometry
 
-Every public function of these modules is also reachable here, e.g. ``ratings.rating_life`` and
-``ratings.static_load_rating``. SI throughout; lives in revolutions and durations in seconds.
+Every public function of these modules is also reachable here, e.g. ``ratings.static_load_rating``. SI
+throughout; lives in revolutions and durations in seconds.
+
+The analysis of a bearing (``rating_life``, ``duty_cycle_life``, ...) composes these
+formulas with the load distribution of :mod:`bearinglab.quasistatic`, which builds on them, so it lives one
+layer up, in :mod:`bearinglab.life`. Its names are still reachable here (and ``ratings.life``), with a
+:class:`DeprecationWarning`, for one release.
 """
 
-from . import dynamic, life, lubrication, minimum_load, reference, static
+import importlib
+import warnings
+
+from . import bearing, dynamic, lubrication, minimum_load, reference, static
+from .bearing import BearingRatings, bearing_ratings
 from .dynamic import (
     MATERIAL_FACTOR,
     DynamicLoadFactors,
@@ -23,16 +32,6 @@ from .dynamic import (
     equivalent_dynamic_load,
     load_rating_factor,
     reliability_factor,
-)
-from .life import (
-    BearingRatings,
-    DutyCycleLife,
-    RatingLife,
-    bearing_ratings,
-    duty_cycle_life,
-    miner_life,
-    rating_life,
-    reference_load_distribution,
 )
 from .lubrication import (
     CONTAMINATION_CLASSES,
@@ -88,17 +87,15 @@ __all__ = [
     "STATIC_CONTACT_STRESS",
     "BearingRatings",
     "ContactDynamicLoads",
-    "DutyCycleLife",
     "DynamicLoadFactors",
     "EquivalentContactLoads",
-    "RatingLife",
     "RatingWarning",
     "StaticLoadFactors",
     "basic_rating_life",
+    "bearing",
     "bearing_ratings",
     "contact_dynamic_loads",
     "contamination_factor",
-    "duty_cycle_life",
     "dynamic",
     "dynamic_load_factors",
     "dynamic_load_rating",
@@ -109,20 +106,16 @@ __all__ = [
     "general_minimum_load",
     "iso_vg_viscosity",
     "kinematic_viscosity",
-    "life",
     "life_modification_factor",
     "load_rating_factor",
     "lubrication",
-    "miner_life",
     "minimum_axial_load",
     "minimum_load",
     "minimum_load_rules",
     "minimum_load_warnings",
     "minimum_radial_load",
     "rated_viscosity",
-    "rating_life",
     "reference",
-    "reference_load_distribution",
     "reference_rating_life",
     "reliability_factor",
     "static",
@@ -137,3 +130,22 @@ __all__ = [
     "walther_constants",
     "walther_viscosity",
 ]
+
+#: The names of the bearing's life analysis, moved to :mod:`bearinglab.life` (issue 28: the analysis builds
+#: on the quasi-static model, which builds on these formulas; one package each way would be a cycle).
+_MOVED = frozenset({"DutyCycleLife", "RatingLife", "duty_cycle_life", "miner_life", "rating_life",
+                    "reference_load_distribution", "life"})
+
+
+def __getattr__(name):
+    """The moved names, from :mod:`bearinglab.life`, with a DeprecationWarning (removed in the next release).
+
+    Loaded by name on first use, so that this package never imports the layer above it.
+    """
+    if name in _MOVED:
+        warnings.warn(f"bearinglab.ratings.{name} moved to bearinglab.life"
+                      f"{'' if name == 'life' else '.' + name}; the old name goes in the next release",
+                      DeprecationWarning, stacklevel=2)
+        moved = importlib.import_module("bearinglab.life")
+        return moved if name == "life" else getattr(moved, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -2,12 +2,12 @@ r"""The compiled fast path of the test-stand solve (spec 000 section 6.3), in bl
 
 The same operations, case by case, as the numpy path of :func:`bearinglab.stand.operating_contact_angle`:
 
-- the start (``stand._gap_start``): Halley's iteration on eq. (1) squared, a polynomial in the gap
+- the start (``stand.method._gap_start``): Halley's iteration on eq. (1) squared, a polynomial in the gap
   y = cos alpha0 - cos alpha, from the smaller root of its two leading-order truncations, each case
   stopping after its own step below the start's tolerance;
-- the load test of section 6.3 at the start (``stand._start_test``), then alpha (``stand._angle_of``:
+- the load test of section 6.3 at the start (``stand.method._start_test``), then alpha (``stand.method._angle_of``:
   arcsin(sin alpha) below 45 deg, arccos(cos alpha) above);
-- for a case that fails the test, the Newton of section 6.3 (``stand._section_newton``) with its halving
+- for a case that fails the test, the Newton of section 6.3 (``stand.method._section_newton``) with its halving
   of a step that leaves (alpha0, 90 deg) and its convergence test.
 
 A thread advances a block of ``_LANES`` cases together, so that the cases' chains of dependent divisions
@@ -39,16 +39,15 @@ import math
 import numba
 import numpy as np
 
-from . import _solve
-from .quasistatic import _compiled as _high_speed_compiled
-from .stand import _SQRT_HALF, _gap_step
+from .. import _numba, _solve
+from ._gap import _SQRT_HALF, _gap_step
 
 __all__ = ["solve"]
 
 _LANES = 256  # cases a thread advances together (its arrays stay in the L1 cache)
 _HALF_PI = math.pi / 2
 # error_model="numpy": a division by zero gives inf or nan as in numpy, with no check that would keep the
-# loops from vectorizing. numba's on-disk cache is keyed on this file only: a change to stand._gap_step or
+# loops from vectorizing. numba's on-disk cache is keyed on this file only: a change to stand._gap._gap_step or
 # _SQRT_HALF needs the cache cleared (tests/test_stand_compiled.py compares the engines to a few ulp).
 _step = numba.njit(inline="always", error_model="numpy")(_gap_step)
 
@@ -91,7 +90,7 @@ def _kernel(fa, cs, a0, c, s, xtol, ftol_percent, max_iter, start_rtol, start_ma
         t, tt, cb, s2, y, q = np.empty(m), np.empty(m), np.empty(m), np.empty(m), np.empty(m), np.empty(m)
         live = np.empty(m, dtype=np.bool_)
         n_cbrt = 0
-        for j in range(m):  # the start (stand._gap_start): the smaller root of the two truncations of P(y)
+        for j in range(m):  # the start (stand.method._gap_start): the smaller root of the two truncations of P(y)
             k = lo + j
             tj = fa[i_fa * k] / cs[i_cs * k]
             ck, sk = c[i_a0 * k], s[i_a0 * k]
@@ -124,7 +123,7 @@ def _kernel(fa, cs, a0, c, s, xtol, ftol_percent, max_iter, start_rtol, start_ma
             if n_live == 0:
                 break
         n_fail = 0
-        for j in range(m):  # the load test of section 6.3 at the start (stand._start_test)
+        for j in range(m):  # the load test of section 6.3 at the start (stand.method._start_test)
             ck = cb[j]
             yj = y[j]
             u = ck - yj
@@ -136,7 +135,7 @@ def _kernel(fa, cs, a0, c, s, xtol, ftol_percent, max_iter, start_rtol, start_ma
             n_fail += fail
             y[j] = u  # from here on: cos alpha and sin^2 alpha
             q[j] = w
-        for j in range(m):  # stand._angle_of, a call to the C library
+        for j in range(m):  # stand.method._angle_of, a call to the C library
             alpha[lo + j] = math.asin(math.sqrt(q[j])) if y[j] > _SQRT_HALF else math.acos(y[j])
         n_bad = 0
         if n_fail:  # the cases that fail the test (none among the loads tried) take the Newton of section 6.3
@@ -153,7 +152,7 @@ def _kernel(fa, cs, a0, c, s, xtol, ftol_percent, max_iter, start_rtol, start_ma
 
 # numba's default (workqueue) threading layer aborts the process on concurrent launches of parallel kernels:
 # this kernel takes the lock of the high-speed kernel, so that no two of them run at once
-_LOCK = _high_speed_compiled._LOCK
+_LOCK = _numba.LOCK
 
 
 def solve(fa, cs, a0, n, xtol, ftol_percent, max_iter):

@@ -57,12 +57,13 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import _solve, geometry, hertz
-from ._validate import check_integer, check_open_interval, check_positive
-from .bearing import STEEL
-from .errors import ConvergenceError, InputError
+from .. import _solve, geometry, hertz
+from .._validate import check_integer, check_open_interval, check_positive
+from ..bearing import STEEL
+from ..errors import ConvergenceError, InputError
+from ..units import CM, KGF, MM, RPM
+from ._gap import _SQRT_HALF, _gap_step
 from .static import _angle, axial_displacement_ratio, first_approximation, thrust_from_angle
-from .units import CM, KGF, MM, RPM
 
 __all__ = [
     "MIN_LOAD_CONSTANT",
@@ -441,7 +442,9 @@ def operating_contact_angle(axial_load, force_characteristic, free_angle, *, xto
     # flat inputs; a single value (one bearing) stays a scalar, so that its sine and cosine are taken once
     flat = [x.reshape(()) if x.size == 1 else np.broadcast_to(x, shape).ravel() for x in (fa, cs, a0)]
     if compiled:
-        from . import _stand_compiled  # imports numba: only when the compiled path runs
+        from . import (
+            _compiled as _stand_compiled,  # imports numba: only when the compiled path runs
+        )
 
         alpha, iterations, residual, n_bad = _stand_compiled.solve(*flat, n, xtol, ftol_percent, max_iter)
         ok = iterations >= 0 if n_bad else np.ones(1, dtype=bool)
@@ -526,23 +529,6 @@ def _gap_start(thrust_ratio, cos_a0, sin_a0, n, *, rtol=_solve.AXIAL_ANGLE_START
         if not live.any():
             break
     return y
-
-
-_SQRT_HALF = math.sqrt(0.5)
-
-
-def _gap_step(y, cos_a0, sin2_a0, thrust_ratio2):
-    """Halley's step 2 P P' / (2 P'^2 - P P'') on P(y) of :func:`_gap_start`, for floats or arrays (arithmetic)."""
-    u = cos_a0 - y
-    y2 = y * y
-    y3 = y2 * y
-    w = sin2_a0 + (2.0 * cos_a0 - y) * y  # 1 - u^2 = sin^2 alpha
-    tu = thrust_ratio2 * u
-    tu2 = tu * u
-    p = y3 * w - tu2 * u
-    p1 = 3.0 * y2 * w + 2.0 * y3 * u + 3.0 * tu2
-    p2 = 6.0 * y * w + 12.0 * y2 * u - 2.0 * y3 - 6.0 * tu
-    return 2.0 * p * p1 / (2.0 * p1 * p1 - p * p2)
 
 
 def _start_test(thrust_ratio, y, cos_a0, sin2_a0):

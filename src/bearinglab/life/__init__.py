@@ -1,0 +1,32 @@
+"""Rating life of a bearing: the ISO 281 and ISO/TS 16281 analysis, and duty cycles.
+
+Modules
+-------
+analysis    the analysis of a BallBearing: every life quantity for loads, speed, lubricant, cleanliness and reliability,
+            batched over load cases; duty cycles (Palmgren-Miner)
+
+The analysis composes the ISO formulas of :mod:`bearinglab.ratings` with the load distribution of
+:mod:`bearinglab.quasistatic` (the ball loads of the ISO/TS 16281 reference life), so it sits above both.
+Every public name of its modules is reachable here: ``bearinglab.life.rating_life``.
+"""
+
+from ..ratings.bearing import BearingRatings, bearing_ratings  # noqa: F401 -- ratings.life.* reached them
+from . import analysis
+from .analysis import (
+    DutyCycleLife,
+    RatingLife,
+    duty_cycle_life,
+    miner_life,
+    rating_life,
+    reference_load_distribution,
+)
+
+__all__ = [
+    "DutyCycleLife",
+    "RatingLife",
+    "analysis",
+    "duty_cycle_life",
+    "miner_life",
+    "rating_life",
+    "reference_load_distribution",
+]

@@ -1,0 +1,105 @@
+"""The load ratings of one bearing: the catalog's values where given, else ISO 76 / ISO 281 from the geometry.
+
+One set of ratings per bearing, whichever command asks: the life analysis (:mod:`bearinglab.life`), the
+friction model's C0, the thermal reference speed and the plausibility limits all read them here.
+
+Ratings
+-------
+bearing_ratings    C, C0, Cu and f0 of a BallBearing, each with where it comes from
+BearingRatings     its result
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+from ..errors import InputError
+from . import dynamic, static
+
+__all__ = ["BearingRatings", "bearing_ratings"]
+
+
+class BearingRatings(NamedTuple):
+    """Load ratings of a bearing and where each comes from."""
+
+    dynamic_load_rating: float
+    """C. [N]"""
+    static_load_rating: float
+    """C0. [N]"""
+    fatigue_load_limit: float
+    """Cu. [N]"""
+    static_load_factor: float
+    """f0 of ISO 76 (NaN where the ball set is unknown). [N/mm^2]"""
+    rating_source: dict
+    """Quantity name -> ``"catalog"``, ``"ISO 76"``, ``"ISO 281"``, ``"ISO 281 annex B (precise)"`` or
+    ``"ISO 281 annex B (C0/22)"``."""
+
+
+def _geometry(bearing):
+    return (bearing.n_balls, bearing.ball_diameter, bearing.pitch_diameter,
+            bearing.contact_angle if bearing.contact_angle is not None else 0.0)
+
+
+def _conformities(bearing):
+    fi = bearing.inner_conformity if bearing.inner_conformity is not None else 0.52  # ISO 76 table 2
+    fo = bearing.outer_conformity if bearing.outer_conformity is not None else 0.53
+    return fi, fo
+
+
+def bearing_ratings(bearing, *, fatigue_method="precise"):
+    """C, C0 and Cu of a bearing: the catalog's values where given, else ISO 76 / ISO 281 from the geometry.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        With catalog ratings, or with ``n_balls``, ``ball_diameter`` and ``pitch_diameter`` (groove
+        conformities 0.52 / 0.53 of ISO 76 when not known).
+    fatigue_method : {"precise", "simplified"}
+        Cu by ISO 281 annex B.3 from the contact stress (needs the ball set), or C0/22.
+
+    Returns
+    -------
+    BearingRatings
+
+    Examples
+    --------
+    >>> from bearinglab.bearing import BallBearing
+    >>> r = bearing_ratings(BallBearing(9, 7.94e-3, 39.04e-3, 0.52, 0.53, contact_angle=0.0, type="radial"))
+    >>> print(f"{r.dynamic_load_rating:.0f} {r.static_load_rating:.0f} {r.fatigue_load_limit:.1f}", r.rating_source["dynamic_load_rating"])
+    14023 7872 358.6 ISO 281
+    """
+    if fatigue_method not in ("precise", "simplified"):
+        raise InputError(f"fatigue_method must be one of ['precise', 'simplified'], got {fatigue_method!r}")
+    z, d, dpw, alpha = _geometry(bearing)
+    fi, fo = _conformities(bearing)
+    has_set = None not in (z, d, dpw)
+    source = {}
+
+    def need(what):
+        if not has_set:
+            label = bearing.designation or "this bearing"
+            raise InputError(f"{what} of {label!r} is not in its catalog entry and the ball set (n_balls, "
+                             "ball_diameter, pitch_diameter) needed to compute it is not known")
+
+    f0 = float(static.static_load_factor(d, dpw, alpha, inner_conformity=fi, outer_conformity=fo)) \
+        if has_set else float("nan")
+    if bearing.dynamic_load_rating is not None:
+        c, source["dynamic_load_rating"] = bearing.dynamic_load_rating, "catalog"
+    else:
+        need("dynamic_load_rating")
+        c, source["dynamic_load_rating"] = float(dynamic.dynamic_load_rating(z, d, dpw, alpha)), "ISO 281"
+    if bearing.static_load_rating is not None:
+        c0, source["static_load_rating"] = bearing.static_load_rating, "catalog"
+    else:
+        need("static_load_rating")
+        c0 = float(static.static_load_rating(z, d, dpw, alpha, inner_conformity=fi, outer_conformity=fo))
+        source["static_load_rating"] = "ISO 76"
+    if bearing.fatigue_load_limit is not None:
+        cu, source["fatigue_load_limit"] = bearing.fatigue_load_limit, "catalog"
+    elif fatigue_method == "precise" and has_set:
+        cu = float(static.fatigue_load_limit(z, d, dpw, alpha, inner_conformity=fi, outer_conformity=fo))
+        source["fatigue_load_limit"] = "ISO 281 annex B (precise)"
+    else:
+        cu = float(static.fatigue_load_limit_simplified(c0, dpw if dpw is not None else bearing.mean_diameter))
+        source["fatigue_load_limit"] = "ISO 281 annex B (C0/22)"
+    return BearingRatings(float(c), float(c0), float(cu), f0, source)
