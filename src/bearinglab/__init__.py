@@ -28,6 +28,8 @@ plots       all figures (matplotlib, loaded on first use); functions return Figu
 cli         the command line (imported on its own: ``bearinglab.cli``, ``python -m bearinglab``)
 ratings     load ratings and the life formulas: ISO 76, ISO 281, ISO/TS 16281
 life        rating life of a bearing (ISO 281, ISO/TS 16281) and duty cycles
+reactions   loads and stiffness of bearings at given ring displacements, batched (the entry point
+            of system models)
 thermal     steady bearing temperature: SKF friction power against the heat carried away
 limits      plausibility limits: warnings for results beyond ISO 76, C0, Hertz, the shoulder, light load
 mounting    mounted clearance: ISO 286 fits, ISO 492 tolerances, Lamé, temperature, speed (issue 23)
@@ -61,6 +63,7 @@ __all__ = [
     "plots",
     "quasistatic",
     "ratings",
+    "reactions",
     "report",
     "runout",
     "stand",
