@@ -49,7 +49,17 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import _bounds, _sweep_documents, catalog, geometry, hertz, kinematics, parallel, stand, tables
+from . import (
+    _bounds,
+    _sweep_documents,
+    catalog,
+    geometry,
+    hertz,
+    kinematics,
+    parallel,
+    stand,
+    tables,
+)
 from ._sweep_documents import flatten_document
 from .bearing import BallBearing
 from .errors import CatalogError, ConvergenceError, InputError
@@ -421,7 +431,7 @@ def _load_document_sweep(path, doc, calc):
         if "bearing" in params or "bearing" in constants:
             _fail(path, "bearing", "give the bearing once: at the top, in [parameters] or in [constants]")
         if isinstance(b, dict):
-            function, files = _sweep_documents.document_function(calc.name)
+            _, files = _sweep_documents.document_function(calc.name)
             if not files:
                 _fail(path, "bearing", f"model {calc.name!r} takes catalog names, not a [bearing] table")
             designation = str(b.get("designation", "sweep"))

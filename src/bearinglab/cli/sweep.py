@@ -57,7 +57,7 @@ def sweep(
     failed = int(n - np.count_nonzero(cols["converged"]))
     if target is not None:
         _sweep.write_table(cols, target)
-    echo = dict(sweep_file=str(file), model=spec.model.name, path=spec.path, constants=spec.constants)
+    echo = {"sweep_file": str(file), "model": spec.model.name, "path": spec.path, "constants": spec.constants}
     summary = dict(inputs_echo(spec.bearing, **echo) if spec.bearing is not None else echo,
                    cases=n, failed=failed, executor=ex.executor, output=None if target is None else str(target))
     if json_out:
