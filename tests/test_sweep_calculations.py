@@ -225,6 +225,19 @@ def test_the_batch_models_keep_their_path_and_a_field_of_theirs_asks_for_the_doc
     np.testing.assert_allclose(a["operating_contact_angle_deg"], b["operating_contact_angle_deg"], rtol=1e-12)
 
 
+def test_a_sweep_over_bearings(tmp_path):
+    path = _file(tmp_path, 'model = "life"\n[parameters]\nbearing = ["6205-2RS", "6206"]\nfx = "2 kN"\n'
+                           'speed = "3000 rpm"\n')
+    spec = sweep.load_sweep(path)
+    assert spec.bearing is None
+    cols = sweep.run_sweep(spec)
+    assert cols["bearing"].tolist() == ["6205-2RS", "6206"]
+    for k, name in enumerate(("6205-2RS", "6206")):
+        doc = _document("life", {"bearing": name, "fx": "2 kN", "speed": "3000 rpm"})
+        assert cols["basic_rating_life_h"][k] == doc["basic_rating_life_h"]
+        assert cols["warnings"][k] == " | ".join(doc["warnings"])  # each bearing's own provenance note
+
+
 def test_a_bearing_table_is_the_bearing_file_of_each_case(tmp_path):
     table = ('[bearing]\ndesignation = "my-7205"\nballs = 12\nball_diameter = "7.938 mm"\n'
              'pitch_diameter = "38.5 mm"\ninner_conformity = 0.52\nouter_conformity = 0.53\n'
@@ -283,6 +296,7 @@ def test_bad_files_are_refused_whole_naming_file_and_field(tmp_path):
         ('model = "life"\npath = "fast"\n[parameters]\nfx = "1 kN"', r"path: must be 'batch' or 'document'"),
         ('model = "catalog"\nbearing = "B218"\n[parameters]\nname = "B218"', r"bearing: model 'catalog' takes no bearing"),
         ('model = "life"\nbearing = "nope"\n[parameters]\nfx = "1 kN"', r"unknown name 'nope'"),
+        ('model = "life"\n[parameters]\nbearing = ["6205-2RS", "nope"]', r"parameters.bearing: bearing: unknown name 'nope'"),
         ('model = "life"\n[parameters]\nfx = "0 N:1000 N:1 N"\nfy = "0 N:1000 N:1 N"', r"more than the limit of 1e\+06"),
         ('model = "life"\n[parameters]\nfx = "0 N:1e300 N:1e-300 N"', r"parameters.fx: fx: range .* more than the limit"),
     ]

@@ -37,6 +37,7 @@ Functions
 ---------
 flatten_document   a document -> one row: column name -> scalar
 parameter_values   one [parameters] or [constants] entry -> the requests' values and the input column
+parameter_count    how many values an entry holds, counted before they are built
 input_column       the name of a parameter's input column
 evaluate           the chunk function: each case's document, as columns
 merge              the chunks' columns -> one table, with ``converged`` and ``failure``
@@ -61,7 +62,7 @@ import numpy as np
 from .errors import ConvergenceError, InputError
 
 __all__ = ["MAX_LIST_NUMBERS", "TEXT_SEPARATOR", "document_function", "evaluate", "flatten_document",
-           "input_column", "merge", "parameter_values"]
+           "input_column", "merge", "parameter_count", "parameter_values"]
 
 #: The longest list of numbers a row spreads into columns (a 5 x 5 stiffness matrix is 25).
 MAX_LIST_NUMBERS = 100
@@ -196,6 +197,33 @@ def parameter_values(field, value, *, limit):
     return given, shown
 
 
+def parameter_count(field, value, *, limit):
+    """How many values an entry of [parameters] holds, counted without building them (a range from its
+    three numbers), so that the grid is bounded before anything is allocated; the values themselves are
+    checked by :func:`parameter_values`.
+
+    Examples
+    --------
+    >>> from bearinglab.calculations import CALCULATIONS
+    >>> fx = CALCULATIONS["life"].field("fx")
+    >>> parameter_count(fx, ["1 kN", "0:10:2 kN", "1, 2, 3 kN"], limit=100)
+    10
+    """
+    from .units import KINDS
+
+    count = 0
+    for item in value if isinstance(value, list) else [value]:
+        if not isinstance(item, str):
+            count += 1
+        elif ":" in item and (field.kind in KINDS or field.kind in ("int", "number") or field.unit):
+            count += _range(field.name, item, limit)[2]
+        elif field.kind in KINDS or field.kind in ("int", "number"):  # a list a, b, c (the units' separators)
+            count += len([s for s in item.split(";" if ";" in item else ",") if s.strip()])
+        else:
+            count += 1
+    return count
+
+
 def _values(field, item, limit):
     from .units import KINDS
 
@@ -249,6 +277,12 @@ def _text(x):
 def _range_numbers(name, text, limit):
     """The numbers of ``start:stop:step`` in its own unit (one unit: the last one written applies to the
     numbers written without one) and that unit; counted before they are built."""
+    start, step, count, unit = _range(name, text, limit)
+    return [start + step * k for k in range(count)], unit
+
+
+def _range(name, text, limit):
+    """``start:stop:step`` -> (start, step, number of values, unit), the numbers in the range's unit."""
     from ._bounds import range_count
 
     parts = [p.strip() for p in text.split(":")]
@@ -267,8 +301,7 @@ def _range_numbers(name, text, limit):
         raise InputError(f"{name}: range {text!r} holds a number that is not finite")
     if not step > 0 or stop < start:
         raise InputError(f"{name}: range {text!r} needs step > 0 and stop >= start")
-    count = range_count(start, stop, step, name, text, limit=limit)
-    return [start + step * k for k in range(count)], unit
+    return start, step, range_count(start, stop, step, name, text, limit=limit), unit
 
 
 def _quantities(field, item, limit):
@@ -288,6 +321,8 @@ def _quantities(field, item, limit):
         texts = [f"{_text(x)} {unit}" for x in numbers]
         for text in (texts[0], texts[-1]):  # each end by the units' grammar (a sign, an overflow)
             parse_quantity(text, kind, name)
+        if per_unit == scale:  # written in the display unit: the numbers are the column
+            return texts, numbers
         si = np.asarray(numbers) * per_unit
     else:
         si = parse_values(item, kind, name, limit=limit)  # the units' grammar, lists and all

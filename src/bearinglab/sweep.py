@@ -442,16 +442,33 @@ def _load_document_sweep(path, doc, calc):
             bearings = [catalog.get(n) for n in names]  # an unknown name is refused here, not per case
             bearing = bearings[0] if len(bearings) == 1 else None
             given["bearing"] = names if fields["bearing"].many else str(b)
+    counts = {}
+    for key, value in params.items():  # counted from the entries alone, before any value is built
+        if key not in fields:
+            _fail(path, f"parameters.{key}", f"unknown parameter of model {calc.name!r} (known: "
+                                             f"{', '.join(sorted(fields))})")
+        try:
+            counts[key] = _sweep_documents.parameter_count(fields[key], value, limit=limit)
+        except InputError as exc:
+            _fail(path, f"parameters.{key}", str(exc))
+        try:
+            _bounds.check_cases(math.prod(counts.values()), " x ".join(f"{n} {k}" for k, n in counts.items()),
+                                limit=limit)
+        except InputError as exc:
+            _fail(path, "parameters", str(exc))
     values, columns = {}, {}
     for where, entries in (("parameters", params), ("constants", constants)):
         for key, value in entries.items():
-            if key not in fields:
+            if key not in fields:  # (a constant: the parameters are checked above)
                 _fail(path, f"{where}.{key}", f"unknown parameter of model {calc.name!r} (known: "
                                              f"{', '.join(sorted(fields))})")
             if where == "constants" and key in params:
                 _fail(path, f"constants.{key}", "also in [parameters]: give it once")
             try:
                 cases, shown = _sweep_documents.parameter_values(fields[key], value, limit=limit)
+                if key == "bearing" or calc.name == "catalog" and key == "name":  # names: refused here, as
+                    for name in dict.fromkeys(n for c in cases for n in (c if isinstance(c, list) else [c])):
+                        catalog.get(name)  # the file's top-level bearing, not case by case
             except InputError as exc:
                 _fail(path, f"{where}.{key}", str(exc))
             if where == "parameters":
@@ -465,11 +482,6 @@ def _load_document_sweep(path, doc, calc):
     required = [f.name for f in calc.fields if f.required and f.name not in values and f.name not in given]
     if required:
         _fail(path, "parameters", f"model {calc.name!r} needs {', '.join(required)}")
-    try:  # from the lengths alone, before the grid is built
-        _bounds.check_cases(math.prod(len(v) for v in values.values()),
-                            " x ".join(f"{len(v)} {k}" for k, v in values.items()), limit=limit)
-    except InputError as exc:
-        _fail(path, "parameters", str(exc))
     output, executor, workers, chunk = _output_and_execution(path, doc)
     model = SweepModel(calc.name, {k: fields[k].kind for k in values}, _sweep_documents.evaluate, calc.title,
                        geometry=False)
