@@ -425,7 +425,7 @@ def _toml(table, prefix=""):
         if isinstance(value, dict):
             tables.append((f"{prefix}.{name}" if prefix else name, value))
         else:
-            lines.append(f"{name} = {json.dumps(value)}")
+            lines.append(f"{name} = {json.dumps(value, default=str)}")  # JSON's strings are TOML's
     text = "\n".join(lines) + "\n"
     for name, sub in tables:
         text += f"[{name}]\n" + _toml(sub, name)

@@ -565,8 +565,9 @@ def run_sweep(spec, *, execution=None, executor=None, workers=None, chunk_size=N
         Overrides the file's worker count. [-]
     chunk_size : int, optional
         Overrides the file's chunk size. [-]
-    memory_limit : str, optional
-        Memory limit per local worker.
+    memory_limit : str or int, optional
+        Memory limit per local worker, a size with a unit (``"2 GiB"``;
+        :func:`bearinglab.parallel.parse_memory_limit`).
     processes : bool, optional
         Local workers as processes (default) or threads.
     progress : callable or "dask", optional
