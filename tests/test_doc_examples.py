@@ -222,7 +222,7 @@ def scratch(tmp_path_factory):
 def _make_scratch(d):
     shutil.copytree(ROOT / "examples", d / "examples", ignore=shutil.ignore_patterns("*.csv", "*.parquet", "out"))
     for csv in (ROOT / "examples").rglob("*.csv"):  # inputs are kept, outputs of earlier runs are not
-        if "sweep" not in csv.parts:
+        if "sweep" not in csv.relative_to(ROOT).parts:  # (not the checkout's own path)
             target = d / csv.relative_to(ROOT)
             target.parent.mkdir(parents=True, exist_ok=True)
             shutil.copy(csv, target)

@@ -11,7 +11,8 @@ The same constants bound a request of the web calculator.
 Constants
 ---------
 MAX_CASES           cases of one command (a product of lists and ranges included)
-MAX_SWEEP_CASES     cases of one sweep (evaluated in chunks)
+MAX_SWEEP_CASES     cases of one sweep of a batch model (evaluated in chunks)
+MAX_DOCUMENT_SWEEP_CASES  cases of one sweep of any calculation, case by case (a document per case)
 MAX_RANGE_VALUES    values of one list or range, whatever the command
 MAX_ROWS            rows of the iteration table of ``axial-angle --rows``
 MAX_HARMONICS       harmonics of the spectral mask (``frequencies --harmonics``)
@@ -46,6 +47,7 @@ from .errors import InputError
 __all__ = [
     "MAX_BALLS",
     "MAX_CASES",
+    "MAX_DOCUMENT_SWEEP_CASES",
     "MAX_HARMONICS",
     "MAX_INPUT_BYTES",
     "MAX_ORDER",
@@ -70,6 +72,10 @@ __all__ = [
 MAX_CASES = 100_000
 MAX_SWEEP_CASES = 10_000_000  # a sweep keeps its inputs and outputs as columns: ~1 GB at 10^7 cases
 MAX_RANGE_VALUES = MAX_SWEEP_CASES
+# a sweep of any calculation computes one document per case, 1 to 50 ms each (life 16 ms, high-speed 25 ms,
+# a bearing set 46 ms on this 2-core machine), and keeps a row of about 50 to 100 columns (~1 kB): 10^6
+# cases are 5 to 14 hours of one core and ~1 GB of columns
+MAX_DOCUMENT_SWEEP_CASES = 1_000_000
 MAX_ROWS = 1000  # the Newton iteration of the test stand converges in under 10 rows
 MAX_HARMONICS = 1000  # vibration analysis looks at the first 10 to 20 harmonics
 MAX_SIDEBANDS = 100
@@ -91,7 +97,7 @@ MAX_WORKERS = 256  # one process per core: the largest single machines have a fe
 
 def _bigger(limit):
     """What to do instead of a run bigger than ``limit``."""
-    if limit < MAX_SWEEP_CASES:
+    if limit < MAX_DOCUMENT_SWEEP_CASES:
         return "a bigger study runs through `bearinglab sweep` on dask, in chunks"
     return "split the study into several sweeps (by one parameter's range)"
 

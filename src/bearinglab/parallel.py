@@ -10,11 +10,19 @@ Functions
 ---------
 chunk_bounds     (start, stop) of each chunk
 run_cases        evaluate ``func(**chunk_of_cases, **constants)`` over all cases
+run_chunks       the same, each chunk's output as the function returned it (a list, in case order)
 run_seeded       Monte Carlo: ``func(n, rng, **constants)`` over blocks of samples with their own seeds
 executor_client  context manager yielding a dask client for an executor (``None`` for serial)
 probe_scheduler  check that a tcp:// address answers as a dask scheduler, before dask connects
 is_local_address True for serial, local and a scheduler on this machine
+machine_cores    the cores this process may run on (the cap of ``workers`` on this machine)
+parse_memory_limit  a memory limit as written (``"512 MiB"``, ``"2 GB"``, bytes) -> bytes, checked
 Execution        the execution options (executor, workers, chunk size, progress, ...) as one value
+
+Checked before any cluster starts (:class:`Execution`): ``workers`` is at most the cores of this
+machine unless the executor is a scheduler address (whose workers run elsewhere), and
+``memory_limit`` is a size with a unit of at least :data:`MIN_MEMORY_LIMIT` (a dask worker holds
+about 100 MB before its first task) and at most this machine's memory.
 
 Every batch entry point of the models (``quasistatic.sweep``, ``runout.monte_carlo``, ``sweep.run_sweep``)
 takes one ``execution=Execution(...)`` argument instead of five keyword arguments.
@@ -33,6 +41,7 @@ import contextlib
 import dataclasses
 import math
 import os
+import re
 import sys
 from collections.abc import Callable, Mapping
 
@@ -41,12 +50,24 @@ import numpy as np
 from . import _bounds
 from .errors import InputError
 
-__all__ = ["DEFAULT_BLOCK_SIZE", "DEFAULT_CHUNK_SIZE", "Execution", "chunk_bounds", "executor_client",
-           "is_local_address", "probe_scheduler", "run_cases", "run_seeded"]
+__all__ = ["DEFAULT_BLOCK_SIZE", "DEFAULT_CHUNK_SIZE", "MIN_MEMORY_LIMIT", "Execution", "chunk_bounds",
+           "executor_client", "is_local_address", "machine_cores", "parse_memory_limit", "probe_scheduler",
+           "run_cases", "run_chunks", "run_seeded"]
 
 DEFAULT_CHUNK_SIZE = 10_000
 DEFAULT_BLOCK_SIZE = 256
 _CONNECT_TIMEOUT_S = 10.0
+#: The smallest memory limit of a local dask worker [bytes]. A worker process holds about 100 MB before
+#: its first task (measured: 68 MB idle, 95-101 MB after a test-stand sweep chunk or a life and a
+#: high-speed document, distributed 2026.8, Python 3.11), and dask pauses it at 80 % of its limit and
+#: restarts it at 95 %: below a few hundred MB a chunk of 10^4 high-speed cases (~80 MB) pauses the
+#: worker forever (``--memory-limit 1MB`` hung) or the nanny fails to start it (``100MB``).
+MIN_MEMORY_LIMIT = 512 * 2**20
+# memory units as dask and the operating system write them: decimal (kB, MB, GB, TB) and binary (KiB,
+# MiB, GiB, TiB), case-insensitive; a bare number is bytes
+_MEMORY_UNITS = {"": 1, "b": 1, "bytes": 1, "kb": 10**3, "mb": 10**6, "gb": 10**9, "tb": 10**12,
+                 "kib": 2**10, "mib": 2**20, "gib": 2**30, "tib": 2**40}
+_MEMORY = re.compile(r"^\s*((?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*([A-Za-z]*)\s*$")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -60,11 +81,14 @@ class Execution:
         ``"serial"`` (default), ``"local"`` (a ``LocalCluster`` started for the job) or a scheduler
         address ``"tcp://host:8786"``.
     workers : int, optional
-        Workers of a local cluster. [-]
+        Workers of a local cluster, at most :func:`machine_cores` when they are processes of this
+        machine (not for a scheduler address, nor for threads). [-]
     chunk_size : int, optional
         Cases per chunk (task); ``None`` takes the default of the entry point. [-]
     memory_limit : str or int, optional
-        Memory limit per local worker.
+        Memory limit per local worker: a size with a unit (``"512 MiB"``, ``"2 GB"``) or bytes, from
+        :data:`MIN_MEMORY_LIMIT` to this machine's memory (:func:`parse_memory_limit`); kept as bytes.
+        ``None`` or ``"auto"``: dask's default, the machine's memory shared by the workers.
     processes : bool, optional
         Local workers as processes (default) or threads.
     progress : callable or "dask", optional
@@ -78,6 +102,12 @@ class Execution:
     500
     >>> Execution().with_default_chunk_size(10_000).chunk_size
     10000
+    >>> Execution(executor="local", workers=1, memory_limit="1 GiB").memory_limit
+    1073741824
+    >>> Execution(executor="local", memory_limit="100MB")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    bearinglab.errors.InputError: memory-limit must be 512 MiB ... per worker (a dask worker holds about 100 MB before its first task), got '100MB'
     """
 
     executor: str = "serial"
@@ -96,13 +126,117 @@ class Execution:
             v = getattr(self, name)
             if v is not None and (isinstance(v, bool) or int(v) != v or v < 1):
                 raise InputError(f"{name.replace('_', '-')} must be an integer >= 1 [-], got {v!r}")
-        if self.workers is not None and self.workers > _bounds.MAX_WORKERS:  # processes of this machine
-            raise InputError(f"workers must be <= {_bounds.MAX_WORKERS} [-] (bearinglab's size limit), got "
-                             f"{self.workers}")
+        _check_workers(self.workers, self.executor, self.processes)
+        # checked and kept in bytes before any cluster starts: a typo is one line, not a nanny's traceback
+        object.__setattr__(self, "memory_limit", parse_memory_limit(self.memory_limit))
 
     def with_default_chunk_size(self, chunk_size):
         """This value, with ``chunk_size`` filled in where it was left ``None``."""
         return self if self.chunk_size is not None else dataclasses.replace(self, chunk_size=int(chunk_size))
+
+
+def machine_cores():
+    """The cores this process may run on: the cap of ``workers`` on this machine.
+
+    The CPU affinity of the process where the system has one (a container or ``taskset`` limits it),
+    else :func:`os.cpu_count`.
+
+    Returns
+    -------
+    int
+        At least 1. [-]
+    """
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):  # no affinity on this system (macOS, Windows)
+        return max(1, os.cpu_count() or 1)
+
+
+def _machine_memory():
+    """This machine's physical memory [bytes], or None where the system does not say."""
+    try:
+        return int(os.sysconf("SC_PAGE_SIZE")) * int(os.sysconf("SC_PHYS_PAGES"))
+    except (AttributeError, ValueError, OSError):  # Windows has no sysconf
+        return None
+
+
+def _size_text(n):
+    """Bytes as the largest binary unit that keeps them >= 1: ``512 MiB``, ``23.5 GiB``."""
+    for unit, factor in (("TiB", 2**40), ("GiB", 2**30), ("MiB", 2**20), ("KiB", 2**10)):
+        if n >= factor:
+            return f"{n / factor:.3g} {unit}"
+    return f"{n} B"
+
+
+def _check_workers(workers, executor, processes=True):
+    """``workers``: an integer >= 1, at most :data:`bearinglab._bounds.MAX_WORKERS`, and at most the cores
+    of this machine when they are processes here: not for a scheduler address (its workers run wherever
+    they were started, and this number is not used) nor for the threads of ``processes=False``."""
+    if workers is None:
+        return
+    if isinstance(workers, bool) or int(workers) != workers or workers < 1:
+        raise InputError(f"workers must be an integer >= 1 [-], got {workers!r}")
+    if workers > _bounds.MAX_WORKERS:
+        raise InputError(f"workers must be <= {_bounds.MAX_WORKERS} [-] (bearinglab's size limit), got {workers}")
+    if processes and executor in ("serial", "local") and workers > machine_cores():
+        # one process per worker: more than the cores only share them, each with its own memory
+        raise InputError(f"workers must be 1 ... {machine_cores()} [-] (the cores of this machine; a scheduler "
+                         f"given as --executor tcp://host:port is not capped), got {workers}")
+
+
+def _memory_range():
+    """The valid memory limits in words: ``512 MiB ... 23.5 GiB per worker``."""
+    total = _machine_memory()
+    return f"{_size_text(MIN_MEMORY_LIMIT)} ... {_size_text(total) if total else 'the machine memory'} per worker"
+
+
+def parse_memory_limit(value):
+    """A memory limit per local worker as written -> bytes, checked.
+
+    Parameters
+    ----------
+    value : str, int or None
+        One number and a unit: ``"512 MiB"``, ``"2 GB"``, ``"1.5GiB"`` (kB, MB, GB, TB decimal; KiB, MiB,
+        GiB, TiB binary; any case), or bytes (``"536870912"``, an int). ``None`` or ``"auto"``: dask's
+        default (the machine's memory shared by the workers).
+
+    Returns
+    -------
+    int or None
+        Bytes; None for the default.
+
+    Raises
+    ------
+    InputError
+        Not one number with a known unit, below :data:`MIN_MEMORY_LIMIT` or above this machine's
+        memory; the message names ``memory-limit``, the value and the valid range.
+
+    Examples
+    --------
+    >>> parse_memory_limit("2 GB"), parse_memory_limit("512 MiB")
+    (2000000000, 536870912)
+    >>> parse_memory_limit("abc")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    bearinglab.errors.InputError: memory-limit must be a size with a unit, 512 MiB ... per worker (e.g. '4 GiB' or '2 GB'; ...), got 'abc'
+    """
+    if value is None or (isinstance(value, str) and value.strip().lower() == "auto"):
+        return None
+    if isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool):
+        size = float(value) if isinstance(value, (float, np.floating)) else int(value)  # bytes
+    else:
+        m = _MEMORY.match(value) if isinstance(value, str) else None
+        if m is None or m.group(2).lower() not in _MEMORY_UNITS:
+            raise InputError(f"memory-limit must be a size with a unit, {_memory_range()} (e.g. '4 GiB' or '2 GB'; "
+                             f"kB, MB, GB, TB, KiB, MiB, GiB, TiB; a bare number is bytes), got {value!r}")
+        size = float(m.group(1)) * _MEMORY_UNITS[m.group(2).lower()]  # '1e400 GB' is inf: above any machine
+    total = _machine_memory()
+    if not math.isfinite(size) or size > (total or 2**62):
+        raise InputError(f"memory-limit must be {_memory_range()} (this machine's memory), got {value!r}")
+    if size < MIN_MEMORY_LIMIT:
+        raise InputError(f"memory-limit must be {_memory_range()} (a dask worker holds about 100 MB before its "
+                         f"first task), got {value!r}")
+    return math.floor(size)
 
 
 def _execution(execution, **legacy):
@@ -162,9 +296,9 @@ def executor_client(executor="serial", *, workers=None, memory_limit=None, proce
     executor : str
         ``"serial"``, ``"local"`` or a scheduler address ``"tcp://host:8786"``.
     workers : int, optional
-        Workers of the local cluster (default: the number of cores). [-]
+        Workers of the local cluster, at most :func:`machine_cores` (the default). [-]
     memory_limit : str or int, optional
-        Memory limit per local worker, e.g. ``"4GiB"``.
+        Memory limit per local worker, e.g. ``"4 GiB"`` (:func:`parse_memory_limit`).
     processes : bool, optional
         Local workers as processes (default) or as threads of this process.
     timeout : float, optional
@@ -179,17 +313,17 @@ def executor_client(executor="serial", *, workers=None, memory_limit=None, proce
     if executor == "serial":
         yield None
         return
+    if executor == "local":  # before dask is imported or any process started
+        _check_workers(workers, executor, processes)
+        limit = parse_memory_limit(memory_limit)
     import logging
 
     from distributed import Client, LocalCluster
 
     if executor == "local":
-        n = workers or os.cpu_count() or 1
-        if isinstance(n, bool) or int(n) != n or n < 1:
-            raise InputError(f"workers must be an integer >= 1 [-], got {workers!r}")
-        cluster = LocalCluster(n_workers=int(n), threads_per_worker=1, processes=processes,
-                               memory_limit=memory_limit or "auto", dashboard_address=None,
-                               silence_logs=logging.ERROR)
+        cluster = LocalCluster(n_workers=int(workers or machine_cores()), threads_per_worker=1,
+                               processes=processes, memory_limit="auto" if limit is None else limit,
+                               dashboard_address=None, silence_logs=logging.ERROR)
         try:
             with Client(cluster) as client:
                 yield client
@@ -430,6 +564,14 @@ def run_cases(func: Callable[..., Mapping[str, np.ndarray]], cases: Mapping[str,
     >>> out["y"]
     array([0., 2., 4., 6., 8.])
     """
+    ex = _execution(execution, chunk_size=chunk_size, executor=executor, workers=workers,
+                    memory_limit=memory_limit, processes=processes, progress=progress, timeout=timeout)
+    n, results = _run_chunks(_evaluate, func, cases, constants, ex)
+    return _concatenate(results, n)
+
+
+def _run_chunks(wrapper, func, cases, constants, ex):
+    """(number of cases, [wrapper(func, chunk, constants) for each chunk]) on the executor of ``ex``."""
     arrays = {k: np.asarray(v) for k, v in cases.items()}
     if not arrays:
         raise InputError("cases must hold at least one input array")
@@ -437,16 +579,51 @@ def run_cases(func: Callable[..., Mapping[str, np.ndarray]], cases: Mapping[str,
     if len(lengths) != 1:
         raise InputError(f"cases must all have the same length, got lengths {sorted(lengths)}")
     n = lengths.pop()
-    ex = _execution(execution, chunk_size=chunk_size, executor=executor, workers=workers,
-                    memory_limit=memory_limit, processes=processes, progress=progress,
-                    timeout=timeout).with_default_chunk_size(DEFAULT_CHUNK_SIZE)
-    bounds = chunk_bounds(n, ex.chunk_size)
+    bounds = chunk_bounds(n, ex.with_default_chunk_size(DEFAULT_CHUNK_SIZE).chunk_size)
     if not bounds:
         raise InputError("cases must hold at least one case")
     constants = dict(constants or {})
-    tasks = [(_evaluate, (func, {k: v[a:b] for k, v in arrays.items()}, constants)) for a, b in bounds]
-    results = _run(tasks, [b - a for a, b in bounds], ex)
-    return _concatenate(results, n)
+    tasks = [(wrapper, (func, {k: v[a:b] for k, v in arrays.items()}, constants)) for a, b in bounds]
+    return n, _run(tasks, [b - a for a, b in bounds], ex)
+
+
+def _call(func, chunk, constants):
+    return func(**chunk, **constants)
+
+
+def run_chunks(func: Callable[..., object], cases: Mapping[str, np.ndarray], *, constants=None, execution=None):
+    """Evaluate a function over many cases, chunk by chunk, and return each chunk's output as it is.
+
+    :func:`run_cases` concatenates outputs that are per-case arrays of the same names in every chunk;
+    this leaves the outputs whole, for a function whose output is another shape (columns that differ
+    between chunks, a summary per chunk). The chunks, the executors and the progress report are those
+    of :func:`run_cases`.
+
+    Parameters
+    ----------
+    func : callable
+        Pure function ``func(**chunk, **constants)``; its output is returned unchanged (it travels back
+        from a dask worker, so it must pickle).
+    cases : mapping of str to array_like
+        Per-case inputs, all of the same length along the first axis.
+    constants : mapping, optional
+        Keyword arguments passed unchanged to every chunk.
+    execution : Execution, optional
+        Executor, workers, chunk size, progress and timeout (default: serial, chunks of
+        :data:`DEFAULT_CHUNK_SIZE`).
+
+    Returns
+    -------
+    list
+        The output of each chunk, in case order.
+
+    Examples
+    --------
+    >>> run_chunks(lambda x: float(x.sum()), {"x": np.arange(5.0)}, execution=Execution(chunk_size=2))
+    [1.0, 5.0, 4.0]
+    """
+    ex = _execution(execution)
+    return _run_chunks(_call, func, cases, constants, ex)[1]
 
 
 def run_seeded(func: Callable[..., Mapping[str, np.ndarray]], n_samples, seed, *, constants=None,

@@ -1,12 +1,13 @@
-"""Parameter sweeps: a model evaluated over the Cartesian product of parameter values, in chunks.
+"""Parameter sweeps: a calculation evaluated over the Cartesian product of parameter values, in chunks.
 
 A sweep file (TOML) names a model, a bearing, parameter lists or ranges, the output and the executor::
 
-    model = "axial-angle"                 # see MODELS
+    model = "axial-angle"                 # any calculation of bearinglab.calculations.CALCULATIONS
     bearing = "4-1006095"                 # or a [bearing] table in the catalog format
     [parameters]                          # each: a value, a list, or "start:stop:step" with units
     axial_load = "0.5kgf:20kgf:0.5kgf"
     contact_angle = ["10 deg", "12 deg", "15 deg"]
+    [constants]                           # optional: one value each, the same in every case
     [output]
     file = "sweep.parquet"                # .parquet or .csv, relative to the sweep file
     [execution]                           # all optional; the command line overrides them
@@ -14,17 +15,28 @@ A sweep file (TOML) names a model, a bearing, parameter lists or ranges, the out
     workers = 2
     chunk_size = 10000
 
+Two paths. The batch models of :data:`MODELS` (``axial-angle``, ``stand-load``, ``frequencies``,
+``high-speed``) evaluate a whole chunk at once, vectorized, with their own columns and, for the test-stand
+models, the geometry variants of :data:`GEOMETRY_PARAMETERS`; a file runs through them when each of its
+parameters is theirs. Every other file, of any calculation, runs case by case
+(:mod:`bearinglab._sweep_documents`): the parameters and constants are the calculation's fields, each
+case is the document its command prints with ``--json``, and its row is that document flattened (nested
+keys joined by a dot), with the inputs as columns too. ``path = "document"`` asks for this path for a
+batch model's calculation too, ``path = "batch"`` insists on the batch model.
+
 Functions
 ---------
 MODELS          name -> SweepModel (parameters with their kinds, the chunk function, outputs)
 load_sweep      read and check a sweep file -> SweepSpec
+flatten_document  a calculation's document -> one row (the case-by-case path's rule)
 case_grid       the Cartesian product of the parameter values, flattened to per-case arrays
 run_sweep       evaluate a SweepSpec through :mod:`bearinglab.parallel`; inputs and outputs as columns
 check_file_executor  refuse a scheduler on another machine named by a file, unless confirmed
 write_table     write columns to CSV or Parquet, whole or not at all
 
 Every chunk function is pure and flags failed cases (``converged`` False and a ``failure`` reason)
-instead of raising, so one bad case does not stop a sweep.
+instead of raising, so one bad case does not stop a sweep. A file that cannot be read (an unknown
+parameter, a value of the wrong kind, too many cases) is refused whole, before any case runs.
 """
 
 from __future__ import annotations
@@ -37,7 +49,18 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import _bounds, catalog, geometry, hertz, kinematics, parallel, stand, tables
+from . import (
+    _bounds,
+    _sweep_documents,
+    catalog,
+    geometry,
+    hertz,
+    kinematics,
+    parallel,
+    stand,
+    tables,
+)
+from ._sweep_documents import flatten_document
 from .bearing import BallBearing
 from .errors import CatalogError, ConvergenceError, InputError
 from .stand import static
@@ -46,10 +69,12 @@ from .units import KGF, parse_quantity, parse_values
 __all__ = [
     "GEOMETRY_PARAMETERS",
     "MODELS",
+    "DocumentSweep",
     "SweepModel",
     "SweepSpec",
     "case_grid",
     "check_file_executor",
+    "flatten_document",
     "load_sweep",
     "register_model",
     "run_sweep",
@@ -79,17 +104,31 @@ class SweepModel(NamedTuple):
     engine: bool = False  # its chunk function takes the engine of the stand solve (stand.engine_for)
 
 
+class DocumentSweep(NamedTuple):
+    """What a sweep of a calculation, case by case, needs besides the fields of :class:`SweepSpec`."""
+
+    calculation: object  # bearinglab.calculations.Calculation
+    columns: dict  # parameter -> (input column name, the value shown for each of its values)
+    bearing_table: dict | None = None  # the file's [bearing] table, a bearing file of each document
+
+
 class SweepSpec(NamedTuple):
     """A checked sweep file."""
 
     model: SweepModel
-    bearing: BallBearing
-    parameters: dict  # name -> SI array of values
+    bearing: BallBearing | None  # None: a calculation swept over bearings, or given none
+    parameters: dict  # name -> SI array of values (batch); name -> list of the cases' values (document)
     output: Path | None
     executor: str
     workers: int | None
     chunk_size: int
-    constants: dict
+    constants: dict  # batch: the model's options; document: field -> value, the same in every case
+    document: DocumentSweep | None = None  # the case-by-case path (None: the batch model)
+
+    @property
+    def path(self):
+        """``"batch"`` (a model of :data:`MODELS`) or ``"document"`` (any calculation, case by case)."""
+        return "batch" if self.document is None else "document"
 
 
 def _geometry_arrays(n, bearing, cases):
@@ -310,8 +349,18 @@ def load_sweep(path):
     path = Path(path)
     doc = catalog.read_toml(path)
     name = doc.get("model")
-    if name not in MODELS:
-        _fail(path, "model", f"must be one of {sorted(MODELS)}, got {name!r}")
+    calculations = _calculations()
+    if not isinstance(name, str) or name not in MODELS and name not in calculations:
+        _fail(path, "model", f"must be one of {sorted(set(MODELS) | set(calculations))}, got {name!r}")
+    way = doc.get("path")
+    if way not in (None, "batch", "document"):
+        _fail(path, "path", f"must be 'batch' or 'document', got {way!r}")
+    if way == "batch" and name not in MODELS:
+        _fail(path, "path", f"{name!r} has no batch model (batch models: {', '.join(sorted(MODELS))})")
+    params = doc.get("parameters")
+    if name not in MODELS or way == "document" or way is None and isinstance(params, dict) and not all(
+            k in _batch_parameters(MODELS[name]) for k in params):
+        return _load_document_sweep(path, doc, calculations[name])
     model = MODELS[name]
     if "bearing" not in doc:
         _fail(path, "bearing", "missing: give a catalog name or a [bearing] table")
@@ -321,9 +370,7 @@ def load_sweep(path):
     params = doc.get("parameters")
     if not isinstance(params, dict) or not params:
         _fail(path, "parameters", "missing: give at least one parameter list or range")
-    kinds = dict(model.parameters)
-    if model.geometry:
-        kinds.update(GEOMETRY_PARAMETERS)
+    kinds = _batch_parameters(model)
     values = {}
     for key, value in params.items():
         if key not in kinds:
@@ -336,14 +383,110 @@ def load_sweep(path):
         _check_grid(values)
     except InputError as exc:
         _fail(path, "parameters", str(exc))
+    output, executor, workers, chunk = _output_and_execution(path, doc)
+    return SweepSpec(model, bearing, values, output, executor, workers, chunk, dict(doc.get("constants", {})))
+
+
+def _calculations():
+    from .calculations import CALCULATIONS
+
+    return CALCULATIONS
+
+
+def _batch_parameters(model):
+    """The parameters of a batch model with their kinds (the geometry variants too where it takes them)."""
+    kinds = dict(model.parameters)
+    if model.geometry:
+        kinds.update(GEOMETRY_PARAMETERS)
+    return kinds
+
+
+def _output_and_execution(path, doc):
+    """The [output] file and the [execution] table of a sweep file."""
     out = doc.get("output", {}).get("file")
     output = (path.parent / out) if out else None
     if output is not None and output.suffix not in (".csv", ".parquet"):
         _fail(path, "output.file", f"must end in .csv or .parquet, got {out!r}")
     ex = doc.get("execution", {})
     chunk = ex.get("chunk_size", parallel.DEFAULT_CHUNK_SIZE)
-    return SweepSpec(model, bearing, values, output, str(ex.get("executor", "serial")), ex.get("workers"),
-                     int(chunk), dict(doc.get("constants", {})))
+    return output, str(ex.get("executor", "serial")), ex.get("workers"), int(chunk)
+
+
+def _load_document_sweep(path, doc, calc):
+    """A sweep file of any calculation, case by case: its fields, checked and expanded before any case
+    runs; the number of cases refused above :data:`bearinglab._bounds.MAX_DOCUMENT_SWEEP_CASES`."""
+    fields = {f.name: f for f in calc.fields}
+    limit = _bounds.MAX_DOCUMENT_SWEEP_CASES
+    params = doc.get("parameters")
+    if not isinstance(params, dict) or not params:
+        _fail(path, "parameters", "missing: give at least one parameter list or range")
+    constants = doc.get("constants", {})
+    if not isinstance(constants, dict):
+        _fail(path, "constants", "must be a table of field = value")
+    given, bearing, table = {}, None, None
+    if "bearing" in doc:
+        b = doc["bearing"]
+        if "bearing" not in fields:
+            _fail(path, "bearing", f"model {calc.name!r} takes no bearing")
+        if "bearing" in params or "bearing" in constants:
+            _fail(path, "bearing", "give the bearing once: at the top, in [parameters] or in [constants]")
+        if isinstance(b, dict):
+            _, files = _sweep_documents.document_function(calc.name)
+            if not files:
+                _fail(path, "bearing", f"model {calc.name!r} takes catalog names, not a [bearing] table")
+            designation = str(b.get("designation", "sweep"))
+            bearing = catalog.bearing_from_table(b, name=designation, file=path)
+            table = dict(b, designation=designation)
+        else:
+            names = [s.strip() for s in str(b).split(",") if s.strip()] if fields["bearing"].many else [str(b)]
+            bearings = [catalog.get(n) for n in names]  # an unknown name is refused here, not per case
+            bearing = bearings[0] if len(bearings) == 1 else None
+            given["bearing"] = names if fields["bearing"].many else str(b)
+    counts = {}
+    for key, value in params.items():  # counted from the entries alone, before any value is built
+        if key not in fields:
+            _fail(path, f"parameters.{key}", f"unknown parameter of model {calc.name!r} (known: "
+                                             f"{', '.join(sorted(fields))})")
+        try:
+            counts[key] = _sweep_documents.parameter_count(fields[key], value, limit=limit)
+        except InputError as exc:
+            _fail(path, f"parameters.{key}", str(exc))
+        try:
+            _bounds.check_cases(math.prod(counts.values()), " x ".join(f"{n} {k}" for k, n in counts.items()),
+                                limit=limit)
+        except InputError as exc:
+            _fail(path, "parameters", str(exc))
+    values, columns = {}, {}
+    for where, entries in (("parameters", params), ("constants", constants)):
+        for key, value in entries.items():
+            if key not in fields:  # (a constant: the parameters are checked above)
+                _fail(path, f"{where}.{key}", f"unknown parameter of model {calc.name!r} (known: "
+                                             f"{', '.join(sorted(fields))})")
+            if where == "constants" and key in params:
+                _fail(path, f"constants.{key}", "also in [parameters]: give it once")
+            try:
+                cases, shown = _sweep_documents.parameter_values(fields[key], value, limit=limit)
+                if key == "bearing" or calc.name == "catalog" and key == "name":  # names: refused here, as
+                    for name in dict.fromkeys(n for c in cases for n in (c if isinstance(c, list) else [c])):
+                        catalog.get(name)  # the file's top-level bearing, not case by case
+            except InputError as exc:
+                _fail(path, f"{where}.{key}", str(exc))
+            if where == "parameters":
+                values[key] = cases
+                columns[key] = (_sweep_documents.input_column(fields[key]), shown)
+            elif len(cases) != 1:
+                _fail(path, f"constants.{key}", f"one value, the same in every case, got {len(cases)} (a list "
+                                                f"or a range belongs in [parameters])")
+            else:
+                given[key] = cases[0]
+    required = [f.name for f in calc.fields if f.required and f.name not in values and f.name not in given]
+    if required:
+        _fail(path, "parameters", f"model {calc.name!r} needs {', '.join(required)}")
+    output, executor, workers, chunk = _output_and_execution(path, doc)
+    model = SweepModel(calc.name, {k: fields[k].kind for k in values}, _sweep_documents.evaluate, calc.title,
+                       geometry=False)
+    return SweepSpec(model, bearing, values, output, executor, workers, chunk, given,
+                     DocumentSweep(calc, columns, table))
 
 
 def _check_grid(parameters):
@@ -422,8 +565,9 @@ def run_sweep(spec, *, execution=None, executor=None, workers=None, chunk_size=N
         Overrides the file's worker count. [-]
     chunk_size : int, optional
         Overrides the file's chunk size. [-]
-    memory_limit : str, optional
-        Memory limit per local worker.
+    memory_limit : str or int, optional
+        Memory limit per local worker, a size with a unit (``"2 GiB"``;
+        :func:`bearinglab.parallel.parse_memory_limit`).
     processes : bool, optional
         Local workers as processes (default) or threads.
     progress : callable or "dask", optional
@@ -435,8 +579,12 @@ def run_sweep(spec, *, execution=None, executor=None, workers=None, chunk_size=N
     Returns
     -------
     dict of str to ndarray
-        The inputs as :func:`bearinglab.tables.input_columns` (``axial_load_N``, ``speed_rpm``, ...),
-        then the model's outputs, case by case.
+        Batch models: the inputs as :func:`bearinglab.tables.input_columns` (``axial_load_N``,
+        ``speed_rpm``, ...), then the model's outputs, case by case. Any other calculation: the inputs
+        (:func:`bearinglab._sweep_documents.input_column`: ``fx_N``, ``speed_rpm``, ``oil``), then each
+        case's document flattened (:func:`flatten_document`; a key the document shares with an input
+        column, such as high-speed's ``axial_load_N``, holds the document's value where the case ran),
+        then ``converged`` and ``failure`` (the message the single command prints, '' where it ran).
     """
     if execution is None and executor is None:
         check_file_executor(spec, allow_remote_executor=allow_remote_executor)
@@ -446,6 +594,8 @@ def run_sweep(spec, *, execution=None, executor=None, workers=None, chunk_size=N
     if ex.workers is None and spec.workers is not None:
         ex = dataclasses.replace(ex, workers=spec.workers)
     ex = ex.with_default_chunk_size(spec.chunk_size)
+    if spec.document is not None:
+        return _run_documents(spec, ex)
     cases = case_grid(spec.parameters)
     constants = dict(spec.constants, bearing=spec.bearing)
     if spec.model.engine:  # one engine for the whole sweep, so that the chunk size does not choose it
@@ -455,6 +605,44 @@ def run_sweep(spec, *, execution=None, executor=None, workers=None, chunk_size=N
     columns = tables.input_columns(cases, dict(GEOMETRY_PARAMETERS, **spec.model.parameters))
     columns.update(out)
     return columns
+
+
+def _run_documents(spec, ex):
+    """A sweep of a calculation, case by case: the input columns, then the documents' columns."""
+    # the cases as positions in each parameter's values (a grid of small integers), then the values
+    index = {k: m.astype(np.intp) for k, m in case_grid({k: np.arange(len(v), dtype=float)
+                                                         for k, v in spec.parameters.items()}).items()}
+    cases, columns = {}, {}
+    for key, values in spec.parameters.items():
+        held = np.empty(len(values), dtype=object)  # one object per value (a list of bearing names too)
+        held[:] = [v for v in values]
+        cases[key] = held[index[key]]
+        name, shown = spec.document.columns[key]
+        columns[name] = _typed(shown)[index[key]]
+    constants = {"calculation": spec.document.calculation.name, "given": dict(spec.constants),
+                 "bearing_table": spec.document.bearing_table}
+    chunks = parallel.run_chunks(_sweep_documents.evaluate, cases, constants=constants, execution=ex)
+    outputs, computed = _sweep_documents.merge(chunks)
+    for key, column in outputs.items():
+        if key in columns:  # the document echoes an input: its value where the case ran, the input's elsewhere
+            mixed = column.astype(object) if column.dtype != columns[key].dtype else column.copy()
+            mixed[~computed] = columns[key][~computed]
+            column = mixed
+        columns[key] = column
+    return columns
+
+
+def _typed(values):
+    """A list of one kind of value as an array: floats, ints (objects beyond int64), booleans or objects."""
+    if all(isinstance(v, bool) for v in values):
+        return np.array(values, dtype=bool)
+    if all(isinstance(v, int) and not isinstance(v, bool) and -2**63 <= v < 2**63 for v in values):
+        return np.array(values, dtype=np.int64)
+    if all(isinstance(v, float) for v in values):
+        return np.array(values, dtype=float)
+    out = np.empty(len(values), dtype=object)
+    out[:] = list(values)
+    return out
 
 
 def write_table(columns, path):
@@ -471,4 +659,19 @@ def write_table(columns, path):
     if path.suffix not in (".csv", ".parquet"):
         raise InputError(f"output must end in .csv or .parquet, got {path.name!r}")
     path.parent.mkdir(parents=True, exist_ok=True)
+    arrays = {k: np.asarray(v) for k, v in columns.items()}
+    if path.suffix == ".parquet" and any(v.dtype == object and any(x is None for x in v.tolist())
+                                         for v in arrays.values()):
+        # a value a case does not have (a failed case's text) is null, not the text 'None' that
+        # tables.write_table writes for it; every other cell as tables.write_table writes it
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+
+        from ._io import atomic_output
+
+        table = pa.table({k: pa.array([None if x is None else str(x) for x in v.tolist()], type=pa.string())
+                          if v.dtype == object else v for k, v in arrays.items()})
+        with atomic_output(path, suffix=".parquet") as tmp:
+            pq.write_table(table, tmp)
+        return
     tables.write_table(columns, path)

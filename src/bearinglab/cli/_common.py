@@ -84,7 +84,7 @@ BallMaterial = Annotated[str | None, typer.Option("--ball-material", help="steel
 JsonFlag = Annotated[bool, typer.Option("--json", help="Print one JSON document on stdout.")]
 # Batch execution (bearinglab.parallel): every batch command takes these three.
 ExecutorOpt = Annotated[str | None, typer.Option("--executor", help="serial | local | tcp://host:8786 (a running dask scheduler).", rich_help_panel="Execution")]
-WorkersOpt = Annotated[int | None, typer.Option("--workers", help="Workers of the local dask cluster.", rich_help_panel="Execution")]
+WorkersOpt = Annotated[int | None, typer.Option("--workers", help="Workers of the local dask cluster (at most the cores of this machine).", rich_help_panel="Execution")]
 ChunkSizeOpt = Annotated[int | None, typer.Option("--chunk-size", help="Cases per chunk (task).", rich_help_panel="Execution")]
 
 

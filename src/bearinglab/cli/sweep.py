@@ -31,18 +31,19 @@ def sweep(
     file: Annotated[Path, typer.Argument(help="Sweep file (TOML): model, bearing, parameters, output, execution.")],
     out: Annotated[Path | None, typer.Option("--out", "-o", help="Result table, .csv or .parquet (overrides the file).")] = None,
     executor: ExecutorOpt = None, workers: WorkersOpt = None, chunk_size: ChunkSizeOpt = None,
-    memory_limit: Annotated[str | None, typer.Option("--memory-limit", help="Per local worker, e.g. '4GiB'.", rich_help_panel="Execution")] = None,
+    memory_limit: Annotated[str | None, typer.Option("--memory-limit", help="Per local worker, a size with a unit, e.g. '4 GiB' or '2 GB' (at least 512 MiB).", rich_help_panel="Execution")] = None,
     allow_remote_executor: Annotated[bool, typer.Option("--allow-remote-executor", help="Run on the scheduler the file names when it is on another machine.", rich_help_panel="Execution")] = False,
     json_out: JsonFlag = False,
 ):
-    """Evaluate a model over the Cartesian product of parameter values; write the cases as CSV or Parquet."""
+    """Evaluate any calculation over the Cartesian product of parameter values; write the cases as CSV or Parquet."""
     import numpy as np
 
     from .. import catalog as _catalog
     from .. import sweep as _sweep
     from .. import tables
     spec = _sweep.load_sweep(file)
-    add_notes(_catalog.provenance_notes(spec.bearing))  # an estimated catalog bearing says so
+    if spec.bearing is not None:  # an estimated catalog bearing says so (swept bearings: in each row)
+        add_notes(_catalog.provenance_notes(spec.bearing))
     if executor is None:  # the file's scheduler: confirmed on the command line when it is another machine
         _sweep.check_file_executor(spec, allow_remote_executor=allow_remote_executor,
                                    option="--allow-remote-executor")
@@ -56,8 +57,8 @@ def sweep(
     failed = int(n - np.count_nonzero(cols["converged"]))
     if target is not None:
         _sweep.write_table(cols, target)
-    summary = dict(inputs_echo(spec.bearing, sweep_file=str(file), model=spec.model.name,
-                               constants=spec.constants),
+    echo = {"sweep_file": str(file), "model": spec.model.name, "path": spec.path, "constants": spec.constants}
+    summary = dict(inputs_echo(spec.bearing, **echo) if spec.bearing is not None else echo,
                    cases=n, failed=failed, executor=ex.executor, output=None if target is None else str(target))
     if json_out:
         emit_json(dict(summary, results=tables.rows(cols)))
@@ -65,7 +66,8 @@ def sweep(
     reasons = {}
     for r in np.asarray(cols["failure"])[~np.asarray(cols["converged"], dtype=bool)]:
         reasons[r] = reasons.get(r, 0) + 1
-    table(f"Sweep of {spec.model.name} on {spec.bearing.designation}", ["quantity", "value"],
+    on = f" on {spec.bearing.designation}" if spec.bearing is not None else ""
+    table(f"Sweep of {spec.model.name}{on}", ["quantity", "value"],
           [["cases", n], ["failed", failed]] + [[f"  {k}", v] for k, v in reasons.items()] +
           [["executor", ex.executor], ["output", summary["output"] or "(none: give --out or [output] file)"]])
     if target is not None:
