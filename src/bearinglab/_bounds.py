@@ -31,7 +31,8 @@ Functions
 check_count         a count option: an integer within [minimum, limit]
 check_cases         the number of cases of a command (or a sweep), before the grid is built
 range_count         the number of values of a range start:stop:step, computed without building it
-read_input_bytes    the bytes of an input file: a regular file of at most MAX_INPUT_BYTES
+read_input_bytes    the bytes of an input file: a regular file of at most MAX_INPUT_BYTES (noted as an input
+                    of the run, which no output of the run may replace: ``bearinglab._io.run_files``)
 """
 
 from __future__ import annotations
@@ -41,6 +42,7 @@ import os
 import stat
 from pathlib import Path
 
+from . import _io
 from .errors import InputError
 
 __all__ = [
@@ -224,6 +226,7 @@ def read_input_bytes(path, *, limit=MAX_INPUT_BYTES):
         if info.st_size > limit:
             raise InputError(f"{path}: {info.st_size} bytes, more than the limit of {limit} bytes for an "
                              f"input file")
+        _io.note_input(path, info)  # an input of the run: no output of the run may replace it
         data = f.read(limit + 1)
     if len(data) > limit:
         raise InputError(f"{path}: more than the limit of {limit} bytes for an input file")
