@@ -50,6 +50,8 @@ import tempfile
 import threading
 from pathlib import Path
 
+from .errors import InputError
+
 # numpy is imported where it is used: the command line opens a run (run_files) before it knows whether
 # the command needs numpy, and `bearinglab --help` must not import it (tests/cli/test_cli_startup.py)
 
@@ -100,8 +102,6 @@ def _handle_signals():
 
 # ----------------------------------------------------------------------------- the files of one run
 def _input_error(message):
-    from .errors import InputError  # imported on use: errors imports nothing of the package, but keep _io light
-
     return InputError(message)
 
 

@@ -160,6 +160,7 @@ def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_
     templates.env.globals["scales"] = page.scales
     templates.env.globals["column_scales"] = page.column_scales
     templates.env.globals["value_rows"] = page.value_rows
+    templates.env.globals["case_rows"] = page.case_rows
     templates.env.globals["chain_rows"] = page.chain_rows
     templates.env.globals["chain_columns"] = page.CHAIN_COLUMNS
     templates.env.globals["percentile_rows"] = page.percentile_rows
