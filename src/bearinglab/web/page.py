@@ -18,6 +18,7 @@ case_rows       a document that is a list of cases as a table of rows (the input
 chain_rows      the mounted-clearance chain: stages x least / probable / largest (CHAIN, CHAIN_COLUMNS)
 percentile_rows the Monte Carlo study of a clearance: percentiles, mean, std, P(clearance < 0)
 render_context  form values -> what the template shows (async: the sections run in the workers)
+PAGE_ROWS       the most rows of a table of cases the page shows (the JSON and CSV hold them all)
 lists_note      the report's line on lists and ranges of the loads and speed: a table of the cases in
                 the sections that take them; the sections that take one value are left out, saying so
 to_csv          a document as CSV text (quantity, value, unit; a table of cases as rows)
@@ -49,6 +50,7 @@ __all__ = [
     "FIELDS",
     "NOISE",
     "NOT_ON_PAGE",
+    "PAGE_ROWS",
     "SECTIONS",
     "Result",
     "Section",
@@ -225,6 +227,10 @@ def sections():
 def _given(values, name):
     return bool(str(values.get(name) or "").strip())
 
+
+#: The most rows of a table of cases the page shows (a range may hold 10^5 cases: its JSON and CSV links
+#: hold every row, the page the first ones, and says so)
+PAGE_ROWS = 500
 
 #: The form's fields that some section takes as a list or range of cases (the loads and the speed)
 _LISTABLE = tuple(name for name in FIELDS
