@@ -265,8 +265,18 @@ def _single_only(section, lists):
 
 
 def lists_note(lists):
-    """The report's line on lists and ranges: how many cases each holds, and how the sections show them
-    ('' without one)."""
+    """The report's line on lists and ranges: how many cases each holds, and how the sections show them.
+
+    Parameters
+    ----------
+    lists : dict of str to int
+        The form's fields given as a list or range -> their number of values.
+
+    Returns
+    -------
+    str
+        One line; '' without a list.
+    """
     if not lists:
         return ""
     held = ", ".join(f"{FIELDS[name].title} holds {count} values" for name, count in lists.items())
