@@ -110,7 +110,7 @@ def test_a_range_whose_count_overflows_is_422(client, method):
 
 # ----------------------------------------------------------------------------- the page with lists and ranges
 def _section(html, key):
-    m = re.search(rf'<article class="card section([^"]*)" id="section-{key}">(.*?)</article>', html, re.S)
+    m = re.search(rf'<article class="card section([^"]*)" id="section-{key}">(.*?)</article>', html, re.DOTALL)
     assert m, key
     return m.group(1).strip(), m.group(2)
 
@@ -124,7 +124,7 @@ def _section(html, key):
 def test_the_page_shows_a_table_of_the_cases_of_a_list_or_range(client, query, field, count):
     r = client.get("/", params=query)
     assert r.status_code == 200, r.text[-2000:]
-    note = re.search(r'<p class="note" id="lists-note">(.*?)</p>', r.text, re.S)
+    note = re.search(r'<p class="note" id="lists-note">(.*?)</p>', r.text, re.DOTALL)
     assert note and f"{field}" in note.group(1) and f"holds {count} values" in note.group(1)
     css, body = _section(r.text, "high-speed")
     assert css == "" and f"cases ({count} rows)" in body  # the high-speed map of the cases given
@@ -142,7 +142,7 @@ def test_the_page_shows_a_list_document_as_a_table_of_cases(client):
     assert r.status_code == 200
     css, body = _section(r.text, "film")
     assert css == "" and "cases (3 rows, one per value of the list or range)" in body
-    table = re.search(r'<table class="rows" id="cases-film">(.*?)</table>', body, re.S).group(1)
+    table = re.search(r'<table class="rows" id="cases-film">(.*?)</table>', body, re.DOTALL).group(1)
     assert table.count("<tr>") == 4  # the header and three cases
     assert "speed [rpm]" in body  # the input that differs between the cases comes first
 
@@ -155,7 +155,7 @@ def test_the_page_shows_the_first_rows_of_a_long_table_and_says_so(client):
     assert r.status_code == 200
     _css, body = _section(r.text, "axial-angle")
     assert f"cases ({n} rows; the first {PAGE_ROWS} shown" in body
-    table = re.search(r'<table class="rows"[^>]*>(.*?)</table>', body, re.S).group(1)
+    table = re.search(r'<table class="rows"[^>]*>(.*?)</table>', body, re.DOTALL).group(1)
     assert table.count("<tr>") == PAGE_ROWS + 1  # the header and the first rows
 
 

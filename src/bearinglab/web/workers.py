@@ -227,7 +227,9 @@ class Pool:
         try:
             worker.conn.send(task)
             await self._wait(worker, start, budget, gone)
-            *answer, leaving = worker.conn.recv()
+            # read in a thread: a large answer (a map's JSON, tens of MB) comes through the pipe as fast as
+            # its worker, niced below the server, writes it; the event loop keeps answering light requests
+            *answer, leaving = await asyncio.to_thread(worker.conn.recv)
         except Stopped:
             await asyncio.to_thread(self._replace, worker)
             raise
