@@ -238,3 +238,16 @@ def test_an_input_read_after_an_output_was_staged_is_still_protected(tmp_path):
 def test_outside_a_run_a_write_is_put_in_place_at_once(tmp_path):
     _io.write_text(tmp_path / "a.csv", "a\n")
     assert (tmp_path / "a.csv").read_text() == "a\n"
+
+
+def test_runout_plot_onto_its_geometry_file_is_refused(tmp_path, capsys):
+    # --geometry FILE (a file with a [geometry] table: the example error file), under a figure's name
+    plots = tmp_path / "p"
+    plots.mkdir()
+    geometry = plots / "runout_contact_psi0.png"
+    shutil.copy(RUNOUT / "example1_oversize_ball.toml", geometry)
+    before = snapshot(tmp_path)
+    line = refused(capsys, "runout", "--errors", RUNOUT / "example1_oversize_ball.toml", "--geometry", geometry,
+                   "--plot", plots)
+    assert "plot:" in line and "runout_contact_psi0.png" in line and "is an input file of this command" in line
+    assert snapshot(tmp_path) == before
