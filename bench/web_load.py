@@ -5,11 +5,15 @@ process and measures, with a bounded number of requests and a bounded time:
 
 1. light requests per second and their p50/p99 latency (``/api/frequencies`` of the 6205-2RS, one
    case) with ``CONCURRENCY`` clients;
-2. the latency of light requests while 4 heavy ones run (high-speed maps of ``HEAVY_CASES`` cases);
+2. the latency of light requests while 4 heavy ones run (high-speed maps of ``HEAVY_CASES`` cases;
+   ``--big``: maps of 10^5 cases, as issue 29 measured them), against the same light requests sent the
+   same way with no heavy one running; issue 29's goal is a p99 beside the heavy maps of at most twice
+   the p99 alone (``RESULT web_light_beside_ratio``, with the machine's load during the run);
 3. the server's memory (the server process with its forkserver and workers, resident set) after 1000
    mixed requests: light, lists, errors, catalog searches and a few heavy ones.
 
-Run: ``PYTHONPATH=src python bench/web_load.py`` (``--quick`` for a short run; ``--light-only`` for
+Run: ``PYTHONPATH=src python bench/web_load.py`` (``--quick`` for a short run, ``--big`` for the
+10^5-case heavy maps; ``--light-only`` for
 the first figure alone, e.g. against another version's server with its ``src`` on ``PYTHONPATH``;
 ``--smoke`` for a few requests and a small heavy map on one worker of each pool, which
 ``tests/web/test_web_load_smoke.py`` runs so that the script cannot rot). The machine's load is
@@ -31,6 +35,9 @@ import httpx
 LIGHT = ("/api/frequencies", {"bearing": "6205-2RS", "speed": "1797 rpm"})
 HEAVY_CASES = 20_000
 HEAVY = ("/api/high-speed", {"bearing": "B218", "axial_load": "1kN:200kN:1kN", "speed": "100rpm:10000rpm:100rpm"})
+#: ``--big``: the same map at 5 times the speeds, 10^5 cases (issue 29's heavy requests)
+HEAVY_BIG = ("/api/high-speed", {"bearing": "B218", "axial_load": "1kN:200kN:1kN",
+                                 "speed": "20rpm:10000rpm:20rpm"})
 MIXED = [
     LIGHT,
     ("/api/life", {"bearing": "6205-2RS", "radial_load": "2 kN", "speed": "3000 rpm", "oil": "VG68",
@@ -117,21 +124,34 @@ async def _light_rate(url, n):
     return n / took, latencies, statuses
 
 
-async def _light_beside_heavy(url, n_light, heavy_request=HEAVY):
+async def _light_sequence(c, url, n_light):
+    """``n_light`` light requests one after the other, 50 ms apart: their latencies."""
+    latencies = []
+    for _ in range(n_light):
+        t = time.perf_counter()
+        r = await c.get(url + LIGHT[0], params=LIGHT[1])
+        latencies.append(time.perf_counter() - t)
+        assert r.status_code == 200
+        await asyncio.sleep(0.05)
+    return latencies
+
+
+async def _light_alone(url, n_light):
+    """The light requests of :func:`_light_beside_heavy`, sent the same way with no heavy one running."""
     async with httpx.AsyncClient(timeout=120) as c:
+        return await _light_sequence(c, url, n_light)
+
+
+async def _light_beside_heavy(url, n_light, heavy_request=HEAVY):
+    async with httpx.AsyncClient(timeout=300) as c:
         heavy = [asyncio.create_task(c.get(url + heavy_request[0], params=heavy_request[1]))
                  for _ in range(4)]
         await asyncio.sleep(1.0)
-        latencies = []
-        for _ in range(n_light):
-            t = time.perf_counter()
-            r = await c.get(url + LIGHT[0], params=LIGHT[1])
-            latencies.append(time.perf_counter() - t)
-            assert r.status_code == 200
-            await asyncio.sleep(0.05)
+        latencies = await _light_sequence(c, url, n_light)
+        load = os.getloadavg()  # the machine's load while the heavy maps and the light requests ran
         running = sum(not h.done() for h in heavy)
         statuses = [(await h).status_code for h in heavy]
-    return latencies, running, statuses
+    return latencies, running, statuses, load
 
 
 async def _mixed(url, n):
@@ -164,9 +184,9 @@ def _cases(request):
     return count
 
 
-def main(quick=False, light_only=False, smoke=False):
+def main(quick=False, light_only=False, smoke=False, big=False):
     n_light, n_beside, n_mixed, n_warm = (200, 10, 100, 100) if quick else (1500, 40, 1000, 100)
-    heavy, workers = HEAVY, None
+    heavy, workers = (HEAVY_BIG if big else HEAVY), None
     if smoke:  # the script's every path on a few requests (a test, not a measurement)
         (n_light, n_beside, n_mixed, n_warm), heavy, workers = SMOKE_COUNTS, SMOKE_HEAVY, (1, 1)
     port = _free_port()
@@ -182,11 +202,17 @@ def main(quick=False, light_only=False, smoke=False):
               f"p50={_pct(lat, 0.5) * 1e3:.1f}ms p99={_pct(lat, 0.99) * 1e3:.1f}ms")
         if light_only:  # e.g. to compare with another version of the server under the same load
             return 0
-        beside, running, heavy_status = asyncio.run(_light_beside_heavy(url, n_beside, heavy))
+        alone = asyncio.run(_light_alone(url, n_beside))
+        print(f"RESULT web_light_alone n={n_beside} p50={statistics.median(alone) * 1e3:.1f}ms "
+              f"p99={_pct(alone, 0.99) * 1e3:.1f}ms max={max(alone) * 1e3:.1f}ms")
+        beside, running, heavy_status, load = asyncio.run(_light_beside_heavy(url, n_beside, heavy))
         print(f"RESULT web_light_beside_4_heavy n={n_beside} p50={statistics.median(beside) * 1e3:.1f}ms "
               f"p99={_pct(beside, 0.99) * 1e3:.1f}ms max={max(beside) * 1e3:.1f}ms "
               f"(heavy: {_cases(heavy)} cases each, {running} still running after the light ones, "
               f"status {heavy_status})")
+        print(f"RESULT web_light_beside_ratio p99={_pct(beside, 0.99) / _pct(alone, 0.99):.2f} "
+              f"p50={statistics.median(beside) / statistics.median(alone):.2f} (goal: p99 <= 2; load average "
+              f"during the run {load[0]:.1f} {load[1]:.1f} {load[2]:.1f})")
         mixed = asyncio.run(_mixed(url, n_mixed))
         time.sleep(1.0)
         print(f"RESULT web_memory after={_rss_mb(proc.pid):.0f}MB start={start_mb:.0f}MB "
@@ -200,4 +226,4 @@ def main(quick=False, light_only=False, smoke=False):
 
 if __name__ == "__main__":
     sys.exit(main(quick="--quick" in sys.argv, light_only="--light-only" in sys.argv,
-                  smoke="--smoke" in sys.argv))
+                  smoke="--smoke" in sys.argv, big="--big" in sys.argv))

@@ -1,7 +1,7 @@
 """Smoke test of the web load benchmark (bench/web_load.py): it runs and prints well-formed figures.
 
 ``--smoke`` runs every path of the script (the server in its own process, light requests, light ones
-beside 4 heavy maps, mixed requests and the memory) on a few requests and a 15-case map with one worker
+alone and beside 4 heavy maps and their ratio, mixed requests and the memory) on a few requests and a 15-case map with one worker
 per pool, so that the benchmark cannot rot; the figures themselves are measured by ``make bench`` and
 written in BENCHMARKS.md.
 """
@@ -16,7 +16,7 @@ ROOT = Path(__file__).resolve().parents[2]
 NUMBER = r"(\d+(?:\.\d+)?)"
 
 
-def test_the_web_load_benchmark_prints_its_three_figures():
+def test_the_web_load_benchmark_prints_its_figures():
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(
         [str(ROOT / "src"), *filter(None, [os.environ.get("PYTHONPATH")])]))
     run = subprocess.run([sys.executable, str(ROOT / "bench" / "web_load.py"), "--smoke"], env=env,
@@ -29,6 +29,14 @@ def test_the_web_load_benchmark_prints_its_three_figures():
     assert light, out
     rate, p50, p99 = map(float, light.groups())
     assert rate > 0 and 0 < p50 <= p99
+    alone = re.search(rf"^RESULT web_light_alone n=3 p50={NUMBER}ms p99={NUMBER}ms max={NUMBER}ms$", out,
+                      re.MULTILINE)
+    assert alone, out
+    assert 0 < float(alone.group(1)) <= float(alone.group(2)) <= float(alone.group(3))
+    ratio = re.search(rf"^RESULT web_light_beside_ratio p99={NUMBER} p50={NUMBER} \(goal: p99 <= 2; load "
+                      rf"average during the run {NUMBER} {NUMBER} {NUMBER}\)$", out, re.MULTILINE)
+    assert ratio, out
+    assert float(ratio.group(1)) > 0 and float(ratio.group(2)) > 0
     beside = re.search(rf"^RESULT web_light_beside_4_heavy n=3 p50={NUMBER}ms p99={NUMBER}ms "
                        rf"max={NUMBER}ms \(heavy: 15 cases each, [0-4] still running after the light "
                        r"ones, status \[(.*)\]\)$", out, re.MULTILINE)

@@ -8,7 +8,7 @@ prints. A bad input raises :class:`~.fields.RequestError`, which each boundary w
 
 Functions
 ---------
-parse        calculation name and values as given -> Parsed (checked values, cases, weight)
+parse        calculation name and values as given -> Parsed (checked values, cases, weight, heavy)
 run          Parsed -> the calculation's JSON document (the command line's ``--json`` document)
 figure_svg   Parsed -> the calculation's figure as SVG text ('' where it has none)
 argv         Parsed -> the command line's words and options for the same request
@@ -17,6 +17,7 @@ Classes and constants
 ---------------------
 Parsed, Calculation, Field, RequestError, RunFailure
 CALCULATIONS, CASE_LIMIT, TIME_BUDGET, BODY_LIMIT, DOCUMENT_LIMIT (from :mod:`.registry`)
+LIGHT_WEIGHT (the most estimated work a request may have in the web's light pool)
 """
 
 from __future__ import annotations
@@ -33,6 +34,7 @@ __all__ = [
     "CALCULATIONS",
     "CASE_LIMIT",
     "DOCUMENT_LIMIT",
+    "LIGHT_WEIGHT",
     "TIME_BUDGET",
     "Calculation",
     "Field",
@@ -48,6 +50,12 @@ __all__ = [
 ]
 
 
+#: The most work (:attr:`Parsed.weight`, in single cases) a request may have and still run in the light pool
+#: of the web: a duty cycle of 50 steps takes ~30 ms (0.5 ms a step, 6208), like one light case with its
+#: overhead; a heavier one goes to the heavy pool.
+LIGHT_WEIGHT = 50
+
+
 class Parsed(NamedTuple):
     """A checked request."""
 
@@ -61,12 +69,25 @@ class Parsed(NamedTuple):
     """How many cases the request holds (the product of a grid, the longest list, mask lines ...)."""
 
     @property
+    def weight(self):
+        """The request's work estimated from its parsed size, in single cases: its cases (the product of
+        its lists and ranges, a runout's positions, a Monte Carlo study's samples, a mask's lines) times
+        the steps of a duty cycle (counted by their ``speed`` keys, one per step, without reading the
+        document)."""
+        weight = max(1, self.cases)
+        cycle = self.values.get("duty_cycle")
+        if isinstance(cycle, str):
+            weight *= max(1, cycle.count("speed"))
+        return weight
+
+    @property
     def heavy(self):
-        """Whether the request may take long: a list or range of more than one value, or a heavy
-        calculation (runout)."""
+        """Whether the request may take long: a list or range of more than one value, a heavy
+        calculation (runout), or a :attr:`weight` over :data:`LIGHT_WEIGHT` (a duty cycle of many
+        steps): the web runs it in the heavy pool, so that it never holds a light worker."""
         lists = [v for f in self.calculation.fields if f.many and f.kind != "text"
                  for v in [self.values.get(f.name)] if v is not None]
-        return self.calculation.heavy or any(len(v) > 1 for v in lists)
+        return self.calculation.heavy or any(len(v) > 1 for v in lists) or self.weight > LIGHT_WEIGHT
 
 
 def _cases(calc, values, given, limit):

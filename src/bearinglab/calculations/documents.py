@@ -100,9 +100,13 @@ def _document(name, text):
     """A posted JSON or TOML document as a dict; one that refers to a file is refused."""
     import tomllib
 
-    text = text.strip()
-    try:
-        doc = json.loads(text) if text.startswith("{") else tomllib.loads(text)
+    from .._bounds import MAX_DEPTH, parse_document
+
+    try:  # a repeated JSON key, or nesting deeper than MAX_DEPTH, is refused (bearinglab._bounds)
+        doc = parse_document(text, "the posted document")
+    except InputError as exc:
+        raise RequestError(name, "...", f"a JSON or TOML document, keys once, at most {MAX_DEPTH} levels deep",
+                           f"{{name}}: {exc}") from None
     except (ValueError, tomllib.TOMLDecodeError) as exc:
         raise RequestError(name, "...", "a JSON or TOML document",
                            f"{{name}}: not a JSON or TOML document ({exc})") from None

@@ -7,7 +7,8 @@ model), or of a duty cycle (:func:`bearinglab.life.duty_cycle_life`). The column
 are null and a warning says why; the ISO/TS 16281 fields are still given. The command line
 (:mod:`bearinglab.cli.life`) and the web compute the same document with :func:`document`.
 
-Duty cycle (the field ``duty_cycle``: TOML, or the same tables as JSON; the time shares sum to 1)::
+Duty cycle (the field ``duty_cycle``: TOML, or the same tables as JSON; the time shares sum to 1; at most
+:data:`bearinglab._bounds.MAX_DUTY_CYCLE_STEPS` steps, 10 000, on the command line and the web alike)::
 
     [[step]]
     fx = "2 kN"          # any of fx, fy, fz, mx, my (radial_load = fx, axial_load = fz)
@@ -199,17 +200,26 @@ def _reliability(percent):
 
 
 def _steps_of(text, source):
-    """The ``[[step]]`` tables of a duty cycle given as TOML or JSON text."""
+    """The ``[[step]]`` tables of a duty cycle given as TOML or JSON text; their number is checked
+    (:data:`bearinglab._bounds.MAX_DUTY_CYCLE_STEPS`) before any step is read."""
+    import re
     import tomllib
 
-    stripped = text.strip()
-    try:
-        doc = json.loads(stripped) if stripped.startswith("{") else tomllib.loads(text)
+    from .._bounds import check_steps, parse_document
+
+    # each [[step]] header is one step: a file with too many is refused before it is parsed (a 16 MB file
+    # takes seconds to parse); the parsed count is checked below, whatever the syntax
+    check_steps(len(re.findall(r"(?m)^[ \t]*\[\[[ \t]*step[ \t]*\]\]", text)), f"duty-cycle: {source}")
+    try:  # a repeated JSON key and a document nested too deeply are refused too
+        doc = parse_document(text, source)
+    except InputError as exc:
+        raise InputError(f"duty-cycle: {exc}") from None
     except (ValueError, tomllib.TOMLDecodeError) as exc:
         raise InputError(f"duty-cycle: {source}: {exc}") from None
     steps = doc.get("step") if isinstance(doc, dict) else None
     if not isinstance(steps, list) or not steps or not all(isinstance(s, dict) for s in steps):
         raise InputError(f"duty-cycle: {source}: needs [[step]] tables with loads, speed and time")
+    check_steps(len(steps), f"duty-cycle: {source}")
     return steps
 
 

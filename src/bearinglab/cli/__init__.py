@@ -58,6 +58,7 @@ import typer
 import typer.main
 
 from .. import __version__
+from .._io import run_files
 from ..calculations.fields import RequestError
 from ..errors import ConvergenceError, InputError
 from . import (
@@ -286,7 +287,9 @@ def main(argv=None) -> int:
     reset_notes()  # the provenance notes of the previous command's bearings
     setup_streams()  # no UnicodeEncodeError on a cp1252 or ASCII stream: the ASCII spelling
     try:
-        with warnings.catch_warnings():
+        # one run: the files it reads are its inputs, and its outputs, checked against every one of them,
+        # are put in place together when it ends (bearinglab._io.run_files: inputs are never replaced)
+        with warnings.catch_warnings(), run_files():
             # numpy's floating-point warnings are no message for a user: every result is checked finite
             warnings.simplefilter("ignore", RuntimeWarning)
             words = sys.argv[1:] if argv is None else list(argv)

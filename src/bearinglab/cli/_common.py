@@ -339,7 +339,10 @@ def check_not_input(path, what, inputs=()):
     """
     import os
 
+    from .._io import name_output
+
     path = Path(path)
+    name_output(path, what)  # the run's last check of its outputs (bearinglab._io) names the option too
     env = os.environ.get("BEARINGLAB_CATALOG")
     for source in [*inputs, env or None]:
         if source is None or str(source) == "":
@@ -360,10 +363,13 @@ def check_not_input(path, what, inputs=()):
 def check_output_directory(path, what):
     """An output directory, checked before anything is computed: the command creates it (or replaces what
     it wrote there before), but its parent must exist, as the directory of an output file must."""
+    from .._io import name_output
+
     path = Path(path)
     check_directory(path, what)
     if path.exists() and not path.is_dir():
         raise InputError(f"{what}: {str(path)!r} is a file; give a directory")
+    name_output(path, what)  # every file written into it is checked against the run's inputs, named so
     return path
 
 

@@ -410,6 +410,9 @@ def monte_carlo_command(
     if plot is not None:
         check_output_directory(plot, "plot")
     _check_write_worst(write_worst, worst_by, worst_dir)
+    if write_worst is not None:  # the files written there are checked against the run's inputs, named so
+        from .._io import name_output
+        name_output(worst_dir or Path("."), "worst-dir")
     if worst_dir is not None and not worst_dir.is_dir():  # never created: a typo must not make a tree
         if worst_dir.exists():
             raise InputError(f"worst-dir: {str(worst_dir)!r} is a file; give a directory")

@@ -24,6 +24,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .._bounds import check_steps
 from .._validate import as_float, check_nonnegative, check_positive
 from ..errors import InputError
 from ..ratings import dynamic, lubrication, reference, static
@@ -396,7 +397,8 @@ def duty_cycle_life(bearing, loads, shaft_speeds, time_shares, **options):
     shaft_speeds : array_like
         (k,) speeds, > 0. [rad/s]
     time_shares : array_like
-        (k,) shares of the time, >= 0, summing to 1. [-]
+        (k,) shares of the time, >= 0, summing to 1. [-] At most
+        :data:`bearinglab._bounds.MAX_DUTY_CYCLE_STEPS` (10 000) steps.
     **options : optional
         Passed to :func:`rating_life` (lubricant, contamination, reliability, load distribution ...);
         array options broadcast along the steps.
@@ -420,6 +422,8 @@ def duty_cycle_life(bearing, loads, shaft_speeds, time_shares, **options):
     >>> print(f"{d.basic_rating_life / 1e6:.1f} Mrev")
     612.8 Mrev
     """
+    shape = np.shape(shaft_speeds)
+    check_steps(shape[0] if shape else 1, "shaft_speeds")  # the steps are bounded before any step's work
     n = check_positive("shaft_speeds", shaft_speeds, "rad/s")
     t = check_nonnegative("time_shares", time_shares, "-")
     if n.ndim != 1 or t.shape != n.shape or np.shape(loads)[:-1] != n.shape:

@@ -14,13 +14,10 @@ figures drawn by :mod:`bearinglab.plots.friction` and the page marked up by :mod
 from __future__ import annotations
 
 import io
-import os
-import shutil
-import tempfile
 from pathlib import Path
 from typing import NamedTuple
 
-from .._io import csv_text, json_text, write_text
+from .._io import atomic_directory, csv_text, json_text, write_text
 from ..errors import InputError
 from ..lab import presentation
 from ..plots.friction import fitted_lines
@@ -111,6 +108,14 @@ def _is_replaceable(target):
     return not any(target.iterdir()) or (target / MARKER).is_file()
 
 
+def _check_replaceable(target):
+    if not _is_replaceable(target):
+        raise InputError(
+            f"out: {target} exists and is not a bearinglab report directory; give a new or empty "
+            f"directory (a previous report is replaced)"
+        )
+
+
 def write_report(result, out_dir, *, generated=None):
     """Write the report of an analysed session into a directory, atomically.
 
@@ -131,7 +136,8 @@ def write_report(result, out_dir, *, generated=None):
     Raises
     ------
     InputError
-        ``out_dir`` exists and is a file or a directory that is not a previous report.
+        ``out_dir`` exists and is a file or a directory that is not a previous report; or, in a
+        command's run, it is or holds one of the run's input files (the session, its measurements).
 
     Notes
     -----
@@ -139,25 +145,10 @@ def write_report(result, out_dir, *, generated=None):
     end; a failure at any point removes the temporary directory and leaves the target untouched.
     """
     target = Path(out_dir)
-    if not _is_replaceable(target):
-        raise InputError(
-            f"out: {target} exists and is not a bearinglab report directory; give a new or empty "
-            f"directory (a previous report is replaced)"
-        )
-    parent = target.parent if str(target.parent) else Path(".")
-    parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{target.name}.tmp-", dir=parent))
-    try:
-        umask = os.umask(0o022)
-        os.umask(umask)
-        os.chmod(
-            tmp, 0o777 & ~umask
-        )  # mkdtemp makes it private; a report directory is an ordinary one
+    # built in a temporary directory and put in place whole; inside a command's run (bearinglab._io) it
+    # is refused when it is, or holds, an input the run read (the session, its measurements)
+    with atomic_directory(target, option="out", replaceable=_check_replaceable) as tmp:
         figure_files, table_files = _write_files(tmp, result, generated)
-        _swap_into_place(tmp, target)
-    except BaseException:
-        shutil.rmtree(tmp, ignore_errors=True)
-        raise
     return ReportFiles(
         target,
         target / "report.html",
@@ -196,24 +187,3 @@ def _write_files(directory, result, generated):
         "bearinglab friction-lab report; this directory is replaced on the next run\n",
     )
     return figure_files, table_files
-
-
-def _swap_into_place(tmp, target):
-    if not _is_replaceable(target):  # checked again: something may have appeared meanwhile
-        raise InputError(f"out: {target} exists and is not a bearinglab report directory")
-    if not target.exists():
-        os.rename(tmp, target)
-        return
-    if not any(target.iterdir()):
-        target.rmdir()
-        os.rename(tmp, target)
-        return
-    old = Path(tempfile.mkdtemp(prefix=f".{target.name}.old-", dir=tmp.parent))
-    old.rmdir()
-    os.rename(target, old)
-    try:
-        os.rename(tmp, target)
-    except BaseException:
-        os.rename(old, target)  # put the previous report back
-        raise
-    shutil.rmtree(old, ignore_errors=True)

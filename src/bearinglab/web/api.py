@@ -10,7 +10,7 @@ Endpoints
 ---------
 ENDPOINTS     URL path -> calculation name (``/api/friction`` -> ``friction``)
 query_values  the query parameters of a GET as the calculation's values (a repeated one is an error)
-body_values   the JSON body of a POST as the calculation's values
+body_values   the JSON body of a POST as the calculation's values (a repeated key is an error, as in a query)
 error_body    the JSON body of a failed call: ``{"detail", "parameter", "error"}``
 web_error     a RequestError worded for the web: ``(status, body)``
 model         the pydantic model of a calculation's fields (the OpenAPI schema of its body)
@@ -21,7 +21,6 @@ Deprecated (removed in the next release): ApiResult, call, options, parameter_of
 
 from __future__ import annotations
 
-import json
 import re
 import warnings
 from functools import cache
@@ -148,8 +147,16 @@ def body_values(endpoint, raw):
     -------
     dict
     """
-    try:
-        values = json.loads(raw or b"{}")
+    from .._bounds import RepeatedKey, parse_json
+    from ..errors import InputError
+
+    try:  # strictly: a key given twice is refused, as in a query; so is a deeply nested body
+        values = parse_json(raw or b"{}", "the body")
+    except RepeatedKey as exc:
+        raise RequestError(exc.key, None, "one value",
+                           "{name}: given more than once; give it once (a list is one value: '1 kN, 2 kN')") from None
+    except InputError as exc:
+        raise RequestError(None, None, "a JSON object of parameters", str(exc)) from None
     except (ValueError, UnicodeDecodeError) as exc:
         raise RequestError(None, None, "a JSON object", f"the body is not JSON ({exc})") from None
     if not isinstance(values, dict):

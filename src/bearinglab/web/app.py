@@ -13,8 +13,11 @@ Limits: a request holds at most ``case_limit`` cases, runs at most ``time_budget
 worker process is stopped and the answer is 503 naming the budget), and its body is at most
 :data:`bearinglab.calculations.BODY_LIMIT` bytes. Calculations run in worker processes
 (:mod:`bearinglab.web.workers`): a light pool for single cases and a heavy pool for lists, ranges,
-runout and a clearance Monte Carlo, so that a light request never waits behind heavy ones; a client
-that goes away stops its work.
+runout, a clearance Monte Carlo and any request whose weight, estimated from its parsed size before it is
+sent (:attr:`bearinglab.calculations.Parsed.weight`: cases, duty-cycle steps, samples, positions), is over
+:data:`bearinglab.calculations.LIGHT_WEIGHT`, so that a light request never waits behind heavy ones; the
+heavy workers run at a lower OS priority (``os.nice``), so that light requests keep a core; a client that
+goes away stops its work.
 
 Functions
 ---------
@@ -35,12 +38,20 @@ from fastapi.templating import Jinja2Templates
 from .. import __version__, calculations, tables
 from ..calculations import BODY_LIMIT, CALCULATIONS, CASE_LIMIT, TIME_BUDGET, RequestError
 from . import api, page
-from .workers import MEMORY_BOUND_MB, Pool, Stopped
+from .workers import HEAVY_NICENESS, MEMORY_BOUND_MB, Pool, Stopped
 
 __all__ = ["create_app"]
 
 _HERE = Path(__file__).parent
 _IN_SERVER = ("catalog", "catalog-search")  # built here from the catalog: no worker needed
+
+
+# the last line of defence of the request's checks, worded as the command line words it: 422, never a 500
+_TOO_BIG = {
+    OverflowError: "a number of the input is too large to compute with (overflow); check the values and units given",
+    RecursionError: "the input is nested too deeply to read",
+    MemoryError: "the request is too big for this server's memory; ask for fewer cases",
+}
 
 
 def _json(status, document):
@@ -91,7 +102,7 @@ class _Server:
 
     def __init__(self, light, heavy, case_limit, time_budget, memory_bound_mb):
         self.light = Pool(light, memory_bound_mb=memory_bound_mb)
-        self.heavy = Pool(heavy, queue=16, memory_bound_mb=memory_bound_mb)
+        self.heavy = Pool(heavy, queue=16, memory_bound_mb=memory_bound_mb, niceness=HEAVY_NICENESS)
         self.case_limit, self.time_budget = case_limit, time_budget
 
     async def compute(self, name, given, request=None, *, what="document"):
@@ -103,6 +114,9 @@ class _Server:
                 return 200, tables.json_text(doc) if what == "json" else doc
         except RequestError as exc:
             return api.web_error(exc)
+        except (OverflowError, RecursionError, MemoryError) as exc:  # a size the request's checks let through
+            return 422, api.error_body(_TOO_BIG[type(exc)], None, "input" if type(exc) is not MemoryError
+                                       else "limit")
         # a Monte Carlo of the clearance (up to 10^5 samples) is heavy though it has no list
         study = parsed.values.get("monte_carlo") is not None
         pool = self.heavy if (parsed.heavy or study or what == "figure") else self.light
@@ -160,6 +174,8 @@ def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_
     templates.env.globals["scales"] = page.scales
     templates.env.globals["column_scales"] = page.column_scales
     templates.env.globals["value_rows"] = page.value_rows
+    templates.env.globals["case_rows"] = page.case_rows
+    templates.env.globals["page_rows"] = page.PAGE_ROWS
     templates.env.globals["chain_rows"] = page.chain_rows
     templates.env.globals["chain_columns"] = page.CHAIN_COLUMNS
     templates.env.globals["percentile_rows"] = page.percentile_rows

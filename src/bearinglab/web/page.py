@@ -14,9 +14,13 @@ SECTIONS        the sections, in the order shown
 NOT_ON_PAGE     registered calculations without a section of their own, and why
 sections        SECTIONS, then a left-out line for any registered calculation the page lacks
 value_rows      a document's table of values: label, text, unit (scalars, ranges, nested numbers)
+case_rows       a document that is a list of cases as a table of rows (the inputs that differ first)
 chain_rows      the mounted-clearance chain: stages x least / probable / largest (CHAIN, CHAIN_COLUMNS)
 percentile_rows the Monte Carlo study of a clearance: percentiles, mean, std, P(clearance < 0)
 render_context  form values -> what the template shows (async: the sections run in the workers)
+PAGE_ROWS       the most rows of a table of cases the page shows (the JSON and CSV hold them all)
+lists_note      the report's line on lists and ranges of the loads and speed: a table of the cases in
+                the sections that take them; the sections that take one value are left out, saying so
 to_csv          a document as CSV text (quantity, value, unit; a table of cases as rows)
 quantity        a result key with its unit suffix -> a readable label and unit
 number          a value as the page shows it: 6 significant digits, float noise as 0
@@ -46,13 +50,16 @@ __all__ = [
     "FIELDS",
     "NOISE",
     "NOT_ON_PAGE",
+    "PAGE_ROWS",
     "SECTIONS",
     "Result",
     "Section",
+    "case_rows",
     "chain_rows",
     "column_scales",
     "compute",
     "figure_svg",
+    "lists_note",
     "number",
     "percentile_rows",
     "quantity",
@@ -221,9 +228,71 @@ def _given(values, name):
     return bool(str(values.get(name) or "").strip())
 
 
-def _left_out(section, values):
+#: The most rows of a table of cases the page shows (a range may hold 10^5 cases: its JSON and CSV links
+#: hold every row, the page the first ones, and says so)
+PAGE_ROWS = 500
+
+#: The form's fields that some section takes as a list or range of cases (the loads and the speed)
+_LISTABLE = tuple(name for name in FIELDS
+                  if any(f.name == name and f.many and f.kind != "text"
+                         for calc in CALCULATIONS.values() for f in calc.fields))
+
+
+def _lists(values):
+    """The form's fields given as a list or a range of more than one value: name -> its count (a value
+    that does not read is no list: the sections name its error)."""
+    import dataclasses
+
+    from ..calculations import CASE_LIMIT, count_values
+
+    out = {}
+    for name in _LISTABLE:
+        if not _given(values, name):
+            continue
+        try:
+            count = count_values(dataclasses.replace(FIELDS[name], many=True), str(values[name]))
+        except Exception:  # noqa: BLE001 -- a value that does not read: the sections name its error
+            count = 1
+        if count > 1:
+            out[name] = min(count, CASE_LIMIT + 1)
+    return out
+
+
+def _single_only(section, lists):
+    """The fields given as a list that the section's calculation takes one value of (its names)."""
+    calc = CALCULATIONS[section.calculation]
+    return [f.name for f in calc.fields if f.name in lists and not f.many]
+
+
+def lists_note(lists):
+    """The report's line on lists and ranges: how many cases each holds, and how the sections show them.
+
+    Parameters
+    ----------
+    lists : dict of str to int
+        The form's fields given as a list or range -> their number of values.
+
+    Returns
+    -------
+    str
+        One line; '' without a list.
+    """
+    if not lists:
+        return ""
+    held = ", ".join(f"{FIELDS[name].title} holds {count} values" for name, count in lists.items())
+    return (f"Lists and ranges: {held}. The sections that take a list show a table of the cases, one row "
+            f"per case; the sections that take one value at a time are left out and say so (give one "
+            f"value to see them).")
+
+
+def _left_out(section, values, lists=None):
     """Why a section does not apply to the input (one line), or '' when it does."""
     has = {k: _given(values, k) for k in values}
+    single = _single_only(section, lists or {})
+    if single:
+        named = " and ".join(FIELDS[name].title for name in single)
+        return (f"Left out: {section.title.lower()} takes one value of {named}, not a list or range; the "
+                f"sections with a table of cases take the list.")
     any_load = any(has.get(k) for k in _LOADS)
     if section.key == "high-speed" and not (has.get("axial_load") and has.get("speed")):
         return "Left out: the high-speed model solves a thrust at speed; give an axial load and a speed."
@@ -333,8 +402,8 @@ def _label(name):
     return field.title if field else ("Bearing" if name == "bearing" else name.replace("_", " "))
 
 
-async def _section(section, values, server):
-    reason = _left_out(section, values)
+async def _section(section, values, server, lists=None):
+    reason = _left_out(section, values, lists)
     if reason:
         return {"section": section, "document": None, "message": "", "left_out": reason, "figure": "",
                 "query": {}}
@@ -365,13 +434,14 @@ async def _section(section, values, server):
               "message": "" if status == 200 else doc["detail"], "figure": "", "query": query,
               "parameter": None if status == 200 else doc.get("parameter"), "error": doc}
     if status == 200 and section.key in ("high-speed", "load-distribution"):
-        result["figure"] = await _figure(section, query, server)
+        result["figure"] = await _figure(section, query, server, lists or {})
     return result
 
 
-async def _figure(section, query, server):
+async def _figure(section, query, server, lists=None):
     fig_query = dict(query)
-    if section.key == "high-speed":  # the map around the case: a tenth to twice the thrust
+    if section.key == "high-speed" and not {"axial_load", "speed"} & set(lists or {}):
+        # one case: the map around it, a tenth to twice the thrust (lists: the map of the cases given)
         try:
             from ..units import parse_quantity
 
@@ -412,13 +482,15 @@ async def render_context(values, server):
     -------
     dict
         ``fields``, ``groups``, ``values``, ``submitted``, ``results`` (one dict per section),
-        ``errors`` (field -> message in the page's words), ``inputs``, ``date``, ``links``.
+        ``errors`` (field -> message in the page's words), ``inputs``, ``date``, ``links``,
+        ``lists_note`` (the cases of a list or range, and how the sections show them; '' without one).
     """
     values = {k: v for k, v in values.items() if k in FIELDS or k == "bearing"}
     submitted = any(_given(values, k) for k in values)
+    lists = _lists(values) if submitted else {}
     results = []
     if submitted:
-        results = list(await asyncio.gather(*(_section(s, values, server) for s in sections())))
+        results = list(await asyncio.gather(*(_section(s, values, server, lists) for s in sections())))
     errors = {}
     for r in results:
         name = r.get("parameter")
@@ -436,6 +508,7 @@ async def render_context(values, server):
     return {
         "fields": FIELDS, "groups": _GROUPS, "examples": _EXAMPLES, "values": values,
         "submitted": submitted, "results": results, "errors": errors, "inputs": _inputs(values),
+        "lists_note": lists_note(lists),
         "date": datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC"),
         "geometry_open": not values.get("bearing") or any(
             _given(values, f.name) for f in GEOMETRY),
@@ -563,6 +636,31 @@ def value_rows(document):
         label, unit = quantity(key)
         rows.append((label, number(value, nsc[key]), unit, "num" if _is_number(value) else "txt"))
     return rows
+
+
+def case_rows(document):
+    """A document that is a list of cases (film, temperature at a list of speeds) as a table: one row per
+    case, the inputs that differ between the cases first (the speed), then the case's scalars.
+
+    Parameters
+    ----------
+    document : list of mapping
+        The cases.
+
+    Returns
+    -------
+    tuple
+        ``(rows, warnings)``: the rows (mappings of key -> value) and the cases' warnings, each once.
+    """
+    cases = [c for c in document if isinstance(c, dict)] if isinstance(document, list) else []
+    echoes = [c.get("inputs") if isinstance(c.get("inputs"), dict) else {} for c in cases]
+    varying = [k for k, v in (echoes[0] if echoes else {}).items()
+               if _is_number(v) and any(e.get(k) != v for e in echoes)]
+    rows = [{**{k: e.get(k) for k in varying},
+             **{k: v for k, v in c.items() if k != "warnings" and not isinstance(v, (dict, list))}}
+            for c, e in zip(cases, echoes)]
+    warnings = list(dict.fromkeys(w for c in cases for w in c.get("warnings") or ()))
+    return rows, warnings
 
 
 #: The clearance chain: its stages in order, as (key, label, unit); then its columns.

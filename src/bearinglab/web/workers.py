@@ -6,13 +6,14 @@ values, and waits for the answer without blocking the event loop; it stops the w
 new one) when the request runs over its time budget or its client goes away. A worker that computed
 a large request, or whose memory grew past a bound, exits after answering, so that the memory goes
 back to the system. The server keeps two pools, light and heavy, so that a light request never
-waits behind heavy ones.
+waits behind heavy ones; the heavy workers run at a lower OS priority, so that the light ones keep a core.
 
 Classes
 -------
 Pool           the worker processes of one kind; ``await pool.call(task, budget=..., gone=...)``
 Stopped        a call stopped: over its time budget, client gone, pool busy, or worker lost
 MEMORY_BOUND_MB  the peak memory of a worker after which it is replaced
+HEAVY_NICENESS   the OS priority offset of the heavy pool's workers (os.nice): light requests keep a core
 """
 
 from __future__ import annotations
@@ -24,10 +25,14 @@ import os
 import resource
 import time
 
-__all__ = ["MEMORY_BOUND_MB", "Pool", "Stopped"]
+__all__ = ["HEAVY_NICENESS", "MEMORY_BOUND_MB", "Pool", "Stopped"]
 
 #: Peak resident memory of a worker after which it is replaced, so that its memory goes back [MB].
 MEMORY_BOUND_MB = 350
+#: The niceness of the heavy pool's workers (``os.nice``): at 10 the Linux scheduler gives a process of
+#: niceness 0 about 9 times its share of a busy core, so a light request computes at nearly full speed
+#: beside heavy ones.
+HEAVY_NICENESS = 10
 
 
 class Stopped(Exception):
@@ -48,9 +53,19 @@ def _calculation_modules():
 _CALCULATION_MODULES = _calculation_modules()
 
 
-def _serve(conn, memory_bound_mb=MEMORY_BOUND_MB):
-    """A worker's loop: receive (what, name, given, limit), answer ('ok', value) or ('error', ...)."""
+def _serve(conn, memory_bound_mb=MEMORY_BOUND_MB, niceness=0):
+    """A worker's loop: receive (what, name, given, limit), answer ('ok', value) or ('error', ...).
+
+    ``niceness`` is added to the worker's OS scheduling priority first (``os.nice``): the heavy pool's
+    workers run below the server and the light workers, so that a light request keeps a core while
+    heavy ones compute."""
     import warnings
+
+    if niceness and hasattr(os, "nice"):
+        try:
+            os.nice(niceness)
+        except OSError:  # not allowed here (a container's policy): the worker runs at the server's priority
+            pass
 
     from .. import calculations, tables
     from ..errors import ConvergenceError, InputError
@@ -82,6 +97,9 @@ def _serve(conn, memory_bound_mb=MEMORY_BOUND_MB):
         except (ConvergenceError, InputError) as exc:  # not turned into a message by the layer
             answer = ("error", {"parameter": None, "template": str(exc), "valid": "",
                                 "kind": "convergence" if isinstance(exc, ConvergenceError) else "input"})
+        except RecursionError:  # the last line of defence of the documents' depth bound (bearinglab._bounds)
+            answer = ("error", {"parameter": None, "template": "the input is nested too deeply to read",
+                                "valid": "", "kind": "input"})
         except Exception as exc:  # noqa: BLE001 -- a bug: the server answers 500 and names it
             answer = ("bug", f"{type(exc).__name__}: {exc}")
         peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
@@ -103,9 +121,9 @@ def _context():
 
 
 class _Worker:
-    def __init__(self, ctx, memory_bound_mb):
+    def __init__(self, ctx, memory_bound_mb, niceness=0):
         self.conn, child = ctx.Pipe()
-        self.process = ctx.Process(target=_serve, args=(child, memory_bound_mb), daemon=True)
+        self.process = ctx.Process(target=_serve, args=(child, memory_bound_mb, niceness), daemon=True)
         self.process.start()
         child.close()
         self.tasks = 0
@@ -133,11 +151,14 @@ class Pool:
         Calls that may wait for a worker; one more is answered ``busy``.
     memory_bound_mb : float
         A worker whose peak resident memory passed this after a call is replaced. [MB]
+    niceness : int
+        Added to the workers' OS scheduling priority (``os.nice``; :data:`HEAVY_NICENESS` for the heavy
+        pool): they yield the cores to the server and the light workers.
     """
 
-    def __init__(self, size, *, recycle=False, queue=64, memory_bound_mb=MEMORY_BOUND_MB):
+    def __init__(self, size, *, recycle=False, queue=64, memory_bound_mb=MEMORY_BOUND_MB, niceness=0):
         self.size, self.recycle, self.queue = size, recycle, queue
-        self.memory_bound_mb = memory_bound_mb
+        self.memory_bound_mb, self.niceness = memory_bound_mb, niceness
         self._ctx = _context()
         self._idle = None
         self._waiting = 0
@@ -150,7 +171,7 @@ class Pool:
             self._add()
 
     def _add(self):
-        w = _Worker(self._ctx, self.memory_bound_mb)
+        w = _Worker(self._ctx, self.memory_bound_mb, self.niceness)
         self._workers.append(w)
         self._idle.put_nowait(w)
 
@@ -206,7 +227,9 @@ class Pool:
         try:
             worker.conn.send(task)
             await self._wait(worker, start, budget, gone)
-            *answer, leaving = worker.conn.recv()
+            # read in a thread: a large answer (a map's JSON, tens of MB) comes through the pipe as fast as
+            # its worker, niced below the server, writes it; the event loop keeps answering light requests
+            *answer, leaving = await asyncio.to_thread(worker.conn.recv)
         except Stopped:
             await asyncio.to_thread(self._replace, worker)
             raise
