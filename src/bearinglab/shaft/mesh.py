@@ -9,6 +9,7 @@ node_of         the node at a position
 Loads
 -----
 load_vectors    the nodal loads of load cases: point loads, gears, pulleys and the weight, (n, 6 n_nodes)
+element_weight  the consistent nodal loads of each element's own weight
 
 A node has six degrees of freedom (:mod:`bearinglab.shaft.elements`): u_x, u_y, u_z, theta_x,
 theta_y, theta_z; node i holds rows 6 i ... 6 i + 5 of the matrices. The interval between two
@@ -28,7 +29,7 @@ from ..errors import InputError
 from . import elements
 from .model import MAX_ELEMENTS, BearingSetSupport, gear_loads, pulley_loads
 
-__all__ = ["Mesh", "build_mesh", "load_vectors", "node_of"]
+__all__ = ["Mesh", "build_mesh", "element_weight", "load_vectors", "node_of"]
 
 _MERGE = 1e-9  # stations closer than this are one node [m]
 
@@ -212,24 +213,35 @@ def load_vectors(system, mesh, speed, factor=1.0, point_loads=None):
     return out
 
 
-def _weight(system, mesh):
-    gx, gy, gz = system.gravity
+def element_weight(system, mesh):
+    """(n_elements, 12) the consistent nodal loads of each element's weight (zeros without gravity). [N, N m]"""
     z = mesh.z
-    vec = np.zeros(6 * len(z))
+    out = np.zeros((len(z) - 1, 12))
+    if system.gravity is None:
+        return out
+    gx, gy, gz = system.gravity
     rho = system.shaft.material.density
     for e in range(len(z) - 1):
         L = z[e + 1] - z[e]
         q = rho * elements.section_properties(mesh.diameter[e], mesh.bore[e]).area  # kg/m
-        a, b = 6 * e, 6 * e + 6
         for k, gk in ((0, gx), (1, gy), (2, gz)):
-            vec[a + k] += q * gk * L / 2
-            vec[b + k] += q * gk * L / 2
+            out[e, k] += q * gk * L / 2
+            out[e, 6 + k] += q * gk * L / 2
         # x-z plane: theta_y carries +qL^2/12 at the left end; y-z plane: theta_x = -psi
-        vec[a + 4] += q * gx * L * L / 12
-        vec[b + 4] -= q * gx * L * L / 12
-        vec[a + 3] -= q * gy * L * L / 12
-        vec[b + 3] += q * gy * L * L / 12
+        out[e, 4] += q * gx * L * L / 12
+        out[e, 10] -= q * gx * L * L / 12
+        out[e, 3] -= q * gy * L * L / 12
+        out[e, 9] += q * gy * L * L / 12
+    return out
+
+
+def _weight(system, mesh):
+    z = mesh.z
+    vec = np.zeros(6 * len(z))
+    per = element_weight(system, mesh)
+    for e in range(len(z) - 1):
+        vec[6 * e:6 * e + 12] += per[e]
     for item in _rigid_masses(system):
         i = node_of(z, item.position)
-        vec[6 * i:6 * i + 3] += item.mass * np.array([gx, gy, gz])
+        vec[6 * i:6 * i + 3] += item.mass * np.asarray(system.gravity)
     return vec

@@ -14,6 +14,7 @@ Solution
 --------
 solve        every load case of a system at once: displacements, bearing loads, support loads
 SystemState  its result
+tangent      the tangent stiffness of the condensed system for given bearing stiffnesses
 
 The shaft is linear: with its degrees of freedom split into those of the bearing nodes (B, five per
 node: u_x, u_y, u_z, theta_x, theta_y), those held (rigid supports, the torsion reference) and the rest
@@ -62,7 +63,7 @@ from .mesh import build_mesh, load_vectors, node_of
 from .model import BearingSetSupport, BearingSupport, LinearSupport, RigidSupport
 from .supports import bearing_rows, constrained_dofs, linear_springs
 
-__all__ = ["Assembly", "Cases", "SystemState", "assemble", "load_cases", "solve"]
+__all__ = ["Assembly", "Cases", "SystemState", "assemble", "load_cases", "solve", "tangent"]
 
 #: relative residual of the system's equilibrium below which a case is converged
 TOL = 1e-10
@@ -328,12 +329,33 @@ def _evaluate(asm, x, fc, speed, deriv=True):
         res[:, hj[ok]] += tf[:, j, ok]
     if not deriv:
         return res, re, None
+    return res, re, tangent(asm, re.stiffness)
+
+
+def tangent(asm, row_stiffness):
+    """The tangent A (n, m, m) of the condensed system for the bearings' stiffness (n, n_rows, 5, 5).
+
+    Parameters
+    ----------
+    asm : Assembly
+    row_stiffness : ndarray
+        (n, n_rows, 5, 5) each bearing's tangent stiffness in its own frame.
+
+    Returns
+    -------
+    ndarray
+        d(loads on the unknowns) / d(unknowns): [[K_c + sum P^T T K T P, -sum P^T T K T Q],
+        [-sum Q^T T K T P, K_h + sum Q^T T K T Q]].
+    """
+    n = len(row_stiffness)
+    nb, m = len(asm.coupled), asm.n_unknowns
+    t = np.array([r.transform for r in asm.rows]).reshape(-1, 5)
     a = np.zeros((n, m, m))
     a[:, :nb, :nb] = asm.condensed
-    if nh:
+    if m > nb:
         a[:, np.arange(nb, m), np.arange(nb, m)] = asm.housing_stiffness
-    for j in range(len(rows)):
-        kt = re.stiffness[:, j] * (t[j][:, None] * t[j][None, :])  # T K T
+    for j in range(len(asm.rows)):
+        kt = row_stiffness[:, j] * (t[j][:, None] * t[j][None, :])  # T K T
         b = 5 * asm.slot[j] + np.arange(5)
         hj = asm.housing_index[j]
         ok = np.flatnonzero(hj >= 0)
@@ -343,7 +365,7 @@ def _evaluate(asm, x, fc, speed, deriv=True):
             a[:, b[:, None], h[None, :]] -= kt[:, :, ok]
             a[:, h[:, None], b[None, :]] -= kt[:, ok, :]
             a[:, h[:, None], h[None, :]] += kt[:, ok[:, None], ok[None, :]]
-    return res, re, a
+    return a
 
 
 def _measure(asm, res, fc, re, x, sc):
