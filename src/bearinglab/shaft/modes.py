@@ -18,7 +18,7 @@ told apart by where their kinetic energy lies (``kind``), as are rigid-body mode
 
 At rest the modes solve K phi = omega^2 M phi. At speed Omega the equations M q'' + Omega G q' + K q = 0
 (G skew-symmetric, K of the bearings possibly unsymmetric at speed) are solved in first-order form,
-[[0, I], [-K, -Omega G]] v = lambda [[I, 0], [0, M]] v, lambda = i omega; a mode whirls forward when its
+[[0, I], [-M^-1 K, -Omega M^-1 G]] v = lambda v, lambda = i omega; a mode whirls forward when its
 orbits turn with the shaft, backward otherwise. The housings are massless. No damping: the bearings'
 quasi-static model has none.
 
@@ -39,7 +39,7 @@ import scipy.linalg
 from .._validate import check_integer
 from ..errors import InputError
 from .outputs import system_stiffness
-from .solve import load_cases, solve
+from .statics import load_cases, solve
 
 __all__ = ["Campbell", "Modes", "campbell", "natural_modes"]
 
@@ -118,9 +118,14 @@ def natural_modes(state, count=6, *, case=0):
         w = np.sqrt(np.abs(lam)) * np.sign(lam)
         vecs = vec.T.astype(complex)
     else:
-        a = np.block([[np.zeros((size, size)), np.eye(size)], [-k, -omega * g]])
-        b = np.block([[np.eye(size), np.zeros((size, size))], [np.zeros((size, size)), m]])
-        lam, vec = scipy.linalg.eig(a, b)
+        chol = scipy.linalg.cho_factor(m, lower=True, check_finite=False)
+        a = np.block([[np.zeros((size, size)), np.eye(size)],
+                      [-scipy.linalg.cho_solve(chol, k, check_finite=False),
+                       -omega * scipy.linalg.cho_solve(chol, g, check_finite=False)]])
+        from threadpoolctl import threadpool_limits
+
+        with threadpool_limits(limits=1, user_api="blas"):  # a few hundred rows: threads only contend
+            lam, vec = scipy.linalg.eig(a, check_finite=False)
         pos = np.isfinite(lam) & (lam.imag > -1e-9 * np.max(np.abs(lam[np.isfinite(lam)])))
         lam, vec = lam[pos], vec[:size, pos]
         order = np.argsort(np.abs(lam.imag))

@@ -34,7 +34,7 @@ import numpy as np
 from ..errors import InputError
 from . import elements
 from .mesh import element_weight, node_of
-from .solve import _mv, assemble, tangent
+from .statics import _mv, assemble, tangent
 
 __all__ = ["BearingState", "InternalLoads", "StiffnessAt", "bearing_states", "internal_loads", "stiffness_at",
            "system_stiffness"]
@@ -78,7 +78,7 @@ def internal_loads(state):
     Examples
     --------
     >>> from bearinglab.shaft.model import PointLoad, RigidSupport, Section, Shaft, ShaftSystem
-    >>> from bearinglab.shaft.solve import solve
+    >>> from bearinglab.shaft.statics import solve
     >>> s = ShaftSystem(Shaft((Section(1.0, 0.05),)), (RigidSupport("A", 0.0, axial=True),
     ...                 RigidSupport("B", 1.0)), loads=(PointLoad(0.5, fy=-1000.0),), elements=2)
     >>> q = internal_loads(solve(s))
@@ -177,7 +177,7 @@ def stiffness_at(state, position):
     -----
     The system is linearised at its operating point: the shaft, the springs and each bearing's tangent
     stiffness at the solution (its preload and load). A unit load at the point's node gives, through the
-    condensed tangent A of :func:`bearinglab.shaft.solve.tangent`, the displacement
+    condensed tangent A of :func:`bearinglab.shaft.statics.tangent`, the displacement
     u_p = (K_II^-1 e_p)_p - (K_II^-1 K_IB A^-1 f_c)_p with f_c = -K_BI K_II^-1 e_p (or u_B = A^-1 e_p at a
     bearing node); the direct stiffness is 1/u_p. Where the point is no node of the solution's mesh, the
     same bearings' stiffness acts on a mesh with the point added (exact: the solution is not needed

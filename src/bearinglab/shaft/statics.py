@@ -66,7 +66,7 @@ from .supports import bearing_rows, constrained_dofs, linear_springs
 __all__ = ["Assembly", "Cases", "SystemState", "assemble", "load_cases", "solve", "tangent"]
 
 #: relative residual of the system's equilibrium below which a case is converged
-TOL = 1e-10
+TOL = 1e-12
 #: Newton iterations per case
 MAX_ITER = 100
 _LINE_SEARCH = 8  # step cuts (by 4)
