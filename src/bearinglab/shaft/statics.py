@@ -71,6 +71,7 @@ TOL = 1e-12
 MAX_ITER = 100
 _LINE_SEARCH = 8  # step cuts (by 4)
 _LAM_MIN, _LAM_MAX = 1e-14, 1e8  # Levenberg-Marquardt damping: start, and beyond which a case has failed
+_NOISE = 64.0  # roundings of the elastic terms K_c u_B that a residual may hold and count as converged
 _MOST_CASES = 1_000_000
 
 
@@ -369,14 +370,17 @@ def tangent(asm, row_stiffness):
 
 
 def _measure(asm, res, fc, re, x, sc):
-    """Norm of the scaled residual and its relative value."""
+    """Norm of the scaled residual, its relative value and the relative rounding floor of the residual."""
     t = np.array([r.transform for r in asm.rows])
     sb = sc[:5]
+    nb = fc.shape[1]
     norm = np.linalg.norm(res * sc, axis=-1)
-    loads = np.linalg.norm(fc * sc[:fc.shape[1]], axis=-1) + np.sum(np.linalg.norm(t[None] * re.force * sb, axis=-1),
-                                                                    axis=-1)
-    elastic = np.linalg.norm(_mv(asm.condensed, x[:, :fc.shape[1]]) * sc[:fc.shape[1]], axis=-1)
-    return norm, norm / np.maximum(np.maximum(loads, elastic), 1e-300)
+    loads = np.linalg.norm(fc * sc[:nb], axis=-1) + np.sum(np.linalg.norm(t[None] * re.force * sb, axis=-1), axis=-1)
+    loads = np.maximum(loads, 1e-300)
+    # the rounding floor of K_c u_B: the sizes of its terms, not of their sum (a stiff shaft moving as a rigid
+    # body sums large terms to almost nothing); _NOISE roundings of them
+    terms = np.linalg.norm(_mv(np.abs(asm.condensed), np.abs(x[:, :nb])) * sc[:nb], axis=-1)
+    return norm, norm / loads, _NOISE * np.finfo(float).eps * terms / loads
 
 
 def _step_limit(asm, dx):
@@ -401,13 +405,13 @@ def _newton(asm, fc, speed, tol, max_iter):
     x = np.zeros((n, m))
     # the offsets alone: a case with preloaded bearings starts in its preload
     res, re, a = _evaluate(asm, x, fc, speed)
-    norm, rel = _measure(asm, res, fc, re, x, sc)
+    norm, rel, floor = _measure(asm, res, fc, re, x, sc)
     lam = np.full(n, _LAM_MIN)
     it = np.zeros(n, dtype=int)
     failed = np.zeros(n, dtype=bool)
     eye = np.eye(m)
     for _ in range(max_iter):
-        act = np.flatnonzero((rel > tol) & ~failed)
+        act = np.flatnonzero((rel > np.maximum(tol, floor)) & ~failed)
         if not act.size:
             break
         it[act] += 1
@@ -425,11 +429,12 @@ def _newton(asm, fc, speed, tol, max_iter):
             cand = act[todo]
             xt = x[cand] + trial[todo, None] * dx[todo]
             r_t, re_t, a_t = _evaluate(asm, xt, fc[cand], speed[cand])
-            n_t, rel_t = _measure(asm, r_t, fc[cand], re_t, xt, sc)
-            good = ((n_t < norm[cand]) | (rel_t <= tol)) & np.all(np.isfinite(r_t), axis=-1)
+            n_t, rel_t, fl_t = _measure(asm, r_t, fc[cand], re_t, xt, sc)
+            good = ((n_t < norm[cand]) | (rel_t <= np.maximum(tol, fl_t))) & np.all(np.isfinite(r_t), axis=-1)
             if good.any():
                 g = cand[good]
                 x[g], res[g], a[g], norm[g], rel[g] = xt[good], r_t[good], a_t[good], n_t[good], rel_t[good]
+                floor[g] = fl_t[good]
                 done[todo[good]] = True
             todo = todo[~good]
             if not todo.size:
@@ -439,7 +444,7 @@ def _newton(asm, fc, speed, tol, max_iter):
         stuck = act[~done]
         lam[stuck] *= 16.0
         failed |= lam > _LAM_MAX
-    return x, (rel <= tol), it, rel, res
+    return x, rel <= np.maximum(tol, floor), it, rel, res
 
 
 def solve(system, cases=None, *, on_failure="raise", tol=TOL, max_iter=MAX_ITER, extra=(), assembly=None):
