@@ -79,8 +79,8 @@ def case_results(speed, factor, *, system, life_options, tol, max_iter):
             lf = rating_life(bs.bearing, iso, np.where(moving, w, 1.0), load_distribution=balls, **life_options)
         for key in _LIVES:
             v = getattr(lf, key)
-            if v is None:
-                out[key][:, j] = np.nan
+            if v is None:  # not computed (no lubricant): NaN where the case turns, as in any chunk
+                out[key][:, j] = np.where(moving, np.nan, np.inf)
             else:
                 out[key][:, j] = np.where(ok, np.broadcast_to(v, (n,)), np.where(moving, np.nan, np.inf))
     return out
