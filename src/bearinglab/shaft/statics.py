@@ -524,7 +524,8 @@ def solve(system, cases=None, *, on_failure="raise", tol=TOL, max_iter=MAX_ITER,
         u[:, asm.internal] = u0 - _mv(asm.transfer, x[:, :nb])
     else:
         u[:, asm.internal] = u0
-    reaction = _mv(asm.stiffness, u) - f  # the reaction each held dof needs, on the shaft
+    reaction = np.zeros_like(u)  # the reaction each held dof needs, on the shaft (K u - f; held rows only)
+    reaction[:, asm.constrained] = _mv(asm.stiffness[asm.constrained], u) - f[:, asm.constrained]
     sup_loads, sup_disp = _support_results(asm, u, reaction, force, h)
     torsion = reaction[:, 5]
     bad = ~ok
