@@ -54,7 +54,7 @@ def test_simply_supported_shaft_under_a_point_load(a_frac, d):
 
 
 def test_the_shear_term_of_a_short_shaft_is_there():
-    # L/d = 2: the shear deflection is a large part, and without it the answer is 18 % off
+    # L/d = 2: the shear deflection is 35 % of the whole; Euler-Bernoulli's alone would be that far off
     L, d, P = 0.1, 0.05, 1e4
     ei, kga, _ = _props(d)
     s = _system(L, d, (shaft.RigidSupport("A", 0.0, axial=True), shaft.RigidSupport("B", L)),
@@ -62,7 +62,7 @@ def test_the_shear_term_of_a_short_shaft_is_there():
     got = _uy(shaft.solve(s), L / 2)
     bending, shearing = P * L**3 / (48 * ei), P * L / (4 * kga)
     assert got == pytest.approx(bending + shearing, rel=1e-10)
-    assert shearing / (bending + shearing) > 0.15
+    assert 0.34 < shearing / (bending + shearing) < 0.36
 
 
 def test_overhung_shaft_tip_deflection():

@@ -13,7 +13,7 @@ from bearinglab.units import RPM
 B6206, B7014 = catalog.get("6206"), catalog.get("7014 C")
 
 
-def _gear_shaft(speed=1500 * RPM, helix=math.radians(15)):
+def _gear_shaft(speed=1500 * RPM, helix=0.2617993877991494):  # 15 deg
     """A helical pinion between two deep-groove bearings, the torque out at a coupling."""
     secs = (shaft.Section(0.05, 0.03), shaft.Section(0.20, 0.035), shaft.Section(0.05, 0.03),
             shaft.Section(0.06, 0.025))

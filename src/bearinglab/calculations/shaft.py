@@ -182,13 +182,7 @@ def _shaft(system, state):
             "material": {"name": mat.name, "elastic_modulus_GPa": _num(mat.elastic_modulus, 1e9),
                          "poisson_ratio": mat.poisson_ratio, "density_kg_per_m3": mat.density},
             "mass_kg": _num(mass), "elements": int(len(state.assembly.mesh.z) - 1),
-            "nodes": int(len(state.assembly.mesh.z))}
-
-
-def _five(prefix_f, prefix_m, v, force_scale=1.0, moment_scale=1.0):
-    return {f"{prefix_f}x": _num(v[0], force_scale), f"{prefix_f}y": _num(v[1], force_scale),
-            f"{prefix_f}z": _num(v[2], force_scale), f"{prefix_m}x": _num(v[3], moment_scale),
-            f"{prefix_m}y": _num(v[4], moment_scale)}
+            "nodes": len(state.assembly.mesh.z)}
 
 
 def _row(state, j, bs, w, notes):
@@ -254,7 +248,7 @@ def _supports(state, states, w, notes):
             entry["bearing"] = state.assembly.rows[rows[0]].bearing.designation
             entry["bearings"] = [_row(state, j, states[j], w, notes) for j in rows]
             for j, e in zip(rows, entry["bearings"], strict=True):
-                lives.append({key: e[name] for _, name in _LIVES for key in [name]})
+                lives.append({name: e[name] for _, name in _LIVES})
                 slopes.append(weibull_slope(state.assembly.rows[j].bearing))
             if kind == "bearing":  # a single bearing: its lives at the support's level too
                 first = entry["bearings"][0]

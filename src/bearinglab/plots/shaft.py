@@ -71,7 +71,7 @@ def _draw(ax, doc):
         if abs(f[2]) > 0:
             dz = 0.06 * shaft["length_mm"] * np.sign(f[2])
             ax.annotate("", (z + dz, 0.0), (z, 0.0), arrowprops={"arrowstyle": "-|>", "color": _LOAD, "lw": 1.5})
-    ax.set_xlim(-0.05 * shaft["length_mm"], 1.05 * shaft["length_mm"])
+    ax.set_xlim(-0.08 * shaft["length_mm"], 1.05 * shaft["length_mm"])
     ax.set_ylim(-top * 1.6, top * 2.3)
     ax.set_aspect("equal", adjustable="box")
     ax.set_ylabel("r [mm]")
@@ -114,16 +114,34 @@ def _lines(axes, doc):
             (axes[2], "bending_moment", "M", "bending moment [N m]"))
     units = {"displacement": "_um", "slope": "_mrad", "bending_moment": "_Nm"}
     for ax, key, sym, label in spec:
-        ax.plot(z, col(f"{key}_x{units[key]}"), color="#1f5fa8", label=f"{sym} x")
-        ax.plot(z, col(f"{key}_y{units[key]}"), color="#c0392b", label=f"{sym} y")
         if key == "bending_moment":
-            ax.plot(z, col("bending_moment_Nm"), color="#333333", lw=0.8, ls="--", label="|M|")
+            zz, mx, my = _moment_steps(z, col("bending_moment_x_Nm"), col("bending_moment_y_Nm"),
+                                       col("shear_force_x_N"), col("shear_force_y_N"))
+            ax.plot(zz, mx, color="#1f5fa8", label=f"{sym} x")
+            ax.plot(zz, my, color="#c0392b", label=f"{sym} y")
+            ax.plot(zz, np.hypot(mx, my), color="#333333", lw=0.8, ls="--", label="|M|")
+        else:
+            ax.plot(z, col(f"{key}_x{units[key]}"), color="#1f5fa8", label=f"{sym} x")
+            ax.plot(z, col(f"{key}_y{units[key]}"), color="#c0392b", label=f"{sym} y")
         ax.set_ylabel(label)
         ax.axhline(0.0, color="#999999", lw=0.5)
         for sup in doc["supports"]:
             ax.axvline(sup["position_mm"], color="#1f5fa8", lw=0.5, ls=":")
         ax.legend(fontsize="x-small", loc="best")
     axes[-1].set_xlabel("z [mm]")
+
+
+def _moment_steps(z, mx, my, vx, vy):
+    """The bending moment as drawn: the rows hold it just right of each node; between two nodes it runs
+    straight (the shear force V is constant there; M(z) = M(z_k) + (z - z_k) (V_y, -V_x), the moments of the
+    resultant about the moving cut), and a bearing's or a load's moment is a jump at its node."""
+    zz, ox, oy = [z[0]], [mx[0]], [my[0]]
+    for k in range(1, len(z)):
+        dz = (z[k] - z[k - 1]) * 1e-3  # mm -> m
+        zz += [z[k], z[k]]
+        ox += [mx[k - 1] + dz * vy[k - 1], mx[k]]
+        oy += [my[k - 1] - dz * vx[k - 1], my[k]]
+    return np.array(zz), np.array(ox), np.array(oy)
 
 
 def lines(doc, *, title=None):

@@ -45,7 +45,14 @@ from .model import (
     gear_loads,
 )
 from .modes import Campbell, Modes, campbell, natural_modes
-from .outputs import BearingState, InternalLoads, StiffnessAt, bearing_states, internal_loads, stiffness_at
+from .outputs import (
+    BearingState,
+    InternalLoads,
+    StiffnessAt,
+    bearing_states,
+    internal_loads,
+    stiffness_at,
+)
 from .reading import ShaftDocument, from_dict, from_text, load
 from .rotor import ross_elements, to_ross
 from .spectrum import SpectrumLife, load_spectrum

@@ -20,6 +20,7 @@ the extra points asked for) is split into equal elements no longer than the shaf
 
 from __future__ import annotations
 
+import itertools
 import math
 from typing import NamedTuple
 
@@ -98,7 +99,7 @@ def build_mesh(system, extra=()):
     st = _stations(system, extra)
     h = system.shaft.length / system.elements
     z = [st[0]]
-    for a, b in zip(st[:-1], st[1:], strict=True):
+    for a, b in itertools.pairwise(st):
         n = max(1, math.ceil((b - a) / h - 1e-9))
         z += list(a + (b - a) * np.arange(1, n + 1) / n)
     z = np.asarray(z)

@@ -202,10 +202,10 @@ def _array(doc, key):
     return v
 
 
-def _checked(where, build):
-    """Build an object, naming ``where`` in the message of any InputError it raises."""
+def _checked(where, build, *args, **kwargs):
+    """``build(*args, **kwargs)``, naming ``where`` in the message of any InputError it raises."""
     try:
-        return build()
+        return build(*args, **kwargs)
     except InputError as exc:
         message = str(exc)
         if message.startswith(where):
@@ -247,7 +247,7 @@ def _sections(doc):
               "bore": _quantity(t, "bore", "length", where, default=0.0)}
         if "start" in t:
             kw["start"] = _quantity(t, "start", "length", where)
-        out.append(_checked(where, lambda kw=kw: model.Section(**kw)))
+        out.append(_checked(where, model.Section, **kw))
     return tuple(out)
 
 
@@ -255,7 +255,7 @@ def _bearing(value, where, user, catalog):
     from .. import catalog as _catalog
 
     if isinstance(value, dict):
-        return _checked(where, lambda: _catalog.bearing_from_table(value, name=where))
+        return _checked(where, _catalog.bearing_from_table, value, name=where)
     if not isinstance(value, str) or not value.strip():
         raise InputError(f"{where}: expected a bearing's name (e.g. '6206', '7014 C') or a table, got {value!r}")
     name = value.strip()
@@ -278,7 +278,7 @@ def _housing(t, where):
                       ("tilt_stiffness", "rotational_stiffness")):
         if key in h:
             kw[key] = _quantity(h, key, kind, w)
-    return _checked(w, lambda: model.Housing(**kw))
+    return _checked(w, model.Housing, **kw)
 
 
 def _supports(doc, user, catalog):
@@ -304,10 +304,9 @@ def _supports(doc, user, catalog):
             raise InputError(f"{_at(where, extra[0])}: does not apply to a support with {kind}")
         if kind == "bearing":
             b = _bearing(t["bearing"], f"{where}.bearing", user, catalog)
-            sup = _checked(where, lambda b=b: model.BearingSupport(
-                name, pos, b, orientation=_sense(t, "orientation", where, 1), axial=_flag(t, "axial", where),
-                housing=_housing(t, where),
-                axial_offset=_quantity(t, "axial_offset", "length", where, default=0.0)))
+            sup = _checked(where, model.BearingSupport, name, pos, b, orientation=_sense(t, "orientation", where, 1),
+                           axial=_flag(t, "axial", where), housing=_housing(t, where),
+                           axial_offset=_quantity(t, "axial_offset", "length", where, default=0.0))
         elif kind == "bearing_set":
             s = t["bearing_set"]
             w = f"{where}.bearing_set"
@@ -321,14 +320,14 @@ def _supports(doc, user, catalog):
                   "spacing": _quantity(s, "spacing", "length", w),
                   "preload": _quantity(s, "preload", "force", w, default=0.0),
                   "preload_offset": _quantity(s, "preload_offset", "length", w)}
-            sup = _checked(where, lambda bl=bl, kw=kw: model.BearingSetSupport(
-                name, pos, bl, **kw, axial=_flag(t, "axial", where, True), housing=_housing(t, where)))
+            sup = _checked(where, model.BearingSetSupport, name, pos, bl, **kw, axial=_flag(t, "axial", where, True),
+                           housing=_housing(t, where))
         elif kind == "radial_stiffness":
             kw = {"radial_stiffness": _quantity(t, "radial_stiffness", "stiffness", where),
                   "axial_stiffness": _quantity(t, "axial_stiffness", "stiffness", where),
                   "tilt_stiffness": _quantity(t, "tilt_stiffness", "rotational_stiffness", where, default=0.0),
                   "axial": _flag(t, "axial", where)}
-            sup = _checked(where, lambda kw=kw: model.LinearSupport(name, pos, **kw))
+            sup = _checked(where, model.LinearSupport, name, pos, **kw)
         else:
             if t["rigid"] is not True:
                 raise InputError(f"{where}.rigid: expected true (a simple support), got {t['rigid']!r}")
@@ -353,7 +352,7 @@ def _loads(doc):
         kw = {key: _quantity(t, key, "force" if key[0] == "f" else "torque", where, default=0.0)
               for key in ("fx", "fy", "fz", "mx", "my", "mz")}
         pos = _quantity(t, "position", "length", where, required=True)
-        loads.append(_checked(where, lambda kw=kw, pos=pos: model.PointLoad(pos, **kw, name=_text(t, "name", where))))
+        loads.append(_checked(where, model.PointLoad, pos, **kw, name=_text(t, "name", where)))
     for k, t in enumerate(_array(doc, "gears")):
         where = f"gears[{k}]"
         _keys(t, "gears", where)
@@ -367,7 +366,7 @@ def _loads(doc):
               "mesh_angle": _quantity(t, "mesh_angle", "angle", where, default=0.0),
               "rotation": _sense(t, "rotation", where), **_masses_of(t, where)}
         pos = _quantity(t, "position", "length", where, required=True)
-        gears.append(_checked(where, lambda kw=kw, pos=pos: model.Gear(pos, **kw, name=_text(t, "name", where))))
+        gears.append(_checked(where, model.Gear, pos, **kw, name=_text(t, "name", where)))
     for k, t in enumerate(_array(doc, "pulleys")):
         where = f"pulleys[{k}]"
         _keys(t, "pulleys", where)
@@ -375,7 +374,7 @@ def _loads(doc):
               "direction": _quantity(t, "direction", "angle", where, default=0.0),
               "torque": _quantity(t, "torque", "torque", where, default=0.0), **_masses_of(t, where)}
         pos = _quantity(t, "position", "length", where, required=True)
-        pulleys.append(_checked(where, lambda kw=kw, pos=pos: model.Pulley(pos, **kw, name=_text(t, "name", where))))
+        pulleys.append(_checked(where, model.Pulley, pos, **kw, name=_text(t, "name", where)))
     for k, t in enumerate(_array(doc, "masses")):
         where = f"masses[{k}]"
         _keys(t, "masses", where)
@@ -383,7 +382,7 @@ def _loads(doc):
         pos = _quantity(t, "position", "length", where, required=True)
         if "mass" not in t:
             raise InputError(f"{where}.mass: missing")
-        masses.append(_checked(where, lambda kw=kw, pos=pos: model.Mass(pos, **kw, name=_text(t, "name", where))))
+        masses.append(_checked(where, model.Mass, pos, **kw, name=_text(t, "name", where)))
     return tuple(loads), tuple(gears), tuple(pulleys), tuple(masses)
 
 
@@ -487,11 +486,10 @@ def from_dict(doc, *, catalog=None):
     if not isinstance(tables, dict):
         raise InputError("bearings: expected [bearings.\"NAME\"] tables")
     for name, table in tables.items():
-        user[name] = _checked(f"bearings.{name}", lambda table=table, name=name: _catalog.bearing_from_table(
-            table, name=name))
+        user[name] = _checked(f"bearings.{name}", _catalog.bearing_from_table, table, name=name)
     speed = _quantity(doc, "speed", "speed", "", default=0.0)
     material, alpha = _material(doc)
-    shaft = _checked("sections", lambda: model.Shaft(_sections(doc), material, alpha))
+    shaft = _checked("sections", model.Shaft, _sections(doc), material, alpha)
     supports = _supports(doc, user, catalog)
     loads, gears, pulleys, masses = _loads(doc)
     gravity = None
@@ -510,7 +508,7 @@ def from_dict(doc, *, catalog=None):
     w, f, t, names = _cases(doc, speed)
     if w is not None:
         for k, wk in enumerate(w):  # each case's torques balance, and a power-given gear needs its speed
-            _checked(f"cases[{k}]", lambda wk=wk: system.replace(speed=float(wk)))
+            _checked(f"cases[{k}]", system.replace, speed=float(wk))
     return ShaftDocument(system, w, f, t, names, _lubricant(doc), doc)
 
 

@@ -501,7 +501,7 @@ def solve(system, cases=None, *, on_failure="raise", tol=TOL, max_iter=MAX_ITER,
     if rows:
         fc = f[:, asm.coupled] - _mv(asm.transfer.T, f_i)
         x, ok, it, rel, _ = _newton(asm, fc, cases.speed, tol, max_iter)
-        res, re, _ = _evaluate(asm, x, fc, cases.speed, deriv=False)
+        _, re, _ = _evaluate(asm, x, fc, cases.speed, deriv=False)
         if not np.all(re.converged):
             notes.append("a bearing's internal solve (its balls at speed) did not converge in "
                          f"{int(np.sum(~re.converged))} bearing case(s)")

@@ -185,8 +185,9 @@ def _operating_bearing(bearing, system, seat_bore, name):
     if system.shaft_temperature is None and system.housing_temperature is None:
         return bearing, []
     if bearing.radial_clearance is None or bearing.bore is None or bearing.outside_diameter is None:
-        return bearing, [f"{name}: the temperatures do not change the clearance of {bearing.designation} (its bore, "
-                         "outside diameter and clearance are needed by the mounting chain)"]
+        note = (f"{name}: the temperatures do not change the clearance of {bearing.designation} (its bore, "
+                "outside diameter and clearance are needed by the mounting chain)")
+        return bearing, [note]
     t_s = system.shaft_temperature or _REFERENCE_TEMPERATURE
     t_h = system.housing_temperature or _REFERENCE_TEMPERATURE
     mat = system.shaft.material
