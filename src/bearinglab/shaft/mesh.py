@@ -215,7 +215,18 @@ def load_vectors(system, mesh, speed, factor=1.0, point_loads=None):
 
 
 def element_weight(system, mesh):
-    """(n_elements, 12) the consistent nodal loads of each element's weight (zeros without gravity). [N, N m]"""
+    """The consistent nodal loads of each element's own weight.
+
+    Parameters
+    ----------
+    system : ShaftSystem
+    mesh : Mesh
+
+    Returns
+    -------
+    ndarray
+        (n_elements, 12) for the two nodes of each element (zeros without gravity). [N, N m]
+    """
     z = mesh.z
     out = np.zeros((len(z) - 1, 12))
     if system.gravity is None:

@@ -20,6 +20,7 @@ Gear               a spur or helical gear mesh: its forces from the torque or po
 Pulley             a belt pull in a direction, and its torque
 Mass               a rigid mass on the shaft (a tool, a rotor): weight and inertia
 gear_loads         the forces and moments a gear mesh puts on the shaft axis
+pulley_loads       the belt pull and torque of a pulley on the shaft axis
 
 The system
 ----------
@@ -42,7 +43,7 @@ from ..bearing import STEEL, BallBearing, Material
 from ..errors import InputError
 
 __all__ = ["BearingSetSupport", "BearingSupport", "Gear", "Housing", "LinearSupport", "Mass", "PointLoad",
-           "Pulley", "RigidSupport", "Section", "Shaft", "ShaftSystem", "gear_loads"]
+           "Pulley", "RigidSupport", "Section", "Shaft", "ShaftSystem", "gear_loads", "pulley_loads"]
 
 _MM = 1e-3
 #: the most elements a shaft mesh may hold (dense matrices of 6 (n + 1) rows; 400 elements: 2406 rows)
@@ -608,7 +609,22 @@ def gear_loads(gear, shaft_speed):
 
 
 def pulley_loads(pulley):
-    """(6,) F_x, F_y, F_z, M_x, M_y, M_z of a pulley on the shaft axis. [N, N m]"""
+    """The forces and moments a pulley puts on the shaft axis at its position.
+
+    Parameters
+    ----------
+    pulley : Pulley
+
+    Returns
+    -------
+    ndarray
+        (6,) F_x, F_y, F_z [N], M_x, M_y, M_z [N m]: the belt pull in its direction and the torque.
+
+    Examples
+    --------
+    >>> print(pulley_loads(Pulley(0.1, 500.0, math.pi / 2, torque=20.0)).round(9))
+    [  0. 500.   0.   0.   0.  20.]
+    """
     return np.array([pulley.force * math.cos(pulley.direction), pulley.force * math.sin(pulley.direction),
                      0.0, 0.0, 0.0, pulley.torque]) + 0.0
 
