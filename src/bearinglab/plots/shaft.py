@@ -183,7 +183,8 @@ def overview(doc, *, title=None):
     ...        "diameter_mm": 20.0, "bore_mm": 0.0}]}, "supports": [{"name": "A", "kind": "rigid",
     ...        "position_mm": 0.0}], "deflection": [{"z_mm": z, "displacement_x_um": 0.0,
     ...        "displacement_y_um": z, "slope_x_mrad": 0.0, "slope_y_mrad": 1.0, "bending_moment_x_Nm": 0.0,
-    ...        "bending_moment_y_Nm": 0.0, "bending_moment_Nm": 0.0} for z in (0.0, 100.0)]}
+    ...        "bending_moment_y_Nm": 0.0, "bending_moment_Nm": 0.0, "shear_force_x_N": 0.0,
+    ...        "shear_force_y_N": 0.0} for z in (0.0, 100.0)]}
     >>> len(overview(doc).axes)
     4
     """
