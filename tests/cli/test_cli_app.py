@@ -70,12 +70,16 @@ def _third_party_imports():
 def _declared():
     project = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]
     names = set()
-    # bearinglab.web and `serve` import the web extra's packages (FastAPI, uvicorn), nothing else does
-    for req in project["dependencies"] + project["optional-dependencies"]["web"]:
+    # bearinglab.web and `serve` import the web extra's packages (FastAPI, uvicorn), nothing else does;
+    # shaft.rotor.to_ross imports the ross extra's ROSS, inside the one function that builds its Rotor
+    extras = project["optional-dependencies"]
+    for req in project["dependencies"] + extras["web"] + extras["ross"]:
         # "dask[distributed]>=2024.1" declares dask and distributed
         m = re.match(r"([A-Za-z0-9_.-]+)(?:\[([^\]]*)\])?", req)
         names.add(m.group(1).lower().replace("-", "_"))
         names.update(e.strip() for e in (m.group(2) or "").split(",") if e.strip())
+    if "ross_rotordynamics" in names:
+        names.add("ross")  # the import name of the distribution ross-rotordynamics
     return names
 
 

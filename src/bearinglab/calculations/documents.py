@@ -3,7 +3,8 @@
 ``catalog`` (:func:`catalog_document`, which ``catalog show`` prints too) and ``catalog-search``
 (:func:`bearinglab.catalog.search`) are built here from :mod:`bearinglab.catalog` and
 :mod:`bearinglab.tables`. Every other calculation (life, load-distribution, bearing-set, frequencies,
-stand-load, axial-angle, high-speed, friction, clearance, film, temperature, runout, runout-monte-carlo)
+stand-load, axial-angle, high-speed, friction, clearance, film, temperature, runout, runout-monte-carlo,
+shaft)
 is computed by ``document(parsed)`` of its module of this package, the function its command calls too,
 and its figure is drawn from that document: no request runs the command line, and no message of the
 command line is read back (``tests/calculations/test_native*.py`` hold the documents equal to what
@@ -317,7 +318,7 @@ def run(parsed):
 _NATIVE = {"life": "life", "load-distribution": "load_distribution", "bearing-set": "bearing_set",
            "frequencies": "frequencies", "stand-load": "stand", "axial-angle": "stand", "high-speed": "high_speed",
            "friction": "friction_torque", "clearance": "clearance", "film": "film", "temperature": "temperature",
-           "runout": "runout", "runout-monte-carlo": "runout_monte_carlo"}
+           "runout": "runout", "runout-monte-carlo": "runout_monte_carlo", "shaft": "shaft"}
 
 
 def _native(parsed):
@@ -339,7 +340,7 @@ def _native(parsed):
 
 
 #: the calculations whose command draws a figure, and the option it takes
-_PLOTS = {"high-speed": ".svg", "load-distribution": ".svg", "bearing-set": ".svg"}
+_PLOTS = {"high-speed": ".svg", "load-distribution": ".svg", "bearing-set": ".svg", "shaft": ".svg"}
 
 
 def figure_svg(parsed):

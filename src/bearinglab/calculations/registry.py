@@ -3,7 +3,7 @@
 One :class:`Calculation` per capability of the command line (``life``, ``load-distribution``,
 ``bearing-set``, ``friction``, ``high-speed``, ``frequencies``, ``axial-angle``, ``stand-load``,
 ``catalog``, ``catalog-search``, ``clearance``, ``film``, ``temperature``, ``runout``,
-``runout-monte-carlo``). The command line's options and these fields are held
+``runout-monte-carlo``, ``shaft``). The command line's options and these fields are held
 equal by ``tests/calculations/test_cli_fields.py``; the web builds its models from them.
 
 Bounds (the command line's limits are :mod:`bearinglab._bounds`; the web's own are named here)
@@ -519,6 +519,26 @@ _CALCS = (
             default=15, minimum=0, maximum=_bounds.MAX_ORDER, group="runout"),
          _f("cage_ratio", "number", "Cage speed / inner-ring speed kappa (default (1 - gamma)/2).",
             label="Cage ratio", unit="-", minimum=0, exclusive=True, maximum=1, group="runout")),
+        heavy=True),
+    Calculation(
+        "shaft", ("shaft",), "Shaft system",
+        "Several bearings on an elastic shaft (Timoshenko elements) with gears, pulleys, housings and speed: "
+        "support loads, bearing lives and the system life, deflection, stiffness at a point, natural "
+        "frequencies (issue 33).",
+        (_f("model", "document", "The shaft system as a TOML or JSON document (sections, supports, loads, "
+            "gears, pulleys, cases; the format of the user guide's shaft-systems page), posted as text; never a "
+            "file path.", label="Shaft system", required=True, option="FILE", group="shaft"),
+         _f("speed", "speed", "Shaft speed instead of the file's, e.g. '3000 rpm' (its sign: the sense of "
+            "rotation).", label="Shaft speed", unit="rpm", group=_L),
+         _f("stiffness_at", "length", "The direct stiffness at this position, e.g. '0 mm' (a spindle's nose).",
+            label="Stiffness at", unit="mm", minimum=0, group="shaft"),
+         _f("modes", "int", "The N lowest bending natural frequencies and their mode shapes.",
+            label="Natural modes", minimum=0, maximum=50, group="shaft"),
+         _f("campbell", "speed", "Speeds of a Campbell diagram, e.g. '0, 6000, 12000 rpm' or "
+            "'0rpm:12000rpm:2000rpm' (at most 200).", label="Campbell speeds", unit="rpm", many=True,
+            group="shaft"),
+         _f("elements", "int", "At least this many elements over the shaft (instead of the file's).",
+            label="Elements", minimum=1, maximum=400, group="shaft")),
         heavy=True),
 )
 

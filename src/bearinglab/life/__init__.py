@@ -4,6 +4,7 @@ Modules
 -------
 analysis    the analysis of a BallBearing: every life quantity for loads, speed, lubricant, cleanliness and reliability,
             batched over load cases; duty cycles (Palmgren-Miner)
+system      the life of a system of bearings (Lundberg-Palmgren, Weibull slopes 10/9 ball and 9/8 roller)
 
 The analysis composes the ISO formulas of :mod:`bearinglab.ratings` with the load distribution of
 :mod:`bearinglab.quasistatic` (the ball loads of the ISO/TS 16281 reference life), so it sits above both.
@@ -11,7 +12,7 @@ Every public name of its modules is reachable here: ``bearinglab.life.rating_lif
 """
 
 from ..ratings.bearing import BearingRatings, bearing_ratings  # noqa: F401 -- ratings.life.* reached them
-from . import analysis
+from . import analysis, system
 from .analysis import (
     DutyCycleLife,
     RatingLife,
@@ -20,8 +21,11 @@ from .analysis import (
     rating_life,
     reference_load_distribution,
 )
+from .system import BALL_SLOPE, ROLLER_SLOPE, system_life, weibull_slope
 
 __all__ = [
+    "BALL_SLOPE",
+    "ROLLER_SLOPE",
     "DutyCycleLife",
     "RatingLife",
     "analysis",
@@ -29,4 +33,7 @@ __all__ = [
     "miner_life",
     "rating_life",
     "reference_load_distribution",
+    "system",
+    "system_life",
+    "weibull_slope",
 ]
