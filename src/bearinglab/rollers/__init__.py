@@ -1,0 +1,1 @@
+"""Roller bearings (placeholder, filled below)."""
