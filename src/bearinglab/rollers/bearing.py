@@ -123,7 +123,7 @@ class RollerBearing:
     >>> import math
     >>> b = RollerBearing("tapered", 17, 10e-3, 14e-3, 60e-3, math.radians(14.0))
     >>> print(f"cone {math.degrees(b.tapered_angles.cone_angle):.2f} deg")
-    cone 10.18 deg
+    cone 10.02 deg
     """
 
     type: str = "cylindrical"
@@ -217,7 +217,7 @@ class RollerBearing:
             raise InputError(f"pitch_diameter must be > roller_diameter [mm], got {dpw * 1e3:g} mm with roller_diameter "
                              f"= {d * 1e3:g} mm")
         if z is not None and d is not None and dpw is not None:
-            z_max = int(math.floor(math.pi / math.asin(min(1.0, d / dpw))))
+            z_max = math.floor(math.pi / math.asin(min(1.0, d / dpw)))
             if z > z_max:
                 raise InputError(f"rollers must be <= {z_max} [-] for rollers of {d * 1e3:g} mm on a {dpw * 1e3:g} mm "
                                  f"pitch diameter (neighbouring rollers would overlap), got {z}")

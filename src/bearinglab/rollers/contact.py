@@ -70,7 +70,7 @@ def slice_stiffness(roller_length, n_slices):
     Examples
     --------
     >>> print(f"{slice_stiffness(10e-3, 1) * (1e-6) ** (10 / 9):.2f} N at 1 um")
-    3.81 N at 1 um
+    129.19 N at 1 um
     """
     length = check_positive("roller_length", roller_length, "m")
     n = int(check_integer("n_slices", n_slices, 1))
@@ -180,7 +180,7 @@ def line_contact(load_per_length, radius, reduced_modulus):
     --------
     >>> c = line_contact(1e6, 5e-3, 2.28e11)
     >>> print(f"b = {c.half_width * 1e6:.2f} um, p = {c.max_pressure / 1e6:.0f} MPa")
-    b = 83.53 um, p = 7621 MPa
+    b = 236.31 um, p = 2694 MPa
     """
     w = check_nonnegative("load_per_length", load_per_length, "N/m")
     r = check_positive("radius", radius, "m")

@@ -522,7 +522,7 @@ def load_distribution(loads, roller_set, *, prescribed_displacement=None, on_fai
     >>> rs = roller_set(14, 11e-3, 9.6e-3, 60.5e-3)
     >>> r = load_distribution([10e3, 0, 0, 0, 0], rs)
     >>> print(f"delta_r = {r.displacement[0] * 1e6:.3f} um, Q_max = {r.max_roller_load:.0f} N")
-    delta_r = 9.818 um, Q_max = 2896 N
+    delta_r = 17.090 um, Q_max = 2919 N
     """
     if not isinstance(roller_set, RollerSet):
         raise InputError(f"roller_set must be a RollerSet (bearinglab.rollers.roller_set), got {type(roller_set).__name__}")
@@ -606,7 +606,7 @@ def equilibrium(displacement, loads, roller_set):
     >>> rs = roller_set(14, 11e-3, 9.6e-3, 60.5e-3)
     >>> e = equilibrium([10e-6, 0, 0, 0, 0], [0, 0, 0, 0, 0], rs)
     >>> print(f"{e.reaction[0]:.0f} N")
-    10241 N
+    5513 N
     """
     u = as_float("displacement", displacement)
     if u.shape[-1:] != (5,):

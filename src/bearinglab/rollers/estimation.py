@@ -91,7 +91,7 @@ def estimate_roller_set(bore, outside_diameter, static_load_rating, *, width=Non
     --------
     >>> s = estimate_roller_set(40e-3, 80e-3, 53e3)  # NU 208 ECP
     >>> print(s.rollers, f"{s.roller_diameter * 1e3:.2f} {s.roller_length * 1e3:.2f} {s.pitch_diameter * 1e3:.2f} mm")
-    14 11.00 9.55 60.60 mm
+    14 11.00 9.56 60.60 mm
     """
     d, big, c0 = float(bore), float(outside_diameter), float(static_load_rating)
     if not (d > 0 and big > d and c0 > 0):
@@ -112,7 +112,7 @@ def estimate_roller_set(bore, outside_diameter, static_load_rating, *, width=Non
                          f"roller bearing's load distribution is not modelled), got {bearing_type!r}")
     dpw = RULES["pitch_factor"][0] * 0.5 * (d + big) if pitch_diameter is None else float(pitch_diameter)
     dw = RULES["diameter_factor"][0] * (big - d) if roller_diameter is None else float(roller_diameter)
-    z = int(math.floor(math.pi * dpw / (RULES["pitch_per_roller"][0] * dw)))
+    z = math.floor(math.pi * dpw / (RULES["pitch_per_roller"][0] * dw))
     gamma = dw * math.cos(alpha) / dpw
     mm = 1e3
     length = c0 / (_ISO76 * (1.0 - gamma) * rows * z * dw * mm * math.cos(alpha)) / mm
@@ -144,7 +144,7 @@ def with_estimated_geometry(bearing):
     >>> from bearinglab import catalog
     >>> b = with_estimated_geometry(catalog.get("NU 208 ECP"))
     >>> b.rollers, b.estimated_fields[:2]
-    (14, ('rollers', 'roller_diameter'))
+    (14, ('rollers', 'roller_length'))
     """
     if bearing.has_internal_geometry and bearing.contact_angle is not None:
         return bearing
