@@ -271,11 +271,12 @@ def _evaluate(kn, u, deriv=True):
     return force, stiff, q, roller, noise
 
 
-def _measure(kn, loads, force, roller, noise, free):
-    """Residual norm [N], relative residual and relative rounding floor (capped at 1e-9)."""
+def _measure(arm, loads, force, total, noise, free):
+    """Residual norm [N], relative residual and relative rounding floor (capped at 1e-9); ``total`` is the sum
+    of the roller loads of each case, ``noise`` the rounding of its reaction."""
     diff = (loads - force) if free is None else (loads - force) * free
-    res = np.linalg.norm(diff * kn.arm, axis=-1)
-    scale = np.maximum(np.linalg.norm(loads * kn.arm, axis=-1), np.sum(roller, axis=-1))
+    res = np.linalg.norm(diff * arm, axis=-1)
+    scale = np.maximum(np.linalg.norm(loads * arm, axis=-1), total)
     with np.errstate(invalid="ignore", divide="ignore"):
         rel = np.where(scale > 0, res / scale, res)
         floor = np.where(scale > 0, _NOISE * noise / scale, 0.0)
@@ -309,34 +310,39 @@ def _start(rs, kn, loads):
     return u
 
 
-def _newton(rs, kn, loads, u0, free, tol, max_iter):
-    """Damped Newton (Levenberg-Marquardt) with a line search on |F - F(u)|, all cases together; each case
-    has its own damping. ``free`` (n, 5) of 1.0 (a freedom under a given load) and 0.0 (held at u0)."""
+def _newton(evaluate, arm, loads, u0, free, tol, max_iter, limit, span):
+    """Damped Newton (Levenberg-Marquardt, the kernels of :mod:`bearinglab.quasistatic._ring`) with a line
+    search on |F - F(u)|, all cases together, each with its own damping.
+
+    ``evaluate(u)`` gives the reaction (n, 5), the stiffness (n, 5, 5), the sum of the roller loads (n,) and the
+    rounding of the reaction (n,); ``arm`` the residual's scale (moments / (d_m/2)); ``free`` (n, 5) 1.0 for a
+    freedom under a given load, 0.0 for one held at u0; a step moves no lamina by more than ``limit`` [m]
+    (``span`` the lever of a tilt). Returns u, converged, iterations and the relative residual.
+    """
     n = len(loads)
     u = u0.copy()
     it = np.zeros(n, dtype=int)
     lam = np.zeros(n)
-    force, stiff, _, roller, noise = _evaluate(kn, u)
-    norm, rel, floor = _measure(kn, loads, force, roller, noise, free)
+    force, stiff, total, noise = evaluate(u)
+    norm, rel, floor = _measure(arm, loads, force, total, noise, free)
     done = rel <= np.maximum(tol, floor)
-    span = 0.5 * rs.pitch_diameter + 0.5 * rs.roller_length
+    dm = 2.0 / arm[3]
     for _ in range(max_iter):
         act = np.flatnonzero(~done & (lam <= _LAM_MAX))
         if act.size == 0:
             break
         it[act] += 1
-        du = _ring.lm_step(_ring.hold(stiff[act], free[act]), (loads[act] - force[act]) * free[act], lam[act], kn.dm)
-        # trust region: no lamina approaches by more than a tenth of a roller diameter in one step
+        du = _ring.lm_step(_ring.hold(stiff[act], free[act]), (loads[act] - force[act]) * free[act], lam[act], dm)
         move = np.hypot(du[:, 0], du[:, 1]) + np.abs(du[:, 2]) + span * np.hypot(du[:, 3], du[:, 4])
         with np.errstate(divide="ignore", invalid="ignore"):
-            t = np.where(move > 0, np.minimum(1.0, 0.1 * rs.roller_diameter / move), 1.0)
+            t = np.where(move > 0, np.minimum(1.0, limit / move), 1.0)
         full = t == 1.0
         pending = np.arange(act.size)
         for _ls in range(_LINE_SEARCH):
             sel = act[pending]
             trial = u[sel] + t[pending, None] * du[pending]
-            f_t, k_t, _, r_t, n_t = _evaluate(kn, trial)
-            nm_t, rel_t, fl_t = _measure(kn, loads[sel], f_t, r_t, n_t, free[sel])
+            f_t, k_t, tot_t, n_t = evaluate(trial)
+            nm_t, rel_t, fl_t = _measure(arm, loads[sel], f_t, tot_t, n_t, free[sel])
             good = (nm_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | (rel_t <= np.maximum(tol, fl_t))
             g = sel[good]
             u[g], force[g], stiff[g], norm[g], rel[g], floor[g] = (trial[good], f_t[good], k_t[good], nm_t[good],
@@ -350,7 +356,7 @@ def _newton(rs, kn, loads, u0, free, tol, max_iter):
         lam[act[pending]] = np.maximum(100.0 * lam[act[pending]], 1e-3)
         lam[lam < 1e-12] = 0.0
         done = rel <= np.maximum(tol, floor)
-    return u, done, it, rel, floor
+    return u, done, it, rel
 
 
 class RollerLoadDistribution(NamedTuple):
@@ -469,10 +475,16 @@ def _solve(rs, kn, f, held, tol, max_iter):
     ok = np.empty(n, dtype=bool)
     it = np.empty(n, dtype=int)
     rel = np.empty(n)
+    def evaluate(uu):
+        force, stiff, _, roller, noise = _evaluate(kn, uu)
+        return force, stiff, np.sum(roller, axis=-1), noise
+
+    span = 0.5 * rs.pitch_diameter + 0.5 * rs.roller_length
     for lo in range(0, n, _CHUNK):
         sl = slice(lo, min(n, lo + _CHUNK))
         u0 = np.where(free[sl] > 0, _start(rs, kn, f[sl]), held[sl])
-        u[sl], ok[sl], it[sl], rel[sl], _ = _newton(rs, kn, f[sl], u0, free[sl], tol, max_iter)
+        u[sl], ok[sl], it[sl], rel[sl] = _newton(evaluate, kn.arm, f[sl], u0, free[sl], tol, max_iter,
+                                                 0.1 * rs.roller_diameter, span)
     return u, ok, it, rel, free
 
 
@@ -552,6 +564,11 @@ def load_distribution(loads, roller_set, *, prescribed_displacement=None, on_fai
                                    estimate=u[k], reason=reason)
         warnings.append(f"{int((~ok).sum())} case(s) not converged (NaN, converged False; first: case {k}): "
                         "the ring Newton iteration stalled")
+    return _result(rs, loads_out, u, q, roller, stiff, rib, ok, it, rel, shape, tuple(warnings), reactions)
+
+
+def _result(rs, loads, u, q, roller, stiff, rib, ok, it, rel, shape, warnings, reactions):
+    """The RollerLoadDistribution of flat cases (pressures from the lamina loads; NaN where not converged)."""
     ri, _ = contact.contact_radii(rs.roller_diameter, rs.pitch_diameter, rs.contact_angle)
     width = rs.roller_length / len(rs.slice_position)
     pressure = contact.line_contact(q / width, ri, rs.reduced_modulus).max_pressure
@@ -564,11 +581,11 @@ def load_distribution(loads, roller_set, *, prescribed_displacement=None, on_fai
         return a.reshape(shape + tail)[()]
 
     return RollerLoadDistribution(
-        loads=out(loads_out, (5,)), displacement=out(u, (5,)), azimuth=rs.azimuth, slice_position=rs.slice_position,
+        loads=out(loads, (5,)), displacement=out(u, (5,)), azimuth=rs.azimuth, slice_position=rs.slice_position,
         roller_load=out(roller, (z,)), slice_load=out(q, (z, ns)), slice_pressure=out(pressure, (z, ns)),
         max_pressure=out(np.max(pressure, axis=-1), (z,)), max_roller_load=out(np.max(roller, axis=-1), ()),
         stiffness=out(stiff, (5, 5)), rib_load=out(rib, ()), converged=ok.reshape(shape)[()],
-        residual=out(rel, ()), iterations=it.reshape(shape)[()], warnings=tuple(warnings),
+        residual=out(rel, ()), iterations=it.reshape(shape)[()], warnings=warnings,
         reactions=out(reactions, (5,)))
 
 
