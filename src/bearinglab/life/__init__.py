@@ -4,6 +4,7 @@ Modules
 -------
 analysis    the analysis of a BallBearing: every life quantity for loads, speed, lubricant, cleanliness and reliability,
             batched over load cases; duty cycles (Palmgren-Miner)
+roller      the same analysis of a RollerBearing (ISO 281 roller formulas, ISO/TS 16281 over the laminae)
 
 The analysis composes the ISO formulas of :mod:`bearinglab.ratings` with the load distribution of
 :mod:`bearinglab.quasistatic` (the ball loads of the ISO/TS 16281 reference life), so it sits above both.
@@ -11,7 +12,7 @@ Every public name of its modules is reachable here: ``bearinglab.life.rating_lif
 """
 
 from ..ratings.bearing import BearingRatings, bearing_ratings  # noqa: F401 -- ratings.life.* reached them
-from . import analysis
+from . import analysis, roller
 from .analysis import (
     DutyCycleLife,
     RatingLife,
@@ -20,6 +21,7 @@ from .analysis import (
     rating_life,
     reference_load_distribution,
 )
+from .roller import reference_slice_loads, roller_rating_life
 
 __all__ = [
     "DutyCycleLife",
@@ -29,4 +31,7 @@ __all__ = [
     "miner_life",
     "rating_life",
     "reference_load_distribution",
+    "reference_slice_loads",
+    "roller",
+    "roller_rating_life",
 ]
