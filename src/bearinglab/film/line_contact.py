@@ -122,7 +122,7 @@ def roller_entrainment_velocity(shaft_speed, roller_diameter, pitch_diameter, co
     Examples
     --------
     >>> print(f"{roller_entrainment_velocity(157.08, 11e-3, 60.5e-3):.4f} m/s")
-    2.2998 m/s
+    2.2973 m/s
     """
     w = np.abs(as_float("shaft_speed", shaft_speed))
     d = check_positive("roller_diameter", roller_diameter, "m")
