@@ -123,7 +123,7 @@ class RollerBearing:
     >>> import math
     >>> b = RollerBearing("tapered", 17, 10e-3, 14e-3, 60e-3, math.radians(14.0))
     >>> print(f"cone {math.degrees(b.tapered_angles.cone_angle):.2f} deg")
-    cone 10.02 deg
+    cone 10.03 deg
     """
 
     type: str = "cylindrical"

@@ -40,7 +40,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .._validate import as_float, check_integer, check_nonnegative, check_positive
-from ..errors import InputError
+from ..errors import ConvergenceError, InputError
 
 __all__ = [
     "PROFILES",
@@ -60,6 +60,7 @@ PROFILES = ("logarithmic", "crowned", "flat")
 # rollers with L_we <= 2.5 D_we: 0.00035; longer ones: 0.0005 over an end zone of 1.25 D_we at each end;
 # tapered rollers: 0.00045.
 _LOG_SHORT, _LOG_LONG, _LOG_TAPERED, _LONG_RATIO = 0.00035, 0.0005, 0.00045, 2.5
+_ANGLE_TOL, _ANGLE_MAX_ITER = 1e-15, 20  # Newton on the roller half angle [rad]
 
 
 class TaperedAngles(NamedTuple):
@@ -99,16 +100,18 @@ def tapered_angles(contact_angle, roller_diameter, pitch_diameter):
     :math:`\ell = D_{pw} / (2\sin\alpha_r)` from the apex, so its half angle :math:`\varphi` satisfies
     :math:`\tan\varphi = (D_{we}/2)/\ell = (D_{we}/D_{pw})\sin\alpha_r`. The cup raceway is the roller's
     outer generatrix, :math:`\alpha = \alpha_r + \varphi`, the cone raceway its inner one,
-    :math:`\alpha_i = \alpha_r - \varphi`. With :math:`k = D_{we}/D_{pw}` this gives in closed form
+    :math:`\alpha_i = \alpha_r - \varphi`. With :math:`k = D_{we}/D_{pw}`,
 
-    .. math:: \tan\varphi = \frac{k\sin\alpha}{1 + k\cos\alpha},\qquad
-              \alpha_i = \alpha - 2\varphi.
+    .. math:: \tan\varphi = k\sin(\alpha - \varphi),\qquad \alpha_i = \alpha - 2\varphi,
+
+    solved by Newton's method from :math:`\tan\varphi_0 = k\sin\alpha/(1 + k\cos\alpha)` (the root when
+    :math:`\cos\varphi \approx 1`) to 1e-15 rad.
 
     Examples
     --------
     >>> a = tapered_angles(math.radians(15.0), 10e-3, 60e-3)
     >>> print(f"{math.degrees(a.cone_angle):.3f} deg cone, {math.degrees(a.roller_angle):.3f} deg roller half angle")
-    10.744 deg cone, 2.128 deg roller half angle
+    10.747 deg cone, 2.127 deg roller half angle
     """
     alpha = as_float("contact_angle", contact_angle)
     bad = ~((alpha > 0) & (alpha <= math.radians(45.0) + 1e-12))
@@ -119,7 +122,13 @@ def tapered_angles(contact_angle, roller_diameter, pitch_diameter):
     dpw = check_positive("pitch_diameter", pitch_diameter, "m")
     k = d / dpw
     phi = np.arctan(k * np.sin(alpha) / (1.0 + k * np.cos(alpha)))
-    return TaperedAngles(alpha[()], (alpha - 2.0 * phi)[()], phi[()], (alpha - phi)[()])
+    for it in range(1, _ANGLE_MAX_ITER + 1):
+        residual = np.tan(phi) - k * np.sin(alpha - phi)
+        step = residual / (1.0 / np.cos(phi) ** 2 + k * np.cos(alpha - phi))
+        phi = phi - step
+        if np.all(np.abs(step) < _ANGLE_TOL):
+            return TaperedAngles(alpha[()], (alpha - 2.0 * phi)[()], phi[()], (alpha - phi)[()])
+    raise ConvergenceError("rollers.geometry.tapered_angles", iterations=it, residual=residual, estimate=phi)
 
 
 def slice_positions(roller_length, n_slices):
