@@ -235,6 +235,7 @@ class _Kernel(NamedTuple):
     c: float
     dm: float
     arm: np.ndarray  # (5,) moment arms of the scaled residual
+    resolution: float  # [N] the load of an approach of one rounding of the gap or drop on every lamina
 
 
 def _kernel(rs):
@@ -248,8 +249,12 @@ def _kernel(rs):
     gt = (g[:, :, None] * t[:, None, :] + t[:, :, None] * g[:, None, :]).reshape(-1, 25)
     tt = (t[:, :, None] * t[:, None, :]).reshape(-1, 25)
     s = np.ascontiguousarray(rs.slice_position)
+    # the rounding of an approach near contact is eps times the gap or the drop it is measured against
+    size = max(abs(rs.normal_gap), 2.0 * float(np.max(rs.drop)), np.finfo(float).tiny)
+    resolution = _NOISE * rs.rollers * len(s) * rs.slice_constant * (_EPS * size) ** (10.0 / 9.0)
     return _Kernel(g, t, gg, gt, tt, s, s * s, -rs.normal_gap - 2.0 * rs.drop, rs.slice_constant,
-                   rs.pitch_diameter, np.array([1.0, 1.0, 1.0, 2.0 / rs.pitch_diameter, 2.0 / rs.pitch_diameter]))
+                   rs.pitch_diameter, np.array([1.0, 1.0, 1.0, 2.0 / rs.pitch_diameter, 2.0 / rs.pitch_diameter]),
+                   resolution)
 
 
 def _evaluate(kn, u, deriv=True):
@@ -271,14 +276,17 @@ def _evaluate(kn, u, deriv=True):
     return force, stiff, q, roller, noise
 
 
-def _measure(arm, loads, force, total, noise, free):
+def _measure(arm, loads, force, total, noise, free, resolution=0.0):
     """Residual norm [N], relative residual and relative rounding floor (capped at 1e-9); ``total`` is the sum
-    of the roller loads of each case, ``noise`` the rounding of its reaction."""
+    of the roller loads of each case, ``noise`` the rounding of its reaction. A residual below ``resolution``
+    [N] (what all laminae carry at an approach of one rounding of the gap or of the profile drop, about
+    1e-13 N) is no residual: such loads are below what the geometry resolves, and the relative residual is
+    set to 0."""
     diff = (loads - force) if free is None else (loads - force) * free
     res = np.linalg.norm(diff * arm, axis=-1)
     scale = np.maximum(np.linalg.norm(loads * arm, axis=-1), total)
     with np.errstate(invalid="ignore", divide="ignore"):
-        rel = np.where(scale > 0, res / scale, res)
+        rel = np.where(res <= resolution, 0.0, np.where(scale > 0, res / scale, res))
         floor = np.where(scale > 0, _NOISE * noise / scale, 0.0)
     return res, rel, np.minimum(floor, _RESOLVABLE)
 
@@ -291,9 +299,11 @@ def _start(rs, kn, loads):
     z = rs.rollers
     fr = np.hypot(loads[:, 0], loads[:, 1])
     mm = np.hypot(loads[:, 3], loads[:, 4])
-    gap = rs.normal_gap
+    gap = rs.normal_gap + 2.0 * float(np.min(rs.drop))  # the least approach at which a lamina touches
     u = np.zeros_like(loads)
-    dr = np.where(fr > 0, (max(gap, 0.0) + (4.08 * fr / (z * math.cos(a) * big_k)) ** 0.9) / math.cos(a), 0.0)
+    # the roller nearest the load direction lies within pi/Z of it: reach it
+    dr = np.where(fr > 0, (max(gap, 0.0) + (4.08 * fr / (z * math.cos(a) * big_k)) ** 0.9)
+                  / (math.cos(a) * math.cos(math.pi / z)), 0.0)
     with np.errstate(invalid="ignore", divide="ignore"):
         u[:, 0:2] = np.where(fr[:, None] > 0, loads[:, 0:2] / fr[:, None] * dr[:, None], 0.0)
     if a > 0:
@@ -304,27 +314,32 @@ def _start(rs, kn, loads):
     k_lin = (10.0 / 9.0) * big_k * ref ** (1.0 / 9.0)
     arm2 = (0.5 * rs.pitch_diameter * math.sin(a)) ** 2 + rs.roller_length**2 / 12.0
     k_tilt = 0.5 * z * k_lin * arm2
+    # a moment alone must first close the gap and the profile drop at the roller ends by the tilt
+    lever = 0.5 * rs.pitch_diameter * math.sin(a) + 0.5 * rs.roller_length
+    closing = (max(rs.normal_gap, 0.0) + 2.0 * float(max(rs.drop[0], rs.drop[-1]))) / lever
+    closing = np.where(fr > 0, 0.0, closing)
     with np.errstate(invalid="ignore", divide="ignore"):
-        tilt = np.where(mm[:, None] > 0, loads[:, 3:5] / k_tilt[:, None], 0.0)
+        tilt = np.where(mm[:, None] > 0, loads[:, 3:5] / mm[:, None] * (mm / k_tilt + closing)[:, None], 0.0)
     u[:, 3:5] = np.clip(tilt, -0.05 * rs.roller_diameter / rs.roller_length, 0.05 * rs.roller_diameter / rs.roller_length)
     return u
 
 
-def _newton(evaluate, arm, loads, u0, free, tol, max_iter, limit, span):
+def _newton(evaluate, arm, loads, u0, free, tol, max_iter, limit, span, resolution=0.0):
     """Damped Newton (Levenberg-Marquardt, the kernels of :mod:`bearinglab.quasistatic._ring`) with a line
     search on |F - F(u)|, all cases together, each with its own damping.
 
     ``evaluate(u)`` gives the reaction (n, 5), the stiffness (n, 5, 5), the sum of the roller loads (n,) and the
     rounding of the reaction (n,); ``arm`` the residual's scale (moments / (d_m/2)); ``free`` (n, 5) 1.0 for a
     freedom under a given load, 0.0 for one held at u0; a step moves no lamina by more than ``limit`` [m]
-    (``span`` the lever of a tilt). Returns u, converged, iterations and the relative residual.
+    (``span`` the lever of a tilt); ``resolution`` of :func:`_measure`. Returns u, converged, iterations and the
+    relative residual.
     """
     n = len(loads)
     u = u0.copy()
     it = np.zeros(n, dtype=int)
     lam = np.zeros(n)
     force, stiff, total, noise = evaluate(u)
-    norm, rel, floor = _measure(arm, loads, force, total, noise, free)
+    norm, rel, floor = _measure(arm, loads, force, total, noise, free, resolution)
     done = rel <= np.maximum(tol, floor)
     dm = 2.0 / arm[3]
     for _ in range(max_iter):
@@ -342,7 +357,7 @@ def _newton(evaluate, arm, loads, u0, free, tol, max_iter, limit, span):
             sel = act[pending]
             trial = u[sel] + t[pending, None] * du[pending]
             f_t, k_t, tot_t, n_t = evaluate(trial)
-            nm_t, rel_t, fl_t = _measure(arm, loads[sel], f_t, tot_t, n_t, free[sel])
+            nm_t, rel_t, fl_t = _measure(arm, loads[sel], f_t, tot_t, n_t, free[sel], resolution)
             good = (nm_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | (rel_t <= np.maximum(tol, fl_t))
             g = sel[good]
             u[g], force[g], stiff[g], norm[g], rel[g], floor[g] = (trial[good], f_t[good], k_t[good], nm_t[good],
@@ -484,7 +499,7 @@ def _solve(rs, kn, f, held, tol, max_iter):
         sl = slice(lo, min(n, lo + _CHUNK))
         u0 = np.where(free[sl] > 0, _start(rs, kn, f[sl]), held[sl])
         u[sl], ok[sl], it[sl], rel[sl] = _newton(evaluate, kn.arm, f[sl], u0, free[sl], tol, max_iter,
-                                                 0.1 * rs.roller_diameter, span)
+                                                 0.1 * rs.roller_diameter, span, kn.resolution)
     return u, ok, it, rel, free
 
 
