@@ -13,7 +13,8 @@ The rules (docs/user_guide/roller_bearings.md, "Estimated internal geometry"):
 1. Pitch diameter :math:`D_{pw} = k_p (d + D)/2` and roller diameter :math:`D_{we} = k_D (D - d)`, with
    :math:`k_p` and :math:`k_D` the medians over the 24 single row cylindrical roller bearings of
    ``data/roller_raceways.csv`` (SKF's printed raceway diameters F and E give D_we = (E - F)/2 and
-   D_pw = (E + F)/2 exactly). Measured error there: D_we -4.9 % to +3.0 %, D_pw -0.6 % to +0.5 %.
+   D_pw = (E + F)/2 exactly). Measured error there (estimate against published): D_we -2.9 % to +5.1 %,
+   D_pw -0.5 % to +0.6 %.
 2. Rollers :math:`Z = \lfloor \pi D_{pw} / (1.2 D_{we}) \rfloor` (a cage bar a fifth of a roller diameter
    between neighbours): an assumption, not measured (no public source of roller counts was found).
 3. Effective length from the catalogue's C0 by ISO 76 inverted,
