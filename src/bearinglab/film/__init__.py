@@ -28,7 +28,13 @@ from .ehl import (
     pressure_viscosity_coefficient,
     thermal_reduction_factor,
 )
-from .line_contact import LINE_MODELS, RollerFilms, line_film, roller_entrainment_velocity, roller_films
+from .line_contact import (
+    LINE_MODELS,
+    RollerFilms,
+    line_film,
+    roller_entrainment_velocity,
+    roller_films,
+)
 
 __all__ = [
     "LINE_MODELS",

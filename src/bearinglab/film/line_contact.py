@@ -209,7 +209,7 @@ def roller_films(roller_load, shaft_speed, roller_diameter, roller_length, pitch
     ue = u[..., None] if u.ndim else u
     films = [line_film(w, ue, 0.5 * d * (1.0 + sign * gamma), dynamic_viscosity, pressure_viscosity_coefficient,
                        reduced_modulus, model=model) for sign in (-1.0, 1.0)]
-    nan = lambda a: np.where(loaded, a, np.nan)  # noqa: E731
+    nan = lambda a: np.where(loaded, a, np.nan)
     hi, ho = (nan(f.minimum) for f in films)
     lam = film_parameter(np.minimum(hi, ho), roughness_roller, roughness_race)
     return RollerFilms(nan(films[0].central), hi, nan(films[1].central), ho, lam, lubrication_regime(lam), u)

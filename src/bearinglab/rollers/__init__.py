@@ -21,7 +21,14 @@ bearings are covered by ratings, life and friction only. Every public name of th
 from . import analysis, bearing, contact, distribution, estimation, geometry, pairs, reactions
 from .analysis import N_SLICES, bearing_roller_set, provenance, roller_analysis
 from .bearing import DESIGNS, ROLLER_TYPES, RollerBearing
-from .contact import SLICE_CONSTANT, LineContact, contact_radii, line_contact, slice_loads, slice_stiffness
+from .contact import (
+    SLICE_CONSTANT,
+    LineContact,
+    contact_radii,
+    line_contact,
+    slice_loads,
+    slice_stiffness,
+)
 from .distribution import (
     AXIAL_SUPPORTS,
     Equilibrium,

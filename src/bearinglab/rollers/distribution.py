@@ -236,6 +236,9 @@ class _Kernel(NamedTuple):
     dm: float
     arm: np.ndarray  # (5,) moment arms of the scaled residual
     resolution: float  # [N] the load of an approach of one rounding of the gap or drop on every lamina
+    s_max: float  # max |s_k|
+    base_max: float  # max_k (-g0 - 2 P(s_k))
+    base_abs: float  # max_k |-g0 - 2 P(s_k)|
 
 
 def _kernel(rs):
@@ -252,28 +255,52 @@ def _kernel(rs):
     # the rounding of an approach near contact is eps times the gap or the drop it is measured against
     size = max(abs(rs.normal_gap), 2.0 * float(np.max(rs.drop)), np.finfo(float).tiny)
     resolution = _NOISE * rs.rollers * len(s) * rs.slice_constant * (_EPS * size) ** (10.0 / 9.0)
-    return _Kernel(g, t, gg, gt, tt, s, s * s, -rs.normal_gap - 2.0 * rs.drop, rs.slice_constant,
+    base = -rs.normal_gap - 2.0 * rs.drop
+    return _Kernel(g, t, gg, gt, tt, s, s * s, base, rs.slice_constant,
                    rs.pitch_diameter, np.array([1.0, 1.0, 1.0, 2.0 / rs.pitch_diameter, 2.0 / rs.pitch_diameter]),
-                   resolution)
+                   resolution, float(np.max(np.abs(s))), float(np.max(base)), float(np.max(np.abs(base))))
 
 
-def _evaluate(kn, u, deriv=True):
-    """Reaction F(u), tangent stiffness, lamina loads and a rounding scale of the approaches, for (n, 5) u."""
+def _evaluate(kn, u, deriv=True, slices=False):
+    """Reaction F(u) (n, 5), tangent stiffness (n, 5, 5), lamina loads (n, Z, n_s) (with ``slices``, else None),
+    roller loads (n, Z) and a rounding scale of the reaction (n,), for (n, 5) displacements u.
+
+    Only the rollers that can touch are sliced: a roller whose largest possible approach
+    g.u + |t.u| max|s| + max(-g0 - 2P) is <= 0 carries nothing (about half of them under a radial load).
+    Every row is computed from its own numbers alone (gathered, summed along its laminae, scattered back), so a
+    case gives the same bits in any batch.
+    """
+    n, z = len(u), kn.g.shape[0]
     gu = _ring.rowwise(u, kn.g.T)  # (n, Z)
     tu = _ring.rowwise(u, kn.t.T)
-    delta = gu[:, :, None] + tu[:, :, None] * kn.s + kn.base  # (n, Z, n_s)
-    q, k = contact.slice_loads(delta, kn.c)
-    roller = np.sum(q, axis=-1)
-    moment = np.sum(q * kn.s, axis=-1)
+    reach = gu + np.abs(tu) * kn.s_max + kn.base_max
+    live = np.flatnonzero(reach > 0)
+    roller, moment = np.zeros(n * z), np.zeros(n * z)
+    k0, k1, k2 = np.zeros(n * z), np.zeros(n * z), np.zeros(n * z)
+    q_all = np.zeros((n * z, len(kn.s))) if slices else None
+    if live.size:
+        gl, tl = gu.ravel()[live], tu.ravel()[live]
+        delta = gl[:, None] + tl[:, None] * kn.s + kn.base  # (m, n_s)
+        q, k = contact.slice_loads(delta, kn.c)
+        # sums along each row's laminae (einsum: one loop per row, the same for any number of rows; BLAS is
+        # slower on these tall, narrow arrays and rounds a single row differently)
+        roller[live] = np.einsum("ij->i", q)
+        moment[live] = np.einsum("ij,j->i", q, kn.s)
+        k0[live] = np.einsum("ij->i", k)
+        if deriv:
+            k1[live] = np.einsum("ij,j->i", k, kn.s)
+            k2[live] = np.einsum("ij,j->i", k, kn.s2)
+        if slices:
+            q_all[live] = q
+    roller, moment, k0 = roller.reshape(n, z), moment.reshape(n, z), k0.reshape(n, z)
     force = _ring.rowwise(roller, kn.g) + _ring.rowwise(moment, kn.t)
     stiff = None
     if deriv:
-        stiff = (_ring.rowwise(np.sum(k, axis=-1), kn.gg) + _ring.rowwise(np.sum(k * kn.s, axis=-1), kn.gt)
-                 + _ring.rowwise(np.sum(k * kn.s2, axis=-1), kn.tt)).reshape(-1, 5, 5)
-    # the rounding of an approach is eps times the size of the terms it is the difference of
-    size = (np.abs(gu)[:, :, None] + np.abs(tu)[:, :, None] * np.abs(kn.s) + np.abs(kn.base))
-    noise = np.sum(k * size, axis=(1, 2)) * _EPS
-    return force, stiff, q, roller, noise
+        stiff = (_ring.rowwise(k0, kn.gg) + _ring.rowwise(k1.reshape(n, z), kn.gt)
+                 + _ring.rowwise(k2.reshape(n, z), kn.tt)).reshape(-1, 5, 5)
+    # the rounding of an approach is eps times the size of the terms it is the difference of (bounded per roller)
+    noise = np.sum(k0 * (np.abs(gu) + np.abs(tu) * kn.s_max + kn.base_abs), axis=1) * _EPS
+    return force, stiff, None if q_all is None else q_all.reshape(n, z, -1), roller, noise
 
 
 def _measure(arm, loads, force, total, noise, free, resolution=0.0):
@@ -562,7 +589,7 @@ def load_distribution(loads, roller_set, *, prescribed_displacement=None, on_fai
     _check_single_tapered(rs, f, held)
     kn = _kernel(rs)
     u, ok, it, rel, free = _solve(rs, kn, f, held, tol, max_iter)
-    force, stiff, q, roller, _ = _evaluate(kn, u)
+    force, stiff, q, roller, _ = _evaluate(kn, np.nan_to_num(u), slices=True)
     cylindrical = rs.axial_support != "raceways"
     rib = f[:, 2].copy() if cylindrical else np.zeros(len(f))  # F_z of an NJ / NUP: on its (rigid) ribs
     reactions = np.where(np.isnan(given), np.nan, force)  # the prescribed freedoms only
@@ -586,7 +613,8 @@ def _result(rs, loads, u, q, roller, stiff, rib, ok, it, rel, shape, warnings, r
     """The RollerLoadDistribution of flat cases (pressures from the lamina loads; NaN where not converged)."""
     ri, _ = contact.contact_radii(rs.roller_diameter, rs.pitch_diameter, rs.contact_angle)
     width = rs.roller_length / len(rs.slice_position)
-    pressure = contact.line_contact(q / width, ri, rs.reduced_modulus).max_pressure
+    # contact.line_contact's p_max = sqrt(w E' / (2 pi R)) with w = q / width, in one pass over the laminae
+    pressure = np.sqrt(q * (rs.reduced_modulus / (2.0 * np.pi * ri * width)))
     nan = ~ok
     z, ns = rs.rollers, len(rs.slice_position)
 

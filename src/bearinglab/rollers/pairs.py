@@ -269,11 +269,11 @@ def pair_analysis(bearing_a, bearing_b, loads, *, distance, arrangement="back-to
                                    reason=f"loads {flat[k].tolist()}: the shaft's Newton iteration stalled "
                                           f"({int((~ok).sum())} of {ok.size} cases failed)")
         warns.append(f"{int((~ok).sum())} case(s) not converged (NaN, converged False; first: case {k})")
-    force, stiff, _, _ = evaluate(u)
+    _, stiff, _, _ = evaluate(u)
     results, axial, radial = [], [], []
     for rs, kn, m in zip(sets, kernels, mats, strict=True):
         ul = u @ m.T
-        fl, kl, q, roller, _ = distribution._evaluate(kn, ul)
+        fl, kl, q, roller, _ = distribution._evaluate(kn, np.nan_to_num(ul), slices=True)
         none = np.full_like(fl, np.nan)
         results.append(distribution._result(rs, fl, ul, q, roller, kl, np.zeros(len(fl)), ok, it, rel, shape, (),
                                             none))
