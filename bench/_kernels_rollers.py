@@ -140,6 +140,7 @@ def solve_one(rs, loads, tol=_d.TOL, max_iter=_d.MAX_ITER):
     force, k, total, noise = _evaluate(rows, s, base, c, u)
     norm, rel, floor = _measure(arm, loads, force, total, noise, free, resolution)
     lam = 0.0
+    loaded = any(loads[i] * free[i] != 0 for i in range(5))
     for _ in range(max_iter):
         if rel <= max(tol, floor) or lam > _d._LAM_MAX:
             break
@@ -151,7 +152,7 @@ def solve_one(rs, loads, tol=_d.TOL, max_iter=_d.MAX_ITER):
             trial = [u[i] + t * du[i] for i in range(5)]
             f_t, k_t, tot_t, n_t = _evaluate(rows, s, base, c, trial)
             nm_t, rel_t, fl_t = _measure(arm, loads, f_t, tot_t, n_t, free, resolution)
-            if nm_t < norm * (1.0 - 1e-4 * t) or rel_t <= max(tol, fl_t):
+            if (nm_t < norm * (1.0 - 1e-4 * t) or rel_t <= max(tol, fl_t)) and (tot_t > 0 or not loaded):
                 u, force, k, norm, rel, floor, accepted = trial, f_t, k_t, nm_t, rel_t, fl_t, True
                 break
             t *= 0.25

@@ -368,6 +368,7 @@ def _newton(evaluate, arm, loads, u0, free, tol, max_iter, limit, span, resoluti
     force, stiff, total, noise = evaluate(u)
     norm, rel, floor = _measure(arm, loads, force, total, noise, free, resolution)
     done = rel <= np.maximum(tol, floor)
+    loaded = np.any(loads * free != 0, axis=1)
     dm = 2.0 / arm[3]
     for _ in range(max_iter):
         act = np.flatnonzero(~done & (lam <= _LAM_MAX))
@@ -386,6 +387,8 @@ def _newton(evaluate, arm, loads, u0, free, tol, max_iter, limit, span, resoluti
             f_t, k_t, tot_t, n_t = evaluate(trial)
             nm_t, rel_t, fl_t = _measure(arm, loads[sel], f_t, tot_t, n_t, free[sel], resolution)
             good = (nm_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | (rel_t <= np.maximum(tol, fl_t))
+            # a loaded ring that loses every contact has no stiffness to come back with: not a step to take
+            good &= (tot_t > 0) | ~loaded[sel]
             g = sel[good]
             u[g], force[g], stiff[g], norm[g], rel[g], floor[g] = (trial[good], f_t[good], k_t[good], nm_t[good],
                                                                    rel_t[good], fl_t[good])
