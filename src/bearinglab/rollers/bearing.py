@@ -308,7 +308,7 @@ class RollerBearing:
         Parameters
         ----------
         position : array_like
-            From the middle of the effective length, |x| < L_we / 2. [m]
+            From the middle of the effective length, abs(x) < L_we / 2. [m]
 
         Returns
         -------

@@ -173,7 +173,7 @@ def logarithmic_drop(position, roller_length, roller_diameter, *, tapered=False)
     Parameters
     ----------
     position : array_like
-        x from the middle of the effective length, |x| < L_we/2. [m]
+        x from the middle of the effective length, abs(x) < L_we/2. [m]
     roller_length : float
         L_we. [m]
     roller_diameter : float
@@ -221,7 +221,7 @@ def crowned_drop(position, roller_length, crown_drop):
     Parameters
     ----------
     position : array_like
-        x, |x| < L_we/2. [m]
+        x, abs(x) < L_we/2. [m]
     roller_length : float
         L_we. [m]
     crown_drop : float
@@ -251,14 +251,14 @@ def flat_drop(position, roller_length, *, edge_radius=None, edge_length=0.0):
     Parameters
     ----------
     position : array_like
-        x, |x| < L_we/2. [m]
+        x, abs(x) < L_we/2. [m]
     roller_length : float
         L_we. [m]
     edge_radius : float, optional
         r_e, the radius of the circular edge zones (with ``edge_length``). [m]
     edge_length : float
         The length of each edge zone, 0 <= l_e < L_we/2 and <= r_e: the profile is straight over
-        |x| <= L_we/2 - l_e. [m]
+        abs(x) <= L_we/2 - l_e. [m]
 
     Returns
     -------
