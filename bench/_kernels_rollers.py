@@ -118,7 +118,7 @@ def _start(rs, loads):
     arm2 = (0.5 * rs.pitch_diameter * math.sin(a)) ** 2 + rs.roller_length**2 / 12.0
     k_tilt = 0.5 * z * k_lin * arm2
     lever = 0.5 * rs.pitch_diameter * math.sin(a) + 0.5 * rs.roller_length
-    closing = 0.0 if fr > 0 else (max(rs.normal_gap, 0.0) + 2.0 * max(float(rs.drop[0]), float(rs.drop[-1]))) / lever
+    closing = (max(rs.normal_gap, 0.0) + 2.0 * max(float(rs.drop[0]), float(rs.drop[-1]))) / lever if mm > fr * lever else 0.0
     cap = 0.05 * rs.roller_diameter / rs.roller_length
     if mm > 0:
         for i in (3, 4):

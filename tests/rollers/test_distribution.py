@@ -164,11 +164,14 @@ def test_a_single_tapered_bearing_needs_its_thrust():
 
 
 def test_a_case_gives_the_same_bits_alone_and_in_a_batch():
+    # 1100 cases: more than one chunk of the solve, and a batch that runs on one BLAS thread (single cases do not)
+    n = 1100
     rng = np.random.default_rng(7)
-    loads = np.column_stack([rng.uniform(-2e4, 2e4, 40), rng.uniform(-2e4, 2e4, 40), np.zeros(40),
-                             rng.uniform(-30, 30, 40), rng.uniform(-30, 30, 40)])
+    loads = np.column_stack([rng.uniform(-2e4, 2e4, n), rng.uniform(-2e4, 2e4, n), np.zeros(n),
+                             rng.uniform(-30, 30, n), rng.uniform(-30, 30, n)])
+    assert n > dist._CHUNK and n > dist._ONE_BLAS_THREAD
     batch = dist.load_distribution(loads, CYL)
-    for k in (0, 17, 39):
+    for k in (0, 17, 39, 1050):
         one = dist.load_distribution(loads[k], CYL)
         assert np.array_equal(one.displacement, batch.displacement[k])
         assert np.array_equal(one.slice_load, batch.slice_load[k])

@@ -113,6 +113,18 @@ def slice_loads(approach, stiffness):
     return c * d * ninth, (10.0 / 9.0) * c * ninth
 
 
+def _slice_loads_into(delta, c):
+    """:func:`slice_loads` of a scalar c_s, overwriting ``delta`` (a float array the caller owns): the same
+    operations in the same order (the same bits), without temporaries. For the ring Newton's inner loop."""
+    np.maximum(delta, 0.0, out=delta)
+    ninth = np.cbrt(delta)
+    np.cbrt(ninth, out=ninth)
+    np.multiply(delta, c, out=delta)
+    np.multiply(delta, ninth, out=delta)
+    np.multiply(ninth, (10.0 / 9.0) * c, out=ninth)
+    return delta, ninth
+
+
 def contact_radii(roller_diameter, pitch_diameter, contact_angle=0.0):
     r"""Radii of the inner and outer roller-raceway contacts in the rolling direction.
 

@@ -53,6 +53,7 @@ References
 
 from __future__ import annotations
 
+import contextlib
 import math
 from typing import NamedTuple
 
@@ -80,13 +81,14 @@ __all__ = [
 AXIAL_SUPPORTS = ("raceways", "none", "ribs-positive", "ribs")
 
 TOL = 1e-12  # relative residual |F - F(u)| / max(|F|, sum of roller loads), moments divided by d_m/2
-MAX_ITER = 100  # ring Newton iterations per case
+MAX_ITER = 200  # ring Newton iterations per case (4-8 typical; the tail: light loads with clearance)
 _RESOLVABLE = 1e-9  # every returned case in equilibrium to 1e-9 relative (issue 32), rounding or not
 _NOISE = 4.0  # a residual within this many rounding floors is converged
 _LINE_SEARCH = 10  # step cuts (by 4) of the line search
 _LAM_MAX = 1e6  # Levenberg-Marquardt damping beyond which a case has failed
 _CHUNK = 1024  # cases per pass (the (cases, rollers, slices) arrays stay in cache)
 _EPS = np.finfo(float).eps
+_ONE_BLAS_THREAD = 256  # cases from which the solve runs its small matrix products on one BLAS thread
 
 
 class RollerSet(NamedTuple):
@@ -239,6 +241,21 @@ class _Kernel(NamedTuple):
     s_max: float  # max |s_k|
     base_max: float  # max_k (-g0 - 2 P(s_k))
     base_abs: float  # max_k |-g0 - 2 P(s_k)|
+    gt_cols: np.ndarray  # (5, 2Z) [g.T, t.T]: the approaches at the middles and their slopes in one product
+    force_rows: np.ndarray  # (2Z, 5) [g; t]: the reaction from the roller loads and moments in one product
+    stiff_rows: np.ndarray  # (3Z, 25) [gg; gt; tt]: the stiffness from K_0, K_1, K_2 in one product
+
+
+def _one_blas_thread(n):
+    """One BLAS thread for the products of a batch of n cases (from :data:`_ONE_BLAS_THREAD`; as
+    :func:`bearinglab.runout.tolerances.monte_carlo_chunk` does): the (n, Z) x (Z, 25) products are too narrow to
+    share, and on a busy machine OpenBLAS's threads made the solve 1.5-3 times slower (bench/rollers.py). The
+    results are the same bits either way."""
+    if n < _ONE_BLAS_THREAD:
+        return contextlib.nullcontext()
+    from threadpoolctl import threadpool_limits
+
+    return threadpool_limits(limits=1, user_api="blas")
 
 
 def _kernel(rs):
@@ -258,7 +275,9 @@ def _kernel(rs):
     base = -rs.normal_gap - 2.0 * rs.drop
     return _Kernel(g, t, gg, gt, tt, s, s * s, base, rs.slice_constant,
                    rs.pitch_diameter, np.array([1.0, 1.0, 1.0, 2.0 / rs.pitch_diameter, 2.0 / rs.pitch_diameter]),
-                   resolution, float(np.max(np.abs(s))), float(np.max(base)), float(np.max(np.abs(base))))
+                   resolution, float(np.max(np.abs(s))), float(np.max(base)), float(np.max(np.abs(base))),
+                   np.ascontiguousarray(np.concatenate([g.T, t.T], axis=1)), np.concatenate([g, t]),
+                   np.concatenate([gg, gt, tt]))
 
 
 def _evaluate(kn, u, deriv=True, slices=False):
@@ -271,8 +290,8 @@ def _evaluate(kn, u, deriv=True, slices=False):
     case gives the same bits in any batch.
     """
     n, z = len(u), kn.g.shape[0]
-    gu = _ring.rowwise(u, kn.g.T)  # (n, Z)
-    tu = _ring.rowwise(u, kn.t.T)
+    gtu = _ring.rowwise(u, kn.gt_cols)  # (n, 2Z)
+    gu, tu = gtu[:, :z], gtu[:, z:]
     reach = gu + np.abs(tu) * kn.s_max + kn.base_max
     live = np.flatnonzero(reach > 0)
     roller, moment = np.zeros(n * z), np.zeros(n * z)
@@ -280,8 +299,10 @@ def _evaluate(kn, u, deriv=True, slices=False):
     q_all = np.zeros((n * z, len(kn.s))) if slices else None
     if live.size:
         gl, tl = gu.ravel()[live], tu.ravel()[live]
-        delta = gl[:, None] + tl[:, None] * kn.s + kn.base  # (m, n_s)
-        q, k = contact.slice_loads(delta, kn.c)
+        delta = np.multiply.outer(tl, kn.s)  # (m, n_s): g.u + (t.u) s_k - g0 - 2 P(s_k)
+        delta += gl[:, None]
+        delta += kn.base
+        q, k = contact._slice_loads_into(delta, kn.c)
         # sums along each row's laminae (einsum: one loop per row, the same for any number of rows; BLAS is
         # slower on these tall, narrow arrays and rounds a single row differently)
         roller[live] = np.einsum("ij->i", q)
@@ -293,11 +314,11 @@ def _evaluate(kn, u, deriv=True, slices=False):
         if slices:
             q_all[live] = q
     roller, moment, k0 = roller.reshape(n, z), moment.reshape(n, z), k0.reshape(n, z)
-    force = _ring.rowwise(roller, kn.g) + _ring.rowwise(moment, kn.t)
+    force = _ring.rowwise(np.concatenate([roller, moment], axis=1), kn.force_rows)
     stiff = None
     if deriv:
-        stiff = (_ring.rowwise(k0, kn.gg) + _ring.rowwise(k1.reshape(n, z), kn.gt)
-                 + _ring.rowwise(k2.reshape(n, z), kn.tt)).reshape(-1, 5, 5)
+        stiff = _ring.rowwise(np.concatenate([k0, k1.reshape(n, z), k2.reshape(n, z)], axis=1),
+                              kn.stiff_rows).reshape(-1, 5, 5)
     # the rounding of an approach is eps times the size of the terms it is the difference of (bounded per roller)
     noise = np.sum(k0 * (np.abs(gu) + np.abs(tu) * kn.s_max + kn.base_abs), axis=1) * _EPS
     return force, stiff, None if q_all is None else q_all.reshape(n, z, -1), roller, noise
@@ -341,10 +362,11 @@ def _start(rs, kn, loads):
     k_lin = (10.0 / 9.0) * big_k * ref ** (1.0 / 9.0)
     arm2 = (0.5 * rs.pitch_diameter * math.sin(a)) ** 2 + rs.roller_length**2 / 12.0
     k_tilt = 0.5 * z * k_lin * arm2
-    # a moment alone must first close the gap and the profile drop at the roller ends by the tilt
+    # a moment that outweighs the radial load (as a force at the roller ends) must first close the gap and the
+    # profile drop at the roller ends by the tilt: the rollers it loads are not the ones the radial load reaches
     lever = 0.5 * rs.pitch_diameter * math.sin(a) + 0.5 * rs.roller_length
     closing = (max(rs.normal_gap, 0.0) + 2.0 * float(max(rs.drop[0], rs.drop[-1]))) / lever
-    closing = np.where(fr > 0, 0.0, closing)
+    closing = np.where(mm > fr * lever, closing, 0.0)
     with np.errstate(invalid="ignore", divide="ignore"):
         tilt = np.where(mm[:, None] > 0, loads[:, 3:5] / mm[:, None] * (mm / k_tilt + closing)[:, None], 0.0)
     u[:, 3:5] = np.clip(tilt, -0.05 * rs.roller_diameter / rs.roller_length, 0.05 * rs.roller_diameter / rs.roller_length)
@@ -591,8 +613,9 @@ def load_distribution(loads, roller_set, *, prescribed_displacement=None, on_fai
     f, held, given, shape = _flat(loads, prescribed_displacement, rs)
     _check_single_tapered(rs, f, held)
     kn = _kernel(rs)
-    u, ok, it, rel, free = _solve(rs, kn, f, held, tol, max_iter)
-    force, stiff, q, roller, _ = _evaluate(kn, np.nan_to_num(u), slices=True)
+    with _one_blas_thread(len(f)):
+        u, ok, it, rel, free = _solve(rs, kn, f, held, tol, max_iter)
+        force, stiff, q, roller, _ = _evaluate(kn, np.nan_to_num(u), slices=True)
     cylindrical = rs.axial_support != "raceways"
     rib = f[:, 2].copy() if cylindrical else np.zeros(len(f))  # F_z of an NJ / NUP: on its (rigid) ribs
     reactions = np.where(np.isnan(given), np.nan, force)  # the prescribed freedoms only
@@ -617,13 +640,16 @@ def _result(rs, loads, u, q, roller, stiff, rib, ok, it, rel, shape, warnings, r
     ri, _ = contact.contact_radii(rs.roller_diameter, rs.pitch_diameter, rs.contact_angle)
     width = rs.roller_length / len(rs.slice_position)
     # contact.line_contact's p_max = sqrt(w E' / (2 pi R)) with w = q / width, in one pass over the laminae
-    pressure = np.sqrt(q * (rs.reduced_modulus / (2.0 * np.pi * ri * width)))
+    pressure = np.multiply(q, rs.reduced_modulus / (2.0 * np.pi * ri * width))
+    np.sqrt(pressure, out=pressure)
     nan = ~ok
+    failed = bool(nan.any())
     z, ns = rs.rollers, len(rs.slice_position)
 
     def out(a, tail):
-        a = np.array(a, dtype=float, copy=True)
-        a[nan] = np.nan
+        # every array here was made for this result (none is the caller's): NaN goes in in place, no copy
+        if failed:
+            a[nan] = np.nan
         return a.reshape(shape + tail)[()]
 
     return RollerLoadDistribution(

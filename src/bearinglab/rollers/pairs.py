@@ -257,10 +257,12 @@ def pair_analysis(bearing_a, bearing_b, loads, *, distance, arrangement="back-to
     it = np.empty(len(flat), dtype=int)
     rel = np.empty(len(flat))
     chunk = distribution._CHUNK
-    for lo in range(0, len(flat), chunk):
-        sl = slice(lo, min(len(flat), lo + chunk))
-        u[sl], ok[sl], it[sl], rel[sl] = distribution._newton(evaluate, arm, flat[sl], u0[sl], free[sl], tol, max_iter,
-                                                              limit, span, sum(kn.resolution for kn in kernels))
+    with distribution._one_blas_thread(len(flat)):
+        for lo in range(0, len(flat), chunk):
+            sl = slice(lo, min(len(flat), lo + chunk))
+            u[sl], ok[sl], it[sl], rel[sl] = distribution._newton(evaluate, arm, flat[sl], u0[sl], free[sl], tol,
+                                                                  max_iter, limit, span,
+                                                                  sum(kn.resolution for kn in kernels))
     warns = [*provenance(a), *(provenance(b) if b != a else [])]
     if not ok.all():
         k = int(np.flatnonzero(~ok)[0])
