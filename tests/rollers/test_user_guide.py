@@ -16,7 +16,7 @@ import matplotlib
 matplotlib.use("Agg")
 
 PAGE = Path(__file__).resolve().parents[2] / "docs" / "user_guide" / "roller_bearings.md"
-FENCE = re.compile(r"^```(\w*)\n(.*?)^```", re.S | re.M)
+FENCE = re.compile(r"^```(\w*)\n(.*?)^```", re.DOTALL | re.MULTILINE)
 
 
 def _blocks():
