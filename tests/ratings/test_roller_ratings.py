@@ -4,7 +4,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from bearinglab import catalog, ratings
@@ -121,6 +121,7 @@ def test_lamina_ratings_by_hand():
     assert got.lamina_inner == pytest.approx(qci * 30 ** (-7 / 9), rel=1e-12)
 
 
+@settings(deadline=None)
 @given(n=st.integers(2, 60), q=st.floats(10.0, 1e4))
 def test_the_reference_life_of_uniform_laminae_does_not_depend_on_the_slicing(n, q):
     base = rr.roller_reference_rating_life(np.full((14, 1), q), 62e3, 11e-3, 60.5e-3)

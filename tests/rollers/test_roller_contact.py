@@ -4,12 +4,13 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from bearinglab.rollers import contact
 
 
+@settings(deadline=None)
 @given(length=st.floats(2e-3, 80e-3), n=st.integers(1, 80), delta=st.floats(1e-8, 1e-4))
 def test_a_uniformly_loaded_roller_carries_the_same_load_for_any_number_of_slices(length, n, delta):
     # ISO/TS 16281: Q = 35948 L^(8/9) delta^(10/9) (N, mm) for the whole roller

@@ -4,13 +4,14 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from bearinglab.errors import InputError
 from bearinglab.rollers import geometry
 
 
+@settings(deadline=None)
 @given(alpha=st.floats(math.radians(5.0), math.radians(30.0)), d=st.floats(3e-3, 30e-3),
        ratio=st.floats(0.08, 0.3))
 def test_tapered_cones_share_one_apex_on_the_bearing_axis(alpha, d, ratio):

@@ -146,7 +146,7 @@ def roller_rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None,
     >>> r = roller_rating_life(catalog.get("NU 208 ECP"), [10e3, 0, 0, 0, 0], 1500 * np.pi / 30,
     ...                        kinematic_viscosity=20e-6)
     >>> print(f"L10 = {r.basic_rating_life / 1e6:.0f} Mrev, L10r = {r.reference_rating_life / 1e6:.0f} Mrev")
-    L10 = 438 Mrev, L10r = 1589 Mrev
+    L10 = 438 Mrev, L10r = 1695 Mrev
     """
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")

@@ -140,7 +140,7 @@ def preload_gap(bearing, preload, *, n_slices=N_SLICES):
     >>> from bearinglab.rollers.bearing import RollerBearing
     >>> b = RollerBearing("tapered", 17, 10e-3, 14e-3, 60e-3, math.radians(14.0))
     >>> print(f"{preload_gap(b, 2000.0) * 1e6:.3f} um")
-    -7.128 um
+    -42.521 um
     """
     p = float(check_positive("preload", preload, "N"))
     b = _bearing(bearing)

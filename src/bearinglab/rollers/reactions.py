@@ -56,7 +56,7 @@ def roller_reactions(bearing, displacement, *, n_slices=N_SLICES, first_roller_a
     >>> from bearinglab.rollers.bearing import RollerBearing
     >>> f, k, ok = roller_reactions(RollerBearing("cylindrical", 14, 11e-3, 9.6e-3, 60.5e-3), [[10e-6, 0, 0, 0, 0]])
     >>> print(f"{f[0, 0]:.0f} N, k_xx = {k[0, 0, 0] / 1e6:.0f} N/um")
-    5513 N, k_xx = 633 N/um
+    3212 N, k_xx = 469 N/um
     """
     if bearing.type == "spherical":
         raise InputError(f"{bearing.designation or 'this bearing'!r}: a spherical roller bearing has no load-distribution "
