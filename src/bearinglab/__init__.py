@@ -33,6 +33,7 @@ reactions   loads and stiffness of bearings at given ring displacements, batched
 thermal     steady bearing temperature: SKF friction power against the heat carried away
 limits      plausibility limits: warnings for results beyond ISO 76, C0, Hertz, the shoulder, light load
 mounting    mounted clearance: ISO 286 fits, ISO 492 tolerances, Lamé, temperature, speed (issue 23)
+rollers     roller bearings: cylindrical, tapered (pairs), spherical; the ISO/TS 16281 slice model (issue 32)
 
 The submodules are imported on first use (PEP 562): ``import bearinglab`` is instant, and
 ``bearinglab.hertz`` imports :mod:`bearinglab.hertz` the first time it is named, so that the command
@@ -65,6 +66,7 @@ __all__ = [
     "ratings",
     "reactions",
     "report",
+    "rollers",
     "runout",
     "stand",
     "static",

@@ -17,7 +17,8 @@ the inner ring relative to the outer ring, from the concentric position; ``force
 (F_x, F_y, F_z [N], M_x, M_y [N m]) that must act on the inner ring to hold it there, i.e. the load the
 bearing carries (the bearing pushes back on the shaft with ``-force``); ``stiffness`` is
 d force / d displacement. A bearing's operating clearance is the one it carries (``radial_clearance`` or
-``contact_angle`` of a :class:`~bearinglab.bearing.BallBearing`): give the bearing with its mounted
+``contact_angle`` of a :class:`~bearinglab.bearing.BallBearing`, ``radial_clearance`` of a
+:class:`~bearinglab.rollers.bearing.RollerBearing`): give the bearing with its mounted
 clearance (:mod:`bearinglab.mounting`) to have it here.
 
 Bit-identity: a case gives the same bits alone, in any batch and with any other bearings beside it.
@@ -65,8 +66,10 @@ def bearing_reactions(bearings, displacement, shaft_speed=0.0, **options):
 
     Parameters
     ----------
-    bearings : BallBearing or sequence of BallBearing
-        One bearing, or the ``n_bearings`` bearings of a system.
+    bearings : BallBearing, RollerBearing or a sequence of them
+        One bearing, or the ``n_bearings`` bearings of a system. A roller bearing is the slice model at rest
+        (:func:`bearinglab.rollers.reactions.roller_reactions`: a cylindrical one carries no axial load, a
+        tapered one carries F_z > 0).
     displacement : array_like
         (..., n_bearings, 5), or (..., 5) for one bearing: delta_x, delta_y, delta_z [m], theta_x,
         theta_y [rad] of each inner ring relative to its outer ring.
@@ -77,7 +80,8 @@ def bearing_reactions(bearings, displacement, shaft_speed=0.0, **options):
     ----------------
     **options
         ``first_ball_angle``, ``stiffness_at``, ``raceway_control`` as in
-        :func:`bearinglab.quasistatic.combined.load_distribution`.
+        :func:`bearinglab.quasistatic.combined.load_distribution`; ``n_slices``, ``first_roller_angle`` of
+        roller bearings.
 
     Returns
     -------
@@ -111,10 +115,16 @@ def bearing_reactions(bearings, displacement, shaft_speed=0.0, **options):
     stiff = np.empty((n, len(group), 5, 5))
     ok = np.empty((n, len(group)), dtype=bool)
     from .bearing import BallBearing
+    from .rollers.bearing import RollerBearing
 
     for j, b in enumerate(group):
         if isinstance(b, BallBearing):
             f, k, c = _ball_reactions(b, np.ascontiguousarray(flat[:, j]), ww, options)
+        elif isinstance(b, RollerBearing):  # the slice model (issue 32); at rest, so the speed does not enter
+            from .rollers.reactions import roller_reactions
+
+            f, k, c = roller_reactions(b, np.ascontiguousarray(flat[:, j]), **{
+                key: options[key] for key in ("n_slices", "first_roller_angle") if key in options})
         else:
             raise InputError(f"bearings[{j}]: no reaction model for {type(b).__name__}")
         force[:, j], stiff[:, j], ok[:, j] = f, k, c

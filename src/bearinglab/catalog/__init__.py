@@ -182,6 +182,10 @@ def bearing_from_table(table, *, name="", file=None, materials=None):
     where = _where(file, name)
     if not isinstance(table, dict):
         raise CatalogError(f"{where}: expected a table of fields, got {type(table).__name__}")
+    if table.get("type") in ("cylindrical", "tapered", "spherical"):  # a roller bearing (issue 32)
+        from . import _rollers
+
+        return _rollers.from_table(table, name=name, where=where)
     unknown = sorted(set(table) - _KNOWN)
     if unknown:
         raise CatalogError(f"{where}, field {unknown[0]!r}: unknown field (known: {', '.join(sorted(_KNOWN))})")
@@ -479,6 +483,11 @@ def get(name, *, catalog=None, clearance="mean"):
         return b
     if _lookup(dict.fromkeys(_builtin_keys()), key) is not None:  # read the TOML entries (and pint) only then
         return builtin()[_lookup(builtin(), key)]
+    from . import _rollers
+
+    roller = _rollers.lookup(key)  # the built-in roller bearings (data/roller_series.csv)
+    if roller is not None:
+        return _rollers.build(roller)
     if key in _series.records():
         return _series.build(key, clearance=clearance)
     try:

@@ -15,6 +15,11 @@ angular_contact_constants              SKF's constants of an angular-contact typ
 inlet_shear_heating_factor, replenishment_factor   Phi_ish and Phi_rs
 drag_moment                            M_drag of an oil bath
 
+SKF model of roller bearings (:mod:`.skf_roller`, issue 32)
+-----------------------------------------------------------
+skf_roller, skf_roller_for_bearing     the same four terms for cylindrical, tapered and spherical roller bearings
+roller_series_constants, roller_drag_moment   SKF's constants by series; M_drag = 10 V_M K_roll B d_m^4 n^2
+
 Dispatcher
 ----------
 torque                                 call a model by name (``MODELS``)
@@ -25,6 +30,7 @@ Every name of the former module ``bearinglab.friction`` is re-exported here.
 from ..errors import InputError
 from . import classic
 from . import skf as skf_model
+from . import skf_roller as skf_roller_model
 from .classic import (
     ANGULAR_LOAD_TERM_BELOW_30,
     ANGULAR_LOAD_TERM_FROM_30,
@@ -69,6 +75,19 @@ from .skf import (
     skf_for_bearing,
     sliding_friction_coefficient,
 )
+from .skf_roller import (
+    CYLINDRICAL_CONSTANTS,
+    ROLLER_EHL_COEFFICIENTS,
+    ROLLER_SEAL_CONSTANTS,
+    ROLLER_TYPE_CONSTANTS,
+    SPHERICAL_CONSTANTS,
+    TAPERED_CONSTANTS,
+    RollerConstants,
+    roller_drag_moment,
+    roller_series_constants,
+    skf_roller,
+    skf_roller_for_bearing,
+)
 
 __all__ = [
     "ANGULAR_CONTACT_CONSTANTS",
@@ -77,15 +96,22 @@ __all__ = [
     "ANGULAR_SEAL_CONSTANTS",
     "ANGULAR_STATIC_FACTORS",
     "BEARING_TYPES",
+    "CYLINDRICAL_CONSTANTS",
     "DEEP_GROOVE_CONSTANTS",
     "HANDBOOK_FRICTION_COEFFICIENTS",
     "LUBRICATION_METHODS",
     "MODELS",
     "RADIAL_LOAD_TERM",
     "RADIAL_STATIC_FACTORS",
+    "ROLLER_EHL_COEFFICIENTS",
+    "ROLLER_SEAL_CONSTANTS",
+    "ROLLER_TYPE_CONSTANTS",
     "SEAL_CONSTANTS",
     "SKF_BEARING_TYPES",
+    "SPHERICAL_CONSTANTS",
+    "TAPERED_CONSTANTS",
     "LoadTermConstants",
+    "RollerConstants",
     "SKFConstants",
     "SKFTorque",
     "SealConstants",
@@ -104,11 +130,16 @@ __all__ = [
     "one_term",
     "palmgren",
     "replenishment_factor",
+    "roller_drag_moment",
+    "roller_series_constants",
     "seal_constants",
     "series_constants",
     "skf",
     "skf_for_bearing",
     "skf_model",
+    "skf_roller",
+    "skf_roller_for_bearing",
+    "skf_roller_model",
     "sliding_friction_coefficient",
     "speed_term",
     "speed_term_factor_from_palmgren",

@@ -7,7 +7,7 @@ reference_load_distribution   the ball loads of the ISO/TS 16281 reference life 
 Analysis
 --------
 rating_life            every life quantity for loads (Fx, Fy, Fz, Mx, My), speed, lubricant, cleanliness
-                       and reliability, batched over load cases
+                       and reliability, batched over load cases (a RollerBearing: :mod:`bearinglab.life.roller`)
 duty_cycle_life        the combined life of a duty cycle (Palmgren-Miner)
 miner_life             Palmgren-Miner combination of lives at given revolution shares
 
@@ -30,6 +30,9 @@ from ..errors import InputError
 from ..ratings import dynamic, lubrication, reference, static
 from ..ratings.bearing import _conformities, bearing_ratings
 from ..ratings.static import RatingWarning
+from ._common import RatingLife, _contamination, _viscosity
+
+RatingLife.__module__ = __name__  # documented and reached here, as before the roller analysis shared it
 
 __all__ = [
     "DutyCycleLife",
@@ -41,52 +44,6 @@ __all__ = [
 ]
 
 
-class RatingLife(NamedTuple):
-    """Every life quantity of one analysis (arrays over the load cases); lives in revolutions."""
-
-    dynamic_load_rating: float
-    """C. [N]"""
-    static_load_rating: float
-    """C0. [N]"""
-    fatigue_load_limit: float
-    """Cu. [N]"""
-    rating_source: dict
-    """Where C, C0 and Cu come from (see :class:`BearingRatings`)."""
-    equivalent_dynamic_load: np.ndarray
-    """P of ISO 281 (NaN where not defined, as under a moment). [N]"""
-    basic_rating_life: np.ndarray
-    """L10. [revolutions]"""
-    basic_rating_life_duration: np.ndarray
-    """L10 at the given speed. [s]"""
-    reliability_factor: float
-    """a1. [-]"""
-    viscosity_ratio: np.ndarray | None
-    """kappa = nu / nu1 (not clamped); None without a lubricant. [-]"""
-    life_modification_factor: np.ndarray | None
-    """a_ISO; None without a lubricant. [-]"""
-    modified_rating_life: np.ndarray | None
-    """L_nm = a1 a_ISO L10; None without a lubricant. [revolutions]"""
-    modified_rating_life_duration: np.ndarray | None
-    """L_nm at the given speed; None without a lubricant. [s]"""
-    reference_rating_life: np.ndarray
-    """L10r of ISO/TS 16281 (NaN without a load distribution). [revolutions]"""
-    modified_reference_rating_life: np.ndarray | None
-    """L_nmr = a1 a_ISO(P_ref) L10r, P_ref = C L10r^(-1/3); None without a lubricant. [revolutions]"""
-    static_safety_factor: np.ndarray
-    """s0 = C0 / P0 (NaN where P0 is not defined). [-]"""
-    warnings: tuple
-    """The warnings raised during the analysis, as messages."""
-    kinematic_viscosity: np.ndarray | None = None
-    """nu at the operating temperature, as used; None without a lubricant. [m^2/s]"""
-    rated_viscosity: np.ndarray | None = None
-    """nu1 of ISO 281 eqs. (14)-(15) at the speed and :attr:`rated_viscosity_diameter`. [m^2/s]"""
-    rated_viscosity_diameter: float | None = None
-    """The diameter nu1 is evaluated at: d_m = (d + D)/2 where bore and outside diameter are known, else
-    the pitch diameter (:attr:`rated_viscosity_diameter_source` says which). [m]"""
-    rated_viscosity_diameter_source: str = ""
-    """``"mean diameter (d + D)/2"`` or ``"pitch diameter"``."""
-
-
 def _split_loads(loads):
     f = np.asarray(loads, dtype=float)
     if f.ndim == 0 or f.shape[-1] != 5:
@@ -96,21 +53,6 @@ def _split_loads(loads):
     if bad.any():
         raise InputError(f"loads must be finite [N, N m], got {float(f[bad].flat[0])!r}")
     return np.hypot(f[..., 0], f[..., 1]), np.abs(f[..., 2]), np.hypot(f[..., 3], f[..., 4])
-
-
-def _viscosity(kinematic_viscosity, lubricant):
-    """nu [m^2/s] from kinematic_viscosity or the oil (**lubricant); None when neither is given."""
-    if kinematic_viscosity is not None:
-        if lubricant:
-            raise InputError(f"give kinematic_viscosity or the oil ({', '.join(lubricant)}), not both")
-        return check_positive("kinematic_viscosity", kinematic_viscosity, "m^2/s")
-    if not lubricant:
-        return None
-    if "temperature" not in lubricant:
-        raise InputError("give kinematic_viscosity, or temperature with iso_vg / viscosity_40 (and viscosity_100 "
-                         "or viscosity_index)")
-    t = lubricant.pop("temperature")
-    return lubrication.kinematic_viscosity(t, **lubricant)
 
 
 _GEOMETRY_FIELDS = ("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity")
@@ -190,16 +132,6 @@ def _iso281(bearing, ratings, fr, fa, moment):
     return np.where(tilted, np.nan, p), np.where(tilted, np.nan, p0)
 
 
-def _contamination(contamination, pitch):
-    if isinstance(contamination, str):
-        return lubrication.contamination_factor(contamination, pitch)
-    ec = check_nonnegative("contamination", contamination, "-")
-    if (ec > 1).any():
-        raise InputError(f"contamination must be a factor e_C in [0, 1] [-] or a class name, got "
-                         f"{float(ec[ec > 1].flat[0])!r}")
-    return ec
-
-
 def rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None, contamination=1.0, reliability=0.9,
                 ep_additives=False, load_distribution=None, rotating="inner", fatigue_method="precise",
                 **lubricant):
@@ -207,8 +139,10 @@ def rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None, contam
 
     Parameters
     ----------
-    bearing : BallBearing
-        The bearing; catalog ratings take precedence over the geometry (see :func:`bearing_ratings`).
+    bearing : BallBearing or RollerBearing
+        The bearing; catalog ratings take precedence over the geometry (see :func:`bearing_ratings`). A
+        :class:`~bearinglab.rollers.bearing.RollerBearing` goes to :func:`bearinglab.life.roller.roller_rating_life`
+        (the roller formulas, the slice model's reference life).
     loads : array_like
         (..., 5): Fx, Fy, Fz (axial), Mx, My on the rotating ring. [N, N, N, N m, N m]
     shaft_speed : array_like
@@ -260,6 +194,12 @@ def rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None, contam
     >>> print(f"L10 = {r.basic_rating_life / 1e6:.0f} Mrev = {r.basic_rating_life_duration / 3600:.0f} h")
     L10 = 2758 Mrev = 15320 h
     """
+    if hasattr(bearing, "roller_diameter"):  # a RollerBearing: the roller formulas (issue 32)
+        from .roller import roller_rating_life
+
+        return roller_rating_life(bearing, loads, shaft_speed, kinematic_viscosity=kinematic_viscosity,
+                                  contamination=contamination, reliability=reliability, ep_additives=ep_additives,
+                                  load_distribution=load_distribution, rotating=rotating, **lubricant)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         out = _rating_life(bearing, loads, shaft_speed, kinematic_viscosity, contamination, reliability,

@@ -6,6 +6,7 @@ high_speed   the high-speed map under thrust (spec 004, the paper's figures 2-4 
 frequencies  characteristic frequencies and the spectral mask on a frequency axis
 friction     the friction-rig lab: measured torques and fitted lines (spec 001 section 7.4)
 load_distribution  ball loads of the combined-load model (polar)
+rollers      the lamina pressures of the roller slice model (issue 32)
 runout       spec 003: contact, trajectory, axial motion, spectrum, Monte Carlo histograms
 
 A module per model family; import the one you need (``from bearinglab.plots import high_speed``).

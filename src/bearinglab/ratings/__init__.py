@@ -6,8 +6,10 @@ static         C0 and f0 (ISO 76), Cu (ISO 281 annex B), P0 and the static safet
 dynamic        C and f_c, X / Y / e and P, L10 and the reliability factor a1 (ISO 281)
 lubrication    oil viscosity (ISO VG, ASTM D2270 viscosity index, ASTM D341), nu1 and kappa, e_C classes, a_ISO (ISO 281)
 reference      ISO/TS 16281 reference rating life from the ball loads
+roller         roller bearings: ISO 281 C (10/3), ISO 76 C0, X / Y / e, Cu, a_ISO; paired tapered bearings
+roller_reference  ISO/TS 16281 reference rating life of roller bearings, summed over the laminae
 minimum_load   the minimum load of a running ball bearing (SKF's rules)
-bearing        the ratings of one BallBearing: catalog values first, else from the geometry
+bearing        the ratings of one BallBearing or RollerBearing: catalog values first, else from the geometry
 
 Every public function of these modules is also reachable here, e.g. ``ratings.static_load_rating``. SI
 throughout; lives in revolutions and durations in seconds.
@@ -21,7 +23,16 @@ layer up, in :mod:`bearinglab.life`. Its names are still reachable here (and ``r
 import importlib
 import warnings
 
-from . import bearing, dynamic, lubrication, minimum_load, reference, static
+from . import (
+    bearing,
+    dynamic,
+    lubrication,
+    minimum_load,
+    reference,
+    roller,
+    roller_reference,
+    static,
+)
 from .bearing import BearingRatings, bearing_ratings
 from .dynamic import (
     MATERIAL_FACTOR,
@@ -62,6 +73,30 @@ from .reference import (
     equivalent_contact_loads,
     reference_rating_life,
 )
+from .roller import (
+    INDUCED_AXIAL_FACTORS,
+    ROLLER_MATERIAL_FACTOR,
+    PairedAxialLoads,
+    RollerLoadFactors,
+    induced_axial_load,
+    paired_axial_loads,
+    roller_dynamic_load_rating,
+    roller_equivalent_load,
+    roller_fatigue_load_limit,
+    roller_life_modification_factor,
+    roller_load_factors,
+    roller_load_rating_factor,
+    roller_rating_life,
+    roller_static_equivalent_load,
+    roller_static_load_rating,
+)
+from .roller_reference import (
+    LaminaEquivalentLoads,
+    RollerContactDynamicLoads,
+    lamina_equivalent_loads,
+    roller_contact_dynamic_loads,
+    roller_reference_rating_life,
+)
 from .static import (
     FATIGUE_CONTACT_STRESS,
     MINIMUM_STATIC_SAFETY,
@@ -81,15 +116,21 @@ __all__ = [
     "CONTAMINATION_CLASSES",
     "DEFAULT_VISCOSITY_INDEX",
     "FATIGUE_CONTACT_STRESS",
+    "INDUCED_AXIAL_FACTORS",
     "ISO_VG_GRADES",
     "MATERIAL_FACTOR",
     "MINIMUM_STATIC_SAFETY",
+    "ROLLER_MATERIAL_FACTOR",
     "STATIC_CONTACT_STRESS",
     "BearingRatings",
     "ContactDynamicLoads",
     "DynamicLoadFactors",
     "EquivalentContactLoads",
+    "LaminaEquivalentLoads",
+    "PairedAxialLoads",
     "RatingWarning",
+    "RollerContactDynamicLoads",
+    "RollerLoadFactors",
     "StaticLoadFactors",
     "basic_rating_life",
     "bearing",
@@ -104,8 +145,10 @@ __all__ = [
     "fatigue_load_limit",
     "fatigue_load_limit_simplified",
     "general_minimum_load",
+    "induced_axial_load",
     "iso_vg_viscosity",
     "kinematic_viscosity",
+    "lamina_equivalent_loads",
     "life_modification_factor",
     "load_rating_factor",
     "lubrication",
@@ -114,10 +157,24 @@ __all__ = [
     "minimum_load_rules",
     "minimum_load_warnings",
     "minimum_radial_load",
+    "paired_axial_loads",
     "rated_viscosity",
     "reference",
     "reference_rating_life",
     "reliability_factor",
+    "roller",
+    "roller_contact_dynamic_loads",
+    "roller_dynamic_load_rating",
+    "roller_equivalent_load",
+    "roller_fatigue_load_limit",
+    "roller_life_modification_factor",
+    "roller_load_factors",
+    "roller_load_rating_factor",
+    "roller_rating_life",
+    "roller_reference",
+    "roller_reference_rating_life",
+    "roller_static_equivalent_load",
+    "roller_static_load_rating",
     "static",
     "static_equivalent_load",
     "static_load_factor",

@@ -5,7 +5,7 @@ friction model's C0, the thermal reference speed and the plausibility limits all
 
 Ratings
 -------
-bearing_ratings    C, C0, Cu and f0 of a BallBearing, each with where it comes from
+bearing_ratings    C, C0, Cu and f0 of a BallBearing or a RollerBearing, each with where it comes from
 BearingRatings     its result
 """
 
@@ -14,7 +14,7 @@ from __future__ import annotations
 from typing import NamedTuple
 
 from ..errors import InputError
-from . import dynamic, static
+from . import dynamic, roller, static
 
 __all__ = ["BearingRatings", "bearing_ratings"]
 
@@ -70,6 +70,8 @@ def bearing_ratings(bearing, *, fatigue_method="precise"):
     """
     if fatigue_method not in ("precise", "simplified"):
         raise InputError(f"fatigue_method must be one of ['precise', 'simplified'], got {fatigue_method!r}")
+    if hasattr(bearing, "roller_diameter"):  # a RollerBearing (issue 32)
+        return _roller_ratings(bearing)
     z, d, dpw, alpha = _geometry(bearing)
     fi, fo = _conformities(bearing)
     has_set = None not in (z, d, dpw)
@@ -103,3 +105,43 @@ def bearing_ratings(bearing, *, fatigue_method="precise"):
         cu = float(static.fatigue_load_limit_simplified(c0, dpw if dpw is not None else bearing.mean_diameter))
         source["fatigue_load_limit"] = "ISO 281 annex B (C0/22)"
     return BearingRatings(float(c), float(c0), float(cu), f0, source)
+
+
+def _roller_ratings(bearing):
+    """C, C0, Cu of a RollerBearing: the catalogue's values, else ISO 281 / ISO 76 / ISO 281 annex B (C0/8.2)."""
+    source = {}
+    has_set = bearing.has_internal_geometry
+    label = bearing.designation or f"this {bearing.type} roller bearing"
+
+    def need(what):
+        if not has_set:
+            raise InputError(f"{what} of {label!r} is not in its catalog entry and the roller set (rollers, "
+                             "roller_diameter, roller_length, pitch_diameter) needed to compute it is not known")
+
+    alpha = bearing.contact_angle or 0.0
+    if bearing.dynamic_load_rating is not None:
+        c, source["dynamic_load_rating"] = bearing.dynamic_load_rating, "catalog"
+    else:
+        need("dynamic_load_rating")
+        c = float(roller.roller_dynamic_load_rating(bearing.rollers, bearing.roller_diameter, bearing.roller_length,
+                                                    bearing.pitch_diameter, alpha, rows=bearing.rows,
+                                                    bearing_type=bearing.type))
+        source["dynamic_load_rating"] = "ISO 281"
+    if bearing.static_load_rating is not None:
+        c0, source["static_load_rating"] = bearing.static_load_rating, "catalog"
+    else:
+        need("static_load_rating")
+        c0 = float(roller.roller_static_load_rating(bearing.rollers, bearing.roller_diameter, bearing.roller_length,
+                                                    bearing.pitch_diameter, alpha, rows=bearing.rows))
+        source["static_load_rating"] = "ISO 76"
+    if bearing.fatigue_load_limit is not None:
+        cu, source["fatigue_load_limit"] = bearing.fatigue_load_limit, "catalog"
+    else:
+        pitch = bearing.pitch_diameter if bearing.pitch_diameter is not None else bearing.mean_diameter
+        cu = float(roller.roller_fatigue_load_limit(c0, pitch))
+        source["fatigue_load_limit"] = "ISO 281 annex B (C0/8.2)"
+    estimated = set(bearing.estimated_fields) & {"rollers", "roller_diameter", "roller_length", "pitch_diameter"}
+    for name in ("dynamic_load_rating", "static_load_rating"):
+        if estimated and source[name] in ("ISO 281", "ISO 76"):
+            source[name] += " (from an estimated roller set)"
+    return BearingRatings(float(c), float(c0), float(cu), float("nan"), source)

@@ -1,0 +1,89 @@
+"""The result and the inputs the life analyses of ball and roller bearings share (private).
+
+RatingLife       every life quantity of one analysis (re-exported by :mod:`bearinglab.life.analysis`)
+_viscosity       nu from kinematic_viscosity or the oil
+_contamination   e_C from a factor or a cleanliness class
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from .._validate import check_nonnegative, check_positive
+from ..errors import InputError
+from ..ratings import lubrication
+
+__all__ = ["RatingLife"]
+
+
+class RatingLife(NamedTuple):
+    """Every life quantity of one analysis (arrays over the load cases); lives in revolutions."""
+
+    dynamic_load_rating: float
+    """C. [N]"""
+    static_load_rating: float
+    """C0. [N]"""
+    fatigue_load_limit: float
+    """Cu. [N]"""
+    rating_source: dict
+    """Where C, C0 and Cu come from (see :class:`BearingRatings`)."""
+    equivalent_dynamic_load: np.ndarray
+    """P of ISO 281 (NaN where not defined, as under a moment). [N]"""
+    basic_rating_life: np.ndarray
+    """L10. [revolutions]"""
+    basic_rating_life_duration: np.ndarray
+    """L10 at the given speed. [s]"""
+    reliability_factor: float
+    """a1. [-]"""
+    viscosity_ratio: np.ndarray | None
+    """kappa = nu / nu1 (not clamped); None without a lubricant. [-]"""
+    life_modification_factor: np.ndarray | None
+    """a_ISO; None without a lubricant. [-]"""
+    modified_rating_life: np.ndarray | None
+    """L_nm = a1 a_ISO L10; None without a lubricant. [revolutions]"""
+    modified_rating_life_duration: np.ndarray | None
+    """L_nm at the given speed; None without a lubricant. [s]"""
+    reference_rating_life: np.ndarray
+    """L10r of ISO/TS 16281 (NaN without a load distribution). [revolutions]"""
+    modified_reference_rating_life: np.ndarray | None
+    """L_nmr = a1 a_ISO(P_ref) L10r, P_ref = C L10r^(-1/3); None without a lubricant. [revolutions]"""
+    static_safety_factor: np.ndarray
+    """s0 = C0 / P0 (NaN where P0 is not defined). [-]"""
+    warnings: tuple
+    """The warnings raised during the analysis, as messages."""
+    kinematic_viscosity: np.ndarray | None = None
+    """nu at the operating temperature, as used; None without a lubricant. [m^2/s]"""
+    rated_viscosity: np.ndarray | None = None
+    """nu1 of ISO 281 eqs. (14)-(15) at the speed and :attr:`rated_viscosity_diameter`. [m^2/s]"""
+    rated_viscosity_diameter: float | None = None
+    """The diameter nu1 is evaluated at: d_m = (d + D)/2 where bore and outside diameter are known, else
+    the pitch diameter (:attr:`rated_viscosity_diameter_source` says which). [m]"""
+    rated_viscosity_diameter_source: str = ""
+    """``"mean diameter (d + D)/2"`` or ``"pitch diameter"``."""
+
+
+def _viscosity(kinematic_viscosity, lubricant):
+    """nu [m^2/s] from kinematic_viscosity or the oil (**lubricant); None when neither is given."""
+    if kinematic_viscosity is not None:
+        if lubricant:
+            raise InputError(f"give kinematic_viscosity or the oil ({', '.join(lubricant)}), not both")
+        return check_positive("kinematic_viscosity", kinematic_viscosity, "m^2/s")
+    if not lubricant:
+        return None
+    if "temperature" not in lubricant:
+        raise InputError("give kinematic_viscosity, or temperature with iso_vg / viscosity_40 (and viscosity_100 "
+                         "or viscosity_index)")
+    t = lubricant.pop("temperature")
+    return lubrication.kinematic_viscosity(t, **lubricant)
+
+
+def _contamination(contamination, pitch):
+    if isinstance(contamination, str):
+        return lubrication.contamination_factor(contamination, pitch)
+    ec = check_nonnegative("contamination", contamination, "-")
+    if (ec > 1).any():
+        raise InputError(f"contamination must be a factor e_C in [0, 1] [-] or a class name, got "
+                         f"{float(ec[ec > 1].flat[0])!r}")
+    return ec
