@@ -164,7 +164,7 @@ OIL = (
 )
 _M, _T = "mounting", "mounting temperatures"
 _MATERIALS = ("steel", "structural_steel", "aluminium")
-#: the mounting options of every command that takes a bearing (``cli._mounting``, issue 23); the fits,
+#: the mounting options of every command that takes a bearing (issue 23); the fits,
 #: classes and interference pairs are checked by the command (its tables), so they are text here
 MOUNTING = (
     _f("shaft_fit", "text", "ISO 286 field of the shaft seat: g6 h5 h6 j5 j6 js5 js6 k5 k6 m5 m6 n6 p6.",
@@ -543,8 +543,8 @@ _CALCS = (
             label="Start angle", unit="deg", default="0 deg", group="rotation"),
          _f("cage_ratio", "number", "Cage speed / inner-ring speed kappa (default (1 - gamma)/2).",
             label="Cage ratio", unit="-", minimum=0, exclusive=True, maximum=1, group="rotation"),
-         _f("refine", "flag", "Refine the contact points (a second pass at the contact points found; "
-            "spec 003 section 9).", label="Refine contacts", default=False, group="runout")),
+         _f("refine", "flag", "Refine the contact points (a second pass at the contact points found).",
+            label="Refine contacts", default=False, group="runout")),
         heavy=True),
     Calculation(
         "runout-monte-carlo", ("runout", "monte-carlo"), "Runout Monte Carlo",

@@ -77,6 +77,7 @@ from . import (
 )
 from ._common import request_message
 from ._console import ascii_spelling, needs_spelling, output_width, setup_streams
+from ._options import register
 
 __all__ = ["JsonRun", "app", "main", "run", "run_json"]
 
@@ -112,13 +113,17 @@ def _main_options(
     setup_streams()  # also when the app runs without main() (typer's test runner)
 
 
+_GROUPS = {}
 for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, film, temperature, friction, runout,
                 clearance, serve):
     for _name, _command in _module.COMMANDS.items():
         if isinstance(_command, typer.Typer):
             app.add_typer(_command, name=_name)
+            _GROUPS[_name] = _command
         else:
             app.command(_name)(_command)
+# a calculation of the registry without a command module gets the generic command (its document, or a table)
+register(app, _GROUPS)
 
 
 _CLICK = {}
