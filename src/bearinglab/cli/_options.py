@@ -15,7 +15,7 @@ command       calculation name and its ``run(given, **options)`` -> the function
 register      add a command for every registered calculation that has none yet (the generic one)
 generic_run   the ``run`` of a calculation without a command module: its document, or a table of it
 help_of       a field's help as the command line shows it (other fields as their options)
-option_of     a field's parameter: (typer annotation, default)
+option_of     a field's parameter: (annotation, typer's OptionInfo with the default)
 """
 
 from __future__ import annotations
@@ -23,12 +23,12 @@ from __future__ import annotations
 import inspect
 import re
 from pathlib import Path
-from typing import Annotated
 
 import typer
 
 from ..calculations import CALCULATIONS
 from ..calculations.registry import GROUPS
+from ._common import JsonFlag
 
 __all__: list[str] = []  # private to the command line
 
@@ -36,6 +36,7 @@ __all__: list[str] = []  # private to the command line
 _TYPES = {"int": int, "number": float, "flag": bool, "document": Path}
 _NAMED = re.compile(r"`([a-z][a-z0-9_]*)`")  # another field, named in a help text
 _BUILT: set = set()  # the calculations with a command (built by `command`)
+_OPTIONS: dict = {}  # calculation -> {field name: its option}, for the help texts
 
 
 def help_of(field, calc):
@@ -43,8 +44,10 @@ def help_of(field, calc):
     backticks as their options (```temperature``` -> ``--temperature``), a document as the file that
     holds it, the choices where the text does not list them, and every bracket escaped (rich would
     read ``[rad]`` as markup)."""
-    names = {f.name: f for f in calc.fields if f.cli}
-    text = _NAMED.sub(lambda m: names[m.group(1)].cli_option if m.group(1) in names else m.group(0), field.help)
+    options = _OPTIONS.get(calc)
+    if options is None:
+        options = _OPTIONS[calc] = {f.name: f.cli_option for f in calc.fields if f.cli}
+    text = _NAMED.sub(lambda m: options.get(m.group(1), m.group(0)), field.help)
     if field.kind == "document":
         text = "TOML file of " + text
     if field.choices and not all(c in text for c in field.choices):
@@ -58,35 +61,38 @@ def _panel(field):
 
 
 def option_of(field, calc, required=True):
-    """The parameter of ``field`` in ``calc``'s command: (annotation, default).
+    """The parameter of ``field`` in ``calc``'s command: (annotation, typer's OptionInfo or ArgumentInfo
+    holding the default).
 
     Whole numbers and numbers are typed (``int``, ``float``), a flag is a flag, a document a file; any
     other kind is text, read by the calculation. A field with a default has it as the option's; a
     required one has none (unless ``required`` is False: then it is optional, and the command says
     what is missing); a list of texts (``many``) is a repeated option; an ``option`` spelled without
-    dashes (``NAME``) is a positional argument.
+    dashes (``NAME``) is a positional argument. (The default is typer's ``Option(default, ...)``, not
+    ``Annotated``: building fifteen commands' ``Annotated`` types costs more than the rest of the help.)
     """
     kind = _TYPES.get(field.kind, str)
     if field.many and field.kind == "text":
         kind = list[str]
+    if field.required and required:
+        default = ...
+    elif field.kind == "flag":
+        kind, default = bool, bool(field.default)
+    elif field.default is not None:
+        default = field.default
+    else:
+        kind, default = kind | None, None
     help_text = help_of(field, calc)
     if not field.cli_option.startswith("-"):
-        info = typer.Argument(help=help_text)
-    else:
-        info = typer.Option(field.cli_option, *field.aliases, help=help_text, rich_help_panel=_panel(field))
-    if field.required and required:
-        return Annotated[kind, info], inspect.Parameter.empty
-    if field.kind == "flag":
-        return Annotated[bool, info], bool(field.default)
-    if field.default is not None:
-        return Annotated[kind, info], field.default
-    return Annotated[kind | None, info], None
+        return kind, typer.Argument(default, help=help_text)
+    return kind, typer.Option(default, field.cli_option, *field.aliases, help=help_text,
+                              rich_help_panel=_panel(field))
 
 
 def _info(parameter):
     """The typer OptionInfo of a hand-written parameter (``Annotated[..., typer.Option(...)]``)."""
     return next((m for m in getattr(parameter.annotation, "__metadata__", ())
-                 if isinstance(m, typer.models.ParameterInfo)), None)
+                 if isinstance(m, typer.models.ParameterInfo)), parameter.default)
 
 
 def command(name, run, *, help=None, required=True):
@@ -116,8 +122,8 @@ def command(name, run, *, help=None, required=True):
     calc = CALCULATIONS[name]
     fields = [f for f in calc.fields if f.cli]
     keyword = inspect.Parameter.KEYWORD_ONLY
-    params = [inspect.Parameter(f.name, keyword, annotation=ann, default=default)
-              for f in fields for ann, default in [option_of(f, calc, required)]]
+    params = [inspect.Parameter(f.name, keyword, annotation=ann, default=info)
+              for f in fields for ann, info in [option_of(f, calc, required)]]
     panels = [_panel(f) for f in fields]
     own = list(inspect.signature(run, eval_str=True).parameters.values())[1:]
     for p in own:
@@ -152,8 +158,6 @@ def generic_run(name):
     """The ``run`` of calculation ``name`` without a command module of its own: its document
     (:func:`bearinglab.calculations.run`, the inputs checked by the fields as the web checks them)
     with ``--json``, else its values as a table (:func:`bearinglab.cli._common.print_document`)."""
-    from ._common import JsonFlag
-
     def run(given, *, json_out: JsonFlag = False):
         from ..calculations import parse
         from ..calculations import run as compute
