@@ -50,8 +50,9 @@ class Field:
     its spelling where it is not ``--`` and the name with dashes (a spelling without dashes, ``NAME``,
     is a positional argument), ``aliases`` its short spellings (``-n``); ``cli=False`` leaves the
     field off the command line (an input of the page alone, such as its picker's query). The help
-    names another field of the same calculation in backticks (```temperature```): the command line
-    writes it as that field's option (``--temperature``), the API and the page as it stands.
+    names another field of the same calculation between backquotes (as Markdown code: the API's
+    descriptions are CommonMark): the command line writes it as that field's option
+    (``--temperature``), the API and the page as it stands.
     """
 
     name: str

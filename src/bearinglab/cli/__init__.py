@@ -3,7 +3,7 @@ from Python.
 
 Commands
 --------
-catalog list | show NAME       the bearings known (built-in and user catalogs)        cli/catalog.py
+catalog list | show | search  the bearings known (built-in and user catalogs)        cli/catalog.py
 axial-angle                    operating contact angle under axial load (spec 000)    cli/stand.py
 stand-load                     minimum axial load on a test stand (spec 000 section 3) cli/stand.py
 frequencies                    characteristic frequencies and the spectral mask       cli/frequencies.py
@@ -18,9 +18,12 @@ temperature                    steady bearing temperature, heat balance (issue 2
 runout | runout monte-carlo    manufacturing errors -> inner-ring runout (spec 003)   cli/runout.py
 clearance                      mounted clearance: fits, temperatures, speed (issue 23) cli/clearance.py
 
-Each command module defines ``COMMANDS`` (command name -> function, or a Typer group); the options
-every command shares (bearing, execution, JSON) and the output helpers are in ``cli/_common.py``, so
-no command module imports this package. Importing this package builds the whole application: :data:`app` lists every
+Each command module defines ``COMMANDS`` (command name -> function, or a Typer group). A calculation's
+command is generated from its declaration in :mod:`bearinglab.calculations.registry` (``cli/_options.py``:
+one option per field); the module adds the options of the command line alone (files, ``--json``, the
+executor) and prints the document as tables. A registered calculation without a module gets the generic
+command. The output helpers and the command line's own options are in ``cli/_common.py``, so no command
+module imports this package. Importing this package builds the whole application: :data:`app` lists every
 command, for the console script, ``python -m bearinglab``, test runners and documentation tools alike.
 
 Building the application imports typer and rich only: each command imports the physics it needs when

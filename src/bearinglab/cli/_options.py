@@ -36,17 +36,18 @@ __all__: list[str] = []  # private to the command line
 _TYPES = {"int": int, "number": float, "flag": bool, "document": Path}
 _NAMED = re.compile(r"`([a-z][a-z0-9_]*)`")  # another field, named in a help text
 _BUILT: set = set()  # the calculations with a command (built by `command`)
-_OPTIONS: dict = {}  # calculation -> {field name: its option}, for the help texts
+_OPTIONS: dict = {}  # calculation name -> (calculation, {field name: its option}), for the help texts
 
 
 def help_of(field, calc):
-    """The help of ``field`` as the command line shows it: the other fields of ``calc`` it names in
-    backticks as their options (```temperature``` -> ``--temperature``), a document as the file that
-    holds it, the choices where the text does not list them, and every bracket escaped (rich would
-    read ``[rad]`` as markup)."""
-    options = _OPTIONS.get(calc)
-    if options is None:
-        options = _OPTIONS[calc] = {f.name: f.cli_option for f in calc.fields if f.cli}
+    """The help of ``field`` as the command line shows it: the other fields of ``calc`` it names (in
+    backquotes: ``temperature`` between two backquotes) as their options (``--temperature``), a
+    document as the file that holds it, the choices where the text does not list them, and every
+    bracket escaped (rich would read ``[rad]`` as markup)."""
+    known = _OPTIONS.get(calc.name)
+    if known is None or known[0] is not calc:
+        known = _OPTIONS[calc.name] = (calc, {f.name: f.cli_option for f in calc.fields if f.cli})
+    options = known[1]
     text = _NAMED.sub(lambda m: options.get(m.group(1), m.group(0)), field.help)
     if field.kind == "document":
         text = "TOML file of " + text
