@@ -184,6 +184,15 @@ def test_a_field_of_the_page_alone_is_no_option():
     assert not {"query", "limit"} & set(params) and {"bore", "series"} <= set(params)
 
 
+def test_the_words_of_a_request_leave_out_the_fields_of_the_page_alone(capsys):
+    from bearinglab.calculations import argv
+
+    words = argv(parse("catalog-search", {"query": "62", "bore": "40 mm", "limit": 5}))
+    assert words == ["catalog", "search", "--bore=40 mm"]
+    assert cli.main([*words, "--json"]) == 0
+    assert "6208" in [b["name"] for b in json.loads(capsys.readouterr().out)["bearings"]]
+
+
 def test_a_clash_between_a_field_and_an_own_option_is_refused():
     def run_(given, *, speed: typer.Option = None):  # 'speed' is a field of life
         return given

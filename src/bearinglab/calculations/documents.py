@@ -51,7 +51,7 @@ def argv(parsed, *, documents=None):
     calc = parsed.calculation
     words = list(calc.command)
     for f in calc.fields:
-        if f.name not in parsed.given:
+        if f.name not in parsed.given or not f.cli:  # an input of the page alone has no option
             continue
         value = parsed.values[f.name]
         if f.kind == "flag":
