@@ -28,7 +28,9 @@ command, for the console script, ``python -m bearinglab``, test runners and docu
 
 Building the application imports typer and rich only: each command imports the physics it needs when
 it runs, so ``bearinglab --help`` starts in about 0.2 s (``bench/cli_help.py``) without numpy, scipy,
-pint or matplotlib (``tests/cli/test_cli_startup.py``). Flags show no type in the help.
+pint or matplotlib (``tests/cli/test_cli_startup.py``), and typer's rich help loads without the
+markdown parser it imports for a markup mode this application does not use
+(:func:`_rich_help_without_markdown`). Flags show no type in the help.
 
 Errors in the input print one line on stderr, naming the option the user typed (a library parameter
 such as ``n_balls`` is named by its option, ``balls``), and exit with code 2, as do inputs for which the model
@@ -53,6 +55,7 @@ import os
 import re
 import sys
 import threading
+import types
 import warnings
 from pathlib import Path
 from typing import NamedTuple
@@ -275,6 +278,31 @@ def _is_bearing(word):
     return True
 
 
+def _rich_help_without_markdown():
+    """Load typer's rich help without ``rich.markdown``: typer imports it (and markdown-it with it, about
+    a fifth of the start of ``--help``) for its markdown markup mode, which this application does not
+    use (its help is rich markup). While ``typer.rich_utils`` loads, a stand-in takes the module's place
+    whose ``Markdown`` loads the real class when first used; the real module is imported as usual
+    afterwards. Help reads the same either way (``tests/cli/test_cli_startup.py``)."""
+    if "typer.rich_utils" in sys.modules or "rich.markdown" in sys.modules:
+        return
+    stand_in = types.ModuleType("rich.markdown")
+
+    class Markdown:
+        def __new__(cls, *args, **kwargs):
+            from rich.markdown import Markdown as markdown
+
+            return markdown(*args, **kwargs)
+
+    stand_in.Markdown = Markdown
+    sys.modules["rich.markdown"] = stand_in
+    try:
+        import typer.rich_utils  # noqa: F401 -- loaded here, without the markdown parser
+    finally:
+        if sys.modules.get("rich.markdown") is stand_in:
+            del sys.modules["rich.markdown"]
+
+
 def main(argv=None) -> int:
     """Run the command line; return the exit code instead of raising (tests call this).
 
@@ -298,6 +326,8 @@ def main(argv=None) -> int:
             # numpy's floating-point warnings are no message for a user: every result is checked finite
             warnings.simplefilter("ignore", RuntimeWarning)
             words = sys.argv[1:] if argv is None else list(argv)
+            if not words or {"-h", "--help"} & set(words):
+                _rich_help_without_markdown()
             rv = _click_command(_command_named(words)).main(args=words, prog_name="bearinglab",
                                                              standalone_mode=False)
         flush_notes()
