@@ -15,6 +15,7 @@ BALLS           the per-ball columns of a combined-load distribution
 RATINGS, RATING_LIFE   the ratings and the lives of :func:`bearinglab.life.rating_life`
 SKF_TORQUE      the moments of :func:`bearinglab.friction.skf`
 KIND_UNITS      quantity kind -> (column suffix, factor from SI), for inputs given by kind
+UNIT_SUFFIXES   a key's unit suffix -> the unit as it is shown (``_um`` -> ``µm``)
 
 Results -> columns
 ------------------
@@ -35,6 +36,8 @@ rating_life     a rating-life analysis -> its columns (N, Mrev, h, factors)
 ratings         a bearing's C, C0, Cu (N) and where each comes from
 skf_torque      the SKF model's moments -> N·mm, W and mu_sl
 significant     input values without the last-bit noise of a unit round trip
+quantity        a document's key -> its label and unit (``contact_angle_inner_deg`` -> ``contact angle
+                inner``, ``°``): the page and the command line's tables of a document
 
 Writers
 -------
@@ -63,6 +66,7 @@ __all__ = [
     "RATING_LIFE",
     "RUNOUT_GEOMETRY",
     "SKF_TORQUE",
+    "UNIT_SUFFIXES",
     "Column",
     "ball_columns",
     "bearing_summary",
@@ -76,6 +80,7 @@ __all__ = [
     "json_text",
     "json_value",
     "load_distribution",
+    "quantity",
     "rating_life",
     "ratings",
     "record",
@@ -263,6 +268,71 @@ def rows(table):
         return []
     n = len(table[names[0]])
     return [{k: json_value(np.asarray(table[k])[i]) for k in names} for i in range(n)]
+
+
+#: A document's key ends with its unit (``contact_angle_inner_deg``, ``film_min_um``): suffix -> the
+#: unit as it is shown, the longer suffix of two first (``_N_per_um`` before ``_um``, ``_Nmm`` before ``_N``).
+UNIT_SUFFIXES = (
+    ("_cm2_per_kgf_2_3", "cm²/kgf^⅔"),
+    ("_per_GPa", "1/GPa"),
+    ("_mm2_s", "mm²/s"),
+    ("_m_s", "m/s"),
+    ("_mPas", "mPa·s"),
+    ("_kg_m3", "kg/m³"),
+    ("_degC", "°C"),
+    ("_N_per_um", "N/µm"),
+    ("_per_mm", "1/mm"),
+    ("_Nmm", "N·mm"),
+    ("_Nm", "N·m"),
+    ("_kN", "kN"),
+    ("_N", "N"),
+    ("_deg", "°"),
+    ("_dms", "° ′ ″"),
+    ("_mrad", "mrad"),
+    ("_rad", "rad"),
+    ("_rpm", "rpm"),
+    ("_hz", "Hz"),
+    ("_mm", "mm"),
+    ("_um", "µm"),
+    ("_MPa", "MPa"),
+    ("_GPa", "GPa"),
+    ("_Mrev", "10⁶ rev"),
+    ("_h", "h"),
+    ("_s", "s"),
+    ("_W", "W"),
+    ("_kgf", "kgf"),
+    ("_cSt", "cSt"),
+    ("_percent", "%"),
+    ("_order", "× shaft"),
+)
+
+
+def quantity(key):
+    """A document's key -> (label, unit), by its unit suffix (:data:`UNIT_SUFFIXES`).
+
+    Parameters
+    ----------
+    key : str
+        A key of a calculation's JSON document.
+
+    Returns
+    -------
+    tuple of str
+        The key without its suffix, in words, and the unit ('' where the key has none).
+
+    Examples
+    --------
+    >>> quantity("contact_angle_inner_deg")
+    ('contact angle inner', '°')
+    >>> quantity("basic_rating_life_h")
+    ('basic rating life', 'h')
+    >>> quantity("regime")
+    ('regime', '')
+    """
+    for suffix, unit in UNIT_SUFFIXES:
+        if key.endswith(suffix) and len(key) > len(suffix):
+            return key[: -len(suffix)].replace("_", " "), unit
+    return key.replace("_", " "), ""
 
 
 def significant(values, digits=12):

@@ -7,7 +7,7 @@ mounted_inputs      the inputs -> MountedInputs (None when none was given)
 operating_bearing   the bearing at its probable operating clearance, and the JSON entries to add
 MountedSet, mounted_set   the inputs of a bearing set applied to its bearings
 
-The options are :mod:`bearinglab.cli._mounting`'s; the physics is :mod:`bearinglab.mounting`. Messages
+The options are the fields ``MOUNTING`` of :mod:`.registry`; the physics is :mod:`bearinglab.mounting`. Messages
 name the inputs as the command line spells them without their dashes (``shaft-fit must be ...``).
 """
 

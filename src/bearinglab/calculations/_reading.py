@@ -1,23 +1,19 @@
 """What the documents of frequencies, stand-load, axial-angle, high-speed and friction share: the
-inputs of a request as given, the bearing, and failures that name the field.
+inputs of a request as given, the bearing.
 
 text         a field's value as the user wrote it (a number from a JSON body with the field's unit)
 value        a field's checked (or typed) value: whole numbers, numbers, flags, choices
-fields       context: an InputError that opens with an option's name -> a RunFailure naming that field
-failure      that conversion for one error
 notes_in     a document with the bearing's provenance notes after its own warnings (only where there are
              notes, as the command line's ``emit_json`` adds them)
 bearing_of   the bearing of a request (the ``bearing`` field and the inline geometry)
 
 The readers of the inputs themselves (``resolve_bearing``, ``inputs_echo``, ``parse_speeds`` ...) are
-:mod:`._inputs`, re-exported here for the documents that import this module.
+:mod:`._inputs`, re-exported here for the documents that import this module; their errors become
+RunFailures naming the field through :func:`._failures.failures`.
 """
 
 from __future__ import annotations
 
-import contextlib
-
-from ..errors import InputError
 from ._inputs import (  # noqa: F401 -- the documents read their inputs through this module
     choice,
     inputs_echo,
@@ -48,34 +44,6 @@ def text(parsed, name, default=None):
 def value(parsed, name, default=None):
     """The checked value of a whole-number, number, flag or choice field, or ``default``."""
     return parsed.values.get(name, default)
-
-
-def failure(exc, names=()):
-    """An InputError as a RunFailure: it names the field of ``names`` (field names) whose option its
-    message opens with (``axial-load must be ...``, ``speed: ...``); otherwise it names no field."""
-    from .fields import RunFailure
-
-    message = str(exc)
-    for name in sorted(names, key=len, reverse=True):  # 'outer-speed' before 'speed'
-        spelled = name.replace("_", "-")
-        rest = message[len(spelled):]
-        if message.startswith(spelled) and (rest[:1] in (":", " ", "")):
-            return RunFailure(name, None, "{name}" + rest)
-    return RunFailure(None, None, message)
-
-
-@contextlib.contextmanager
-def fields(parsed):
-    """Run a document's computation: an InputError that opens with one of the calculation's options
-    becomes a RunFailure naming that field (the command line words it back as the option)."""
-    from .fields import RequestError
-
-    try:
-        yield
-    except RequestError:
-        raise
-    except InputError as exc:
-        raise failure(exc, [f.name for f in parsed.calculation.fields]) from None
 
 
 def notes_in(doc, bearing):

@@ -18,8 +18,9 @@ import json
 import types
 
 from ..errors import InputError
+from ._failures import failures
 from ._inputs import choice, five_loads, parse_length
-from ._request import given_text, reading, with_notes
+from ._request import given_text, with_notes
 from .load_distribution import inputs, plausibility, solve, takeup_um, with_takeup
 
 __all__ = ["document", "figure"]
@@ -75,7 +76,7 @@ def document(parsed, *, catalog=None):
     def text(name):
         return given_text(parsed, name)
 
-    with reading(parsed):
+    with failures(parsed):
         names_given = _names(v["bearing"])
         bl = [_catalog.get(name, catalog=catalog) for name in names_given]
         notes = [n for b in bl for n in _catalog.provenance_notes(b)]
@@ -99,7 +100,7 @@ def document(parsed, *, catalog=None):
     # issue 23: fits, temperatures and speed change each bearing's clearance, and so the set's interference
     # the thermal expansion over the spacing needs its value: the solver's own when it is the default
     gap = s if s is not None else (float(np.diff(st.positions)[0]) if len(st.positions) > 1 else 0.0)
-    with reading(parsed):
+    with failures(parsed):
         mounted = _mounting.mounted_set(bl, st.preload_displacement, arrangement, gap, w,
                                         {k: text(k) for k in _MOUNTING})
     if mounted is not None:

@@ -24,11 +24,12 @@ from __future__ import annotations
 import importlib
 import io
 import json
-import re
 import warnings
 
 from ..errors import InputError
+from ._failures import run_failure
 from .fields import RequestError, RunFailure
+from .registry import CALCULATIONS
 
 __all__ = ["RunFailure", "argv", "catalog_document", "figure_svg", "run"]
 
@@ -51,7 +52,7 @@ def argv(parsed, *, documents=None):
     calc = parsed.calculation
     words = list(calc.command)
     for f in calc.fields:
-        if f.name not in parsed.given:
+        if f.name not in parsed.given or not f.cli:  # an input of the page alone has no option
             continue
         value = parsed.values[f.name]
         if f.kind == "flag":
@@ -66,35 +67,6 @@ def argv(parsed, *, documents=None):
         else:  # '=' keeps a value such as '-5 kN' from reading as an option
             words.append(f"{f.cli_option}={str(parsed.given[f.name]).strip()}")
     return words
-
-
-# the option a message names: "--axial-load", "'--axial-load' / '-F'", or a leading "axial-load:"
-_OPTION = re.compile(r"'?(--[a-z][a-z0-9-]*)'?(?: / '-[^'\s]+')?")
-_LEADING = re.compile(r"^([a-z][a-z0-9-]*)(?=:| must | needs | is | has )")
-
-
-def _failure(calc, message, kind):
-    """The command's one-line message as a RunFailure naming the calculation's fields."""
-    by_option = {f.cli_option: f.name for f in calc.fields}
-    by_option.update({"--" + f.name.replace("_", "-"): f.name for f in calc.fields})
-    parameter = None
-    m = _LEADING.match(message)
-    if m and "--" + m.group(1) in by_option:
-        parameter = by_option["--" + m.group(1)]
-        message = "{field:" + parameter + "}" + message[m.end():]
-
-    def named(match):
-        nonlocal parameter
-        name = by_option.get(match.group(1))
-        if name is None:
-            return match.group(0)
-        parameter = parameter or name
-        return "{field:" + name + "}"
-
-    message = _OPTION.sub(named, message)
-    message = message.replace("Missing option ", "Missing ")
-    template = message.replace("{field:" + parameter + "}", "{name}") if parameter else message
-    return RunFailure(parameter, None, template, kind)
 
 
 def _document(name, text):
@@ -305,7 +277,7 @@ def run(parsed):
         except InputError as exc:
             message = str(exc)
             if not message.startswith("bearing: "):  # an option's message names its option
-                raise _failure(parsed.calculation, message, "input") from None
+                raise run_failure(message, parsed.calculation, parsed.given) from None
             raise RunFailure("name", parsed.values["name"],
                              "{name}: " + message.removeprefix("bearing: ")) from None
     if name == "catalog-search":
@@ -314,11 +286,16 @@ def run(parsed):
 
 
 #: the calculations computed by a function of their own (calculation name -> module of this package,
-#: with ``document(parsed)``; the command line calls the same function)
-_NATIVE = {"life": "life", "load-distribution": "load_distribution", "bearing-set": "bearing_set",
-           "frequencies": "frequencies", "stand-load": "stand", "axial-angle": "stand", "high-speed": "high_speed",
-           "friction": "friction_torque", "clearance": "clearance", "film": "film", "temperature": "temperature",
-           "runout": "runout", "runout-monte-carlo": "runout_monte_carlo", "shaft": "shaft"}
+#: with ``document(parsed)``; the command line calls the same function): every registered one but the
+#: catalog's two, by its ``Calculation.module``
+_NATIVE = {c.name: c.document_module for c in CALCULATIONS.values() if c.name not in ("catalog", "catalog-search")}
+
+
+def _module(calc):
+    """The module whose ``document(parsed)`` computes ``calc``: one of this package (``life``), or any
+    module by its full dotted name."""
+    name = calc.document_module
+    return importlib.import_module(name if "." in name else f".{name}", __package__)
 
 
 def _native(parsed):
@@ -326,7 +303,7 @@ def _native(parsed):
     from .._io import json_value
     from ..errors import ConvergenceError
 
-    module = importlib.import_module(f".{_NATIVE[parsed.calculation.name]}", __package__)
+    module = _module(parsed.calculation)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", RuntimeWarning)  # every result is checked finite
@@ -384,7 +361,7 @@ def _high_speed_svg(parsed):
 
 def _native_figure(parsed):
     """The SVG of a native calculation's figure, drawn from its document; '' where it has none."""
-    module = importlib.import_module(f".{_NATIVE[parsed.calculation.name]}", __package__)
+    module = _module(parsed.calculation)
     try:
         doc = _native(parsed)
     except RequestError:

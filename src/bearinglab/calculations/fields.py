@@ -43,8 +43,16 @@ class Field:
 
     ``minimum`` and ``maximum`` are in the display ``unit`` (``mm``, ``kN``); ``exclusive`` makes
     the minimum strict (> rather than >=). ``many`` allows a list or a range (``2kN:20kN:2kN``),
-    whose values multiply into cases. ``option`` is the command line's spelling where it is not
-    ``--`` and the name with dashes.
+    whose values multiply into cases. ``group`` is the heading the field is shown under (the help
+    panel of the command line, :data:`bearinglab.calculations.registry.GROUPS`).
+
+    The command line's option is built from the field (:mod:`bearinglab.cli._options`): ``option`` is
+    its spelling where it is not ``--`` and the name with dashes (a spelling without dashes, ``NAME``,
+    is a positional argument), ``aliases`` its short spellings (``-n``); ``cli=False`` leaves the
+    field off the command line (an input of the page alone, such as its picker's query). The help
+    names another field of the same calculation between backquotes (as Markdown code: the API's
+    descriptions are CommonMark): the command line writes it as that field's option
+    (``--temperature``), the API and the page as it stands.
     """
 
     name: str
@@ -61,6 +69,8 @@ class Field:
     many: bool = False
     group: str = ""
     option: str = ""
+    aliases: tuple = ()
+    cli: bool = True
 
     @property
     def cli_option(self):

@@ -16,6 +16,7 @@ import re
 
 from ..errors import InputError
 from . import _reading as inp
+from ._failures import failures
 
 __all__ = ["document"]
 
@@ -50,7 +51,7 @@ def document(parsed, *, bearing_file=None, catalog=None):
         The frequencies (``*_hz``, ``*_order``), the nominal ones and the shift, the inputs echoed,
         ``mask`` with the ``mask`` flag, and ``warnings`` (the bearing's provenance notes).
     """
-    with inp.fields(parsed):
+    with failures(parsed, options=False):  # messages in the command line's words (_failures)
         b = inp.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
         hertz = inp.value(parsed, "hertz", "exact")
         harmonics, sidebands = inp.value(parsed, "harmonics", 3), inp.value(parsed, "sidebands", 1)

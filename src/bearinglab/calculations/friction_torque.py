@@ -19,6 +19,7 @@ from typing import NamedTuple
 
 from ..errors import InputError
 from . import _reading as inp
+from ._failures import failures
 from ._inputs import lubricant_viscosity, parse_viscosity
 
 __all__ = ["MODELS", "FrictionResult", "compute", "document"]
@@ -53,7 +54,7 @@ def compute(parsed, *, bearing_file=None, catalog=None):
     """
     t, v = inp.text, inp.value
     resolved = []
-    with inp.fields(parsed):
+    with failures(parsed, options=False):  # messages in the command line's words (_failures)
         doc, m, b, n = _torque(
             t(parsed, "radial_load", "0 N"), t(parsed, "axial_load", "0 N"), t(parsed, "speed", "0 rpm"),
             v(parsed, "model", "one-term"), t(parsed, "bearing"), bearing_file, catalog, v(parsed, "type"),

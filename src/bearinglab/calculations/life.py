@@ -27,6 +27,7 @@ import json
 import warnings
 
 from ..errors import InputError
+from ._failures import failures
 from ._inputs import (
     five_loads,
     inputs_echo,
@@ -34,7 +35,7 @@ from ._inputs import (
     parse_speed,
     resolve_bearing,
 )
-from ._request import given_text, reading, with_notes
+from ._request import given_text, with_notes
 
 __all__ = ["document"]
 
@@ -92,7 +93,7 @@ def document(parsed, *, catalog=None, bearing_file=None, duty_cycle_source=POSTE
     def text(name):
         return given_text(parsed, name)
 
-    with reading(parsed):
+    with failures(parsed):
         b = resolve_bearing(text("bearing"), bearing_file, catalog, v.get("balls"), *map(text, _GEOMETRY),
                             v.get("inner_conformity"), v.get("outer_conformity"),
                             text("contact_angle"), text("radial_clearance"), text("ball_material"))

@@ -22,6 +22,7 @@ import types
 import warnings
 
 from ..errors import InputError
+from ._failures import failures
 from ._inputs import (
     choice,
     five_loads,
@@ -29,7 +30,7 @@ from ._inputs import (
     parse_speeds,
     resolve_bearing,
 )
-from ._request import given_text, reading, with_notes
+from ._request import given_text, with_notes
 
 __all__ = ["document", "figure"]
 
@@ -80,7 +81,7 @@ def document(parsed, *, catalog=None, bearing_file=None, speeds=False):
     def text(name):
         return given_text(parsed, name)
 
-    with reading(parsed):
+    with failures(parsed):
         b = resolve_bearing(text("bearing"), bearing_file, catalog, v.get("balls"), *map(text, _GEOMETRY),
                             v.get("inner_conformity"), v.get("outer_conformity"), text("contact_angle"),
                             text("radial_clearance"), text("ball_material"))

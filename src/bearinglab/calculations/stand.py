@@ -15,6 +15,7 @@ import math
 
 from ..errors import InputError
 from . import _reading as inp
+from ._failures import failures
 
 __all__ = ["document"]
 
@@ -35,7 +36,7 @@ def document(parsed, *, bearing_file=None, catalog=None):
         One case as one object; lists of loads or speeds as ``cases``; the inputs echoed and
         ``warnings``.
     """
-    with inp.fields(parsed):
+    with failures(parsed, options=False):  # messages in the command line's words (_failures)
         b = inp.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
         out = (_axial_angle if parsed.calculation.name == "axial-angle" else _stand_load)(parsed, b)
     return inp.notes_in(out, b)

@@ -3,7 +3,7 @@ from Python.
 
 Commands
 --------
-catalog list | show NAME       the bearings known (built-in and user catalogs)        cli/catalog.py
+catalog list | show | search  the bearings known (built-in and user catalogs)        cli/catalog.py
 axial-angle                    operating contact angle under axial load (spec 000)    cli/stand.py
 stand-load                     minimum axial load on a test stand (spec 000 section 3) cli/stand.py
 frequencies                    characteristic frequencies and the spectral mask       cli/frequencies.py
@@ -18,14 +18,19 @@ temperature                    steady bearing temperature, heat balance (issue 2
 runout | runout monte-carlo    manufacturing errors -> inner-ring runout (spec 003)   cli/runout.py
 clearance                      mounted clearance: fits, temperatures, speed (issue 23) cli/clearance.py
 
-Each command module defines ``COMMANDS`` (command name -> function, or a Typer group); the options
-every command shares (bearing, execution, JSON) and the output helpers are in ``cli/_common.py``, so
-no command module imports this package. Importing this package builds the whole application: :data:`app` lists every
+Each command module defines ``COMMANDS`` (command name -> function, or a Typer group). A calculation's
+command is generated from its declaration in :mod:`bearinglab.calculations.registry` (``cli/_options.py``:
+one option per field); the module adds the options of the command line alone (files, ``--json``, the
+executor) and prints the document as tables. A registered calculation without a module gets the generic
+command. The output helpers and the command line's own options are in ``cli/_common.py``, so no command
+module imports this package. Importing this package builds the whole application: :data:`app` lists every
 command, for the console script, ``python -m bearinglab``, test runners and documentation tools alike.
 
 Building the application imports typer and rich only: each command imports the physics it needs when
 it runs, so ``bearinglab --help`` starts in about 0.2 s (``bench/cli_help.py``) without numpy, scipy,
-pint or matplotlib (``tests/cli/test_cli_startup.py``). Flags show no type in the help.
+pint or matplotlib (``tests/cli/test_cli_startup.py``), and typer's rich help loads without the
+markdown parser it imports for a markup mode this application does not use
+(:func:`_rich_help_without_markdown`). Flags show no type in the help.
 
 Errors in the input print one line on stderr, naming the option the user typed (a library parameter
 such as ``n_balls`` is named by its option, ``balls``), and exit with code 2, as do inputs for which the model
@@ -50,6 +55,7 @@ import os
 import re
 import sys
 import threading
+import types
 import warnings
 from pathlib import Path
 from typing import NamedTuple
@@ -78,6 +84,7 @@ from . import (
 )
 from ._common import request_message
 from ._console import ascii_spelling, needs_spelling, output_width, setup_streams
+from ._options import register
 
 __all__ = ["JsonRun", "app", "main", "run", "run_json"]
 
@@ -113,13 +120,17 @@ def _main_options(
     setup_streams()  # also when the app runs without main() (typer's test runner)
 
 
+_GROUPS = {}
 for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, film, temperature, friction, runout,
                 clearance, serve):
     for _name, _command in _module.COMMANDS.items():
         if isinstance(_command, typer.Typer):
             app.add_typer(_command, name=_name)
+            _GROUPS[_name] = _command
         else:
             app.command(_name)(_command)
+# a calculation of the registry without a command module gets the generic command (its document, or a table)
+register(app, _GROUPS)
 
 
 _CLICK = {}
@@ -268,6 +279,31 @@ def _is_bearing(word):
     return True
 
 
+def _rich_help_without_markdown():
+    """Load typer's rich help without ``rich.markdown``: typer imports it (and markdown-it with it, about
+    a fifth of the start of ``--help``) for its markdown markup mode, which this application does not
+    use (its help is rich markup). While ``typer.rich_utils`` loads, a stand-in takes the module's place
+    whose ``Markdown`` loads the real class when first used; the real module is imported as usual
+    afterwards. Help reads the same either way (``tests/cli/test_cli_startup.py``)."""
+    if "typer.rich_utils" in sys.modules or "rich.markdown" in sys.modules:
+        return
+    stand_in = types.ModuleType("rich.markdown")
+
+    class Markdown:
+        def __new__(cls, *args, **kwargs):
+            from rich.markdown import Markdown as markdown
+
+            return markdown(*args, **kwargs)
+
+    stand_in.Markdown = Markdown
+    sys.modules["rich.markdown"] = stand_in
+    try:
+        import typer.rich_utils  # noqa: F401 -- loaded here, without the markdown parser
+    finally:
+        if sys.modules.get("rich.markdown") is stand_in:
+            del sys.modules["rich.markdown"]
+
+
 def main(argv=None) -> int:
     """Run the command line; return the exit code instead of raising (tests call this).
 
@@ -293,6 +329,8 @@ def main(argv=None) -> int:
             # numpy's floating-point warnings are no message for a user: every result is checked finite
             warnings.simplefilter("ignore", RuntimeWarning)
             words = sys.argv[1:] if argv is None else list(argv)
+            if not words or {"-h", "--help"} & set(words):
+                _rich_help_without_markdown()
             rv = _click_command(_command_named(words)).main(args=words, prog_name="bearinglab",
                                                              standalone_mode=False)
         flush_notes()

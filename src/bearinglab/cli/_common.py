@@ -1,29 +1,30 @@
-"""What every command of the command line shares: the bearing and execution options, and the output.
+"""What every command of the command line shares: its own options, the bearing, and the output.
 
-Bearing options  BearingName, BearingFile, CatalogFile and the inline geometry; resolve_bearing
-Execution        ExecutorOpt, WorkersOpt, ChunkSizeOpt; execution (one parallel.Execution with the
-                 command's progress bar)
-Output           console, emit_json (one JSON document on stdout), table (a rich table), emit_csv,
-                 print_warnings, plain_zero (no '-0' in printed numbers)
+Options          the options of the command line alone (the calculations' fields are options built by
+                 :mod:`bearinglab.cli._options`): FileOption (a file read or written), BearingFile,
+                 CatalogFile, JsonFlag, ExecutorOpt, WorkersOpt, ChunkSizeOpt
+Bearing          resolve_bearing (with the provenance notes: add_notes, reset_notes, flush_notes)
+Execution        execution (one parallel.Execution with the command's progress bar), progress_bar
+Output           console, emit_json (one JSON document on stdout), table (a rich table), print_document
+                 (a document as tables: labels and units from its keys), emit_csv, print_warnings,
+                 plain_zero (no '-0' in printed numbers)
 Inputs echoed    inputs_echo (the bearing as used, the overrides, the quantities given)
 Input checks     choice, check_directory, check_output (directory and suffix of an output file, and
                  check_not_input: not an input file of the command),
                  check_output_directory (its parent exists),
                  check_input (an input file exists), parse_speeds (one rule for every speed option),
                  parse_speed (one speed), speed_size (the d_m of the speed guard), parse_length (a
-                 length > 0, the message in mm or um), parse_viscosity
-Lubricant        ViscosityOpt, OilOpt, TemperatureOpt, ViscosityIndexOpt, Viscosity100Opt (the oil options
-                 every command that needs a viscosity shares); parse_temperature; lubricant_viscosity (those
-                 options -> the operating viscosity and how it was obtained)
+                 length > 0, the message in mm or um), parse_viscosity, parse_temperature,
+                 lubricant_viscosity (the oil options -> the operating viscosity and how it was obtained)
+Calculations     request_message (a calculation's RequestError in the command line's words: the field as
+                 its option), run_calculation (a calculation's document from the options as typed)
 
 The input readers (the bearing's resolution, inputs_echo, the speeds, loads, lengths and the lubricant)
 are :mod:`bearinglab.calculations._inputs`, shared with the calculations' documents, and imported
-here; request_message words a calculation's RequestError for the command line, fields_given collects
-a command's options as the request of its calculation, run_calculation computes a calculation's document
-from them. The command modules import these; none of them imports the package ``bearinglab.cli`` itself,
-so the application is built on import without a cycle. The physics (numpy, scipy, pint, matplotlib) is imported
-inside the functions that compute, never at the top of a command module: ``bearinglab --help`` builds
-every command without it (``tests/cli/test_cli_startup.py``).
+here. The command modules import these; none of them imports the package ``bearinglab.cli`` itself,
+so the application is built on import without a cycle. The physics (numpy, scipy, pint, matplotlib) is
+imported inside the functions that compute, never at the top of a command module: ``bearinglab --help``
+builds every command without it (``tests/cli/test_cli_startup.py``).
 """
 
 from __future__ import annotations
@@ -65,22 +66,17 @@ __all__: list[str] = []  # private to the command line
 
 console = Console()
 
-# ----------------------------------------------------------------------------- shared options
-# Bearing given by name, by file, or inline. Commands that need a bearing take these parameters and
-# call resolve_bearing(...) with them.
-BearingName = Annotated[str | None, typer.Option("--bearing", "-b", help="Catalog name, e.g. B218, 4-1006095, 6205-2RS.", rich_help_panel="Bearing")]
-BearingFile = Annotated[Path | None, typer.Option("--bearing-file", help="TOML file with one bearing table.", rich_help_panel="Bearing")]
-CatalogFile = Annotated[Path | None, typer.Option("--catalog", help="User catalog TOML (also $BEARINGLAB_CATALOG).", rich_help_panel="Bearing")]
-Balls = Annotated[int | None, typer.Option("--balls", help="Number of balls.", rich_help_panel="Inline geometry")]
-BallDiameter = Annotated[str | None, typer.Option("--ball-diameter", help="e.g. '2 mm'.", rich_help_panel="Inline geometry")]
-PitchDiameter = Annotated[str | None, typer.Option("--pitch-diameter", help="e.g. '8.7355 mm'.", rich_help_panel="Inline geometry")]
-InnerRadius = Annotated[str | None, typer.Option("--inner-groove-radius", help="e.g. '1.05 mm'.", rich_help_panel="Inline geometry")]
-OuterRadius = Annotated[str | None, typer.Option("--outer-groove-radius", help="e.g. '1.16 mm'.", rich_help_panel="Inline geometry")]
-InnerConformity = Annotated[float | None, typer.Option("--inner-conformity", help="f_i = r_i / D.", rich_help_panel="Inline geometry")]
-OuterConformity = Annotated[float | None, typer.Option("--outer-conformity", help="f_o = r_o / D.", rich_help_panel="Inline geometry")]
-ContactAngle = Annotated[str | None, typer.Option("--contact-angle", help="Nominal (free) angle, e.g. '12 deg'.", rich_help_panel="Inline geometry")]
-Clearance = Annotated[str | None, typer.Option("--radial-clearance", help="Diametral clearance, e.g. '9 um'.", rich_help_panel="Inline geometry")]
-BallMaterial = Annotated[str | None, typer.Option("--ball-material", help="steel | silicon_nitride.", rich_help_panel="Inline geometry")]
+# ----------------------------------------------------------------------------- the command line's own options
+# The options of the calculations are their fields (cli/_options.py); these belong to the command line
+# alone: the files it reads and writes, the output format, the executor.
+def FileOption(option, help, panel=None, *aliases):
+    """An option naming a file (or directory) the command reads or writes: ``Path | None`` (named as
+    a type, as the other options here)."""
+    return Annotated[Path | None, typer.Option(option, *aliases, help=help, rich_help_panel=panel)]
+
+
+BearingFile = FileOption("--bearing-file", "TOML file with one bearing table.", "Bearing")
+CatalogFile = FileOption("--catalog", "User catalog TOML (also $BEARINGLAB_CATALOG).", "Bearing")
 JsonFlag = Annotated[bool, typer.Option("--json", help="Print one JSON document on stdout.")]
 # Batch execution (bearinglab.parallel): every batch command takes these three.
 ExecutorOpt = Annotated[str | None, typer.Option("--executor", help="serial | local | tcp://host:8786 (a running dask scheduler).", rich_help_panel="Execution")]
@@ -271,18 +267,65 @@ def table(title, columns, rows, *, caption=None):
                                   caption if k == len(cells) else None, [False, True]))
 
 
-def fields_given(name, values, **renamed):
-    """The values of a command's options that are fields of calculation ``name``, as typed (an option
-    not given, None, is left out): the ``given`` of :func:`bearinglab.calculations.parse`.
-    ``renamed`` maps a field to the command's parameter where the two differ (``density="density_text"``)."""
-    from ..calculations import CALCULATIONS
+def _shown(value):
+    """Whether a table shows ``value`` in a cell: a scalar, or a list of numbers (a range)."""
+    if isinstance(value, list):
+        return all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value)
+    return not isinstance(value, dict)
 
-    out = {}
-    for f in CALCULATIONS[name].fields:
-        value = values.get(renamed.get(f.name, f.name))
-        if value is not None:
-            out[f.name] = value
-    return out
+
+def _cell(value):
+    """A value of a document as a table shows it: 6 significant digits, a list of numbers joined."""
+    if value is None:
+        return "—"
+    if isinstance(value, bool):
+        return str(value).lower()
+    if isinstance(value, float):
+        return f"{value:.6g}"
+    if isinstance(value, list):
+        return ", ".join(_cell(v) for v in value)
+    return str(value)
+
+
+def _label(key):
+    from ..tables import quantity
+
+    name, unit = quantity(key)
+    return f"{name} [{unit}]" if unit else name
+
+
+def print_document(title, doc, *, label=None, cell=None, skip=(), caption=None):
+    """Print a calculation's document as tables, then its warnings: one quantity/value table of its
+    scalars (a key's unit suffix gives the unit, ``basic_rating_life_h`` -> ``basic rating life [h]``;
+    a list of numbers on one line; a mapping of scalars as rows ``key name``), and one table of each
+    list of records (cases, balls: one column per key). A list of documents is one table, a row each.
+
+    ``label(key)`` and ``cell(key, value)`` replace the default label and cell of a scalar; the keys of
+    ``skip`` (and ``inputs``, ``warnings``) are not shown.
+    """
+    label, cell = label or _label, cell or (lambda key, value: _cell(value))
+    skip = {"inputs", "warnings", *skip}
+    if isinstance(doc, list):
+        print_document(title, {"cases": doc}, label=label, cell=cell, skip=skip, caption=caption)
+        print_warnings(doc[0].get("warnings", []) if doc and isinstance(doc[0], dict) else [])
+        return
+    rows, records = [], []
+    for key, value in doc.items():
+        if key in skip:
+            continue
+        if isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
+            records.append((key, value))
+        elif isinstance(value, dict):
+            rows += [[f"{label(key)} {_label(k)}", _cell(v)] for k, v in value.items() if _shown(v)]
+        elif _shown(value):
+            rows.append([label(key), cell(key, value)])
+    if rows:
+        table(title, ["quantity", "value"], rows, caption=caption if not records else None)
+    for key, value in records:
+        keys = [k for k in value[0] if k not in skip and _shown(value[0][k])]
+        table(f"{title}: {key.replace('_', ' ')}" if rows else title, [_label(k) for k in keys],
+              [[_cell(r.get(k)) for k in keys] for r in value], caption=caption if key == records[-1][0] else None)
+    print_warnings(doc.get("warnings", []))
 
 
 def print_warnings(notes):
@@ -410,29 +453,6 @@ def execution(description, executor=None, workers=None, chunk_size=None, *, memo
     bar = progress_bar(description, ex.executor) if progress else contextlib.nullcontext(None)
     with bar as report:
         yield dataclasses.replace(ex, progress=report)
-
-
-# ----------------------------------------------------------------------------- five loads (issues 11, 12)
-# The loads on the inner ring, (F_x, F_y, F_z, M_x, M_y); --radial-load and --axial-load are F_x and F_z.
-_LOADS = "Loads on the inner ring"
-FxOpt = Annotated[str | None, typer.Option("--fx", help="Radial force along x, e.g. '1 kN'.", rich_help_panel=_LOADS)]
-FyOpt = Annotated[str | None, typer.Option("--fy", help="Radial force along y, e.g. '200 N'.", rich_help_panel=_LOADS)]
-FzOpt = Annotated[str | None, typer.Option("--fz", help="Axial force (along the bearing axis), e.g. '500 N'.", rich_help_panel=_LOADS)]
-MxOpt = Annotated[str | None, typer.Option("--mx", help="Tilting moment about x, e.g. '1000 N*mm'.", rich_help_panel=_LOADS)]
-MyOpt = Annotated[str | None, typer.Option("--my", help="Tilting moment about y, e.g. '2 N*m'.", rich_help_panel=_LOADS)]
-RadialLoadOpt = Annotated[str | None, typer.Option("--radial-load", "-R", help="Same as --fx.", rich_help_panel=_LOADS)]
-AxialLoadOpt = Annotated[str | None, typer.Option("--axial-load", "-A", help="Same as --fz.", rich_help_panel=_LOADS)]
-
-
-# ----------------------------------------------------------------------------- lubricant (issue 20)
-# The oil options shared by every command that needs the operating viscosity (life; film, friction, ...):
-# --viscosity alone, or --oil with --temperature (and --viscosity-index or --viscosity-100).
-_LUBRICANT = "Lubricant"
-ViscosityOpt = Annotated[str | None, typer.Option("--viscosity", help="Operating kinematic viscosity, e.g. '20 cSt'.", rich_help_panel=_LUBRICANT)]
-OilOpt = Annotated[str | None, typer.Option("--oil", help="ISO VG grade, e.g. VG68 (with --temperature).", rich_help_panel=_LUBRICANT)]
-TemperatureOpt = Annotated[str | None, typer.Option("--temperature", help="Operating temperature of the oil, e.g. '70 degC'.", rich_help_panel=_LUBRICANT)]
-ViscosityIndexOpt = Annotated[float | None, typer.Option("--viscosity-index", help="The oil's viscosity index (default 95, a mineral oil).", rich_help_panel=_LUBRICANT)]
-Viscosity100Opt = Annotated[str | None, typer.Option("--viscosity-100", help="The oil's viscosity at 100 degC, e.g. '8.7 cSt' (instead of --viscosity-index).", rich_help_panel=_LUBRICANT)]
 
 
 # ----------------------------------------------------------------------------- calculations (issue 22)

@@ -6,14 +6,12 @@ COMMANDS   the ``catalog`` command group, by name (the application adds it)
 """
 
 import re
-from typing import Annotated
 
 import typer
 
 from ..errors import InputError
 from ._common import (
     CatalogFile,
-    Clearance,
     JsonFlag,
     add_notes,
     check_input,
@@ -21,6 +19,7 @@ from ._common import (
     print_warnings,
     table,
 )
+from ._options import command
 
 __all__ = ["COMMANDS"]
 
@@ -91,20 +90,14 @@ def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False):
           caption="* estimated ball set; catalog show NAME (or a designation) for every field and the ratings")
 
 
-_ClearanceChoice = Annotated[str | None, typer.Option(
-    "--clearance", help="Value of the ISO 5753-1 clearance range the models use: mean (default), min or max.")]
-
-
-@catalog_app.command("show")
-def catalog_show(name: Annotated[str, typer.Argument(help="Bearing name, alias or designation (6208-2RS1/C3).")],
-                 catalog: CatalogFile = None, clearance: _ClearanceChoice = None,
-                 radial_clearance: Clearance = None, json_out: JsonFlag = False):
+def catalog_show(given, *, catalog: CatalogFile = None, json_out: JsonFlag = False):
     """Show one bearing: geometry, ratings C, C0, Cu (catalog or computed), limits and where each comes from."""
     from .. import catalog as _catalog
     from ..calculations.documents import catalog_document
     if catalog is not None:
         check_input(catalog, "catalog")
-    info, b = catalog_document(name, catalog=catalog, clearance=clearance, radial_clearance=radial_clearance)
+    info, b = catalog_document(given["name"], catalog=catalog, clearance=given.get("clearance"),
+                               radial_clearance=given.get("radial_clearance"))
     add_notes(_catalog.provenance_notes(b))
     if json_out:
         emit_json(info)
@@ -140,17 +133,10 @@ def _value(key, value, sources, estimated):
     return text
 
 
-_SearchLength = Annotated[str | None, typer.Option(help="e.g. '40 mm' (a number alone is in mm).")]
-
-
-@catalog_app.command("search")
-def catalog_search(bore: _SearchLength = None, outside_diameter: _SearchLength = None,
-                   width: _SearchLength = None,
-                   type: Annotated[str | None, typer.Option("--type", help="deep-groove | angular.")] = None,
-                   series: Annotated[str | None, typer.Option(help="Series, e.g. 62, 618, 72, 72B, 79C.")] = None,
-                   json_out: JsonFlag = False):
+def catalog_search(given, *, json_out: JsonFlag = False):
     """Find standard-series bearings by boundary dimensions, type and series."""
     from .. import catalog as _catalog
+    bore, outside_diameter, width, type, series = (given.get(k) for k in _SEARCH)
     if all(x is None for x in (bore, outside_diameter, width, type, series)):
         raise InputError("search: give at least one of --bore, --outside-diameter, --width, --type, --series")
     hits = _catalog.search(bore=_length(bore, "bore"), outside_diameter=_length(outside_diameter, "outside-diameter"),
@@ -167,6 +153,10 @@ def catalog_search(bore: _SearchLength = None, outside_diameter: _SearchLength =
          _fmt(h["contact_angle_deg"]), _fmt(h["dynamic_load_rating_kN"]), _fmt(h["static_load_rating_kN"])]
         for h in hits], caption="catalog show NAME for every field and its source")
 
+
+_SEARCH = ("bore", "outside_diameter", "width", "type", "series")  # the fields of catalog-search it takes
+catalog_app.command("show")(command("catalog", catalog_show))
+catalog_app.command("search")(command("catalog-search", catalog_search))
 
 #: The ``catalog`` command group, as the application adds it.
 COMMANDS = {"catalog": catalog_app}

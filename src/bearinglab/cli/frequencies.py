@@ -6,26 +6,12 @@ COMMANDS   the ``frequencies`` command, by name (the application adds it)
 """
 
 import math
-from pathlib import Path
-from typing import Annotated
-
-import typer
 
 from ._common import (
-    BallDiameter,
-    BallMaterial,
-    Balls,
     BearingFile,
-    BearingName,
     CatalogFile,
-    Clearance,
-    ContactAngle,
-    InnerConformity,
-    InnerRadius,
+    FileOption,
     JsonFlag,
-    OuterConformity,
-    OuterRadius,
-    PitchDiameter,
     check_output,
     console,
     emit_csv,
@@ -33,6 +19,7 @@ from ._common import (
     print_warnings,
     table,
 )
+from ._options import command
 
 __all__ = ["COMMANDS"]
 
@@ -48,59 +35,8 @@ _LABELS = {
 
 
 def frequencies(
-    speed: Annotated[
-        str, typer.Option("--speed", "-n", help="Inner-ring (shaft) speed: '3000 rpm', '50 Hz'.")
-    ],
-    outer_speed: Annotated[
-        str, typer.Option("--outer-speed", help="Outer-ring speed, same sense as --speed.")
-    ] = "0 rpm",
-    axial_load: Annotated[
-        str | None,
-        typer.Option(
-            "--axial-load",
-            "-F",
-            help="Axial stand load, e.g. '2 kgf': frequencies at the operating contact angle (the test-stand method).",
-        ),
-    ] = None,
-    hertz: Annotated[
-        str,
-        typer.Option(
-            "--hertz", help="Hertz coefficients for the operating angle: exact (default) | table."
-        ),
-    ] = "exact",
-    elastic_constant: Annotated[
-        str,
-        typer.Option("--elastic-constant", help="materials (default: from E, ν) | paper (0.592e-4 (cm²/kgf)^(2/3))."),
-    ] = "materials",
-    bearing: BearingName = None,
-    bearing_file: BearingFile = None,
-    catalog: CatalogFile = None,
-    balls: Balls = None,
-    ball_diameter: BallDiameter = None,
-    pitch_diameter: PitchDiameter = None,
-    inner_groove_radius: InnerRadius = None,
-    outer_groove_radius: OuterRadius = None,
-    inner_conformity: InnerConformity = None,
-    outer_conformity: OuterConformity = None,
-    contact_angle: ContactAngle = None,
-    radial_clearance: Clearance = None,
-    ball_material: BallMaterial = None,
-    harmonics: Annotated[
-        int, typer.Option("--harmonics", help="Harmonics 1..N in the spectral mask.")
-    ] = 3,
-    sidebands: Annotated[
-        int, typer.Option("--sidebands", help="Sideband orders ±1..S around BPFI and BSF.")
-    ] = 1,
-    band: Annotated[
-        str,
-        typer.Option("--band", help="Full width of each mask line, in % of its frequency: '2 %'."),
-    ] = "2 %",
-    mask: Annotated[
-        bool, typer.Option("--mask", help="Print (or add to the JSON) the spectral-mask table.")
-    ] = False,
-    csv_file: Annotated[
-        Path | None, typer.Option("--csv", help="Write the spectral mask to this CSV file.")
-    ] = None,
+    given, *, bearing_file: BearingFile = None, catalog: CatalogFile = None,
+    csv_file: FileOption("--csv", "Write the spectral mask to this CSV file.") = None,
     json_out: JsonFlag = False,
 ):
     """Characteristic frequencies (FTF, BPFO, BPFI, BSF, 2·BSF) and the spectral mask.
@@ -108,13 +44,13 @@ def frequencies(
     With --axial-load the frequencies are at the operating contact angle under that load, and the
     nominal ones and the shift are shown too.
     """
-    options = dict(locals())  # the options as typed, by name: the calculation's fields among them
     from ..calculations import _reading as _inputs
     from ..calculations import frequencies as calculation
 
     if csv_file is not None:  # before anything is computed
         check_output(csv_file, "csv", (".csv",), inputs=(bearing_file, catalog))
-    given = dict(options, mask=mask or csv_file is not None)  # the fields as typed (the mask for the CSV)
+    mask = given["mask"]
+    given = dict(given, mask=mask or csv_file is not None)  # the fields as typed (the mask for the CSV)
     out = calculation.document(_inputs.request("frequencies", given), bearing_file=bearing_file,
                                catalog=catalog)
     mask_rows = out["mask"]["lines"] if "mask" in out else []
@@ -198,4 +134,4 @@ def _sideband(row):
 
 
 #: The ``frequencies`` command, as the application adds it.
-COMMANDS = {"frequencies": frequencies}
+COMMANDS = {"frequencies": command("frequencies", frequencies)}

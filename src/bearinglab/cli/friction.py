@@ -15,17 +15,11 @@ from typing import Annotated
 
 import typer
 
-from . import _mounting as mo
 from ._common import (
     BearingFile,
-    BearingName,
     CatalogFile,
-    ContactAngle,
+    FileOption,
     JsonFlag,
-    OilOpt,
-    TemperatureOpt,
-    Viscosity100Opt,
-    ViscosityIndexOpt,
     check_not_input,
     check_output_directory,
     console,
@@ -33,6 +27,7 @@ from ._common import (
     print_warnings,
     table,
 )
+from ._options import command
 
 __all__ = ["COMMANDS"]
 
@@ -40,158 +35,14 @@ friction_app = typer.Typer(
     help="Friction torque: handbook models and the friction-rig lab.",
     no_args_is_help=True,
 )
-_MODELS = ("one-term", "two-term", "palmgren", "skf")
-_PANEL = "Bearing data (override the catalog)"
 
 
-def torque(
-    radial_load: Annotated[
-        str,
-        typer.Option(
-            "--radial-load", "-R", help="F_r, e.g. '10 N', '1 kgf', or a list/range '0N:50N:10N'."
-        ),
-    ] = "0 N",
-    axial_load: Annotated[
-        str, typer.Option("--axial-load", "-A", help="F_a, e.g. '5 N' (list/range allowed).")
-    ] = "0 N",
-    speed: Annotated[
-        str,
-        typer.Option(
-            "--speed", "-n", help="Inner-ring speed, e.g. '3000 rpm' (list/range allowed)."
-        ),
-    ] = "0 rpm",
-    model: Annotated[
-        str,
-        typer.Option(
-            "--model",
-            "-m",
-            help="one-term (default) | two-term (needs --f0) | palmgren (needs --viscosity, --palmgren-f0) | "
-            "skf (needs --viscosity; --lubrication).",
-        ),
-    ] = "one-term",
-    bearing: BearingName = None,
-    bearing_file: BearingFile = None,
-    catalog: CatalogFile = None,
-    bearing_type: Annotated[
-        str | None, typer.Option("--type", help="radial | angular.", rich_help_panel=_PANEL)
-    ] = None,
-    contact_angle: ContactAngle = None,
-    bore: Annotated[
-        str | None, typer.Option("--bore", help="d, e.g. '12 mm'.", rich_help_panel=_PANEL)
-    ] = None,
-    outside_diameter: Annotated[
-        str | None,
-        typer.Option("--outside-diameter", help="D, e.g. '28 mm'.", rich_help_panel=_PANEL),
-    ] = None,
-    mean_diameter: Annotated[
-        str | None,
-        typer.Option(
-            "--mean-diameter", help="d_m = (d + D)/2, e.g. '20 mm'.", rich_help_panel=_PANEL
-        ),
-    ] = None,
-    static_load_rating: Annotated[
-        str | None,
-        typer.Option("--static-load-rating", help="C0, e.g. '2227 N'.", rich_help_panel=_PANEL),
-    ] = None,
-    mu: Annotated[
-        float | None,
-        typer.Option(
-            "--mu",
-            help="Override of the handbook μ (0.0015 radial, 0.0020 angular).",
-            rich_help_panel="Handbook constants",
-        ),
-    ] = None,
-    x0: Annotated[
-        float | None,
-        typer.Option(
-            "--x0", help="Override of x0 (Table 1).", rich_help_panel="Handbook constants"
-        ),
-    ] = None,
-    y0: Annotated[
-        float | None,
-        typer.Option(
-            "--y0", help="Override of y0 (Table 1).", rich_help_panel="Handbook constants"
-        ),
-    ] = None,
-    f: Annotated[
-        float | None,
-        typer.Option("--f", help="Override of f (Table 2).", rich_help_panel="Handbook constants"),
-    ] = None,
-    c: Annotated[
-        float | None,
-        typer.Option("--c", help="Override of c (Table 2).", rich_help_panel="Handbook constants"),
-    ] = None,
-    f0: Annotated[
-        float | None,
-        typer.Option(
-            "--f0",
-            help="Speed-term factor of T0 = f0·d_m³·n^(2/3) in N·mm⁻²·min^(2/3) (e.g. 2e-7; from `friction lab`, task 2).",
-            rich_help_panel="Handbook constants",
-        ),
-    ] = None,
-    viscosity: Annotated[
-        str | None,
-        typer.Option(
-            "--viscosity",
-            help="Lubricant kinematic viscosity for --model palmgren, e.g. '20 cSt'.",
-            rich_help_panel="Handbook constants",
-        ),
-    ] = None,
-    palmgren_f0: Annotated[
-        float | None,
-        typer.Option(
-            "--palmgren-f0",
-            help="Palmgren's f0 (about 0.7-2 for deep-groove bearings) for --model palmgren.",
-            rich_help_panel="Handbook constants",
-        ),
-    ] = None,
-    lubrication: Annotated[
-        str,
-        typer.Option(
-            "--lubrication",
-            help="For --model skf: grease (default) | oil-air | oil-jet | oil-bath (with --oil-level, "
-            "--drag-loss-factor).",
-            rich_help_panel="Handbook constants",
-        ),
-    ] = "grease",
-    oil: OilOpt = None,
-    temperature: TemperatureOpt = None,
-    viscosity_index: ViscosityIndexOpt = None,
-    viscosity_100: Viscosity100Opt = None,
-    oil_level: Annotated[
-        str | None,
-        typer.Option(
-            "--oil-level",
-            help="For --model skf --lubrication oil-bath: H from the lowest point of the outer raceway, "
-            "e.g. '5 mm' (at most to the bearing's centre).",
-            rich_help_panel="Handbook constants",
-        ),
-    ] = None,
-    drag_loss_factor: Annotated[
-        float | None,
-        typer.Option(
-            "--drag-loss-factor",
-            help="For --lubrication oil-bath: V_M read from SKF's drag loss diagram at H/d_m.",
-            rich_help_panel="Handbook constants",
-        ),
-    ] = None,
-    series: Annotated[
-        str | None,
-        typer.Option(
-            "--series",
-            help="For --model skf: the deep-groove series of SKF's constants, e.g. 62 (default: the "
-            "bearing's series, else read from its designation).",
-            rich_help_panel="Handbook constants",
-        ),
-    ] = None,
-    json_out: JsonFlag = False,
-):
+def torque(given, *, bearing_file: BearingFile = None, catalog: CatalogFile = None, json_out: JsonFlag = False):
     """Friction torque under combined load: the handbook models of the friction-rig lab (P0, T, T0 and T_F) or SKF's."""
-    options = dict(locals(), type=bearing_type, **mo.given_options())  # the options as typed: the fields
     from ..calculations import _reading as _inputs
     from ..calculations import friction_torque as calculation
 
-    r = calculation.compute(_inputs.request("friction", options), bearing_file=bearing_file, catalog=catalog)
+    r = calculation.compute(_inputs.request("friction", given), bearing_file=bearing_file, catalog=catalog)
     out = r.document
     if json_out:
         emit_json(out)
@@ -199,7 +50,7 @@ def torque(
     if r.skf is not None:
         _print_skf(out, r.skf)
     else:
-        _print_torque(out, model)
+        _print_torque(out, given["model"])
     if "operating_clearance_um" in out:  # issue 23: the mounted bearing's clearance, for information
         console.print(f"operating clearance {out['operating_clearance_um']:.3g} um (least "
                       f"{out['operating_clearance_min_um']:.3g}, largest {out['operating_clearance_max_um']:.3g} um)",
@@ -289,12 +140,7 @@ def lab(
         Path,
         typer.Argument(help="Measurement-session file (TOML; see `bearinglab friction template`)."),
     ],
-    out: Annotated[
-        Path | None,
-        typer.Option(
-            "--out", "-o", help="Report directory (created; a previous report there is replaced)."
-        ),
-    ] = None,
+    out: FileOption("--out", "Report directory (created; a previous report there is replaced).", None, "-o") = None,
     json_out: JsonFlag = False,
 ):
     """Reduce a session of the friction-rig lab: tasks 1-3, cross-checks, conclusions, and the HTML report."""
@@ -405,7 +251,7 @@ def template(
     )
 
 
-friction_app.command("torque")(mo.mounting_options(torque))
+friction_app.command("torque")(command("friction", torque))
 friction_app.command("lab")(lab)
 friction_app.command("template")(template)
 

@@ -12,31 +12,16 @@ COMMANDS   the ``high-speed`` command, by name (the application adds it)
 """
 
 import sys
-from pathlib import Path
-from typing import Annotated
-
-import typer
 
 from ..errors import InputError
-from . import _mounting as mo
 from ._common import (
     FIGURE_SUFFIXES,
-    BallDiameter,
-    BallMaterial,
-    Balls,
     BearingFile,
-    BearingName,
     CatalogFile,
     ChunkSizeOpt,
-    Clearance,
-    ContactAngle,
     ExecutorOpt,
-    InnerConformity,
-    InnerRadius,
+    FileOption,
     JsonFlag,
-    OuterConformity,
-    OuterRadius,
-    PitchDiameter,
     WorkersOpt,
     check_output,
     console,
@@ -46,30 +31,19 @@ from ._common import (
     print_warnings,
     table,
 )
+from ._options import command
 
 __all__ = ["COMMANDS"]
 
-@mo.mounting_options
+
 def high_speed(
-    axial_load: Annotated[str, typer.Option("--axial-load", "-A", "-F", help="Thrust (-F is the same option): '20 kN', or a list/range '2.5kN:45kN:2.5kN'.")],
-    speed: Annotated[str, typer.Option("--speed", "-n", help="Inner-ring speed: '10000 rpm', or a list/range '0,3000,6000rpm'.")],
-    bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
-    balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
-    inner_groove_radius: InnerRadius = None, outer_groove_radius: OuterRadius = None,
-    inner_conformity: InnerConformity = None, outer_conformity: OuterConformity = None,
-    contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
-    solver: Annotated[str, typer.Option("--solver", help="newton (batched Newton-Raphson) | angle-iteration (the paper's search).")] = "newton",
-    raceway_control: Annotated[str, typer.Option("--raceway-control", help="outer (default, the paper's) | inner.")] = "outer",
-    constants: Annotated[str, typer.Option("--constants", help="mass (F_c, M_g from the ball mass; default) | harris (2.26e-11, 4.47e-12: Harris's printed constants) | paper (2.26e-11, 4.5e-12).")] = "mass",
-    gyroscopic_sign: Annotated[str, typer.Option("--gyroscopic-sign", help="physical (default) | reversed (for comparison only).")] = "physical",
-    reduced_modulus: Annotated[str | None, typer.Option("--reduced-modulus", help="E' of the contact pair, e.g. '228.04 GPa' (default: from the materials).")] = None,
-    csv_file: Annotated[Path | None, typer.Option("--csv", help="Write the table of all cases to this CSV file.")] = None,
-    plot: Annotated[Path | None, typer.Option("--plot", help="Draw the map (figures 2-4 and δ_a) into this PNG/PDF/SVG file.")] = None,
+    given, *, bearing_file: BearingFile = None, catalog: CatalogFile = None,
+    csv_file: FileOption("--csv", "Write the table of all cases to this CSV file.") = None,
+    plot: FileOption("--plot", "Draw the map (figures 2-4 and δ_a) into this PNG/PDF/SVG file.") = None,
     executor: ExecutorOpt = None, workers: WorkersOpt = None, chunk_size: ChunkSizeOpt = None,
     json_out: JsonFlag = False,
 ):
     """High-speed angular-contact bearing under thrust (the high-speed quasi-static model): α_i, α_e, δ_a, loads, F_c, M_g, speeds."""
-    options = dict(locals(), **mo.given_options())  # the options as typed, by name: the calculation's fields
     from .. import plots
     from ..calculations import _reading as _inputs
     from ..calculations import high_speed as calculation
@@ -82,7 +56,7 @@ def high_speed(
         if plot is not None:
             check_output(plot, "plot", FIGURE_SUFFIXES, inputs=(bearing_file, catalog))
 
-    r = calculation.compute(_inputs.request("high-speed", options), bearing_file=bearing_file, catalog=catalog,
+    r = calculation.compute(_inputs.request("high-speed", given), bearing_file=bearing_file, catalog=catalog,
                             execution=lambda single: execution("solving", executor, workers, chunk_size,
                                                                progress=not single), check=check)
     out, notes = r.document, list(r.notes)
@@ -155,4 +129,4 @@ def _print_sweep(designation, rows, options):
 
 
 #: The ``high-speed`` command, as the application adds it.
-COMMANDS = {"high-speed": high_speed}
+COMMANDS = {"high-speed": command("high-speed", high_speed)}

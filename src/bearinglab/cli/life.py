@@ -20,76 +20,24 @@ Commands
 COMMANDS   the ``life`` command, by name (the application adds it)
 """
 
-from pathlib import Path
-from typing import Annotated
-
-import typer
-
-from ..calculations.life import _CONTAMINATION, _CONTAMINATION_CLASSES  # noqa: F401 -- the help; startup test
-from . import _mounting as mo
+from ..calculations.life import _CONTAMINATION, _CONTAMINATION_CLASSES  # noqa: F401 -- startup test
 from ._common import (
-    AxialLoadOpt,
-    BallDiameter,
-    BallMaterial,
-    Balls,
     BearingFile,
-    BearingName,
     CatalogFile,
-    Clearance,
-    ContactAngle,
-    FxOpt,
-    FyOpt,
-    FzOpt,
-    InnerConformity,
-    InnerRadius,
     JsonFlag,
-    MxOpt,
-    MyOpt,
-    OilOpt,
-    OuterConformity,
-    OuterRadius,
-    PitchDiameter,
-    RadialLoadOpt,
-    TemperatureOpt,
-    Viscosity100Opt,
-    ViscosityIndexOpt,
-    ViscosityOpt,
     check_input,
     emit_json,
-    print_warnings,
+    print_document,
     run_calculation,
-    table,
 )
+from ._options import command
 
 __all__ = ["COMMANDS"]
 
-_LUBRICANT = "Lubricant"  # the panel of the shared oil options (cli._common), with the cleanliness here
-_AUTO = "Temperature auto (thermal balance)"
 _NEEDS_VISCOSITY = "needs viscosity"  # the table's cell of a result that needs the lubricant
 
 
-@mo.mounting_options
-def life(
-    fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
-    radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
-    speed: Annotated[str | None, typer.Option("--speed", "-n", help="Inner-ring speed, e.g. '3000 rpm'.")] = None,
-    viscosity: ViscosityOpt = None, oil: OilOpt = None, temperature: TemperatureOpt = None,
-    viscosity_index: ViscosityIndexOpt = None, viscosity_100: Viscosity100Opt = None,
-    contamination_factor: Annotated[float | None, typer.Option("--contamination-factor", help="e_C in [0, 1] (default 1).", rich_help_panel=_LUBRICANT)] = None,
-    contamination: Annotated[str | None, typer.Option("--contamination", help="Cleanliness of ISO 281 table 13: " + " | ".join(_CONTAMINATION) + ".", rich_help_panel=_LUBRICANT)] = None,
-    reliability: Annotated[float, typer.Option("--reliability", help="Reliability in percent, 90 to 99.95.")] = 90.0,
-    ambient: Annotated[str | None, typer.Option("--ambient", help="With --temperature auto: the ambient (default 20 degC).", rich_help_panel=_AUTO)] = None,
-    thermal_resistance: Annotated[str | None, typer.Option("--thermal-resistance", help="With --temperature auto: bearing to ambient, e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).", rich_help_panel=_AUTO)] = None,
-    lubrication: Annotated[str | None, typer.Option("--lubrication", help="With --temperature auto: the SKF model's oil-jet (default) | oil-air | grease.", rich_help_panel=_AUTO)] = None,
-    skf_constants: Annotated[str | None, typer.Option("--skf-constants", help="With --temperature auto: SKF constants R1,R2,R3,S1,S2,S3 (angular contact).", rich_help_panel=_AUTO)] = None,
-    duty_cycle: Annotated[Path | None, typer.Option("--duty-cycle", help="TOML file of \\[\\[step]] loads, speed and time share: the combined life.")] = None,
-    bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
-    balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
-    inner_groove_radius: InnerRadius = None, outer_groove_radius: OuterRadius = None,
-    inner_conformity: InnerConformity = None, outer_conformity: OuterConformity = None,
-    contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
-    json_out: JsonFlag = False,
-):
+def life(given, *, bearing_file: BearingFile = None, catalog: CatalogFile = None, json_out: JsonFlag = False):
     """Rating life (ISO 281, ISO/TS 16281): C, C0, Cu, P, L10, a_ISO, L_nm, L10r, L_nmr, s0; duty cycles.
 
     Without a lubricant (--viscosity, or --oil with --temperature) P, L10, L10r and s0 are given, and
@@ -99,18 +47,9 @@ def life(
     from ..calculations import life as calculation
     from ..errors import InputError
 
-    given = {"fx": fx, "fy": fy, "fz": fz, "mx": mx, "my": my, "radial_load": radial_load,
-             "axial_load": axial_load, "speed": speed, "viscosity": viscosity, "oil": oil,
-             "temperature": temperature, "viscosity_index": viscosity_index, "viscosity_100": viscosity_100,
-             "contamination_factor": contamination_factor, "contamination": contamination,
-             "reliability": reliability, "ambient": ambient, "thermal_resistance": thermal_resistance,
-             "lubrication": lubrication, "skf_constants": skf_constants, "bearing": bearing, "balls": balls, "ball_diameter": ball_diameter,
-             "pitch_diameter": pitch_diameter, "inner_groove_radius": inner_groove_radius,
-             "outer_groove_radius": outer_groove_radius, "inner_conformity": inner_conformity,
-             "outer_conformity": outer_conformity, "contact_angle": contact_angle,
-             "radial_clearance": radial_clearance, "ball_material": ball_material, **mo.given_options()}
     source = calculation.POSTED
-    if duty_cycle is not None:
+    duty_cycle = given.get("duty_cycle")
+    if duty_cycle is not None:  # the command line's document is a file: its text is the field
         from .._bounds import read_input_bytes
 
         try:  # a regular file of bounded size
@@ -126,11 +65,9 @@ def life(
     lubricated = bool({"viscosity_cSt", "oil"} & set(doc["inputs"]))
     if duty_cycle is not None:
         _print(f"Duty cycle of {doc['inputs']['bearing']}: {len(doc['steps'])} steps, mean speed "
-               f"{doc['mean_speed_rpm']:g} rpm",
-               {**{k: v for k, v in doc.items() if k not in ("steps", "inputs")}, "lubricated": lubricated})
+               f"{doc['mean_speed_rpm']:g} rpm", doc, lubricated)
         return
-    _print(f"Rating life of {doc['inputs']['bearing']} at {doc['inputs']['speed_rpm']:g} rpm",
-           {**doc, "lubricated": lubricated})
+    _print(f"Rating life of {doc['inputs']['bearing']} at {doc['inputs']['speed_rpm']:g} rpm", doc, lubricated)
 
 
 # The printed names of the JSON keys: the symbols of ISO 281 and ISO/TS 16281, with the unit.
@@ -162,18 +99,20 @@ _LUBRICATED = ("viscosity_mm2_s", "viscosity_ratio", "life_modification_factor",
                "modified_rating_life_h", "modified_reference_rating_life_Mrev")
 
 
-def _print(title, doc):
-    def fmt(k, v):
-        if v is None and k in _LUBRICATED and not doc["lubricated"]:
-            return _NEEDS_VISCOSITY
-        return "— (see the warnings)" if v is None else (f"{v:.6g}" if isinstance(v, float) else str(v))
-
+def _print(title, doc, lubricated):
+    """The document as one table: ISO 281's symbols (:data:`_LABELS`), each rating with its source."""
     src = doc["rating_source"]
-    rows = [[_LABELS.get(k, k), fmt(k, v) + (f"  ({src[k[:-2]]})" if k[:-2] in src else "")]
-            for k, v in doc.items() if k not in ("rating_source", "warnings", "inputs", "steps", "lubricated")]
-    table(title, ["quantity", "value"], rows, caption="--json for one JSON document (keys in the units shown)")
-    print_warnings(doc["warnings"])
+
+    def cell(k, v):
+        if v is None and k in _LUBRICATED and not lubricated:
+            text = _NEEDS_VISCOSITY
+        else:
+            text = "— (see the warnings)" if v is None else (f"{v:.6g}" if isinstance(v, float) else str(v))
+        return text + (f"  ({src[k[:-2]]})" if k[:-2] in src else "")
+
+    print_document(title, doc, label=lambda k: _LABELS.get(k, k), cell=cell, skip=("rating_source", "steps"),
+                   caption="--json for one JSON document (keys in the units shown)")
 
 
 #: The ``life`` command, as the application adds it.
-COMMANDS = {"life": life}
+COMMANDS = {"life": command("life", life)}

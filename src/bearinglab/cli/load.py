@@ -15,35 +15,13 @@ COMMANDS   the ``load-distribution`` and ``bearing-set`` commands, by name (the 
 """
 
 import math
-from pathlib import Path
-from typing import Annotated
 
-import typer
-
-from . import _mounting as mo
 from ._common import (
     FIGURE_SUFFIXES,
-    AxialLoadOpt,
-    BallDiameter,
-    BallMaterial,
-    Balls,
     BearingFile,
-    BearingName,
     CatalogFile,
-    Clearance,
-    ContactAngle,
-    FxOpt,
-    FyOpt,
-    FzOpt,
-    InnerConformity,
-    InnerRadius,
+    FileOption,
     JsonFlag,
-    MxOpt,
-    MyOpt,
-    OuterConformity,
-    OuterRadius,
-    PitchDiameter,
-    RadialLoadOpt,
     check_output,
     console,
     emit_json,
@@ -52,32 +30,17 @@ from ._common import (
     run_calculation,
     table,
 )
+from ._options import command
 
 __all__ = ["COMMANDS"]
 
-SpeedOpt = Annotated[str, typer.Option("--speed", "-n", help="Inner-ring speed, e.g. '6000 rpm' (a list '0, 6000, 12000 rpm' with --ross).")]
-FirstBallOpt = Annotated[str, typer.Option("--first-ball-angle", help="Azimuth of ball 0 from +x, e.g. '0 deg'.")]
-StiffnessAtOpt = Annotated[str, typer.Option("--stiffness-at", help="operating (Hertz constants at each contact's angle; default) | free (at α0, ISO/TS 16281).")]
-PlotOpt = Annotated[Path | None, typer.Option("--plot", help="Polar plot of the ball loads into this PNG/PDF/SVG file.")]
-_HELD = "Prescribed displacements (instead of the load on that freedom)"
-DxOpt = Annotated[str | None, typer.Option("--dx", help="Hold delta_x at this value, e.g. '10 um' (instead of --fx).", rich_help_panel=_HELD)]
-DyOpt = Annotated[str | None, typer.Option("--dy", help="Hold delta_y, e.g. '0 um' (instead of --fy).", rich_help_panel=_HELD)]
-DzOpt = Annotated[str | None, typer.Option("--dz", help="Hold delta_z, from the concentric position (half the axial play included), e.g. '700 um' (instead of --fz).", rich_help_panel=_HELD)]
-TiltXOpt = Annotated[str | None, typer.Option("--tilt-x", help="Hold theta_x, e.g. '0 mrad' (instead of --mx).", rich_help_panel=_HELD)]
-TiltYOpt = Annotated[str | None, typer.Option("--tilt-y", help="Hold theta_y, e.g. '0 mrad' (instead of --my); --tilt-x/--tilt-y '0 mrad' hold the ring square.", rich_help_panel=_HELD)]
-@mo.mounting_options
+PlotFile = FileOption("--plot", "Polar plot of the ball loads into this PNG/PDF/SVG file.")
+
+
 def load_distribution(
-    fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
-    radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
-    dx: DxOpt = None, dy: DyOpt = None, dz: DzOpt = None, tilt_x: TiltXOpt = None, tilt_y: TiltYOpt = None,
-    speed: SpeedOpt = "0 rpm", first_ball_angle: FirstBallOpt = "0 deg", stiffness_at: StiffnessAtOpt = "operating",
-    bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
-    balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
-    inner_groove_radius: InnerRadius = None, outer_groove_radius: OuterRadius = None,
-    inner_conformity: InnerConformity = None, outer_conformity: OuterConformity = None,
-    contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
-    plot: PlotOpt = None,
-    ross: Annotated[Path | None, typer.Option("--ross", help="Write the ROSS BearingElement coefficients (JSON, SI) over the --speed list to this .json file.")] = None,
+    given, *, bearing_file: BearingFile = None, catalog: CatalogFile = None, plot: PlotFile = None,
+    ross: FileOption("--ross", "Write the ROSS BearingElement coefficients (JSON, SI) over the --speed list "
+                     "(e.g. '0, 6000, 12000 rpm') to this .json file.") = None,
     json_out: JsonFlag = False,
 ):
     """Ball bearing under combined load (5-DOF): displacement, ball loads, contact angles, pressures, stiffness."""
@@ -91,20 +54,13 @@ def load_distribution(
         check_output(plot, "plot", FIGURE_SUFFIXES, inputs=(bearing_file, catalog))
     if ross is not None:
         check_output(ross, "ross", (".json",), inputs=(bearing_file, catalog))
-    given = {"fx": fx, "fy": fy, "fz": fz, "mx": mx, "my": my, "radial_load": radial_load,
-             "axial_load": axial_load, "dx": dx, "dy": dy, "dz": dz, "tilt_x": tilt_x, "tilt_y": tilt_y,
-             "speed": speed, "first_ball_angle": first_ball_angle, "stiffness_at": stiffness_at,
-             "bearing": bearing, "balls": balls, "ball_diameter": ball_diameter, "pitch_diameter": pitch_diameter,
-             "inner_groove_radius": inner_groove_radius, "outer_groove_radius": outer_groove_radius,
-             "inner_conformity": inner_conformity, "outer_conformity": outer_conformity,
-             "contact_angle": contact_angle, "radial_clearance": radial_clearance, "ball_material": ball_material,
-             **mo.given_options()}
     doc = run_calculation("load-distribution", given, calculation.document, catalog=catalog,
                           bearing_file=bearing_file, speeds=ross is not None)
     docs = doc if isinstance(doc, list) else [doc]
     if ross is not None:  # the speeds the document was computed at (checked there)
         stiffness = np.array([d["stiffness_matrix"] for d in docs], dtype=float)
-        rotordynamics.write_coefficients(rotordynamics.from_stiffness(stiffness, parse_speeds(speed)), ross)
+        speeds = parse_speeds(given["speed"])  # the list the documents were computed at
+        rotordynamics.write_coefficients(rotordynamics.from_stiffness(stiffness, speeds), ross)
     if plot is not None:
         plots.save(calculation.figure(docs[0]), plot)
     if json_out:
@@ -175,27 +131,7 @@ def _print_written(*paths):
             console.print(f"wrote {path}", highlight=False)
 
 
-def bearing_set(
-    bearing: Annotated[list[str], typer.Option("--bearing", "-b", help="Catalog name; once for every position, or once per bearing from -z to +z.", rich_help_panel="Bearing")],
-    catalog: CatalogFile = None,
-    arrangement: Annotated[str, typer.Option("--arrangement", help="DB (back-to-back) | DF (face-to-face) | DT (tandem).")] = "DB",
-    spacing: Annotated[str | None, typer.Option("--spacing", help="Distance between bearing centres, e.g. '100 mm'; default: side by side, one ring width B (needs the bearings' width).")] = None,
-    preload: Annotated[str | None, typer.Option("--preload", help="Axial preload force at rest, e.g. '500 N'.")] = None,
-    preload_offset: Annotated[str | None, typer.Option("--preload-offset", help="Axial interference from first contact (zero preload) instead, e.g. '5 um'; negative is axial play.")] = None,
-    fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
-    radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
-    speed: SpeedOpt = "0 rpm", first_ball_angle: FirstBallOpt = "0 deg", stiffness_at: StiffnessAtOpt = "operating",
-    plot: PlotOpt = None,
-    json_out: JsonFlag = False,
-    shaft_fit: mo.ShaftFitOpt = None, housing_fit: mo.HousingFitOpt = None,
-    shaft_interference: mo.ShaftInterferenceOpt = None, housing_interference: mo.HousingInterferenceOpt = None,
-    shaft_bore: mo.ShaftBoreOpt = None, housing_outside_diameter: mo.HousingOutsideDiameterOpt = None,
-    shaft_material: mo.ShaftMaterialOpt = None, housing_material: mo.HousingMaterialOpt = None,
-    tolerance_class: mo.ToleranceClassOpt = None,
-    inner_ring_temperature: mo.InnerTempOpt = None, outer_ring_temperature: mo.OuterTempOpt = None,
-    ball_temperature: mo.BallTempOpt = None, shaft_temperature: mo.ShaftTempOpt = None,
-    housing_temperature: mo.HousingTempOpt = None,
-):
+def bearing_set(given, *, catalog: CatalogFile = None, plot: PlotFile = None, json_out: JsonFlag = False):
     """Preloaded bearing set (DB/DF/DT) on a rigid shaft: shaft displacement, each bearing's ball loads, set stiffness."""
     import numpy as np
 
@@ -204,17 +140,6 @@ def bearing_set(
 
     if plot is not None:
         check_output(plot, "plot", FIGURE_SUFFIXES, inputs=(catalog,))
-    given = {"bearing": bearing, "arrangement": arrangement, "spacing": spacing, "preload": preload,
-             "preload_offset": preload_offset, "fx": fx, "fy": fy, "fz": fz, "mx": mx, "my": my,
-             "radial_load": radial_load, "axial_load": axial_load, "speed": speed,
-             "first_ball_angle": first_ball_angle, "stiffness_at": stiffness_at, "shaft_fit": shaft_fit,
-             "housing_fit": housing_fit, "shaft_interference": shaft_interference,
-             "housing_interference": housing_interference, "shaft_bore": shaft_bore,
-             "housing_outside_diameter": housing_outside_diameter, "shaft_material": shaft_material,
-             "housing_material": housing_material, "tolerance_class": tolerance_class,
-             "inner_ring_temperature": inner_ring_temperature, "outer_ring_temperature": outer_ring_temperature,
-             "ball_temperature": ball_temperature, "shaft_temperature": shaft_temperature,
-             "housing_temperature": housing_temperature}
     doc = run_calculation("bearing-set", given, calculation.document, catalog=catalog)
     if plot is not None:
         plots.save(calculation.figure(doc), plot)
@@ -238,4 +163,5 @@ def bearing_set(
 
 
 #: The commands of this module, as the application adds them.
-COMMANDS = {"load-distribution": load_distribution, "bearing-set": bearing_set}
+COMMANDS = {"load-distribution": command("load-distribution", load_distribution),
+            "bearing-set": command("bearing-set", bearing_set)}

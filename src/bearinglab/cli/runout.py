@@ -18,9 +18,10 @@ import typer
 from .. import _bounds
 from ..errors import InputError
 from ._common import (
-    BearingName,
     CatalogFile,
+    ChunkSizeOpt,
     ExecutorOpt,
+    FileOption,
     JsonFlag,
     WorkersOpt,
     check_not_input,
@@ -29,10 +30,10 @@ from ._common import (
     console,
     emit_json,
     execution,
-    fields_given,
     print_warnings,
     table,
 )
+from ._options import command
 
 __all__ = ["COMMANDS"]
 
@@ -41,36 +42,9 @@ UM = 1e-6
 # model; tests/cli/test_cli_startup.py checks that the two agree)
 _METRICS = ("radial_ptp_x", "radial_ptp_y", "radial_ptp_max", "axial_ptp", "dz_mean")
 
-
-GeometryFile = Annotated[
-    Path | None,
-    typer.Option(
-        "--geometry",
-        "-g",
-        help="TOML file with a 'geometry' table (or a bearing file); default: the 'geometry' "
-        "table of the errors file.",
-        rich_help_panel="Bearing",
-    ),
-]
-FirstBall = Annotated[
-    str | None,
-    typer.Option(
-        "--first-ball-angle",
-        help="Azimuth of ball 1 at psi = 0, e.g. '0 deg' (overrides the geometry).",
-        rich_help_panel="Bearing",
-    ),
-]
-CageRatio = Annotated[
-    float | None,
-    typer.Option(
-        "--cage-ratio",
-        help="Cage speed / inner-ring speed kappa (default (1 - gamma)/2).",
-        rich_help_panel="Rotation",
-    ),
-]
-PlotDir = Annotated[
-    Path | None, typer.Option("--plot", help="Write the figures (PNG) into this directory.")
-]
+GeometryFile = FileOption("--geometry", "TOML file with a 'geometry' table (or a bearing file); default: the "
+                          "'geometry' table of the errors file.", "Bearing", "-g")
+PlotDir = FileOption("--plot", "Write the figures (PNG) into this directory.")
 
 
 def _runout_figures():
@@ -175,58 +149,10 @@ runout_app = typer.Typer(
 )
 
 
-@runout_app.callback(invoke_without_command=True)
 def runout_command(
-    ctx: typer.Context,
-    errors: Annotated[
-        Path | None,
-        typer.Option("--errors", "-e", help="TOML error file (examples/runout/README.md)."),
-    ] = None,
-    geometry: GeometryFile = None,
-    bearing: BearingName = None,
-    catalog: CatalogFile = None,
-    first_ball_angle: FirstBall = None,
-    angle: Annotated[
-        str | None,
-        typer.Option(
-            "--angle",
-            help="One rotation angle psi, e.g. '90' or '90 deg' (default 0).",
-            rich_help_panel="Rotation",
-        ),
-    ] = None,
-    revolutions: Annotated[
-        int | None,
-        typer.Option(
-            "--revolutions",
-            help="Rotation sequence over N inner-ring revolutions.",
-            rich_help_panel="Rotation",
-        ),
-    ] = None,
-    steps_per_rev: Annotated[
-        int | None,
-        typer.Option(
-            "--steps-per-rev",
-            help="Positions per revolution of the sequence (default 360).",
-            rich_help_panel="Rotation",
-        ),
-    ] = None,
-    start_angle: Annotated[
-        str,
-        typer.Option(
-            "--start-angle",
-            help="psi of the first position of the sequence.",
-            rich_help_panel="Rotation",
-        ),
-    ] = "0 deg",
-    cage_ratio: CageRatio = None,
-    refine: Annotated[
-        bool, typer.Option("--refine", help="Refine the contact points (a second pass at the contact points found).")
-    ] = False,
-    json_out: JsonFlag = False,
-    plot: PlotDir = None,
-    csv_out: Annotated[
-        Path | None, typer.Option("--csv", help="Write the trajectory (sequence) as CSV.")
-    ] = None,
+    given, *, ctx: typer.Context, geometry: GeometryFile = None, catalog: CatalogFile = None,
+    json_out: JsonFlag = False, plot: PlotDir = None,
+    csv_out: FileOption("--csv", "Write the trajectory (sequence) as CSV.") = None,
 ):
     """Inner-ring displacement at one angle, or the trajectory and runout over revolutions.
 
@@ -240,6 +166,8 @@ def runout_command(
     if ctx.invoked_subcommand is not None:
         _reject_options_before(ctx)
         return
+    errors, revolutions, steps_per_rev = (given.get(k) for k in ("errors", "revolutions", "steps_per_rev"))
+    cage_ratio = given.get("cage_ratio")
     if errors is None:
         raise InputError(
             "errors: give the error file with --errors FILE (see examples/runout/README.md)"
@@ -259,7 +187,6 @@ def runout_command(
                                    360 if steps_per_rev is None else steps_per_rev, cage_ratio)
     else:
         calculation.check_sequence(1, 360, cage_ratio)
-    given = fields_given("runout", locals())
     for key in ("angle", "start_angle", "first_ball_angle"):  # a bare number is in degrees here
         if key in given and _is_number(given[key]):
             given[key] = f"{given[key]} deg"
@@ -345,56 +272,18 @@ def _print_sequence(info, t, lines, revs, steps, refine):
             console.print(f"{key}: {info[key] if key == 'csv' else ', '.join(info[key])}")
 
 
-@runout_app.command("monte-carlo")
 def monte_carlo_command(
-    geometry: GeometryFile = None,
-    bearing: BearingName = None,
-    catalog: CatalogFile = None,
-    ball_grade: Annotated[
-        str,
-        typer.Option("--ball-grade", help="ISO 3290 grade: G3, G5, G10, G16, G20, G24, G28, G40."),
-    ] = "G5",
-    ring_class: Annotated[
-        str, typer.Option("--ring-class", help="Ring-class preset: P5, P4, P2.")
-    ] = "P4",
-    samples: Annotated[int, typer.Option("--samples", help="Number of random bearings.")] = 200,
-    seed: Annotated[
-        int, typer.Option("--seed", help="Root seed (results do not depend on chunking).")
-    ] = 0,
-    steps_per_rev: Annotated[
-        int, typer.Option("--steps-per-rev", help="Positions per revolution.")
-    ] = 180,
-    revolutions: Annotated[int, typer.Option("--revolutions", help="Revolutions per sample.")] = 2,
-    max_order: Annotated[
-        int, typer.Option("--max-order", help="Highest waviness order K_max.")
-    ] = 15,
-    cage_ratio: CageRatio = None,
-    chunk_size: Annotated[int, typer.Option("--chunk-size", help="Samples per batch (task).", rich_help_panel="Execution")] = 100,
-    executor: ExecutorOpt = None,
-    workers: WorkersOpt = None,
-    samples_csv: Annotated[
-        Path | None, typer.Option("--samples-csv", help="Write the per-sample metrics as CSV.")
-    ] = None,
-    write_worst: Annotated[
-        int | None,
-        typer.Option(
-            "--write-worst",
-            help="Write the error files of the N worst samples (by --worst-by) into --worst-dir; "
-            "the runout command re-runs each exactly (see the file's description).",
-        ),
-    ] = None,
-    worst_by: Annotated[
-        str,
-        typer.Option("--worst-by", help="Metric ranking --write-worst: " + ", ".join(_METRICS)),
-    ] = "radial_ptp_max",
-    worst_dir: Annotated[
-        Path | None,
-        typer.Option("--worst-dir", help="Directory of the --write-worst files (default: .)."),
-    ] = None,
-    progress: Annotated[
-        bool,
-        typer.Option("--progress/--no-progress", help="Progress bar on stderr (terminals only)."),
-    ] = True,
+    given, *, geometry: GeometryFile = None, catalog: CatalogFile = None,
+    chunk_size: ChunkSizeOpt = 100, executor: ExecutorOpt = None, workers: WorkersOpt = None,
+    samples_csv: FileOption("--samples-csv", "Write the per-sample metrics as CSV.") = None,
+    write_worst: Annotated[int | None, typer.Option(
+        "--write-worst", help="Write the error files of the N worst samples (by --worst-by) into --worst-dir; "
+        "the runout command re-runs each exactly (see the file's description).")] = None,
+    worst_by: Annotated[str, typer.Option(
+        "--worst-by", help="Metric ranking --write-worst: " + ", ".join(_METRICS))] = "radial_ptp_max",
+    worst_dir: FileOption("--worst-dir", "Directory of the --write-worst files (default: .).") = None,
+    progress: Annotated[bool, typer.Option(
+        "--progress/--no-progress", help="Progress bar on stderr (terminals only).")] = True,
     json_out: JsonFlag = False,
     plot: PlotDir = None,
 ):
@@ -403,7 +292,9 @@ def monte_carlo_command(
     from ..calculations import parse
     from ..calculations import runout as calculation
 
-    if geometry is None and bearing is None:
+    samples, seed, revolutions, steps_per_rev, max_order = (
+        given[k] for k in ("samples", "seed", "revolutions", "steps_per_rev", "max_order"))
+    if geometry is None and given.get("bearing") is None:
         raise InputError("geometry: give --geometry FILE or --bearing NAME")
     if samples_csv is not None:
         check_output(samples_csv, "samples-csv", (".csv",), inputs=(geometry, catalog))
@@ -418,9 +309,8 @@ def monte_carlo_command(
             raise InputError(f"worst-dir: {str(worst_dir)!r} is a file; give a directory")
         raise InputError(f"worst-dir: directory {str(worst_dir)!r} does not exist (it is never created; "
                          f"create it first)")
-    calculation.check_study(samples, steps_per_rev, revolutions, max_order, cage_ratio)  # the model's words
-    parsed = parse("runout-monte-carlo", fields_given("runout-monte-carlo", locals()),
-                   limit=_bounds.MAX_SAMPLES)
+    calculation.check_study(samples, steps_per_rev, revolutions, max_order, given.get("cage_ratio"))  # the model's words
+    parsed = parse("runout-monte-carlo", given, limit=_bounds.MAX_SAMPLES)
     # rich for serial, dask's progress bar on a cluster; none off a terminal
     with execution("Monte Carlo", executor, workers, chunk_size, progress=progress) as ex:
         info, r, g, grade, rings = calculation.compute_monte_carlo(parsed, geometry_file=geometry,
@@ -505,6 +395,10 @@ def _check_write_worst(count, metric, directory):
     if directory is not None and count is None:
         raise InputError("worst-dir: give --write-worst N too (the number of samples to write)")
 
+
+# the group's callback: no option is required, so that `runout monte-carlo` runs without --errors
+runout_app.callback(invoke_without_command=True)(command("runout", runout_command, required=False))
+runout_app.command("monte-carlo")(command("runout-monte-carlo", monte_carlo_command))
 
 #: The ``runout`` command group (with ``monte-carlo``), as the application adds it.
 COMMANDS = {"runout": runout_app}

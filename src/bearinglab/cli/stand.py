@@ -5,56 +5,30 @@ Commands
 COMMANDS   the ``axial-angle`` and ``stand-load`` commands, by name (the application adds them)
 """
 
-from typing import Annotated
-
-import typer
-
 from ._common import (
-    BallDiameter,
-    BallMaterial,
-    Balls,
     BearingFile,
-    BearingName,
     CatalogFile,
-    Clearance,
-    ContactAngle,
-    InnerConformity,
-    InnerRadius,
     JsonFlag,
-    OuterConformity,
-    OuterRadius,
-    PitchDiameter,
     console,
     emit_json,
     print_warnings,
     table,
 )
+from ._options import command
 
 __all__ = ["COMMANDS"]
 
 
-def axial_angle(
-    axial_load: Annotated[str, typer.Option("--axial-load", "-F", help="Axial load: '2 kgf', '19.6 N', or a list/range '1kgf:5kgf:1kgf'.")],
-    bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
-    balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
-    inner_groove_radius: InnerRadius = None, outer_groove_radius: OuterRadius = None,
-    inner_conformity: InnerConformity = None, outer_conformity: OuterConformity = None,
-    contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
-    hertz: Annotated[str, typer.Option("--hertz", help="exact (default) | table (the bearing's tabulated 2K/(πμ)).")] = "exact",
-    elastic_constant: Annotated[str, typer.Option("--elastic-constant", help="materials (default: from the bearing's E, ν) | paper (the source's 0.592e-4 (cm²/kgf)^(2/3)).")] = "materials",
-    legacy: Annotated[bool, typer.Option("--legacy", help="Reproduce the paper's printed rounding (π = 3.14, F cut to 3 decimals).")] = False,
-    x0: Annotated[float | None, typer.Option("--x0", help="Start of the iteration table \\[rad] (the paper printed 0.0433985).")] = None,
-    rows: Annotated[int | None, typer.Option("--rows", help="Rows of the iteration table (default: to convergence).")] = None,
-    json_out: JsonFlag = False,
-):
+def axial_angle(given, *, bearing_file: BearingFile = None, catalog: CatalogFile = None,
+                json_out: JsonFlag = False):
     """Operating contact angle under axial load (the test-stand method): C*, x0, Newton iterations, displacement."""
-    options = dict(locals())  # the options as typed, by name: the calculation's fields among them
     import numpy as np
 
     from ..calculations import _reading as _inputs
     from ..calculations import stand as calculation
-    out = calculation.document(_inputs.request("axial-angle", options), bearing_file=bearing_file,
+    out = calculation.document(_inputs.request("axial-angle", given), bearing_file=bearing_file,
                                catalog=catalog)
+    hertz, legacy = given["hertz"], given["legacy"]
     if json_out:
         emit_json(out)
         return
@@ -94,20 +68,12 @@ def _print_single(out, hertz, legacy):
                   f"ball load {out['ball_load_N']:.4g} N ({out['ball_load_kgf']:.4g} kgf)", highlight=False)
 
 
-def stand_load(
-    speed: Annotated[str, typer.Option("--speed", "-n", help="Inner-ring speed: '3000 rpm', or a list '1000,3000,10000rpm'.")],
-    bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
-    balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,
-    inner_groove_radius: InnerRadius = None, outer_groove_radius: OuterRadius = None,
-    inner_conformity: InnerConformity = None, outer_conformity: OuterConformity = None,
-    contact_angle: ContactAngle = None, radial_clearance: Clearance = None, ball_material: BallMaterial = None,
-    json_out: JsonFlag = False,
-):
+def stand_load(given, *, bearing_file: BearingFile = None, catalog: CatalogFile = None,
+               json_out: JsonFlag = False):
     """Minimum axial load against gyroscopic slip on a test stand, and the +20 % maximum (the test-stand method)."""
-    options = dict(locals())  # the options as typed, by name: the calculation's fields among them
     from ..calculations import _reading as _inputs
     from ..calculations import stand as calculation
-    out = calculation.document(_inputs.request("stand-load", options), bearing_file=bearing_file,
+    out = calculation.document(_inputs.request("stand-load", given), bearing_file=bearing_file,
                                catalog=catalog)
     if json_out:
         emit_json(out)
@@ -121,4 +87,4 @@ def stand_load(
 
 
 #: The ``axial-angle`` and ``stand-load`` commands, as the application adds them.
-COMMANDS = {"axial-angle": axial_angle, "stand-load": stand_load}
+COMMANDS = {"axial-angle": command("axial-angle", axial_angle), "stand-load": command("stand-load", stand_load)}

@@ -11,61 +11,28 @@ Commands
 COMMANDS   the ``temperature`` command, by name (the application adds it)
 """
 
-from typing import Annotated
-
-import typer
-
 from ._common import (
-    AxialLoadOpt,
     BearingFile,
-    BearingName,
     CatalogFile,
     JsonFlag,
-    OilOpt,
-    RadialLoadOpt,
-    Viscosity100Opt,
-    ViscosityIndexOpt,
     console,
     emit_json,
-    fields_given,
     print_warnings,
     table,
 )
+from ._options import command
 
 __all__ = ["COMMANDS"]
 
-_HEAT = "Heat balance"
-AmbientOpt = Annotated[str, typer.Option("--ambient", help="Ambient temperature, e.g. '20 degC'.", rich_help_panel=_HEAT)]
-ResistanceOpt = Annotated[str | None, typer.Option("--thermal-resistance", help="Bearing to ambient, e.g. '0.5 K/W' (default: ISO 15312's reference heat flow of the bearing).", rich_help_panel=_HEAT)]
-OilFlowOpt = Annotated[str | None, typer.Option("--oil-flow", help="Oil jet or circulation flow through the bearing, e.g. '0.5 l/min'.", rich_help_panel=_HEAT)]
-OilInletOpt = Annotated[str | None, typer.Option("--oil-inlet-temperature", help="Of the oil flow (default: the ambient), e.g. '40 degC'.", rich_help_panel=_HEAT)]
-HeatCapacityOpt = Annotated[str | None, typer.Option("--oil-heat-capacity", help="c_p of the oil (default 1950 J/(kg*K), a mineral oil: an estimate).", rich_help_panel=_HEAT)]
-OilDensityOpt = Annotated[str | None, typer.Option("--density", help="Oil density (default 870 kg/m^3, a mineral oil: an estimate).", rich_help_panel=_HEAT)]
-MaxTemperatureOpt = Annotated[str, typer.Option("--max-temperature", help="Safe limit: no steady state below it is thermal runaway, e.g. '150 degC'.", rich_help_panel=_HEAT)]
-LubricationOpt = Annotated[str, typer.Option("--lubrication", help="SKF model: oil-jet (default) | oil-air | grease (oil bath: refused, its drag loss needs SKF's V_M chart).", rich_help_panel=_HEAT)]
-ReferenceSpeedOpt = Annotated[bool, typer.Option("--reference-speed", help="Also ISO 15312's thermal reference speed of the bearing by the SKF model (JSON: thermal_reference_speed_rpm).", rich_help_panel=_HEAT)]
-ConstantsOpt = Annotated[str | None, typer.Option("--skf-constants", help="SKF geometry constants R1,R2,R3,S1,S2,S3 in place of SKF's tables (angular contact other than 40 deg needs them), e.g. '5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12'.", rich_help_panel=_HEAT)]
 
-
-def temperature(
-    radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
-    speed: Annotated[str | None, typer.Option("--speed", "-n", help="Inner-ring speed, e.g. '6000 rpm' (a list for several cases).")] = None,
-    oil: OilOpt = None, viscosity_index: ViscosityIndexOpt = None, viscosity_100: Viscosity100Opt = None,
-    lubrication: LubricationOpt = "oil-jet", skf_constants: ConstantsOpt = None,
-    ambient: AmbientOpt = "20 degC", thermal_resistance: ResistanceOpt = None, oil_flow: OilFlowOpt = None,
-    oil_inlet_temperature: OilInletOpt = None, oil_heat_capacity: HeatCapacityOpt = None,
-    density_text: OilDensityOpt = None, max_temperature: MaxTemperatureOpt = "150 degC",
-    reference_speed: ReferenceSpeedOpt = False,
-    bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
-    json_out: JsonFlag = False,
-):
+def temperature(given, *, bearing_file: BearingFile = None, catalog: CatalogFile = None,
+                json_out: JsonFlag = False):
     """Steady bearing temperature: SKF friction power at nu(T) = heat carried away; nu, kappa, runaway."""
     from ..calculations import parse
     from ..calculations import temperature as calculation
 
     # typer has read the options; the calculation checks each value by the command line's own rules
     # (its messages), not by the fields' ranges the web checks first
-    given = fields_given("temperature", locals(), density="density_text")
     result = calculation.document(parse("temperature", given, check=False),
                                   bearing_file=bearing_file, catalog=catalog)
     if json_out:
@@ -91,4 +58,4 @@ def _f(x, spec):
 
 
 #: The ``temperature`` command, as the application adds it.
-COMMANDS = {"temperature": temperature}
+COMMANDS = {"temperature": command("temperature", temperature)}

@@ -326,9 +326,9 @@ def web_message(message, endpoint):
     str
     """
     _deprecated("web_message", "RequestError.worded")
-    from ..calculations.documents import _failure
+    from ..calculations._failures import run_failure
 
-    return web_error(_failure(CALCULATIONS[ENDPOINTS[endpoint]], message, "input"))[1]["detail"]
+    return web_error(run_failure(message, CALCULATIONS[ENDPOINTS[endpoint]]))[1]["detail"]
 
 
 def parameter_of(message, known=()):

@@ -737,41 +737,6 @@ def percentile_rows(document):
     return rows
 
 
-_UNITS = (
-    ("_cm2_per_kgf_2_3", "cm²/kgf^⅔"),
-    ("_per_GPa", "1/GPa"),
-    ("_mm2_s", "mm²/s"),
-    ("_m_s", "m/s"),
-    ("_mPas", "mPa·s"),
-    ("_kg_m3", "kg/m³"),
-    ("_degC", "°C"),
-    ("_N_per_um", "N/µm"),
-    ("_per_mm", "1/mm"),
-    ("_Nmm", "N·mm"),
-    ("_Nm", "N·m"),
-    ("_kN", "kN"),
-    ("_N", "N"),
-    ("_deg", "°"),
-    ("_dms", "° ′ ″"),
-    ("_mrad", "mrad"),
-    ("_rad", "rad"),
-    ("_rpm", "rpm"),
-    ("_hz", "Hz"),
-    ("_mm", "mm"),
-    ("_um", "µm"),
-    ("_MPa", "MPa"),
-    ("_GPa", "GPa"),
-    ("_Mrev", "10⁶ rev"),
-    ("_h", "h"),
-    ("_s", "s"),
-    ("_W", "W"),
-    ("_kgf", "kgf"),
-    ("_cSt", "cSt"),
-    ("_percent", "%"),
-    ("_order", "× shaft"),
-)
-
-
 def quantity(key):
     """A result key -> (label, unit): ``contact_angle_inner_deg`` -> ``("contact angle inner", "°")``.
 
@@ -784,10 +749,9 @@ def quantity(key):
     -------
     tuple of str
     """
-    for suffix, unit in _UNITS:
-        if key.endswith(suffix) and len(key) > len(suffix):
-            return key[: -len(suffix)].replace("_", " "), unit
-    return key.replace("_", " "), ""
+    from ..tables import quantity as label_and_unit  # the one table of unit suffixes
+
+    return label_and_unit(key)
 
 
 #: Significant digits the page shows (the JSON API keeps every digit).
