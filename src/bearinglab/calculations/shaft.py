@@ -21,7 +21,7 @@ import warnings
 import numpy as np
 
 from ..errors import InputError
-from ._request import reading
+from ._failures import failures
 
 __all__ = ["document", "figure"]
 
@@ -42,7 +42,7 @@ def _value(parsed, name, kind):
     v = parsed.values.get(name, parsed.given[name])
     if not isinstance(v, str):
         return v
-    with reading(parsed, name):
+    with failures(parsed, name):
         if kind == "int":
             try:
                 return int(v.strip())
@@ -95,12 +95,12 @@ def document(parsed, *, catalog=None):
     from .. import shaft
 
     text = parsed.values.get("model", parsed.given.get("model"))
-    with reading(parsed, "model"):
+    with failures(parsed, "model"):
         doc = shaft.from_text(text, catalog=catalog)
     system = doc.system
     speed = _value(parsed, "speed", "speed")
     elements = _value(parsed, "elements", "int")
-    with reading(parsed, "speed" if speed is not None else "elements"):
+    with failures(parsed, "speed" if speed is not None else "elements"):
         if speed is not None:
             system = system.replace(speed=float(speed))
         if elements is not None:
@@ -108,10 +108,10 @@ def document(parsed, *, catalog=None):
     at = _value(parsed, "stiffness_at", "length")
     count = _value(parsed, "modes", "int") or 0
     speeds = _value(parsed, "campbell", "speeds")
-    with reading(parsed, "stiffness_at" if at is not None else "model"):
+    with failures(parsed, "stiffness_at" if at is not None else "model"):
         state = shaft.solve(system, extra=() if at is None else (float(at),))
     w = float(system.speed)
-    with reading(parsed, "model"):
+    with failures(parsed, "model"):
         states = shaft.bearing_states(state, life=w != 0, **doc.lubricant)
     notes = list(state.warnings)
     supports, lives, slopes = _supports(state, states, w, notes)
@@ -121,7 +121,7 @@ def document(parsed, *, catalog=None):
     out["deflection"] = _deflection(state)
     out["stiffness_at"] = None
     if at is not None:
-        with reading(parsed, "stiffness_at"):
+        with failures(parsed, "stiffness_at"):
             st = shaft.stiffness_at(state, float(at))
         k = st.stiffness[0]
         out["stiffness_at"] = {"position_mm": _num(at, _MM), "stiffness_x_N_per_um": _num(k[0] * _UM),
@@ -130,7 +130,7 @@ def document(parsed, *, catalog=None):
                                "tilt_stiffness_y_Nm_per_mrad": _num(k[4] * _MRAD)}
     out["natural_frequencies_Hz"], out["modes"] = None, None
     if count:
-        with reading(parsed, "modes"):
+        with failures(parsed, "modes"):
             m = shaft.natural_modes(state, int(count))
         out["natural_frequencies_Hz"] = [_num(f) for f in m.frequency]
         out["modes"] = [{"frequency_Hz": _num(f), "whirl": m.whirl[i] or None,
@@ -145,14 +145,14 @@ def document(parsed, *, catalog=None):
                          "elements; give elements)")
     out["campbell"] = None
     if speeds is not None:
-        with reading(parsed, "campbell"):
+        with failures(parsed, "campbell"):
             c = shaft.campbell(system, speeds, max(int(count), 4))
         out["campbell"] = {"speed_rpm": [_num(x, _RPM) for x in c.speed],
                            "frequency_Hz": [[_num(f) for f in row] for row in c.frequency],
                            "whirl": [list(x) for x in c.whirl]}
     out["spectrum"] = None
     if doc.time_share is not None:
-        with reading(parsed, "model"):
+        with failures(parsed, "model"):
             sp = shaft.load_spectrum(system, doc.case_speed if speed is None else np.full(len(doc.time_share), w),
                                      doc.case_factor, doc.time_share, **doc.lubricant)
         out["spectrum"] = _spectrum(sp, doc.case_names, slopes)
