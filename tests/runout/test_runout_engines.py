@@ -312,3 +312,23 @@ def test_too_many_ball_positions_are_refused_before_allocation(g):
         R.initial_displacement(np.zeros(limit + 1), big, e)
     with pytest.raises(InputError, match="ball-positions"):
         R.rotation_sequence(big, e, revolutions=100, steps_per_revolution=3600)
+
+
+# ------------------------------------------------------------------------------ the benchmark's goal row
+def test_the_scaling_benchmark_writes_its_goal_row(load_bench, tmp_path, monkeypatch):
+    """bench/scaling.py (run by make bench) replaces its row of the goals table, or adds it at the end of
+    the table, and leaves every other line as it was."""
+    monkeypatch.setattr(sys, "argv", ["scaling.py", "10"])
+    bench = load_bench("scaling")
+    md = tmp_path / "BENCHMARKS.md"
+    head = ["# B", "", "## Where the goals stand", "", "| goal (issue) | measured | met |", "|---|---|---|",
+            "| other goal (1) | 5 | yes |"]
+    md.write_text("\n".join([*head, "", "## Next", "text"]) + "\n")
+    row = bench.goal_row(2345.6, 1200.0, 0.977, (1.25, 1.5), 100000, "2026-11-29 03:00 UTC")
+    assert row.startswith(bench.GOAL_ROW) and row.endswith("| yes |") and "load average (1 min) 1.25" in row
+    bench.write_goal_row(row, md)
+    assert md.read_text().splitlines() == [*head, row, "", "## Next", "text"]
+    slower = bench.goal_row(1500.0, 800.0, 0.94, (3.0, 3.5), 100000, "2026-11-29 04:00 UTC")
+    assert slower.endswith("| no |")
+    bench.write_goal_row(slower, md)
+    assert md.read_text().splitlines() == [*head, slower, "", "## Next", "text"]

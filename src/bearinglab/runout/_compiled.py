@@ -11,20 +11,25 @@ can compile it, and run in parallel over positions or Monte Carlo samples:
 - the generalized errors (4.1) of a rotation sequence, first approximation: the Fourier series of the
   outer ring at theta^i = alpha^i + kappa psi and of the inner ring at theta^i - psi, by Horner's rule in
   z = exp(i alpha^i) exp(i kappa psi) (one complex product per ball and position instead of a sine and a
-  cosine), vectorized over the balls.
+  cosine), vectorized over the balls;
+- the runout metric radial_ptp_max of a trajectory: the diameter of its points.
 
 A position's or a sample's result depends on its own data only (not on the batch, the chunk or the thread
-that computes it). Nothing here is public: :mod:`bearinglab.runout.contact` and
-:mod:`bearinglab.runout.tolerances` call :func:`solve` and :func:`sequences` when their ``engine`` allows
-it. numba is imported by this module only; without it the functions run as plain Python.
+that computes it). A call runs on all of numba's threads, or on one for a small call and inside a task of
+a dask worker (whose executor already gives each chunk its core). Nothing here is public:
+:mod:`bearinglab.runout.contact`, :mod:`~bearinglab.runout.rotation` and
+:mod:`~bearinglab.runout.tolerances` import this module (and numba, which only this module imports) when
+their ``engine`` is the compiled one; without numba the functions run as plain Python.
 
 Functions
 ---------
 available        True if numba imports (the compiled path can run)
-walk             the contact problem of one position (scalar; the reference of the numpy path)
+walk             the contact problem of one position (scalar; the numpy path does the same on arrays)
 solve            the contact problem of many positions, given Delta k and the ball directions
 sequences        Delta k and the contact problem of whole rotation sequences (one per sample), first
                  approximation
+diameter         largest distance between two points of a trajectory (monotone chain, rotating calipers)
+diameters        the same for many trajectories
 
 References
 ----------
@@ -37,6 +42,7 @@ References
 from __future__ import annotations
 
 import math
+import sys
 
 import numpy as np
 
@@ -367,9 +373,24 @@ if numba is not None:
     _diameters = numba.njit(parallel=True, cache=True)(_diameters)
 
 
+def _in_dask_worker():
+    """True inside a task of a dask worker, whose executor already runs one chunk per thread it was given."""
+    distributed = sys.modules.get("distributed")  # not imported: not a worker
+    if distributed is None:
+        return False
+    try:
+        distributed.get_worker()
+    except ValueError:
+        return False
+    return True
+
+
 def _threads_to_use(work):
-    """Threads for a call: one for a small one (waking the others costs more than it saves)."""
-    return 1 if numba is None or work < 4096 else numba.config.NUMBA_NUM_THREADS
+    """Threads for a call: one for a small one (waking the others costs more than it saves) and on a dask
+    worker (more would compete with the other workers for the cores), else all of numba's."""
+    if numba is None or work < 4096 or _in_dask_worker():
+        return 1
+    return numba.config.NUMBA_NUM_THREADS
 
 
 def _run(kernel, work, *args):
