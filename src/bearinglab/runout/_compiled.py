@@ -75,16 +75,19 @@ _plane = _jit(_solver._plane)
 
 
 @_jit
-def _start(dk, s, c):
-    """A triangle of balls that contains the centre: the lowest ball i0 and the balls nearest to +-120 deg
-    from it, or (irregular sets) i0, the ball most nearly opposite and the ball farthest from their chord on
-    the centre's side (which always contains the centre when no half-circle holds every ball)."""
+def _start(dk, s, c, i0):
+    """A triangle of balls that contains the centre, with the lowest ball i0: the balls round(n/3) and
+    round(2n/3) places on (the balls nearest to +-120 deg in an equally spaced set numbered round the
+    circle), else the balls nearest to +-120 deg, else (irregular sets) the ball most nearly opposite i0 and
+    the ball farthest from their chord on the centre's side (which always holds the centre when no
+    half-circle holds every ball)."""
     n = dk.size
-    i0 = 0
-    for m in range(1, n):
-        if dk[m] < dk[i0]:
-            i0 = m
     x0, y0 = s[i0], c[i0]
+    a, b = (i0 + (n + 1) // 3) % n, (i0 + (2 * n + 1) // 3) % n
+    if a != i0 and b != i0 and a != b:
+        li, la, lb = _bary(x0, y0, s[a], c[a], s[b], c[b], 0.0, 0.0)
+        if min(li, min(la, lb)) >= -RUNOUT_STRICT_WEIGHT:
+            return a, b
     w1x, w1y = -0.5 * x0 - _SIN120 * y0, _SIN120 * x0 - 0.5 * y0
     w2x, w2y = -0.5 * x0 + _SIN120 * y0, -_SIN120 * x0 - 0.5 * y0
     a, b = 0, 0
@@ -99,7 +102,7 @@ def _start(dk, s, c):
     if a != i0 and b != i0 and a != b:
         li, la, lb = _bary(x0, y0, s[a], c[a], s[b], c[b], 0.0, 0.0)
         if min(li, min(la, lb)) >= -RUNOUT_STRICT_WEIGHT:
-            return i0, a, b
+            return a, b
     a = 0
     best = np.inf
     for m in range(n):
@@ -114,7 +117,7 @@ def _start(dk, s, c):
         p = sigma * (ex * (c[m] - y0) - ey * (s[m] - x0))
         if p > best:
             best, b = p, m
-    return i0, a, b
+    return a, b
 
 
 @_jit
@@ -137,11 +140,13 @@ def walk(dk, s, c, cb, cd, midpoint, lam):
     status 0: solved; 1: the walk did not end within ``_solver.max_pivots(n)`` pivots.
     """
     n = dk.size
-    scale = 1.0
+    scale, i = 1.0, 0
     for m in range(n):
         scale = max(scale, abs(dk[m]))
+        if dk[m] < dk[i]:  # the lowest ball (the first of equals)
+            i = m
     thr = WALK_TOL_UM * scale
-    i, j, k = _start(dk, s, c)
+    j, k = _start(dk, s, c, i)
     status = _NOCONV
     for _ in range(PIVOTS_PER_BALL * n + PIVOTS_EXTRA + 1):
         li, lj, lk = _bary(s[i], c[i], s[j], c[j], s[k], c[k], 0.0, 0.0)

@@ -113,27 +113,37 @@ def _plane(si, ci, ri, sj, cj, rj, sk, ck, rk):
 
 
 def _start(dk, s, c):
-    """Start triangles (rows of ``_compiled._start``): (m, 3) ball indices."""
-    rows = np.arange(dk.shape[0])
+    """Start triangles (rows of ``_compiled._start`` with the lowest ball): (m, 3) ball indices."""
+    m, n = dk.shape
+    rows = np.arange(m)
     i0 = dk.argmin(axis=1)
-    x0, y0 = s[rows, i0][:, None], c[rows, i0][:, None]
-    r3 = _SIN120
-    a = (s * (-0.5 * x0 - r3 * y0) + c * (r3 * x0 - 0.5 * y0)).argmax(axis=1)
-    b = (s * (-0.5 * x0 + r3 * y0) + c * (-r3 * x0 - 0.5 * y0)).argmax(axis=1)
-    x0, y0 = x0[:, 0], y0[:, 0]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        lam = _bary(x0, y0, s[rows, a], c[rows, a], s[rows, b], c[rows, b], 0.0, 0.0)
-    ok = (a != i0) & (b != i0) & (a != b)
-    ok &= np.minimum(lam[0], np.minimum(lam[1], lam[2])) >= -RUNOUT_STRICT_WEIGHT
-    if not ok.all():  # irregular sets: the lowest ball, the most opposite one, the farthest from their chord
+    x0, y0 = s[rows, i0], c[rows, i0]
+    a, b = (i0 + (n + 1) // 3) % n, (i0 + (2 * n + 1) // 3) % n
+    ok = (a != i0) & (b != i0) & (a != b) & _contains(x0, y0, s, c, rows, a, b)
+    if not ok.all():  # not equally spaced in index order: the balls nearest to +-120 deg
         bad = np.flatnonzero(~ok)
         xb, yb = x0[bad, None], y0[bad, None]
-        opp = (s[bad] * xb + c[bad] * yb).argmin(axis=1)
-        ex, ey = s[bad, opp][:, None] - xb, c[bad, opp][:, None] - yb
-        sigma = np.where(ex * (-yb) - ey * (-xb) >= 0.0, 1.0, -1.0)
-        far = (sigma * (ex * (c[bad] - yb) - ey * (s[bad] - xb))).argmax(axis=1)
-        a[bad], b[bad] = opp, far
+        r3 = _SIN120
+        a2 = (s[bad] * (-0.5 * xb - r3 * yb) + c[bad] * (r3 * xb - 0.5 * yb)).argmax(axis=1)
+        b2 = (s[bad] * (-0.5 * xb + r3 * yb) + c[bad] * (-r3 * xb - 0.5 * yb)).argmax(axis=1)
+        a[bad], b[bad] = a2, b2
+        ok2 = (a2 != i0[bad]) & (b2 != i0[bad]) & (a2 != b2) & _contains(x0[bad], y0[bad], s, c, bad, a2, b2)
+        bad = bad[~ok2]
+        if bad.size:  # irregular sets: the most opposite ball and the farthest from the chord
+            xb, yb = x0[bad, None], y0[bad, None]
+            opp = (s[bad] * xb + c[bad] * yb).argmin(axis=1)
+            ex, ey = s[bad, opp][:, None] - xb, c[bad, opp][:, None] - yb
+            sigma = np.where(ex * (-yb) - ey * (-xb) >= 0.0, 1.0, -1.0)
+            far = (sigma * (ex * (c[bad] - yb) - ey * (s[bad] - xb))).argmax(axis=1)
+            a[bad], b[bad] = opp, far
     return np.stack([i0, a, b], axis=1)
+
+
+def _contains(x0, y0, s, c, rows, a, b):
+    """The triangle of (x0, y0) and the balls a, b of the rows holds the centre (weights >= -1e-9)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        lam = _bary(x0, y0, s[rows, a], c[rows, a], s[rows, b], c[rows, b], 0.0, 0.0)
+    return np.minimum(lam[0], np.minimum(lam[1], lam[2])) >= -RUNOUT_STRICT_WEIGHT
 
 
 def _walk(dk, s, c, centre_b, centre_d, midpoint):
