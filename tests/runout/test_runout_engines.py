@@ -114,6 +114,23 @@ def test_the_engines_agree_on_the_monte_carlo(g, grade, rings):
 
 
 @needs_numba
+def test_long_series_are_summed_by_horner_alike(g, monkeypatch):
+    """Above n (K + 1) = TABLE_LIMIT the kernel sums each ring's series by Horner's rule instead of its
+    table: the same answers to rounding, and a sample still gives its rotation sequence's bits."""
+    from bearinglab.runout import _compiled
+
+    tabled = R.monte_carlo_chunk(g, "G5", "P4", np.arange(6), 4, steps_per_revolution=60, engine="compiled")
+    monkeypatch.setattr(_compiled, "TABLE_LIMIT", 0)
+    horner = R.monte_carlo_chunk(g, "G5", "P4", np.arange(6), 4, steps_per_revolution=60, engine="compiled")
+    for name in R.METRICS:
+        assert_allclose(getattr(horner, name) / UM, getattr(tabled, name) / UM, rtol=0, atol=ACROSS_UM)
+    (s,) = R.monte_carlo_errors(g, "G5", "P4", [5], 4)
+    t = R.rotation_sequence(s.geometry, s.errors, revolutions=2, steps_per_revolution=60, engine="compiled")
+    for name in R.METRICS:
+        assert getattr(t.metrics, name) == getattr(horner, name)[5], name
+
+
+@needs_numba
 def test_the_engines_find_the_same_diameter():
     """Both take the square root of the largest dx^2 + dy^2 of an antipodal pair: the same bits here."""
     rng = np.random.default_rng(3)

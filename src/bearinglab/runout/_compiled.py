@@ -9,9 +9,12 @@ can compile it, and run in parallel over positions or Monte Carlo samples:
   +-120 deg from it), then the point of the optimal face (the tie-break of section 7.5), the load shares
   and the face diameter. Memory O(n) per position, time O(n) per pivot;
 - the generalized errors (4.1) of a rotation sequence, first approximation: the Fourier series of the
-  outer ring at theta^i = alpha^i + kappa psi and of the inner ring at theta^i - psi, by Horner's rule in
-  z = exp(i alpha^i) exp(i kappa psi) (one complex product per ball and position instead of a sine and a
-  cosine), vectorized over the balls;
+  outer ring at theta^i = alpha^i + kappa psi and of the inner ring at theta^i - psi. Each sample
+  tabulates c_k exp(i k alpha^i) once, and each position adds Re sum_k of it times exp(i k beta) (the
+  powers by recurrence; beta = kappa psi, or kappa psi - psi for the inner ring); a series too long for the
+  table (n (K + 1) > ``TABLE_LIMIT``) is summed by Horner's rule in z = exp(i alpha^i) exp(i beta)
+  instead. Either way no sine or cosine per ball and position, and the loops run over the balls
+  (vectorized);
 - the runout metric radial_ptp_max of a trajectory: the diameter of its points.
 
 A position's or a sample's result depends on its own data only (not on the batch, the chunk or the thread
@@ -50,6 +53,11 @@ from .. import _numba
 from .._solve import RUNOUT_CONTACT_TOL_UM, RUNOUT_STRICT_WEIGHT
 from . import _solver
 from ._solver import _NOCONV, _OK, _SIN120, PIVOTS_EXTRA, PIVOTS_PER_BALL, WALK_TOL_UM
+
+#: Largest n (K + 1) of a ring whose series is tabulated per sample (two tables of that many doubles, 1 MB at
+#: the limit, per ring and thread); a bigger one is summed by Horner's rule at every ball and position
+#: (twice the arithmetic, no table). Each gives the same bits for a sample in any batch.
+TABLE_LIMIT = 1 << 16
 
 try:
     import numba
@@ -241,10 +249,47 @@ def _horner_re(cr, ci, zr, zi, out, ar, ai):
         out[m] = out[m] + ar[m]
 
 
-def _sequences(t1, kappa, psi, oc, oi, ic, ii, deficit, cb, cd, midpoint, store, dk_out, lam_out, a0, b, d, deg,
-               diam, status):
+@_jit
+def _ring_table(cr, ci, za_r, za_i, tr, ti, pw_r, pw_i):
+    """tr + i ti [k, m] = (cr_k + i ci_k) exp(i k alpha_m), k = 0..K (the powers by recurrence); pw scratch."""
+    n = za_r.size
+    for m in range(n):
+        pw_r[m] = 1.0
+        pw_i[m] = 0.0
+    for k in range(cr.size):
+        c_r, c_i = cr[k], ci[k]
+        for m in range(n):  # over the balls: vectorized
+            tr[k, m] = c_r * pw_r[m] - c_i * pw_i[m]
+            ti[k, m] = c_r * pw_i[m] + c_i * pw_r[m]
+            x = pw_r[m] * za_r[m] - pw_i[m] * za_i[m]
+            pw_i[m] = pw_r[m] * za_i[m] + pw_i[m] * za_r[m]
+            pw_r[m] = x
+
+
+@_jit
+def _ring_add(tr, ti, w_r, w_i, out, acc):
+    """out += Re sum_k (tr + i ti)[k] exp(i k beta) for every ball, exp(i beta) = w_r + i w_i (the powers by
+    recurrence): 4 operations a ball and order where Horner's rule takes 8; acc scratch."""
+    n = out.size
+    for m in range(n):
+        acc[m] = 0.0
+    er, ei = 1.0, 0.0
+    for k in range(tr.shape[0]):
+        for m in range(n):  # over the balls: vectorized
+            acc[m] += tr[k, m] * er - ti[k, m] * ei
+        er, ei = er * w_r - ei * w_i, er * w_i + ei * w_r
+    for m in range(n):
+        out[m] = out[m] + acc[m]
+
+
+def _sequences(t1, kappa, psi, oc, oi, ic, ii, deficit, cb, cd, midpoint, store, table_limit, dk_out, lam_out, a0,
+               b, d, deg, diam, status):
     n = deficit.shape[1]
     P = psi.size
+    # each ring's series is tabulated per sample against the balls' exp(i k alpha) when the table is small
+    # (n (K + 1) <= table_limit), else summed by Horner's rule at every ball and position
+    table_o = oc.shape[1] * n <= table_limit
+    table_i = ic.shape[1] * n <= table_limit
     # the positions' factors of z, shared by every sample: exp(i kappa psi), exp(i (kappa psi - psi))
     wo_r, wo_i = np.empty(P), np.empty(P)
     wi_r, wi_i = np.empty(P), np.empty(P)
@@ -265,18 +310,29 @@ def _sequences(t1, kappa, psi, oc, oi, ic, ii, deficit, cb, cd, midpoint, store,
             za_r[m], za_i[m] = math.cos(alpha), math.sin(alpha)
         zo_r, zo_i, zi_r, zi_i = np.empty(n), np.empty(n), np.empty(n), np.empty(n)
         ar, ai, row, lam = np.empty(n), np.empty(n), np.empty(n), np.empty(n)
+        ko, ki = oc.shape[1] if table_o else 0, ic.shape[1] if table_i else 0
+        to_r, to_i, ti_r, ti_i = np.empty((ko, n)), np.empty((ko, n)), np.empty((ki, n)), np.empty((ki, n))
+        if ko:
+            _ring_table(oc[so], oi[so], za_r, za_i, to_r, to_i, ar, ai)
+        if ki:
+            _ring_table(ic[si], ii[si], za_r, za_i, ti_r, ti_i, ar, ai)
         status[q] = _OK
         for p in range(P):
             o_r, o_i, i_r, i_i = wo_r[p], wo_i[p], wi_r[p], wi_i[p]
             for m in range(n):
                 zo_r[m] = za_r[m] * o_r - za_i[m] * o_i
                 zo_i[m] = za_r[m] * o_i + za_i[m] * o_r
-                zi_r[m] = za_r[m] * i_r - za_i[m] * i_i
-                zi_i[m] = za_r[m] * i_i + za_i[m] * i_r
                 row[m] = deficit[sd, m]
-            if oc.shape[1]:
+            if ko:
+                _ring_add(to_r, to_i, o_r, o_i, row, ar)
+            elif oc.shape[1]:
                 _horner_re(oc[so], oi[so], zo_r, zo_i, row, ar, ai)
-            if ic.shape[1]:
+            if ki:
+                _ring_add(ti_r, ti_i, i_r, i_i, row, ar)
+            elif ic.shape[1]:
+                for m in range(n):
+                    zi_r[m] = za_r[m] * i_r - za_i[m] * i_i
+                    zi_i[m] = za_r[m] * i_i + za_i[m] * i_r
                 _horner_re(ic[si], ii[si], zi_r, zi_i, row, ar, ai)
             # zo = exp(i theta): sin theta = Im, cos theta = Re
             x = walk(row, zo_i, zo_r, cb[p], cd[p], midpoint, lam)
@@ -483,5 +539,5 @@ def sequences(first_ball_angle, cage_ratio, psi, outer, inner, deficit, cb, cd, 
     dk_out = np.empty((S * P, n)) if store else np.empty((1, n))
     lam_out = np.empty((S * P, n)) if store else np.empty((1, n))
     _run(_sequences, S * P * n, t1, float(cage_ratio), psi, oc, oi, ic, ii, deficit, cb, cd, bool(midpoint),
-         bool(store), dk_out, lam_out, *out, deg, diam, status)
+         bool(store), TABLE_LIMIT, dk_out, lam_out, *out, deg, diam, status)
     return (*out, deg, diam, status, dk_out if store else None, lam_out if store else None)
