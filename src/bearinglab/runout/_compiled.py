@@ -155,6 +155,9 @@ def walk(dk, s, c, cb, cd, midpoint, lam):
             i = m
     thr = WALK_TOL_UM * scale
     j, k = _start(dk, s, c, i)
+    # the vertices are kept sorted, so that the final triangle's values (those of its last pass) do not
+    # depend on the path that led to it, and the ratio test breaks ties alike on both engines
+    i, j, k = _sort3(i, j, k)
     status = _NOCONV
     for _ in range(PIVOTS_PER_BALL * n + PIVOTS_EXTRA + 1):
         li, lj, lk = _bary(s[i], c[i], s[j], c[j], s[k], c[k], 0.0, 0.0)
@@ -183,15 +186,13 @@ def walk(dk, s, c, cb, cd, midpoint, lam):
             j = e
         else:
             k = e
-    # the result from the final triangle alone (sorted: not from the path that led to it)
-    i, j, k = _sort3(i, j, k)
-    li, lj, lk = _bary(s[i], c[i], s[j], c[j], s[k], c[k], 0.0, 0.0)
-    a0 = li * dk[i] + lj * dk[j] + lk * dk[k]
+        i, j, k = _sort3(i, j, k)
+    if status != _OK:  # the caller raises
+        return np.nan, np.nan, np.nan, False, 0.0, status
     for m in range(n):
         lam[m] = 0.0
     lam[i], lam[j], lam[k] = li, lj, lk
     if min(li, min(lj, lk)) > RUNOUT_STRICT_WEIGHT:  # the centre inside: one optimal point
-        b, d = _plane(s[i], c[i], dk[i] - a0, s[j], c[j], dk[j] - a0, s[k], c[k], dk[k] - a0)
         return a0, b, d, False, 0.0, status
     # the centre on an edge: a diametral pair, whose line u_f . v = dk_f - a0 the other balls cut
     f = i

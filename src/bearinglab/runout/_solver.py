@@ -151,7 +151,7 @@ def _walk(dk, s, c, centre_b, centre_d, midpoint):
     m, n = dk.shape
     scale_ = np.maximum(1.0, np.abs(dk).max(axis=1))
     thr = WALK_TOL_UM * scale_
-    basis = _start(dk, s, c)
+    basis = np.sort(_start(dk, s, c), axis=1)  # kept sorted, as the compiled walk keeps it
     status = np.ones(m, np.int64)
     active = np.arange(m)
     for _ in range(max_pivots(n) + 1):
@@ -182,11 +182,13 @@ def _walk(dk, s, c, centre_b, centre_d, midpoint):
             best = np.where(better, ratio, best)
             out = np.where(better, slot, out)
         basis[active, out] = e
-    return _finish(dk, s, c, np.sort(basis, axis=1), centre_b, centre_d, midpoint, scale_, status)
+        basis[active] = np.sort(basis[active], axis=1)
+    return _finish(dk, s, c, basis, centre_b, centre_d, midpoint, scale_, status)
 
 
 def _finish(dk, s, c, basis, centre_b, centre_d, midpoint, scale_, status):
-    """The solution from the final (sorted) triangle of every row, as ``_compiled.walk`` ends."""
+    """The solution from the final (sorted) triangle of every row, as ``_compiled.walk`` ends (its last
+    pass computes the same values in the same order)."""
     m, n = dk.shape
     rows = np.arange(m)
     bs, bc, bk = (v[rows[:, None], basis] for v in (s, c, dk))
