@@ -447,21 +447,22 @@ def _in_dask_worker():
     return True
 
 
-def _threads_to_use(work):
-    """Threads for a call: one for a small one (waking the others costs more than it saves) and on a dask
-    worker (more would compete with the other workers for the cores), else all of numba's."""
-    if numba is None or work < 4096 or _in_dask_worker():
+def _threads_to_use(work, items):
+    """Threads for a call of ``items`` parallel iterations: one for a small call or a single item (waking
+    the others costs more than it saves, most on a loaded machine) and on a dask worker (more would compete
+    with the other workers for the cores), else all of numba's."""
+    if numba is None or work < 4096 or items < 2 or _in_dask_worker():
         return 1
     return numba.config.NUMBA_NUM_THREADS
 
 
-def _run(kernel, work, *args):
+def _run(kernel, work, items, *args):
     """Run a parallel kernel under the shared lock (numba's workqueue layer forbids concurrent launches)."""
     with _numba.LOCK:
         if numba is None:
             return kernel(*args)
         before = numba.get_num_threads()
-        numba.set_num_threads(_threads_to_use(work))
+        numba.set_num_threads(_threads_to_use(work, items))
         try:
             return kernel(*args)
         finally:
@@ -472,7 +473,7 @@ def diameters(x, y):
     """:func:`diameter` of every trajectory (rows of x, y (S, N)): (S,)."""
     x, y = (np.ascontiguousarray(v, dtype=float) for v in (x, y))
     out = np.empty(x.shape[0])
-    _run(_diameters, x.size, x, y, out)
+    _run(_diameters, x.size, x.shape[0], x, y, out)
     return out
 
 
@@ -488,7 +489,7 @@ def solve(dk, s, c, cb, cd, midpoint):
     cd = np.ascontiguousarray(np.broadcast_to(np.asarray(cd, float), (P,)))
     a0, b, d, diam = np.empty(P), np.empty(P), np.empty(P), np.empty(P)
     lam, deg, status = np.empty((P, n)), np.empty(P, dtype=np.bool_), np.empty(P, dtype=np.int64)
-    _run(_solve, P * n, dk, s, c, cb, cd, bool(midpoint), a0, b, d, lam, deg, diam, status)
+    _run(_solve, P * n, P, dk, s, c, cb, cd, bool(midpoint), a0, b, d, lam, deg, diam, status)
     return a0, b, d, lam, deg, diam, status
 
 
@@ -539,6 +540,6 @@ def sequences(first_ball_angle, cage_ratio, psi, outer, inner, deficit, cb, cd, 
     deg, diam, status = np.empty((S, P), dtype=np.bool_), np.empty((S, P)), np.empty(S, dtype=np.int64)
     dk_out = np.empty((S * P, n)) if store else np.empty((1, n))
     lam_out = np.empty((S * P, n)) if store else np.empty((1, n))
-    _run(_sequences, S * P * n, t1, float(cage_ratio), psi, oc, oi, ic, ii, deficit, cb, cd, bool(midpoint),
+    _run(_sequences, S * P * n, S, t1, float(cage_ratio), psi, oc, oi, ic, ii, deficit, cb, cd, bool(midpoint),
          bool(store), TABLE_LIMIT, dk_out, lam_out, *out, deg, diam, status)
     return (*out, deg, diam, status, dk_out if store else None, lam_out if store else None)
