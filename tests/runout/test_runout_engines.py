@@ -152,6 +152,20 @@ def test_a_sample_gives_the_same_bits_in_any_chunk(g, engine):
 
 
 @pytest.mark.parametrize("engine", ENGINES)
+def test_a_position_of_solve_contact_gives_the_same_bits_alone(engine):
+    """A big batch runs the compiled loop over numba's threads, a single position on the calling thread:
+    the same scalar code, the same bits (and the numpy walk's rows are independent)."""
+    rng = np.random.default_rng(9)
+    th = rng.uniform(0, 2 * np.pi, (3000, 1)) + 2 * np.pi * np.arange(16) / 16
+    dk = np.round(rng.normal(0, 0.3, (3000, 16)), 1) * UM  # ties included
+    batch = R.solve_contact(dk, th, engine=engine)
+    for p in (0, 1234, 2999):
+        one = R.solve_contact(dk[p], th[p], engine=engine)
+        for name in one._fields:
+            assert_array_equal(getattr(one, name), getattr(batch, name)[p], err_msg=name)
+
+
+@pytest.mark.parametrize("engine", ENGINES)
 def test_the_numpy_blocks_of_samples_do_not_change_the_bits(g, engine, monkeypatch):
     """The numpy engine solves a chunk in blocks of samples (memory); a block of one sample gives the
     same bits as one block of all."""

@@ -18,8 +18,9 @@ can compile it, and run in parallel over positions or Monte Carlo samples:
 - the runout metric radial_ptp_max of a trajectory: the diameter of its points.
 
 A position's or a sample's result depends on its own data only (not on the batch, the chunk or the thread
-that computes it). A call runs on all of numba's threads, or on one for a small call and inside a task of
-a dask worker (whose executor already gives each chunk its core). Nothing here is public:
+that computes it). A call runs on all of numba's threads, or on the calling thread alone (without the GIL)
+for a small call, a single sample and inside a task of a dask worker (whose executor already gives each
+chunk its core). Nothing here is public:
 :mod:`bearinglab.runout.contact`, :mod:`~bearinglab.runout.rotation` and
 :mod:`~bearinglab.runout.tolerances` import this module (and numba, which only this module imports) when
 their ``engine`` is the compiled one; without numba the functions run as plain Python.
@@ -429,10 +430,14 @@ def _diameters(x, y, out):
 
 
 _prange = range if numba is None else numba.prange
+# each loop twice: over numba's threads (under the shared lock), and on the calling thread alone without the
+# GIL (prange runs as range; threads of a dask worker run these side by side). The same scalar code, so the
+# same bits
+_KERNELS = {name: (func, func) for name, func in (("solve", _solve), ("sequences", _sequences),
+                                                  ("diameters", _diameters))}
 if numba is not None:
-    _solve = numba.njit(parallel=True, cache=True)(_solve)
-    _sequences = numba.njit(parallel=True, cache=True)(_sequences)
-    _diameters = numba.njit(parallel=True, cache=True)(_diameters)
+    _KERNELS = {name: (numba.njit(cache=True, nogil=True)(func), numba.njit(parallel=True, cache=True)(func))
+                for name, (func, _) in _KERNELS.items()}
 
 
 def _in_dask_worker():
@@ -456,15 +461,18 @@ def _threads_to_use(work, items):
     return numba.config.NUMBA_NUM_THREADS
 
 
-def _run(kernel, work, items, *args):
-    """Run a parallel kernel under the shared lock (numba's workqueue layer forbids concurrent launches)."""
+def _run(name, work, items, *args):
+    """Run kernel ``name`` on one thread, or on numba's threads under the shared lock (numba's workqueue
+    layer forbids concurrent launches of parallel kernels)."""
+    serial, parallel = _KERNELS[name]
+    threads = _threads_to_use(work, items)
+    if threads == 1:
+        return serial(*args)
     with _numba.LOCK:
-        if numba is None:
-            return kernel(*args)
         before = numba.get_num_threads()
-        numba.set_num_threads(_threads_to_use(work, items))
+        numba.set_num_threads(threads)
         try:
-            return kernel(*args)
+            return parallel(*args)
         finally:
             numba.set_num_threads(before)
 
@@ -473,7 +481,7 @@ def diameters(x, y):
     """:func:`diameter` of every trajectory (rows of x, y (S, N)): (S,)."""
     x, y = (np.ascontiguousarray(v, dtype=float) for v in (x, y))
     out = np.empty(x.shape[0])
-    _run(_diameters, x.size, x.shape[0], x, y, out)
+    _run("diameters", x.size, x.shape[0], x, y, out)
     return out
 
 
@@ -489,7 +497,7 @@ def solve(dk, s, c, cb, cd, midpoint):
     cd = np.ascontiguousarray(np.broadcast_to(np.asarray(cd, float), (P,)))
     a0, b, d, diam = np.empty(P), np.empty(P), np.empty(P), np.empty(P)
     lam, deg, status = np.empty((P, n)), np.empty(P, dtype=np.bool_), np.empty(P, dtype=np.int64)
-    _run(_solve, P * n, P, dk, s, c, cb, cd, bool(midpoint), a0, b, d, lam, deg, diam, status)
+    _run("solve", P * n, P, dk, s, c, cb, cd, bool(midpoint), a0, b, d, lam, deg, diam, status)
     return a0, b, d, lam, deg, diam, status
 
 
@@ -540,6 +548,6 @@ def sequences(first_ball_angle, cage_ratio, psi, outer, inner, deficit, cb, cd, 
     deg, diam, status = np.empty((S, P), dtype=np.bool_), np.empty((S, P)), np.empty(S, dtype=np.int64)
     dk_out = np.empty((S * P, n)) if store else np.empty((1, n))
     lam_out = np.empty((S * P, n)) if store else np.empty((1, n))
-    _run(_sequences, S * P * n, S, t1, float(cage_ratio), psi, oc, oi, ic, ii, deficit, cb, cd, bool(midpoint),
+    _run("sequences", S * P * n, S, t1, float(cage_ratio), psi, oc, oi, ic, ii, deficit, cb, cd, bool(midpoint),
          bool(store), TABLE_LIMIT, dk_out, lam_out, *out, deg, diam, status)
     return (*out, deg, diam, status, dk_out if store else None, lam_out if store else None)
