@@ -107,7 +107,7 @@ def test_the_existing_entries_resolve_as_before():
 
 @pytest.mark.parametrize(("text", "hint"), [
     ("7205", "needs its contact-angle code; did you mean 7205 BE or 7205 A or 7205 B or 7205 C or 7205 ACD?"),
-    ("7305 AC", "no 7305 with the angle code AC (25 deg)"),
+    ("7305 CD", "no 7305 with the angle code CD (15 deg)"),
     ("6299", "did you mean 6240 or 6238 or 6236 (series 62)?"),
 ])
 def test_did_you_mean_by_series_and_size(text, hint):
