@@ -94,6 +94,7 @@ MODEL_TYPES = {
     "high-speed": ("radial", "angular"),
     "axial-angle": ("radial", "angular"),
     "runout": ("radial", "angular"),
+    "film": ("radial", "angular"),
 }
 # what each type has that the models of MODEL_TYPES do not cover yet
 _NOT_COVERED = {
@@ -170,7 +171,7 @@ def check_model(bearing, model):
     """
     if covers(bearing, model):
         return
-    label = bearing.designation or "this bearing"
+    label = getattr(bearing, "designation", "") or "this bearing"
     raise InputError(f"{model}: {label!r} is a {bearing.type} bearing, and the model does not cover "
                      f"{_NOT_COVERED.get(bearing.type, 'this type')} yet; its ISO 281 life is given by "
                      "`bearinglab life`")

@@ -316,7 +316,8 @@ def build(name, d=None, *, clearance="mean"):
         sources["seal"] = f"designation suffix of {d.text!r}: {d.seal} seals/shields on {d.seals} side(s)"
     elif re.search(r"-2RS1$", maker_designation):  # SKF 622, 623: made sealed only
         kw["seal"], kw["seals"] = "RS1", 2
-        sources["seal"] = f"{maker_designation}: the catalogue lists this size sealed only (RS1 on both sides)"
+        sources["seal"] = (f"catalog row {maker_designation}: the catalogue lists this size sealed only (RS1 on "
+                           "both sides)")
     if clearance_class:
         kw["clearance_class"] = clearance_class
     if d is not None:

@@ -12,6 +12,7 @@ SKF four-term model (:mod:`.skf`)
 skf, skf_for_bearing                   M = M_rr + M_sl + M_seal + M_drag
 series_constants, bearing_series, seal_constants, sliding_friction_coefficient   its parts and tables
 angular_contact_constants              SKF's constants of an angular-contact type (single row 40 deg, ...)
+self_aligning_constants                SKF's constants of a self-aligning series (12, 13, 22, 23, ...)
 inlet_shear_heating_factor, replenishment_factor   Phi_ish and Phi_rs
 drag_moment                            M_drag of an oil bath
 
@@ -54,7 +55,9 @@ from .skf import (
     DEEP_GROOVE_CONSTANTS,
     LUBRICATION_METHODS,
     SEAL_CONSTANTS,
+    SELF_ALIGNING_CONSTANTS,
     SKF_BEARING_TYPES,
+    THRUST_BALL_CONSTANTS,
     SealConstants,
     SKFConstants,
     SKFTorque,
@@ -64,6 +67,7 @@ from .skf import (
     inlet_shear_heating_factor,
     replenishment_factor,
     seal_constants,
+    self_aligning_constants,
     series_constants,
     skf,
     skf_for_bearing,
@@ -84,7 +88,9 @@ __all__ = [
     "RADIAL_LOAD_TERM",
     "RADIAL_STATIC_FACTORS",
     "SEAL_CONSTANTS",
+    "SELF_ALIGNING_CONSTANTS",
     "SKF_BEARING_TYPES",
+    "THRUST_BALL_CONSTANTS",
     "LoadTermConstants",
     "SKFConstants",
     "SKFTorque",
@@ -105,6 +111,7 @@ __all__ = [
     "palmgren",
     "replenishment_factor",
     "seal_constants",
+    "self_aligning_constants",
     "series_constants",
     "skf",
     "skf_for_bearing",
