@@ -76,6 +76,9 @@ def _f(name, kind, help, **kw):
     return Field(name, kind, help, **kw)
 
 
+#: The bearing types a catalog search takes (the ``type`` words of the rows, deep-groove for ``radial``).
+CATALOG_TYPES = ("deep-groove", "angular", "four-point", "double-row-angular", "double-row-radial", "self-aligning",
+                 "thrust")
 _GEO = "geometry"
 BEARING = _f("bearing", "text", "Catalog name, e.g. B218, 4-1006095, 6205-2RS.", label="Bearing",
              group="bearing")
@@ -379,8 +382,8 @@ _CALCS = (
             label="Outside diameter", unit="mm", minimum=0, exclusive=True, group="bearing"),
          _f("width", "length", "Width B (matches within 0.5 mm).", label="Width B", unit="mm",
             minimum=0, exclusive=True, group="bearing"),
-         _f("type", "choice", "deep-groove | angular.", label="Type",
-            choices=("deep-groove", "angular"), group="bearing"),
+         _f("type", "choice", "deep-groove, angular, four-point, double-row-angular, double-row-radial, "
+            "self-aligning or thrust.", label="Type", choices=CATALOG_TYPES, group="bearing"),
          _f("series", "text", "Series, e.g. 62, 618, 72, 72B, 79C.", label="Series", group="bearing"),
          _f("limit", "int", "The most matches returned.", label="Matches", default=50, minimum=1,
             maximum=500, group="bearing"))),

@@ -146,7 +146,9 @@ _SearchLength = Annotated[str | None, typer.Option(help="e.g. '40 mm' (a number 
 @catalog_app.command("search")
 def catalog_search(bore: _SearchLength = None, outside_diameter: _SearchLength = None,
                    width: _SearchLength = None,
-                   type: Annotated[str | None, typer.Option("--type", help="deep-groove | angular.")] = None,
+                   type: Annotated[str | None, typer.Option("--type", help=(
+                       "deep-groove, angular, four-point, double-row-angular, double-row-radial, "
+                       "self-aligning or thrust."))] = None,
                    series: Annotated[str | None, typer.Option(help="Series, e.g. 62, 618, 72, 72B, 79C.")] = None,
                    json_out: JsonFlag = False):
     """Find standard-series bearings by boundary dimensions, type and series."""
