@@ -23,7 +23,8 @@ Examples of what is read: ``6208-2RS1/C3``, ``6208 2RS C3``, ``6208ZZC3``, ``620
 ``7205 BECBP``, ``7205-B-TVP``, ``7014 CD/P4A``, ``71914 ACD``, and (issue 30) Schaeffler's
 ``6208-2RSR``, ``6208-2Z``, ``6208-C3``, ``6208-2RSR-C3``, ``7208-B-XL-JP``, ``QJ208-TVP``; SKF's
 ``6208 NR``, ``6208-2ZNR``, ``1208 ETN9``, ``2306 M``, ``QJ 208 N2MA``, ``4208 ATN9``, ``3208 A``,
-``6208-2Z/HC5C3``, ``7208 BEGAPH``, ``7014 CD/P4ADBB``, ``7014 CD/P2``. Suffixes may be written with or
+``6208-2Z/HC5C3``, ``7208 BEGAPH``, ``7014 CD/P4ADBB``, ``7014 CD/P2``; GMN's spindle bearings
+``S 6208 C TA P4 UL``, ``S 61910 E TA``. Suffixes may be written with or
 without separators (``-``, ``/``, space); an unknown one is refused, naming the valid ones.
 
 Maker spellings of the angle codes (the nominal contact angle they stand for): SKF ``B``/``BE`` (and
@@ -36,7 +37,9 @@ MA, N2 pp. 440, 455; GA, GB, GC, CA, CB, CC p. 412-413); NSK CAT. No. E1102e, no
 angular-contact tables ("A, A5, B and C represent contact angles of 30, 25, 40 and 15 deg");
 Schaeffler, Rolling bearings (catalogue HR 1, 2006): the suffixes 2RSR (lip seals), XL (X-life), JP
 (sheet-steel cage), TVP, TVH (polyamide cages), MPA (brass cage). HC5 (SKF): rolling elements of
-silicon nitride.
+silicon nitride. GMN, High precision ball bearings (catalogue 4000 0813 EN), bearing designation p. 21:
+S (standard spindle series), C 15 deg, E 25 deg, TA and TXM cages, UL, UM, US universal matching with
+light, medium, heavy preload.
 """
 
 from __future__ import annotations
@@ -63,7 +66,7 @@ ANGLES = {
     "B": 40.0, "BE": 40.0, "BECBP": 40.0, "BECBM": 40.0, "BECBY": 40.0, "BEP": 40.0, "BEY": 40.0,
     "BEM": 40.0, "BW": 40.0, "AC": 25.0, "ACD": 25.0, "A5": 25.0, "A": 30.0, "C": 15.0, "CD": 15.0,
 }
-CAGES = ("TVP", "TVH", "TN9", "TNH", "TN", "MA", "MB", "MPA", "M", "Y", "J", "JP", "PHAS", "PH", "P")
+CAGES = ("TVP", "TVH", "TN9", "TNH", "TN", "MA", "MB", "MPA", "M", "Y", "J", "JP", "PHAS", "PH", "P", "TXM", "TA")
 #: Internal-design and snap-ring suffixes: SKF E (reinforced internal design), Schaeffler XL (X-life),
 #: SKF N (snap-ring groove), NR (groove and snap ring), N2 (two locating slots, four-point bearings); and
 #: A of SKF's double-row deep groove bearings (42 A, 43 A: no filling slots). No number changes.
@@ -72,8 +75,9 @@ DESIGNS = ("E", "XL", "NR", "N2", "N")
 #: super-precision bearings).
 BALLS = {"HC5": "silicon_nitride", "HC": "silicon_nitride"}
 #: Preload classes of SKF's universally matchable single-row angular contact bearings (GA light, GB
-#: moderate, GC heavy) and their axial internal clearance classes (CA, CB, CC).
-PRELOADS = ("GA", "GB", "GC")
+#: moderate, GC heavy) and their axial internal clearance classes (CA, CB, CC); GMN's universal matching
+#: with light, medium and heavy preload (UL, UM, US).
+PRELOADS = ("GA", "GB", "GC", "UL", "UM", "US")
 AXIAL_CLEARANCES = ("CA", "CB", "CC")
 #: Matched sets: back-to-back, face-to-face, tandem; SKF super-precision sets add the preload class
 #: A (light), B (moderate) or C (heavy): DBA, DBB, DBC, DFA, DFB, DFC.
@@ -85,6 +89,7 @@ MAKER_SUFFIXES = {
                      "BECBY", "BEP", "BEY", "BEM", "AC", "ACD", "CD", "E", "TN9", "HC5", "HC", "GA", "GB",
                      "GC", "CA", "CB", "CC", "N2", "PHAS", "PH", "DBA", "DBB", "DBC", "DFA", "DFB", "DFC"), "SKF"),
     **dict.fromkeys(("2RSR", "RSR", "XL", "JP", "TVP", "TVH", "MPA"), "Schaeffler"),
+    **dict.fromkeys(("TA", "TXM", "UL", "UM", "US"), "GMN"),
     **dict.fromkeys(("A5", "DDU", "DU", "VV", "V"), "NSK"),
     **dict.fromkeys(("LLU", "LU", "LLB", "LB"), "NTN"),
 }
@@ -94,7 +99,9 @@ _KINDS = [(SEALS, "seal"), (CLEARANCES, "clearance"), (TOLERANCES, "tolerance"),
           (AXIAL_CLEARANCES, "axial clearance"), (ARRANGEMENTS, "arrangement")]
 _KIND = {t: kind for table, kind in reversed(_KINDS) for t in table}
 _VOCABULARY = sorted(_KIND, key=len, reverse=True)
-_BASE = re.compile(r"^\s*(?P<base>QJ\s?\d{3}|\d{2,3}/\d+|\d{3,6})")
+_BASE = re.compile(r"^\s*(?P<base>QJ\s?\d{3}|S\s?(?:\d{3}/\d+|\d{3,6})|\d{2,3}/\d+|\d{3,6})")
+#: GMN's spindle bearings (series S): the codes C (15 deg) and E (25 deg) after the size
+_GMN_ANGLES = {"C": 15.0, "E": 25.0}
 _NSK_THIN = re.compile(r"^(6[89])(\d\d)$")      # NSK/NTN 6805, 6905 -> ISO 61805, 61905
 _NSK_SPINDLE = re.compile(r"^719(\d\d)$")      # SKF 71914 -> NSK 7914
 _DOUBLE_ROW_ANGULAR = re.compile(r"^3[23]\d\d$")  # 32 A, 33 A: the code A is the contact angle (30 deg)
@@ -129,7 +136,8 @@ class Designation(NamedTuple):
     ball_material: str | None = None
     """``silicon_nitride`` for HC5 / HC, or None (steel)."""
     preload_class: str | None = None
-    """``GA``, ``GB``, ``GC`` (universally matchable), or ``A``, ``B``, ``C`` of a DBA ... DFC set; or None."""
+    """``GA``, ``GB``, ``GC`` (SKF), ``UL``, ``UM``, ``US`` (GMN), or ``A``, ``B``, ``C`` of a DBA ... DFC set;
+    or None."""
     axial_clearance_class: str | None = None
     """``CA``, ``CB`` or ``CC`` of a universally matchable bearing, or None."""
     arrangement: str | None = None
@@ -177,7 +185,9 @@ def makers_of(d):
     >>> makers_of(parse("7008 CD/P4A")), makers_of(parse("6208-2RSR")), makers_of(parse("6208-2Z"))
     (('SKF',), ('Schaeffler',), ())
     """
-    return tuple(dict.fromkeys(MAKER_SUFFIXES[t] for t in d.tokens if t in MAKER_SUFFIXES))
+    gmn = d.base.startswith("S")  # GMN's own codes C and E after the size of an S bearing
+    return tuple(dict.fromkeys(("GMN",) if gmn else ()) | dict.fromkeys(
+        MAKER_SUFFIXES[t] for t in d.tokens if t in MAKER_SUFFIXES and not (gmn and t in _GMN_ANGLES)))
 
 
 def parse(text):
@@ -232,6 +242,8 @@ def parse(text):
         kind = _KIND[token]
         if kind == "angle" and token == "A" and _DOUBLE_ROW_RADIAL.match(base):
             kind = "design"  # SKF 4208 A(TN9): no filling slots, not an angle
+        if base.startswith("S") and token == "E":
+            kind = "angle"  # GMN S 6208 E: 25 deg
         if kind == "design":
             if token in designs:
                 raise InputError(f"bearing: two {token} suffixes in {raw!r}")
@@ -240,9 +252,15 @@ def parse(text):
         if kinds[kind] is not None:
             raise InputError(f"bearing: two {kind} suffixes in {raw!r} ({kinds[kind]} and {token})")
         kinds[kind] = token
-    if kinds["angle"] is not None and not (base.startswith("7") or _DOUBLE_ROW_ANGULAR.match(base)):
+    angle = ANGLES.get(kinds["angle"])
+    if base.startswith("S"):
+        if kinds["angle"] is not None and kinds["angle"] not in _GMN_ANGLES:
+            raise InputError(f"bearing: the angle code {kinds['angle']!r} in {raw!r} is not GMN's (C 15 deg, "
+                             "E 25 deg)")
+        angle = _GMN_ANGLES.get(kinds["angle"])
+    elif kinds["angle"] is not None and not (base.startswith("7") or _DOUBLE_ROW_ANGULAR.match(base)):
         raise InputError(f"bearing: the angle code {kinds['angle']!r} in {raw!r} is for angular-contact "
-                         "bearings (designations 7..., and 32.., 33.. A)")
+                         "bearings (designations 7..., and 32.., 33.. A, GMN S ...)")
     snap = [t for t in designs if t in ("N", "NR")]
     if len(snap) > 1:
         raise InputError(f"bearing: two snap-ring suffixes in {raw!r} ({snap[0]} and {snap[1]})")
@@ -253,6 +271,6 @@ def parse(text):
             raise InputError(f"bearing: two preload classes in {raw!r} ({preload} and {arrangement[2]} of "
                              f"{arrangement})")
         arrangement, preload = arrangement[:2], arrangement[2]
-    return Designation(raw, base, kinds["angle"], ANGLES.get(kinds["angle"]), seal, sides, kinds["clearance"],
+    return Designation(raw, base, kinds["angle"], angle, seal, sides, kinds["clearance"],
                        kinds["tolerance"], kinds["cage"], alternatives, tuple(designs), BALLS.get(kinds["balls"]),
                        preload, kinds["axial clearance"], arrangement, tuple(tokens))

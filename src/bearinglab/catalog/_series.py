@@ -54,22 +54,27 @@ def records():
         row = dict(r)
         for key in ("bore_mm", "outside_diameter_mm", "width_mm", "chamfer_mm", "contact_angle_deg",
                     "dynamic_load_rating_kN", "static_load_rating_kN", "fatigue_load_limit_kN",
-                    "reference_speed_rpm", "limiting_speed_rpm", "mass_kg", "calculation_factor_f0"):
+                    "reference_speed_rpm", "limiting_speed_rpm", "mass_kg", "calculation_factor_f0", "preload_light_N", "preload_medium_N",
+                    "preload_heavy_N"):
             row[key] = _num(r.get(key))
         out[r["designation"]] = row
     return out
 
 
+_PREFIXES = ("QJ", "S")  # series prefixes written apart from the size: SKF QJ 208, GMN S 6208 C
+
+
 def base_of(name):
-    """The base size of a row name: ``"7205 BE"`` -> ``"7205"``, ``"QJ 208"`` -> ``"QJ208"``."""
+    """The base size of a row name: ``"7205 BE"`` -> ``"7205"``, ``"QJ 208"`` -> ``"QJ208"``,
+    ``"S 6208 C"`` -> ``"S6208"``."""
     parts = name.split()
-    return parts[0] + parts[1] if parts[0] == "QJ" else parts[0]
+    return parts[0] + parts[1] if parts[0] in _PREFIXES else parts[0]
 
 
 def code_of(name):
     """The variant code of a row name: ``"7205 BE"`` -> ``"BE"``, ``"6208 ETN9"`` -> ``"ETN9"``, else ``""``."""
     parts = name.split()
-    return " ".join(parts[2 if parts[0] == "QJ" else 1:])
+    return " ".join(parts[2 if parts[0] in _PREFIXES else 1:])
 
 
 def display_type(row_type):
@@ -88,8 +93,9 @@ def by_base():
 
 @functools.cache
 def ball_sets():
-    """``{catalog name: row}`` of the published ball sets that belong to a catalog size."""
-    return {r["catalog"]: r for r in _csv_rows("ball_sets.csv") if r["catalog"]}
+    """``{catalog name: row}`` of the published ball sets that belong to a catalog size (a row's ``catalog``
+    may name several, separated by ``;``: GMN's C and E bearings of a size have one ball set)."""
+    return {name: r for r in _csv_rows("ball_sets.csv") for name in filter(None, r["catalog"].split(";"))}
 
 
 def _geometry(name, row):
@@ -144,7 +150,15 @@ def _pick_row(d):
         names += by_base().get(alt, [])
     if not names:
         raise CatalogError(f"bearing: unknown name {d.text!r}; {suggest(d)}")
-    if d.base.startswith("7"):
+    if d.base.startswith(("7", "S")):
+        if d.base.startswith("S"):  # GMN's spindle bearings: the codes C and E are the rows' own
+            if d.angle_code is None:
+                raise CatalogError(f"bearing: {d.text!r} needs its contact-angle code; {suggest(d)}")
+            hit = [n for n in names if code_of(n) == d.angle_code]
+            if not hit:
+                raise CatalogError(f"bearing: no {d.base} with the angle code {d.angle_code} "
+                                   f"({d.contact_angle:g} deg) in the catalog; {suggest(d)}")
+            return hit[0]
         if d.angle_code is None:
             raise CatalogError(f"bearing: {d.text!r} needs its contact-angle code; {suggest(d)}")
         codes = _ROW_CODES[d.angle_code]
@@ -338,7 +352,16 @@ def _apply_suffixes(d, row, name, kw, sources):
         kw["_ball_material"] = d.ball_material
         sources["ball_material"] = (f"designation suffix of {d.text!r}: balls of silicon nitride (hybrid bearing); "
                                     f"the ratings are the catalog's, of the all-steel {row['maker_designation'] or name}")
-    if d.preload_class:
+    if d.preload_class in ("UL", "UM", "US"):
+        kw["preload_class"] = d.preload_class
+        key = {"UL": "preload_light_N", "UM": "preload_medium_N", "US": "preload_heavy_N"}[d.preload_class]
+        if _maker(row) != "GMN" or row[key] is None:
+            raise InputError(f"bearing: the preload class {d.preload_class} of {d.text!r} is GMN's (universal "
+                             f"matching); {row['maker_designation'] or name} has no such preload in the catalog")
+        kw["preload"] = row[key] * 1.0
+        sources["preload"] = (f"{row['source_ratings'].split(':')[0]}: preload Fv of {d.preload_class} "
+                              f"({row[key]:g} N)")
+    elif d.preload_class:
         kw["preload_class"] = d.preload_class
         bounds = skf_preload(d.preload_class, row["bore_mm"]) if d.preload_class in ("GA", "GB", "GC") else None
         if d.preload_class in ("GA", "GB", "GC") and not (row["type"] == "angular" and _maker(row) == "SKF"):
