@@ -78,6 +78,10 @@ def document(parsed, *, catalog=None):
     with reading(parsed):
         names_given = _names(v["bearing"])
         bl = [_catalog.get(name, catalog=catalog) for name in names_given]
+        from ..bearing import check_model
+
+        for b in bl:
+            check_model(b, "bearing-set")
         notes = [n for b in bl for n in _catalog.provenance_notes(b)]
         arrangement = choice("arrangement", text("arrangement") or "DB", tuple(sets.ARRANGEMENTS))
         s = None if text("spacing") is None else parse_length(text("spacing"), "spacing", zero=True)

@@ -33,7 +33,8 @@ _ESTIMATED = ("estimated by the rule of bearinglab.estimation from d, D and B (s
 # angle code written -> the codes of the catalog rows that stand for it, best first
 _ROW_CODES = {"BE": ("BE", "B"), "BECBP": ("BE", "B"), "BECBM": ("BE", "B"), "BECBY": ("BE", "B"),
               "BEP": ("BE", "B"), "BEY": ("BE", "B"), "BEM": ("BE", "B"), "B": ("B", "BE"), "BW": ("B", "BE"),
-              "A5": ("A5", "ACD"), "AC": ("A5", "ACD"), "ACD": ("A5", "ACD"), "A": ("A",), "C": ("C", "CD"),
+              "A5": ("A5", "ACD", "AC"), "AC": ("A5", "ACD", "AC"), "ACD": ("A5", "ACD", "AC"), "A": ("A",),
+              "C": ("C", "CD"),
               "CD": ("C", "CD")}
 
 
