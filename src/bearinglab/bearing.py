@@ -138,6 +138,17 @@ def max_balls(ball_diameter, pitch_diameter):
 def covers(bearing, model):
     """Whether ``model`` (a key of :data:`MODEL_TYPES`) covers the type of ``bearing``.
 
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing.
+    model : str
+        A key of :data:`MODEL_TYPES`.
+
+    Returns
+    -------
+    bool
+
     Examples
     --------
     >>> covers(BallBearing(type="thrust"), "load-distribution"), covers(BallBearing(), "bearing-set")
