@@ -141,6 +141,21 @@ def test_sealed_only_series_are_sealed_and_say_so():
     assert (b.seal, b.seals) == ("RS1", 2) and "sealed only" in b.sources["seal"]
 
 
+@pytest.mark.parametrize(("name", "why"), [
+    ("2210 E-2RS1", "lower ratings"),  # SKF p. 492: 2210 E-2RS1TN9 C = 22.9 kN, the open 2210 ETN9 33.8 kN
+    ("4208 A-2RS1", "no sealed double row deep groove"), ("QJ 208-2Z", "not sealed"), ("51208-2RS", "not sealed")])
+def test_seals_that_would_take_the_open_bearings_ratings_are_refused(name, why):
+    with pytest.raises(InputError, match=why):
+        catalog.get(name)
+
+
+def test_sealed_double_row_angular_bearing_has_the_open_ones_ratings():
+    # SKF p. 446: 3205 A-2RS1 C 21.6 kN, C0 14.3 kN, Pu 0.6 kN, as the open 3205 ATN9 (p. 442)
+    b, open_ = catalog.get("3205 A-2RS1"), catalog.get("3205 A")
+    assert (b.seal, b.seals) == ("RS1", 2)
+    assert b.dynamic_load_rating == open_.dynamic_load_rating == pytest.approx(21.6e3)
+
+
 # ---------------------------------------------------------------------------------- SKF friction constants
 def test_skf_friction_of_self_aligning_and_thrust_bearings_by_hand():
     # SKF GC 6000/I (2006): table 2a (self-aligning: G_rr = R1 dm^2 (Fr + Fg + R2 Fa)^0.54, Fg = R3 dm^3.5 n^2;

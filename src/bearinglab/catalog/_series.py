@@ -242,6 +242,18 @@ _SKF_PRELOAD = ((10, 18, (80, 30, 330, 230, 660)), (18, 30, (120, 40, 480, 340, 
 _PRELOAD_SOURCE = ("SKF General Catalogue 6000/I RU (2006), single row angular contact ball bearings, table 2, "
                    "p. 412 (universally matchable bearings, back-to-back or face-to-face, before mounting)")
 
+# types whose sealed bearings are not the open row with seals: SKF prints the sealed self-aligning bearings
+# (2200 E-2RS1TN9 ...) as other bearings with lower ratings (p. 492: 2210 E-2RS1TN9 C = 22.9 kN, the open
+# 2210 ETN9 33.8 kN), and lists no sealed bearing of the other types (sealed 32 A / 33 A, p. 446, and the
+# single-row deep groove bearings have the open bearing's C, C0, Pu, so they are taken)
+_UNSEALED = {
+    "self-aligning": "SKF's sealed self-aligning ball bearings (E-2RS1TN9, p. 492) are other bearings with "
+                     "lower ratings, not in the catalog",
+    "double-row-radial": "no sealed double row deep groove ball bearing is in the sources used",
+    "four-point": "four-point contact ball bearings are not sealed",
+    "thrust": "thrust ball bearings are not sealed",
+}
+
 
 def skf_preload(preload_class, bore_mm):
     """(minimum, maximum) preload [N] of SKF's class GA, GB or GC for a bore d [mm], or None outside the
@@ -346,6 +358,9 @@ def _apply_suffixes(d, row, name, kw, sources):
     maker's data answers it."""
     from .. import designation
 
+    if d.seal and row["type"] in _UNSEALED:
+        raise InputError(f"bearing: the seal {d.seal} of {d.text!r}: {_UNSEALED[row['type']]}; the catalog has the "
+                         f"open {row['maker_designation'] or name} only")
     if d.tolerance_class:
         kw["tolerance_class"] = d.tolerance_class
         sources["tolerance_class"] = f"designation suffix of {d.text!r}"
