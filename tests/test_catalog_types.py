@@ -84,6 +84,17 @@ def test_the_json_type_words(name, word, capsys):
     assert hits and {h["type"] for h in hits} == {word}
 
 
+def test_catalog_list_by_type(capsys):
+    assert main(["catalog", "list", "--type", "four-point", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert len(rows) == 46 and {r["name"][:3] for r in rows} == {"QJ "}  # QJ 2 (23) and QJ 3 (23), pp. 456-459
+    assert main(["catalog", "list", "--type", "deep-groove", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert {r["type"] for r in rows} == {"radial"} and {"6208", "6208 ETN9", "62208", "6408"} <= {r["name"] for r in rows}
+    assert main(["catalog", "list", "--type", "ball"]) == 2
+    assert "type must be one of" in capsys.readouterr().err
+
+
 def _life(name, fx, fz):
     from bearinglab.life import rating_life
 

@@ -57,14 +57,22 @@ def _length(text, name):
     return parse_length(text, name)
 
 
+_TYPE_HELP = ("deep-groove, angular, four-point, double-row-angular, double-row-radial, self-aligning or "
+              "thrust (any type word of the catalog).")
+
+
 @catalog_app.command("list")
-def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False):
-    """List the bearings known."""
+def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False,
+                 type: Annotated[str | None, typer.Option("--type", help=_TYPE_HELP)] = None):
+    """List the bearings known (of one type with --type)."""
     from .. import catalog as _catalog
     from .. import tables
     from ..catalog import _series
     if catalog is not None:
         check_input(catalog, "catalog")
+    known_types = _series.types()
+    if type is not None and type not in known_types:
+        raise InputError(f"type must be one of {[t for t in known_types if t != 'radial']}, got {type!r}")
     known = _catalog.aliases(catalog=catalog)
     listing = _series.listing()
     user = set(_catalog._user_entries(catalog))
@@ -79,6 +87,8 @@ def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False):
         else:
             rows.append(dict(tables.catalog_entry(name, _catalog.get(name, catalog=catalog)),
                              aliases=known.get(name, []), estimated=False))
+    if type is not None:  # the row's own word (radial) or its listing word (deep-groove)
+        rows = [r for r in rows if known_types[type] in (r["type"], known_types.get(r["type"], r["type"]))]
     if json_out:
         emit_json(rows)
         return
@@ -146,9 +156,7 @@ _SearchLength = Annotated[str | None, typer.Option(help="e.g. '40 mm' (a number 
 @catalog_app.command("search")
 def catalog_search(bore: _SearchLength = None, outside_diameter: _SearchLength = None,
                    width: _SearchLength = None,
-                   type: Annotated[str | None, typer.Option("--type", help=(
-                       "deep-groove, angular, four-point, double-row-angular, double-row-radial, "
-                       "self-aligning or thrust."))] = None,
+                   type: Annotated[str | None, typer.Option("--type", help=_TYPE_HELP)] = None,
                    series: Annotated[str | None, typer.Option(help="Series, e.g. 62, 618, 72, 72B, 79C.")] = None,
                    json_out: JsonFlag = False):
     """Find standard-series bearings by boundary dimensions, type and series."""
