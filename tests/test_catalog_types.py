@@ -84,6 +84,11 @@ def test_the_json_type_words(name, word, capsys):
     assert hits and {h["type"] for h in hits} == {word}
 
 
+def test_search_series_as_written():
+    assert catalog.search(bore=0.040, series="QJ 2") == catalog.search(bore=0.040, series="QJ2")
+    assert [h["name"] for h in catalog.search(bore=0.040, series="32 A")] == ["3208 A"]
+
+
 def test_catalog_list_by_type(capsys):
     assert main(["catalog", "list", "--type", "four-point", "--json"]) == 0
     rows = json.loads(capsys.readouterr().out)

@@ -442,6 +442,8 @@ def search(*, bore=None, outside_diameter=None, width=None, type=None, series=No
     known = types()
     if type is not None and type not in known:
         raise InputError(f"type must be one of {[t for t in known if t != 'radial']}, got {type!r}")
+    if series is not None:
+        series = "".join(str(series).split()).upper()  # "QJ 2", "32 a" as the rows write them: QJ2, 32A
     out = []
     for name, r in records().items():
         if not (_within(r["bore_mm"] / 1e3, bore, tolerance)

@@ -57,6 +57,13 @@ def _length(text, name):
     return parse_length(text, name)
 
 
+def _two_lines(word):
+    """A long type word broken after its last hyphen (``double-row-`` over ``angular``), so that the
+    list's table fits 80 columns."""
+    head, hyphen, tail = word.rpartition("-")
+    return f"{head}-\n{tail}" if hyphen and len(word) > 10 else word
+
+
 _TYPE_HELP = ("deep-groove, angular, four-point, double-row-angular, double-row-radial, self-aligning or "
               "thrust (any type word of the catalog).")
 
@@ -94,7 +101,8 @@ def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False,
         return
     # the aliases beside the name, in brackets: eight columns fit 80 (--json lists them apart)
     table("Bearings", ["name (aliases)", "type", "Z", "D [mm]", "d_m [mm]", "α0 [deg]", "bore × OD [mm]"], [
-        [" ".join([r["name"], *(f"({', '.join(r['aliases'])})" for _ in r["aliases"][:1])]), r["type"],
+        [" ".join([r["name"], *(f"({', '.join(r['aliases'])})" for _ in r["aliases"][:1])]),
+         _two_lines(r["type"]),
          f"{r['balls']}*" if r["estimated"] else (r["balls"] or ""),
          _fmt(r["ball_diameter_mm"]) + ("*" if r["estimated"] else ""), _fmt(r["pitch_diameter_mm"]),
          _fmt(r["contact_angle_deg"]), f"{_fmt(r['bore_mm'])} × {_fmt(r['outside_diameter_mm'])}"] for r in rows],
