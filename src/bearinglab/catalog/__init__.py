@@ -597,8 +597,10 @@ def search(*, bore=None, outside_diameter=None, width=None, type=None, series=No
 
     Examples
     --------
-    >>> [r["name"] for r in search(bore=0.040, outside_diameter=0.080)]
-    ['6208', '7208 BE', '7208 A', '7208 B', '7208 C', '7208 ACD']
+    >>> [r["name"] for r in search(bore=0.040, outside_diameter=0.080, type="angular")]
+    ['7208 BE', '7208 A', '7208 B', '7208 C', '7208 ACD', 'S 6208 C', 'S 6208 E']
+    >>> [(r["name"], r["type"]) for r in search(bore=0.040, outside_diameter=0.080, width=0.018, series="QJ2")]
+    [('QJ 208', 'four-point')]
     """
     from . import _series
 
