@@ -174,7 +174,8 @@ GOOD = {
             {"bore": 13e-3, "outside_diameter": 5e-3},
             r"outside_diameter must be > bore \[mm\], got 5 mm with bore = 13 mm",
         ),
-        ({"type": "thrust"}, r"type must be one of \['radial', 'angular'\], got 'thrust'"),
+        ({"type": "magneto"}, (r"type must be one of \['radial', 'angular', 'four-point', 'double-row-angular', "
+                               r"'double-row-radial', 'self-aligning', 'thrust'\], got 'magneto'")),
         (
             {"contact_angle": math.radians(90)},
             r"contact_angle must be in \[0, 90\) \[deg\], got 90.0",

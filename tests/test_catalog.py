@@ -282,7 +282,7 @@ ENTRY = '[bearings."BAD-1"]\nballs = 7\nball_diameter = "2 mm"\npitch_diameter =
             r"radial_clearance must be in \(0, 0.32\) \[mm\] to give a real contact angle",
         ),
         ('ball_material = "wood"\n', "ball_material", r"unknown material 'wood'"),
-        ('type = "thrust"\n', "type", r"type must be one of \['radial', 'angular'\]"),
+        ('type = "magneto"\n', "type", r"type must be one of \['radial', 'angular', 'four-point'"),
         ('static_load_rating = "392 mm"\n', "static_load_rating", r"expected a force"),
         (
             'hertz_table = { inner = "x" }\n',

@@ -79,12 +79,26 @@ def document(parsed, *, catalog=None):
     with failures(parsed):
         names_given = _names(v["bearing"])
         bl = [_catalog.get(name, catalog=catalog) for name in names_given]
+        from ..bearing import check_model
+
+        for b in bl:
+            check_model(b, "bearing-set")
         notes = [n for b in bl for n in _catalog.provenance_notes(b)]
         arrangement = choice("arrangement", text("arrangement") or "DB", tuple(sets.ARRANGEMENTS))
         s = None if text("spacing") is None else parse_length(text("spacing"), "spacing", zero=True)
         if text("preload") is not None and text("preload_offset") is not None:
             raise InputError("preload: give --preload or --preload-offset, not both")
         fp = 0.0 if text("preload") is None else parse_quantity(text("preload"), "force", "preload")
+        classes = {(b.preload_class, b.preload) for b in bl}
+        if text("preload") is None and text("preload_offset") is None and len(classes) == 1:
+            cls, value = classes.pop()
+            if value is not None:  # issue 30: the preload class of the designation (GA, GB, GC), by SKF's table
+                fp = value
+                notes.append(f"preload: {fp:g} N of the class {cls} of {bl[0].designation} "
+                             f"({bl[0].sources.get('preload', 'the maker table')})")
+            elif cls is not None:
+                notes.append(f"preload: the class {cls} of {bl[0].designation} has no preload in the catalog; give "
+                             "--preload (the set is solved without)")
         if not fp >= 0:
             raise InputError(f"preload must be >= 0 [N] (an axial force at rest), got {fp:g} N")
         e = None if text("preload_offset") is None else parse_quantity(text("preload_offset"), "length",

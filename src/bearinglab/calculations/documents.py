@@ -158,6 +158,11 @@ def catalog_document(name, *, catalog=None, clearance=None, radial_clearance=Non
         info.update({k: v for k, v in extra.items() if k != "row"})
     for key in ("seal", "seals", "tolerance_class"):
         info[key] = getattr(b, key)
+    # issue 30: the maker's f0, the preload class of the designation and its preload, where there are
+    for key, value in (("calculation_factor_f0", b.static_load_factor), ("preload_class", b.preload_class),
+                       ("preload_N", b.preload)):
+        if value is not None:
+            info[key] = value
     info["iso5753_clearance"] = _clearance_range(b, clearance, radial_clearance)
     given = {k: getattr(b, k) for k in ("dynamic_load_rating", "static_load_rating", "fatigue_load_limit")}
     with warnings.catch_warnings(record=True) as caught:

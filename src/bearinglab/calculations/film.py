@@ -149,6 +149,9 @@ def _document(parsed, bearing_file, catalog):
     geometry = {k: (v[k] if k in ("balls", "inner_conformity", "outer_conformity") else text(k))
                 for k in _GEOMETRY if k in parsed.given}
     b = resolve_bearing(text("bearing"), bearing_file, catalog, **geometry)
+    from ..bearing import check_model
+
+    check_model(b, "film")
     loads = five_loads(*(text(k) for k in ("fx", "fy", "fz", "mx", "my", "radial_load", "axial_load")))
     speed = text("speed")
     if speed is None:

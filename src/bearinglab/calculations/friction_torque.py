@@ -131,6 +131,9 @@ def _torque(radial_load, axial_load, speed, model, bearing, bearing_file, catalo
         mean_diameter,
         static_load_rating,
     )
+    if b.type not in ("radial", "angular"):  # the handbook constants are for these two types only
+        raise InputError(f"model: the {model} model's handbook constants are for deep-groove and angular-contact "
+                         f"bearings; {b.designation!r} is a {b.type} bearing: give --model skf")
     fr, fa, n = _cases(radial_load, axial_load, speed)
     _check_speed(b, n)
     angle = b.contact_angle if b.type == "angular" else None
@@ -308,14 +311,23 @@ def _skf_bearing(b, series):
     never taken as 'not given'."""
     from .. import friction
 
-    if b.type != "radial":  # angular contact: SKF's constants of the type (40 deg; others refused there)
+    if b.type == "self-aligning":  # SKF's constants by self-aligning series (table 3b)
+        value = series if series is not None else b.series
+        known = list(friction.SELF_ALIGNING_CONSTANTS)
+        if value is None or value.strip() not in known:
+            raise InputError(f"series must be one of {known} (SKF's self-aligning series) for {b.designation!r}, "
+                             f"got {value!r}")
+        return dataclasses.replace(b, series=value.strip())
+    if b.type not in ("radial", "double-row-radial"):  # SKF's constants of the type (single row: 40 deg)
         if series is not None:
             raise InputError(f"series: --series names SKF's deep-groove series; {b.designation!r} is {b.type}, "
                              f"whose constants are SKF's for its type")
-        try:  # the model, not a field, is what does not apply (the web page leaves the section out)
-            friction.angular_contact_constants(b.contact_angle)
-        except InputError as exc:
-            raise InputError(f"model: {exc}") from None
+        design = friction.SKF_BEARING_TYPES[b.type][0]
+        if design not in ("thrust",):
+            try:  # the model, not a field, is what does not apply (the web page leaves the section out)
+                friction.angular_contact_constants(b.contact_angle, design=design)
+            except InputError as exc:
+                raise InputError(f"model: {exc}") from None
         return b
     known = list(friction.DEEP_GROOVE_CONSTANTS)
     for name, value in (("series", series), (f"series of {b.designation!r}", b.series)):

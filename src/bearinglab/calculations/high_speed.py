@@ -77,6 +77,9 @@ def compute(parsed, *, bearing_file=None, catalog=None, execution=None, check=No
     from ..units import RPM
     with failures(parsed, options=False):  # messages in the command line's words (_failures)
         b = inp.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
+        from ..bearing import check_model
+
+        check_model(b, "high-speed")
         options = _model_options(inp.value(parsed, "solver", "newton"), inp.value(parsed, "raceway_control", "outer"),
                                  inp.value(parsed, "constants", "mass"),
                                  inp.value(parsed, "gyroscopic_sign", "physical"), inp.text(parsed, "reduced_modulus"))

@@ -85,6 +85,9 @@ def document(parsed, *, catalog=None, bearing_file=None, speeds=False):
         b = resolve_bearing(text("bearing"), bearing_file, catalog, v.get("balls"), *map(text, _GEOMETRY),
                             v.get("inner_conformity"), v.get("outer_conformity"), text("contact_angle"),
                             text("radial_clearance"), text("ball_material"))
+        from ..bearing import check_model
+
+        check_model(b, "load-distribution")  # the types the model covers (issue 30): a refusal in one line
         notes = _catalog.provenance_notes(b)
         loads = five_loads(*map(text, _LOADS))
         held = _held([text(n.replace("-", "_")) for _, _, n, _ in _FREEDOMS],

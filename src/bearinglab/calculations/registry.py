@@ -100,6 +100,9 @@ GROUPS = {
     "mounting": "Mounting: fits and seats", "mounting temperatures": "Mounting: temperatures (default 20 degC)",
     "monte carlo": "Monte Carlo", "rotation": "Rotation",
 }
+#: The bearing types a catalog search takes (the ``type`` words of the rows, deep-groove for ``radial``).
+CATALOG_TYPES = ("deep-groove", "angular", "four-point", "double-row-angular", "double-row-radial", "self-aligning",
+                 "thrust")
 
 
 _GEO = "geometry"
@@ -419,13 +422,14 @@ _CALCS = (
         "sizes within 0.5 mm; ``query`` and ``limit`` are the picker's alone).",
         (_f("query", "text", "Part of a designation or alias, e.g. 62.", label="Designation",
             default="", cli=False),
-         _f("bore", "length", "Bore d, e.g. '40 mm'.", label="Bore d", unit="mm", minimum=0,
-            exclusive=True),
-         _f("outside_diameter", "length", "Outside diameter D, e.g. '80 mm'.", label="Outside diameter",
+         _f("bore", "length", "Bore d, e.g. '25 mm' (matches within 0.5 mm).", label="Bore d",
             unit="mm", minimum=0, exclusive=True),
-         _f("width", "length", "Width B, e.g. '18 mm'.", label="Width B", unit="mm", minimum=0,
-            exclusive=True),
-         _f("type", "choice", "deep-groove | angular.", label="Type", choices=("deep-groove", "angular")),
+         _f("outside_diameter", "length", "Outside diameter D (matches within 0.5 mm).",
+            label="Outside diameter", unit="mm", minimum=0, exclusive=True),
+         _f("width", "length", "Width B (matches within 0.5 mm).", label="Width B", unit="mm",
+            minimum=0, exclusive=True),
+         _f("type", "choice", "deep-groove, angular, four-point, double-row-angular, double-row-radial, "
+            "self-aligning or thrust.", label="Type", choices=CATALOG_TYPES),
          _f("series", "text", "Series, e.g. 62, 618, 72, 72B, 79C.", label="Series"),
          _f("limit", "int", "The most matches returned.", label="Matches", default=50, minimum=1,
             maximum=500, cli=False)),),

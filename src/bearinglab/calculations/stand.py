@@ -38,6 +38,9 @@ def document(parsed, *, bearing_file=None, catalog=None):
     """
     with failures(parsed, options=False):  # messages in the command line's words (_failures)
         b = inp.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
+        from ..bearing import check_model
+
+        check_model(b, "axial-angle")
         out = (_axial_angle if parsed.calculation.name == "axial-angle" else _stand_load)(parsed, b)
     return inp.notes_in(out, b)
 

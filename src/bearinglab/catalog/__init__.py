@@ -512,27 +512,48 @@ def provenance_notes(bearing):
     Returns
     -------
     list of str
-        One note naming the estimated fields and how to give measured values, and one for a user entry
-        that overrides a built-in bearing; empty when there is nothing to say.
+        One note naming the estimated fields once and how to give measured values (at most two lines of
+        80 columns after ``warning:``), one where another maker's data answers the designation, one for
+        a user entry that overrides a built-in bearing; empty when there is nothing to say.
 
     Examples
     --------
     >>> provenance_notes(get("B218"))
     []
-    >>> print(provenance_notes(get("6208"))[0][:60])
-    6208: n_balls, ball_diameter, pitch_diameter, inner_conformi
+    >>> print(provenance_notes(get("6208"))[0])
+    6208: ball set, conformities, contact angle estimated, not published (docs: 'Estimated internal geometry'); measured values: --bearing-file
     """
     notes = []
     est = [f for f in getattr(bearing, "estimated_fields", ()) if f]
     if est:
-        notes.append(f"{bearing.designation}: {', '.join(est)} estimated, not published (bearinglab.estimation; "
-                     "its error is in the user guide, 'Estimated internal geometry'): results computed from "
-                     "them are estimates; give measured values in a user catalog (--catalog FILE) or a "
-                     "--bearing-file, or inline (--balls, --ball-diameter, ...)")
-    note = getattr(bearing, "sources", {}).get("catalog")
-    if note:
-        notes.append(f"{bearing.designation}: {note}")
+        # at most two lines of 80 columns after "warning: " (issue 30): a long name (a designation with the
+        # inline values that changed it) is said once, in the result's title, not here
+        name = bearing.designation if len(bearing.designation or "") <= 20 else "the bearing"
+        notes.append(f"{name}: {_estimated_words(est)} estimated, not published (docs: 'Estimated internal "
+                     "geometry'); measured values: --bearing-file")
+    sources = getattr(bearing, "sources", {})
+    for key in ("maker", "catalog"):
+        if sources.get(key):
+            notes.append(f"{bearing.designation}: {sources[key]}")
     return notes
+
+
+# groups of estimated fields named once in the note (the whole ball set, both conformities)
+_FIELD_GROUPS = ((("n_balls", "ball_diameter", "pitch_diameter"), "ball set"),
+                 (("inner_conformity", "outer_conformity"), "conformities"),
+                 (("contact_angle",), "contact angle"), (("radial_clearance",), "clearance"))
+
+
+def _estimated_words(fields):
+    """The estimated fields, a whole group by its name (``ball set``), the others by their own."""
+    left, words = list(dict.fromkeys(fields)), []
+    for group, word in _FIELD_GROUPS:
+        if all(f in left for f in group) and (len(group) > 1 or word != "clearance" or "contact_angle" not in fields):
+            words.append(word)
+            left = [f for f in left if f not in group]
+    # the clearance of an angular bearing follows from its estimated angle and conformities: named once
+    words += [f for f in left if f != "radial_clearance" or "contact angle" not in words]
+    return ", ".join(words)
 
 
 def details(name):
@@ -568,8 +589,9 @@ def search(*, bore=None, outside_diameter=None, width=None, type=None, series=No
     ----------
     bore, outside_diameter, width : float, optional
         d, D, B to match (within ``tolerance``). [m]
-    type : {"deep-groove", "angular"}, optional
-        Bearing type.
+    type : str, optional
+        Bearing type as listings show it: ``deep-groove`` (or ``radial``), ``angular``, ``four-point``,
+        ``double-row-angular``, ``double-row-radial``, ``self-aligning``, ``thrust`` (the types of the rows).
     series : str, optional
         Series such as ``"62"``, ``"618"``, ``"72"`` (every angle code), ``"72B"``, ``"79C"``.
     tolerance : float
@@ -578,14 +600,16 @@ def search(*, bore=None, outside_diameter=None, width=None, type=None, series=No
     Returns
     -------
     list of dict
-        One per bearing: ``name``, ``type`` (``deep-groove`` or ``angular``), ``series``, ``bore_mm``,
+        One per bearing: ``name``, ``type`` (``deep-groove``, ``angular``, ``thrust`` ...), ``series``, ``bore_mm``,
         ``outside_diameter_mm``, ``width_mm``, ``contact_angle_deg``, ``dynamic_load_rating_kN``,
         ``static_load_rating_kN``, ``maker_designation``; ordered by bore, then outside diameter.
 
     Examples
     --------
-    >>> [r["name"] for r in search(bore=0.040, outside_diameter=0.080)]
-    ['6208', '7208 BE', '7208 A', '7208 B', '7208 C', '7208 ACD']
+    >>> [r["name"] for r in search(bore=0.040, outside_diameter=0.080, type="angular")]
+    ['7208 BE', '7208 A', '7208 B', '7208 C', '7208 ACD', 'S 6208 C', 'S 6208 E']
+    >>> [(r["name"], r["type"]) for r in search(bore=0.040, outside_diameter=0.080, width=0.018, series="QJ2")]
+    [('QJ 208', 'four-point')]
     """
     from . import _series
 
@@ -593,7 +617,7 @@ def search(*, bore=None, outside_diameter=None, width=None, type=None, series=No
     for name in _series.search(bore=bore, outside_diameter=outside_diameter, width=width, type=type,
                                series=series, tolerance=tolerance):
         r = _series.records()[name]
-        out.append({"name": name, "type": "deep-groove" if r["type"] == "radial" else "angular",
+        out.append({"name": name, "type": _series.display_type(r["type"]),
                     "series": r["series"], "bore_mm": r["bore_mm"], "outside_diameter_mm": r["outside_diameter_mm"],
                     "width_mm": r["width_mm"], "contact_angle_deg": r["contact_angle_deg"],
                     "dynamic_load_rating_kN": r["dynamic_load_rating_kN"],

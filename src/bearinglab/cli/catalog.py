@@ -6,6 +6,7 @@ COMMANDS   the ``catalog`` command group, by name (the application adds it)
 """
 
 import re
+from typing import Annotated
 
 import typer
 
@@ -56,14 +57,29 @@ def _length(text, name):
     return parse_length(text, name)
 
 
+def _two_lines(word):
+    """A long type word broken after its last hyphen (``double-row-`` over ``angular``), so that the
+    list's table fits 80 columns."""
+    head, hyphen, tail = word.rpartition("-")
+    return f"{head}-\n{tail}" if hyphen and len(word) > 10 else word
+
+
+_TYPE_HELP = ("deep-groove, angular, four-point, double-row-angular, double-row-radial, self-aligning or "
+              "thrust (any type word of the catalog).")
+
+
 @catalog_app.command("list")
-def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False):
-    """List the bearings known."""
+def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False,
+                 type: Annotated[str | None, typer.Option("--type", help=_TYPE_HELP)] = None):
+    """List the bearings known (of one type with --type)."""
     from .. import catalog as _catalog
     from .. import tables
     from ..catalog import _series
     if catalog is not None:
         check_input(catalog, "catalog")
+    known_types = _series.types()
+    if type is not None and type not in known_types:
+        raise InputError(f"type must be one of {[t for t in known_types if t != 'radial']}, got {type!r}")
     known = _catalog.aliases(catalog=catalog)
     listing = _series.listing()
     user = set(_catalog._user_entries(catalog))
@@ -78,12 +94,15 @@ def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False):
         else:
             rows.append(dict(tables.catalog_entry(name, _catalog.get(name, catalog=catalog)),
                              aliases=known.get(name, []), estimated=False))
+    if type is not None:  # the row's own word (radial) or its listing word (deep-groove)
+        rows = [r for r in rows if known_types[type] in (r["type"], known_types.get(r["type"], r["type"]))]
     if json_out:
         emit_json(rows)
         return
     # the aliases beside the name, in brackets: eight columns fit 80 (--json lists them apart)
     table("Bearings", ["name (aliases)", "type", "Z", "D [mm]", "d_m [mm]", "α0 [deg]", "bore × OD [mm]"], [
-        [" ".join([r["name"], *(f"({', '.join(r['aliases'])})" for _ in r["aliases"][:1])]), r["type"],
+        [" ".join([r["name"], *(f"({', '.join(r['aliases'])})" for _ in r["aliases"][:1])]),
+         _two_lines(r["type"]),
          f"{r['balls']}*" if r["estimated"] else (r["balls"] or ""),
          _fmt(r["ball_diameter_mm"]) + ("*" if r["estimated"] else ""), _fmt(r["pitch_diameter_mm"]),
          _fmt(r["contact_angle_deg"]), f"{_fmt(r['bore_mm'])} × {_fmt(r['outside_diameter_mm'])}"] for r in rows],

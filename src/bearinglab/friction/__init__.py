@@ -12,6 +12,7 @@ SKF four-term model (:mod:`.skf`)
 skf, skf_for_bearing                   M = M_rr + M_sl + M_seal + M_drag
 series_constants, bearing_series, seal_constants, sliding_friction_coefficient   its parts and tables
 angular_contact_constants              SKF's constants of an angular-contact type (single row 40 deg, ...)
+self_aligning_constants                SKF's constants of a self-aligning series (12, 13, 22, 23, ...)
 inlet_shear_heating_factor, replenishment_factor   Phi_ish and Phi_rs
 drag_moment                            M_drag of an oil bath
 
@@ -60,7 +61,9 @@ from .skf import (
     DEEP_GROOVE_CONSTANTS,
     LUBRICATION_METHODS,
     SEAL_CONSTANTS,
+    SELF_ALIGNING_CONSTANTS,
     SKF_BEARING_TYPES,
+    THRUST_BALL_CONSTANTS,
     SealConstants,
     SKFConstants,
     SKFTorque,
@@ -70,6 +73,7 @@ from .skf import (
     inlet_shear_heating_factor,
     replenishment_factor,
     seal_constants,
+    self_aligning_constants,
     series_constants,
     skf,
     skf_for_bearing,
@@ -107,9 +111,11 @@ __all__ = [
     "ROLLER_SEAL_CONSTANTS",
     "ROLLER_TYPE_CONSTANTS",
     "SEAL_CONSTANTS",
+    "SELF_ALIGNING_CONSTANTS",
     "SKF_BEARING_TYPES",
     "SPHERICAL_CONSTANTS",
     "TAPERED_CONSTANTS",
+    "THRUST_BALL_CONSTANTS",
     "LoadTermConstants",
     "RollerConstants",
     "SKFConstants",
@@ -133,6 +139,7 @@ __all__ = [
     "roller_drag_moment",
     "roller_series_constants",
     "seal_constants",
+    "self_aligning_constants",
     "series_constants",
     "skf",
     "skf_for_bearing",

@@ -792,6 +792,9 @@ def combined_analysis(bearing, loads, shaft_speed=0.0, *, reduced_modulus=None, 
     >>> print(f"{math.degrees(r.contact_angle_inner[0]):.3f} / {math.degrees(r.contact_angle_outer[0]):.3f} deg")
     49.310 / 32.510 deg
     """
+    from ..bearing import check_model
+
+    check_model(bearing, "load-distribution")
     options.setdefault("bearing_type", bearing.type)
     return load_distribution(loads, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
 

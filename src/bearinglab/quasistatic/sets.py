@@ -339,6 +339,10 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
     >>> print(f"{s.bearing_loads[0, 2]:.1f} N, {s.bearing_loads[1, 2]:.1f} N")
     2000.0 N, -2000.0 N
     """
+    from ..bearing import check_model
+
+    for b in (bearings if isinstance(bearings, (list, tuple)) else [bearings]):
+        check_model(b, "bearing-set")
     bl = [bearings] if not isinstance(bearings, (list, tuple)) else list(bearings)
     orient, _ = arrangement(arrangement_kind, 0.0, 2 if len(bl) == 1 else len(bl))
     bl = bl * len(orient) if len(bl) == 1 else bl

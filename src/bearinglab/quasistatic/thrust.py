@@ -479,6 +479,9 @@ def high_speed_analysis(bearing, axial_load, shaft_speed, *, reduced_modulus=Non
     ...       f"mu = {s.friction_coefficient:.3f}")
     56.099 / 21.121 deg, mu = 0.086
     """
+    from ..bearing import check_model
+
+    check_model(bearing, "high-speed")
     return contact_angles(axial_load, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
 
 
@@ -513,6 +516,9 @@ def sign_change_thrust(bearing, shaft_speed, *, reduced_modulus=None, **options)
     >>> print(np.round(f / 1e3, 2))
     [ 2.31 26.81]
     """
+    from ..bearing import check_model
+
+    check_model(bearing, "high-speed")
     return zero_displacement_thrust(shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
 
 
@@ -587,6 +593,9 @@ def sweep(bearing, axial_loads, shaft_speeds, *, execution=None, reduced_modulus
     [[40.662 27.947]
      [41.609 38.504]]
     """
+    from ..bearing import check_model
+
+    check_model(bearing, "high-speed")
     fa = np.atleast_1d(check_positive("axial_loads", axial_loads, "N"))
     w = np.atleast_1d(_speed("shaft_speeds", shaft_speeds))
     if fa.ndim != 1 or w.ndim != 1:

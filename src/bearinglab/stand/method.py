@@ -867,6 +867,9 @@ def stand_analysis(bearing, axial_load, *, hertz="exact", elastic_constant=None,
     >>> import math; print(f"{math.degrees(r.contact_angle):.5f} deg in {len(r.iterations)} rows")
     14.46761 deg in 4 rows
     """
+    from ..bearing import check_model
+
+    check_model(bearing, "axial-angle")
     z, d, dm, fi, fo, a0 = bearing.require("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity",
                                            "outer_conformity", "contact_angle")
     if not 0.0 < a0 < math.pi / 2:
