@@ -379,9 +379,10 @@ _CALCS = (
             label="Outside diameter", unit="mm", minimum=0, exclusive=True, group="bearing"),
          _f("width", "length", "Width B (matches within 0.5 mm).", label="Width B", unit="mm",
             minimum=0, exclusive=True, group="bearing"),
-         _f("type", "choice", "deep-groove | angular.", label="Type",
-            choices=("deep-groove", "angular"), group="bearing"),
-         _f("series", "text", "Series, e.g. 62, 618, 72, 72B, 79C.", label="Series", group="bearing"),
+         _f("type", "choice", "deep-groove | angular | cylindrical | tapered | spherical.", label="Type",
+            choices=("deep-groove", "angular", "cylindrical", "tapered", "spherical"), group="bearing"),
+         _f("series", "text", "Series, e.g. 62, 618, 72, 72B, 79C; 22, 302, 222.", label="Series",
+            group="bearing"),
          _f("limit", "int", "The most matches returned.", label="Matches", default=50, minimum=1,
             maximum=500, group="bearing"))),
     Calculation(

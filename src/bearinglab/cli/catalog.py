@@ -34,6 +34,7 @@ _FIELD_OF_KEY = {
     "total_curvature_B": "inner_conformity", "groove_distance_A_mm": "inner_conformity",
     "gamma": "ball_diameter", "contact_angle_deg": "contact_angle", "axial_play_mm": "inner_conformity",
     "radial_clearance_um": "radial_clearance",
+    "rollers": "rollers", "roller_diameter_mm": "roller_diameter", "roller_length_mm": "roller_length",
 }
 _LENGTH = re.compile(r"^\s*([0-9]*\.?[0-9]+(?:[eE][-+]?\d+)?)\s*(mm|m|um|µm|in)?\s*$")
 _TO_M = {"mm": 1e-3, None: 1e-3, "m": 1.0, "um": 1e-6, "µm": 1e-6, "in": 0.0254}
@@ -69,16 +70,27 @@ def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False):
     listing = _series.listing()
     user = set(_catalog._user_entries(catalog))
     rows = []
+    from ..catalog import _rollers
     for name in _catalog.names(catalog=catalog):
-        if name in listing and name not in user and not _catalog._is_builtin_entry(name):
+        if name in _rollers.records() and name not in user:  # built-in roller bearings: Z, D_we as listed
+            r = _rollers.listing(name)
+            rows.append(dict(r, balls=r.pop("rollers"), ball_diameter_mm=r.pop("roller_diameter_mm")))
+        elif name in listing and name not in user and not _catalog._is_builtin_entry(name):
             r = _series.records()[name]
             z, dw, dm, est = listing[name]
             rows.append({"name": name, "type": r["type"], "balls": z, "ball_diameter_mm": dw, "pitch_diameter_mm": dm,
                          "contact_angle_deg": r["contact_angle_deg"], "bore_mm": r["bore_mm"],
                          "outside_diameter_mm": r["outside_diameter_mm"], "aliases": [], "estimated": est})
         else:
-            rows.append(dict(tables.catalog_entry(name, _catalog.get(name, catalog=catalog)),
-                             aliases=known.get(name, []), estimated=False))
+            b = _catalog.get(name, catalog=catalog)
+            entry = (tables.catalog_entry(name, b) if not hasattr(b, "rollers") else  # a user's roller bearing
+                     {"name": name, "type": b.type, "balls": b.rollers,
+                      "ball_diameter_mm": b.roller_diameter and b.roller_diameter * 1e3,
+                      "pitch_diameter_mm": b.pitch_diameter and b.pitch_diameter * 1e3,
+                      "contact_angle_deg": None if b.contact_angle is None else b.contact_angle * 57.29577951308232,
+                      "bore_mm": b.bore and b.bore * 1e3, "outside_diameter_mm": b.outside_diameter and
+                      b.outside_diameter * 1e3})
+            rows.append(dict(entry, aliases=known.get(name, []), estimated=False))
     if json_out:
         emit_json(rows)
         return
@@ -86,9 +98,11 @@ def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False):
     table("Bearings", ["name (aliases)", "type", "Z", "D [mm]", "d_m [mm]", "α0 [deg]", "bore × OD [mm]"], [
         [" ".join([r["name"], *(f"({', '.join(r['aliases'])})" for _ in r["aliases"][:1])]), r["type"],
          f"{r['balls']}*" if r["estimated"] else (r["balls"] or ""),
-         _fmt(r["ball_diameter_mm"]) + ("*" if r["estimated"] else ""), _fmt(r["pitch_diameter_mm"]),
+         _fmt(r["ball_diameter_mm"]) + ("*" if r.get("diameter_estimated", r["estimated"]) else ""),
+         _fmt(r["pitch_diameter_mm"]),
          _fmt(r["contact_angle_deg"]), f"{_fmt(r['bore_mm'])} × {_fmt(r['outside_diameter_mm'])}"] for r in rows],
-          caption="* estimated ball set; catalog show NAME (or a designation) for every field and the ratings")
+          caption="Z, D: balls or rollers; * estimated set; catalog show NAME (or a designation) for every field "
+                  "and the ratings")
 
 
 _ClearanceChoice = Annotated[str | None, typer.Option(
@@ -146,8 +160,9 @@ _SearchLength = Annotated[str | None, typer.Option(help="e.g. '40 mm' (a number 
 @catalog_app.command("search")
 def catalog_search(bore: _SearchLength = None, outside_diameter: _SearchLength = None,
                    width: _SearchLength = None,
-                   type: Annotated[str | None, typer.Option("--type", help="deep-groove | angular.")] = None,
-                   series: Annotated[str | None, typer.Option(help="Series, e.g. 62, 618, 72, 72B, 79C.")] = None,
+                   type: Annotated[str | None, typer.Option(
+                       "--type", help="deep-groove | angular | cylindrical | tapered | spherical.")] = None,
+                   series: Annotated[str | None, typer.Option(help="Series, e.g. 62, 618, 72, 72B, 79C; 22, 302, 222.")] = None,
                    json_out: JsonFlag = False):
     """Find standard-series bearings by boundary dimensions, type and series."""
     from .. import catalog as _catalog

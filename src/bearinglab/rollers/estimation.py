@@ -64,7 +64,8 @@ class EstimatedRollerSet(NamedTuple):
 
 
 def estimate_roller_set(bore, outside_diameter, static_load_rating, *, width=None, bearing_type="cylindrical",
-                        axial_factor=None, ratio_limit=None, rows=1, roller_diameter=None, pitch_diameter=None):
+                        axial_factor=None, ratio_limit=None, rows=1, roller_diameter=None, pitch_diameter=None,
+                        contact_angle=None):
     r"""Estimate the roller set of a roller bearing from d, D, C0 (and Y or e of a tapered bearing).
 
     Parameters
@@ -78,11 +79,14 @@ def estimate_roller_set(bore, outside_diameter, static_load_rating, *, width=Non
     bearing_type : {"cylindrical", "tapered"}
         The type.
     axial_factor, ratio_limit : float, optional
-        Y or e of a tapered bearing, for its contact angle (one is needed). [-]
+        Y or e of a tapered bearing, for its contact angle (one is needed unless ``contact_angle`` is given;
+        e first: printed to two decimals it fixes the angle more closely than Y). [-]
     rows : int
         Rows of rollers. [-]
     roller_diameter, pitch_diameter : float, optional
         D_we and D_pw where they are known (from printed raceway diameters): used instead of rule 1. [m]
+    contact_angle : float, optional
+        The cup angle of a tapered bearing where it is known: used instead of rule 4. [rad]
 
     Returns
     -------
@@ -99,10 +103,12 @@ def estimate_roller_set(bore, outside_diameter, static_load_rating, *, width=Non
         raise InputError("bore, outside_diameter and static_load_rating must be > 0 with outside_diameter > bore, to "
                          "estimate the roller set [mm, kN]")
     if bearing_type == "tapered":
-        if axial_factor is not None:
-            alpha, how = math.atan(0.4 / float(axial_factor)), "alpha = atan(0.4 / Y)"
+        if contact_angle is not None:
+            alpha, how = float(contact_angle), "alpha as given"
         elif ratio_limit is not None:
             alpha, how = math.atan(float(ratio_limit) / 1.5), "alpha = atan(e / 1.5)"
+        elif axial_factor is not None:
+            alpha, how = math.atan(0.4 / float(axial_factor)), "alpha = atan(0.4 / Y)"
         else:
             raise InputError("axial_factor (Y) or ratio_limit (e) of the tapered bearing is needed to estimate its "
                              "contact angle")
@@ -159,6 +165,7 @@ def with_estimated_geometry(bearing):
     s = estimate_roller_set(bearing.bore, bearing.outside_diameter, bearing.static_load_rating, width=bearing.width,
                             bearing_type=bearing.type, axial_factor=bearing.axial_factor,
                             ratio_limit=bearing.ratio_limit, rows=bearing.rows,
+                            contact_angle=bearing.contact_angle if bearing.type == "tapered" else None,
                             roller_diameter=bearing.roller_diameter if bearing.pitch_diameter is not None else None,
                             pitch_diameter=bearing.pitch_diameter if bearing.roller_diameter is not None else None)
     changes, est = {}, []
