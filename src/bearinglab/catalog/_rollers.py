@@ -84,6 +84,7 @@ def records():
             r[key] = float(row[key]) if row[key] else None
         r["cages"] = tuple(c.strip() for c in row["cages"].split(",") if c.strip())
         r["aliases"] = tuple(a.strip() for a in row["aliases"].split(";") if a.strip())
+        r["explorer"] = row["explorer"] == "yes"
         out[row["designation"]] = r
     return out
 
@@ -411,7 +412,8 @@ def details(name):
         ``row``, ``maker_designation``, ``outer_ring_width_mm`` (C of a tapered bearing's cup),
         ``chamfer_mm`` (r1,2 min), ``chamfer_small_mm`` (r3,4 min), ``inner_raceway_diameter_mm`` (F),
         ``outer_raceway_diameter_mm`` (E), ``iso355_series``, ``reference_speed_rpm``, ``limiting_speed_rpm``,
-        ``mass_kg``, ``cages`` (the alternatives), ``aliases``; None where the catalogue gives none.
+        ``mass_kg``, ``cages`` (the alternatives), ``aliases``, ``performance_class`` (``"SKF Explorer"``,
+        whose ratings exceed ISO 281's); None where the catalogue gives none.
 
     Examples
     --------
@@ -424,7 +426,8 @@ def details(name):
             "inner_raceway_diameter_mm": r["inner_raceway_diameter_mm"],
             "outer_raceway_diameter_mm": r["outer_raceway_diameter_mm"], "iso355_series": r["iso355_series"] or None,
             "reference_speed_rpm": r["reference_speed_rpm"], "limiting_speed_rpm": r["limiting_speed_rpm"],
-            "mass_kg": r["mass_kg"], "cages": list(r["cages"]), "aliases": list(r["aliases"])}
+            "mass_kg": r["mass_kg"], "cages": list(r["cages"]), "aliases": list(r["aliases"]),
+            "performance_class": "SKF Explorer" if r["explorer"] else None}
 
 
 def summary(bearing):
