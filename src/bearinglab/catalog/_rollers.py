@@ -221,11 +221,8 @@ def _derived_fields(row):
 
 
 def _note(text, clause):
-    """The part of a ``derived`` text about one column."""
-    for part in text.split("; "):
-        if part.startswith(clause):
-            return part
-    return text
+    """The ``derived`` text of a row about one column (a row derives one column at most)."""
+    return text if text.startswith(clause) else ""
 
 
 def build(designation, parsed=None):
