@@ -395,8 +395,8 @@ def listing(name):
                             contact_angle=None if r["contact_angle_deg"] is None else math.radians(r["contact_angle_deg"]),
                             roller_diameter=0.5 * (e - f) * _MM if known else None,
                             pitch_diameter=0.5 * (e + f) * _MM if known else None)
-    out.update(rollers=s.rollers, roller_diameter_mm=round(s.roller_diameter / _MM, 4),
-               pitch_diameter_mm=round(s.pitch_diameter / _MM, 4), estimated=True, diameter_estimated=not known)
+    out.update(rollers=s.rollers, roller_diameter_mm=round(s.roller_diameter / _MM, 3),
+               pitch_diameter_mm=round(s.pitch_diameter / _MM, 3), estimated=True, diameter_estimated=not known)
     return out
 
 
