@@ -1,8 +1,6 @@
 """The slice model of a RollerBearing, its reactions, the estimated roller set and the built-in roller bearings."""
 
-import csv
 import math
-from importlib import resources
 
 import numpy as np
 import pytest

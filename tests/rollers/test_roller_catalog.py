@@ -252,7 +252,7 @@ def test_an_unknown_suffix_names_the_valid_ones_of_the_type():
 def test_search_by_type(kind, series, first, capsys):
     hits = catalog.search(bore=0.040, type=kind)
     assert hits and {h["type"] for h in hits} == {kind}
-    assert [h["name"] for h in catalog.search(bore=0.040, type=kind, series=series)][0] == first
+    assert next(h["name"] for h in catalog.search(bore=0.040, type=kind, series=series)) == first
     assert main(["catalog", "search", "--bore", "40 mm", "--type", kind, "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert [h["name"] for h in doc["bearings"]] == [h["name"] for h in hits]

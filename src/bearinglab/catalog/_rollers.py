@@ -30,7 +30,6 @@ import csv
 import functools
 import io
 import math
-import re
 from importlib import resources
 
 from ..errors import CatalogError, InputError
