@@ -41,8 +41,8 @@ __all__ = ["RULES", "EstimatedRollerSet", "estimate_roller_set", "with_estimated
 
 #: The rule constants: (value, where it comes from).
 RULES = {
-    "pitch_factor": (1.010, "median of (E + F)/(d + D) over 24 SKF sizes of series 2 and 3 that print F and E "
-                            "(1.0105 over the catalog's 46)"),
+    "pitch_factor": (1.010, ("median of (E + F)/(d + D) over 24 SKF sizes of series 2 and 3 that print F and "
+                             "E (1.0105 over the catalog's 46)")),
     "diameter_factor": (0.275, "median of (E - F)/(2 (D - d)) over the same 24 SKF sizes (0.2743 over the 46)"),
     "pitch_per_roller": (1.2, "assumption: a cage bar of a fifth of a roller diameter between rollers"),
 }
