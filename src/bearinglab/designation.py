@@ -4,6 +4,7 @@ Functions
 ---------
 parse          a designation -> Designation (base size, seals, clearance class, angle, tolerance class, ...)
 makers_of      the makers whose own suffixes a designation uses (to say when another maker's data answers it)
+parse_roller   a roller-bearing designation -> RollerDesignation (NU 208 ECP/C3, 30208 J2/Q, 22208 EK), or None
 
 Constants
 ---------
@@ -18,6 +19,7 @@ PRELOADS       preload classes of universally matchable bearings (GA, GB, GC) an
                classes (CA, CB, CC)
 ARRANGEMENTS   matched-set arrangements (DB, DF, DT), with a super-precision preload class (DBA ... DFC)
 MAKER_SUFFIXES suffixes used by one maker only -> that maker
+ROLLER_SUFFIXES  SKF's suffixes of cylindrical, tapered and spherical roller bearings, by type and kind
 
 Examples of what is read: ``6208-2RS1/C3``, ``6208 2RS C3``, ``6208ZZC3``, ``6205 DDU``, ``62/22-2Z``,
 ``7205 BECBP``, ``7205-B-TVP``, ``7014 CD/P4A``, ``71914 ACD``, and (issue 30) Schaeffler's
@@ -50,7 +52,8 @@ from typing import NamedTuple
 from .errors import InputError
 
 __all__ = ["ANGLES", "ARRANGEMENTS", "BALLS", "CAGES", "CLEARANCES", "DESIGNS", "MAKER_SUFFIXES", "PRELOADS",
-           "SEALS", "TOLERANCES", "Designation", "makers_of", "parse"]
+           "ROLLER_SUFFIXES", "SEALS", "TOLERANCES", "Designation", "RollerDesignation", "makers_of", "parse",
+           "parse_roller"]
 
 #: Seal and shield suffixes -> (seal type as the SKF friction model names it, number of sealed sides).
 SEALS = {
@@ -274,3 +277,164 @@ def parse(text):
     return Designation(raw, base, kinds["angle"], angle, seal, sides, kinds["clearance"],
                        kinds["tolerance"], kinds["cage"], alternatives, tuple(designs), BALLS.get(kinds["balls"]),
                        preload, kinds["axial clearance"], arrangement, tuple(tokens))
+
+
+
+# ------------------------------------------------------------------ roller bearings (issue 32)
+# SKF's suffixes of its single row cylindrical, tapered and spherical roller bearings (General Catalogue 6000/I RU,
+# 2006: pp. 520-521, 614, 696 and 709, and VG900 of 32915 TN9/QVG900 on p. 628), by kind; a kind holds one suffix. ``other`` suffixes (steels, heat
+# treatments, lubrication features, tolerances of width, ...) are kept and change no number bearinglab uses.
+ROLLER_SUFFIXES = {
+    "cylindrical": {
+        "design": ("EC",),
+        "cage": ("PHA", "PH", "P", "J", "ML", "MA", "MB", "MP", "MR", "M"),
+        "bore": ("K",),
+        "other": ("HA3", "HB1", "HN1", "NR", "N1", "N2", "N", "S1", "S2", "VA3091", "VA301", "VA305", "VA350",
+                  "VA380", "VC025", "VL0241", "VL2071", "VQ015"),
+    },
+    "tapered": {
+        "design": ("B", "X"),
+        "cage": ("J1", "J2", "J3", "TN9"),
+        "bore": (),
+        "other": ("Q601", "Q", "CL7C", "CL7A", "CL00", "CL0", "CLN", "C02", "HA1", "HA3", "HN1", "HN3", "R", "U2",
+                  "U4", "VA321", "VA606", "VA607", "VB022", "VB026", "VB061", "VB134", "VB406", "VB481", "VC027",
+                  "VC068", "VE174", "VG900", "VQ051", "VQ267", "VQ495", "VQ506", "VQ507", "VQ523", "W"),
+    },
+    "spherical": {
+        "design": ("ECAC", "ECA", "CAC", "CAF", "CA", "CC", "EJA", "E"),
+        "cage": ("JA", "MA", "MB", "M"),
+        "bore": ("K30", "K"),
+        "other": ("2CS2", "2CS5", "2CS", "C083", "C084", "C08", "HA3", "P62", "VA405", "VA406", "VE552E", "VE552",
+                  "VE553E", "VE553", "VG114", "VQ424", "VT143", "W513", "W20", "W26", "W33", "W64", "W77", "W"),
+    },
+}
+_ROLLER_CLEARANCES = ("C2", "C3", "C4", "C5", "CN")
+_ROLLER_TOLERANCES = ("P6", "P5")
+_ROLLER_BASES = (
+    ("cylindrical", re.compile(r"^\s*(?P<prefix>NUP|NU|NJ|N)[\s-]*(?P<base>\d{1,2}/\d{3,4}|\d{3,4})(?!\d)(?!/\d)")),
+    ("tapered", re.compile(r"^\s*(?P<base>3[0-3]\d/\d{2,3}|3[0-3]\d{3})(?!\d)(?!/\d)")),
+    ("spherical", re.compile(r"^\s*(?P<base>2[1-4]\d/\d{3,4}|2[1-4]\d{3})(?!\d)(?!/\d)")),
+)
+
+
+class RollerDesignation(NamedTuple):
+    """A roller-bearing designation taken apart (:func:`parse_roller`)."""
+
+    text: str
+    """The designation as given."""
+    type: str
+    """``"cylindrical"``, ``"tapered"`` or ``"spherical"``."""
+    prefix: str | None
+    """The design of a cylindrical bearing (``NU``, ``NJ``, ``NUP``, ``N``), else None."""
+    base: str
+    """The basic number: ``208``, ``2208``, ``30208``, ``302/28``, ``22208``."""
+    series: str
+    """The dimension series (cylindrical ``2``, ``22``; tapered ``302``; spherical ``222``)."""
+    bore: float
+    """d from the bore code. [mm]"""
+    design: str | None
+    """Internal design: ``EC``; tapered ``B`` (steeper), ``X`` (ISO dimensions); spherical ``E``, ``CC``, ``CA``."""
+    cage: str | None
+    """Cage suffix (``P``, ``J``, ``M``, ``ML``, ``MA``; tapered ``J2``, ``TN9``), or None."""
+    tapered_bore: str | None
+    """``K`` (taper 1:12) or ``K30`` (1:30), or None."""
+    clearance_class: str | None
+    """``C2`` ... ``C5``, ``CN`` (with SKF's reduced-range letter ``H`` or ``L`` if written), or None."""
+    tolerance_class: str | None
+    """``P6``, ``P5``, or None."""
+    other: tuple
+    """The other suffixes written, in order."""
+
+
+def _roller_bore(base):
+    if "/" in base:
+        return float(base.split("/")[1])
+    code = int(base[-2:])
+    return {0: 10.0, 1: 12.0, 2: 15.0, 3: 17.0}.get(code, 5.0 * code)
+
+
+def _roller_valid(kind):
+    v = ROLLER_SUFFIXES[kind]
+    bore = f"; tapered bore {', '.join(v['bore'])}" if v["bore"] else ""
+    clearance = "" if kind == "tapered" else f"; clearance {', '.join(_ROLLER_CLEARANCES)}"
+    return (f"design {', '.join(v['design'])}; cage {', '.join(v['cage'])}{bore}{clearance}; tolerance "
+            f"{', '.join(_ROLLER_TOLERANCES)}; other {', '.join(v['other'])}")
+
+
+def parse_roller(text):
+    """Take a roller-bearing designation apart, or None if it is no roller-bearing designation.
+
+    Parameters
+    ----------
+    text : str
+        E.g. ``"NU 208 ECP/C3"``, ``"NJ2208ECJ"``, ``"30208 J2/Q"``, ``"32310 BJ2/QCL7C"``, ``"22208 EK/C3"``,
+        ``"22324 CCK/W33"``. Suffixes may be written with or without separators (``/``, space, ``-``).
+
+    Returns
+    -------
+    RollerDesignation or None
+        None when the text does not start with a roller-bearing base (``NU 208``, a five-digit ``3xxxx``
+        tapered or ``2xxxx`` spherical number): a ball-bearing designation.
+
+    Raises
+    ------
+    InputError
+        An unknown suffix (the message names the valid ones of the type) or two suffixes of one kind.
+
+    Notes
+    -----
+    SKF's designation system of roller bearings, General Catalogue 6000/I RU (2006): cylindrical pp. 520-521
+    (EC optimized internal design; cages J, M, MA, MB, ML, MP, MR, P, PH, PHA; K tapered bore), tapered
+    p. 614 (B steeper contact angle, X ISO boundary dimensions, J cage, TN9, Q, CL7C ...), spherical pp. 696
+    and 709 (E, CC, CA designs; K, K30 tapered bore; W33 lubrication groove and holes ...).
+
+    Examples
+    --------
+    >>> d = parse_roller("NU 208 ECJ/C3")
+    >>> d.type, d.prefix, d.base, d.design, d.cage, d.clearance_class
+    ('cylindrical', 'NU', '208', 'EC', 'J', 'C3')
+    >>> d = parse_roller("22208 EK")
+    >>> d.series, d.design, d.tapered_bore
+    ('222', 'E', 'K')
+    >>> parse_roller("6208-2RS1") is None
+    True
+    """
+    raw = str(text)
+    upper = raw.upper()
+    for kind, pattern in _ROLLER_BASES:
+        m = pattern.match(upper)
+        if m:
+            break
+    else:
+        return None
+    base, rest = m.group("base"), upper[m.end():]
+    prefix = m.groupdict().get("prefix")
+    series = base.split("/")[0] if "/" in base else base[:-2]
+    vocab = ROLLER_SUFFIXES[kind]
+    kinds = {"design": vocab["design"], "cage": vocab["cage"], "bore": vocab["bore"],
+             "tolerance": _ROLLER_TOLERANCES, "other": vocab["other"]}
+    # clearance: C2-C5 or CN, with SKF's H or L of a reduced range (C3L, CNH); tried before the other suffixes
+    clearance_re = re.compile(r"(C[2-5]|CN)(?:[HL](?![0-9]))?")
+    words = sorted({(t, k) for k, ts in kinds.items() for t in ts}, key=lambda tk: len(tk[0]), reverse=True)
+    found = {"design": None, "cage": None, "bore": None, "clearance": None, "tolerance": None}
+    other = []
+    for chunk in filter(None, re.split(r"[-/\s.]+", rest)):
+        while chunk:
+            cm = clearance_re.match(chunk) if kind != "tapered" else None  # set by mounting, no class
+            hit = next(((t, k) for t, k in words if chunk.startswith(t)), None)
+            if cm and (hit is None or len(cm.group(0)) >= len(hit[0])):
+                token, k = cm.group(0), "clearance"
+            elif hit is not None:
+                token, k = hit
+            else:
+                raise InputError(f"bearing: unknown suffix {chunk!r} in {raw!r} for a {kind} roller bearing; "
+                                 f"valid suffixes: {_roller_valid(kind)}")
+            if k == "other":
+                other.append(token)
+            elif found[k] is not None:
+                raise InputError(f"bearing: two {k} suffixes in {raw!r} ({found[k]} and {token})")
+            else:
+                found[k] = token
+            chunk = chunk[len(token):]
+    return RollerDesignation(raw, kind, prefix, base, series, _roller_bore(base), found["design"], found["cage"],
+                             found["bore"], found["clearance"], found["tolerance"], tuple(other))

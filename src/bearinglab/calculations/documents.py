@@ -144,6 +144,8 @@ def catalog_document(name, *, catalog=None, clearance=None, radial_clearance=Non
     if clearance is not None and clearance not in ("mean", "min", "max"):
         raise InputError(f"clearance must be one of ['mean', 'min', 'max'], got {clearance!r}")
     b = _catalog.get(name, catalog=catalog, clearance=clearance or "mean")
+    if getattr(b, "type", None) in ("cylindrical", "tapered", "spherical"):  # a RollerBearing (issue 32)
+        return _roller_document(b, name, catalog=catalog, clearance=clearance, radial_clearance=radial_clearance)
     if radial_clearance is not None:
         from ..units import parse_quantity
         value = parse_quantity(radial_clearance, "length", "radial-clearance")
@@ -189,6 +191,51 @@ def catalog_document(name, *, catalog=None, clearance=None, radial_clearance=Non
                 inputs={"name": name, "catalog": None if catalog is None else str(catalog),
                         "clearance": clearance, "radial_clearance": radial_clearance}, warnings=notes)
     return info, b
+
+
+def _roller_document(b, name, *, catalog, clearance, radial_clearance):
+    """``catalog show`` of a roller bearing: its fields, the catalogue's data, and the roller set the models
+    use, estimated where no source gives it (labelled in ``estimated_fields`` and ``sources``)."""
+    from .. import catalog as _catalog
+    from ..catalog import _rollers
+    if clearance is not None:
+        raise InputError(f"clearance: --clearance picks a value of a deep-groove ball bearing's ISO 5753-1 range; "
+                         f"{b.designation!r} is a {b.type} roller bearing: give --radial-clearance")
+    if radial_clearance is not None:
+        from ..units import parse_quantity
+        value = parse_quantity(radial_clearance, "length", "radial-clearance")
+        b = b.replace(radial_clearance=value, sources={**b.sources, "radial_clearance": "given (--radial-clearance)"})
+    notes = []
+    shown = b
+    if b.type != "spherical" and not b.has_internal_geometry:  # the set the models would use, labelled
+        from ..rollers.estimation import with_estimated_geometry
+        try:
+            shown = with_estimated_geometry(b)
+        except InputError as exc:
+            notes.append(f"roller set: not estimated ({exc})")
+    elif b.type == "spherical":
+        notes.append(f"{b.designation}: a spherical roller bearing: ratings, life and friction only (its load "
+                     "distribution is not modelled, so no roller set is estimated)")
+    info = _rollers.summary(shown)
+    extra = _catalog.details(name) if not _catalog._is_builtin_entry(name) else None
+    if extra:
+        info.update({k: (v or None) if isinstance(v, list) else v for k, v in extra.items() if k != "row"})
+    given = {k: getattr(b, k) for k in ("dynamic_load_rating", "static_load_rating", "fatigue_load_limit")}
+    if None not in given.values():
+        info.update({f"{k}_N": float(v) for k, v in given.items()})
+        info["rating_source"] = dict.fromkeys(given, "catalog")
+    else:
+        from .. import ratings, tables
+        try:
+            info.update(tables.ratings(ratings.bearing_ratings(shown)))
+        except InputError as exc:
+            info.update({f"{k}_N": v for k, v in given.items()})
+            info["rating_source"] = {k: "catalog" for k, v in given.items() if v is not None}
+            notes.append(f"ratings: not computed ({exc})")
+    info.update(sources=dict(shown.sources), estimated_fields=list(shown.estimated_fields),
+                inputs={"name": name, "catalog": None if catalog is None else str(catalog), "clearance": clearance,
+                        "radial_clearance": radial_clearance}, warnings=notes)
+    return info, shown
 
 
 def _catalog_document(parsed):
@@ -239,7 +286,8 @@ def _search_document(parsed):
 
     matches = []
     if values.get("width") is None and values.get("series") is None:  # named rows carry neither
-        series_names = set(_series.records())
+        from ..catalog import _rollers
+        series_names = set(_series.records()) | set(_rollers.records())  # these come through catalog.search
         for name in catalog.names():
             if name in series_names or not wanted(name):
                 continue

@@ -102,7 +102,7 @@ GROUPS = {
 }
 #: The bearing types a catalog search takes (the ``type`` words of the rows, deep-groove for ``radial``).
 CATALOG_TYPES = ("deep-groove", "angular", "four-point", "double-row-angular", "double-row-radial", "self-aligning",
-                 "thrust")
+                 "thrust", "cylindrical", "tapered", "spherical")
 
 
 _GEO = "geometry"
@@ -429,8 +429,8 @@ _CALCS = (
          _f("width", "length", "Width B (matches within 0.5 mm).", label="Width B", unit="mm",
             minimum=0, exclusive=True),
          _f("type", "choice", "deep-groove, angular, four-point, double-row-angular, double-row-radial, "
-            "self-aligning or thrust.", label="Type", choices=CATALOG_TYPES),
-         _f("series", "text", "Series, e.g. 62, 618, 72, 72B, 79C.", label="Series"),
+            "self-aligning, thrust, cylindrical, tapered or spherical.", label="Type", choices=CATALOG_TYPES),
+         _f("series", "text", "Series, e.g. 62, 618, 72, 72B, 79C; 22, 302, 222.", label="Series"),
          _f("limit", "int", "The most matches returned.", label="Matches", default=50, minimum=1,
             maximum=500, cli=False)),),
     Calculation(
