@@ -632,15 +632,16 @@ def search(*, bore=None, outside_diameter=None, width=None, type=None, series=No
     ['7208 BE', '7208 A', '7208 B', '7208 C', '7208 ACD', 'S 6208 C', 'S 6208 E']
     >>> [(r["name"], r["type"]) for r in search(bore=0.040, outside_diameter=0.080, width=0.018, series="QJ2")]
     [('QJ 208', 'four-point')]
-    >>> [r["name"] for r in search(bore=0.040, outside_diameter=0.080, series="22")]
-    ['NU 2208 ECP', 'NJ 2208 ECP', 'NUP 2208 ECP']
+    >>> [(r["name"], r["type"]) for r in search(bore=0.040, outside_diameter=0.080, series="22")][:2]
+    [('2208', 'self-aligning'), ('NU 2208 ECP', 'cylindrical')]
     """
     from . import _rollers, _series
 
     roller_types = (None, *_rollers.TYPES)
-    if type not in roller_types and type not in ("deep-groove", "radial", "angular"):
-        raise InputError(f"type must be one of ['deep-groove', 'angular', {', '.join(map(repr, _rollers.TYPES))}], "
-                         f"got {type!r}")
+    ball_types = _series.types()
+    if type not in roller_types and type not in ball_types:
+        valid = [t for t in ball_types if t != "radial"] + list(_rollers.TYPES)
+        raise InputError(f"type must be one of {valid}, got {type!r}")
     rollers = [] if type not in roller_types else [  # the built-in roller bearings (data/roller_series.csv)
         _rollers.entry(n) for n in _rollers.search(bore=bore, outside_diameter=outside_diameter, width=width,
                                                    type=type, series=series, tolerance=tolerance)]
