@@ -2,14 +2,12 @@
 from the solver's last evaluation), each against an independent computation, and bit-identity of the
 solve for any batch, pass size or single case."""
 
-import math
 
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from numpy.testing import assert_allclose
-from scipy.optimize import brentq
 
 from bearinglab import catalog
 from bearinglab.bearing import BallBearing, Material
