@@ -97,14 +97,15 @@ def test_outputs_from_the_last_newton_evaluation_equal_a_fresh_evaluation(w):
             assert np.all(np.abs(reused[key] - value) <= 1e-9 * scale), key
 
 
-def test_solve_is_bit_identical_for_any_batch_pass_size_or_single_case(monkeypatch):
+@pytest.mark.parametrize("engine", ["numpy", "auto"])
+def test_solve_is_bit_identical_for_any_batch_pass_size_or_single_case(monkeypatch, engine):
     loads = _loads(23, seed=5)
-    whole = combined.combined_analysis(DEEP, loads)
-    monkeypatch.setattr(combined, "_CHUNK", 4)  # passes of 4 cases, the last one short
-    passes = combined.combined_analysis(DEEP, loads)
+    whole = combined.combined_analysis(DEEP, loads, engine=engine)
+    monkeypatch.setattr(combined, "_CHUNK", 4)  # passes of 4 cases (numpy), the last one short
+    passes = combined.combined_analysis(DEEP, loads, engine=engine)
     for field in ("displacement", "ball_load_inner", "contact_angle_inner", "stiffness", "residual", "iterations"):
         assert np.array_equal(getattr(passes, field), getattr(whole, field)), field
     for k in (0, 11, 22):
-        one = combined.combined_analysis(DEEP, loads[k])
+        one = combined.combined_analysis(DEEP, loads[k], engine=engine)
         assert np.array_equal(one.displacement, whole.displacement[k])
         assert np.array_equal(one.stiffness, whole.stiffness[k])

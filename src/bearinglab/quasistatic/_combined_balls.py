@@ -12,6 +12,7 @@ _geometry        one bearing's checked data and what every evaluation needs (:cl
 Hertz interpolants
 ------------------
 _tables, _hertz_k  Chebyshev series of ln K and ln(a* b*) in cos(alpha), per bearing
+_series, _log_k    ln K of both contacts and its derivative, as the solvers evaluate them
 
 Balls
 -----
@@ -99,6 +100,24 @@ def _chebyshev_tables(d, dm, fi, fo, ep, a0, stiffness_at):
     return [_cheb.chebfit(x, v, _N_CHEB - 1) for v in exact((x + 1.0) / 2.0)]
 
 
+def _series(tables):
+    """(4, N) Chebyshev series in x = 2 cos(alpha) - 1 of ln K_i, d ln K_i / d cos(alpha), ln K_o and
+    d ln K_o / d cos(alpha) (the derivative series padded with a zero to the same length; a constant
+    series has a zero derivative)."""
+    ki, ko = (np.asarray(t, dtype=float) for t in tables[:2])
+    out = np.zeros((4, ki.size))
+    out[0], out[2] = ki, ko
+    if ki.size > 1:
+        out[1, :-1], out[3, :-1] = 2.0 * _cheb.chebder(ki), 2.0 * _cheb.chebder(ko)
+    return _read_only(out)
+
+
+def _log_k(geo, c, race):
+    """ln K and d ln K / d cos(alpha) of the inner (race 0) or outer (race 1) contact at cos(alpha) = c."""
+    x = 2.0 * c - 1.0
+    return _cheb.chebval(x, geo.series[2 * race]), _cheb.chebval(x, geo.series[2 * race + 1])
+
+
 def _hertz_k(coef, c, slope=None):
     """K and d ln K / d cos(alpha) from a series (a constant series has zero slope); ``slope`` is the
     derivative series (:func:`numpy.polynomial.chebyshev.chebder`), precomputed per bearing."""
@@ -135,7 +154,7 @@ class _Geometry(NamedTuple):
     control: str
     kind: str
     stiffness_at: str
-    slopes: tuple = (None, None)  # chebder of tables[0], tables[1] (the ball Newton evaluates them often)
+    series: np.ndarray | None = None  # (4, N) ln K and its derivative of both contacts (_series)
     clearance: float = math.nan  # e, the diametral operating clearance [m] (negative: a preload)
 
     @property
@@ -205,9 +224,7 @@ def _geometry(n_balls, d, dm, fi, fo, a0, ep, density, phi0, stiffness_at, contr
         tab = _tables(d, dm, float(fi), float(fo), ep_f, a0, stiffness_at)
     return _Geometry(z, d, dm, float(fi), float(fo), a0, ep_f, mass, inertia, big_a, gr0,
                      (fi - 0.5) * d, (fo - 0.5) * d, psi, ja, jr, np.cos(psi), np.sin(psi), _ring.weights(psi), tab,
-                     RACEWAY_CONTROLS[control], control, kind, stiffness_at,
-                     tuple(_cheb.chebder(t) if t.size > 1 else None for t in tab[:2]) if tab is not None
-                     else (None, None), e)
+                     RACEWAY_CONTROLS[control], control, kind, stiffness_at, None if tab is None else _series(tab), e)
 
 
 # --------------------------------------------------------------------------- balls at rest
@@ -220,11 +237,12 @@ def _rest_balls(geo, ga, gr):
     """
     rho = np.hypot(ga, gr)
     s, c = ga / rho, gr / rho
-    ki, dli = _hertz_k(geo.tables[0], c, geo.slopes[0])
-    ko, dlo = _hertz_k(geo.tables[1], c, geo.slopes[1])
-    wi, wo = ki ** (-2.0 / 3.0), ko ** (-2.0 / 3.0)
-    kn = (wi + wo) ** -1.5
-    dlkn = (wi * dli + wo * dlo) / (wi + wo)  # d ln K_n / d cos(alpha)
+    lki, dli = _log_k(geo, c, 0)
+    lko, dlo = _log_k(geo, c, 1)
+    wi, wo = np.exp(lki * (-2.0 / 3.0)), np.exp(lko * (-2.0 / 3.0))  # K^(-2/3)
+    sw = wi + wo
+    kn = 1.0 / (sw * np.sqrt(sw))
+    dlkn = (wi * dli + wo * dlo) / sw  # d ln K_n / d cos(alpha)
     defl = np.maximum(rho - geo.big_a, 0.0)
     root = np.sqrt(defl)
     q = kn * defl * root
@@ -256,8 +274,9 @@ def _ball_state(geo, xa, xr, ga, gr, w2, deriv=True):
     so, co = xa / rho_o, xr / rho_o
     si, ci = ia / rho_i, ir / rho_i
     di, do = rho_i - geo.ri, rho_o - geo.ro
-    ki, dli = _hertz_k(geo.tables[0], ci, geo.slopes[0])
-    ko, dlo = _hertz_k(geo.tables[1], co, geo.slopes[1])
+    lki, dli = _log_k(geo, ci, 0)
+    lko, dlo = _log_k(geo, co, 1)
+    ki, ko = np.exp(lki), np.exp(lko)
     dip, dop = np.maximum(di, 0.0), np.maximum(do, 0.0)
     rti, rto = np.sqrt(dip), np.sqrt(dop)
     qi, qo = ki * dip * rti, ko * dop * rto
@@ -340,12 +359,12 @@ def _ball_start(geo, ga, gr, w2):
     """
     rho = np.hypot(ga, gr)
     na, nr = ga / rho, gr / rho
-    ki = _hertz_k(geo.tables[0], nr)[0]
-    ko = _hertz_k(geo.tables[1], nr)[0]
-    wi, wo = ki ** (-2.0 / 3.0), ko ** (-2.0 / 3.0)
+    lki = _log_k(geo, nr, 0)[0]
+    lko = _log_k(geo, nr, 1)[0]
+    wi, wo = np.exp(lki * (-2.0 / 3.0)), np.exp(lko * (-2.0 / 3.0))
     total = rho - geo.big_a
     fc = w2 * geo.mass * geo.dm / 2.0 * 0.25  # cage at about half the shaft speed
-    do = geo.ro + np.maximum(total * wo / (wi + wo), np.cbrt(fc / ko) ** 2)
+    do = geo.ro + np.maximum(total * wo / (wi + wo), np.cbrt(fc) ** 2 * wo)  # (F_c / K_o)^(2/3)
     return na * do, nr * do
 
 

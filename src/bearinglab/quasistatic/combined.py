@@ -51,6 +51,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .. import _solve as _solve_mod
 from .. import geometry
 from .._validate import as_float, check_integer, check_nonnegative, check_positive
 from ..errors import ConvergenceError, InputError
@@ -392,13 +393,17 @@ def _rest_newton(geo, loads, tol, max_iter, held=None):
     return (*(np.concatenate([p[j] for p in parts]) for j in range(3)), last)
 
 
-def _solve(geo, loads, w2, tol, max_iter, *, final=False, held=None):
-    """Rest solution of every case, then the cases at speed from it (:mod:`._combined_speed`).
+def _solve(geo, loads, w2, tol, max_iter, *, final=False, held=None, compiled=False):
+    """Rest solution of every case, then the cases at speed from it (:mod:`._combined_speed`), by numpy or,
+    with ``compiled``, by the kernel (:mod:`._combined_kernel`, the same algorithm case by case).
 
     Returns u, converged, iterations and, with ``final``, (have, the last evaluation): ``have`` marks the
     cases whose outputs the last evaluation holds (all converged ones), so they need no evaluation of
     their own.
     """
+    if compiled:
+        u, ok, it, last = _solve_compiled(geo, loads, w2, tol, max_iter, held)
+        return (u, ok, it, (ok.copy(), last)) if final else (u, ok, it)
     u, ok, it, last = _rest_newton(geo, loads, tol, max_iter, held)
     free = None if held is None else np.isnan(held).astype(float)
     have = w2 == 0
@@ -420,6 +425,20 @@ def _solve(geo, loads, w2, tol, max_iter, *, final=False, held=None):
             have[moving] = oks
     extra = (have, last) if final else None
     return (u, ok, it, extra) if final else (u, ok, it)
+
+
+def _solve_compiled(geo, loads, w2, tol, max_iter, held):
+    """:func:`_solve` by the compiled kernel: the same starts (numpy, case by case), then each case's rest
+    and speed solves in one kernel call, parallel over the cases."""
+    from . import _combined_kernel  # imports numba: only when the compiled path runs
+
+    u0, free = _start(geo, loads), None
+    if held is not None:
+        free = np.isnan(held).astype(float)
+        u0 = np.where(free > 0, u0, held)
+    par, tables = _combined_kernel.parameters(geo, tol, max_iter, _LAM_MAX, _NOISE, _RESOLVABLE, _BALL_TOL,
+                                              _BALL_MAX_ITER)
+    return _combined_kernel.solve(geo, loads, u0, free, w2, par, tables)
 
 
 # --------------------------------------------------------------------------- results
@@ -538,7 +557,8 @@ def _flat_inputs(loads, shaft_speed):
 def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
                       free_angle, reduced_modulus, density, *, first_ball_angle=0.0, stiffness_at="operating",
                       raceway_control="outer", bearing_type="radial", on_failure="raise",
-                      tol=TOL, max_iter=MAX_ITER, prescribed_displacement=None, radial_clearance=None):
+                      tol=TOL, max_iter=MAX_ITER, prescribed_displacement=None, radial_clearance=None,
+                      engine="auto"):
     r"""Load distribution, displacement and stiffness of a ball bearing under combined load, at rest or at speed.
 
     Parameters
@@ -599,6 +619,11 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
         The diametral operating clearance e instead of ``free_angle``, in [-2 D, 2 A). e <= 0 is a
         preloaded bearing: in the concentric position every ball touches both raceways at alpha = 0,
         compressed by -e/2, and carries Q_0 = K_n (-e/2)^1.5 with no external load (see Notes). [m]
+    engine : {"auto", "numpy", "compiled"}, optional
+        Who solves: "compiled" the numba kernel (:mod:`bearinglab.quasistatic._combined_kernel`, the same
+        algorithm case by case, parallel over the cases), "numpy" the batched numpy path, "auto" (default)
+        the kernel when numba is installed. The two agree to rounding (1e-12 relative); each gives a case
+        the same bits in any batch.
 
     Returns
     -------
@@ -660,7 +685,8 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
                     clearance=radial_clearance)
     if held is not None:
         _check_held(geo, held)
-    u, ok, it, final = _solve(geo, f, w**2, tol, max_iter, final=True, held=held)
+    compiled = _solve_mod.use_compiled(engine, auto=True)
+    u, ok, it, final = _solve(geo, f, w**2, tol, max_iter, final=True, held=held, compiled=compiled)
     out = _outputs(geo, f, w, u, ok, it, final, held)
     out.setdefault("reactions", np.full((len(f), 5), np.nan))
     ok &= out["residual"] <= np.maximum(tol, out.pop("floor"))
