@@ -427,6 +427,24 @@ def _solve(geo, loads, w2, tol, max_iter, *, final=False, held=None, compiled=Fa
     return (u, ok, it, extra) if final else (u, ok, it)
 
 
+def _reactions(geo, u, w2, compiled):
+    """Ring load (n, 5), stiffness (n, 5, 5) and every ball converged (n,) at the displacements u (n, 5):
+    the kernel's evaluation (:func:`._combined_kernel.reactions`) or :func:`_evaluate`'s."""
+    if compiled:
+        from . import _combined_kernel
+
+        par, ser = _kernel_parameters(geo, TOL, MAX_ITER)
+        return _combined_kernel.reactions(geo, u, w2, par, ser)
+    force, stiff, balls = _evaluate(geo, u, w2)
+    return force, stiff, np.all(balls["ok"], axis=-1)
+
+
+def _kernel_parameters(geo, tol, max_iter):
+    from . import _combined_kernel
+
+    return _combined_kernel.parameters(geo, tol, max_iter, _LAM_MAX, _NOISE, _RESOLVABLE, _BALL_TOL, _BALL_MAX_ITER)
+
+
 def _solve_compiled(geo, loads, w2, tol, max_iter, held):
     """:func:`_solve` by the compiled kernel: the same starts (numpy, case by case), then each case's rest
     and speed solves in one kernel call, parallel over the cases."""
@@ -436,9 +454,8 @@ def _solve_compiled(geo, loads, w2, tol, max_iter, held):
     if held is not None:
         free = np.isnan(held).astype(float)
         u0 = np.where(free > 0, u0, held)
-    par, tables = _combined_kernel.parameters(geo, tol, max_iter, _LAM_MAX, _NOISE, _RESOLVABLE, _BALL_TOL,
-                                              _BALL_MAX_ITER)
-    return _combined_kernel.solve(geo, loads, u0, free, w2, par, tables)
+    par, ser = _kernel_parameters(geo, tol, max_iter)
+    return _combined_kernel.solve(geo, loads, u0, free, w2, par, ser)
 
 
 # --------------------------------------------------------------------------- results
@@ -859,7 +876,7 @@ class Equilibrium(NamedTuple):
 
 def equilibrium(displacement, loads, shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity,
                 outer_conformity, free_angle, reduced_modulus, density, *, first_ball_angle=0.0,
-                stiffness_at="operating", raceway_control="outer", radial_clearance=None):
+                stiffness_at="operating", raceway_control="outer", radial_clearance=None, engine="auto"):
     """Residual of the ring equilibrium and tangent stiffness at a given displacement (the balls solved).
 
     Parameters
@@ -892,6 +909,8 @@ def equilibrium(displacement, loads, shaft_speed, n_balls, ball_diameter, pitch_
         See :func:`load_distribution`.
     radial_clearance : float, optional
         See :func:`load_distribution`. [m]
+    engine : {"auto", "numpy", "compiled"}, optional
+        See :func:`load_distribution`.
 
     Returns
     -------
@@ -906,5 +925,5 @@ def equilibrium(displacement, loads, shaft_speed, n_balls, ball_diameter, pitch_
     geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
                     reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, "radial",
                     clearance=radial_clearance)
-    force, stiff, _ = _evaluate(geo, uu, w**2)
+    force, stiff, _ = _reactions(geo, np.ascontiguousarray(uu), w**2, _solve_mod.use_compiled(engine, auto=True))
     return Equilibrium((f - force).reshape(shape + (5,)), stiff.reshape(shape + (5, 5)), force.reshape(shape + (5,)))
