@@ -75,13 +75,13 @@ def hertz4(ser, ci, co):
     the (4, N) series of combined._series: the four sums of Clenshaw's recurrence in one loop."""
     xi, xo = 2.0 * ci - 1.0, 2.0 * co - 1.0
     a1 = a2 = b1 = b2 = c1 = c2 = d1 = d2 = 0.0
-    for j in range(ser.shape[1] - 1, 0, -1):
-        a1, a2 = ser[0, j] + 2.0 * xi * a1 - a2, a1
-        b1, b2 = ser[1, j] + 2.0 * xi * b1 - b2, b1
-        c1, c2 = ser[2, j] + 2.0 * xo * c1 - c2, c1
-        d1, d2 = ser[3, j] + 2.0 * xo * d1 - d2, d1
-    return (ser[0, 0] + xi * a1 - a2, ser[1, 0] + xi * b1 - b2, ser[2, 0] + xo * c1 - c2,
-            ser[3, 0] + xo * d1 - d2)
+    for j in range(len(ser[0]) - 1, 0, -1):
+        a1, a2 = ser[0][j] + 2.0 * xi * a1 - a2, a1
+        b1, b2 = ser[1][j] + 2.0 * xi * b1 - b2, b1
+        c1, c2 = ser[2][j] + 2.0 * xo * c1 - c2, c1
+        d1, d2 = ser[3][j] + 2.0 * xo * d1 - d2, d1
+    return (ser[0][0] + xi * a1 - a2, ser[1][0] + xi * b1 - b2, ser[2][0] + xo * c1 - c2,
+            ser[3][0] + xo * d1 - d2)
 
 
 # --------------------------------------------------------------------------- at rest
@@ -90,7 +90,7 @@ def rest_eval(u, loads, free, par, cs, sn, ser, force, k, out_q, out_a):
 
     With ``out_q`` of length Z the ball loads and angles go to ``out_q``, ``out_a``.
     """
-    z, arm, big_a, gr0 = cs.size, 0.5 * par[2], par[3], par[4]
+    z, arm, big_a, gr0 = len(cs), 0.5 * par[2], par[3], par[4]
     f0 = f1 = f2 = f3 = f4 = 0.0
     s11cc = s11cs = s11ss = 0.0
     s00 = s00s = s00c = s00ss = s00sc = s00cc = 0.0
@@ -145,7 +145,7 @@ def rest_eval(u, loads, free, par, cs, sn, ser, force, k, out_q, out_a):
         s10cc += h10 * cc
         total += math.hypot(pa, pr)
         noise += dq * _EPS * rho
-        if out_q.size:
+        if len(out_q):
             out_q[j] = q
             out_a[j] = math.atan2(ga, gr)
     force[0], force[1], force[2], force[3], force[4] = f0, f1, f2, arm * f3, -arm * f4
@@ -414,7 +414,7 @@ def speed_eval(u, xa, xr, w2, loads, free, par, cs, sn, ser, o, bs, force, relax
     """Ring and balls at (u, x) at speed (_combined_speed._measure): the ring load (``force``), the
     relaxed reaction, the stiffness ``k``, every ball's Schur parts and outputs in ``bs`` (rows dxb0, dxb1,
     dxdg (4), qi, qo, mg, fc); returns (merit, rel, floor, converged, valid)."""
-    z, arm, gr0, tol, noise_factor = cs.size, 0.5 * par[2], par[4], par[12], par[15]
+    z, arm, gr0, tol, noise_factor = len(cs), 0.5 * par[2], par[4], par[12], par[15]
     f0 = f1 = f2 = f3 = f4 = 0.0
     r0 = r1 = r2 = r3 = r4 = 0.0
     s11cc = s11cs = s11ss = 0.0
@@ -430,8 +430,8 @@ def speed_eval(u, xa, xr, w2, loads, free, par, cs, sn, ser, o, bs, force, relax
         gr = gr0 + (u[0] * c + u[1] * s)
         ball(xa[j], xr[j], ga, gr, w2, par, ser, True, o)
         dxb0, dxb1, g0, g1, g2, g3, h00, h01, h10, h11, ra, rr = schur(o)
-        bs[0, j], bs[1, j], bs[2, j], bs[3, j], bs[4, j], bs[5, j] = dxb0, dxb1, g0, g1, g2, g3
-        bs[6, j], bs[7, j], bs[8, j], bs[9, j] = o[4], o[5], o[6], o[7]
+        bs[0][j], bs[1][j], bs[2][j], bs[3][j], bs[4][j], bs[5][j] = dxb0, dxb1, g0, g1, g2, g3
+        bs[6][j], bs[7][j], bs[8][j], bs[9][j] = o[4], o[5], o[6], o[7]
         pa, pr = o[2], o[3]
         f0 += pr * c
         f1 += pr * s
@@ -486,7 +486,7 @@ def block_newton(loads, u, xa, xr, w2, free, par, cs, sn, ser, w, bs, bt):
     """Block Newton on ring and balls from (u, x) (updated in place), _combined_speed._newton case by
     case: (converged, iterations, rel, floor); ``bs`` (10, Z) holds the last accepted ball state."""
     max_iter, lam_max = int(par[13]), par[14]
-    z, arm, big_a = cs.size, 0.5 * par[2], par[3]
+    z, arm, big_a = len(cs), 0.5 * par[2], par[3]
     force, k, ft, kt, du, trial, m, o, relaxed, rt = w[0], w[1], w[2], w[3], w[4], w[5], w[6], w[7], w[8], w[9]
     xt, yt = w[10], w[11]
     merit, rel, floor, conv, valid = speed_eval(u, xa, xr, w2, loads, free, par, cs, sn, ser, o, bs,
@@ -501,9 +501,9 @@ def block_newton(loads, u, xa, xr, w2, free, par, cs, sn, ser, w, bs, bt):
             c, s = cs[j], sn[j]
             dga = du[2] + arm * (du[3] * s - du[4] * c)
             dgr = du[0] * c + du[1] * s
-            da = bs[0, j] + (bs[2, j] * dga + bs[3, j] * dgr)
-            dr = bs[1, j] + (bs[4, j] * dga + bs[5, j] * dgr)
-            bt[10, j], bt[11, j] = da, dr  # the balls' steps
+            da = bs[0][j] + (bs[2][j] * dga + bs[3][j] * dgr)
+            dr = bs[1][j] + (bs[4][j] * dga + bs[5][j] * dgr)
+            bt[10][j], bt[11][j] = da, dr  # the balls' steps
             move = max(move, math.hypot(da, dr))
         t = min(1.0, 0.5 * big_a / move) if move > 0 else 1.0
         if not math.isfinite(t):
@@ -514,8 +514,8 @@ def block_newton(loads, u, xa, xr, w2, free, par, cs, sn, ser, w, bs, bt):
             for i in range(5):
                 trial[i] = u[i] + t * du[i]
             for j in range(z):
-                xt[j] = xa[j] + t * bt[10, j]
-                yt[j] = xr[j] + t * bt[11, j]
+                xt[j] = xa[j] + t * bt[10][j]
+                yt[j] = xr[j] + t * bt[11][j]
             m_t, r_t, f_t, c_t, v_t = speed_eval(trial, xt, yt, w2, loads, free, par, cs, sn, ser, o,
                                                  bt, ft, rt, kt)
             if v_t and (m_t < merit * (1.0 - 1e-4 * t) or c_t):
@@ -528,7 +528,7 @@ def block_newton(loads, u, xa, xr, w2, free, par, cs, sn, ser, w, bs, bt):
                 for j in range(z):
                     xa[j], xr[j] = xt[j], yt[j]
                     for r in range(10):
-                        bs[r, j] = bt[r, j]
+                        bs[r][j] = bt[r][j]
                 merit, rel, floor, conv = m_t, r_t, f_t, c_t
                 accepted = True
                 break
@@ -550,14 +550,14 @@ def solve_case(loads, start, free, w2, par, cs, sn, ser, u, out, stiff, force, w
     """One case: u (from ``start``), then the rest solve and, at speed, the speed solve. Writes u, the
     outputs ``out`` (6, Z: qi, qo, ai, ao, mg, fc), ``stiff`` (25) and ``force`` (5); returns (converged,
     iterations, rel, floor)."""
-    z, arm, gr0 = cs.size, 0.5 * par[2], par[4]
+    z, arm, gr0 = len(cs), 0.5 * par[2], par[4]
     for i in range(5):
         u[i] = start[i]
     ok, it, rel, floor = rest_newton(loads, u, free, par, cs, sn, ser, w)
     if ok and w2 == 0.0:
         rest_eval(u, loads, free, par, cs, sn, ser, force, stiff, out[0], out[2])
         for j in range(z):
-            out[1, j], out[3, j], out[4, j], out[5, j] = out[0, j], out[2, j], 0.0, 0.0
+            out[1][j], out[3][j], out[4][j], out[5][j] = out[0][j], out[2][j], 0.0, 0.0
         return True, it, rel, floor
     if not ok:
         return False, it, rel, floor
@@ -590,8 +590,8 @@ def solve_case(loads, start, free, w2, par, cs, sn, ser, u, out, stiff, force, w
                 c, s = cs[j], sn[j]
                 ga = u[2] + arm * (u[3] * s - u[4] * c)
                 gr = gr0 + (u[0] * c + u[1] * s)
-                out[0, j], out[1, j], out[4, j], out[5, j] = bs[6, j], bs[7, j], bs[8, j], bs[9, j]
-                out[2, j], out[3, j] = math.atan2(ga - xa[j], gr - xr[j]), math.atan2(xa[j], xr[j])
+                out[0][j], out[1][j], out[4][j], out[5][j] = bs[6][j], bs[7][j], bs[8][j], bs[9][j]
+                out[2][j], out[3][j] = math.atan2(ga - xa[j], gr - xr[j]), math.atan2(xa[j], xr[j])
             return True, it, rel, floor
     for i in range(5):
         u[i] = math.nan
@@ -607,7 +607,7 @@ def _work(z):
 def react_case(u, w2, par, cs, sn, ser, force, k, o):
     """Ring load (``force``) and stiffness (``k``) at the displacement u: the closed form at rest, every
     ball solved alone at speed (combined._evaluate); returns whether every ball converged."""
-    z, arm, gr0 = cs.size, 0.5 * par[2], par[4]
+    z, arm, gr0 = len(cs), 0.5 * par[2], par[4]
     none = force[:0]
     if w2 == 0.0:
         rest_eval(u, np.zeros(5), np.ones(5), par, cs, sn, ser, force, k, none, none)
@@ -668,9 +668,9 @@ for _name in _SCALAR:
 
 def _solve_loop(loads, starts, free, w2, par, cs, sn, ser, u, ok, it, rel, floor, out, stiff, force):
     for n in _prange(loads.shape[0]):  # parallel over the cases (each case is independent of the others)
-        w = _work(cs.size)
-        bs = np.zeros((10, cs.size))
-        bt = np.zeros((12, cs.size))
+        w = _work(len(cs))
+        bs = np.zeros((10, len(cs)))
+        bt = np.zeros((12, len(cs)))
         ok[n], it[n], rel[n], floor[n] = solve_case(loads[n], starts[n], free[n], w2[n], par, cs, sn, ser,
                                                     u[n], out[n], stiff[n], force[n], w, bs, bt)
 
