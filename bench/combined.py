@@ -80,7 +80,7 @@ def baseline(bearing, loads, speed=0.0):
     Returns ``run() -> displacements (n, 5)`` (NaN where a case failed); starts computed outside.
     """
     geo = _geometry(bearing)
-    solve_case, _react, work = _combined_kernel.plain()
+    solve_case, _react, _work = _combined_kernel.plain()
     par, ser = combined._kernel_parameters(geo, combined.TOL, combined.MAX_ITER)
     loads = np.asarray(loads, dtype=float)
     starts = combined._start(geo, loads)

@@ -103,7 +103,7 @@ def test_zero_clearance_has_no_preload_and_solves():
     b = DEEP.replace(radial_clearance=0.0)
     p = preload.preload(b)
     assert p.ball_load == 0.0 and p.interference == 0.0 and np.all(p.stiffness == 0.0)
-    u, q = _radial_equilibrium(b, 1000.0)
+    u, _q = _radial_equilibrium(b, 1000.0)
     r = combined.combined_analysis(b, [1000.0, 0, 0, 0, 0])
     assert_allclose(r.displacement[0], u, rtol=1e-9)
     assert b.contact_angle == 0.0 and combined.axial_play_takeup(b.ball_diameter, 0.52, 0.53, b.contact_angle) == 0.0

@@ -58,8 +58,8 @@ from ..errors import ConvergenceError, InputError
 from ..units import RPM
 from . import _combined_balls, _combined_speed, _ring
 from ._combined_balls import (  # the balls and the bearing data, split off (issue 20); private names
-    _BALL_MAX_ITER,  # noqa: F401 (read by bench/combined.py with the ring's constants)
-    _BALL_TOL,  # noqa: F401
+    _BALL_MAX_ITER,
+    _BALL_TOL,
     _geometry,
     _hertz_k,
     _rest_balls,

@@ -73,7 +73,7 @@ def preload(bearing, *, first_ball_angle=0.0, stiffness_at="operating"):
         raise InputError(f"radial_clearance of {bearing.designation or 'the bearing'!r} is not known; the preload "
                          "comes from a zero or negative operating clearance")
     geo = _geometry(bearing, first_ball_angle, stiffness_at)
-    force, stiff, balls = combined._evaluate(geo, np.zeros((1, 5)), np.zeros(1))
+    _force, stiff, balls = combined._evaluate(geo, np.zeros((1, 5)), np.zeros(1))
     q = float(np.max(balls["qi"][0]))
     return Preload(float(e), geo.interference, q, float(np.sum(balls["qi"][0])), stiff[0])
 
