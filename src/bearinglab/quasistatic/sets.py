@@ -163,7 +163,8 @@ class SetState(NamedTuple):
 
 
 def _first_contact_offsets(geos):
-    """Axial offset A sin(alpha0) of the groove-curvature centres at which each bearing's balls first touch."""
+    """Axial offset A sin(alpha0) of the groove-curvature centres at which each bearing's balls first touch
+    (0 for a bearing with zero or negative clearance, alpha0 = 0: its balls touch in the concentric position)."""
     return np.array([g.big_a * math.sin(g.a0) for g in geos])
 
 
@@ -355,7 +356,7 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
     check_positive("tol", tol, "-")
     geos = [combined._geometry(*combined._bearing_args(b), options.get("first_ball_angle", 0.0),
                                options.get("stiffness_at", "operating"), options.get("raceway_control", "outer"),
-                               b.type) for b in bl]
+                               b.type, clearance=combined._preload_clearance(b)) for b in bl]
     trans = [_transform(o, z) for o, z in zip(orient, pos, strict=True)]
     offsets, interference = _preload_offsets(geos, orient, preload, preload_displacement)
     w2 = np.full(len(flat), w * w)

@@ -437,11 +437,94 @@ def zero_displacement_thrust(shaft_speed, n_balls, ball_diameter, pitch_diameter
 def _bearing_args(bearing, reduced_modulus=None):
     z, d, dm, fi, fo, a0 = bearing.require("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity",
                                            "outer_conformity", "contact_angle")
+    if _preloaded(bearing):
+        raise InputError(f"radial_clearance of {bearing.designation or 'the bearing'!r} is "
+                         f"{bearing.radial_clearance * 1e6:.4g} um: no free contact angle for spec 004's model; "
+                         "high_speed_analysis solves a preloaded bearing by the 5-DOF model")
     if not 0.0 < a0 < math.pi / 2:
         raise InputError(f"contact_angle of {bearing.designation or 'the bearing'!r} must be in (0, 90) [deg] for the "
                          f"high-speed model under thrust, got {math.degrees(a0):g}")
     ep = bearing.reduced_modulus if reduced_modulus is None else reduced_modulus
     return z, d, dm, fi, fo, a0, ep, bearing.ball_material.density
+
+
+def _preloaded(bearing):
+    """True for a bearing with a zero or negative clearance (issue 30): no free contact angle, every ball
+    touching both raceways in the concentric position."""
+    e = bearing.radial_clearance
+    return e is not None and e <= 0
+
+
+def _preloaded_analysis(bearing, axial_load, shaft_speed, reduced_modulus, options):
+    """:func:`high_speed_analysis` of a bearing with zero or negative clearance, by the 5-DOF model.
+
+    Spec 004's unknowns start from the free contact angle, which such a bearing does not have: its balls
+    sit at alpha = 0, compressed by -e/2, before any thrust. Under pure thrust the 5-DOF model with the
+    rings held concentric and square (radial and tilt displacements 0, the symmetric solution) is the same
+    ball equilibrium (eqs. 5-6 with F_c, M_g and the raceway control, tests/quasistatic/test_combined.py
+    checks it ball by ball against this model at positive clearance); the state is assembled from its
+    ball 0 through the public functions, as for the other cases. delta_a counts from the concentric
+    position, where such a bearing's balls first touch.
+    """
+    from . import combined
+
+    unsupported = {"method": "newton", "gyroscopic_sign": 1, "constants": "mass"}
+    for key, want in unsupported.items():
+        if options.get(key, want) != want:
+            raise InputError(f"{key}={options[key]!r}: a bearing with zero or negative clearance is solved by the "
+                             f"5-DOF model, which takes {key}={want!r} only")
+    control = options.get("raceway_control", "outer")
+    on_failure = options.get("on_failure", "raise")
+    friction_limit = options.get("friction_limit", FRICTION_WARNING_LIMIT)
+    fa = check_positive("axial_load", axial_load, "N")
+    w = _speed("shaft_speed", shaft_speed)
+    shape = np.broadcast_shapes(np.shape(fa), np.shape(w))
+    fa, w = (np.broadcast_to(x, shape).ravel().astype(float) for x in (fa, w))
+    loads = np.zeros((fa.size, 5))
+    loads[:, 2] = fa
+    held = [0.0, 0.0, np.nan, 0.0, 0.0]
+    kw = {"reduced_modulus": reduced_modulus, "raceway_control": control, "prescribed_displacement": held,
+          "on_failure": "flag"}
+    r = combined.combined_analysis(bearing, loads, w, **kw)
+    rest = combined.combined_analysis(bearing, loads, 0.0, **kw)
+    z, d, dm, fi, fo = bearing.require("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity",
+                                       "outer_conformity")
+    ep = bearing.reduced_modulus if reduced_modulus is None else reduced_modulus
+    ai, ae = r.contact_angle_inner[:, 0], r.contact_angle_outer[:, 0]
+    qi, qe = r.ball_load_inner[:, 0], r.ball_load_outer[:, 0]
+    from .contact import contact_stiffness
+
+    k = contact_stiffness(np.nan_to_num(ai), np.nan_to_num(ae), d, dm, fi, fo, ep)
+    beta = attitude_angle(ai, ae, d, dm, raceway_control=control)
+    speeds = ball_speeds(w, ai, ae, beta, d, dm)
+    mg = np.abs(r.gyroscopic_moment[:, 0])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        fields = {"axial_load": fa, "shaft_speed": w, "contact_angle_inner": ai, "contact_angle_outer": ae,
+                  "static_contact_angle": rest.contact_angle_inner[:, 0], "axial_displacement": r.displacement[:, 2],
+                  "ball_load_inner": qi, "ball_load_outer": qe, "deflection_inner": np.cbrt(qi / k.inner) ** 2,
+                  "deflection_outer": np.cbrt(qe / k.outer) ** 2, "centrifugal_force": r.centrifugal_force[:, 0],
+                  "gyroscopic_moment": mg, "attitude_angle": beta, "cage_speed": speeds.cage_speed,
+                  "ball_spin_speed": speeds.ball_spin_speed, "bpfo": z * speeds.cage_speed,
+                  "bpfi": z * (w - speeds.cage_speed), "max_pressure_inner": r.max_pressure_inner[:, 0],
+                  "max_pressure_outer": r.max_pressure_outer[:, 0], "axial_stiffness": r.stiffness[:, 2, 2],
+                  "friction_coefficient": required_friction_coefficient(mg, qe if control == "outer" else qi, d),
+                  "converged": r.converged, "residual": r.residual, "iterations": r.iterations,
+                  "status": np.where(r.converged, "ok", "no_convergence").astype(object),
+                  "method": np.where(w > 0, "newton", "static").astype(object)}
+    ok = r.converged
+    if not ok.all() and on_failure == "raise":
+        j = int(np.flatnonzero(~ok)[0])
+        raise ConvergenceError("quasistatic.high_speed_analysis", iterations=int(r.iterations[j]), residual=np.inf,
+                               estimate=np.nan, reason=f"preloaded bearing (5-DOF model) at F_a = {fa[j]:g} N, "
+                                                       f"{w[j] / RPM:g} rpm: {'; '.join(r.warnings)}")
+    high = ok & (fields["friction_coefficient"] > friction_limit)
+    if high.any():
+        j = int(np.flatnonzero(high)[0])
+        warnings.warn(f"{high.sum()} of {fa.size} cases need a friction coefficient above {friction_limit:g} for "
+                      f"{control}-raceway control (e.g. {fields['friction_coefficient'][j]:.3g} at F_a = {fa[j]:g} N, "
+                      f"{w[j] / RPM:g} rpm): the balls would spin or skid, the model is not valid there",
+                      ValidityWarning, stacklevel=3)
+    return HighSpeedState(**{k: np.asarray(fields[k]).reshape(shape)[()] for k in HighSpeedState._fields})
 
 
 def high_speed_analysis(bearing, axial_load, shaft_speed, *, reduced_modulus=None, **options):
@@ -451,7 +534,10 @@ def high_speed_analysis(bearing, axial_load, shaft_speed, *, reduced_modulus=Non
     ----------
     bearing : BallBearing
         Needs n_balls, ball_diameter, pitch_diameter, both conformities and the free contact angle in
-        (0, 90 deg); materials give E' and the ball density.
+        (0, 90 deg); materials give E' and the ball density. A bearing with zero or negative
+        ``radial_clearance`` (no free contact angle: a preload) is solved by the 5-DOF model of
+        :mod:`bearinglab.quasistatic.combined` with the rings held concentric and square, the same ball
+        equilibrium (``method`` "newton", ``constants`` "mass" and the physical gyroscopic sign only).
     axial_load : array_like
         F_a > 0. [N]
     shaft_speed : array_like
@@ -479,6 +565,8 @@ def high_speed_analysis(bearing, axial_load, shaft_speed, *, reduced_modulus=Non
     ...       f"mu = {s.friction_coefficient:.3f}")
     56.099 / 21.121 deg, mu = 0.086
     """
+    if _preloaded(bearing):  # issue 30: no free contact angle; the 5-DOF model solves it
+        return _preloaded_analysis(bearing, axial_load, shaft_speed, reduced_modulus, options)
     return contact_angles(axial_load, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
 
 
@@ -513,6 +601,8 @@ def sign_change_thrust(bearing, shaft_speed, *, reduced_modulus=None, **options)
     >>> print(np.round(f / 1e3, 2))
     [ 2.31 26.81]
     """
+    if _preloaded(bearing):  # balls at alpha = 0 without thrust: delta_a(0) = 0 at any speed, rising with F_a
+        return np.zeros(np.shape(_speed("shaft_speed", shaft_speed)))[()]
     return zero_displacement_thrust(shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
 
 
