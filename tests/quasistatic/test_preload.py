@@ -157,3 +157,25 @@ def test_the_note_says_how_far_the_clearance_is_negative():
     assert "-8 um" in note and "preloaded" in note and "N/um" in note
     assert preload.preload_note(DEEP.replace(radial_clearance=5e-6)) is None
     assert "0 um" in preload.preload_note(DEEP.replace(radial_clearance=0.0))
+
+
+def test_high_speed_of_a_bearing_without_clearance_joins_spec_004_at_zero_clearance():
+    """A bearing with zero clearance has no free contact angle for spec 004's model; it is solved by the
+    5-DOF model with the rings held concentric. At a clearance of 1 nm spec 004's model gives the same
+    state (its delta_a counts from first contact, A sin(alpha0) ~ 1 um further on)."""
+    from bearinglab import quasistatic
+
+    fa, w = np.array([5e3, 20e3]), 10000 * RPM
+    zero = quasistatic.high_speed_analysis(B218.replace(radial_clearance=0.0), fa, w)
+    tiny = B218.replace(radial_clearance=1e-9)
+    near = quasistatic.high_speed_analysis(tiny, fa, w)
+    takeup = tiny.groove_distance * math.sin(tiny.contact_angle)
+    assert zero.converged.all() and list(zero.method) == ["newton", "newton"]
+    assert_allclose(zero.contact_angle_inner, near.contact_angle_inner, atol=2e-4)
+    assert_allclose(zero.contact_angle_outer, near.contact_angle_outer, atol=2e-4)
+    assert_allclose(zero.axial_displacement, near.axial_displacement + takeup, rtol=1e-3)
+    for name in ("ball_load_inner", "ball_load_outer", "centrifugal_force", "cage_speed", "deflection_inner"):
+        assert_allclose(getattr(zero, name), getattr(near, name), rtol=1e-3, err_msg=name)
+    assert np.all(quasistatic.sign_change_thrust(B218.replace(radial_clearance=-2e-6), [3000 * RPM]) == 0.0)
+    with pytest.raises(InputError, match="5-DOF model"):
+        quasistatic.high_speed_analysis(B218.replace(radial_clearance=0.0), 5e3, w, constants="harris")
