@@ -160,7 +160,7 @@ class _Geometry(NamedTuple):
     @property
     def interference(self):
         """-e/2 for e < 0: the radial compression of every ball in the concentric position (0 otherwise). [m]"""
-        return max(self.gr0 - self.big_a, 0.0)
+        return max(-0.5 * self.clearance, 0.0)
 
 
 #: A preload beyond this many ball diameters of radial interference per ball (-e/2 > D) is a unit mistake:
