@@ -702,13 +702,23 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
                     clearance=radial_clearance)
     if held is not None:
         _check_held(geo, held)
+    over, bound = _beyond_bound(geo, f)
+    if over.any() and on_failure == "raise":  # issue 29: stop at the solver's bound, before any work
+        k = int(np.flatnonzero(over)[0])
+        raise ConvergenceError("combined.load_distribution", iterations=0, residual=np.inf, estimate=np.nan,
+                               reason=f"loads {f[k].tolist()} at {w[k] / RPM:g} rpm: {_bound_reason(bound)} "
+                                      f"({int(over.sum())} of {over.size} cases)")
     compiled = _solve_mod.use_compiled(engine, auto=True)
-    u, ok, it, final = _solve(geo, f, w**2, tol, max_iter, final=True, held=held, compiled=compiled)
+    solved = np.where(over[:, None], 0.0, f) if over.any() else f  # such a case is not solved, only flagged
+    u, ok, it, final = _solve(geo, solved, w**2, tol, max_iter, final=True, held=held, compiled=compiled)
+    ok &= ~over
     out = _outputs(geo, f, w, u, ok, it, final, held)
     out.setdefault("reactions", np.full((len(f), 5), np.nan))
     ok &= out["residual"] <= np.maximum(tol, out.pop("floor"))
     if not ok.all():
         failures = _failures(geo, f, w, u, ok, None if held is None else np.isnan(held).astype(float))
+        failures.update({int(k): _bound_reason(bound) for k in np.flatnonzero(over)})
+        failures = dict(sorted(failures.items()))
         if on_failure == "raise":
             k, reason = next(iter(failures.items()))
             force, _, balls = _evaluate(geo, np.nan_to_num(u[k:k + 1]), w[k:k + 1] ** 2, deriv=False)
@@ -730,6 +740,33 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
                             azimuth=geo.psi, converged=ok.reshape(shape)[()], iterations=it.reshape(shape)[()],
                             warnings=notes, **{k: shaped[k] for k in shaped if k in LoadDistribution._fields
                                                and (k != "azimuth" or z)})
+
+
+#: The solver's bound (issue 29): no ball is compressed by more than this many ball diameters.
+_MAX_DEFLECTION = 1.0
+
+
+def _load_bound(geo):
+    """The largest force (and moment over d_m/2) the balls can carry with no contact compressed by more
+    than a ball diameter: Z max_alpha max(K_i, K_o) D^1.5 [N]. Beyond it the rings would pass through the
+    balls (as a prescribed displacement beyond a ball diameter, :func:`_check_held`): a unit mistake or an
+    absurd load, never an answer."""
+    c = np.linspace(0.0, 1.0, 65)  # cos(alpha): every contact angle
+    k = max(np.max(np.exp(_combined_balls._log_k(geo, c, race)[0])) for race in (0, 1))
+    return geo.z * k * (_MAX_DEFLECTION * geo.d) ** 1.5
+
+
+def _beyond_bound(geo, loads):
+    """Cases whose force or moment (over d_m/2) exceeds :func:`_load_bound`, and the bound [N]."""
+    bound = _load_bound(geo)
+    force = np.linalg.norm(loads[:, :3], axis=-1)
+    moment = np.linalg.norm(loads[:, 3:], axis=-1) / (geo.dm / 2.0)
+    return (force > bound) | (moment > bound), bound
+
+
+def _bound_reason(bound):
+    return (f"loads beyond what the bearing can carry: a force above {bound:.4g} N (or a moment above that "
+            "times d_m/2) would compress a ball by more than its diameter, the solver's bound (a unit mistake?)")
 
 
 def _held(f, w, shape, prescribed):

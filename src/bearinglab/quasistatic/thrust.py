@@ -47,9 +47,18 @@ from .ball import (
     gyroscopic_moment,
     required_friction_coefficient,
 )
-from .contact import _hertz_coefficients
+from .contact import _hertz_coefficients, _k
 from .continuation import _newton, _static_start, _unknowns_from
-from .equations import _NOT_ROOT, _OK, _STATUS_TEXT, STATUS, _angle_sequence, _equations, _prepare
+from .equations import (
+    _NOCONV,
+    _NOT_ROOT,
+    _OK,
+    _STATUS_TEXT,
+    STATUS,
+    _angle_sequence,
+    _equations,
+    _prepare,
+)
 from .search import _ROOT_TOL, _angle_iteration
 
 __all__ = [
@@ -300,6 +309,11 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
                             shape=np.shape(w))
     n = model.fa.size
     wf = np.broadcast_to(w, shape).ravel().astype(float)
+    over = _thrust_bounds(model, wf, on_failure)
+    fa_given = model.fa
+    if over.any():  # flagged below, not solved: the solve runs at a harmless thrust instead (a ball deflection
+        # of 1e-4 D), whose results are dropped
+        model = model._replace(fa=np.where(over, 1e-6 * _upper_thrust(model), model.fa))
     if _compiled_engine(engine, method):
         from . import _compiled  # imports numba: only when the compiled path runs
 
@@ -311,6 +325,11 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
         v, status, iters, meth, out = _solve_numpy(model, wf, method, tol=tol, max_iter=int(max_iter),
                                                    speed_step=speed_step)
     meth[wf == 0] = "static"
+    if over.any():
+        status = np.where(over, _NOCONV, status)
+        for key in out:
+            out[key] = np.where(over, np.nan, out[key])
+        model = model._replace(fa=fa_given)
     ok = status == _OK
     failed = np.flatnonzero(~ok)
     if failed.size and on_failure == "raise":
@@ -336,6 +355,46 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
     fields["status"] = np.array(STATUS, dtype=object)[status]
     fields["method"] = meth
     return HighSpeedState(**{k: np.asarray(fields[k]).reshape(shape)[()] for k in HighSpeedState._fields})
+
+
+#: A thrust below this many times the rounding of the groove geometry (eps A) in ball deflection cannot be
+#: resolved; beyond a ball diameter of deflection it is the solver's bound (issue 29).
+_RESOLVABLE_DEFLECTION = 1e4
+_MAX_DEFLECTION = 1.0
+
+
+def _upper_thrust(model):
+    """Per case, Z max_alpha max(K_i, K_e) D^1.5: the thrust that would compress a ball by its diameter."""
+    c = np.linspace(0.0, 1.0, 65)
+    k = np.zeros(model.fa.size)
+    for table in (model.t_inner, model.t_outer):
+        for cj in c:
+            k = np.maximum(k, _k(table, model.gid, np.full(model.fa.size, cj))[0])
+    return model.z * k * (_MAX_DEFLECTION * model.d) ** 1.5
+
+
+def _thrust_bounds(model, w, on_failure):
+    """Issue 29: a thrust too light to resolve is an InputError; one beyond the solver's bound (a ball
+    compressed by more than its diameter) a ConvergenceError, before any work (with ``on_failure="flag"``
+    the case is flagged). Returns the cases beyond the bound."""
+    bd = (model.fi + model.fo - 1.0) * model.d
+    kn = _k(model.t_inner, model.gid, np.cos(model.a0))[0]  # the softer contact bounds the deflection
+    kn = np.minimum(kn, _k(model.t_outer, model.gid, np.cos(model.a0))[0])
+    deflection = np.cbrt(model.fa / (model.z * kn * np.sin(model.a0))) ** 2
+    light = deflection < _RESOLVABLE_DEFLECTION * np.finfo(float).eps * bd
+    if light.any():
+        k = int(np.flatnonzero(light)[0])
+        least = model.z[k] * kn[k] * np.sin(model.a0[k]) * (_RESOLVABLE_DEFLECTION * np.finfo(float).eps * bd[k]) ** 1.5
+        raise InputError(f"axial_load must be >= {least:.3g} [N] to be resolved (ball deflections of at least "
+                         f"{_RESOLVABLE_DEFLECTION:g} times the rounding of the groove geometry), got {model.fa[k]:g} N")
+    over = model.fa > _upper_thrust(model)
+    if over.any() and on_failure == "raise":
+        k = int(np.flatnonzero(over)[0])
+        raise ConvergenceError("quasistatic.contact_angles", iterations=0, residual=np.inf, estimate=np.nan,
+                               reason=f"F_a = {model.fa[k]:g} N at {w[k] / RPM:g} rpm: beyond what the bearing can "
+                                      f"carry, a thrust above {_upper_thrust(model)[k]:.4g} N would compress a ball by "
+                                      "more than its diameter, the solver's bound (a unit mistake?)")
+    return over
 
 
 def zero_displacement_thrust(shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
