@@ -58,10 +58,11 @@ def report(bearing, loads=None, speed=0.0, *, source=None, model=None):
     if loads is not None:
         with_preload, zero = preload.stiffness_gain(bearing, loads, speed)
         names = ("k_xx", "k_yy", "k_zz", "k_tilt_x", "k_tilt_y")
-        entry["stiffness_gain_at_load"] = {n: (float(a / b) if b > 0 and math.isfinite(a / b) else None)
-                                           for n, a, b in zip(names, with_preload, zero, strict=True)}
-        gain = entry["stiffness_gain_at_load"]
-        shown = [f"{n} x{g:.3g}" for n, g in gain.items() if g is not None and n in ("k_xx", "k_yy", "k_zz")]
+        # a ratio only where the bearing at zero clearance has that stiffness (none at zero load)
+        gain = {n: float(a / b) for n, a, b in zip(names, with_preload, zero, strict=True)
+                if b > 0 and math.isfinite(a / b)}
+        entry["stiffness_gain_at_load"] = gain
+        shown = [f"{n} x{g:.3g}" for n, g in gain.items() if n in ("k_xx", "k_yy", "k_zz")]
         if shown and e < 0:
             note += f"; at these loads the stiffness against zero clearance: {', '.join(shown)}"
     if model:
