@@ -103,8 +103,12 @@ def _chebyshev_tables(d, dm, fi, fo, ep, a0, stiffness_at):
 def _series(tables):
     """(4, N) Chebyshev series in x = 2 cos(alpha) - 1 of ln K_i, d ln K_i / d cos(alpha), ln K_o and
     d ln K_o / d cos(alpha) (the derivative series padded with a zero to the same length; a constant
-    series has a zero derivative)."""
+    series has a zero derivative), without the trailing coefficients at rounding level."""
     ki, ko = (np.asarray(t, dtype=float) for t in tables[:2])
+    # the coefficients fall geometrically (ln K is analytic in cos alpha) to rounding by the 11th or 12th;
+    # the ones below 8 eps of the largest are rounding of the fit and are left out (a quicker sum)
+    size = 1 + max(int(np.flatnonzero(np.abs(t) > 8.0 * _EPS * np.max(np.abs(t)))[-1]) for t in (ki, ko))
+    ki, ko = ki[:size], ko[:size]
     out = np.zeros((4, ki.size))
     out[0], out[2] = ki, ko
     if ki.size > 1:

@@ -70,6 +70,13 @@ def _jit(func):
 
 
 # --------------------------------------------------------------------------- Hertz constants
+def _norm2(a, b):
+    """sqrt(a^2 + b^2): the C library's hypot guards against overflow at several times the cost, and no
+    length here comes near it."""
+    return math.sqrt(a * a + b * b)
+
+
+
 def hertz4(ser, ci, co):
     """ln K_i, d ln K_i / d cos(alpha_i), ln K_o, d ln K_o / d cos(alpha_o) at cos(alpha) = ci and co, from
     the (4, N) series of combined._series: the four sums of Clenshaw's recurrence in one loop."""
@@ -101,7 +108,7 @@ def rest_eval(u, loads, free, par, cs, sn, ser, force, k, out_q, out_a):
         c, s = cs[j], sn[j]
         ga = u[2] + arm * (u[3] * s - u[4] * c)
         gr = gr0 + (u[0] * c + u[1] * s)
-        rho = math.hypot(ga, gr)
+        rho = _norm2(ga, gr)
         sa, ca = ga / rho, gr / rho
         lki, dli, lko, dlo = hertz4(ser, ca, ca)
         wi, wo = math.exp(lki * (-2.0 / 3.0)), math.exp(lko * (-2.0 / 3.0))
@@ -143,7 +150,7 @@ def rest_eval(u, loads, free, par, cs, sn, ser, force, k, out_q, out_a):
         s10sc += h10 * cs_
         s10ss += h10 * ss
         s10cc += h10 * cc
-        total += math.hypot(pa, pr)
+        total += _norm2(pa, pr)
         noise += dq * _EPS * rho
         if len(out_q):
             out_q[j] = q
@@ -217,7 +224,7 @@ def lm_step(k, r, free, lam, arm, m, du):
 
 def _move(du, arm):
     """Largest move of a groove-curvature centre for the ring step du (bounded over the balls)."""
-    return max(abs(du[2]) + arm * math.hypot(du[3], du[4]), math.hypot(du[0], du[1]))
+    return max(abs(du[2]) + arm * _norm2(du[3], du[4]), _norm2(du[0], du[1]))
 
 
 def rest_newton(loads, u, free, par, cs, sn, ser, w):
@@ -281,7 +288,7 @@ def dynamics(si, ci, so, co, g, inner_control, inertia, mass, dm):
     else:  # tan beta = sin a_o / (cos a_o + D/d_m)
         y, x = so, co + g
         b_i, b_o = 0.0, (1.0 + g * co) / (1.0 + 2.0 * g * co + g * g)
-    rb = math.hypot(y, x)
+    rb = _norm2(y, x)
     sb, cb = y / rb, x / rb  # sin and cos of beta = atan2(y, x)
     c_ob, s_ob = co * cb + so * sb, so * cb - co * sb
     c_ib, s_ib = ci * cb + si * sb, si * cb - ci * sb
@@ -307,7 +314,7 @@ def ball(xa, xr, ga, gr, w2, par, ser, full, o):
     fc, do, noise, noise_b, then bx (4) and, with ``full``, bg, px, pg (4 each)."""
     d, dm, ri, ro, mass, inertia = par[1], par[2], par[5], par[6], par[7], par[8]
     ia, ir = ga - xa, gr - xr
-    rho_o, rho_i = math.hypot(xa, xr), math.hypot(ia, ir)
+    rho_o, rho_i = _norm2(xa, xr), _norm2(ia, ir)
     so, co = xa / rho_o, xr / rho_o
     si, ci = ia / rho_i, ir / rho_i
     di, do = rho_i - ri, rho_o - ro
@@ -363,7 +370,7 @@ def ball(xa, xr, ga, gr, w2, par, ser, full, o):
 
 def ball_start(ga, gr, w2, par, ser):
     """(xa, xr): the ball on the line between its groove centres, pressed out by F_c (combined._ball_start)."""
-    rho = math.hypot(ga, gr)
+    rho = _norm2(ga, gr)
     na, nr = ga / rho, gr / rho
     lki, _dli, lko, _dlo = hertz4(ser, nr, nr)
     wi, wo = math.exp(lki * (-2.0 / 3.0)), math.exp(lko * (-2.0 / 3.0))
@@ -384,7 +391,7 @@ def ball_newton(xa, xr, ga, gr, w2, par, ser, o):
             s0, s1 = 0.0, 0.0
         t = 1.0
         for _h in range(20):  # keep the ball on the outer raceway
-            if math.hypot(xa + t * s0, xr + t * s1) > ro:
+            if _norm2(xa + t * s0, xr + t * s1) > ro:
                 break
             t *= 0.5
         xa, xr = xa + t * s0, xr + t * s1
@@ -463,7 +470,7 @@ def speed_eval(u, xa, xr, w2, loads, free, par, cs, sn, ser, o, bs, force, relax
         s10sc += h10 * cs_
         s10ss += h10 * ss
         s10cc += h10 * cc
-        total += math.hypot(pa, pr)
+        total += _norm2(pa, pr)
         noise += o[9]
         b2 = o[0] * o[0] + o[1] * o[1]
         bsq += b2
@@ -504,7 +511,7 @@ def block_newton(loads, u, xa, xr, w2, free, par, cs, sn, ser, w, bs, bt):
             da = bs[0][j] + (bs[2][j] * dga + bs[3][j] * dgr)
             dr = bs[1][j] + (bs[4][j] * dga + bs[5][j] * dgr)
             bt[10][j], bt[11][j] = da, dr  # the balls' steps
-            move = max(move, math.hypot(da, dr))
+            move = max(move, _norm2(da, dr))
         t = min(1.0, 0.5 * big_a / move) if move > 0 else 1.0
         if not math.isfinite(t):
             t = 0.0
@@ -660,7 +667,7 @@ def react_case(u, w2, par, cs, sn, ser, force, k, o):
     return ok
 
 
-_SCALAR = ("hertz4", "rest_eval", "_assemble", "_norms", "lm_step", "_move", "rest_newton", "_diff", "dynamics", "ball",
+_SCALAR = ("_norm2", "hertz4", "rest_eval", "_assemble", "_norms", "lm_step", "_move", "rest_newton", "_diff", "dynamics", "ball",
            "ball_start", "ball_newton", "schur", "speed_eval", "block_newton", "solve_case", "_work", "react_case")
 for _name in _SCALAR:
     globals()[_name] = _jit(globals()[_name])
