@@ -129,8 +129,27 @@ def stiffness_gain(bearing, loads, shaft_speed=0.0, **options):
 
 
 def preload_note(bearing, source="the operating clearance"):
-    """The warning of a bearing with zero or negative clearance (None for a positive one): how far the
-    clearance is negative, the ball load and stiffness it gives at zero load, and how it is solved."""
+    """The warning of a bearing with zero or negative clearance: how far the clearance is negative, the
+    ball load and stiffness it gives at zero load, and how it is solved.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        With its operating ``radial_clearance``.
+    source : str, optional
+        How the clearance was given, the warning's subject ("the given radial clearance", ...).
+
+    Returns
+    -------
+    str or None
+        The warning; None for a positive (or unknown) clearance.
+
+    Examples
+    --------
+    >>> from bearinglab import catalog
+    >>> print(preload_note(catalog.get("6208").replace(radial_clearance=-10e-6))[:75])
+    the operating clearance is negative, -10 um: the bearing runs preloaded, ev
+    """
     e = bearing.radial_clearance
     if e is None or e > 0:
         return None
