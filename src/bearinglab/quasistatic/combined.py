@@ -504,6 +504,12 @@ def _at_solution(geo, loads, w, u, sel, final, free=None):
     """Relative residual, rounding floor, stiffness, reaction and ball outputs (``_BALL_OUT``) of the cases
     ``sel``: from the solver's last evaluation (``final`` of :func:`_solve`) where it has one, else evaluated."""
     have = np.zeros(sel.size, dtype=bool) if final is None else final[0][sel]
+    if have.all() and sel.size == len(loads):  # every case (the usual batch): the last evaluation as it is
+        last = final[1]
+        res = {k: (last[k] if k in last else last[_AT_REST[k]] if k in _AT_REST else np.zeros((sel.size, geo.z)))
+               for k in _BALL_OUT}
+        res.update({k: last[k] for k in ("residual", "floor", "stiffness", "force")})
+        return res
     res = {k: np.empty((sel.size, geo.z)) for k in _BALL_OUT}
     res.update(residual=np.empty(sel.size), floor=np.empty(sel.size), stiffness=np.empty((sel.size, 5, 5)),
                force=np.empty((sel.size, 5)))
