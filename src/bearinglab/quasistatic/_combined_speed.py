@@ -58,13 +58,12 @@ def _measure(geo, loads, w2, u, xa, xr, free, tol, noise_factor, resolvable):
     diff = loads - force if free is None else (loads - force) * free
     ring = np.sqrt(np.add.reduce((diff * scale_v) ** 2, axis=-1))
     bsq = st["b0"] ** 2 + st["b1"] ** 2
-    merit = np.sqrt(ring * ring + np.add.reduce(bsq, axis=-1))
-    total = np.add.reduce(np.hypot(st["pa"], st["pr"]), axis=-1)
+    merit = np.sqrt(ring * ring + _ring.ballsum(bsq))
+    total = _ring.ballsum(np.hypot(st["pa"], st["pr"]))
     scale = np.maximum(np.sqrt(np.add.reduce((loads * scale_v) ** 2, axis=-1)), total)
     with np.errstate(invalid="ignore", divide="ignore"):
         rel = np.where(scale > 0, ring / scale, ring)
-        floor = np.minimum(np.where(scale > 0, noise_factor * np.add.reduce(st["noise"], axis=-1) / scale, 0.0),
-                           resolvable)
+        floor = np.minimum(np.where(scale > 0, noise_factor * _ring.ballsum(st["noise"]) / scale, 0.0), resolvable)
     fs = np.maximum(st["qi"], st["qo"])
     balls_ok = np.all(np.sqrt(bsq) <= np.maximum(tol * fs, noise_factor * st["noise_b"]), axis=-1)
     valid = np.all(st["do"] > 0, axis=-1) & np.isfinite(merit)

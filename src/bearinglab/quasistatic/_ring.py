@@ -3,6 +3,7 @@ r"""Numerical kernels of the ring Newton of :mod:`bearinglab.quasistatic.combine
 Ball set
 --------
 offsets           groove-centre offsets (axial, radial) of every ball for ring displacements
+ballsum           a sum over the balls, case by case
 reaction          the ring load of the ball reactions, sum_j J_j^T p_j
 assemble          the ring stiffness of the balls' 2 x 2 stiffnesses, sum_j J_j^T H_j J_j
 
@@ -25,8 +26,8 @@ Every system is solved from its own row alone, so results do not depend on the b
 Bit-identity for any batch: BLAS rounds a row of a matrix product differently with the number of rows
 (its kernels treat the last rows of an odd block apart: the same row in batches of 2 and 3 differs in
 the last bit on an AVX-512 host), and ``einsum`` fuses multiply-adds in its vector body but not in its
-tail. So the sums over the balls are written as elementwise products reduced along the last, contiguous
-axis (numpy's pairwise sum of that row alone), never as a matrix product.
+tail. So the sums over the balls are written as elementwise products added ball after ball (each case's
+sum in one order whatever the batch), never as a matrix product.
 """
 
 from __future__ import annotations
@@ -35,7 +36,7 @@ import math
 
 import numpy as np
 
-__all__ = ["assemble", "hold", "lm_step", "offsets", "reaction", "solve5", "thrust_offset"]
+__all__ = ["assemble", "ballsum", "hold", "lm_step", "offsets", "reaction", "solve5", "thrust_offset"]
 
 _PIVOT = 1e-10  # a pivot below this fraction of the largest diagonal entry goes to LAPACK (partial pivoting)
 _START_ITER = 5  # Newton steps of the thrust offset (a start only; see thrust_offset)
@@ -52,8 +53,24 @@ def offsets(geo, u):
 
 
 def _sum(h, weights):
-    """sum_j h[n, j] w[k, j] -> (n, k): the products laid out (n, k, Z) and reduced along Z (contiguous)."""
-    return np.add.reduce(np.ascontiguousarray(h)[:, None, :] * weights, axis=-1)
+    """sum_j h[n, j] w[k, j] -> (n, k), the balls added one after the other (elementwise over the cases, so
+    in one order whatever the batch; numpy's reduction along a short axis costs a call per row)."""
+    z = h.shape[-1]
+    cols = weights.T  # (Z, k)
+    acc = h[:, 0:1] * cols[0]
+    tmp = np.empty_like(acc)
+    for j in range(1, z):
+        np.multiply(h[:, j:j + 1], cols[j], out=tmp)
+        acc += tmp
+    return acc
+
+
+def ballsum(a):
+    """sum_j a[n, j] -> (n,), the balls added one after the other (as :func:`_sum`)."""
+    acc = a[:, 0].copy()
+    for j in range(1, a.shape[-1]):
+        acc += a[:, j]
+    return acc
 
 
 def reaction(geo, pa, pr):

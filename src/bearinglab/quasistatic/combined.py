@@ -277,9 +277,9 @@ def _measure(geo, loads, force, balls, free=None):
     """
     diff = loads - force if free is None else (loads - force) * free
     res = np.linalg.norm(_scaled(geo, diff), axis=-1)
-    total = np.sum(np.hypot(balls["pa"], balls["pr"]), axis=-1)
+    total = _ring.ballsum(np.hypot(balls["pa"], balls["pr"]))
     scale = np.maximum(np.linalg.norm(_scaled(geo, loads), axis=-1), total)
-    noise = _NOISE * np.sum(balls["noise"], axis=-1)
+    noise = _NOISE * _ring.ballsum(balls["noise"])
     with np.errstate(invalid="ignore", divide="ignore"):
         return res, np.where(scale > 0, res / scale, res), np.minimum(np.where(scale > 0, noise / scale, 0.0), _RESOLVABLE)
 
