@@ -92,7 +92,7 @@ def baseline(bearing, loads, speed=0.0):
     def run():
         out = []
         for f, s in zip(rows, starts, strict=True):
-            u, res, stiff, force = [0.0] * 5, [[0.0] * z for _ in range(6)], [0.0] * 25, [0.0] * 5
+            u, res, stiff, force = [0.0] * 5, [[0.0] * z for _ in range(8)], [0.0] * 25, [0.0] * 5
             w = [[0.0] * max(z, 70) for _ in range(15)]
             ok, _it, _r, _fl = solve_case(f, s, [1.0] * 5, w2, par_l, cs, sn, ser_l, u, res, stiff, force, w,
                                           [[0.0] * z for _ in range(10)], [[0.0] * z for _ in range(12)])

@@ -53,7 +53,8 @@ __all__ = ["PARAMETERS", "available", "parameters", "plain", "reactions", "solve
 
 #: The per-bearing constants the kernel takes, in order.
 PARAMETERS = ("z", "d", "dm", "big_a", "gr0", "ri", "ro", "mass", "inertia", "lam_i", "lam_o", "inner_control",
-              "tol", "max_iter", "lam_max", "noise", "resolvable", "ball_tol", "ball_max_iter")
+              "tol", "max_iter", "lam_max", "noise", "resolvable", "ball_tol", "ball_max_iter", "fi", "fo", "ep",
+              "cos_free")
 _EPS = 2.220446049250313e-16
 _LINE_SEARCH = 8
 _PIVOT = 1e-300  # gauss5_into pivots; a zero pivot gives NaN (the step is then rejected)
@@ -75,6 +76,17 @@ def _norm2(a, b):
     length here comes near it."""
     return math.sqrt(a * a + b * b)
 
+
+
+def hertz_n(ser, c):
+    """ln K_n and d ln K_n / d cos(alpha) of the ball between both contacts at cos(alpha) = c, from rows 4
+    and 5 of the series (:func:`parameters`): one Clenshaw pass instead of both contacts' four."""
+    x = 2.0 * c - 1.0
+    a1 = a2 = b1 = b2 = 0.0
+    for j in range(len(ser[0]) - 1, 0, -1):
+        a1, a2 = ser[4][j] + 2.0 * x * a1 - a2, a1
+        b1, b2 = ser[5][j] + 2.0 * x * b1 - b2, b1
+    return ser[4][0] + x * a1 - a2, ser[5][0] + x * b1 - b2
 
 
 def hertz4(ser, ci, co):
@@ -110,11 +122,8 @@ def rest_eval(u, loads, free, par, cs, sn, ser, force, k, out_q, out_a):
         gr = gr0 + (u[0] * c + u[1] * s)
         rho = _norm2(ga, gr)
         sa, ca = ga / rho, gr / rho
-        lki, dli, lko, dlo = hertz4(ser, ca, ca)
-        wi, wo = math.exp(lki * (-2.0 / 3.0)), math.exp(lko * (-2.0 / 3.0))
-        sw = wi + wo
-        kn = 1.0 / (sw * math.sqrt(sw))
-        dlkn = (wi * dli + wo * dlo) / sw
+        lkn, dlkn = hertz_n(ser, ca)
+        kn = math.exp(lkn)
         defl = max(rho - big_a, 0.0)
         root = math.sqrt(defl)
         q = kn * defl * root
@@ -550,12 +559,33 @@ def block_newton(loads, u, xa, xr, w2, free, par, cs, sn, ser, w, bs, bt):
     return conv, it, rel, floor
 
 
+def pressure(q, c, race, par, ser):
+    """p_max = 3 Q / (2 pi a b) of the inner (race 0) or outer (1) contact at cos(alpha) = c (combined._pressure):
+    a b = (a* b*) (3 Q / (E' sum rho))^(2/3), the curvature sum of spec 004 eqs. (17)-(21), a* b* from rows 6
+    and 7 of the series; at the free angle with ``stiffness_at="free"`` (``cos_free`` not NaN)."""
+    if not q > 0.0:
+        return 0.0
+    if par[22] == par[22]:  # not NaN: the free angle
+        c = par[22]
+    d = par[1]
+    g = d * c / par[2]
+    race_term = 2.0 * g / (1.0 - g) if race == 0 else -2.0 * g / (1.0 + g)
+    curvature_sum = (4.0 - 1.0 / par[19 + race] + race_term) / d
+    x = 2.0 * c - 1.0
+    a1 = a2 = 0.0
+    row = ser[6 + race]
+    for j in range(len(row) - 1, 0, -1):
+        a1, a2 = row[j] + 2.0 * x * a1 - a2, a1
+    ab = math.exp(row[0] + x * a1 - a2) * (3.0 * q / (par[21] * curvature_sum)) ** (2.0 / 3.0)
+    return 3.0 * q / (2.0 * math.pi * ab)
+
+
 _STEPS = (1, 4, 16)  # continuation in omega^2 (_combined_speed._CONTINUATION)
 
 
 def solve_case(loads, start, free, w2, par, cs, sn, ser, u, out, stiff, force, w, bs, bt):
     """One case: u (from ``start``), then the rest solve and, at speed, the speed solve. Writes u, the
-    outputs ``out`` (6, Z: qi, qo, ai, ao, mg, fc), ``stiff`` (25) and ``force`` (5); returns (converged,
+    outputs ``out`` (8, Z: qi, qo, ai, ao, mg, fc, p_i, p_o), ``stiff`` (25) and ``force`` (5); returns (converged,
     iterations, rel, floor)."""
     z, arm, gr0 = len(cs), 0.5 * par[2], par[4]
     for i in range(5):
@@ -565,6 +595,8 @@ def solve_case(loads, start, free, w2, par, cs, sn, ser, u, out, stiff, force, w
         rest_eval(u, loads, free, par, cs, sn, ser, force, stiff, out[0], out[2])
         for j in range(z):
             out[1][j], out[3][j], out[4][j], out[5][j] = out[0][j], out[2][j], 0.0, 0.0
+            c = math.cos(out[2][j])
+            out[6][j], out[7][j] = pressure(out[0][j], c, 0, par, ser), pressure(out[0][j], c, 1, par, ser)
         return True, it, rel, floor
     if not ok:
         return False, it, rel, floor
@@ -599,6 +631,8 @@ def solve_case(loads, start, free, w2, par, cs, sn, ser, u, out, stiff, force, w
                 gr = gr0 + (u[0] * c + u[1] * s)
                 out[0][j], out[1][j], out[4][j], out[5][j] = bs[6][j], bs[7][j], bs[8][j], bs[9][j]
                 out[2][j], out[3][j] = math.atan2(ga - xa[j], gr - xr[j]), math.atan2(xa[j], xr[j])
+                out[6][j] = pressure(out[0][j], math.cos(out[2][j]), 0, par, ser)
+                out[7][j] = pressure(out[1][j], math.cos(out[3][j]), 1, par, ser)
             return True, it, rel, floor
     for i in range(5):
         u[i] = math.nan
@@ -667,7 +701,7 @@ def react_case(u, w2, par, cs, sn, ser, force, k, o):
     return ok
 
 
-_SCALAR = ("_norm2", "hertz4", "rest_eval", "_assemble", "_norms", "lm_step", "_move", "rest_newton", "_diff", "dynamics", "ball",
+_SCALAR = ("_norm2", "hertz_n", "hertz4", "pressure", "rest_eval", "_assemble", "_norms", "lm_step", "_move", "rest_newton", "_diff", "dynamics", "ball",
            "ball_start", "ball_newton", "schur", "speed_eval", "block_newton", "solve_case", "_work", "react_case")
 for _name in _SCALAR:
     globals()[_name] = _jit(globals()[_name])
@@ -702,9 +736,46 @@ def parameters(geo, tol, max_iter, lam_max, noise, resolvable, ball_tol, ball_ma
             "mass": geo.mass, "inertia": geo.inertia, "lam_i": geo.lam[0], "lam_o": geo.lam[1],
             "inner_control": 1.0 if geo.control == "inner" else 0.0, "tol": tol, "max_iter": max_iter,
             "lam_max": lam_max, "noise": noise, "resolvable": resolvable, "ball_tol": ball_tol,
-            "ball_max_iter": ball_max_iter}
+            "ball_max_iter": ball_max_iter, "fi": geo.fi, "fo": geo.fo, "ep": geo.ep,
+            "cos_free": math.cos(geo.a0) if geo.stiffness_at == "free" else math.nan}
     par = np.array([float(vals[k]) for k in PARAMETERS])
-    return par, np.ascontiguousarray(geo.series)
+    return par, _series8(geo.series, geo.tables[2:4])
+
+
+def _series8(series, ab):
+    """The (4, N) series of both contacts (``_combined_balls._series``); as rows 4 and 5 those of
+    ln K_n = -3/2 ln(K_i^(-2/3) + K_o^(-2/3)) and its derivative in cos(alpha), fitted on the Chebyshev
+    nodes to the values of the first four rows (the same interpolation error, ~1e-14 in ln K_n), so that
+    the ball at rest costs one series and one exponential; as rows 6 and 7 ln(a* b*) of the inner and
+    outer contact (the pressures), without their rounding-level tail; every row padded to one length."""
+    n = series.shape[1]
+    rows = _series6(series)
+    ab = [np.asarray(t, dtype=float) for t in ab]
+    if ab[0].size > 1:
+        keep = 1 + max(int(np.flatnonzero(np.abs(t) > 8.0 * _EPS * np.max(np.abs(t)))[-1]) for t in ab)
+        ab = [t[:keep] for t in ab]
+    width = max(n, ab[0].size)
+    out = np.zeros((8, width))
+    out[:6, :n] = rows
+    out[6, :ab[0].size], out[7, :ab[1].size] = ab
+    return out
+
+
+def _series6(series):
+    n = series.shape[1]
+    out = np.zeros((6, n))
+    out[:4] = series
+    if n == 1:
+        lkn = -1.5 * np.log(np.exp(-2.0 / 3.0 * series[0]) + np.exp(-2.0 / 3.0 * series[2]))
+        out[4] = lkn
+        return out
+    x = np.cos(np.pi * (np.arange(n) + 0.5) / n)
+    cheb = np.polynomial.chebyshev
+    li, lo = cheb.chebval(x, series[0]), cheb.chebval(x, series[2])
+    lkn = -1.5 * np.log(np.exp(-2.0 / 3.0 * li) + np.exp(-2.0 / 3.0 * lo))
+    out[4] = cheb.chebfit(x, lkn, n - 1)
+    out[5, :-1] = 2.0 * cheb.chebder(out[4])
+    return out
 
 
 def solve(geo, loads, starts, free, w2, par, tables):
@@ -716,14 +787,14 @@ def solve(geo, loads, starts, free, w2, par, tables):
     ok = np.zeros(n, dtype=np.bool_)
     it = np.zeros(n, dtype=np.int64)
     rel, floor = np.full(n, np.nan), np.zeros(n)
-    out = np.full((n, 6, z), np.nan)
+    out = np.full((n, 8, z), np.nan)
     stiff, force = np.full((n, 25), np.nan), np.full((n, 5), np.nan)
     free = np.ones((n, 5)) if free is None else np.ascontiguousarray(free, dtype=float)
     with _LOCK:
         _solve_loop(np.ascontiguousarray(loads, dtype=float), np.ascontiguousarray(starts, dtype=float), free,
                     np.ascontiguousarray(w2, dtype=float), par, np.ascontiguousarray(geo.cos_psi),
                     np.ascontiguousarray(geo.sin_psi), tables, u, ok, it, rel, floor, out, stiff, force)
-    res = {k: out[:, j] for j, k in enumerate(("qi", "qo", "ai", "ao", "mg", "fc"))}
+    res = {k: out[:, j] for j, k in enumerate(("qi", "qo", "ai", "ao", "mg", "fc", "pi", "po"))}
     res.update(stiffness=stiff.reshape(n, 5, 5), force=force, residual=rel, floor=floor)
     return u, ok, it, res
 

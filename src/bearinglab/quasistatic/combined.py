@@ -508,7 +508,7 @@ def _at_solution(geo, loads, w, u, sel, final, free=None):
         last = final[1]
         res = {k: (last[k] if k in last else last[_AT_REST[k]] if k in _AT_REST else np.zeros((sel.size, geo.z)))
                for k in _BALL_OUT}
-        res.update({k: last[k] for k in ("residual", "floor", "stiffness", "force")})
+        res.update({k: last[k] for k in ("residual", "floor", "stiffness", "force", "pi", "po") if k in last})
         return res
     res = {k: np.empty((sel.size, geo.z)) for k in _BALL_OUT}
     res.update(residual=np.empty(sel.size), floor=np.empty(sel.size), stiffness=np.empty((sel.size, 5, 5)),
@@ -554,8 +554,9 @@ def _outputs(geo, loads, w, u, ok, it, final=None, held=None):
         qi, qo = balls["qi"], balls["qo"]
         vals = {"ball_load_inner": qi, "ball_load_outer": qo, "contact_angle_inner": balls["ai"],
                 "contact_angle_outer": balls["ao"], "centrifugal_force": balls["fc"],
-                "gyroscopic_moment": balls["mg"], "max_pressure_inner": _pressure(geo, qi, balls["ai"], "inner"),
-                "max_pressure_outer": _pressure(geo, qo, balls["ao"], "outer")}
+                "gyroscopic_moment": balls["mg"],  # the kernel computes the pressures with the rest
+                "max_pressure_inner": balls["pi"] if "pi" in balls else _pressure(geo, qi, balls["ai"], "inner"),
+                "max_pressure_outer": balls["po"] if "po" in balls else _pressure(geo, qo, balls["ao"], "outer")}
         for k, v in vals.items():
             out[k][sel] = v
         out["max_ball_load"][sel] = np.max(qi, axis=1)
