@@ -115,10 +115,6 @@ def bearing_reactions(bearings, displacement, shaft_speed=0.0, **options):
     w = np.broadcast_to(as_float("shaft_speed", shaft_speed), lead)
     if np.any(~np.isfinite(w)) or np.any(w < 0):
         raise InputError("shaft_speed must be finite and >= 0 [rad/s]")
-    unknown = set(options) - {"first_ball_angle", "stiffness_at", "raceway_control", "engine"}
-    if unknown:
-        raise InputError(f"bearing_reactions: unknown option(s) {sorted(unknown)} (valid: first_ball_angle, "
-                         "stiffness_at, raceway_control, engine)")
     compiled = _solve.use_compiled(options.get("engine", "auto"), auto=True)
     n = int(np.prod(lead, dtype=np.int64))
     flat = u.reshape(n, len(group), 5)

@@ -39,6 +39,21 @@ def test_a_6208_on_k5_h7_with_a_warm_inner_ring_is_solved_preloaded(capsys, comm
     assert any(f"is negative, {e:.3g} um" in w and "preloaded" in w for w in doc["warnings"])
 
 
+def test_a_c3_bearing_with_a_warm_inner_ring_fed_into_load_distribution(capsys):
+    """Issue 23's case, issue 30's bar: a C3 6208 on k5/H7 with its inner ring 20 K warmer runs out of clearance;
+    load-distribution solves it preloaded (every ball loaded at zero load) instead of refusing it."""
+    args = ["load-distribution", "-b", "6208-C3", "--shaft-fit", "k5", "--housing-fit", "H7",
+            "--inner-ring-temperature", "60 degC", "--outer-ring-temperature", "40 degC"]
+    code, out, err = run(capsys, *args, "--fx", "2 kN", "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["operating_clearance_um"] < 0 and doc["converged"] and doc["preload"]["ball_load_N"] > 0
+    code, out, err = run(capsys, *args, "--json")
+    assert code == 0, err
+    loads = [b["load_inner_N"] for b in json.loads(out)["balls"]]
+    assert min(loads) > 0 and max(loads) == pytest.approx(min(loads), rel=1e-9)
+
+
 @pytest.mark.parametrize("clearance", ["0 um", "-4 um"])
 def test_radial_clearance_zero_or_negative_is_taken_by_every_model(capsys, clearance):
     runs = {**COMMANDS, "film": ["film", "--fx", "2 kN", "--speed", "3000 rpm", "--viscosity", "20 cSt"]}
