@@ -283,8 +283,9 @@ class BallBearing:
                 self.radial_clearance, self.ball_diameter, self.inner_conformity, self.outer_conformity))
             if not angle < math.pi / 2:  # arccos is real up to 4 B D, but a bearing's contact is below 90 deg
                 limit = 2.0 * self.groove_distance
-                raise InputError(f"radial_clearance must be < {limit * 1e3:.6g} [mm] to give a contact angle below 90 "
-                                 f"deg, got {self.radial_clearance * 1e3:.6g} mm ({math.degrees(angle):.4g} deg)")
+                raise InputError(f"radial_clearance must be in [{-2.0 * self.ball_diameter * 1e3:.6g}, {limit * 1e3:.6g}) "
+                                 f"[mm] to give a contact angle below 90 deg (a negative clearance is a preload), got "
+                                 f"{self.radial_clearance * 1e3:.6g} mm ({math.degrees(angle):.4g} deg)")
             object.__setattr__(self, "contact_angle", angle)
         elif self.contact_angle is not None and self.radial_clearance is None and has_f and self.contact_angle > 0:
             e = float(geometry.radial_clearance(self.contact_angle, self.ball_diameter,
