@@ -185,10 +185,11 @@ GOOD = {
             {"contact_angle": None, "radial_clearance": 1e-3},
             r"radial_clearance must be in \(0, 0.84\) \[mm\] to give a real contact angle, got 1 mm",
         ),
-        (
-            {"contact_angle": None, "radial_clearance": -1e-6},
-            r"radial_clearance must be > 0 \[m\], got -1e-06",
+        (  # -1e-6 is a preload since issue 30; beyond an interference of a ball diameter it is refused
+            {"contact_angle": None, "radial_clearance": -5e-3},
+            r"radial_clearance must be >= -4 \[mm\] \(an interference of one ball diameter per ball; .*\), got -5 mm",
         ),
+        ({"contact_angle": None, "radial_clearance": float("nan")}, r"radial_clearance must be a finite length"),
         (
             {"contact_angle": None, "radial_clearance": 9e-6, "inner_conformity": None},
             r"radial_clearance needs both groove conformities and the ball diameter",

@@ -188,6 +188,15 @@ def check_model(bearing, model):
                      "`bearinglab life`")
 
 
+def _clearance_range(e, ball_diameter):
+    """A diametral clearance is a finite number of metres; a negative one (a preload) at least -2 D."""
+    if not (isinstance(e, (int, float, np.floating, np.integer)) and math.isfinite(e)):
+        raise InputError(f"radial_clearance must be a finite length [m], got {e!r}")
+    if ball_diameter is not None and e < -2.0 * ball_diameter:
+        raise InputError(f"radial_clearance must be >= {-2.0 * ball_diameter * 1e3:.6g} [mm] (an interference of one "
+                         f"ball diameter per ball; a negative clearance is a preload), got {e * 1e3:.6g} mm")
+
+
 def _positive(name, value, unit, *, optional=True):
     if value is None and optional:
         return
@@ -225,7 +234,10 @@ class BallBearing:
     contact_angle : float
         Nominal (free) contact angle alpha0, in [0, 90 deg). [rad]
     radial_clearance : float
-        Diametral clearance e. [m]
+        Diametral clearance e (the operating one where the bearing is given mounted). Zero or negative
+        is a preloaded bearing: its free contact angle is 0 and every ball is compressed by -e/2 in the
+        concentric position (:func:`bearinglab.quasistatic.combined.load_distribution`); at least
+        -2 D (an interference of one ball diameter per ball). [m]
     designation : str
         Name of the bearing.
     bore, outside_diameter, width : float
@@ -362,7 +374,7 @@ class BallBearing:
                 raise InputError(f"contact_angle must be in [0, {top} [deg], got "
                                  f"{math.degrees(a) if isinstance(a, (int, float)) else a!r}")
         if self.radial_clearance is not None:
-            _positive("radial_clearance", self.radial_clearance, "m", optional=False)
+            _clearance_range(self.radial_clearance, self.ball_diameter)
         self._check_fit()
         self._check_shoulders()
         has_f = self.inner_conformity is not None and self.outer_conformity is not None and self.ball_diameter is not None
@@ -371,12 +383,13 @@ class BallBearing:
         if self.contact_angle is None and self.radial_clearance is not None:
             if not has_f:
                 raise InputError("radial_clearance needs both groove conformities and the ball diameter to give a contact angle")
-            angle = float(geometry.free_contact_angle(self.radial_clearance, self.ball_diameter,
-                                                      self.inner_conformity, self.outer_conformity))
+            angle = 0.0 if self.radial_clearance <= 0 else float(geometry.free_contact_angle(
+                self.radial_clearance, self.ball_diameter, self.inner_conformity, self.outer_conformity))
             if not angle < math.pi / 2:  # arccos is real up to 4 B D, but a bearing's contact is below 90 deg
                 limit = 2.0 * self.groove_distance
-                raise InputError(f"radial_clearance must be in (0, {limit * 1e3:.6g}) [mm] to give a contact angle "
-                                 f"below 90 deg, got {self.radial_clearance * 1e3:.6g} mm ({math.degrees(angle):.4g} deg)")
+                raise InputError(f"radial_clearance must be in [{-2.0 * self.ball_diameter * 1e3:.6g}, {limit * 1e3:.6g}) "
+                                 f"[mm] to give a contact angle below 90 deg (a negative clearance is a preload), got "
+                                 f"{self.radial_clearance * 1e3:.6g} mm ({math.degrees(angle):.4g} deg)")
             object.__setattr__(self, "contact_angle", angle)
         elif self.contact_angle is not None and self.radial_clearance is None and has_f and self.contact_angle > 0:
             e = float(geometry.radial_clearance(self.contact_angle, self.ball_diameter,
@@ -412,7 +425,14 @@ class BallBearing:
                                  f"mm [mm] (a shoulder lower than the groove's centre), got {h * 1e3:g} mm")
 
     def _check_angle_matches_clearance(self):
-        """A contact angle given together with a clearance must be the one the clearance implies."""
+        """A contact angle given together with a clearance must be the one the clearance implies (0 for a
+        zero or negative clearance, a preload)."""
+        if self.radial_clearance <= 0:
+            if self.contact_angle > ANGLE_CLEARANCE_TOLERANCE:
+                raise InputError(f"contact_angle and radial_clearance disagree: a clearance of "
+                                 f"{self.radial_clearance * 1e6:.4g} um (a preload) gives a free contact angle of 0 "
+                                 f"deg, not {math.degrees(self.contact_angle):.4g} deg; give one of them")
+            return
         implied = float(geometry.free_contact_angle(
             min(self.radial_clearance, 4.0 * self.groove_distance * (1 - 1e-15)), self.ball_diameter,
             self.inner_conformity, self.outer_conformity))

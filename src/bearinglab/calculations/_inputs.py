@@ -77,8 +77,8 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
     if contact_angle is not None:
         changes["contact_angle"] = parse_quantity(contact_angle, "angle", "contact-angle")
         changes["radial_clearance"] = None
-    elif radial_clearance is not None:
-        changes["radial_clearance"] = parse_length(radial_clearance, "radial-clearance", "um")
+    elif radial_clearance is not None:  # zero or negative: a preloaded bearing (issue 30), bounded by the bearing
+        changes["radial_clearance"] = parse_quantity(radial_clearance, "length", "radial-clearance")
         changes["contact_angle"] = None
     elif {"inner_conformity", "outer_conformity", "ball_diameter"} & set(changes):
         # a new ball or new grooves keep the angle and re-derive the clearance

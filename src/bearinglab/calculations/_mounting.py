@@ -258,11 +258,7 @@ def operating_bearing(bearing, speed=0.0, options=None):
 
     inp = mounted_inputs(bearing, **given, speed=float(speed), require=True)
     r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
-    e = float(r.probable.operating_clearance)
-    if not e > 0:
-        raise InputError(f"operating clearance must be > 0 [um] for this model, got {e / _UM:.3g} um (the fits and "
-                         "temperatures preload the bearing); give a larger --clearance-class, or model a "
-                         "preloaded pair with bearing-set")
+    e = float(r.probable.operating_clearance)  # zero or negative: a preloaded bearing, solved as one (issue 30)
     doc = {"operating_clearance_um": e / _UM,
            "operating_clearance_min_um": float(r.least.operating_clearance) / _UM,
            "operating_clearance_max_um": float(r.largest.operating_clearance) / _UM,

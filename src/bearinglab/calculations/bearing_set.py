@@ -156,6 +156,14 @@ def document(parsed, *, catalog=None):
                       "preload_offset_um": None if e is None else e * 1e6},
            "warnings": caught}
     del doc["balls"], doc["max_ball_load_N"]
+    if mounted is not None:  # issue 30: each bearing's radial preload where the fits took all its clearance
+        from . import _preload
+
+        preloaded, note = _preload.report(bl[0], source="each bearing's operating clearance from the fits and "
+                                                        "temperatures")
+        if note:
+            doc = {**{k: v for k, v in doc.items() if k != "warnings"}, **preloaded,
+                   "warnings": [note + " (besides the set's axial preload)", *doc["warnings"]]}
     return json.loads(tables.json_text(with_notes(tables.json_value(doc), notes)))
 
 

@@ -148,9 +148,7 @@ def catalog_document(name, *, catalog=None, clearance=None, radial_clearance=Non
         return _roller_document(b, name, catalog=catalog, clearance=clearance, radial_clearance=radial_clearance)
     if radial_clearance is not None:
         from ..units import parse_quantity
-        value = parse_quantity(radial_clearance, "length", "radial-clearance")
-        if not value > 0:
-            raise InputError(f"radial-clearance must be > 0 [um], got {value / 1e-6:g} um")
+        value = parse_quantity(radial_clearance, "length", "radial-clearance")  # <= 0: a preload (issue 30)
         est = tuple(f for f in b.estimated_fields if f not in ("radial_clearance",))
         b = b.replace(radial_clearance=value, estimated_fields=est,
                       sources={**b.sources, "radial_clearance": "given (--radial-clearance)"})

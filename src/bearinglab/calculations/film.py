@@ -141,6 +141,8 @@ def _document(parsed, bearing_file, catalog):
     from .. import tables
     from ..film.analysis import LOADS_AT
     from ..units import RPM
+    from . import _preload
+    from .load_distribution import clearance_source
 
     def text(name):
         return str(parsed.given[name]).strip() if name in parsed.given else None
@@ -190,6 +192,9 @@ def _document(parsed, bearing_file, catalog):
     r = _solve(film_model.film_analysis, b, cases, w, eta, alpha, roughness_ball=rq_ball,
                roughness_race=rq_race, loads_at=loads_at, **starve)
     notes = list(dict.fromkeys([*notes, *r.warnings]))
+    preloaded, note = _preload.report(b, source=clearance_source({}, text("radial_clearance")))
+    if note:  # issue 30: the film at the ball loads of the preloaded bearing
+        notes.insert(0, note)
     notes += [n for n in dict.fromkeys(_catalog.provenance_notes(b)) if n not in notes]
     docs = []
     for k in range(w.size):
@@ -203,6 +208,7 @@ def _document(parsed, bearing_file, catalog):
         temps = lub_inputs.get("bearing_temperature_degC")
         if isinstance(temps, list):  # temperature auto over several speeds: this case's temperature
             doc["inputs"]["bearing_temperature_degC"] = temps[k]
+        doc.update(preloaded)
         doc["warnings"] = notes
         docs.append(doc)
     return docs[0] if w.size == 1 else docs

@@ -492,4 +492,24 @@ def _with_operating_clearance(doc, parsed, bearing, speeds):
     note = (f"operating clearance: the {doc['model']} friction model does not depend on the clearance; "
             f"operating_clearance_um is reported, the torque is the same without the mounting inputs")
     head = {k: v for k, v in doc.items() if k not in ("inputs", "warnings")}
-    return {**head, **mounted, "inputs": doc["inputs"], "warnings": [*doc.get("warnings", []), note]}
+    preloaded, pre_note = _preloaded(bearing, mounted["operating_clearance_um"] * 1e-6, doc["model"])
+    notes = [*doc.get("warnings", []), *([pre_note] if pre_note else []), note]
+    return {**head, **mounted, **preloaded, "inputs": doc["inputs"], "warnings": notes}
+
+
+def _preloaded(bearing, clearance, model):
+    """Issue 30: the preload of a negative operating clearance (:mod:`._preload`), which the friction
+    models leave out; without the bearing's ball set, the warning without its numbers."""
+    from ..errors import InputError as _InputError
+    from . import _preload
+
+    if not clearance <= 0:
+        return {}, None
+    what = f"{model} friction model"
+    try:
+        return _preload.report(bearing.replace(radial_clearance=clearance),
+                               source="the operating clearance from the fits and temperatures", model=what)
+    except _InputError:  # no ball set (a handbook bearing given by its envelope)
+        return {}, (f"the operating clearance from the fits and temperatures is {clearance * 1e6:.3g} um: the "
+                    f"bearing runs preloaded (its ball loads need the ball set, which is not known here); the "
+                    f"{what} takes the external loads only and leaves the preload's ball loads out")

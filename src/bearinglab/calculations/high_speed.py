@@ -75,6 +75,9 @@ def compute(parsed, *, bearing_file=None, catalog=None, execution=None, check=No
     """
     from .. import limits, parallel, tables
     from ..units import RPM
+    from . import _preload
+    from .load_distribution import clearance_source
+
     with failures(parsed, options=False):  # messages in the command line's words (_failures)
         b = inp.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
         from ..bearing import check_model
@@ -93,6 +96,9 @@ def compute(parsed, *, bearing_file=None, catalog=None, execution=None, check=No
         context = execution(single) if execution is not None else contextlib.nullcontext(parallel.Execution())
         with context as ex:
             state, notes = _solve(b, loads, speeds, options, ex)
+        preloaded, note = _preload.report(b, source=clearance_source(mounted, inp.text(parsed, "radial_clearance")))
+        if note:  # issue 30: solved by the 5-DOF model with the rings held concentric (quasistatic.thrust)
+            notes.insert(0, note)
         notes += limits.high_speed_warnings(b, state)
         cols = tables.high_speed(state)
         rows = tables.rows(cols)
@@ -102,10 +108,10 @@ def compute(parsed, *, bearing_file=None, catalog=None, execution=None, check=No
                                solver=options["method"], reduced_modulus_GPa=None if reduced is None else reduced / 1e9)
         if single:  # the inputs as given, without the noise of the unit conversions
             echo.update(inp.inputs_echo(b, axial_load_N=float(loads[0]), speed_rpm=float(speeds[0]) / RPM))
-            doc = dict(rows[0], **echo, **mounted, warnings=list(notes))
+            doc = dict(rows[0], **echo, **mounted, **preloaded, warnings=list(notes))
         else:
             doc = dict(echo, **inp.inputs_echo(b, axial_load_N=loads.tolist(), speed_rpm=(speeds / RPM).tolist()),
-                       **mounted, cases=rows, warnings=list(notes))
+                       **mounted, **preloaded, cases=rows, warnings=list(notes))
     return HighSpeedResult(inp.notes_in(doc, b), state, cols, b, notes, options, speeds)
 
 

@@ -136,7 +136,7 @@ def document(parsed, *, catalog=None, bearing_file=None, duty_cycle_source=POSTE
     if "duty_cycle" in parsed.given:
         doc = _life_of_duty_cycle(b, *steps, options, lube, assumed)
     else:
-        doc = _life(b, loads, n, options, lube, assumed, mounted)
+        doc = _life(b, loads, n, options, lube, assumed, mounted, text("radial_clearance"))
         if auto:  # the steady temperature, after the viscosity it gives
             items = list(doc.items())
             at = list(doc).index("viscosity_mm2_s") + 1
@@ -165,10 +165,14 @@ def _auto_viscosity(b, loads, n, text, values, thermal):
         *notes, *(f"thermal balance: {w}" for w in r.warnings)]
 
 
-def _life(b, loads, n, options, lube, assumed, mounted):
+def _life(b, loads, n, options, lube, assumed, mounted, clearance_text=None):
+    import numpy as np
+
     from .. import tables
     from ..life import rating_life
     from ..units import RPM
+    from . import _preload
+    from .load_distribution import clearance_source
 
     dist = _distribution(b, loads)
     with warnings.catch_warnings():
@@ -178,7 +182,11 @@ def _life(b, loads, n, options, lube, assumed, mounted):
            "inputs": _echo(b, options, lube, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
                            my_Nmm=loads[4] * 1e3, speed_rpm=n / RPM),
            "warnings": assumed + _diameter_note(r) + _notes(b, loads, r.warnings, dist) + _unbounded(r)}
-    return {**{k: doc[k] for k in _KEYS}, **mounted}
+    preloaded, note = _preload.report(b, loads if dist is not None and bool(np.all(dist.converged)) else None,
+                                      n, source=clearance_source(mounted, clearance_text))
+    if note:  # the preload's ball loads are in L10r (the load distribution); ISO 281's L10 takes F_r, F_a only
+        doc["warnings"] = [note + "; L10r counts the preload's ball loads, L10 of ISO 281 does not", *doc["warnings"]]
+    return {**{k: doc[k] for k in _KEYS}, **mounted, **preloaded}
 
 
 def _cleanliness(factor, name):
@@ -383,5 +391,10 @@ def _life_of_duty_cycle(b, loads, speeds, times, options, lube, assumed=()):
                                                for f, w, t in zip(loads.tolist(), speeds.tolist(), times.tolist())]),
            "warnings": [*assumed, *_diameter_note(d.steps), *_notes(b, loads, d.steps.warnings, dist),
                         *_unbounded(d)]}
-    return tables.json_value(doc)
+    from . import _preload
+
+    preloaded, note = _preload.report(b)
+    if note:
+        doc["warnings"] = [note + "; L10r counts the preload's ball loads, L10 of ISO 281 does not", *doc["warnings"]]
+    return tables.json_value({**doc, **preloaded})
 

@@ -125,8 +125,8 @@ GEOMETRY = (
        minimum=0.5, exclusive=True, maximum=1.0, group=_GEO),
     _f("contact_angle", "angle", "Nominal (free) angle, e.g. '12 deg'.", label="Free contact angle",
        unit="deg", minimum=0, maximum=90, group=_GEO),
-    _f("radial_clearance", "length", "Diametral clearance, e.g. '9 um'.", label="Radial clearance",
-       unit="um", minimum=0, group=_GEO),
+    _f("radial_clearance", "length", "Diametral clearance, e.g. '9 um'; zero or negative is a preload.",
+       label="Radial clearance", unit="um", group=_GEO),
     _f("ball_material", "choice", "Ball material.", label="Ball material",
        choices=("steel", "silicon_nitride"), group=_GEO),
 )
@@ -413,8 +413,8 @@ _CALCS = (
             required=True, option="NAME", group="bearing"),
          _f("clearance", "choice", "Value of the ISO 5753-1 clearance range the models use: mean "
             "(default), min or max.", label="Clearance value", choices=("mean", "min", "max")),
-         _f("radial_clearance", "length", "Diametral clearance, e.g. '9 um'.",
-            label="Radial clearance", unit="um", minimum=0, group=_GEO)),),
+         _f("radial_clearance", "length", "Diametral clearance, e.g. '9 um'; zero or negative is a preload.",
+            label="Radial clearance", unit="um", group=_GEO)),),
     Calculation(
         "catalog-search", ("catalog", "search"), "Catalog search",
         "Catalog bearings by designation, bore, outside diameter, width, type and series; "

@@ -306,8 +306,13 @@ def _document(parsed, bearing_file, catalog):
         extra = {"thermal_reference_speed_rpm": json_value(float(ref.speed / RPM)),
                  "reference_heat_flow_W": json_value(float(ref.reference_heat_flow))}
         notes = list(dict.fromkeys([*notes, *ref.warnings]))
+    from . import _preload
+
+    preloaded, note = _preload.report(b, source="the bearing's clearance", model="SKF friction model of the balance")
+    if note:  # issue 30: a bearing file with a zero or negative clearance
+        notes.insert(0, note)
     notes += [n for n in dict.fromkeys(_catalog.provenance_notes(b)) if n not in notes]
-    docs = [_doc(r, k, w.size) | extra | {"inputs": inputs_echo(b, radial_load_N=fr, axial_load_N=fa,
+    docs = [_doc(r, k, w.size) | extra | preloaded | {"inputs": inputs_echo(b, radial_load_N=fr, axial_load_N=fa,
                                                          speed_rpm=float(w[k]) / RPM,
                                                          lubrication=lubrication, **oil_inputs,
                                                          lubricant=how, **heat_inputs),
