@@ -289,8 +289,9 @@ _CALCS = (
          _f("oil_level", "length", "For model skf, lubrication oil-bath: H from the lowest point of "
             "the outer raceway, e.g. '5 mm' (at most to the bearing's centre).", label="Oil level H",
             unit="mm", minimum=0, group=_O),
-         _f("drag_loss_factor", "number", "For lubrication oil-bath: V_M read from SKF's drag loss "
-            "diagram at H/d_m.", label="Drag loss factor V_M", unit="-", minimum=0, group=_O),
+         _f("drag_loss_factor", "number", "For lubrication oil-bath: V_M in place of SKF's drag loss "
+            "diagram at H/d_m (default: the diagram, digitised).", label="Drag loss factor V_M", unit="-",
+            minimum=0, group=_O),
          _f("series", "text", "For model skf: the deep-groove series of SKF's constants, e.g. 62.",
             label="SKF series", group="friction"),
          *MOUNTING),  # issue 23: reported as operating_clearance_um; no friction model depends on it
@@ -448,9 +449,12 @@ _CALCS = (
          _f("speed", "speed", "Inner-ring speed, e.g. '6000 rpm' (a list for several cases).",
             label="Shaft speed", unit="rpm", many=True, group=_L),
          *(f for f in OIL if f.name in ("oil", "viscosity_index", "viscosity_100")),
-         _f("lubrication", "choice", "SKF model: oil-jet | oil-air | grease (oil bath: refused, its "
-            "drag loss needs SKF's V_M chart).", label="Lubrication method", default="oil-jet",
-            choices=("oil-jet", "oil-air", "grease", "oil-bath"), group=_O),
+         _f("lubrication", "choice", "SKF model: oil-jet | oil-air | grease | oil-bath (with "
+            "oil_level; its drag loss from SKF's V_M diagram).", label="Lubrication method",
+            default="oil-jet", choices=("oil-jet", "oil-air", "grease", "oil-bath"), group=_O),
+         _f("oil_level", "length", "For lubrication oil-bath: H from the lowest point of the outer "
+            "raceway, e.g. '5 mm' (at most to the bearing's centre).", label="Oil level H", unit="mm",
+            minimum=0, group=_O),
          _f("skf_constants", "text", "SKF geometry constants R1,R2,R3,S1,S2,S3 in place of SKF's tables "
             "(angular contact other than 40 deg needs them).", label="SKF constants", group="heat"),
          _f("ambient", "text", "Ambient temperature, e.g. '20 degC'.", label="Ambient temperature",

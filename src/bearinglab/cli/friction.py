@@ -149,8 +149,7 @@ def torque(
         str,
         typer.Option(
             "--lubrication",
-            help="For --model skf: grease (default) | oil-air | oil-jet | oil-bath (with --oil-level, "
-            "--drag-loss-factor).",
+            help="For --model skf: grease (default) | oil-air | oil-jet | oil-bath (with --oil-level).",
             rich_help_panel="Handbook constants",
         ),
     ] = "grease",
@@ -171,7 +170,8 @@ def torque(
         float | None,
         typer.Option(
             "--drag-loss-factor",
-            help="For --lubrication oil-bath: V_M read from SKF's drag loss diagram at H/d_m.",
+            help="For --lubrication oil-bath: V_M in place of SKF's drag loss diagram at H/d_m (default: "
+            "the diagram, digitised).",
             rich_help_panel="Handbook constants",
         ),
     ] = None,
