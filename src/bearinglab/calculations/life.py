@@ -32,7 +32,9 @@ from ._inputs import (
     inputs_echo,
     lubricant_viscosity,
     parse_speed,
+    parse_speeds,
     resolve_bearing,
+    speed_size,
 )
 from ._request import given_text, reading, with_notes
 
@@ -124,23 +126,30 @@ def document(parsed, *, catalog=None, bearing_file=None, duty_cycle_source=POSTE
             steps = _duty_cycle(str(parsed.given["duty_cycle"]), duty_cycle_source, b)
         elif "speed" not in parsed.given:
             raise InputError("speed: missing; give the inner-ring speed, e.g. '3000 rpm' (or --duty-cycle)")
-        else:
-            n = parse_speed(text("speed"), bearing=b, zero=False)
-            b, mounted = _mounting.operating_bearing(b, n, mounting)  # issue 23: the operating clearance
+        else:  # one speed, or a list like film's: one document per speed (issue 30)
+            speeds = parse_speeds(text("speed"), pitch_diameter=speed_size(b), zero=False)
             loads = five_loads(*map(text, _LOADS))
-            if auto:
-                lube, temperature, notes_auto = _auto_viscosity(b, loads, n, text, v, thermal)
-                options["kinematic_viscosity"] = lube.viscosity
-                assumed = [*_assumed(lube, no_cleanliness), *notes_auto]
+            runs = []
+            for n in map(float, speeds):
+                b_n, mounted = _mounting.operating_bearing(b, n, mounting)  # issue 23: the operating clearance
+                run = {"bearing": b_n, "speed": n, "mounted": mounted, "lube": lube, "assumed": assumed,
+                       "options": dict(options)}
+                if auto:
+                    run["lube"], run["temperature"], notes_auto = _auto_viscosity(b_n, loads, n, text, v, thermal)
+                    run["options"]["kinematic_viscosity"] = run["lube"].viscosity
+                    run["assumed"] = [*_assumed(run["lube"], no_cleanliness), *notes_auto]
+                runs.append(run)
     if "duty_cycle" in parsed.given:
-        doc = _life_of_duty_cycle(b, *steps, options, lube, assumed)
-    else:
-        doc = _life(b, loads, n, options, lube, assumed, mounted)
+        return json.loads(tables.json_text(with_notes(_life_of_duty_cycle(b, *steps, options, lube, assumed), notes)))
+    docs = []
+    for run in runs:
+        doc = _life(run["bearing"], loads, run["speed"], run["options"], run["lube"], run["assumed"], run["mounted"])
         if auto:  # the steady temperature, after the viscosity it gives
             items = list(doc.items())
             at = list(doc).index("viscosity_mm2_s") + 1
-            doc = dict([*items[:at], ("bearing_temperature_degC", temperature), *items[at:]])
-    return json.loads(tables.json_text(with_notes(doc, notes)))
+            doc = dict([*items[:at], ("bearing_temperature_degC", run["temperature"]), *items[at:]])
+        docs.append(json.loads(tables.json_text(with_notes(doc, notes))))
+    return docs[0] if len(docs) == 1 else docs
 
 
 _THERMAL = ("ambient", "thermal_resistance", "lubrication", "skf_constants")
@@ -173,11 +182,12 @@ def _life(b, loads, n, options, lube, assumed, mounted):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the analysis returns its warnings
         r = rating_life(b, loads, n, **options, load_distribution=dist)
-    doc = {**tables.rows(tables.rating_life(r))[0], "rating_source": r.rating_source,
+    doc = {**tables.rows(tables.rating_life(r))[0], "contamination_factor": r.contamination_factor,
+           "rating_source": r.rating_source,
            "inputs": _echo(b, options, lube, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
                            my_Nmm=loads[4] * 1e3, speed_rpm=n / RPM),
            "warnings": assumed + _diameter_note(r) + _notes(b, loads, r.warnings, dist) + _unbounded(r)}
-    return {**{k: doc[k] for k in _KEYS}, **mounted}
+    return {**{k: doc[k] for k in _KEYS}, **mounted}  # e_C null without a_ISO (no lubricant), as a_ISO
 
 
 def _cleanliness(factor, name):
@@ -348,7 +358,7 @@ def _assumed(lube, no_cleanliness):
 _KEYS = ("dynamic_load_rating_N", "static_load_rating_N", "fatigue_load_limit_N", "rating_source",
          "equivalent_dynamic_load_N", "basic_rating_life_Mrev", "basic_rating_life_h", "reliability_factor",
          "viscosity_mm2_s", "rated_viscosity_mm2_s", "rated_viscosity_diameter_mm", "viscosity_ratio",
-         "life_modification_factor", "modified_rating_life_Mrev", "modified_rating_life_h",
+         "contamination_factor", "life_modification_factor", "modified_rating_life_Mrev", "modified_rating_life_h",
          "reference_rating_life_Mrev", "modified_reference_rating_life_Mrev", "static_safety_factor", "inputs",
          "warnings")
 
@@ -371,6 +381,7 @@ def _life_of_duty_cycle(b, loads, speeds, times, options, lube, assumed=()):
         return None if life is None else life * factor
 
     doc = {**tables.ratings(d.steps), "reliability_factor": d.steps.reliability_factor,
+           **({} if d.steps.contamination_factor is None else {"contamination_factor": d.steps.contamination_factor}),
            "basic_rating_life_Mrev": d.basic_rating_life * 1e-6, "basic_rating_life_h": d.basic_rating_life * hours,
            "modified_rating_life_Mrev": scaled(d.modified_rating_life, 1e-6),
            "modified_rating_life_h": scaled(d.modified_rating_life, hours),

@@ -204,8 +204,8 @@ _CALCS = (
     Calculation(
         "life", ("life",), "Rating life",
         "ISO 281 basic and modified rating lives, ISO/TS 16281 reference life.",
-        (*LOADS, _f("speed", "speed", "Inner-ring speed, e.g. '3000 rpm'.", label="Shaft speed",
-                    unit="rpm", minimum=0, group=_L),
+        (*LOADS, _f("speed", "speed", "Inner-ring speed, e.g. '3000 rpm' (a list '1000, 3000 rpm' for "
+                    "several cases).", label="Shaft speed", unit="rpm", minimum=0, many=True, group=_L),
          *OIL,
          _f("contamination_factor", "number", "e_C of ISO 281 table 13 (default 1).",
             label="Contamination factor e_C", unit="-", minimum=0, maximum=1, group=_O),
@@ -227,7 +227,8 @@ _CALCS = (
             group="temperature auto"),
          _f("skf_constants", "text", "With temperature auto: SKF constants R1,R2,R3,S1,S2,S3 "
             "(angular contact).", label="SKF constants", group="temperature auto"),
-         BEARING, *GEOMETRY, *MOUNTING)),
+         BEARING, *GEOMETRY, *MOUNTING),
+        combine="broadcast"),
     Calculation(
         "load-distribution", ("load-distribution",), "Load distribution and stiffness",
         "5-DOF load distribution of one bearing under F_x, F_y, F_z, M_x, M_y; stiffness matrix.",

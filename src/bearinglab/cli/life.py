@@ -54,6 +54,7 @@ from ._common import (
     Viscosity100Opt,
     ViscosityIndexOpt,
     ViscosityOpt,
+    cell_text,
     check_input,
     emit_json,
     print_warnings,
@@ -72,7 +73,7 @@ _NEEDS_VISCOSITY = "needs viscosity"  # the table's cell of a result that needs 
 def life(
     fx: FxOpt = None, fy: FyOpt = None, fz: FzOpt = None, mx: MxOpt = None, my: MyOpt = None,
     radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
-    speed: Annotated[str | None, typer.Option("--speed", "-n", help="Inner-ring speed, e.g. '3000 rpm'.")] = None,
+    speed: Annotated[str | None, typer.Option("--speed", "-n", help="Inner-ring speed, e.g. '3000 rpm' (a list '1000, 3000 rpm' for several cases: one row per speed).")] = None,
     viscosity: ViscosityOpt = None, oil: OilOpt = None, temperature: TemperatureOpt = None,
     viscosity_index: ViscosityIndexOpt = None, viscosity_100: Viscosity100Opt = None,
     contamination_factor: Annotated[float | None, typer.Option("--contamination-factor", help="e_C in [0, 1] (default 1).", rich_help_panel=_LUBRICANT)] = None,
@@ -123,6 +124,9 @@ def life(
     if json_out:
         emit_json(doc)
         return
+    if isinstance(doc, list):  # a speed list: one row per speed
+        _print_speeds(doc)
+        return
     lubricated = bool({"viscosity_cSt", "oil"} & set(doc["inputs"]))
     if duty_cycle is not None:
         _print(f"Duty cycle of {doc['inputs']['bearing']}: {len(doc['steps'])} steps, mean speed "
@@ -154,11 +158,18 @@ _LABELS = {
     "modified_reference_rating_life_Mrev": "modified ref. life L_nmr [10^6 rev]",
     "static_safety_factor": "static safety factor s0 [-]",
     "mean_speed_rpm": "mean speed [rpm]",
+    "contamination_factor": "contamination factor e_C [-]",
+    "operating_clearance_um": "operating clearance, probable [um]",
+    "operating_clearance_min_um": "operating clearance, least [um]",
+    "operating_clearance_max_um": "operating clearance, largest [um]",
+    "unmounted_clearance_um": "unmounted clearance, min, max [um]",
+    "mounting": "mounting",
 }
 
 
 # the results that need the lubricant: shown as "needs viscosity" without one
-_LUBRICATED = ("viscosity_mm2_s", "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev",
+_LUBRICATED = ("viscosity_mm2_s", "viscosity_ratio", "contamination_factor", "life_modification_factor",
+               "modified_rating_life_Mrev",
                "modified_rating_life_h", "modified_reference_rating_life_Mrev")
 
 
@@ -166,13 +177,34 @@ def _print(title, doc):
     def fmt(k, v):
         if v is None and k in _LUBRICATED and not doc["lubricated"]:
             return _NEEDS_VISCOSITY
-        return "— (see the warnings)" if v is None else (f"{v:.6g}" if isinstance(v, float) else str(v))
+        return "— (see the warnings)" if v is None else cell_text(v)
 
     src = doc["rating_source"]
     rows = [[_LABELS.get(k, k), fmt(k, v) + (f"  ({src[k[:-2]]})" if k[:-2] in src else "")]
-            for k, v in doc.items() if k not in ("rating_source", "warnings", "inputs", "steps", "lubricated")]
+            for k, v in doc.items()
+            if k not in ("rating_source", "warnings", "inputs", "steps", "lubricated", "mounting_warnings")]
     table(title, ["quantity", "value"], rows, caption="--json for one JSON document (keys in the units shown)")
-    print_warnings(doc["warnings"])
+    print_warnings([*doc.get("mounting_warnings", []), *doc["warnings"]])
+
+
+def _print_speeds(docs):
+    """A speed list: the ratings and P once, the lives of each speed in a row (issue 30)."""
+    first = docs[0]
+
+    def f(d, key, spec=".4g"):
+        v = d.get(key)
+        return (_NEEDS_VISCOSITY if key in _LUBRICATED and "viscosity_mm2_s" not in d else "—") if v is None \
+            else format(v, spec)
+
+    rows = [[f(d["inputs"], "speed_rpm", "g"), f(d, "basic_rating_life_h", ".6g"), f(d, "viscosity_ratio"),
+             f(d, "contamination_factor", ".3g"), f(d, "life_modification_factor"),
+             f(d, "modified_rating_life_h", ".6g"), f(d, "reference_rating_life_Mrev", ".5g")] for d in docs]
+    table(f"Rating life of {first['inputs']['bearing']}: C {first['dynamic_load_rating_N']:g} N, "
+          f"C0 {first['static_load_rating_N']:g} N, Cu {first['fatigue_load_limit_N']:g} N, "
+          f"P {cell_text(first['equivalent_dynamic_load_N'])} N",
+          ["n [rpm]", "L10h [h]", "κ", "e_C", "a_ISO", "L_nmh [h]", "L10r [10^6 rev]"], rows,
+          caption="--json for one JSON document per speed")
+    print_warnings(list(dict.fromkeys(w for d in docs for w in [*d.get("mounting_warnings", []), *d["warnings"]])))
 
 
 #: The ``life`` command, as the application adds it.
