@@ -19,7 +19,7 @@ from typing import NamedTuple
 
 from ..errors import InputError
 from . import _reading as inp
-from ._inputs import lubricant_viscosity, parse_viscosity
+from ._inputs import default_lubrication, lubricant_viscosity, parse_viscosity
 
 __all__ = ["MODELS", "FrictionResult", "compute", "document"]
 
@@ -60,7 +60,7 @@ def compute(parsed, *, bearing_file=None, catalog=None):
             t(parsed, "contact_angle"), t(parsed, "bore"), t(parsed, "outside_diameter"),
             t(parsed, "mean_diameter"), t(parsed, "static_load_rating"), v(parsed, "mu"), v(parsed, "x0"),
             v(parsed, "y0"), v(parsed, "f"), v(parsed, "c"), v(parsed, "f0"), t(parsed, "viscosity"),
-            v(parsed, "palmgren_f0"), v(parsed, "lubrication", "grease"), t(parsed, "oil"),
+            v(parsed, "palmgren_f0"), default_lubrication(v(parsed, "lubrication"), t(parsed, "oil")), t(parsed, "oil"),
             t(parsed, "temperature"), v(parsed, "viscosity_index"), t(parsed, "viscosity_100"),
             t(parsed, "oil_level"), v(parsed, "drag_loss_factor"), parsed.given.get("series"), resolved)  # series as typed: "  " is no series
         doc = _with_operating_clearance(doc, parsed, b, n)

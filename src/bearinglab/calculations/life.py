@@ -28,6 +28,7 @@ import warnings
 
 from ..errors import InputError
 from ._inputs import (
+    default_lubrication,
     five_loads,
     inputs_echo,
     lubricant_viscosity,
@@ -165,7 +166,8 @@ def _auto_viscosity(b, loads, n, text, values, thermal):
     r, how, inputs, notes = steady_temperature(b, loads, n, text("oil"), text("viscosity"),
                                                values.get("viscosity_index"), text("viscosity_100"),
                                                thermal["ambient"], thermal["thermal_resistance"],
-                                               thermal["lubrication"] or "oil-jet", thermal["skf_constants"])
+                                               default_lubrication(thermal["lubrication"], text("oil")),
+                                               thermal["skf_constants"])
     t, nu = float(r.temperature) - 273.15, float(r.kinematic_viscosity)
     inputs = {k: x for k, x in inputs.items() if k not in ("bearing_temperature_degC", "max_temperature_degC")}
     description = f"{how} at the steady temperature {t:.1f} degC (thermal balance): nu = {nu * 1e6:.4g} cSt"

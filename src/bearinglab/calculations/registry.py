@@ -223,7 +223,8 @@ _CALCS = (
             "e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).", label="Thermal resistance",
             unit="K/W", minimum=0, exclusive=True, group="temperature auto"),
          _f("lubrication", "choice", "With temperature auto: the SKF model's lubrication method "
-            "(default oil-jet).", label="Lubrication method", choices=("oil-jet", "oil-air", "grease"),
+            "(default grease; oil-jet when an oil grade is given, as temperature auto needs).",
+            label="Lubrication method", choices=("oil-jet", "oil-air", "grease"),
             group="temperature auto"),
          _f("skf_constants", "text", "With temperature auto: SKF constants R1,R2,R3,S1,S2,S3 "
             "(angular contact).", label="SKF constants", group="temperature auto"),
@@ -283,8 +284,8 @@ _CALCS = (
             label="Viscosity", unit="cSt", minimum=0, exclusive=True, group=_O),
          _f("palmgren_f0", "number", "Palmgren's f0 (about 0.7-2 for deep-groove bearings).",
             label="Palmgren f0", unit="-", minimum=0, group="friction"),
-         _f("lubrication", "choice", "For model skf: the lubrication method.",
-            label="Lubrication method", default="grease",
+         _f("lubrication", "choice", "For model skf: the lubrication method (default grease; oil-jet "
+            "when an oil grade is given).", label="Lubrication method",
             choices=("grease", "oil-air", "oil-jet", "oil-bath"), group=_O),
          *(f for f in OIL if f.name != "viscosity"),
          _f("oil_level", "length", "For model skf, lubrication oil-bath: H from the lowest point of "
@@ -299,7 +300,7 @@ _CALCS = (
         combine="broadcast"),
     Calculation(
         "high-speed", ("high-speed",), "Contact angles at speed",
-        "High-speed quasi-static model under thrust (spec 004).",
+        "High-speed quasi-static model under thrust (Jones/Harris).",
         (_f("axial_load", "force", "Thrust: '20 kN', or a list/range '2.5kN:45kN:2.5kN'.",
             label="Axial load F_a", unit="N", required=True, minimum=0, exclusive=True, many=True,
             group=_L),
@@ -340,7 +341,7 @@ _CALCS = (
             group="mask"))),
     Calculation(
         "axial-angle", ("axial-angle",), "Contact angle at rest",
-        "Operating contact angle under axial load (test-stand method, spec 000).",
+        "Operating contact angle under axial load (test-stand method).",
         (_f("axial_load", "force", "Axial load: '2 kgf', or a list/range '1kgf:5kgf:1kgf'.",
             label="Axial load F_a", unit="N", required=True, minimum=0, exclusive=True, many=True,
             group=_L),
@@ -354,7 +355,7 @@ _CALCS = (
         combine="grid"),
     Calculation(
         "stand-load", ("stand-load",), "Test-stand load",
-        "Minimum axial load on a test stand (spec 000 section 3).",
+        "Minimum axial load on a test stand.",
         (_f("speed", "speed", "Inner-ring speed: '3000 rpm', or a list.", label="Shaft speed",
             unit="rpm", required=True, many=True, group=_L),
          BEARING, *GEOMETRY),
@@ -434,7 +435,7 @@ _CALCS = (
             "e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).",
             label="Thermal resistance", unit="K/W", minimum=1e-4, maximum=1e4, group="film"),
          _f("lubrication", "choice", "A starvation-risk check (SKF's replenishment factor); with "
-            "temperature auto also the SKF model's (default oil-jet).", label="Lubrication method",
+            "temperature auto also the SKF model's (default grease; oil-jet when an oil grade is given).", label="Lubrication method",
             choices=("grease", "oil-air", "oil-jet", "oil-bath"), group=_O),
          _f("skf_constants", "text", "With temperature auto: SKF constants R1,R2,R3,S1,S2,S3 "
             "(angular contact).", label="SKF constants", group="film"),
@@ -451,8 +452,9 @@ _CALCS = (
             label="Shaft speed", unit="rpm", many=True, group=_L),
          *(f for f in OIL if f.name in ("oil", "viscosity_index", "viscosity_100")),
          _f("lubrication", "choice", "SKF model: oil-jet | oil-air | grease | oil-bath (with "
-            "oil_level; its drag loss from SKF's V_M diagram).", label="Lubrication method",
-            default="oil-jet", choices=("oil-jet", "oil-air", "grease", "oil-bath"), group=_O),
+            "oil_level; its drag loss from SKF's V_M diagram). Default grease, oil-jet when an oil "
+            "grade is given (this command's oil is a grade: oil-jet).", label="Lubrication method",
+            choices=("oil-jet", "oil-air", "grease", "oil-bath"), group=_O),
          _f("oil_level", "length", "For lubrication oil-bath: H from the lowest point of the outer "
             "raceway, e.g. '5 mm' (at most to the bearing's centre).", label="Oil level H", unit="mm",
             minimum=0, group=_O),
@@ -500,7 +502,7 @@ _CALCS = (
             label="Start angle", unit="deg", default="0 deg", group="runout"),
          _f("cage_ratio", "number", "Cage speed / inner-ring speed (default (1 - gamma)/2).",
             label="Cage ratio", unit="-", minimum=0, exclusive=True, maximum=1, group="runout"),
-         _f("refine", "flag", "Refine the contact points (spec 003 section 9).",
+         _f("refine", "flag", "Refine the contact points.",
             label="Refine contacts", default=False, group="runout")),
         heavy=True),
     Calculation(
@@ -529,7 +531,7 @@ _CALCS = (
         "shaft", ("shaft",), "Shaft system",
         "Several bearings on an elastic shaft (Timoshenko elements) with gears, pulleys, housings and speed: "
         "support loads, bearing lives and the system life, deflection, stiffness at a point, natural "
-        "frequencies (issue 33).",
+        "frequencies.",
         (_f("model", "document", "The shaft system as a TOML or JSON document (sections, supports, loads, "
             "gears, pulleys, cases; the format of the user guide's shaft-systems page), posted as text; never a "
             "file path.", label="Shaft system", required=True, option="FILE", group="shaft"),

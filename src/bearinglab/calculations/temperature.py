@@ -27,6 +27,7 @@ from ..errors import InputError
 from ._failures import failures
 from ._inputs import (
     HOTTEST_OIL_DEGC,
+    default_lubrication,
     inputs_echo,
     lubricant_viscosity,
     parse_speeds,
@@ -316,7 +317,7 @@ def _document(parsed, bearing_file, catalog):
                                             text("oil_flow"), text("oil_inlet_temperature"),
                                             text("oil_heat_capacity"), text("density"),
                                             text("max_temperature", "150 degC"))
-    lubrication = v.get("lubrication", "oil-jet")
+    lubrication = default_lubrication(v.get("lubrication"), text("oil"))  # the oil is required: oil-jet
     skf = skf_options(b, lubrication, text("skf_constants"), text("oil_level"))
     r = thermal.thermal_balance(b, fr, fa, w, heat.pop("ambient"), nu40, nu100, **heat, **skf)
     notes = list(dict.fromkeys([*notes, *r.warnings]))

@@ -75,7 +75,7 @@ def film(
     loads_at: LoadsAtOpt = "speed",
     ambient: Annotated[str | None, typer.Option("--ambient", help="With --temperature auto: the ambient (default 20 degC).", rich_help_panel=_AUTO)] = None,
     thermal_resistance: Annotated[str | None, typer.Option("--thermal-resistance", help="With --temperature auto: bearing to ambient, e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).", rich_help_panel=_AUTO)] = None,
-    lubrication: Annotated[str | None, typer.Option("--lubrication", help="grease | oil-air | oil-jet | oil-bath: a starvation-risk check (SKF's replenishment factor); with --temperature auto also the SKF model's (default oil-jet).", rich_help_panel=_FILM)] = None,
+    lubrication: Annotated[str | None, typer.Option("--lubrication", help="grease | oil-air | oil-jet | oil-bath: a starvation-risk check (SKF's replenishment factor); with --temperature auto also the SKF model's (default oil-jet: the oil is a grade; the rule of every command: grease, oil-jet when an oil grade is given).", rich_help_panel=_FILM)] = None,
     skf_constants: Annotated[str | None, typer.Option("--skf-constants", help="With --temperature auto: SKF constants R1,R2,R3,S1,S2,S3 (angular contact).", rich_help_panel=_AUTO)] = None,
     bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,
     balls: Balls = None, ball_diameter: BallDiameter = None, pitch_diameter: PitchDiameter = None,

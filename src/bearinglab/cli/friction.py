@@ -146,13 +146,14 @@ def torque(
         ),
     ] = None,
     lubrication: Annotated[
-        str,
+        str | None,
         typer.Option(
             "--lubrication",
-            help="For --model skf: grease (default) | oil-air | oil-jet | oil-bath (with --oil-level).",
+            help="For --model skf: grease | oil-air | oil-jet | oil-bath (with --oil-level). Default grease; "
+            "oil-jet when an oil grade (--oil) is given.",
             rich_help_panel="Handbook constants",
         ),
-    ] = "grease",
+    ] = None,
     oil: OilOpt = None,
     temperature: TemperatureOpt = None,
     viscosity_index: ViscosityIndexOpt = None,

@@ -81,7 +81,7 @@ def life(
     reliability: Annotated[float, typer.Option("--reliability", help="Reliability in percent, 90 to 99.95.")] = 90.0,
     ambient: Annotated[str | None, typer.Option("--ambient", help="With --temperature auto: the ambient (default 20 degC).", rich_help_panel=_AUTO)] = None,
     thermal_resistance: Annotated[str | None, typer.Option("--thermal-resistance", help="With --temperature auto: bearing to ambient, e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).", rich_help_panel=_AUTO)] = None,
-    lubrication: Annotated[str | None, typer.Option("--lubrication", help="With --temperature auto: the SKF model's oil-jet (default) | oil-air | grease.", rich_help_panel=_AUTO)] = None,
+    lubrication: Annotated[str | None, typer.Option("--lubrication", help="With --temperature auto: the SKF model's oil-jet | oil-air | grease (default oil-jet: the oil is a grade; the rule of every command: grease, oil-jet when an oil grade is given).", rich_help_panel=_AUTO)] = None,
     skf_constants: Annotated[str | None, typer.Option("--skf-constants", help="With --temperature auto: SKF constants R1,R2,R3,S1,S2,S3 (angular contact).", rich_help_panel=_AUTO)] = None,
     duty_cycle: Annotated[Path | None, typer.Option("--duty-cycle", help="TOML file of \\[\\[step]] loads, speed and time share: the combined life.")] = None,
     bearing: BearingName = None, bearing_file: BearingFile = None, catalog: CatalogFile = None,

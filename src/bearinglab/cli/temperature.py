@@ -42,7 +42,7 @@ OilInletOpt = Annotated[str | None, typer.Option("--oil-inlet-temperature", help
 HeatCapacityOpt = Annotated[str | None, typer.Option("--oil-heat-capacity", help="c_p of the oil (default 1950 J/(kg*K), a mineral oil: an estimate).", rich_help_panel=_HEAT)]
 OilDensityOpt = Annotated[str | None, typer.Option("--density", help="Oil density (default 870 kg/m^3, a mineral oil: an estimate).", rich_help_panel=_HEAT)]
 MaxTemperatureOpt = Annotated[str, typer.Option("--max-temperature", help="Safe limit: no steady state below it is thermal runaway, e.g. '150 degC'.", rich_help_panel=_HEAT)]
-LubricationOpt = Annotated[str, typer.Option("--lubrication", help="SKF model: oil-jet (default) | oil-air | grease | oil-bath (with --oil-level; its drag loss from SKF's V_M diagram).", rich_help_panel=_HEAT)]
+LubricationOpt = Annotated[str | None, typer.Option("--lubrication", help="SKF model: oil-jet | oil-air | grease | oil-bath (with --oil-level; its drag loss from SKF's V_M diagram). Default oil-jet: the oil is a grade (the rule of every command: grease, oil-jet when an oil grade is given).", rich_help_panel=_HEAT)]
 OilLevelOpt = Annotated[str | None, typer.Option("--oil-level", help="For --lubrication oil-bath: H from the lowest point of the outer raceway, e.g. '5 mm' (at most to the bearing's centre).", rich_help_panel=_HEAT)]
 ReferenceSpeedOpt = Annotated[bool, typer.Option("--reference-speed", help="Also ISO 15312's thermal reference speed of the bearing by the SKF model (JSON: thermal_reference_speed_rpm).", rich_help_panel=_HEAT)]
 ConstantsOpt = Annotated[str | None, typer.Option("--skf-constants", help="SKF geometry constants R1,R2,R3,S1,S2,S3 in place of SKF's tables (angular contact other than 40 deg needs them), e.g. '5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12'.", rich_help_panel=_HEAT)]
@@ -52,7 +52,7 @@ def temperature(
     radial_load: RadialLoadOpt = None, axial_load: AxialLoadOpt = None,
     speed: Annotated[str | None, typer.Option("--speed", "-n", help="Inner-ring speed, e.g. '6000 rpm' (a list for several cases).")] = None,
     oil: OilOpt = None, viscosity_index: ViscosityIndexOpt = None, viscosity_100: Viscosity100Opt = None,
-    lubrication: LubricationOpt = "oil-jet", oil_level: OilLevelOpt = None, skf_constants: ConstantsOpt = None,
+    lubrication: LubricationOpt = None, oil_level: OilLevelOpt = None, skf_constants: ConstantsOpt = None,
     ambient: AmbientOpt = "20 degC", thermal_resistance: ResistanceOpt = None, oil_flow: OilFlowOpt = None,
     oil_inlet_temperature: OilInletOpt = None, oil_heat_capacity: HeatCapacityOpt = None,
     density_text: OilDensityOpt = None, max_temperature: MaxTemperatureOpt = "150 degC",

@@ -6,7 +6,8 @@ GET  /                         the calculator page; with the form's fields in th
 GET  /api/<endpoint>           one calculation, query parameters (shareable links)
 POST /api/<endpoint>           one calculation, a JSON body of the same parameters
 GET  /csv/<endpoint>           the same calculation's document as CSV (the page's download link)
-GET  /docs, /openapi.json      every endpoint and field, with units, ranges and the limits
+GET  /docs, /redoc, /openapi.json   every endpoint and field, with units, ranges and the limits; Swagger UI
+                               and ReDoc load their scripts from the package (fastapi-offline), no network
 GET  /static/...               the style sheet and the page's script
 
 Limits: a request holds at most ``case_limit`` cases, runs at most ``time_budget`` seconds (then its
@@ -30,10 +31,11 @@ import asyncio
 import contextlib
 from pathlib import Path
 
-from fastapi import FastAPI, Request
+from fastapi import Request
 from fastapi.responses import HTMLResponse, Response
 from fastapi.staticfiles import StaticFiles
 from fastapi.templating import Jinja2Templates
+from fastapi_offline import FastAPIOffline
 
 from .. import __version__, calculations, tables
 from ..calculations import BODY_LIMIT, CALCULATIONS, CASE_LIMIT, TIME_BUDGET, RequestError
@@ -134,6 +136,12 @@ class _Server:
         return 500, api.error_body(f"internal error: {value}", None, "failed")
 
 
+#: The content security policy of /docs and /redoc: this server only (inline scripts and styles are the pages'
+#: own; ReDoc's search runs in a worker made from a blob; images may be data: URIs).
+_DOCS_CSP = ("default-src 'self'; script-src 'self' 'unsafe-inline'; style-src 'self' 'unsafe-inline'; "
+             "img-src 'self' data:; font-src 'self' data:; worker-src 'self' blob:; connect-src 'self'")
+
+
 def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_budget=TIME_BUDGET,
                memory_bound_mb=MEMORY_BOUND_MB):
     """The web calculator as a FastAPI application.
@@ -164,8 +172,11 @@ def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_
         server.light.close()
         server.heavy.close()
 
-    app = FastAPI(title="bearinglab", version=__version__, description=_description(case_limit, time_budget),
-                  lifespan=lifespan, redoc_url=None)
+    # /docs and /redoc serve Swagger UI's and ReDoc's files from the fastapi-offline package (FastAPI's own
+    # pages load them from a CDN, blank offline); Swagger UI's validator badge calls an outside server: off
+    app = FastAPIOffline(title="bearinglab", version=__version__, description=_description(case_limit, time_budget),
+                         lifespan=lifespan, docs_url="/docs", redoc_url="/redoc",
+                         swagger_ui_parameters={"validatorUrl": None})
     app.state.server = server
     app.mount("/static", StaticFiles(directory=_HERE / "static"), name="static")
     templates = Jinja2Templates(directory=_HERE / "templates")
@@ -181,6 +192,16 @@ def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_
     templates.env.globals["percentile_rows"] = page.percentile_rows
 
     app.add_middleware(_BoundedBody)
+
+    @app.middleware("http")
+    async def _docs_stay_local(request, call_next):
+        """/docs and /redoc load nothing from outside: ReDoc's side menu shows its maker's logo from a CDN
+        (hard-coded in its script); the browser is told to load scripts, styles and images from this server
+        only, so the logo is not fetched (ReDoc then leaves it out)."""
+        response = await call_next(request)
+        if request.url.path in ("/docs", "/redoc"):
+            response.headers["Content-Security-Policy"] = _DOCS_CSP
+        return response
 
     async def read_body(request):
         chunks, size = [], 0
