@@ -142,6 +142,36 @@ _DOCS_CSP = ("default-src 'self'; script-src 'self' 'unsafe-inline'; style-src '
              "img-src 'self' data:; font-src 'self' data:; worker-src 'self' blob:; connect-src 'self'")
 
 
+_DOCS_STATIC = "/static-offline-docs"  # Swagger UI's and ReDoc's files, mounted from fastapi-offline
+
+
+def _docs_pages(app):
+    """/docs (Swagger UI) and /redoc (ReDoc) with their files from the fastapi-offline package, and a content
+    security policy: ReDoc's side menu shows its maker's logo from a CDN (hard-coded in its script); the
+    browser loads from this server only, so the logo is not fetched (ReDoc then leaves it out). Swagger UI's
+    validator badge, which calls an outside server, is off."""
+    from fastapi.openapi.docs import get_redoc_html, get_swagger_ui_html
+
+    favicon = f"{_DOCS_STATIC}/favicon.png"
+
+    @app.get("/docs", include_in_schema=False)
+    async def swagger_ui():
+        page = get_swagger_ui_html(openapi_url=app.openapi_url, title="bearinglab - Swagger UI",
+                                   swagger_js_url=f"{_DOCS_STATIC}/swagger-ui-bundle.js",
+                                   swagger_css_url=f"{_DOCS_STATIC}/swagger-ui.css", swagger_favicon_url=favicon,
+                                   swagger_ui_parameters={"validatorUrl": None})
+        page.headers["Content-Security-Policy"] = _DOCS_CSP
+        return page
+
+    @app.get("/redoc", include_in_schema=False)
+    async def redoc():
+        page = get_redoc_html(openapi_url=app.openapi_url, title="bearinglab - ReDoc",
+                              redoc_js_url=f"{_DOCS_STATIC}/redoc.standalone.js", redoc_favicon_url=favicon,
+                              with_google_fonts=False)
+        page.headers["Content-Security-Policy"] = _DOCS_CSP
+        return page
+
+
 def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_budget=TIME_BUDGET,
                memory_bound_mb=MEMORY_BOUND_MB):
     """The web calculator as a FastAPI application.
@@ -175,8 +205,8 @@ def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_
     # /docs and /redoc serve Swagger UI's and ReDoc's files from the fastapi-offline package (FastAPI's own
     # pages load them from a CDN, blank offline); Swagger UI's validator badge calls an outside server: off
     app = FastAPIOffline(title="bearinglab", version=__version__, description=_description(case_limit, time_budget),
-                         lifespan=lifespan, docs_url="/docs", redoc_url="/redoc",
-                         swagger_ui_parameters={"validatorUrl": None})
+                         lifespan=lifespan, docs_url=None, redoc_url=None, static_url=_DOCS_STATIC)
+    _docs_pages(app)
     app.state.server = server
     app.mount("/static", StaticFiles(directory=_HERE / "static"), name="static")
     templates = Jinja2Templates(directory=_HERE / "templates")
@@ -192,16 +222,6 @@ def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_
     templates.env.globals["percentile_rows"] = page.percentile_rows
 
     app.add_middleware(_BoundedBody)
-
-    @app.middleware("http")
-    async def _docs_stay_local(request, call_next):
-        """/docs and /redoc load nothing from outside: ReDoc's side menu shows its maker's logo from a CDN
-        (hard-coded in its script); the browser is told to load scripts, styles and images from this server
-        only, so the logo is not fetched (ReDoc then leaves it out)."""
-        response = await call_next(request)
-        if request.url.path in ("/docs", "/redoc"):
-            response.headers["Content-Security-Policy"] = _DOCS_CSP
-        return response
 
     async def read_body(request):
         chunks, size = [], 0
