@@ -125,6 +125,8 @@ def _print(title, doc, lubricated):
 
     # the mounting's own notes join the warnings, after the table (never a Python list in a cell)
     doc = {**doc, "warnings": [*doc.get("mounting_warnings", []), *doc.get("warnings", [])]}
+    if isinstance(doc.get("mounting"), dict):  # the mounting echo in one cell, in words ('shaft fit: j5; ...')
+        doc["mounting"] = cell_text(doc["mounting"])
     print_document(title, doc, label=lambda k: _LABELS.get(k, k), cell=cell,
                    skip=("rating_source", "steps", "mounting_warnings"),
                    caption="--json for one JSON document (keys in the units shown)")
