@@ -50,9 +50,9 @@ ANGLES = {
 CAGES = ("TVP", "TN9", "TNH", "TN", "MA", "MB", "M", "Y", "J")
 
 _VOCABULARY = sorted({*SEALS, *CLEARANCES, *TOLERANCES, *ANGLES, *CAGES}, key=len, reverse=True)
-_BASE = re.compile(r"^\s*(?P<base>\d{2,3}/\d+|\d{3,6})")
-_NSK_THIN = re.compile(r"^(6[89])(\d\d)$")      # NSK/NTN 6805, 6905 -> ISO 61805, 61905
-_NSK_SPINDLE = re.compile(r"^719(\d\d)$")      # SKF 71914 -> NSK 7914
+_BASE = re.compile(r"^\s*(?P<base>[0-9]{2,3}/[0-9]+|[0-9]{3,6})")
+_NSK_THIN = re.compile(r"^(6[89])([0-9][0-9])$")      # NSK/NTN 6805, 6905 -> ISO 61805, 61905
+_NSK_SPINDLE = re.compile(r"^719([0-9][0-9])$")      # SKF 71914 -> NSK 7914
 
 
 class Designation(NamedTuple):
@@ -85,10 +85,29 @@ def _valid():
             f"{', '.join(TOLERANCES)}; angle {', '.join(ANGLES)}; cage {', '.join(CAGES)}")
 
 
+# the suffix part: chunks of letters and digits, each after at most one separator ('-', '/' or spaces)
+_PART = re.compile(r"\s*[-/]\s*|\s+|[A-Z0-9]+|.", re.ASCII | re.IGNORECASE)
+
+
+def _check_separators(rest, text):
+    """Refuse a suffix part that is not chunks after single separators: ``6208-`` (a separator with no
+    suffix), ``6208////``, ``6208.2RS`` (a dot is no separator): the message names the part."""
+    parts = [m.group() for m in _PART.finditer(rest.rstrip())]
+    for k, part in enumerate(parts):
+        if part[0].isalnum() and part.isascii():
+            continue
+        if part.strip() in ("-", "/", "") and k + 1 < len(parts) and parts[k + 1][0].isalnum():
+            continue
+        shown = part if part.strip() else "a space"
+        where = "at the end" if k + 1 == len(parts) else f"before {parts[k + 1]!r}"
+        raise InputError(f"bearing: cannot read {text!r} as a designation: {shown.strip() or shown!r} {where} is "
+                         "not understood (suffixes follow the size, each after at most one '-', '/' or space)")
+
+
 def _tokens(rest, text):
     """Split the suffix part into known tokens, longest match first; refuse an unknown one."""
     out = []
-    for chunk in filter(None, re.split(r"[-/\s.]+", rest)):
+    for chunk in filter(None, re.split(r"[-/\s]+", rest)):
         while chunk:
             token = next((t for t in _VOCABULARY if chunk.startswith(t)), None)
             if token is None:
@@ -132,6 +151,7 @@ def parse(text):
         raise InputError(f"bearing: {raw!r} is not a designation (it starts with no size such as 6208 or "
                          "7205)")
     base, rest = m.group("base"), upper[m.end():]
+    _check_separators(raw[m.end():] if len(raw) == len(upper) else rest, raw)
     alternatives = ()
     if _NSK_THIN.match(base):
         alternatives, base = (base,), "61" + base[1:]

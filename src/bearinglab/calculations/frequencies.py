@@ -20,7 +20,7 @@ from . import _reading as inp
 __all__ = ["document"]
 
 _HZ = 2.0 * math.pi  # rad/s per Hz (rev/s)
-_PERCENT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(%|percent)?\s*$")
+_PERCENT = re.compile(r"^\s*([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*(%|percent)?\s*$")
 
 
 def _band(text):
