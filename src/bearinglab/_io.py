@@ -21,6 +21,7 @@ The public spelling of the JSON, CSV and column writers is :mod:`bearinglab.tabl
 from __future__ import annotations
 
 import contextlib
+import contextvars
 import csv
 import io
 import json
@@ -114,17 +115,28 @@ def write_text(path, text):
     return Path(path)
 
 
+#: While set to a list, :func:`json_value` appends to it the path (``chain.least.operating_clearance``), the
+#: value and the dict holding it of every non-finite number it writes as None: the calculations check that each such null is one their
+#: document promises (an unbounded life, an unloaded contact), not an overflow (issue 29).
+NULLED = contextvars.ContextVar("bearinglab_json_nulled", default=None)
+
+
 def json_value(obj):
     """``obj`` with numpy arrays and scalars as Python lists and numbers, NaN and inf as ``None``.
 
     Dictionaries keep their order (keys become strings); tuples become lists.
     """
+    nulled = NULLED.get()
+    return _json_plain(obj) if nulled is None else _json_recorded(obj, "", nulled)
+
+
+def _json_plain(obj):
     if isinstance(obj, dict):
-        return {str(k): json_value(v) for k, v in obj.items()}
+        return {str(k): _json_plain(v) for k, v in obj.items()}
     if isinstance(obj, (list, tuple)):
-        return [json_value(v) for v in obj]
+        return [_json_plain(v) for v in obj]
     if isinstance(obj, np.ndarray):
-        return json_value(obj.tolist())
+        return _json_plain(obj.tolist())
     if isinstance(obj, (np.bool_, bool)):
         return bool(obj)
     if isinstance(obj, np.integer):
@@ -133,6 +145,21 @@ def json_value(obj):
         v = float(obj)
         return v if math.isfinite(v) else None
     return obj
+
+
+def _json_recorded(obj, path, nulled, parent=None):
+    """:func:`_json_plain`, noting ``(path, value, the dict that holds it)`` of each non-finite number in
+    ``nulled``."""
+    if isinstance(obj, dict):
+        return {str(k): _json_recorded(v, f"{path}.{k}" if path else str(k), nulled, obj) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_json_recorded(v, f"{path}[{i}]", nulled, parent) for i, v in enumerate(obj)]
+    if isinstance(obj, np.ndarray):
+        return _json_recorded(obj.tolist(), path, nulled, parent)
+    if isinstance(obj, (np.floating, float)) and not isinstance(obj, bool) and not math.isfinite(float(obj)):
+        nulled.append((path, float(obj), parent))
+        return None
+    return _json_plain(obj)
 
 
 def json_text(obj):

@@ -651,7 +651,11 @@ def parse_temperature(value, name, *, default_unit=None):
         value = f"{float(value)!r}"
     text = value
     _check_text(text, name, "a temperature")
-    _reject_decimal_comma(text, name)
+    comma = _AMBIGUOUS_COMMA.match(text)
+    if comma:  # '5,5 degC': pint reads 55 degC; one temperature has a decimal point
+        unit = f" {comma.group(3).strip()}" if comma.group(3).strip() else ""
+        raise InputError(f"{name}: {text!r} has a comma: write one temperature with a decimal point, e.g. "
+                         f"'{comma.group(1)}.{comma.group(2)}{unit}'")
     m = _TEMPERATURE.match(text)
     if not m:
         raise InputError(f"{name}: cannot read {text!r} as a temperature: write one number and degC, degF or "

@@ -18,6 +18,7 @@ import json
 import types
 
 from ..errors import InputError
+from ._finite import finite
 from ._inputs import choice, five_loads, parse_length
 from ._request import given_text, reading, with_notes
 from .load_distribution import inputs, plausibility, solve, takeup_um, with_takeup
@@ -39,6 +40,7 @@ def _names(value):
     return [str(s).strip() for s in value]
 
 
+@finite('bearing-set')
 def document(parsed, *, catalog=None):
     """The document of ``bearinglab bearing-set ... --json`` for a checked request.
 

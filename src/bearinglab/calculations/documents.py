@@ -27,6 +27,7 @@ import re
 import warnings
 
 from ..errors import InputError
+from ._finite import check, finite
 from .fields import RequestError, RunFailure
 
 __all__ = ["RunFailure", "argv", "catalog_document", "figure_svg", "run"]
@@ -140,6 +141,7 @@ def _clearance_range(b, choice, given):
 
 
 
+@finite("catalog")
 def catalog_document(name, *, catalog=None, clearance=None, radial_clearance=None):
     """The document of ``bearinglab catalog show NAME --json`` (the command prints this) and the bearing.
 
@@ -304,7 +306,7 @@ def run(parsed):
             raise RunFailure("name", parsed.values["name"],
                              "{name}: " + message.removeprefix("bearing: ")) from None
     if name == "catalog-search":
-        return _search_document(parsed)
+        return check(_search_document(parsed), name)
     return _native(parsed)  # every other calculation has a document function of its own
 
 

@@ -16,6 +16,7 @@ import re
 
 from ..errors import InputError
 from . import _reading as inp
+from ._finite import finite
 
 __all__ = ["document"]
 
@@ -34,6 +35,7 @@ def _band(text):
     return value / 100.0
 
 
+@finite('frequencies')
 def document(parsed, *, bearing_file=None, catalog=None):
     """The document of ``bearinglab frequencies ... --json`` for a request.
 

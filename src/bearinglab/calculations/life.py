@@ -26,6 +26,7 @@ import json
 import warnings
 
 from ..errors import InputError
+from ._finite import finite
 from ._inputs import (
     five_loads,
     inputs_echo,
@@ -59,6 +60,7 @@ _MOUNTING = ("shaft_fit", "housing_fit", "shaft_interference", "housing_interfer
 POSTED = "the posted document"
 
 
+@finite('life')
 def document(parsed, *, catalog=None, bearing_file=None, duty_cycle_source=POSTED):
     """The document of ``bearinglab life ... --json`` for a checked request.
 

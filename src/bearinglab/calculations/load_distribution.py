@@ -22,6 +22,7 @@ import types
 import warnings
 
 from ..errors import InputError
+from ._finite import finite
 from ._inputs import (
     choice,
     five_loads,
@@ -44,6 +45,7 @@ MOUNTING = ("shaft_fit", "housing_fit", "shaft_interference", "housing_interfere
             "shaft_temperature", "housing_temperature")
 
 
+@finite('load-distribution')
 def document(parsed, *, catalog=None, bearing_file=None, speeds=False):
     """The document of ``bearinglab load-distribution ... --json`` for a checked request.
 
