@@ -161,7 +161,12 @@ def to_dms(angle, *, pi=math.pi, truncate=False):
     >>> to_dms(math.radians(-0.5))
     (0, -30, -0.0)
     """
-    deg = float(angle) * 180.0 / pi
+    angle, pi = _finite_number("angle", angle, "rad"), _finite_number("pi", pi, "-")
+    if not pi > 0:
+        raise InputError(f"pi must be > 0 [-], got {pi!r}")
+    deg = angle * 180.0 / pi
+    if not math.isfinite(deg):
+        raise InputError(f"angle must be finite in degrees [rad], got {angle!r}")
     sign = -1 if deg < 0 else 1
     deg = abs(deg)
     d = int(deg)
@@ -174,6 +179,17 @@ def to_dms(angle, *, pi=math.pi, truncate=False):
         if m == 60:
             m, d = 0, d + 1
     return sign * d, sign * m, sign * s
+
+
+def _finite_number(name, value, unit):
+    """``value`` as a finite float, or an InputError naming ``name``."""
+    try:
+        x = float(value)
+    except (TypeError, ValueError, OverflowError):
+        raise InputError(f"{name} must be a finite number [{unit}], got {value!r}") from None
+    if not math.isfinite(x):
+        raise InputError(f"{name} must be finite [{unit}], got {value!r}")
+    return x
 
 
 def format_dms(angle, *, digits=2):
@@ -198,8 +214,11 @@ def format_dms(angle, *, digits=2):
     >>> format_dms(math.radians(-0.5)), format_dms(math.radians(14.99999), digits=0)
     ('-0°30\\'00.00"', '15°00\\'00"')
     """
-    sign = "-" if float(angle) < 0 else ""
-    d, m, s = to_dms(abs(float(angle)))
+    angle = _finite_number("angle", angle, "rad")
+    if isinstance(digits, bool) or not isinstance(digits, (int, np.integer)) or not 0 <= digits <= 15:
+        raise InputError(f"digits must be an integer in [0, 15] [-] (the decimals of the seconds), got {digits!r}")
+    sign = "-" if angle < 0 else ""
+    d, m, s = to_dms(abs(angle))
     s = round(s, digits)
     if s >= 60.0:  # rounding to fewer digits can reach 60: carry
         s, m = s - 60.0, m + 1
