@@ -21,6 +21,13 @@ Parsing (pint is imported on first use, so ``import bearinglab`` stays light)
 -----------------------------------------------------------------------------
 parse_quantity          ``"2 kgf"`` -> 19.6133 (N), checking the dimension
 parse_values            ``"2.5kN:45kN:2.5kN"`` or ``"0,3000,6000rpm"`` -> array in SI
+parse_temperature       ``"70 degC"``, ``"343.15 K"``, ``"158 degF"`` -> 343.15 (K)
+MAX_QUANTITY_TEXT       the longest text of one quantity [characters]
+
+One grammar at every boundary (issue 29): one number of ASCII digits (an optional sign, a decimal point,
+an exponent; no digit grouping), then one unit of the expected kind, with no plain factor (an angle, a
+percentage or a ratio that cancels, multiplying another kind). Nothing is evaluated: pint reads the unit
+only. Underflow and overflow are errors.
 """
 
 from __future__ import annotations
@@ -39,6 +46,7 @@ __all__ = [
     "DEG",
     "KGF",
     "KINDS",
+    "MAX_QUANTITY_TEXT",
     "MM",
     "RPM",
     "STANDARD_GRAVITY",
@@ -47,6 +55,7 @@ __all__ = [
     "from_kgf",
     "from_rpm",
     "parse_quantity",
+    "parse_temperature",
     "parse_values",
     "to_dms",
     "to_kgf",
@@ -261,7 +270,8 @@ _SMALLEST = sys.float_info.min  # the smallest normal float: below it a number h
 _DMS = re.compile(r"^\s*([-+]?)\s*([0-9]+(?:\.[0-9]*)?)\s*(?:°|deg\b)\s*(?:([0-9]+(?:\.[0-9]*)?)\s*(?:′|'|arcmin\b)\s*)?"
                   r"(?:([0-9]+(?:\.[0-9]*)?)\s*(?:″|\"|''|arcsec\b)\s*)?$", re.ASCII)
 # a number that is not an exponent (m^3, m**3) nor part of a name
-_STANDALONE_NUMBER = re.compile(r"(?<![\w.^*])(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?", re.ASCII)
+_STANDALONE_NUMBER = re.compile(r"(?<![\w.^*])(?<![\^*][-+])(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?",
+                                re.ASCII)
 _registry = None
 
 
