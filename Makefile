@@ -57,7 +57,8 @@ fuzz: $(TSTAMP)
 	rm -f fuzz-report.txt
 	BEARINGLAB_FUZZ=full BEARINGLAB_FUZZ_REPORT=$(CURDIR)/fuzz-report.txt $(PY) -m pytest -q -n 2 \
 		tests/calculations/test_fuzz_registry.py tests/test_api_domains.py -k full
-	@grep -v "^    " fuzz-report.txt
+	@grep "^fuzz " fuzz-report.txt
+	@awk '/^api /{n++; c+=$$3; f+=$$5} END {print "api probe: " n " functions, " c " calls, " f " failures"}' fuzz-report.txt
 
 MSTAMP := $(VENV)/.installed-mutation
 $(MSTAMP): $(TSTAMP)
