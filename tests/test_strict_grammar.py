@@ -390,6 +390,18 @@ def test_variants_found_by_the_probe_raise_input_errors(call, match):
         call()
 
 
+def test_the_papers_rounding_of_a_tiny_thrust_is_no_division_by_zero(capsys):
+    # found by tests/cli/test_fuzz.py: '-F 1e-30 N --legacy' cut F to 0 kgf and divided by it
+    from bearinglab import stand
+
+    with pytest.raises(InputError, match=r"axial_load must be >= 0.001 kgf"):
+        stand.iteration_table(1e-30, 1000.0, math.radians(12), reproduce_print=True)
+    line = one_line(*run(capsys, "axial-angle", "-b", "4-1006095", "-F", "1e-30 N", "--legacy")[::2])
+    assert "axial-load must be >= 0.001 kgf" in line
+    with pytest.raises(ConvergenceError):  # without the rounding: a solve that says it failed
+        stand.iteration_table(1e-30, 1000.0, math.radians(12))
+
+
 def test_a_python_int_too_big_for_numpy_is_a_float_not_a_type_error():
     from bearinglab.mounting import thermal
 

@@ -299,6 +299,8 @@ def _number(field, value):
         if len(text) > _LONGEST_NUMBER or not pattern.match(text):
             raise refuse()
         number = int(text) if field.kind == "int" else float(text)
+    if field.kind == "number" and not isinstance(number, float):  # a JSON integer: a float, as the text
+        number = float(number) if abs(number) < 1e308 else math.copysign(math.inf, number)
     if isinstance(number, float):
         if not math.isfinite(number):
             raise RequestError(field.name, value, field.valid(),

@@ -674,6 +674,9 @@ def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, re
                              f"free angle and 90 deg), got {x0!r}")
     if max_rows is not None and not (isinstance(max_rows, int) and max_rows >= 1):
         raise InputError(f"max_rows must be an integer >= 1 [-], got {max_rows!r}")
+    if reproduce_print and fa < 0.001 * KGF:  # the paper's F cut to three kgf decimals would be 0
+        raise InputError(f"axial_load must be >= 0.001 kgf = {0.001 * KGF:g} [N] to reproduce the paper's rounding "
+                         f"(F cut to three kgf decimals), got {fa:g} N")
     rows = []
     limit = max_iter if max_rows is None else max_rows
     settled = False  # the previous step was below xtol: this row is the converged one
@@ -689,6 +692,9 @@ def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, re
         rows.append(IterationRow(k, x, alpha, float(axial_displacement_ratio(alpha, a0)), thrust, error))
         if max_rows is None and (settled or abs(error) < ftol_percent):
             return rows
+        if not step_thrust > 0:  # legacy: a thrust below 0.001 kgf at this angle is cut to 0
+            raise ConvergenceError("stand.iteration_table", iterations=k, residual=error / 100, estimate=alpha,
+                                   reason="the paper's rounding cut the thrust at this angle to 0 kgf")
         dx = float(_newton_step(fa, step_thrust, alpha, a0))
         for _halving in range(_MAX_HALVINGS):  # keep the iterate in (alpha0, 90 deg); a bounded loop
             if a0 < a0 + x + dx < math.pi / 2 or not abs(dx) > xtol:
