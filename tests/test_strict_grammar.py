@@ -144,6 +144,22 @@ def test_lists_and_ranges_hold_items_of_the_same_grammar():
             units.parse_values(text, "force", "x")
 
 
+@pytest.mark.parametrize("line, match", [
+    ('axial_load = "2 turn kgf"', "plain factor"), ('axial_load = "٥ kN"', "ASCII digit"),
+    ('axial_load = "1_000 N"', "not grouped"), ('axial_load = "1e-400 N"', "underflows"),
+    ('axial_load = "9**9**9 N"', "cannot read"), ('axial_load = "1 kN"\ninner_conformity = nan', "not a finite"),
+    ('axial_load = "1 kN"\ninner_conformity = inf', "not a finite"),
+])
+def test_files_take_the_same_grammar(tmp_path, line, match):
+    from bearinglab import sweep
+    from bearinglab.errors import CatalogError
+
+    path = tmp_path / "bad.toml"
+    path.write_text(f'model = "axial-angle"\nbearing = "B218"\n[parameters]\n{line}\n', encoding="utf-8")
+    with pytest.raises(CatalogError, match=match):
+        sweep.load_sweep(path)
+
+
 # ----------------------------------------------------------------------------- temperatures
 @pytest.mark.parametrize("text, kelvin", [("70 degC", 343.15), ("70 °C", 343.15), ("70°C", 343.15),
                                           ("343.15 K", 343.15), ("158 degF", 343.15), ("-40 degF", 233.15),
