@@ -34,7 +34,6 @@ from __future__ import annotations
 
 import math
 import re
-import sys
 
 import numpy as np
 
@@ -265,7 +264,7 @@ _RATIO_UNITS = ("percent", "permille", "ppm")
 #: The longest text of one quantity [characters]: '228.0419 GPa' has 12, 'J/(kg*K)' units 8. A longer text
 #: is no quantity a user typed, and is refused before any pattern or pint looks at it.
 MAX_QUANTITY_TEXT = 100
-_SMALLEST = sys.float_info.min  # the smallest normal float: below it a number has lost its digits
+_SMALLEST = 5e-324  # the smallest positive float: a number below it is read as 0 (an underflow)
 # an angle written in degrees, minutes and seconds: 14°28'03.38", 14° 28′ 3.38″, 12 deg 30 arcmin
 _DMS = re.compile(r"^\s*([-+]?)\s*([0-9]+(?:\.[0-9]*)?)\s*(?:°|deg\b)\s*(?:([0-9]+(?:\.[0-9]*)?)\s*(?:′|'|arcmin\b)\s*)?"
                   r"(?:([0-9]+(?:\.[0-9]*)?)\s*(?:″|\"|''|arcsec\b)\s*)?$", re.ASCII)
@@ -356,7 +355,7 @@ def _literal(number, text, name):
     if not math.isfinite(magnitude):  # 1e309
         raise InputError(f"{name}: {text!r} is not a finite quantity")
     mantissa = re.split(r"[eE]", number)[0]
-    if magnitude == 0.0 and re.search(r"[1-9]", mantissa) or 0.0 < abs(magnitude) < _SMALLEST:
+    if magnitude == 0.0 and re.search(r"[1-9]", mantissa):  # 1e-400: not 0, but read as 0
         raise InputError(f"{name}: {text!r} underflows: {number} is below the smallest number computed with "
                          f"({_SMALLEST:.3g}); write 0 or a larger value")
     return magnitude
@@ -396,7 +395,7 @@ def parse_quantity(value, kind, name, *, default_unit=None):
     ``mm²/s``). pint converts the unit only; the text is never evaluated as an expression, so
     ``1.2.3 N``, ``--5 N``, a bare ``N``, ``kN*kN/kN``, ``2 pi kN`` (a constant), ``9**9**9 K`` and
     ``10**308*10 N`` are refused, as are non-ASCII digits (``٥ kN``), ``1_000 N``, a value that overflows
-    (``1e308 kN``) or underflows (``1e-400 N``: below the smallest normal float) in SI. A unit holds no
+    (``1e308 kN``) or underflows, a number that is not 0 read as 0 (``1e-400 N``), in SI. A unit holds no
     plain factor: an angle, a percentage or a ratio of two units of one dimension multiplies no other
     kind (``2 turn kgf``, ``2 kgf %``, ``10000 % rpm``, ``2 kgf h/s`` are refused); an angle is the
     unit of an angle and the numerator of a speed, a percentage (``%``, ``permille``, ``ppm``) the unit
@@ -424,9 +423,6 @@ def parse_quantity(value, kind, name, *, default_unit=None):
             raise InputError(f"{name}: {value!r} is not a finite quantity")
         if not np.isfinite(value):
             raise InputError(f"{name}: {value!r} is not a finite quantity")
-        if 0.0 < abs(float(value)) < _SMALLEST:
-            raise InputError(f"{name}: {value!r} underflows: below the smallest number computed with "
-                             f"({_SMALLEST:.3g}); write 0 or a larger value")
         if kind == "dimensionless":
             return float(value)
         if default_unit is None:
@@ -469,12 +465,12 @@ def parse_quantity(value, kind, name, *, default_unit=None):
 
 
 def _finite(x, text, name, magnitude=None):
-    """``x`` as a float, refused when the conversion to SI overflowed (``1e308 kN``) or underflowed
-    (``1e-307 um``: a number below the smallest normal float has lost its digits)."""
+    """``x`` as a float, refused when the conversion to SI overflowed (``1e308 kN``) or underflowed to 0
+    (``1e-320 um``: a number that is not 0 read as 0)."""
     x = float(x)
     if not math.isfinite(x):
         raise InputError(f"{name}: {text!r} is not a finite quantity (it overflows in SI units)")
-    if magnitude and abs(x) < _SMALLEST:
+    if magnitude and x == 0.0:
         raise InputError(f"{name}: {text!r} underflows in SI units (below {_SMALLEST:.3g}); write 0 or a "
                          "larger value")
     return x

@@ -283,7 +283,8 @@ def parse_field(field, value, *, limit=None):
 
 def _number(field, value):
     """The int or float of a field of kind ``int`` or ``number``: a JSON number, or text of plain ASCII
-    digits (an optional sign; for a number a decimal point and an exponent), finite, no underflow."""
+    digits (an optional sign; for a number a decimal point and an exponent), finite, not read as 0 where
+    it is not 0 (an underflow)."""
     what = "a whole number" if field.kind == "int" else "a plain number"
 
     def refuse():
@@ -305,8 +306,7 @@ def _number(field, value):
         if not math.isfinite(number):
             raise RequestError(field.name, value, field.valid(),
                                f"{{name}} must be {field.valid()}, got {value!r} (not a finite number)")
-        if 0.0 < abs(number) < 2.2250738585072014e-308 or (
-                number == 0.0 and isinstance(value, str) and re.search(r"[1-9]", re.split("[eE]", value)[0])):
-            raise RequestError(field.name, value, field.valid(),
-                               f"{{name}}: {value!r} underflows (below 2.23e-308); write 0 or a larger value")
+        if number == 0.0 and isinstance(value, str) and re.search(r"[1-9]", re.split("[eE]", value)[0]):
+            raise RequestError(field.name, value, field.valid(),  # '1e-400': not 0, but read as 0
+                               f"{{name}}: {value!r} underflows (below 5e-324); write 0 or a larger value")
     return number

@@ -200,11 +200,9 @@ def _strict_number(param):
                     self.fail(f"{value!r} is not {what} (plain digits 0-9)", param, ctx)
                 if kind == "FloatParamType":
                     import math
-                    import sys as _sys
 
                     x = float(value)
-                    if not math.isfinite(x) or 0.0 < abs(x) < _sys.float_info.min or (
-                            x == 0.0 and re.search(r"[1-9]", re.split("[eE]", value)[0])):
+                    if not math.isfinite(x) or (x == 0.0 and re.search(r"[1-9]", re.split("[eE]", value)[0])):
                         self.fail(f"{value!r} overflows or underflows a number", param, ctx)
             return base.convert(self, value, param, ctx)
 
