@@ -489,8 +489,11 @@ def run_calculation(name, given, document, **options):
     from ..calculations import parse
     from ..calculations.fields import RequestError
 
+    from ..calculations._finite import finite
+
     given = {k: v for k, v in given.items() if v is not None}
     try:  # typer has read the options; the calculation checks them by the command line's own rules
-        return document(parse(name, given, check=False), **options)
+        # every number finite or an error, whether or not the document function is decorated itself
+        return finite(name)(document)(parse(name, given, check=False), **options)
     except RequestError as exc:
         raise InputError(request_message(exc)) from None
