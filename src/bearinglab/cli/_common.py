@@ -487,9 +487,8 @@ def run_calculation(name, given, document, **options):
     with its ``document`` function, the one the web runs (:mod:`bearinglab.calculations`); a refused
     input is an InputError in the command line's words (:func:`request_message`)."""
     from ..calculations import parse
-    from ..calculations.fields import RequestError
-
     from ..calculations._finite import finite
+    from ..calculations.fields import RequestError
 
     given = {k: v for k, v in given.items() if v is not None}
     try:  # typer has read the options; the calculation checks them by the command line's own rules
