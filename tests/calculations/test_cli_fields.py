@@ -26,7 +26,7 @@ COMMANDED = [n for n in CALCULATIONS if CALCULATIONS[n].command]
 
 #: calculations registered before their command: the command line generated from the registry adds them
 #: (issue 33 item 5); remove a name here when its command exists
-NOT_YET_COMMANDS = {"shaft"}
+NOT_YET_COMMANDS: set = set()
 _WITH_COMMAND = [n for n in CALCULATIONS if CALCULATIONS[n].command and n not in NOT_YET_COMMANDS]
 
 

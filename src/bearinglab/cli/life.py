@@ -114,5 +114,6 @@ def _print(title, doc, lubricated):
                    caption="--json for one JSON document (keys in the units shown)")
 
 
+# the duty-cycle file is read by the command itself, which names it in the messages of its steps
 #: The ``life`` command, as the application adds it.
-COMMANDS = {"life": command("life", life)}
+COMMANDS = {"life": command("life", life, documents="path")}
