@@ -15,6 +15,7 @@ Form and request
 FORM        the page's fields of this section -> the calculation's field each gives
 FIELDS      the calculation's fields, by name (their help on the page)
 TABLES      the editor's tables: key -> (title, columns); a column is (key, label, placeholder)
+KINDS       the kinds of support of the editor -> the key of the file that gives each
 editor      the shaft file's text -> the tables' rows and the other lines (for the template)
 query       the page's values -> the request of the calculation ``shaft``
 left_out    why the section does not apply (no shaft given), or ''
@@ -30,11 +31,12 @@ bearing_rows   each bearing's load, lives, static safety factor and largest cont
 from __future__ import annotations
 
 import json
+import math
 import re
 
 from ..calculations import CALCULATIONS
 
-__all__ = ["FIELDS", "FORM", "TABLES", "bearing_rows", "editor", "inputs", "left_out", "query", "summary_rows",
+__all__ = ["FIELDS", "FORM", "KINDS", "TABLES", "bearing_rows", "editor", "inputs", "left_out", "query", "summary_rows",
            "support_rows"]
 
 #: The page's fields of the shaft section -> the field of the calculation ``shaft`` (the page's own names:
@@ -74,10 +76,8 @@ def _value(v):
     """A value as TOML writes it: a string, number, flag, array or inline table."""
     if isinstance(v, bool):
         return "true" if v else "false"
-    if isinstance(v, float) and v != v:
-        return "nan"
-    if isinstance(v, float) and v in (float("inf"), float("-inf")):
-        return "inf" if v > 0 else "-inf"
+    if isinstance(v, float) and not math.isfinite(v):  # TOML's spelling, not JSON's NaN
+        return "nan" if math.isnan(v) else ("inf" if v > 0 else "-inf")
     if isinstance(v, (int, float)):
         return repr(v)
     if isinstance(v, dict):
