@@ -584,9 +584,10 @@ _CALCS = (
         "Several bearings on an elastic shaft (Timoshenko elements) with gears, pulleys, housings and speed: "
         "support loads, bearing lives and the system life, deflection, stiffness at a point, natural "
         "frequencies.",
-        (_f("model", "document", "The shaft system as a TOML or JSON document (sections, supports, loads, "
-            "gears, pulleys, cases; the format of the user guide's shaft-systems page), posted as text; never a "
-            "file path.", label="Shaft system", required=True, option="FILE", group="shaft"),
+        # a document: the page and the API take its text, the command line the file (FILE) holding it
+        (_f("model", "document", "the shaft system: its sections, supports, loads, gears, pulleys and load "
+            "cases, as tables (JSON takes the same tables; the format of the user guide's shaft-systems page).",
+            label="Shaft system", required=True, option="FILE", group="shaft"),
          _f("speed", "speed", "Shaft speed instead of the file's, e.g. '3000 rpm' (its sign: the sense of "
             "rotation).", label="Shaft speed", unit="rpm", group=_L),
          _f("stiffness_at", "length", "The direct stiffness at this position, e.g. '0 mm' (a spindle's nose).",
