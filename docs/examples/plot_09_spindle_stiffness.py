@@ -1,6 +1,6 @@
 """
 A spindle's stiffness at the nose against its bearing span and preload
-=====================================================================
+======================================================================
 
 The spindle of ``examples/shaft/spindle.toml``: a hollow shaft (bore 30 mm) with a DB pair of 7014 C at
 100 mm from the nose and a 6012 floating at the rear. The rear bearing moves along its 180 mm seat, so the
@@ -21,16 +21,20 @@ bearings' internal geometry is an estimate (the catalog says so).
 """
 
 import warnings
+from pathlib import Path
 
 import numpy as np
 
+import bearinglab
 from bearinglab import shaft
 from bearinglab.plots import shaft as shaft_plots
 from bearinglab.units import UM
 
 warnings.simplefilter("ignore")  # estimated internal geometry: said above
 
-base = shaft.load("examples/shaft/spindle.toml").system.replace(speed=0.0, gravity=None)
+# the spindle file shipped in the repository's examples/shaft/ folder
+here = Path(bearinglab.__file__).resolve().parents[2]
+base = shaft.load(here / "examples" / "shaft" / "spindle.toml").system.replace(speed=0.0, gravity=None)
 front = base.supports[0]
 spans = np.arange(130.0, 291.0, 10.0)  # mm, from the middle of the front pair
 series = {}

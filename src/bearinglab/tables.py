@@ -36,8 +36,7 @@ rating_life     a rating-life analysis -> its columns (N, Mrev, h, factors)
 ratings         a bearing's C, C0, Cu (N) and where each comes from
 skf_torque      the SKF model's moments -> N·mm, W and mu_sl
 significant     input values without the last-bit noise of a unit round trip
-quantity        a document's key -> its label and unit (``contact_angle_inner_deg`` -> ``contact angle
-                inner``, ``°``): the page and the command line's tables of a document
+quantity        a document's key -> its label and unit (``contact_angle_inner_deg``: contact angle inner, °)
 
 Writers
 -------

@@ -71,8 +71,8 @@ def line_film(load_per_length, entrainment_velocity, radius, dynamic_viscosity, 
 
     Notes
     -----
-    Pan and Hamrock [1]_: :math:`H_{min} = h_{min}/R_x = 1.714\,W'^{-0.128} U^{0.694} G^{0.568}`,
-    :math:`H_c = 2.922\,W'^{-0.166} U^{0.692} G^{0.470}`; Dowson and Higginson [2]_:
+    Pan and Hamrock [1]: :math:`H_{min} = h_{min}/R_x = 1.714\,W'^{-0.128} U^{0.694} G^{0.568}`,
+    :math:`H_c = 2.922\,W'^{-0.166} U^{0.692} G^{0.470}`; Dowson and Higginson [2]:
     :math:`H_{min} = 2.65\,U^{0.70} G^{0.54} W'^{-0.13}`.
 
     Examples
@@ -117,7 +117,7 @@ def roller_entrainment_velocity(shaft_speed, roller_diameter, pitch_diameter, co
     -------
     ndarray or float
         :math:`u = \frac{d_m |\omega|}{4}(1 - \gamma^2)`, :math:`\gamma = D_{we}\cos\alpha/d_m`: the same at
-        both contacts in pure rolling ([3]_ ch. 24). [m/s]
+        both contacts in pure rolling ([3] ch. 24). [m/s]
 
     Examples
     --------

@@ -37,7 +37,7 @@ from ..errors import InputError
 
 __all__ = ["BALL_SLOPE", "ROLLER_SLOPE", "system_life", "weibull_slope"]
 
-#: Weibull slope of ball bearings (point contact), [1]_ and [3]_
+#: Weibull slope of ball bearings (point contact), [1] and [3]
 BALL_SLOPE = 10.0 / 9.0
 #: Weibull slope of roller bearings (line contact)
 ROLLER_SLOPE = 9.0 / 8.0

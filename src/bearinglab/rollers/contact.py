@@ -141,7 +141,7 @@ def contact_radii(roller_diameter, pitch_diameter, contact_angle=0.0):
     -------
     inner, outer : ndarray
         :math:`R_i = \tfrac{D_{we}}{2}(1 - \gamma)`, :math:`R_o = \tfrac{D_{we}}{2}(1 + \gamma)` with
-        :math:`\gamma = D_{we}\cos\alpha/D_{pw}` ([4]_ ch. 2: the roller against a convex inner and a
+        :math:`\gamma = D_{we}\cos\alpha/D_{pw}` ([4] ch. 2: the roller against a convex inner and a
         concave outer raceway). [m]
 
     Examples
@@ -185,7 +185,7 @@ def line_contact(load_per_length, radius, reduced_modulus):
 
     Notes
     -----
-    Johnson [3]_ eqs. (4.43), (4.45) with :math:`E^* = E'/2`:
+    Johnson [3] eqs. (4.43), (4.45) with :math:`E^* = E'/2`:
     :math:`b = \sqrt{8 w R/(\pi E')}` and :math:`p_{max} = \sqrt{w E'/(2\pi R)}`.
 
     Examples

@@ -95,7 +95,7 @@ def tapered_angles(contact_angle, roller_diameter, pitch_diameter):
 
     Notes
     -----
-    The cup, the cone and every roller are cones with one apex on the bearing axis (true rolling, [1]_
+    The cup, the cone and every roller are cones with one apex on the bearing axis (true rolling, [1]
     ch. 2). A roller whose axis makes the angle :math:`\alpha_r` with the bearing axis has its middle at
     :math:`\ell = D_{pw} / (2\sin\alpha_r)` from the apex, so its half angle :math:`\varphi` satisfies
     :math:`\tan\varphi = (D_{we}/2)/\ell = (D_{we}/D_{pw})\sin\alpha_r`. The cup raceway is the roller's

@@ -113,7 +113,7 @@ def shear_coefficient(poisson_ratio, diameter, bore=0.0):
 
     Notes
     -----
-    Cowper [4]_ table 1, hollow circle with m = d_i/d:
+    Cowper [4] table 1, hollow circle with m = d_i/d:
     :math:`\kappa = 6(1+\nu)(1+m^2)^2 / ((7+6\nu)(1+m^2)^2 + (20+12\nu) m^2)`; a solid circle
     (m = 0) gives 6(1 + nu)/(7 + 6 nu), 0.886 for steel. ROSS uses the same formula (its default
     ``shear_method_calc="cowper"``).
@@ -156,7 +156,7 @@ def beam_stiffness(length, bending_stiffness, shear_stiffness):
        K = \frac{EI}{(1+\Phi)L^3}\begin{bmatrix}12 & 6L & -12 & 6L\\ 6L & (4+\Phi)L^2 & -6L & (2-\Phi)L^2\\
        -12 & -6L & 12 & -6L\\ 6L & (2-\Phi)L^2 & -6L & (4+\Phi)L^2\end{bmatrix}
 
-    ([1]_ section 5.6, [2]_ eq. (21)): exact for end loads on a uniform beam, with the shear
+    ([1] section 5.6, [2] eq. (21)): exact for end loads on a uniform beam, with the shear
     deflection P L / (kappa G A) of a cantilever included.
 
     Examples
@@ -204,7 +204,7 @@ def beam_mass(length, mass_per_length, rotary_inertia_per_length, phi):
     Notes
     -----
     The integrals of rho A N_w^T N_w and rho I N_psi^T N_psi over the element with the interdependent
-    shape functions of [2]_ (the same as [1]_ section 11.4 and Nelson [3]_; ROSS's ShaftElement with
+    shape functions of [2] (the same as [1] section 11.4 and Nelson [3]; ROSS's ShaftElement with
     a uniform section gives the same numbers).
 
     Examples
@@ -275,7 +275,7 @@ def shaft_element(length, diameter, bore, elastic_modulus, poisson_ratio, densit
     Bending in each plane by :func:`beam_stiffness` and :func:`beam_mass` (the y-z plane with
     psi = -theta_x); axial: a bar, E A / L and rho A L / 6 [[2, 1], [1, 2]]; torsion likewise with G J
     and rho J. The gyroscopic matrix is the rotary mass with the polar inertia rho J = 2 rho I
-    coupling the two planes ([3]_, [5]_ section 5.4): G[x-plane, y-plane] = 2 M_R S and
+    coupling the two planes ([3], [5] section 5.4): G[x-plane, y-plane] = 2 M_R S and
     G[y-plane, x-plane] = -2 S M_R, S = diag(1, -1, 1, -1).
 
     Examples

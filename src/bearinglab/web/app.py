@@ -6,9 +6,10 @@ GET  /                         the calculator page; with the form's fields in th
 GET  /api/<endpoint>           one calculation, query parameters (shareable links)
 POST /api/<endpoint>           one calculation, a JSON body of the same parameters
 GET  /csv/<endpoint>           the same calculation's document as CSV (the page's download link)
-GET  /docs, /redoc, /openapi.json   every endpoint and field, with units, ranges and the limits; Swagger UI
-                               and ReDoc load their scripts from the package (fastapi-offline), no network
+GET  /docs, /redoc, /openapi.json   every endpoint and field, with units, ranges and limits (offline)
 GET  /static/...               the style sheet and the page's script
+
+Swagger UI and ReDoc load their scripts from the package (fastapi-offline), with no network.
 
 Limits: a request holds at most ``case_limit`` cases, runs at most ``time_budget`` seconds (then its
 worker process is stopped and the answer is 503 naming the budget), and its body is at most

@@ -19,8 +19,7 @@ chain_rows      the mounted-clearance chain: stages x least / probable / largest
 percentile_rows the Monte Carlo study of a clearance: percentiles, mean, std, P(clearance < 0)
 render_context  form values -> what the template shows (async: the sections run in the workers)
 PAGE_ROWS       the most rows of a table of cases the page shows (the JSON and CSV hold them all)
-lists_note      the report's line on lists and ranges of the loads and speed: a table of the cases in
-                the sections that take them; the sections that take one value are left out, saying so
+lists_note      the report's line on lists and ranges of the loads and speed (a table of the cases)
 to_csv          a document as CSV text (quantity, value, unit; a table of cases as rows)
 quantity        a result key with its unit suffix -> a readable label and unit
 number          a value as the page shows it: 6 significant digits, float noise as 0
