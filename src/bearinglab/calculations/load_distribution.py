@@ -74,7 +74,7 @@ def document(parsed, *, catalog=None, bearing_file=None, speeds=False):
     from .. import tables
     from ..quasistatic import combined
     from ..units import parse_quantity
-    from . import _mounting
+    from . import _mounting, _rollers
 
     v, given = parsed.values, parsed.given
 
@@ -82,6 +82,9 @@ def document(parsed, *, catalog=None, bearing_file=None, speeds=False):
         return given_text(parsed, name)
 
     with failures(parsed):
+        roller = _rollers.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
+        if roller is not None:  # the slice model of a roller bearing (issue 32)
+            return json.loads(tables.json_text(_rollers.load_document(parsed, roller, speeds=speeds)))
         b = resolve_bearing(text("bearing"), bearing_file, catalog, v.get("balls"), *map(text, _GEOMETRY),
                             v.get("inner_conformity"), v.get("outer_conformity"), text("contact_angle"),
                             text("radial_clearance"), text("ball_material"))
@@ -125,6 +128,11 @@ def figure(doc, title=None):
     import numpy as np
 
     from ..plots import load_distribution as load_plots
+
+    if "rollers" in doc:  # a roller bearing: its roller loads and lamina pressures (issue 32)
+        from . import _rollers
+
+        return _rollers.figure(doc, title)
 
     def column(key, scale=1.0):
         return np.array([np.nan if ball[key] is None else ball[key] * scale for ball in doc["balls"]])

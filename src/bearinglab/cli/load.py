@@ -34,7 +34,8 @@ from ._options import command
 
 __all__ = ["COMMANDS"]
 
-PlotFile = FileOption("--plot", "Polar plot of the ball loads into this PNG/PDF/SVG file.")
+PlotFile = FileOption("--plot", "Polar plot of the ball loads (a roller bearing: the roller loads and the lamina "
+                                "pressures) into this PNG/PDF/SVG file.")
 
 
 def load_distribution(
@@ -87,9 +88,29 @@ def _sig(x, decimals=2):
 
 
 def _print_case(title, doc, *, balls=True, body="ring", origin="concentric", extra=()):
+    if "rollers" in doc:  # a roller bearing (issue 32)
+        _print_rollers(title, doc)
+        _print_ring(title, doc, body, origin, extra)
+        return
     if balls:
         _print_balls(title, doc)
     _print_ring(title, doc, body, origin, extra)
+
+
+def _print_rollers(title, doc):
+    """The table per roller of a roller bearing: azimuth, roller load, the highest lamina pressure and where
+    along the roller it is (from the roller's middle, towards +z)."""
+    positions = doc["slice_positions_mm"]
+
+    def peak(r):
+        p = [x if x is not None else -1.0 for x in r["slice_pressures_MPa"]]
+        top = max(range(len(p)), key=p.__getitem__)
+        return "—" if not r["load_N"] else _f(positions[top], ".2f")
+
+    table(f"{title}: roller loads ({doc['slices']} slices per roller)",
+          ["roller", "ψ [deg]", "Q [N]", "p_max [MPa]", "at s [mm]"],
+          [[str(j), _f(r["azimuth_deg"], ".2f"), _sig(r["load_N"]), _f(r["max_pressure_MPa"], ".0f"), peak(r)]
+           for j, r in enumerate(doc["rollers"])])
 
 
 def _print_balls(title, doc):
@@ -114,7 +135,13 @@ def _print_ring(title, doc, body="ring", origin="concentric", extra=()):
         for key, value in doc["reactions"].items():
             shown = 0.0 if abs(value) < 1e-6 else value  # below a micronewton: rounding of a symmetric case
             rows.append([f"reaction {names[key]} (held)", _sig(shown)])
-    rows.append(["max ball load [N]", _sig(doc["max_ball_load_N"])])
+    if "max_roller_load_N" in doc:  # a roller bearing
+        rows += [["max roller load [N]", _sig(doc["max_roller_load_N"])],
+                 ["max lamina pressure [MPa]", _f(doc["max_pressure_MPa"], ".0f")]]
+        if doc.get("rib_load_N"):
+            rows.append(["axial load on the ribs [N]", _sig(doc["rib_load_N"])])
+    else:
+        rows.append(["max ball load [N]", _sig(doc["max_ball_load_N"])])
     k = doc["stiffness_matrix"]
     if k is not None and k[0][0] is not None:
         rows += [["k_xx, k_yy, k_zz [N/µm]", ", ".join(_sig(k[i][i] * 1e-6) for i in range(3))],
