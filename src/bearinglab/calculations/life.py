@@ -86,7 +86,7 @@ def document(parsed, *, catalog=None, bearing_file=None, duty_cycle_source=POSTE
     """
     from .. import catalog as _catalog
     from .. import tables
-    from . import _mounting
+    from . import _rollers
 
     v = parsed.values
 
@@ -94,10 +94,11 @@ def document(parsed, *, catalog=None, bearing_file=None, duty_cycle_source=POSTE
         return given_text(parsed, name)
 
     with failures(parsed):
-        b = resolve_bearing(text("bearing"), bearing_file, catalog, v.get("balls"), *map(text, _GEOMETRY),
+        b = _rollers.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog, only=("tilt_x", "tilt_y")) or \
+            resolve_bearing(text("bearing"), bearing_file, catalog, v.get("balls"), *map(text, _GEOMETRY),
                             v.get("inner_conformity"), v.get("outer_conformity"),
                             text("contact_angle"), text("radial_clearance"), text("ball_material"))
-        notes = _catalog.provenance_notes(b)
+        notes = [] if _rollers.is_roller(b) else _catalog.provenance_notes(b)
         auto = (text("temperature") or "").lower() == "auto"
         thermal = {k: text(k) for k in _THERMAL}
         if auto:  # the viscosity of the steady temperature, once the loads and speed are known
@@ -121,18 +122,28 @@ def document(parsed, *, catalog=None, bearing_file=None, duty_cycle_source=POSTE
             if any(k in parsed.given for k in (*_LOADS, "speed")):
                 raise InputError("duty-cycle: the loads and speeds are in the duty cycle; give no --fx ... "
                                  "--speed")
-            b, _ = _mounting.operating_bearing(b, 0.0, mounting)  # no single speed for the centrifugal
+            b, _ = _rollers.operating(b, 0.0, mounting)  # no single speed for the centrifugal
             steps = _duty_cycle(str(parsed.given["duty_cycle"]), duty_cycle_source, b)
         elif "speed" not in parsed.given:
             raise InputError("speed: missing; give the inner-ring speed, e.g. '3000 rpm' (or --duty-cycle)")
         else:
             n = parse_speed(text("speed"), bearing=b, zero=False)
-            b, mounted = _mounting.operating_bearing(b, n, mounting)  # issue 23: the operating clearance
+            b, mounted = _rollers.operating(b, n, mounting)  # issue 23: the operating clearance
             loads = five_loads(*map(text, _LOADS))
             if auto:
                 lube, temperature, notes_auto = _auto_viscosity(b, loads, n, text, v, thermal)
                 options["kinematic_viscosity"] = lube.viscosity
                 assumed = [*_assumed(lube, no_cleanliness), *notes_auto]
+    if _rollers.is_roller(b):  # ISO 281 of roller bearings, ISO/TS 16281 over the laminae (issue 32)
+        from . import _roller_models
+
+        with failures(parsed):
+            cycle = "duty_cycle" in parsed.given
+            doc = _roller_models.life(parsed, b, options, lube, assumed, steps=steps if cycle else None,
+                                      loads=None if cycle else loads, speed=None if cycle else n,
+                                      mounted=None if cycle else mounted,
+                                      temperature=temperature if auto and not cycle else None)
+        return json.loads(tables.json_text(doc))
     if "duty_cycle" in parsed.given:
         doc = _life_of_duty_cycle(b, *steps, options, lube, assumed)
     else:

@@ -91,6 +91,8 @@ _LABELS = {
     "modified_reference_rating_life_Mrev": "modified ref. life L_nmr [10^6 rev]",
     "static_safety_factor": "static safety factor s0 [-]",
     "mean_speed_rpm": "mean speed [rpm]",
+    "max_pressure_MPa": "max lamina pressure (slices) [MPa]",
+    "slices": "slices per roller",
 }
 
 
