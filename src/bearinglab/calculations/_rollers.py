@@ -22,6 +22,7 @@ Load distribution
 -----------------
 load_document    the document of ``load-distribution`` for a roller bearing (rollers, laminae, stiffness)
 roller_case      one case of a RollerLoadDistribution as JSON entries (displacement, stiffness, rollers)
+ring_entries     a ring's or a shaft's displacement and stiffness as JSON entries (symmetry's zeros as 0)
 figure           a roller document -> the roller loads and the lamina pressures (plots.rollers.overview)
 
 The physics is :mod:`bearinglab.rollers` (the ISO/TS 16281 slice model at rest); the other calculations'
@@ -36,8 +37,8 @@ from ..errors import InputError
 from ._inputs import five_loads, inputs_echo, parse_length, parse_speeds
 from ._reading import text as _text
 
-__all__ = ["bearing_of", "figure", "is_roller", "load_document", "notes_of", "operating", "refuse", "roller_case",
-           "slices_of"]
+__all__ = ["bearing_of", "figure", "is_roller", "load_document", "notes_of", "operating", "refuse", "ring_entries",
+           "roller_case", "slices_of"]
 
 #: The roller inputs of a request: they describe a roller bearing, and a ball bearing refuses them.
 ROLLER_INPUTS = ("rollers", "roller_diameter", "roller_length", "profile", "crown_drop", "slices")
@@ -456,15 +457,13 @@ def roller_case(r, pitch_diameter, *, reactions=None):
 
     from .._io import json_value
 
-    u, k = _resolved(r, pitch_diameter)
-    out = {f"displacement_{a}_um": json_value(u[i] * 1e6) for i, a in enumerate("xyz")}
-    out.update(tilt_x_mrad=json_value(u[3] * 1e3), tilt_y_mrad=json_value(u[4] * 1e3))
+    out = ring_entries(r.displacement, r.stiffness, pitch_diameter)
     if reactions:
-        out["reactions"] = reactions
+        stiffness = out.pop("stiffness_matrix")
+        out.update(reactions=reactions, stiffness_matrix=stiffness)
     q = np.asarray(r.slice_load, dtype=float)
     p = np.asarray(r.slice_pressure, dtype=float)
-    out.update(stiffness_matrix=json_value(k),
-               max_roller_load_N=json_value(float(np.max(r.roller_load))),
+    out.update(max_roller_load_N=json_value(float(np.max(r.roller_load))),
                max_pressure_MPa=json_value(float(np.max(r.max_pressure)) / 1e6),
                rib_load_N=json_value(float(r.rib_load)),
                converged=bool(r.converged), residual=json_value(float(r.residual)), iterations=int(r.iterations),
@@ -483,12 +482,40 @@ def roller_case(r, pitch_diameter, *, reactions=None):
 _ZERO_DISPLACEMENT, _ZERO_COUPLING = 1e-9, 1e-10
 
 
-def _resolved(r, pitch_diameter):
+def ring_entries(displacement, stiffness, pitch_diameter):
+    """A ring's (or a shaft's) displacement [um, mrad] and 5 x 5 stiffness (SI) as JSON entries, with the zeros
+    that symmetry makes shown as 0.
+
+    Parameters
+    ----------
+    displacement : array_like
+        (5,) delta_x, delta_y, delta_z [m], theta_x, theta_y [rad].
+    stiffness : array_like
+        (5, 5). [N/m, N/rad, N m/m, N m/rad]
+    pitch_diameter : float
+        The arm of the tilts in what counts as a zero. [m]
+
+    Returns
+    -------
+    dict
+        ``displacement_x_um``, ``displacement_y_um``, ``displacement_z_um``, ``tilt_x_mrad``, ``tilt_y_mrad``,
+        ``stiffness_matrix``.
+    """
+    from .._io import json_value
+
+    u, k = _resolved(displacement, stiffness, pitch_diameter)
+    out = {f"displacement_{a}_um": json_value(u[i] * 1e6) for i, a in enumerate("xyz")}
+    out.update(tilt_x_mrad=json_value(u[3] * 1e3), tilt_y_mrad=json_value(u[4] * 1e3),
+               stiffness_matrix=json_value(k))
+    return out
+
+
+def _resolved(displacement, stiffness, pitch_diameter):
     """The displacement and the stiffness of one case with symmetry's zeros set to 0.0."""
     import numpy as np
 
-    u = np.asarray(r.displacement, dtype=float)
-    k = np.asarray(r.stiffness, dtype=float)
+    u = np.asarray(displacement, dtype=float)
+    k = np.asarray(stiffness, dtype=float)
     if np.all(np.isfinite(u)):
         arm = np.array([1.0, 1.0, 1.0, 0.5 * pitch_diameter, 0.5 * pitch_diameter])
         size = np.max(np.abs(u * arm))

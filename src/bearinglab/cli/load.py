@@ -173,6 +173,10 @@ def bearing_set(given, *, catalog: CatalogFile = None, plot: PlotFile = None, js
     if json_out:
         emit_json(doc)
         return
+    if "iso281" in doc:  # a pair of tapered roller bearings (issue 32)
+        _print_pair(doc)
+        _print_written(plot)
+        return
     members = doc["bearings"]
     for k, m in enumerate(members):
         _print_case(f"Bearing {k} ({m['bearing']}, orientation {m['orientation']:+d}, z = {m['position_mm']:g} mm)", m)
@@ -187,6 +191,37 @@ def bearing_set(given, *, catalog: CatalogFile = None, plot: PlotFile = None, js
                 balls=False, body="shaft", origin=origin, extra=[spacing_row])  # the balls: each bearing's table
     print_warnings(doc["warnings"])
     _print_written(plot)
+
+
+def _print_pair(doc):
+    """A pair of tapered roller bearings: each bearing's rollers, the shaft, and ISO 281's method."""
+    inputs = doc["inputs"]
+    kind = {"DB": "back to back", "DF": "face to face"}[inputs["arrangement"]]
+    for k, m in enumerate(doc["bearings"]):
+        if "rollers" in m:
+            title = (f"Bearing {'AB'[k]} ({m['bearing']}, pressure centre z = {m['pressure_centre_mm']:g} mm, "
+                     f"F_r = {m['radial_load_N']:.1f} N, F_a = {m['axial_load_N']:.1f} N)")
+            _print_rollers(title, m)
+    if doc["stiffness_matrix"] is not None:
+        play = doc["axial_play_um"]
+        extra = [["effective spread (pressure centres) [mm]", f"{doc['effective_spread_mm']:g}"],
+                 ["roller middles apart [mm]", _f(doc["roller_distance_mm"], ".4f")],
+                 ["end play (< 0: interference) [µm]", _f(play, ".4f")],
+                 ["operating preload [N]", _sig(doc["operating_preload_N"])]]
+        ring = {**doc, "max_roller_load_N": max(m["max_roller_load_N"] for m in doc["bearings"]),
+                "max_pressure_MPa": max(m["max_pressure_MPa"] for m in doc["bearings"])}
+        _print_ring(f"Pair {inputs['arrangement']} ({kind})", ring, "shaft", "the middle of the pressure centres",
+                    extra)
+    iso = doc["iso281"]
+    rows = []
+    for k, m in enumerate(iso["bearings"]):
+        rows.append([f"{'AB'[k]} {m['bearing']}", _sig(m["radial_load_N"]), _sig(m["induced_axial_load_N"]),
+                     _sig(m["axial_load_N"]), _sig(m["equivalent_dynamic_load_N"]), _f(m["basic_rating_life_Mrev"], ".6g"),
+                     _f(m["basic_rating_life_h"], ".6g")])
+    table(f"ISO 281's method (induced axial load {iso['induced_axial_factor']:g} F_r/Y)",
+          ["bearing", "F_r [N]", "f F_r/Y [N]", "F_a [N]", "P [N]", "L10 [10^6 rev]", "L10h [h]"], rows,
+          caption=iso["source"])
+    print_warnings(doc["warnings"])
 
 
 #: The commands of this module, as the application adds them.
