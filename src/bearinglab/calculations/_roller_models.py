@@ -199,3 +199,331 @@ def life(parsed, bearing, options, lube, assumed, *, loads=None, speed=None, mou
                "warnings": [*notes, *_unbounded(d)]}
     doc["warnings"] = list(dict.fromkeys([*doc["warnings"], *notes_of(bearing)]))
     return tables.json_value(doc)
+
+
+# ---------------------------------------------------------------------------------------------------- film
+def film(parsed, bearing):
+    """The document of ``film`` for a roller bearing: the line-contact film of every roller.
+
+    The roller loads are the slice model's at rest (ISO/TS 16281: no centrifugal roller loads), the film of
+    each roller that of a line contact of its mean load per length at both raceways (Pan and Hamrock's
+    formula, :func:`bearinglab.film.roller_films`), Lambda with the roughness of the rollers (``roughness_ball``)
+    and the raceways.
+
+    Parameters
+    ----------
+    parsed : Parsed
+        A request of ``film``.
+    bearing : RollerBearing
+        From :func:`._rollers.bearing_of`.
+
+    Returns
+    -------
+    dict or list of dict
+        One document per speed: ``film_min_um``, ``lambda_min``, ``regime``, ``converged`` and ``rollers`` (per
+        roller ``azimuth_deg``, ``load_N``, ``entrainment_velocity_m_s``, ``film_central_inner_um``,
+        ``film_min_inner_um``, ``film_central_outer_um``, ``film_min_outer_um``, ``lambda``), ``inputs`` and
+        ``warnings``.
+    """
+    from .. import film as film_model
+    from ..film import ehl
+    from ..rollers import analysis
+    from ..units import RPM
+    from . import film as ball_film
+    from ._inputs import five_loads, parse_speeds
+    from ._rollers import operating
+    from .load_distribution import MOUNTING
+
+    spherical(bearing, "the film")
+    b = geometry_of(bearing)
+    loads = five_loads(*(_text(parsed, k) for k in ("fx", "fy", "fz", "mx", "my", "radial_load", "axial_load")))
+    speed = _text(parsed, "speed")
+    if speed is None:
+        raise InputError("speed: give the inner-ring speed, e.g. --speed '6000 rpm' (no film forms at rest)")
+    w = parse_speeds(speed, pitch_diameter=b.pitch_diameter, zero=False)
+    rq_roller, rq_race = ball_film.roughness(_text(parsed, "roughness"), _text(parsed, "roughness_ball"),
+                                             _text(parsed, "roughness_race"))
+    alpha = ball_film.pressure_viscosity(_text(parsed, "pressure_viscosity_coefficient"))
+    oil = {k: (parsed.values.get(k) if k == "viscosity_index" else _text(parsed, k))
+           for k in ("viscosity", "dynamic_viscosity", "oil", "viscosity_index", "viscosity_100")}
+    temperature = _text(parsed, "temperature")
+    notes = []
+    if temperature is not None and temperature.lower() == "auto":
+        eta, how, lub_inputs, notes = ball_film._auto_temperature(
+            b, loads, w, oil["oil"], oil["viscosity"], oil["dynamic_viscosity"], oil["viscosity_index"],
+            oil["viscosity_100"], _text(parsed, "density"), _text(parsed, "ambient"),
+            _text(parsed, "thermal_resistance"), _text(parsed, "lubrication") or "oil-jet",
+            _text(parsed, "skf_constants"))
+    else:
+        if any(_text(parsed, k) is not None for k in ("ambient", "thermal_resistance", "skf_constants")):
+            raise InputError("temperature: --ambient, --thermal-resistance and --skf-constants go with "
+                             "--temperature auto (the thermal balance)")
+        eta, _, how, lub_inputs, notes = ball_film.lubricant(oil["viscosity"], oil["dynamic_viscosity"], oil["oil"],
+                                                             temperature, oil["viscosity_index"],
+                                                             oil["viscosity_100"], _text(parsed, "density"))
+        if _text(parsed, "lubrication") is not None:
+            notes.append("lubrication: the starvation check (SKF's replenishment factor) is made for ball bearings; "
+                         "the rollers' films are those of a fully flooded contact")
+    if alpha is None:
+        alpha = ehl.pressure_viscosity_coefficient(eta)
+        notes.append("pressure-viscosity coefficient: not given, so Wooster's estimate for mineral oils is used "
+                     f"({float(np.min(alpha)) * 1e9:.3g} 1/GPa); give the oil's own value")
+    b, mounted = operating(b, float(np.max(w)), {k: _text(parsed, k) for k in MOUNTING if k in parsed.given})
+    n_slices = slices_of(parsed)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        r = analysis.roller_analysis(b, loads, n_slices=n_slices)
+    notes += [*r.warnings, *(str(c.message) for c in caught)]
+    notes.append("roller loads: those of the slice model at rest (ISO/TS 16281: no centrifugal roller loads); each "
+                 "roller's film is that of its mean load per length (a tilted roller's loaded end runs thinner)")
+    eta_k = np.broadcast_to(np.asarray(eta, dtype=float), w.shape)
+    alpha_k = np.broadcast_to(np.asarray(alpha, dtype=float), w.shape)
+    docs = []
+    for k in range(w.size):
+        f = film_model.roller_films(r.roller_load, float(w[k]), b.roller_diameter, b.roller_length, b.pitch_diameter,
+                                    float(eta_k[k]), float(alpha_k[k]), b.reduced_modulus, contact_angle=b.contact_angle,
+                                    roughness_roller=rq_roller, roughness_race=rq_race)
+        doc = _film_doc(r, f)
+        doc["inputs"] = inputs_echo(b, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
+                                    my_Nmm=loads[4] * 1e3, speed_rpm=float(w[k]) / RPM, loads_at="rest",
+                                    **lub_inputs, lubricant=how, pressure_viscosity_coefficient_per_GPa=
+                                    float(alpha_k[k]) * 1e9, roughness_ball_um=rq_roller * 1e6,
+                                    roughness_race_um=rq_race * 1e6, slices=n_slices)
+        temps = lub_inputs.get("bearing_temperature_degC")
+        if isinstance(temps, list):
+            doc["inputs"]["bearing_temperature_degC"] = temps[k]
+        doc.update(mounted)
+        doc["warnings"] = list(dict.fromkeys([*notes, *notes_of(b)]))
+        docs.append(doc)
+    return docs[0] if w.size == 1 else docs
+
+
+def _film_doc(r, f):
+    """One speed's film of the rollers, JSON-ready (null where a roller carries no load)."""
+    from .._io import json_value
+
+    hmin = np.fmin(f.minimum_inner, f.minimum_outer)
+    loaded = np.isfinite(hmin)
+    k = int(np.nanargmin(np.where(loaded, hmin, np.nan))) if loaded.any() else None
+    rollers = [{"azimuth_deg": math.degrees(float(r.azimuth[j])), "load_N": float(r.roller_load[j]),
+                "entrainment_velocity_m_s": float(f.entrainment_velocity),
+                "film_central_inner_um": json_value(float(f.central_inner[j]) * 1e6),
+                "film_min_inner_um": json_value(float(f.minimum_inner[j]) * 1e6),
+                "film_central_outer_um": json_value(float(f.central_outer[j]) * 1e6),
+                "film_min_outer_um": json_value(float(f.minimum_outer[j]) * 1e6),
+                "lambda": json_value(float(f.film_parameter[j]))} for j in range(len(r.roller_load))]
+    return {"film_min_um": None if k is None else float(hmin[k]) * 1e6,
+            "lambda_min": None if k is None else float(f.film_parameter[k]),
+            "regime": None if k is None else str(f.regime[k]), "converged": bool(r.converged),
+            "rollers": rollers}
+
+
+# ------------------------------------------------------------------------------------------------ friction
+_HANDBOOK = ("type", "bore", "outside_diameter", "mean_diameter", "static_load_rating", "mu", "x0", "y0", "f", "c",
+             "f0", "palmgren_f0")
+
+
+def friction(parsed, bearing):
+    """The document of ``friction torque`` for a roller bearing: SKF's four-term model of its type.
+
+    SKF General Catalogue 6000 (module :mod:`bearinglab.friction.skf_roller`): the rolling and sliding moments with
+    the constants of the bearing's series, the inlet shear heating and replenishment factors, and the drag moment
+    of an oil bath (``lubrication`` oil-bath with ``oil_level`` and ``drag_loss_factor``, V_M of SKF's diagram).
+    The handbook models of the friction-rig lab (one-term, two-term, Palmgren) are ball bearings': refused.
+
+    Parameters
+    ----------
+    parsed : Parsed
+        A request of ``friction``.
+    bearing : RollerBearing
+        From :func:`._rollers.bearing_of`.
+
+    Returns
+    -------
+    tuple
+        ``(document, SKFTorque)``: the keys of the ball bearing's ``skf`` document.
+    """
+    from .. import friction as friction_model
+    from .. import tables
+    from ..units import RPM
+    from . import _reading as inp
+    from ._inputs import lubricant_viscosity
+    from ._rollers import operating
+    from .friction_torque import _cases, _check_speed, _echo
+    from .load_distribution import MOUNTING
+
+    model = inp.value(parsed, "model", "one-term")
+    if model != "skf":
+        raise InputError(f"model: the {model} model is of ball bearings (the friction-rig lab's handbook constants); "
+                         f"{bearing.designation!r} is a {bearing.type} roller bearing: give --model skf (SKF's "
+                         "constants of roller bearings)")
+    given = [k for k in _HANDBOOK if k in parsed.given]
+    if given:
+        raise InputError(f"{given[0].replace('_', '-')}: an input of the handbook models of ball bearings; the skf "
+                         "model reads a roller bearing's envelope and series from the bearing")
+    series = parsed.given.get("series")
+    if series is not None:
+        try:
+            friction_model.roller_series_constants(bearing.type, str(series).strip())
+        except InputError as exc:
+            raise InputError(f"series: {exc}".replace("series: series", "series")) from None
+        bearing = bearing.replace(series=str(series).strip())
+    fr, fa, n = _cases(inp.text(parsed, "radial_load", "0 N"), inp.text(parsed, "axial_load", "0 N"),
+                       inp.text(parsed, "speed", "0 rpm"))
+    _check_speed(bearing, n)
+    lubrication = inp.value(parsed, "lubrication", "grease")
+    oil = (inp.text(parsed, "oil"), inp.text(parsed, "temperature"), inp.value(parsed, "viscosity_index"),
+           inp.text(parsed, "viscosity_100"))
+    if inp.text(parsed, "viscosity") is None and oil[0] is None:
+        raise InputError("viscosity: the skf model needs --viscosity (e.g. '30 cSt'; of the base oil for grease), "
+                         "or --oil VG68 with --temperature")
+    nu = lubricant_viscosity(inp.text(parsed, "viscosity"), *oil, required=True).viscosity
+    kw = {}
+    level, vm = inp.text(parsed, "oil_level"), inp.value(parsed, "drag_loss_factor")
+    if lubrication == "oil-bath":
+        if level is None or vm is None:
+            raise InputError("oil-level: --lubrication oil-bath needs --oil-level (e.g. '5 mm') and "
+                             "--drag-loss-factor (V_M of SKF's diagram at H/d_m, the roller-bearing curve)")
+        h = inp.parse_length(level, "oil-level", zero=True)
+        dm = bearing.mean_diameter
+        if h > dm / 2:
+            raise InputError(f"oil-level must be <= d_m/2 = {dm / 2 * 1e3:g} mm [mm] (at most up to the bearing's "
+                             f"centre), got {h * 1e3:g} mm")
+        if not 0.0 <= vm <= 1.0:
+            raise InputError(f"drag-loss-factor must be in [0, 1] [-] (V_M of SKF's diagram), got {vm:g}")
+        kw["drag_loss_factor"] = vm
+    elif level is not None or vm is not None:
+        raise InputError("oil-level: --oil-level and --drag-loss-factor go with --lubrication oil-bath")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        m = friction_model.skf_roller_for_bearing(bearing, fr, fa, n, nu, lubrication=lubrication, **kw)
+    notes = list(dict.fromkeys([*m.warnings, *(str(c.message) for c in caught)]))
+    if bearing.type == "cylindrical" and bearing.design in ("N", "NU") and np.any(fa > 0):
+        notes.append(f"axial load: an {bearing.design} carries none (no ribs on both rings); SKF's sliding moment "
+                     "takes it as if on the flanges")
+    moments = tables.rows(tables.skf_torque(m))
+    rpm = tables.significant(n / RPM)
+    cases = [{"radial_load_N": float(fr[i]), "axial_load_N": float(fa[i]), "speed_rpm": float(rpm[i]), **moments[i]}
+             for i in range(len(moments))]
+    info = {"bearing": bearing.designation, "type": bearing.type, "model": "skf", "lubrication": lubrication,
+            "viscosity_cSt": float(tables.significant(nu * 1e6)[0]), "series": bearing.series}
+    mounting = {k: inp.text(parsed, k) for k in MOUNTING if k in parsed.given}
+    mounted = {}
+    if mounting:
+        _, mounted = operating(bearing, float(np.max(n)), mounting)
+        notes.append("operating clearance: the skf friction model does not depend on the clearance; "
+                     "operating_clearance_um is reported, the torque is the same without the mounting inputs")
+    echo = {"inputs": _echo(bearing, fr, fa, n, model="skf", lubrication=lubrication, viscosity_cSt=nu * 1e6,
+                            **({"drag_loss_factor": vm, "oil_level_mm": float(h) * 1e3} if kw else {})),
+            "warnings": list(dict.fromkeys([*notes, *notes_of(bearing)]))}
+    doc = {**info, **cases[0], **mounted, **echo} if len(cases) == 1 else {**info, "cases": cases, **mounted, **echo}
+    return doc, m
+
+
+# --------------------------------------------------------------------------------------------- frequencies
+def frequencies(parsed, bearing):
+    """The document of ``frequencies`` for a roller bearing: the defect frequencies of its rollers.
+
+    Pure rolling at the roller middles (:mod:`bearinglab.kinematics`, the formulas of ball bearings with the
+    roller diameter D_we, the pitch diameter D_pw, the rollers Z and the contact angle; of a tapered bearing its
+    cup angle, the usual approximation: the cone's raceway runs at alpha - 2 phi). The keys of the ball
+    bearing's document; the operating angle under an axial stand load is the test-stand method of ball
+    bearings, refused.
+
+    Parameters
+    ----------
+    parsed : Parsed
+        A request of ``frequencies``.
+    bearing : RollerBearing
+        From :func:`._rollers.bearing_of`.
+
+    Returns
+    -------
+    dict
+    """
+    from .. import kinematics, tables
+    from ..units import format_dms
+    from . import _reading as inp
+    from .frequencies import _HZ, _mask, _read
+
+    spherical(bearing, "its defect frequencies")
+    if inp.text(parsed, "axial_load") is not None:
+        raise InputError("axial-load: the operating contact angle under a stand load is the test-stand method of ball "
+                         f"bearings; {bearing.designation!r} is a {bearing.type} roller bearing, whose frequencies are "
+                         "at its nominal angle")
+    b = geometry_of(bearing)
+    harmonics, sidebands = inp.value(parsed, "harmonics", 3), inp.value(parsed, "sidebands", 1)
+    w_in, w_out, _, band = _read(b, inp.text(parsed, "speed"), inp.text(parsed, "outer_speed", "0 rpm"), None,
+                                 "exact", harmonics, sidebands, inp.text(parsed, "band", "2 %"))
+    z, d, dm, a0 = b.rollers, b.roller_diameter, b.pitch_diameter, b.contact_angle
+    out = inputs_echo(b, speed_rpm=w_in / _HZ * 60.0, outer_speed_rpm=w_out / _HZ * 60.0)
+    shift = kinematics.frequency_shift(w_in, d, dm, z, a0, a0, outer_speed=w_out)
+    out.update(contact_angle_deg=math.degrees(a0), contact_angle_dms=format_dms(a0),
+               nominal_contact_angle_deg=math.degrees(a0), shaft_hz=w_in / _HZ, outer_hz=w_out / _HZ)
+    out.update(tables.frequencies(shift.operating, w_in))
+    out["nominal"] = dict(contact_angle_deg=math.degrees(a0), shaft_hz=w_in / _HZ,
+                          **tables.frequencies(shift.nominal, w_in))
+    out["shift_hz"] = {n: float(getattr(shift.shift, n)) / _HZ for n in kinematics.FAMILIES[1:]}
+    out["shift_percent"] = {n: float(getattr(shift.shift_percent, n)) for n in kinematics.FAMILIES[1:]}
+    if inp.value(parsed, "mask", False):
+        view = _BallView(b)
+        out["mask"] = {"harmonics": harmonics, "sidebands": sidebands, "band_percent": band * 100.0,
+                       "lines": _mask(view, w_in, w_out, a0, harmonics, sidebands, band)}
+    notes = []
+    if b.estimated_fields:
+        from ..rollers.analysis import provenance
+
+        notes += provenance(b)
+    if b.type == "tapered":
+        notes.append("tapered roller bearing: the frequencies of pure rolling at the roller middles with the cup angle "
+                     "(the usual approximation; the cone's raceway runs at alpha - 2 phi)")
+    out["warnings"] = list(dict.fromkeys([*notes, *notes_of(b)]))
+    return out
+
+
+class _BallView:
+    """A roller bearing as the spectral mask reads a ball bearing (Z, D, d_m)."""
+
+    def __init__(self, b):
+        self._values = {"n_balls": b.rollers, "ball_diameter": b.roller_diameter, "pitch_diameter": b.pitch_diameter}
+
+    def require(self, *names):
+        return tuple(self._values[n] for n in names)
+
+
+# ----------------------------------------------------------------------------------------------- clearance
+def clearance(parsed, bearing, mounting, speed, speed_text):
+    """The mounted-clearance chain of a cylindrical roller bearing (its raceways at the roller middles).
+
+    Parameters
+    ----------
+    parsed : Parsed
+        A request of ``clearance``.
+    bearing : RollerBearing
+        From :func:`._rollers.bearing_of`.
+    mounting : dict
+        The mounting fields (name -> text as given).
+    speed : float
+        Inner-ring speed. [rad/s]
+    speed_text : str or None
+        As typed, for the echo.
+
+    Returns
+    -------
+    tuple
+        ``(bearing, inputs, range)``: the bearing with its roller set (estimated where missing), the
+        :class:`~bearinglab.calculations._mounting.MountedInputs` and the chain's range.
+    """
+    from ..mounting import chain
+    from ._rollers import mounted_inputs
+
+    if bearing.type == "tapered":
+        raise InputError(f"bearing: {bearing.designation!r} is a tapered roller bearing, whose play is set by "
+                         "adjusting it against the other bearing of its pair (bearing-set, --preload-offset): its "
+                         "mounted radial clearance is not modelled")
+    spherical(bearing, "the mounted clearance")
+    b = geometry_of(bearing)
+    given = {k: v for k, v in mounting.items() if v is not None and k != "radial_clearance"}
+    inp = mounted_inputs(b, given, speed, radial_clearance=mounting.get("radial_clearance"))
+    r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
+    return b, inp, r

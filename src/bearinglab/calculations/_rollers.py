@@ -16,7 +16,8 @@ bearing_of       the RollerBearing of a request, or None for a ball bearing (rol
 refuse           the one line of a calculation that does not take roller bearings (or not this type)
 operating        the bearing at its operating clearance under the mounting inputs (ball or roller)
 slices_of        the slices per roller of a request (30 by default)
-notes_of         the provenance notes of a roller bearing (estimated roller set, a user entry overriding)
+notes_of         the provenance note of a user catalog entry overriding a built-in roller bearing
+provenance_of    every provenance note of a roller bearing (its estimated roller set, notes_of)
 
 Load distribution
 -----------------
@@ -37,7 +38,7 @@ from ..errors import InputError
 from ._inputs import five_loads, inputs_echo, parse_length, parse_speeds
 from ._reading import text as _text
 
-__all__ = ["bearing_of", "figure", "is_roller", "load_document", "notes_of", "operating", "refuse", "ring_entries",
+__all__ = ["bearing_of", "figure", "is_roller", "load_document", "notes_of", "operating", "provenance_of", "refuse", "ring_entries",
            "roller_case", "slices_of"]
 
 #: The roller inputs of a request: they describe a roller bearing, and a ball bearing refuses them.
@@ -145,7 +146,8 @@ def _overridden(parsed, base):
             changes[name] = parse_length(_text(parsed, name), name.replace("_", "-"))
     if "contact_angle" in given and base.designation != "inline":
         changes["contact_angle"] = _angle(parsed)
-    if "radial_clearance" in given:  # zero: line to line; negative: a preload (issue 32)
+    if "radial_clearance" in given and parsed.calculation.field("radial_clearance").kind == "length":
+        # zero: line to line; negative: a preload (issue 32); `clearance`'s is the unmounted range, not this
         changes["radial_clearance"] = parse_quantity(_text(parsed, "radial_clearance"), "length", "radial-clearance")
     profile = _text(parsed, "profile")
     if "crown_drop" in given:
@@ -158,7 +160,8 @@ def _overridden(parsed, base):
             raise InputError("profile: 'crowned' needs --crown-drop (the drop at the roller ends, e.g. '5 um')")
         changes["profile"] = profile
     for name in (*ROLLER_INPUTS, *_SHARED):
-        if name in given and name != "slices":
+        if name in given and name != "slices" and name.replace("_", "-") not in overrides and (
+                name != "radial_clearance" or "radial_clearance" in changes):
             overrides[name.replace("_", "-")] = _text(parsed, name)
     if not changes:
         return base
@@ -190,6 +193,14 @@ def slices_of(parsed):
     if "slices" not in parsed.given:
         return N_SLICES
     return check_count("slices", _whole(parsed.values["slices"], "slices"), _MAX_SLICES)
+
+
+def provenance_of(bearing):
+    """Every provenance note of a roller bearing: its estimated fields (the rules of
+    :mod:`bearinglab.rollers.estimation`) and :func:`notes_of`."""
+    from ..rollers.analysis import provenance
+
+    return [*provenance(bearing), *notes_of(bearing)]
 
 
 def notes_of(bearing):

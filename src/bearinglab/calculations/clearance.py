@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from .. import catalog as _catalog
 from .._io import json_value
+from . import _rollers
 from ._failures import failures
 from ._inputs import inputs_echo, parse_speed, resolve_bearing
 from ._mounting import mounted_inputs
@@ -65,11 +66,17 @@ def _document(parsed, bearing_file, catalog, execution):
     from ..mounting import monte_carlo as mc
 
     values = parsed.values
-    b = resolve_bearing(_text(parsed, "bearing"), bearing_file, catalog)
+    b = _rollers.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog) or \
+        resolve_bearing(_text(parsed, "bearing"), bearing_file, catalog)
     speed = _text(parsed, "speed")
     w = 0.0 if speed is None else parse_speed(speed, "speed", bearing=b)
-    inp = mounted_inputs(b, **{k: _text(parsed, k) for k in _MOUNTING}, speed=w, require=True)
-    r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
+    if _rollers.is_roller(b):  # a cylindrical roller bearing's raceways at its roller middles (issue 32)
+        from ._roller_models import clearance
+
+        b, inp, r = clearance(parsed, b, {k: _text(parsed, k) for k in _MOUNTING}, w, speed)
+    else:
+        inp = mounted_inputs(b, **{k: _text(parsed, k) for k in _MOUNTING}, speed=w, require=True)
+        r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
     doc = _chain_document(b, inp, r, speed)
     samples = values.get("monte_carlo")
     if samples is not None:
@@ -86,7 +93,8 @@ def _document(parsed, bearing_file, catalog, execution):
             doc["warnings"].append(f"{100 * study.probability_preload:.3g} % of the Monte Carlo samples "
                                    "run with a negative clearance (preloaded)")
     notes = doc["warnings"]  # the bearing's provenance notes after the chain's, as the command line adds them
-    doc["warnings"] = notes + [n for n in dict.fromkeys(_catalog.provenance_notes(b)) if n not in notes]
+    provenance = _rollers.provenance_of(b) if _rollers.is_roller(b) else _catalog.provenance_notes(b)
+    doc["warnings"] = notes + [n for n in dict.fromkeys(provenance) if n not in notes]
     return doc
 
 

@@ -17,6 +17,7 @@ from __future__ import annotations
 from .. import catalog as _catalog
 from .._io import json_value
 from ..errors import InputError
+from . import _rollers
 from ._failures import failures
 from ._inputs import (
     choice,
@@ -145,6 +146,11 @@ def _document(parsed, bearing_file, catalog):
     def text(name):
         return str(parsed.given[name]).strip() if name in parsed.given else None
 
+    roller = _rollers.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
+    if roller is not None:  # the line-contact film of every roller (issue 32)
+        from . import _roller_models
+
+        return _roller_models.film(parsed, roller)
     v = parsed.values
     geometry = {k: (v[k] if k in ("balls", "inner_conformity", "outer_conformity") else text(k))
                 for k in _GEOMETRY if k in parsed.given}

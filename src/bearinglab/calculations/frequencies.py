@@ -16,6 +16,7 @@ import re
 
 from ..errors import InputError
 from . import _reading as inp
+from . import _rollers
 from ._failures import failures
 
 __all__ = ["document"]
@@ -52,6 +53,11 @@ def document(parsed, *, bearing_file=None, catalog=None):
         ``mask`` with the ``mask`` flag, and ``warnings`` (the bearing's provenance notes).
     """
     with failures(parsed, options=False):  # messages in the command line's words (_failures)
+        roller = _rollers.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
+        if roller is not None:  # the defect frequencies of the rollers (issue 32)
+            from . import _roller_models
+
+            return _roller_models.frequencies(parsed, roller)
         b = inp.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
         hertz = inp.value(parsed, "hertz", "exact")
         harmonics, sidebands = inp.value(parsed, "harmonics", 3), inp.value(parsed, "sidebands", 1)

@@ -19,6 +19,7 @@ from typing import NamedTuple
 
 from ..errors import InputError
 from . import _reading as inp
+from . import _rollers
 from ._failures import failures
 from ._inputs import lubricant_viscosity, parse_viscosity
 
@@ -55,6 +56,11 @@ def compute(parsed, *, bearing_file=None, catalog=None):
     t, v = inp.text, inp.value
     resolved = []
     with failures(parsed, options=False):  # messages in the command line's words (_failures)
+        roller = _rollers.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
+        if roller is not None:  # SKF's model of roller bearings (issue 32)
+            from . import _roller_models
+
+            return FrictionResult(*_roller_models.friction(parsed, roller))
         doc, m, b, n = _torque(
             t(parsed, "radial_load", "0 N"), t(parsed, "axial_load", "0 N"), t(parsed, "speed", "0 rpm"),
             v(parsed, "model", "one-term"), t(parsed, "bearing"), bearing_file, catalog, v(parsed, "type"),

@@ -22,6 +22,7 @@ from typing import NamedTuple
 from ..errors import ConvergenceError, InputError, ValidityWarning
 from . import _mounting
 from . import _reading as inp
+from . import _rollers
 from ._failures import failures
 
 __all__ = ["HighSpeedResult", "compute", "document", "figure"]
@@ -76,6 +77,7 @@ def compute(parsed, *, bearing_file=None, catalog=None, execution=None, check=No
     from .. import limits, parallel, tables
     from ..units import RPM
     with failures(parsed, options=False):  # messages in the command line's words (_failures)
+        _rollers.check_model(parsed, bearing_file=bearing_file, catalog=catalog)  # ball bearings only
         b = inp.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
         options = _model_options(inp.value(parsed, "solver", "newton"), inp.value(parsed, "raceway_control", "outer"),
                                  inp.value(parsed, "constants", "mass"),

@@ -15,6 +15,7 @@ import math
 
 from ..errors import InputError
 from . import _reading as inp
+from . import _rollers
 from ._failures import failures
 
 __all__ = ["document"]
@@ -37,6 +38,7 @@ def document(parsed, *, bearing_file=None, catalog=None):
         ``warnings``.
     """
     with failures(parsed, options=False):  # messages in the command line's words (_failures)
+        _rollers.check_model(parsed, bearing_file=bearing_file, catalog=catalog)  # ball bearings only
         b = inp.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
         out = (_axial_angle if parsed.calculation.name == "axial-angle" else _stand_load)(parsed, b)
     return inp.notes_in(out, b)

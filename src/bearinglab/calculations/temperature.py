@@ -24,6 +24,7 @@ from __future__ import annotations
 from .. import catalog as _catalog
 from .._io import json_value
 from ..errors import InputError
+from . import _rollers
 from ._failures import failures
 from ._inputs import (
     HOTTEST_OIL_DEGC,
@@ -170,6 +171,11 @@ def skf_options(b, lubrication, constants):
     if lubrication not in _LUBRICATIONS:
         raise InputError(f"lubrication must be one of {list(_LUBRICATIONS)}, got {lubrication!r}")
     out = {"lubrication": lubrication}
+    if hasattr(b, "roller_diameter"):  # a roller bearing: SKF's constants of its series (issue 32)
+        if constants is not None:
+            raise InputError("skf-constants: R1,R2,R3,S1,S2,S3 are the constants of ball bearings; a roller bearing "
+                             "takes SKF's constants of its series")
+        return out
     if constants is not None:
         try:
             values = [float(x) for x in constants.split(",")]
@@ -284,7 +290,8 @@ def _document(parsed, bearing_file, catalog):
         return str(parsed.given[name]).strip() if name in parsed.given else default
 
     v = parsed.values
-    b = resolve_bearing(text("bearing"), bearing_file, catalog)
+    b = _rollers.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog) or \
+        resolve_bearing(text("bearing"), bearing_file, catalog)
     speed = text("speed")
     if speed is None:
         raise InputError("speed: give the inner-ring speed, e.g. --speed '6000 rpm'")
@@ -301,12 +308,17 @@ def _document(parsed, bearing_file, catalog):
     r = thermal.thermal_balance(b, fr, fa, w, heat.pop("ambient"), nu40, nu100, **heat, **skf)
     notes = list(dict.fromkeys([*notes, *r.warnings]))
     extra = {}
+    if v.get("reference_speed") and _rollers.is_roller(b):
+        raise InputError("reference-speed: ISO 15312's thermal reference speed is computed for ball bearings here "
+                         f"(its reference load and oil bath of a ball set); {b.designation!r} is a {b.type} roller "
+                         "bearing")
     if v.get("reference_speed"):  # ISO 15312 (bearinglab.thermal.thermal_reference_speed); one per bearing
         ref = thermal.thermal_reference_speed(b, **{k: x for k, x in skf.items() if k == "constants"})
         extra = {"thermal_reference_speed_rpm": json_value(float(ref.speed / RPM)),
                  "reference_heat_flow_W": json_value(float(ref.reference_heat_flow))}
         notes = list(dict.fromkeys([*notes, *ref.warnings]))
-    notes += [n for n in dict.fromkeys(_catalog.provenance_notes(b)) if n not in notes]
+    provenance = _rollers.notes_of(b) if _rollers.is_roller(b) else _catalog.provenance_notes(b)
+    notes += [n for n in dict.fromkeys(provenance) if n not in notes]
     docs = [_doc(r, k, w.size) | extra | {"inputs": inputs_echo(b, radial_load_N=fr, axial_load_N=fa,
                                                          speed_rpm=float(w[k]) / RPM,
                                                          lubrication=lubrication, **oil_inputs,
