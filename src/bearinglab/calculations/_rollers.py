@@ -154,7 +154,11 @@ def _overridden(parsed, base):
         if profile not in (None, "crowned"):
             raise InputError(f"crown-drop: goes with --profile crowned, not --profile {profile}")
         profile = "crowned"
-        changes["crown_drop"] = parse_quantity(_text(parsed, "crown_drop"), "length", "crown-drop")
+        drop = parse_quantity(_text(parsed, "crown_drop"), "length", "crown-drop")
+        if not drop >= 0:
+            raise InputError(f"crown-drop must be >= 0 [um] (the roller profile drops towards the ends), got "
+                             f"{drop * 1e6:g} um")
+        changes["crown_drop"] = drop
     if profile is not None:
         if profile == "crowned" and "crown_drop" not in changes and base.crown_drop is None:
             raise InputError("profile: 'crowned' needs --crown-drop (the drop at the roller ends, e.g. '5 um')")

@@ -90,6 +90,8 @@ def _sig(x, decimals=2):
 def _print_case(title, doc, *, balls=True, body="ring", origin="concentric", extra=()):
     if "rollers" in doc:  # a roller bearing (issue 32)
         _print_rollers(title, doc)
+        if doc.get("operating_clearance_um") is not None:
+            extra = [*extra, ["operating clearance (probable) [µm]", _f(doc["operating_clearance_um"], ".4f")]]
         _print_ring(title, doc, body, origin, extra)
         return
     if balls:
