@@ -345,8 +345,8 @@ def test_a_spherical_roller_bearing_has_ratings_life_and_friction_only(capsys, a
      "profile: 'crowned' needs --crown-drop"),
     (("load-distribution", "-b", "NU 208 ECP", "--fz", "1 kN"), "loads: F_z = 1000 N on a cylindrical roller bearing"),
     (("load-distribution", "-b", "NU 208 ECP", "--fx", "10 kN", "--slices", "0"), "slices must be"),
-    (("bearing-set", "-b", "30208 J2/Q", "--fx", "1 kN"), "spacing: a tapered pair needs the distance between its "
-                                                           "pressure centres"),
+    (("bearing-set", "-b", "30208 J2/Q", "--fx", "1 kN"),
+     "spacing: a tapered pair needs the distance between its pressure centres"),
     (("bearing-set", "-b", "30208 J2/Q", "--spacing", "100 mm", "--arrangement", "DT"),
      "arrangement: a tapered pair is DB (back to back, O) or DF (face to face, X)"),
     (("bearing-set", "-b", "NU 208 ECP", "--spacing", "100 mm"), "bearing: 'NU 208 ECP' is a cylindrical roller bearing"),

@@ -30,30 +30,30 @@ def test_browser_picker_finds_a_roller_bearing(page, base_url):  # noqa: F811 --
 def test_browser_roller_sections_and_their_printed_report(browser, base_url):  # noqa: F811 -- the fixture
     context = browser.new_context(viewport={"width": 1280, "height": 900})
     context.set_default_timeout(120_000)
-    page = context.new_page()
-    page.goto(base_url + "/" + ROLLERS)
-    load = page.locator("#section-load-distribution")
+    tab = context.new_page()
+    tab.goto(base_url + "/" + ROLLERS)
+    load = tab.locator("#section-load-distribution")
     assert "Left out" not in load.inner_text() and load.locator("svg").count() == 1
-    table = page.locator("#rollers-load-distribution-1")
+    table = tab.locator("#rollers-load-distribution-1")
     assert table.locator("tr").count() == 15  # the header and 14 rollers
-    doc = httpx.get(base_url + page.get_attribute("#section-load-distribution a.json-link", "href"),
+    doc = httpx.get(base_url + tab.get_attribute("#section-load-distribution a.json-link", "href"),
                     timeout=60).json()
     first = table.locator("tr").nth(1).inner_text()
     from bearinglab.web import page as web_page
 
     assert web_page.number(doc["rollers"][0]["load_N"]) in first  # 5164.82 N, the most loaded roller
     for key in ("high-speed", "axial-angle", "stand-load", "runout"):
-        assert "a model of ball bearings" in page.inner_text(f"#left-out-{key}"), key
+        assert "a model of ball bearings" in tab.inner_text(f"#left-out-{key}"), key
     for key in ("life", "friction", "film", "frequencies"):
-        assert "Left out" not in page.inner_text(f"#section-{key}"), key
-    assert page.locator("#rollers-film-1 tr").count() == 15
-    assert "Traceback" not in page.content() and page.locator("p.error").count() == 0
+        assert "Left out" not in tab.inner_text(f"#section-{key}"), key
+    assert tab.locator("#rollers-film-1 tr").count() == 15
+    assert "Traceback" not in tab.content() and tab.locator("p.error").count() == 0
     ARTIFACTS.mkdir(exist_ok=True)
-    page.screenshot(path=ARTIFACTS / "web-rollers-1280.png", full_page=True)
-    page.emulate_media(media="print")
-    printed = page.inner_text("body")
+    tab.screenshot(path=ARTIFACTS / "web-rollers-1280.png", full_page=True)
+    tab.emulate_media(media="print")
+    printed = tab.inner_text("body")
     pdf = ARTIFACTS / "web-report-rollers.pdf"
-    page.pdf(path=pdf, format="A4", print_background=True)
+    tab.pdf(path=pdf, format="A4", print_background=True)
     context.close()
     assert len(re.findall(rb"/Type\s*/Page[^s]", pdf.read_bytes())) >= 1
     text = printed

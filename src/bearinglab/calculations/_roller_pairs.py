@@ -33,9 +33,17 @@ import warnings
 import numpy as np
 
 from ..errors import InputError
-from ._inputs import five_loads, inputs_echo, parse_length, speed_size
+from ._inputs import five_loads, inputs_echo, parse_length, parse_speeds, speed_size
 from ._reading import text as _text
-from ._rollers import geometry_of, is_roller, notes_of, pressure_warnings, ring_entries, roller_case, slices_of
+from ._rollers import (
+    geometry_of,
+    is_roller,
+    notes_of,
+    pressure_warnings,
+    ring_entries,
+    roller_case,
+    slices_of,
+)
 
 __all__ = ["document"]
 
@@ -98,7 +106,6 @@ def document(parsed, bearings):
         ``warnings``.
     """
     from ..units import RPM, parse_quantity
-    from .load_distribution import _speeds
 
     a, b = _bearings(bearings)
     arrangement = _text(parsed, "arrangement") or "DB"
@@ -125,7 +132,10 @@ def document(parsed, bearings):
                          "of a roller bearing have ISO/TS 16281's stiffness")
     loads = np.array(five_loads(*(_text(parsed, k) for k in _LOADS)))
     sizes = [speed_size(x) for x in (a, b) if speed_size(x) is not None]
-    speed = float(_speeds(_text(parsed, "speed") or "0 rpm", False, max(sizes, default=None))[0])
+    w = parse_speeds(_text(parsed, "speed") or "0 rpm", pitch_diameter=max(sizes, default=None))
+    if w.size != 1:
+        raise InputError(f"speed: give one speed, got {w.size} values")
+    speed = float(w[0])
     factor_name = _text(parsed, "induced_axial_factor") or "SKF"
     if factor_name not in _SOURCES:
         raise InputError(f"induced-axial-factor must be one of {list(_SOURCES)}, got {factor_name!r}")

@@ -27,12 +27,14 @@ ring_entries     a ring's or a shaft's displacement and stiffness as JSON entrie
 figure           a roller document -> the roller loads and the lamina pressures (plots.rollers.overview)
 
 The physics is :mod:`bearinglab.rollers` (the ISO/TS 16281 slice model at rest); the other calculations'
-roller paths are :mod:`._roller_models` and :mod:`._roller_pairs`.
+roller paths are in their own modules (``_roller_life`` of :mod:`.life`, ``_roller_film`` of :mod:`.film` ...) and in
+:mod:`._roller_pairs` (``bearing-set``). This module imports no calculation's module.
 """
 
 from __future__ import annotations
 
 import math
+import warnings
 
 from ..errors import InputError
 from ._inputs import five_loads, inputs_echo, parse_length, parse_speeds
@@ -351,10 +353,10 @@ def mounted_inputs(bearing, given, speed=0.0, *, radial_clearance=None):
 
 # ------------------------------------------------------------------------------------- load distribution
 def _held(parsed):
-    from .load_distribution import _FREEDOMS, _held
+    from ._inputs import FREEDOMS, prescribed_displacements
 
     given = parsed.given
-    return _held([_text(parsed, n.replace("-", "_")) for _, _, n, _ in _FREEDOMS],
+    return prescribed_displacements([_text(parsed, n.replace("-", "_")) for _, _, n, _ in FREEDOMS],
                  ("fx" in given or "radial_load" in given, "fy" in given, "fz" in given or "axial_load" in given,
                   "mx" in given, "my" in given))
 
@@ -390,7 +392,8 @@ def load_document(parsed, bearing, *, speeds=False):
     from .. import tables
     from ..rollers import analysis
     from ..units import RPM, parse_quantity
-    from .load_distribution import MOUNTING, _prescribed_echo, _reactions, solve
+    from ._inputs import held_reactions, prescribed_echo
+    from ._mounting import NAMES as MOUNTING
 
     b = bearing
     spherical(b, "the load distribution")
@@ -408,9 +411,10 @@ def load_document(parsed, bearing, *, speeds=False):
     b, mounted = operating(b, speed, {k: _text(parsed, k) for k in MOUNTING})
     phi0 = parse_quantity(_text(parsed, "first_ball_angle") or "0 deg", "angle", "first-ball-angle")
     n_slices = slices_of(parsed)
-    r, caught = solve(analysis.roller_analysis, b, loads, n_slices=n_slices, first_roller_angle=phi0,
-                      prescribed_displacement=held)
-    notes = [*r.warnings, *caught]
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        r = analysis.roller_analysis(b, loads, n_slices=n_slices, first_roller_angle=phi0, prescribed_displacement=held)
+    notes = [*r.warnings, *(str(c.message) for c in caught)]
     if b.radial_clearance is None:
         notes.append("radial clearance: not given, so 0 (line to line); give --radial-clearance or the mounting "
                      "(fits, temperatures) for the operating clearance")
@@ -421,10 +425,10 @@ def load_document(parsed, bearing, *, speeds=False):
         notes.append("speed: the slice model is at rest (ISO/TS 16281, no centrifugal roller loads); the speed "
                      "enters the mounting only")
     notes += pressure_warnings(r.max_pressure)
-    doc = {**roller_case(r, b.pitch_diameter, reactions=_reactions(r.reactions, held)), **mounted,
+    doc = {**roller_case(r, b.pitch_diameter, reactions=held_reactions(r.reactions, held)), **mounted,
            "inputs": inputs_echo(b, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
                                  my_Nmm=loads[4] * 1e3, speed_rpm=speed / RPM, first_roller_angle_deg=math.degrees(phi0),
-                                 slices=n_slices, **_prescribed_echo(held),
+                                 slices=n_slices, **prescribed_echo(held),
                                  radial_clearance_um=None if b.radial_clearance is None else b.radial_clearance / _UM,
                                  reduced_modulus_GPa=b.reduced_modulus / 1e9),
            "warnings": list(dict.fromkeys([*notes, *notes_of(b)]))}
@@ -445,8 +449,8 @@ def pressure_warnings(max_pressure):
     if top <= ISO76_ROLLER_STRESS:
         return []
     over = int(np.sum(p > ISO76_ROLLER_STRESS))
-    return [f"inner raceway: lamina pressure {top / 1e6:.0f} MPa exceeds ISO 76's 4000 MPa of roller bearings "
-            f"({over} of {p.size} rollers): permanent deformation of the raceways"]
+    return [(f"inner raceway: lamina pressure {top / 1e6:.0f} MPa exceeds ISO 76's 4000 MPa of roller bearings "
+             f"({over} of {p.size} rollers): permanent deformation of the raceways")]
 
 
 def roller_case(r, pitch_diameter, *, reactions=None):

@@ -20,9 +20,8 @@ import warnings
 from typing import NamedTuple
 
 from ..errors import ConvergenceError, InputError, ValidityWarning
-from . import _mounting
+from . import _mounting, _rollers
 from . import _reading as inp
-from . import _rollers
 from ._failures import failures
 
 __all__ = ["HighSpeedResult", "compute", "document", "figure"]
