@@ -28,6 +28,7 @@ stand_load      speeds and a minimum-load result -> columns (rpm, N, kgf)
 frequencies     characteristic frequencies -> ``{name}_hz`` and ``{name}_order`` values
 spectral_mask   the lines of a spectral mask -> columns (Hz and orders)
 bearing_summary every known field of a bearing and its derived quantities
+roller_summary  the same of a roller bearing (bearing_summary gives it for a RollerBearing)
 catalog_entry   the catalog-list row of a bearing
 runout_metrics  runout metrics -> ``{metric}_um`` values
 load_distribution   one case of a combined-load distribution -> displacements, stiffness, per-ball rows
@@ -84,6 +85,7 @@ __all__ = [
     "rating_life",
     "ratings",
     "record",
+    "roller_summary",
     "rows",
     "runout_metrics",
     "significant",
