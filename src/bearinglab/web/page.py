@@ -384,7 +384,7 @@ def _query(section, values):
     if section.key in ("friction", "temperature") and "radial_load" not in out and (
             _given(values, "fx") or _given(values, "fy")):
         out["radial_load"] = _resultant(values)  # the friction models take F_r = |(F_x, F_y)|
-    return out
+    return _roller_query(section, values, out)
 
 
 _DATA_SECTIONS = ("clearance", "film", "temperature")
@@ -911,6 +911,14 @@ def _roller_left_out(section, values, roller):
         return (f"Left out: {label} its play is set by adjusting it against the other bearing of its pair (the "
                 "bearing set).")
     return ""
+
+
+def _roller_query(section, values, query):
+    """A section's query for a roller bearing: the frequencies of its rollers are at its nominal angle (the
+    operating angle under a stand load is the test-stand method of ball bearings), so without the axial load."""
+    if section.key == "frequencies" and "axial_load" in query and _roller_of(values) is not None:
+        query = {k: v for k, v in query.items() if k != "axial_load"}
+    return query
 
 
 def _roller_tables(document):
