@@ -96,3 +96,16 @@ def test_the_page_shows_the_rollers_and_leaves_out_the_ball_models(client):
     friction = page.split('id="section-friction"')[1].split("</article>")[0]
     assert "total moment" in friction
     assert "Traceback" not in page and 'class="error"' not in page
+
+
+def test_the_page_with_a_tapered_bearing_its_pair_and_a_thrust(client):
+    r = client.get("/", params={"bearing": "30208 J2/Q", "fx": "8 kN", "axial_load": "3 kN", "speed": "1000 rpm",
+                                "viscosity": "30 cSt", "arrangement": "DB", "preload": "2 kN", "spacing": "135 mm"})
+    page = r.text
+    assert r.status_code == 200 and 'class="error"' not in page  # the thrust is no error of the frequencies
+    freq = page.split('id="section-frequencies"')[1].split("</article>")[0]
+    assert "Left out" not in freq and "BPFO" in freq.upper()
+    pair = page.split('id="section-bearing-set"')[1].split("</article>")[0]
+    assert 'id="rollers-bearing-set-3"' in pair and "ISO 281&#39;s method" in pair  # A, B and ISO 281's table
+    clearance = client.get("/", params={"bearing": "30208 J2/Q", "shaft_fit": "m5"}).text
+    assert "its play is set by adjusting it against the other bearing" in clearance
