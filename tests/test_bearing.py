@@ -174,7 +174,8 @@ GOOD = {
             {"bore": 13e-3, "outside_diameter": 5e-3},
             r"outside_diameter must be > bore \[mm\], got 5 mm with bore = 13 mm",
         ),
-        ({"type": "thrust"}, r"type must be one of \['radial', 'angular'\], got 'thrust'"),
+        ({"type": "magneto"}, (r"type must be one of \['radial', 'angular', 'four-point', 'double-row-angular', "
+                               r"'double-row-radial', 'self-aligning', 'thrust'\], got 'magneto'")),
         (
             {"contact_angle": math.radians(90)},
             r"contact_angle must be in \[0, 90\) \[deg\], got 90.0",
@@ -184,10 +185,11 @@ GOOD = {
             {"contact_angle": None, "radial_clearance": 1e-3},
             r"radial_clearance must be in \(0, 0.84\) \[mm\] to give a real contact angle, got 1 mm",
         ),
-        (
-            {"contact_angle": None, "radial_clearance": -1e-6},
-            r"radial_clearance must be > 0 \[m\], got -1e-06",
+        (  # -1e-6 is a preload since issue 30; beyond an interference of a ball diameter it is refused
+            {"contact_angle": None, "radial_clearance": -5e-3},
+            r"radial_clearance must be >= -4 \[mm\] \(an interference of one ball diameter per ball; .*\), got -5 mm",
         ),
+        ({"contact_angle": None, "radial_clearance": float("nan")}, r"radial_clearance must be a finite length"),
         (
             {"contact_angle": None, "radial_clearance": 9e-6, "inner_conformity": None},
             r"radial_clearance needs both groove conformities and the ball diameter",

@@ -10,7 +10,7 @@ import pytest
 
 from bearinglab import catalog
 from bearinglab.bearing import STEEL
-from bearinglab.catalog import _series
+from bearinglab.catalog import _rollers, _series
 from bearinglab.cli import main
 from bearinglab.errors import CatalogError, InputError
 
@@ -110,7 +110,8 @@ def test_builtin_entry_matches_its_source(name):
 def test_builtin_names_and_aliases():
     names = catalog.names()
     assert set(BUILTIN) <= set(names) and "7218B" not in names  # aliases are not listed as separate bearings
-    assert len(names) == len(BUILTIN) + len(_series.records())  # and the standard series (issue 21)
+    # and the standard series (issue 21) and the roller bearings (issue 32)
+    assert len(names) == len(BUILTIN) + len(_series.records()) + len(_rollers.records())
     assert catalog.get("7218B") is catalog.get("B218")
     assert catalog.get("b218") is catalog.get("B218")  # case-insensitive fallback
     assert catalog.get("4-1006095").hertz_table == {
@@ -282,7 +283,7 @@ ENTRY = '[bearings."BAD-1"]\nballs = 7\nball_diameter = "2 mm"\npitch_diameter =
             r"radial_clearance must be in \(0, 0.32\) \[mm\] to give a real contact angle",
         ),
         ('ball_material = "wood"\n', "ball_material", r"unknown material 'wood'"),
-        ('type = "thrust"\n', "type", r"type must be one of \['radial', 'angular'\]"),
+        ('type = "magneto"\n', "type", r"type must be one of \['radial', 'angular', 'four-point'"),
         ('static_load_rating = "392 mm"\n', "static_load_rating", r"expected a force"),
         (
             'hertz_table = { inner = "x" }\n',

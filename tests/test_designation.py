@@ -107,7 +107,7 @@ def test_the_existing_entries_resolve_as_before():
 
 @pytest.mark.parametrize(("text", "hint"), [
     ("7205", "needs its contact-angle code; did you mean 7205 BE or 7205 A or 7205 B or 7205 C or 7205 ACD?"),
-    ("7305 AC", "no 7305 with the angle code AC (25 deg)"),
+    ("7305 CD", "no 7305 with the angle code CD (15 deg)"),
     ("6299", "did you mean 6240 or 6238 or 6236 (series 62)?"),
 ])
 def test_did_you_mean_by_series_and_size(text, hint):
@@ -118,3 +118,78 @@ def test_did_you_mean_by_series_and_size(text, hint):
 def test_angular_bearings_take_no_clearance_class():
     with pytest.raises(InputError, match="deep-groove ball bearing class"):
         catalog.get("7205 BE/C3")
+
+
+# --------------------------------------------------------------------- issue 30: Schaeffler and SKF suffixes
+@pytest.mark.parametrize(("text", "base", "seal", "seals", "clearance", "angle", "extra"), [
+    ("6208-2RSR", "6208", "RSR", 2, None, None, {}),                       # Schaeffler lip seals
+    ("6208-2Z", "6208", "Z", 2, None, None, {}),
+    ("6208-C3", "6208", None, None, "C3", None, {}),
+    ("6208-2RSR-C3", "6208", "RSR", 2, "C3", None, {}),
+    ("7208-B-XL-JP", "7208", None, None, None, 40.0, {"designs": ("XL",), "cage": "JP"}),
+    ("6208 N", "6208", None, None, None, None, {"designs": ("N",)}),           # snap-ring groove
+    ("6208 NR", "6208", None, None, None, None, {"designs": ("NR",)}),         # groove and snap ring
+    ("6208-2ZNR", "6208", "Z", 2, None, None, {"designs": ("NR",)}),
+    ("1208 E", "1208", None, None, None, None, {"designs": ("E",)}),
+    ("1208 ETN9", "1208", None, None, None, None, {"designs": ("E",), "cage": "TN9"}),
+    ("6208 TN9", "6208", None, None, None, None, {"cage": "TN9"}),
+    ("6208 J", "6208", None, None, None, None, {"cage": "J"}),
+    ("2318 M", "2318", None, None, None, None, {"cage": "M"}),
+    ("QJ 208 MA", "QJ208", None, None, None, None, {"cage": "MA"}),
+    ("QJ 208 N2MA", "QJ208", None, None, None, None, {"designs": ("N2",), "cage": "MA"}),
+    ("6208-2Z/HC5C3", "6208", "Z", 2, "C3", None, {"ball_material": "silicon_nitride"}),
+    ("7208 BEGAPH", "7208", None, None, None, 40.0, {"preload_class": "GA", "cage": "PH"}),
+    ("7208 BEGBP", "7208", None, None, None, 40.0, {"preload_class": "GB", "cage": "P"}),
+    ("7208 BECBP GC", "7208", None, None, None, 40.0, {"preload_class": "GC"}),
+    ("7014 CD/P4ADBB", "7014", None, None, None, 15.0, {"preload_class": "B", "arrangement": "DB",
+                                                        "tolerance_class": "P4A"}),
+    ("7014 CD/P2", "7014", None, None, None, 15.0, {"tolerance_class": "P2"}),
+    ("4208 ATN9", "4208", None, None, None, None, {"designs": ("A",), "cage": "TN9"}),
+    ("3208 A", "3208", None, None, None, 30.0, {}),
+    ("S 6208 E TA UL", "S6208", None, None, None, 25.0, {"cage": "TA", "preload_class": "UL"}),
+])
+def test_parse_the_suffixes_of_issue_30(text, base, seal, seals, clearance, angle, extra):
+    d = designation.parse(text)
+    assert (d.base, d.seal, d.seals, d.clearance_class, d.contact_angle) == (base, seal, seals, clearance, angle)
+    for key, value in extra.items():
+        assert getattr(d, key) == value, key
+
+
+@pytest.mark.parametrize(("text", "match"), [
+    ("6208-2RSX", r"unknown suffix 'X' in '6208-2RSX'; valid suffixes: seals/shields 2RS1"),
+    ("1208 EKTN9", r"unknown suffix 'KTN9'"),                      # tapered bore: not in the catalog
+    ("6208 NNR", r"two snap-ring suffixes"),
+    ("6208 A", r"angle code 'A' .* angular-contact"),
+    ("S 6208 B", r"angle code 'B' .* is not GMN's"),
+    ("7014 CD GA DBB", r"two preload classes"),
+])
+def test_unknown_and_contradictory_suffixes_are_refused_in_one_line(text, match):
+    with pytest.raises(InputError, match=match) as info:
+        designation.parse(text)
+    assert "\n" not in str(info.value)
+
+
+@pytest.mark.parametrize(("text", "match"), [
+    ("1215 E", r"'1215 E' asks for the E design, and the catalog has SKF 1215 only"),
+    ("3208 B", r"no 3208 with the angle code B \(40 deg\)"),
+    ("7208 B GA", None),                                            # GA takes SKF's BE row, not NSK's B
+    ("7208 A GB", r"preload class GB of '7208 A GB' is SKF's"),
+    ("7208 BE UL", r"preload class UL of '7208 BE UL' is GMN's"),
+    ("4208/C3", r"clearance class C3 of '4208/C3' is a single-row deep-groove ball bearing class"),
+    ("S 6208 TA", r"needs its contact-angle code; did you mean S 6208 C or S 6208 E"),
+])
+def test_resolution_refuses_what_the_catalog_does_not_have(text, match):
+    if match is None:
+        b = catalog.get(text)
+        assert b.source.startswith("SKF 7208 BECBP") and b.preload == pytest.approx(80.0)
+        return
+    with pytest.raises((InputError, CatalogError), match=match):
+        catalog.get(text)
+
+
+def test_the_designations_resolve_to_the_right_rows():
+    for text, row in (("6208-2RSR-C3", "6208"), ("6208 ETN9", "6208 ETN9"), ("6208 E", "6208 ETN9"), ("1208", "1208"),
+                      ("1208 ETN9", "1208"), ("QJ208-TVP", "QJ 208"), ("QJ 208 N2MA", "QJ 208"), ("62205-2RS1", "62205"),
+                      ("4208 ATN9", "4208"), ("3208 ATN9", "3208 A"), ("51208", "51208"), ("7308 AC/P5", "7308 AC"), ("7308 ACD", "7308 AC"),
+                      ("7208 AC", "7208 ACD"), ("S 6208 C TA P4 UL", "S 6208 C")):
+        assert catalog.details(text)["row"] == row, text

@@ -55,7 +55,8 @@ def test_dynamic_load_factors_names_the_bad_input(name, bad, rule, unit, shown):
 def test_dynamic_load_factors_names_the_missing_f0_and_the_bearing_types():
     assert "static_load_factor" in _message(_dynamic, static_load_factor=None)
     message = _message(_dynamic, bearing_type="taper")
-    assert message == "bearing_type must be one of ['radial', 'angular'], got 'taper'"
+    assert message == ("bearing_type must be one of ['radial', 'angular', 'four-point', 'double-row-angular', "
+                       "'double-row-radial', 'self-aligning', 'thrust'], got 'taper'")  # the types of issue 30
 
 
 def _aiso(**over):

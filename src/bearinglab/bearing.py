@@ -12,6 +12,15 @@ Bearings
 BallBearing       validated, frozen internal geometry, envelope and materials of a ball bearing
 max_balls         the most balls of a diameter that fit on a pitch circle
 
+Types and models
+----------------
+TYPES             the bearing types: radial (deep groove), angular, four-point, double-row-angular,
+                  double-row-radial, self-aligning, thrust
+ROWS              the ball rows of each type
+MODEL_TYPES       the types each model that solves the contacts ball by ball takes
+check_model       refuse, in one line, a bearing whose type a model does not cover yet
+covers            whether a model covers a bearing's type
+
 The dataclasses only check and pass fields on; the physics is in :mod:`bearinglab.geometry`,
 :mod:`bearinglab.hertz` and the model modules.
 """
@@ -28,8 +37,8 @@ from . import geometry, hertz
 from .errors import InputError
 
 __all__ = [
-    "ANGLE_CLEARANCE_TOLERANCE", "CLEARANCE_TOLERANCE", "MATERIALS", "SILICON_NITRIDE", "STEEL", "BallBearing",
-    "Material", "max_balls",
+    "ANGLE_CLEARANCE_TOLERANCE", "CLEARANCE_TOLERANCE", "MATERIALS", "MODEL_TYPES", "ROWS", "SILICON_NITRIDE", "STEEL",
+    "TYPES", "BallBearing", "Material", "check_model", "covers", "max_balls",
 ]
 
 
@@ -70,7 +79,31 @@ STEEL = Material("steel", 2.075e11, 0.3, 7850.0)
 SILICON_NITRIDE = Material("silicon nitride", 3.10e11, 0.26, 3200.0)
 MATERIALS = {"steel": STEEL, "silicon_nitride": SILICON_NITRIDE, "si3n4": SILICON_NITRIDE}
 
-_TYPES = ("radial", "angular")
+#: The bearing types (``BallBearing.type``, the ``type`` word of files and JSON documents): deep groove
+#: (``radial``), single-row angular contact, and the ball-bearing types of issue 30.
+TYPES = ("radial", "angular", "four-point", "double-row-angular", "double-row-radial", "self-aligning", "thrust")
+_TYPES = TYPES
+#: Ball rows of each type (ISO 281's i); a self-aligning ball bearing has two rows.
+ROWS = {"radial": 1, "angular": 1, "four-point": 1, "double-row-angular": 2, "double-row-radial": 2,
+        "self-aligning": 2, "thrust": 1}
+#: The types each model that solves the balls' contacts takes (the 5-DOF load distribution and what is
+#: built on it); the others are refused by :func:`check_model` in one line, never answered wrongly.
+MODEL_TYPES = {
+    "load-distribution": ("radial", "angular"),
+    "bearing-set": ("radial", "angular"),
+    "high-speed": ("radial", "angular"),
+    "axial-angle": ("radial", "angular"),
+    "runout": ("radial", "angular"),
+    "film": ("radial", "angular"),
+}
+# what each type has that the models of MODEL_TYPES do not cover yet
+_NOT_COVERED = {
+    "four-point": "the four contacts of each ball (two on each ring)",
+    "double-row-angular": "the second row of balls",
+    "double-row-radial": "the second row of balls",
+    "self-aligning": "the spherical outer raceway (no tilting stiffness) and the second row",
+    "thrust": "the axial contacts of a thrust bearing (90 deg)",
+}
 #: A contact angle given with a clearance may differ from the one the clearance implies by this much
 #: (rounding of the printed values) [rad] ...
 ANGLE_CLEARANCE_TOLERANCE = math.radians(0.05)
@@ -99,7 +132,76 @@ def max_balls(ball_diameter, pitch_diameter):
     >>> max_balls(7.938e-3, 38.5e-3)
     15
     """
-    return math.floor(math.pi / math.asin(min(ball_diameter / pitch_diameter, 1.0)) + 1e-9)
+    from ._validate import check_positive_finite
+
+    d = float(check_positive_finite("ball_diameter", ball_diameter, "m"))
+    dm = float(check_positive_finite("pitch_diameter", pitch_diameter, "m"))
+    ratio = min(d / dm, 1.0)
+    if not ratio >= 1e-6:  # a million balls: no bearing; and D / d_m -> 0 would divide by zero
+        raise InputError(f"ball_diameter must be >= 1e-6 x pitch_diameter [m], got D = {d!r} with d_m = {dm!r}")
+    return math.floor(math.pi / math.asin(ratio) + 1e-9)
+
+
+def covers(bearing, model):
+    """Whether ``model`` (a key of :data:`MODEL_TYPES`) covers the type of ``bearing``.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing.
+    model : str
+        A key of :data:`MODEL_TYPES`.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> covers(BallBearing(type="thrust"), "load-distribution"), covers(BallBearing(), "bearing-set")
+    (False, True)
+    """
+    return getattr(bearing, "type", "angular") in MODEL_TYPES[model]
+
+
+def check_model(bearing, model):
+    """Refuse, in one line, a bearing whose type ``model`` does not cover yet.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing.
+    model : str
+        A key of :data:`MODEL_TYPES` (``"load-distribution"``, ``"bearing-set"``, ``"high-speed"``, ...).
+
+    Raises
+    ------
+    InputError
+        Naming the model, the bearing, its type and what the model does not cover; ISO 281 lives
+        (``bearinglab life``) cover every type.
+
+    Examples
+    --------
+    >>> check_model(BallBearing(designation="QJ 208", type="four-point"), "load-distribution")
+    Traceback (most recent call last):
+    ...
+    bearinglab.errors.InputError: load-distribution: 'QJ 208' is a four-point bearing, and the model does not cover the four contacts of each ball (two on each ring) yet; its ISO 281 life is given by `bearinglab life`
+    """
+    if covers(bearing, model):
+        return
+    label = getattr(bearing, "designation", "") or "this bearing"
+    raise InputError(f"{model}: {label!r} is a {bearing.type} bearing, and the model does not cover "
+                     f"{_NOT_COVERED.get(bearing.type, 'this type')} yet; its ISO 281 life is given by "
+                     "`bearinglab life`")
+
+
+def _clearance_range(e, ball_diameter):
+    """A diametral clearance is a finite number of metres; a negative one (a preload) at least -2 D."""
+    if not (isinstance(e, (int, float, np.floating, np.integer)) and math.isfinite(e)):
+        raise InputError(f"radial_clearance must be a finite length [m], got {e!r}")
+    if ball_diameter is not None and e < -2.0 * ball_diameter:
+        raise InputError(f"radial_clearance must be >= {-2.0 * ball_diameter * 1e3:.6g} [mm] (an interference of one "
+                         f"ball diameter per ball; a negative clearance is a preload), got {e * 1e3:.6g} mm")
 
 
 def _positive(name, value, unit, *, optional=True):
@@ -139,15 +241,19 @@ class BallBearing:
     contact_angle : float
         Nominal (free) contact angle alpha0, in [0, 90 deg). [rad]
     radial_clearance : float
-        Diametral clearance e. [m]
+        Diametral clearance e (the operating one where the bearing is given mounted). Zero or negative
+        is a preloaded bearing: its free contact angle is 0 and every ball is compressed by -e/2 in the
+        concentric position (:func:`bearinglab.quasistatic.combined.load_distribution`); at least
+        -2 D (an interference of one ball diameter per ball). [m]
     designation : str
         Name of the bearing.
     bore, outside_diameter, width : float
         Envelope. [m]
-    type : {"radial", "angular"}
-        Deep-groove (radial) or angular-contact bearing.
+    type : str
+        One of :data:`TYPES`: ``radial`` (deep groove), ``angular``, ``four-point``,
+        ``double-row-angular``, ``double-row-radial``, ``self-aligning``, ``thrust``.
     static_load_rating : float
-        Basic static load rating C0. [N]
+        Basic static load rating C0 (of a thrust bearing: C0a). [N]
     ball_material, ring_material : Material
         Steel by default.
     hertz_table : dict
@@ -174,6 +280,13 @@ class BallBearing:
         Radial internal clearance class of the designation (``"C3"``; ISO 5753-1), if any.
     tolerance_class : str
         Tolerance class of the designation (``"P5"``, ``"P4A"``; ISO 492), if any.
+    static_load_factor : float
+        The maker's calculation factor f0 (ISO 76), where the catalog prints it; else computed from the
+        geometry. [-]
+    preload_class : str
+        Preload class of the designation (``"GA"``, ``"GB"``, ``"GC"``; ``"A"``, ``"B"``, ``"C"``), if any.
+    preload : float
+        The preload of that class from the maker's table (the middle of its range), where known. [N]
     estimated_fields : tuple of str
         Fields whose values are estimates, not published or measured (catalog entries without a
         published ball set; :mod:`bearinglab.estimation`).
@@ -214,6 +327,9 @@ class BallBearing:
     outer_shoulder_height: float | None = None
     clearance_class: str | None = None
     tolerance_class: str | None = None
+    static_load_factor: float | None = None
+    preload_class: str | None = None
+    preload: float | None = None
     estimated_fields: tuple = field(default=(), compare=False)
     sources: dict = field(default_factory=dict, compare=False)
 
@@ -225,7 +341,8 @@ class BallBearing:
         for name, unit in (("ball_diameter", "m"), ("pitch_diameter", "m"), ("bore", "m"),
                            ("outside_diameter", "m"), ("width", "m"), ("static_load_rating", "N"),
                            ("dynamic_load_rating", "N"), ("fatigue_load_limit", "N"), ("seal_diameter", "m"),
-                           ("inner_shoulder_height", "m"), ("outer_shoulder_height", "m")):
+                           ("inner_shoulder_height", "m"), ("outer_shoulder_height", "m"),
+                           ("static_load_factor", "-")):
             _positive(name, getattr(self, name), unit)
         for name in ("inner_conformity", "outer_conformity"):
             f = getattr(self, name)
@@ -253,12 +370,18 @@ class BallBearing:
                 raise InputError(f"{name} must be a string, got {getattr(self, name)!r}")
         if self.type not in _TYPES:
             raise InputError(f"type must be one of {list(_TYPES)}, got {self.type!r}")
+        if self.preload is not None and not (isinstance(self.preload, (int, float, np.floating)) and self.preload >= 0
+                                             and math.isfinite(self.preload)):
+            raise InputError(f"preload must be >= 0 [N], got {self.preload!r}")
         if self.contact_angle is not None:
             a = self.contact_angle
-            if not (isinstance(a, (int, float, np.floating)) and 0.0 <= a < math.pi / 2):
-                raise InputError(f"contact_angle must be in [0, 90) [deg], got {math.degrees(a) if isinstance(a, (int, float)) else a!r}")
+            thrust = self.type == "thrust"  # a thrust ball bearing's nominal angle is 90 deg
+            if not (isinstance(a, (int, float, np.floating)) and 0.0 <= a < math.pi / 2 + (1e-12 if thrust else 0.0)):
+                top = "90]" if thrust else "90)"
+                raise InputError(f"contact_angle must be in [0, {top} [deg], got "
+                                 f"{math.degrees(a) if isinstance(a, (int, float)) else a!r}")
         if self.radial_clearance is not None:
-            _positive("radial_clearance", self.radial_clearance, "m", optional=False)
+            _clearance_range(self.radial_clearance, self.ball_diameter)
         self._check_fit()
         self._check_shoulders()
         has_f = self.inner_conformity is not None and self.outer_conformity is not None and self.ball_diameter is not None
@@ -267,12 +390,13 @@ class BallBearing:
         if self.contact_angle is None and self.radial_clearance is not None:
             if not has_f:
                 raise InputError("radial_clearance needs both groove conformities and the ball diameter to give a contact angle")
-            angle = float(geometry.free_contact_angle(self.radial_clearance, self.ball_diameter,
-                                                      self.inner_conformity, self.outer_conformity))
+            angle = 0.0 if self.radial_clearance <= 0 else float(geometry.free_contact_angle(
+                self.radial_clearance, self.ball_diameter, self.inner_conformity, self.outer_conformity))
             if not angle < math.pi / 2:  # arccos is real up to 4 B D, but a bearing's contact is below 90 deg
                 limit = 2.0 * self.groove_distance
-                raise InputError(f"radial_clearance must be in (0, {limit * 1e3:.6g}) [mm] to give a contact angle "
-                                 f"below 90 deg, got {self.radial_clearance * 1e3:.6g} mm ({math.degrees(angle):.4g} deg)")
+                raise InputError(f"radial_clearance must be in [{-2.0 * self.ball_diameter * 1e3:.6g}, {limit * 1e3:.6g}) "
+                                 f"[mm] to give a contact angle below 90 deg (a negative clearance is a preload), got "
+                                 f"{self.radial_clearance * 1e3:.6g} mm ({math.degrees(angle):.4g} deg)")
             object.__setattr__(self, "contact_angle", angle)
         elif self.contact_angle is not None and self.radial_clearance is None and has_f and self.contact_angle > 0:
             e = float(geometry.radial_clearance(self.contact_angle, self.ball_diameter,
@@ -308,7 +432,14 @@ class BallBearing:
                                  f"mm [mm] (a shoulder lower than the groove's centre), got {h * 1e3:g} mm")
 
     def _check_angle_matches_clearance(self):
-        """A contact angle given together with a clearance must be the one the clearance implies."""
+        """A contact angle given together with a clearance must be the one the clearance implies (0 for a
+        zero or negative clearance, a preload)."""
+        if self.radial_clearance <= 0:
+            if self.contact_angle > ANGLE_CLEARANCE_TOLERANCE:
+                raise InputError(f"contact_angle and radial_clearance disagree: a clearance of "
+                                 f"{self.radial_clearance * 1e6:.4g} um (a preload) gives a free contact angle of 0 "
+                                 f"deg, not {math.degrees(self.contact_angle):.4g} deg; give one of them")
+            return
         implied = float(geometry.free_contact_angle(
             min(self.radial_clearance, 4.0 * self.groove_distance * (1 - 1e-15)), self.ball_diameter,
             self.inner_conformity, self.outer_conformity))
@@ -354,6 +485,11 @@ class BallBearing:
         return out[0] if len(out) == 1 else tuple(out)
 
     # ------------------------------------------------------------------ derived quantities
+    @property
+    def rows(self):
+        """Ball rows i (ISO 281): 2 for the double-row and self-aligning types, else 1. [-]"""
+        return ROWS.get(self.type, 1)
+
     @property
     def inner_groove_radius(self):
         """r_i = f_i D. [m]"""

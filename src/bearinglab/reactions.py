@@ -26,10 +26,12 @@ Bit-identity: a case gives the same bits alone, in any batch and with any other 
 
 from __future__ import annotations
 
+import functools
 from typing import NamedTuple
 
 import numpy as np
 
+from . import _solve
 from ._validate import as_float
 from .errors import InputError
 
@@ -47,18 +49,26 @@ class Reactions(NamedTuple):
     """(..., n_bearings) False where a bearing's internal solve (the balls at speed) did not converge."""
 
 
-def _ball_reactions(bearing, u, w, options):
-    """One ball bearing, flat (n, 5) displacements and (n,) speeds."""
+@functools.lru_cache(maxsize=256)
+def _prepared(bearing, first_ball_angle, stiffness_at, raceway_control):
+    """A ball bearing's checked geometry (its operating clearance included), kept for the next call: a
+    system solver asks for the same bearings in every iteration."""
     from .quasistatic import _combined_balls
     from .quasistatic import combined as cb
 
     z, d, dm, fi, fo, a0, ep, rho = cb._bearing_args(bearing)
-    geo = _combined_balls._geometry(z, d, dm, fi, fo, a0, ep, rho, options.get("first_ball_angle", 0.0),
-                                    options.get("stiffness_at", "operating"),
-                                    options.get("raceway_control", "outer"), bearing.type)
-    force, stiff, balls = cb._evaluate(geo, u, w * w)
-    ok = np.all(balls["ok"], axis=-1) if "ok" in balls else np.ones(len(u), dtype=bool)
-    return force, stiff, ok
+    e = cb._preload_clearance(bearing)
+    return _combined_balls._geometry(z, d, dm, fi, fo, None if e is not None else a0, ep, rho, first_ball_angle,
+                                     stiffness_at, raceway_control, bearing.type, clearance=e)
+
+
+def _ball_reactions(bearing, u, w, options, compiled):
+    """One ball bearing, flat (n, 5) displacements and (n,) speeds."""
+    from .quasistatic import combined as cb
+
+    geo = _prepared(bearing, float(options.get("first_ball_angle", 0.0)), options.get("stiffness_at", "operating"),
+                    options.get("raceway_control", "outer"))
+    return cb._reactions(geo, u, w * w, compiled)
 
 
 def bearing_reactions(bearings, displacement, shaft_speed=0.0, **options):
@@ -79,9 +89,9 @@ def bearing_reactions(bearings, displacement, shaft_speed=0.0, **options):
     Other Parameters
     ----------------
     **options
-        ``first_ball_angle``, ``stiffness_at``, ``raceway_control`` as in
-        :func:`bearinglab.quasistatic.combined.load_distribution`; ``n_slices``, ``first_roller_angle`` of
-        roller bearings.
+        ``first_ball_angle``, ``stiffness_at``, ``raceway_control`` and ``engine`` as in
+        :func:`bearinglab.quasistatic.combined.load_distribution` (``engine="auto"``: the compiled kernel
+        when numba is installed); ``n_slices``, ``first_roller_angle`` of roller bearings.
 
     Returns
     -------
@@ -108,6 +118,7 @@ def bearing_reactions(bearings, displacement, shaft_speed=0.0, **options):
     w = np.broadcast_to(as_float("shaft_speed", shaft_speed), lead)
     if np.any(~np.isfinite(w)) or np.any(w < 0):
         raise InputError("shaft_speed must be finite and >= 0 [rad/s]")
+    compiled = _solve.use_compiled(options.get("engine", "auto"), auto=True)
     n = int(np.prod(lead, dtype=np.int64))
     flat = u.reshape(n, len(group), 5)
     ww = np.ascontiguousarray(w.reshape(n), dtype=float)
@@ -119,7 +130,7 @@ def bearing_reactions(bearings, displacement, shaft_speed=0.0, **options):
 
     for j, b in enumerate(group):
         if isinstance(b, BallBearing):
-            f, k, c = _ball_reactions(b, np.ascontiguousarray(flat[:, j]), ww, options)
+            f, k, c = _ball_reactions(b, np.ascontiguousarray(flat[:, j]), ww, options, compiled)
         elif isinstance(b, RollerBearing):  # the slice model (issue 32); at rest, so the speed does not enter
             from .rollers.reactions import roller_reactions
 

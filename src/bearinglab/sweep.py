@@ -319,9 +319,7 @@ def _values(path, name, value, kind):
         parts = [_values(path, name, v, kind) for v in value]
         return np.concatenate(parts)
     try:
-        if kind == "dimensionless" and isinstance(value, (int, float)) and not isinstance(value, bool):
-            return np.array([float(value)])
-        if isinstance(value, (int, float)) and not isinstance(value, bool):
+        if isinstance(value, (int, float)) and not isinstance(value, bool):  # finite, by the grammar's rules
             return np.array([parse_quantity(value, kind, name)])
         return np.atleast_1d(parse_values(str(value), kind, name))
     except InputError as exc:

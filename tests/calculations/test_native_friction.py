@@ -110,6 +110,10 @@ def test_a_preloaded_mounting_is_reported_not_refused():
     """A negative operating clearance (a preload) is a result for a model that does not use it."""
     doc = run(parse("friction", {**MODELS["one-term"], "shaft_fit": "p6", "clearance_class": "C2"}))
     assert doc["operating_clearance_um"] < 0 and doc["torque_Nmm"] > 0
+    # issue 30: the preload is reported, and that the friction model leaves it out
+    assert doc["preload"]["operating_clearance_um"] == pytest.approx(doc["operating_clearance_um"], rel=1e-12)
+    assert doc["preload"]["ball_load_N"] > 0
+    assert any("preloaded" in w and "leaves the preload's ball loads out" in w for w in doc["warnings"])
 
 
 def test_a_bad_fit_names_the_field():

@@ -128,11 +128,20 @@ def test_models_take_the_mounting_options_and_run_at_the_operating_clearance(cap
     assert code == 0 and "operating_clearance_um" not in json.loads(out)
 
 
-def test_a_model_refuses_a_preloaded_single_bearing(capsys):
-    code, _out, err = run(capsys, "load-distribution", "-b", "6205-2RS", "--fx", "1 kN", "--inner-conformity", "0.52",
-                          "--outer-conformity", "0.53", "--contact-angle", "0 deg", "--shaft-fit", "p6",
-                          "--clearance-class", "C2")
-    assert code == 2 and "operating clearance must be > 0" in err
+def test_a_preloaded_single_bearing_is_solved_as_preloaded(capsys):
+    """Issue 30 item 1 (this test refused the case before): a p6 fit on a C2 bearing takes all the clearance;
+    the bearing is solved preloaded, every ball loaded at zero load, and the document says so."""
+    code, out, err = run(capsys, "load-distribution", "-b", "6205-2RS", "--fx", "1 kN", "--inner-conformity", "0.52",
+                         "--outer-conformity", "0.53", "--contact-angle", "0 deg", "--shaft-fit", "p6",
+                         "--clearance-class", "C2", "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    e = doc["operating_clearance_um"]
+    assert e < 0 and doc["inputs"]["geometry"]["radial_clearance_um"] == pytest.approx(e, rel=1e-12)
+    assert doc["preload"]["operating_clearance_um"] == pytest.approx(e, rel=1e-12)
+    assert doc["preload"]["interference_per_ball_um"] == pytest.approx(-e / 2, rel=1e-12)
+    assert doc["preload"]["ball_load_N"] > 0 and doc["preload"]["stiffness_at_zero_load"]["k_xx_N_per_um"] > 0
+    assert any(f"{e:.3g} um" in w and "preloaded" in w for w in doc["warnings"])
 
 
 def _api(endpoint, query):

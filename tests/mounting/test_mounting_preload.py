@@ -35,9 +35,13 @@ def test_axial_growth_of_the_shaft_between_the_bearings(kind, sign):
     assert e == pytest.approx(sign * 12.5e-6 * 30 * 0.1, abs=1e-18)
 
 
-def test_all_clearance_gone_is_an_input_error():
-    with pytest.raises(ValueError, match="took all the clearance"):
-        preload.operating_interference(B218, 0.0, 2 * B218.radial_clearance)
+def test_all_clearance_gone_leaves_first_contact_at_the_concentric_position():
+    """Issue 30 (this refused the case before): with no clearance left the balls touch in the concentric
+    position (and are squeezed by -e'/2), so the spacers' interference grows by the whole 2 A sin(alpha0)."""
+    e, clearance = preload.operating_interference(B218, 0.0, 2 * B218.radial_clearance)
+    assert clearance == pytest.approx(-B218.radial_clearance, rel=1e-12)
+    assert e == pytest.approx(2 * B218.groove_distance * math.sin(B218.contact_angle), rel=1e-12)
+    assert preload.first_contact_offset(B218, [0.0, -1e-6]).tolist() == [0.0, 0.0]
 
 
 def _set(capsys, *extra):

@@ -2,14 +2,12 @@
 from the solver's last evaluation), each against an independent computation, and bit-identity of the
 solve for any batch, pass size or single case."""
 
-import math
 
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from numpy.testing import assert_allclose
-from scipy.optimize import brentq
 
 from bearinglab import catalog
 from bearinglab.bearing import BallBearing, Material
@@ -50,38 +48,38 @@ def test_solve5_hands_a_system_that_needs_pivoting_to_lapack():
     assert_allclose(_ring.solve5(a, b), [[2.0, 1.0, 2.0, 3.0, 4.0], [1.0, 1.0, 1.0, 1.0, 1.0]], rtol=1e-15)
 
 
-def test_rowwise_rounds_one_row_as_in_a_batch():
+@pytest.mark.parametrize("z", [7, 16, 23])
+def test_ball_sums_round_a_case_alike_in_any_batch_and_equal_the_matrix_form(z):
+    """The sums over the balls (ring load and stiffness) are elementwise products reduced along the balls:
+    a case gives the same bits alone and in batches of any size (BLAS rounds the last rows of an odd
+    block apart), and the values are those of sum_j J_j^T p_j and sum_j J_j^T H_j J_j."""
+    geo = combined._geometry(z, 11.5e-3, 60e-3, 0.52, 0.53, 0.2, 2.3e11, 7850.0, 0.1, "operating", "outer", "radial")
     rng = np.random.default_rng(3)
-    a, b = rng.normal(size=(9, 7)), rng.normal(size=(7, 25))
-    batch = _ring.rowwise(a, b)
-    assert all(np.array_equal(_ring.rowwise(a[k:k + 1], b)[0], batch[k]) for k in range(9))
-    assert_allclose(batch, a @ b, rtol=1e-14, atol=1e-14)
-
-
-@pytest.mark.parametrize("bearing", [DEEP, TIGHT, B218])
-def test_thrust_offset_matches_an_independent_root(bearing):
-    """All balls at one angle: the axial groove-centre offset at which each carries P, against brentq on
-    P = K_n (rho - A)^1.5 z / rho written out here (K_n a constant, as in the start)."""
-    big_a = (bearing.inner_conformity + bearing.outer_conformity - 1.0) * bearing.ball_diameter
-    a0 = bearing.contact_angle or 0.0
-    g, kn = big_a * math.cos(a0), 8e9
-    per_ball = np.logspace(-3, 5, 17)
-    got = _ring.thrust_offset(per_ball, big_a, a0, g, kn)
-
-    def carried(z, p):
-        rho = math.hypot(z, g)
-        return kn * max(rho - big_a, 0.0) ** 1.5 * z / rho - p
-
-    z0 = big_a * math.sin(a0)
-    ref = [brentq(carried, z0, z0 + bearing.ball_diameter, args=(p,), xtol=1e-22, rtol=1e-15) for p in per_ball]
-    assert_allclose(got, ref, rtol=1e-8)  # a start: five Newton steps reach ~1e-8
-    assert _ring.thrust_offset(np.zeros(1), big_a, a0, g, kn)[0] == 0.0
+    pa, pr = rng.normal(size=(2, 9, z))
+    h = tuple(rng.normal(size=(4, 9, z)))
+    u = rng.normal(size=(9, 5)) * 1e-5
+    force, stiff, (ga, gr) = _ring.reaction(geo, pa, pr), _ring.assemble(geo, *h), _ring.offsets(geo, u)
+    for n in (1, 2, 3, 5, 8):
+        for k in (0, n - 1):
+            assert np.array_equal(_ring.reaction(geo, pa[k:k + n][:1], pr[k:k + n][:1])[0], force[k])
+            assert np.array_equal(_ring.reaction(geo, pa[k:k + n], pr[k:k + n])[0], force[k])
+            assert np.array_equal(_ring.assemble(geo, *(a[k:k + n] for a in h))[0], stiff[k])
+            assert np.array_equal(_ring.offsets(geo, u[k:k + n])[0][0], ga[k])
+    jj = [[np.einsum("zk,zl->zkl", p, q) for q in (geo.ja, geo.jr)] for p in (geo.ja, geo.jr)]
+    ref = sum(np.einsum("nz,zkl->nkl", h[2 * p + q], jj[p][q]) for p in range(2) for q in range(2))
+    assert_allclose(stiff, ref, rtol=1e-13, atol=1e-13 * np.abs(ref).max())
+    assert_allclose(force, pa @ geo.ja + pr @ geo.jr, rtol=1e-13, atol=1e-13 * np.abs(force).max())
+    assert_allclose(ga, u @ geo.ja.T, rtol=1e-13, atol=1e-20)
+    assert_allclose(gr, geo.gr0 + u @ geo.jr.T, rtol=1e-13)
 
 
 @pytest.mark.parametrize("w", [0.0, 9000 * RPM])
 def test_outputs_from_the_last_newton_evaluation_equal_a_fresh_evaluation(w):
-    """The rest solve hands its last evaluation to the outputs (no evaluation at the solution of its own);
-    every field equals the one a fresh evaluation at the returned displacement gives, bit for bit."""
+    """The solve hands its last evaluation to the outputs (no evaluation at the solution of its own). At
+    rest every field equals the one a fresh evaluation at the returned displacement gives, bit for bit. At
+    speed the last evaluation is that of the block Newton, whose balls are converged to the solve's
+    tolerance together with the ring; a fresh evaluation solves each ball again at the returned rings (to
+    1e-14 D), so the two agree to that tolerance, not bit for bit."""
     bearing, loads = (DEEP, _loads(50)) if w == 0 else (B218, np.abs(_loads(8, 1, (4e3, 4e3, 4e3, 80, 80))) + 5e3)
     geo = combined._geometry(*combined._bearing_args(bearing), 0.0, "operating", "outer", bearing.type)
     speed = np.full(len(loads), w)
@@ -90,17 +88,24 @@ def test_outputs_from_the_last_newton_evaluation_equal_a_fresh_evaluation(w):
     reused = combined._outputs(geo, loads, speed, u, ok, it, final)
     fresh = combined._outputs(geo, loads, speed, u, ok, it)
     for key, value in fresh.items():
-        assert np.array_equal(reused[key], value), key
+        if w == 0:
+            assert np.array_equal(reused[key], value), key
+        elif key == "residual":
+            assert np.all(reused[key] <= combined.TOL) and np.all(value <= 1e-10), key
+        elif key != "floor":
+            scale = np.max(np.abs(value), axis=tuple(range(1, value.ndim)), keepdims=True)
+            assert np.all(np.abs(reused[key] - value) <= 1e-9 * scale), key
 
 
-def test_solve_is_bit_identical_for_any_batch_pass_size_or_single_case(monkeypatch):
+@pytest.mark.parametrize("engine", ["numpy", "auto"])
+def test_solve_is_bit_identical_for_any_batch_pass_size_or_single_case(monkeypatch, engine):
     loads = _loads(23, seed=5)
-    whole = combined.combined_analysis(DEEP, loads)
-    monkeypatch.setattr(combined, "_CHUNK", 4)  # passes of 4 cases, the last one short
-    passes = combined.combined_analysis(DEEP, loads)
+    whole = combined.combined_analysis(DEEP, loads, engine=engine)
+    monkeypatch.setattr(combined, "_CHUNK", 4)  # passes of 4 cases (numpy), the last one short
+    passes = combined.combined_analysis(DEEP, loads, engine=engine)
     for field in ("displacement", "ball_load_inner", "contact_angle_inner", "stiffness", "residual", "iterations"):
         assert np.array_equal(getattr(passes, field), getattr(whole, field)), field
     for k in (0, 11, 22):
-        one = combined.combined_analysis(DEEP, loads[k])
+        one = combined.combined_analysis(DEEP, loads[k], engine=engine)
         assert np.array_equal(one.displacement, whole.displacement[k])
         assert np.array_equal(one.stiffness, whole.stiffness[k])

@@ -136,16 +136,17 @@ def test_prescribed_axial_displacement_returns_the_thrust_that_gives_it():
     assert_allclose(r.displacement, ref.displacement, rtol=1e-7, atol=1e-13)
 
 
-def test_batch_at_speed_and_per_case_patterns_equal_single_cases():
-    """The vectorized path: cases with different held freedoms and speeds in one batch equal each case
-    solved alone, bit for bit."""
+@pytest.mark.parametrize("engine", ["numpy", "auto"])
+def test_batch_at_speed_and_per_case_patterns_equal_single_cases(engine):
+    """The vectorized path and the compiled one: cases with different held freedoms and speeds in one batch
+    equal each case solved alone, bit for bit."""
     loads = np.array([[5e3, 0, 10e3, 0, 0], [5e3, 0, 0, 0, 0], [3e3, 0, 8e3, 0, 0]])
     held = np.array([[NAN, NAN, NAN, 0, 0], [NAN, NAN, 7.0e-4, 0, 0], [NAN] * 5])
     w = np.array([0.0, 6000 * RPM, 12000 * RPM])
-    batch = combined.combined_analysis(B218, loads, w, prescribed_displacement=held)
+    batch = combined.combined_analysis(B218, loads, w, prescribed_displacement=held, engine=engine)
     assert batch.converged.all()
     for k in range(3):
-        one = combined.combined_analysis(B218, loads[k], w[k], prescribed_displacement=held[k])
+        one = combined.combined_analysis(B218, loads[k], w[k], prescribed_displacement=held[k], engine=engine)
         assert np.array_equal(one.displacement, batch.displacement[k])
         assert np.array_equal(one.reactions, batch.reactions[k], equal_nan=True)
     assert batch.displacement[1, 2] == 7.0e-4 and batch.reactions[1, 2] > 0

@@ -4,6 +4,7 @@ problem and its solvers, the reduced bearing, the generalized error and its sign
 Published cases are in ``tests/validation/test_runout_examples.py``.
 """
 
+import importlib.util
 import math
 
 import numpy as np
@@ -18,6 +19,9 @@ from bearinglab._solve import RUNOUT_CONTACT_TOL_UM
 from bearinglab.errors import ConvergenceError, InputError
 
 UM = 1e-6
+# the dual method on both engines (the compiled one where numba is installed)
+ENGINES = ["numpy", pytest.param("compiled", marks=pytest.mark.skipif(
+    importlib.util.find_spec("numba") is None, reason="numba is not installed"))]
 FAST = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
@@ -45,19 +49,21 @@ cases = st.integers(3, 20).flatmap(
 )
 
 
+@pytest.mark.parametrize("engine", ENGINES)
 @FAST
 @given(case=cases)
 # a face 0.002 um long seen from a tie-break centre 1 um away: the LP's tolerance once came out x1e6
 @example(case=(4, 0.0, [-1.056640625, 0.0, 1.0546875, 0.0], False))
 # a face 1e-231 um long: its squared length underflowed to 0 in the LP's tie-break projection (nan)
 @example(case=(3, 0.0, [0.0, 0.0, 3.5751661739973926e-231], False))
-def test_solvers_agree_on_random_cases(case):
+def test_solvers_agree_on_random_cases(case, engine):
     """Section 16.2: LP, triple enumeration and the dual agree within 1e-6 um (some inputs rounded to
     0.1 um to create ties)."""
     n, first, dk, rounded = case
     dk = np.round(dk, 1) if rounded else np.asarray(dk)
     th = regular(n, first)
-    sols = [R.solve_contact(dk * UM, th, method=m) for m in ("dual", "triples", "lp")]
+    sols = [R.solve_contact(dk * UM, th, engine=engine)]
+    sols += [R.solve_contact(dk * UM, th, method=m) for m in ("triples", "lp")]
     for s in sols[1:]:
         for name in ("constant", "sine", "cosine", "face_diameter"):
             assert um(getattr(s, name)) == pytest.approx(um(getattr(sols[0], name)), abs=1e-6), name
@@ -72,9 +78,10 @@ def test_triples_face_of_a_near_tie_is_a_point():
     assert [bool(s.degenerate) for s in sols] == [False, False, False]
 
 
+@pytest.mark.parametrize("engine", ENGINES)
 @FAST
 @given(n=st.integers(3, 12), data=st.data())
-def test_solvers_agree_on_irregular_azimuths(n, data):
+def test_solvers_agree_on_irregular_azimuths(n, data, engine):
     """Azimuths that are not equally spaced (and differ between positions) use the per-position path."""
     gaps = np.array(data.draw(st.lists(st.floats(0.2, 1.0), min_size=n, max_size=n)))
     th = np.cumsum(gaps / gaps.sum() * 2 * np.pi)
@@ -86,7 +93,7 @@ def test_solvers_agree_on_irregular_azimuths(n, data):
     angles = np.stack([th, th * 1.0001 + 0.3])  # two positions, different patterns
     if np.max(np.diff(np.sort(np.mod(angles[1], 2 * np.pi)))) >= np.pi - 1e-6:
         return
-    a = R.solve_contact(dk * UM, angles)
+    a = R.solve_contact(dk * UM, angles, engine=engine)
     b = R.solve_contact(dk * UM, angles, method="triples")
     c = R.solve_contact(dk * UM, angles, method="lp")
     for name in ("constant", "sine", "cosine"):
@@ -96,13 +103,14 @@ def test_solvers_agree_on_irregular_azimuths(n, data):
     assert_allclose(um(a.constant), um(c.constant), atol=1e-6)
 
 
-def test_nearly_opposite_balls_are_solved_exactly():
+@pytest.mark.parametrize("engine", ENGINES)
+def test_nearly_opposite_balls_are_solved_exactly(engine):
     """Four balls, one pair 0.018 deg off diametral: the optimum is a vertex of nearly parallel lines. The
     dual and the triple enumeration find the same exact point; so does the LP once its face end points
     are polished onto their defining constraints (before, its relaxed face was 6e-6 um long)."""
     th = np.cumsum(np.full(4, np.pi / 2)) * 1.0001 + 0.3
     dk = np.array([0.0, 0.0, 0.0, -1.0])
-    a = R.solve_contact(dk * UM, th)
+    a = R.solve_contact(dk * UM, th, engine=engine)
     b = R.solve_contact(dk * UM, th, method="triples")
     c = R.solve_contact(dk * UM, th, method="lp")
     assert_allclose(
@@ -114,16 +122,17 @@ def test_nearly_opposite_balls_are_solved_exactly():
     assert um(abs(c.sine - a.sine)) < 1e-9 and um(abs(c.cosine - a.cosine)) < 1e-9
 
 
+@pytest.mark.parametrize("engine", ENGINES)
 @FAST
 @given(case=cases)
 @example(case=(6, 0.0, [0.0, 0.0, 0.0, 0.0, 2.0, 1.192092896e-07], False))
-def test_solution_is_feasible_and_the_dual_certifies_it(case):
+def test_solution_is_feasible_and_the_dual_certifies_it(case, engine):
     """Slack >= 0, contacts at zero slack, and the load shares lambda are a dual certificate:
     lambda >= 0, sum 1, sum lambda (sin, cos) = 0, lambda > 0 only at contacts, sum lambda dk = a0."""
     n, first, dk, rounded = case
     dk = np.round(dk, 1) if rounded else np.asarray(dk)
     th = regular(n, first)
-    s = R.solve_contact(dk * UM, th)
+    s = R.solve_contact(dk * UM, th, engine=engine)
     assert np.all(um(s.slack) >= -1e-7)
     # a ball touches within the scaled contact tolerance (1.19e-7 um was seen at max |dk| = 2 um)
     assert np.all(np.abs(um(s.slack[s.contact])) <= contact_tol_um(dk))
@@ -135,11 +144,12 @@ def test_solution_is_feasible_and_the_dual_certifies_it(case):
     assert np.dot(lam, dk) == pytest.approx(um(s.constant), abs=1e-9)  # strong duality
 
 
+@pytest.mark.parametrize("engine", ENGINES)
 @FAST
 @given(case=cases, shift=st.floats(-5, 5), factor=st.floats(0.01, 100), turn=st.integers(0, 20))
 # a face of optima 1e-8 um across: shorter than the contact tolerance, so it is reported as one point
 @example(case=(6, 0.0, [0.0, 1e-08, 1.0, 1e-08, 0.0, 0.0], False), shift=0.0, factor=0.5, turn=0)
-def test_invariances(case, shift, factor, turn):
+def test_invariances(case, shift, factor, turn, engine):
     """Adding a constant to every dk shifts a0 only; scaling scales a0, B, D; relabelling the balls
     (starting the count at another ball) changes nothing.
 
@@ -150,12 +160,12 @@ def test_invariances(case, shift, factor, turn):
     n, first, dk, _ = case
     dk = np.asarray(dk)
     th = regular(n, first)
-    base = R.solve_contact(dk * UM, th)
-    moved = R.solve_contact((dk + shift) * UM, th)
+    base = R.solve_contact(dk * UM, th, engine=engine)
+    moved = R.solve_contact((dk + shift) * UM, th, engine=engine)
     assert um(moved.constant) == pytest.approx(um(base.constant) + shift, abs=1e-9)
     face_tol = max(contact_tol_um(dk), contact_tol_um(dk + shift))
     assert_allclose(um([moved.sine, moved.cosine]), um([base.sine, base.cosine]), atol=face_tol)
-    scaled = R.solve_contact(dk * factor * UM, th)
+    scaled = R.solve_contact(dk * factor * UM, th, engine=engine)
     assert um(scaled.constant) == pytest.approx(
         factor * um(base.constant), abs=1e-9 * max(1.0, factor)
     )
@@ -165,7 +175,7 @@ def test_invariances(case, shift, factor, turn):
         atol=max(factor * contact_tol_um(dk), contact_tol_um(dk * factor)),
     )
     k = turn % n
-    rolled = R.solve_contact(np.roll(dk, k) * UM, np.roll(th, k))
+    rolled = R.solve_contact(np.roll(dk, k) * UM, np.roll(th, k), engine=engine)
     assert_allclose(
         um([rolled.constant, rolled.sine, rolled.cosine]),
         um([base.constant, base.sine, base.cosine]),
@@ -174,13 +184,14 @@ def test_invariances(case, shift, factor, turn):
     assert np.array_equal(np.roll(base.contact, k), rolled.contact)
 
 
+@pytest.mark.parametrize("engine", ENGINES)
 @FAST
 @given(case=cases, delta=st.floats(0, 2 * np.pi))
-def test_rotating_the_ball_set_rotates_the_sinusoid(case, delta):
+def test_rotating_the_ball_set_rotates_the_sinusoid(case, delta, engine):
     n, first, dk, _ = case
     th = regular(n, first)
-    a = R.solve_contact(np.asarray(dk) * UM, th)
-    b = R.solve_contact(np.asarray(dk) * UM, th + delta)
+    a = R.solve_contact(np.asarray(dk) * UM, th, engine=engine)
+    b = R.solve_contact(np.asarray(dk) * UM, th + delta, engine=engine)
     # s(theta) = a0 + A sin(theta + phi): the same curve at theta + delta means phi -> phi - delta
     assert um(b.constant) == pytest.approx(um(a.constant), abs=1e-9)
     assert um(b.amplitude) == pytest.approx(um(a.amplitude), abs=1e-7)
@@ -190,10 +201,11 @@ def test_rotating_the_ball_set_rotates_the_sinusoid(case, delta):
         )
 
 
-def test_equal_errors_every_ball_touches():
+@pytest.mark.parametrize("engine", ENGINES)
+def test_equal_errors_every_ball_touches(engine):
     """Section 16.3."""
     for n in (3, 4, 7, 16):
-        s = R.solve_contact(np.full(n, 0.37) * UM, regular(n, 0.1))
+        s = R.solve_contact(np.full(n, 0.37) * UM, regular(n, 0.1), engine=engine)
         assert um(s.constant) == pytest.approx(0.37, abs=1e-12)
         assert um(s.sine) == pytest.approx(0, abs=1e-12) and um(s.cosine) == pytest.approx(
             0, abs=1e-12
@@ -202,13 +214,14 @@ def test_equal_errors_every_ball_touches():
         assert not s.degenerate
 
 
-def test_four_balls_always_rest_on_a_pair():
+@pytest.mark.parametrize("engine", ENGINES)
+def test_four_balls_always_rest_on_a_pair(engine):
     """With n = 4 no triangle strictly contains the centre: the optimum is a diametral pair and, unless
     both pairs tie, the face is a segment."""
-    s = R.solve_contact(np.array([0.0, 1.0, 0.5, 2.0]) * UM, regular(4))
+    s = R.solve_contact(np.array([0.0, 1.0, 0.5, 2.0]) * UM, regular(4), engine=engine)
     assert list(np.flatnonzero(s.contact)) == [0, 2]
     assert s.degenerate
-    tie = R.solve_contact(np.array([0.0, 1.0, 2.0, 1.0]) * UM, regular(4))
+    tie = R.solve_contact(np.array([0.0, 1.0, 2.0, 1.0]) * UM, regular(4), engine=engine)
     assert not tie.degenerate and np.all(tie.contact)
 
 
@@ -261,17 +274,22 @@ def test_sign_of_the_envelope():
     assert -upper.x[0] == pytest.approx(um(s.constant), abs=1e-9)
 
 
-def test_a_position_gives_the_same_bits_alone_or_in_a_batch(g):
+@pytest.mark.parametrize("engine", ENGINES)
+def test_a_position_gives_the_same_bits_alone_or_in_a_batch(g, engine):
     e = R.manufacturing_errors(
         16,
         ball_diameter_deviation=np.linspace(-0.2, 0.2, 16) * UM,
         inner=R.RacewayErrors(radial=R.fourier_series({1: 0.4, 3: 0.1}, scale=UM)),
     )
     psi = np.linspace(0, 4 * np.pi, 500)
-    batch = R.initial_displacement(psi, g, e)
-    one = R.initial_displacement(psi[123], g, e)
+    batch = R.initial_displacement(psi, g, e, engine=engine)
+    one = R.initial_displacement(psi[123], g, e, engine=engine)
     for name in ("x", "y", "z"):
         assert getattr(one, name) == getattr(batch, name)[123]
+    for name in ("generalized_error", "ball_angle"):
+        assert np.array_equal(getattr(one, name), getattr(batch, name)[123])
+    for name in ("constant", "sine", "cosine", "load_share", "slack", "contact"):
+        assert np.array_equal(getattr(one.contact, name), getattr(batch.contact, name)[123])
 
 
 # ------------------------------------------------------------------------------ reduced bearing (5.1), (5.2)

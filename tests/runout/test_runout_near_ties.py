@@ -19,8 +19,13 @@ def _sinusoid(a0, b, d):
     return a0 + b * np.sin(THETA) + d * np.cos(THETA)
 
 
-@pytest.mark.parametrize("method", ["dual", "triples", "lp"])
-def test_contact_tolerance_is_one_tenth_of_a_nanometre_scaled(method):
+# the dual method on both engines ("auto" is the compiled one where numba is installed)
+ENGINES = ["numpy", "auto"]
+
+
+@pytest.mark.parametrize(("method", "engine"), [("dual", "numpy"), ("dual", "auto"), ("triples", "numpy"),
+                                                ("lp", "numpy")])
+def test_contact_tolerance_is_one_tenth_of_a_nanometre_scaled(method, engine):
     """Spec 003 section 7.6: a ball touches when its slack is <= 1e-7 um x max(1, max|Delta k| / 1 um).
 
     Balls 1 and 9 (a diametral pair) carry the ring at a0 = -1 um, D = -1 um; max|Delta k| = 2 um,
@@ -31,21 +36,22 @@ def test_contact_tolerance_is_one_tenth_of_a_nanometre_scaled(method):
     slack = 1.0 + np.cos(THETA)  # zero at ball 9 (theta = pi)
     slack[0], slack[1], slack[2] = 0.0, 1.5e-7, 3e-7
     dk = _sinusoid(-1.0, 0.0, -1.0) + slack  # dk[0] = -2 um
-    s = runout.solve_contact(dk * UM, THETA, method=method)
+    s = runout.solve_contact(dk * UM, THETA, method=method, engine=engine)
     assert s.constant == pytest.approx(-1.0 * UM, abs=1e-15 * UM)
     assert np.flatnonzero(s.contact).tolist() == [0, 1, 8]
     assert s.slack[1] == pytest.approx(1.5e-7 * UM, rel=1e-6)
     assert s.slack[2] == pytest.approx(3e-7 * UM, rel=1e-6)
 
 
+@pytest.mark.parametrize("engine", ENGINES)
 @pytest.mark.parametrize("pair", range(N // 2))
-def test_the_binding_diametral_pair_is_found(pair):
+def test_the_binding_diametral_pair_is_found(pair, engine):
     """Zero slack on balls ``pair`` and ``pair + 8`` only: the ring rests on that pair, whichever it is."""
     rng = np.random.default_rng(pair)
     base = (0.3, -0.2, 0.4)  # a0, B, D [um]
     slack = rng.uniform(0.2, 1.0, N)
     slack[[pair, pair + N // 2]] = 0.0
-    s = runout.solve_contact((_sinusoid(*base) + slack) * UM, THETA)
+    s = runout.solve_contact((_sinusoid(*base) + slack) * UM, THETA, engine=engine)
     assert s.constant == pytest.approx(base[0] * UM, abs=1e-12 * UM)
     assert s.contact[pair] and s.contact[pair + N // 2]
     assert s.degenerate  # a pair leaves the ring free to slide along the pair's normal
@@ -58,12 +64,13 @@ def test_the_binding_diametral_pair_is_found(pair):
                                                           abs=1e-12 * UM)
 
 
-def test_a_triangle_beats_a_pair_when_it_is_lower():
+@pytest.mark.parametrize("engine", ENGINES)
+def test_a_triangle_beats_a_pair_when_it_is_lower(engine):
     """Balls 1, 6, 11 (a triangle around the centre) at zero slack and no pair at zero slack: three
     contacts and no sliding."""
     slack = np.full(N, 0.5)
     slack[[0, 5, 10]] = 0.0
-    s = runout.solve_contact((_sinusoid(0.1, 0.2, -0.3) + slack) * UM, THETA)
+    s = runout.solve_contact((_sinusoid(0.1, 0.2, -0.3) + slack) * UM, THETA, engine=engine)
     assert np.flatnonzero(s.contact).tolist() == [0, 5, 10]
     assert not s.degenerate
     assert s.sine == pytest.approx(0.2 * UM, abs=1e-12 * UM)

@@ -1,5 +1,6 @@
 """Rotation of spec 003 section 10 (``runout.rotation``): metrics, synchronous part, spectrum, cage."""
 
+import importlib.util
 import time
 import tracemalloc
 from pathlib import Path
@@ -13,15 +14,20 @@ from numpy.testing import assert_allclose
 from bearinglab import runout as R
 from bearinglab.errors import InputError
 
+# who finds the largest distance: qhull and numpy's calipers, or the compiled monotone chain and calipers
+ENGINES = ["numpy", pytest.param("compiled", marks=pytest.mark.skipif(
+    importlib.util.find_spec("numba") is None, reason="numba is not installed"))]
+
 UM = 1e-6
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "runout"
 
 
 # ------------------------------------------------------------------------------ rotation and metrics
-def test_metrics_against_brute_force():
+@pytest.mark.parametrize("engine", ENGINES)
+def test_metrics_against_brute_force(engine):
     rng = np.random.default_rng(7)
     x, y, z = rng.normal(size=(3, 3, 200))
-    m = R.runout_metrics(x, y, z)
+    m = R.runout_metrics(x, y, z, engine=engine)
     for k in range(3):
         d = np.hypot(x[k][:, None] - x[k][None, :], y[k][:, None] - y[k][None, :]).max()
         assert m.radial_ptp_max[k] == pytest.approx(d, rel=1e-14)
@@ -55,14 +61,15 @@ point_sets = st.integers(1, 80).flatmap(
     points=(list(range(12)), list(range(0, 24, 2))), scale=1e-9, offset=5.0
 )  # collinear, askew
 @example(points=([0.0, 1.0, 0.0, 1.0] * 3, [0.0, 0.0, 1.0, 1.0] * 3), scale=1.0, offset=0.0)  # ties
-def test_diameter_equals_the_largest_distance_of_all_pairs(points, scale, offset):
+@pytest.mark.parametrize("engine", ENGINES)
+def test_diameter_equals_the_largest_distance_of_all_pairs(points, scale, offset, engine):
     """The convex-hull diameter (rotating calipers) equals the brute force over all pairs. Both take the
     square root of the largest dx^2 + dy^2, so when they pick the same pair they agree to the bit;
     qhull merges points that lie within its rounding (about 1e-15 of the extent) of another point or
     of the hull, and may then report a pair shorter by that much: hence rel = 1e-13, not ==."""
     x = np.array(points[0]) * scale + offset * scale
     y = np.array(points[1]) * scale
-    got = R.runout_metrics(x, y, np.zeros_like(x)).radial_ptp_max
+    got = R.runout_metrics(x, y, np.zeros_like(x), engine=engine).radial_ptp_max
     assert got == pytest.approx(brute_force_diameter(x, y), rel=1e-13, abs=0.0)
 
 
@@ -79,32 +86,35 @@ def test_diameter_equals_the_largest_distance_of_all_pairs(points, scale, offset
     angles=[1.02, 2.26, 5.31, 3.04, 3.39, 1.83, 3.46, 3.8, 2.11, 3.78, 4.74, 2.22, 2.86, 0.82],
     aspect=1.0,
 )
-def test_diameter_of_points_on_an_ellipse_at_random_angles(angles, aspect):
+@pytest.mark.parametrize("engine", ENGINES)
+def test_diameter_of_points_on_an_ellipse_at_random_angles(angles, aspect, engine):
     """All points on the hull, none exactly antipodal: the antipode of an edge late in the hull order
     lies past the end of the list of edges (a wrap-around the first version missed)."""
     t = np.array(angles)
     x, y = np.cos(t), aspect * np.sin(t)
-    got = R.runout_metrics(x, y, 0 * x).radial_ptp_max
+    got = R.runout_metrics(x, y, 0 * x, engine=engine).radial_ptp_max
     assert got == pytest.approx(brute_force_diameter(x, y), rel=1e-13, abs=0.0)  # qhull's merging
 
 
-def test_diameter_of_circles_and_ellipses_is_exact():
+@pytest.mark.parametrize("engine", ENGINES)
+def test_diameter_of_circles_and_ellipses_is_exact(engine):
     """Every point of a circle is a hull vertex and has an antipode: the worst case for a hull method."""
     t = 2 * np.pi * np.arange(3600) / 3600
     for a, b in ((1.0, 1.0), (1.0, 0.3), (2e-6, 1.9e-6)):
         x, y = a * np.cos(t + 0.1), b * np.sin(t + 0.1)
-        m = R.runout_metrics(np.stack([x, y]), np.stack([y, x]), 0 * np.stack([x, y]))
+        m = R.runout_metrics(np.stack([x, y]), np.stack([y, x]), 0 * np.stack([x, y]), engine=engine)
         assert m.radial_ptp_max[0] == m.radial_ptp_max[1] == brute_force_diameter(x, y)
 
 
-def test_diameter_memory_is_linear_in_the_positions():
+@pytest.mark.parametrize("engine", ENGINES)
+def test_diameter_memory_is_linear_in_the_positions(engine):
     """1000 revolutions x 360 steps: all pairs would take 360 000^2 x 8 B = 1 TB; the hull a few MB."""
     psi = 2 * np.pi * np.arange(1000 * 360) / 360
     x = np.cos(psi) + 0.1 * np.cos(3 * psi)  # synchronous: every revolution the same 360 points
     y = np.sin(psi) - 0.2 * np.sin(2 * psi)
     tracemalloc.start()
     start = time.perf_counter()
-    m = R.runout_metrics(x, y, np.zeros_like(x))
+    m = R.runout_metrics(x, y, np.zeros_like(x), engine=engine)
     elapsed = time.perf_counter() - start
     peak = tracemalloc.get_traced_memory()[1]
     tracemalloc.stop()

@@ -1,6 +1,7 @@
 """Monte Carlo over tolerance classes, spec 003 section 11 (``runout.tolerances``): reproducibility, the
 draws, the statistics, and bit-identical results on every executor."""
 
+import importlib.util
 import math
 import time
 
@@ -11,6 +12,11 @@ from threadpoolctl import threadpool_limits
 from bearinglab import parallel
 from bearinglab import runout as R
 from bearinglab.errors import InputError
+
+# both engines of the Monte Carlo (the compiled one where numba is installed): each gives the same bits on
+# every chunk size and executor, and equal to the rotation sequence of a sample's errors
+ENGINES = ["numpy", pytest.param("compiled", marks=pytest.mark.skipif(
+    importlib.util.find_spec("numba") is None, reason="numba is not installed"))]
 
 
 # ------------------------------------------------------------------------------ Monte Carlo
@@ -31,11 +37,13 @@ def test_tolerance_classes_have_sources():
         R.ring_class("P0")
 
 
-def test_monte_carlo_is_reproducible_and_independent_of_chunking(g):
-    a = R.monte_carlo(g, "G5", "P4", 12, 99, steps_per_revolution=36, chunk_size=5)
-    b = R.monte_carlo(g, "G5", "P4", 12, 99, steps_per_revolution=36, chunk_size=12)
+@pytest.mark.parametrize("engine", ENGINES)
+def test_monte_carlo_is_reproducible_and_independent_of_chunking(g, engine):
+    a = R.monte_carlo(g, "G5", "P4", 12, 99, steps_per_revolution=36, chunk_size=5, engine=engine)
+    b = R.monte_carlo(g, "G5", "P4", 12, 99, steps_per_revolution=36, chunk_size=12, engine=engine)
     c = R.monte_carlo(
-        g, "G5", "P4", 12, np.random.SeedSequence(99), steps_per_revolution=36, chunk_size=7
+        g, "G5", "P4", 12, np.random.SeedSequence(99), steps_per_revolution=36, chunk_size=7,
+        engine=engine,
     )
     for name in R.METRICS:
         assert np.array_equal(getattr(a.samples, name), getattr(b.samples, name)), name
@@ -56,12 +64,13 @@ def test_monte_carlo_is_reproducible_and_independent_of_chunking(g):
     assert calls == [(4, 10), (8, 10), (10, 10)]
 
 
-def test_monte_carlo_sample_equals_the_public_path(g):
+@pytest.mark.parametrize("engine", ENGINES)
+def test_monte_carlo_sample_equals_the_public_path(g, engine):
     """A sample's metrics equal a rotation_sequence of the same errors built with the public API, to the
-    last bit."""
+    last bit (with the same engine)."""
     from bearinglab.runout.tolerances import _draw_count, _sampled_errors, _uniforms
 
-    res = R.monte_carlo_chunk(g, "G10", "P5", [3], 5, steps_per_revolution=60, revolutions=2)
+    res = R.monte_carlo_chunk(g, "G10", "P5", [3], 5, steps_per_revolution=60, revolutions=2, engine=engine)
     u = _uniforms(5, [3], _draw_count(16, 15))
     theta1, dd, ser = _sampled_errors(u, 16, R.ball_grade("G10"), R.ring_class("P5"), 15)
     one = {k: R.FourierSeries(v.cos[0], v.sin[0]) for k, v in ser.items()}
@@ -72,7 +81,7 @@ def test_monte_carlo_sample_equals_the_public_path(g):
         outer=R.RacewayErrors(radial=one["outer"]),
     )
     t = R.rotation_sequence(
-        g._replace(first_ball_angle=theta1[0]), e, revolutions=2, steps_per_revolution=60
+        g._replace(first_ball_angle=theta1[0]), e, revolutions=2, steps_per_revolution=60, engine=engine
     )
     for name in R.METRICS:  # the Monte Carlo kernel evaluates the same functions: bit for bit
         assert getattr(res, name)[0] == getattr(t.metrics, name), name
@@ -183,17 +192,18 @@ def test_execution_value_and_the_older_keywords_agree(g):
 
 
 # ------------------------------------------------------------------------------ reproducing samples
-def test_chosen_samples_are_reproduced_bit_for_bit(g):
+@pytest.mark.parametrize("engine", ENGINES)
+def test_chosen_samples_are_reproduced_bit_for_bit(g, engine):
     """Defect 6: the errors of any sample regenerate from the seed; a rotation sequence of them gives the
-    sample's metrics exactly, whichever chunk the sample was computed in."""
-    r = R.monte_carlo(g, "G10", "P5", 30, 11, steps_per_revolution=45, chunk_size=7)
+    sample's metrics exactly, whichever chunk the sample was computed in (with the same engine)."""
+    r = R.monte_carlo(g, "G10", "P5", 30, 11, steps_per_revolution=45, chunk_size=7, engine=engine)
     worst = R.worst_samples(r, "axial_ptp", 3)
     drawn = R.monte_carlo_errors(g, "G10", "P5", worst, 11)
     assert [s.sample_index for s in drawn] == list(worst)
     for s in drawn:
         assert s.geometry == g._replace(first_ball_angle=r.samples.first_ball_angle[s.sample_index])
         assert s.errors.tilt_x == 0.0 and s.errors.inner.axial.cos.size == 2  # order-1 wobble only
-        t = R.rotation_sequence(s.geometry, s.errors, revolutions=2, steps_per_revolution=45)
+        t = R.rotation_sequence(s.geometry, s.errors, revolutions=2, steps_per_revolution=45, engine=engine)
         for name in R.METRICS:
             assert getattr(t.metrics, name) == getattr(r.samples, name)[s.sample_index], name
 

@@ -29,9 +29,10 @@ from ..errors import InputError
 if TYPE_CHECKING:
     from ..bearing import BallBearing
 
-__all__ = ["FREEDOMS", "LubricantViscosity", "choice", "five_loads", "held_reactions", "inputs_echo",
-           "lubricant_viscosity", "parse_length", "parse_speed", "parse_speeds", "parse_temperature",
-           "parse_viscosity", "prescribed_displacements", "prescribed_echo", "resolve_bearing", "speed_size"]
+__all__ = ["DEFAULT_LUBRICATION", "FREEDOMS", "OIL_LUBRICATION", "LubricantViscosity", "choice",
+           "default_lubrication", "five_loads", "held_reactions", "inputs_echo", "lubricant_viscosity",
+           "parse_length", "parse_speed", "parse_speeds", "parse_temperature", "parse_viscosity",
+           "prescribed_displacements", "prescribed_echo", "resolve_bearing", "speed_size"]
 
 def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, ball_diameter=None,
                     pitch_diameter=None, inner_groove_radius=None, outer_groove_radius=None,
@@ -79,8 +80,8 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
     if contact_angle is not None:
         changes["contact_angle"] = parse_quantity(contact_angle, "angle", "contact-angle")
         changes["radial_clearance"] = None
-    elif radial_clearance is not None:
-        changes["radial_clearance"] = parse_length(radial_clearance, "radial-clearance", "um")
+    elif radial_clearance is not None:  # zero or negative: a preloaded bearing (issue 30), bounded by the bearing
+        changes["radial_clearance"] = parse_quantity(radial_clearance, "length", "radial-clearance")
         changes["contact_angle"] = None
     elif {"inner_conformity", "outer_conformity", "ball_diameter"} & set(changes):
         # a new ball or new grooves keep the angle and re-derive the clearance
@@ -214,6 +215,37 @@ def parse_speeds(text, name="speed", *, pitch_diameter=None, zero=True, what="th
     return w
 
 
+#: The lubrication method of SKF's friction model when none is given, the same for every command (issue 30):
+#: grease, the common case of ball bearings (the model takes the base oil's viscosity), unless the lubricant is
+#: given as an oil grade (``oil``), which says the bearing runs in oil: then an oil jet (circulating oil, SKF's
+#: K_rs 3e-8). An oil bath is never assumed: its drag needs the oil level.
+DEFAULT_LUBRICATION, OIL_LUBRICATION = "grease", "oil-jet"
+
+
+def default_lubrication(lubrication, oil):
+    """The lubrication method given, else :data:`DEFAULT_LUBRICATION` (``OIL_LUBRICATION`` with an oil grade).
+
+    Parameters
+    ----------
+    lubrication : str or None
+        The method given.
+    oil : str or None
+        The oil grade given (``"VG68"``).
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> default_lubrication(None, None), default_lubrication(None, "VG68"), default_lubrication("oil-air", "VG68")
+    ('grease', 'oil-jet', 'oil-air')
+    """
+    if lubrication is not None:
+        return lubrication
+    return OIL_LUBRICATION if oil is not None and str(oil).strip() else DEFAULT_LUBRICATION
+
+
 #: Kinematic viscosities accepted from the command line [m^2/s]: 0.1 to 1e7 cSt, the dynamic range the film
 #: command takes (0.1 to 1e7 mPa s) at about 1000 kg/m^3. A sanity bound, not a property of any oil: outside
 #: it a value is taken for a typing or unit error (issue 24: absurd viscosities are refused in one line).
@@ -261,17 +293,15 @@ def five_loads(fx=None, fy=None, fz=None, mx=None, my=None, radial_load=None, ax
 
 
 _ZERO_C = 273.15  # K at 0 degC
-_TEMPERATURE = re.compile(r"^\s*([-+]?\d+(?:\.\d*)?(?:[eE][-+]?\d+)?)\s*(°C|degC|C|K|°F|degF|F)\s*$")
 
 
 def parse_temperature(text, name="temperature"):
-    """A temperature '70 degC', '343 K' or '158 degF' [K], above absolute zero."""
-    m = _TEMPERATURE.match(text or "")
-    if not m:
-        raise InputError(f"{name} must be a number with degC, K or degF (e.g. '70 degC'), got {text!r}")
-    v, unit = float(m.group(1)), m.group(2).lstrip("°").removeprefix("deg")
-    t = {"C": v + _ZERO_C, "K": v, "F": (v - 32.0) / 1.8 + _ZERO_C}[unit]
-    if not (t > 0 and math.isfinite(t)):
+    """A temperature '70 degC', '343 K' or '158 degF' [K], above absolute zero: one number and its unit by
+    the grammar of every quantity (:func:`bearinglab.units.parse_temperature`)."""
+    from ..units import parse_temperature as read
+
+    t = read("" if text is None else text, name)
+    if not t > 0:
         raise InputError(f"{name} must be above absolute zero (0 K = -273.15 degC), got {text!r}")
     return t
 
@@ -331,7 +361,7 @@ def lubricant_viscosity(viscosity=None, oil=None, temperature=None, viscosity_in
     if viscosity_index is not None and viscosity_100 is not None:
         raise InputError("viscosity-index: give --viscosity-index or --viscosity-100, not both (the index fixes "
                          "the viscosity at 100 degC)")
-    m = re.fullmatch(r"(?:ISO\s*)?VG\s*(\d+)", oil.strip(), flags=re.IGNORECASE)
+    m = re.fullmatch(r"(?:ISO\s*)?VG\s*([0-9]+)", oil.strip(), flags=re.IGNORECASE)
     grades = lubrication.ISO_VG_GRADES
     if not m or int(m.group(1)) not in grades:
         raise InputError(f"oil must be an ISO VG grade (VG{grades[0]} ... VG{grades[-1]}), got {oil!r}")

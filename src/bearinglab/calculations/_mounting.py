@@ -27,21 +27,13 @@ _UM, _MM = 1e-6, 1e-3
 
 
 def parse_temperature(text, name):
-    """A temperature option [K]: '60 degC', '60 °C', '333 K', '140 degF'; a bare number is in degC."""
-    from ..units import _ureg
+    """A temperature option [K]: '60 degC', '60 °C', '333 K', '140 degF'; a bare number is in degC. One
+    number and one unit by the grammar of every quantity (:func:`bearinglab.units.parse_temperature`):
+    pint never evaluates it ('5,5 degC', '1 000 K', '9**9**9 K' are refused)."""
+    from ..units import parse_temperature as read
 
-    text = str(text).strip()
-    try:
-        value = float(text)
-    except ValueError:
-        value = None
-    ureg = _ureg()
-    try:
-        q = ureg.Quantity(value, "degC") if value is not None else ureg.Quantity(text)
-        kelvin = float(q.to("kelvin").magnitude)
-    except Exception as exc:  # pint raises several unrelated types
-        raise InputError(f"{name}: cannot read {text!r} as a temperature (e.g. '60 degC', '333 K')") from exc
-    if not math.isfinite(kelvin) or kelvin < 0:
+    kelvin = read(str(text).strip(), name, default_unit="degC")
+    if kelvin < 0:
         raise InputError(f"{name} must be >= -273.15 [degC] (absolute zero), got {kelvin - 273.15:g} degC")
     return kelvin
 
@@ -258,11 +250,7 @@ def operating_bearing(bearing, speed=0.0, options=None):
 
     inp = mounted_inputs(bearing, **given, speed=float(speed), require=True)
     r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
-    e = float(r.probable.operating_clearance)
-    if not e > 0:
-        raise InputError(f"operating clearance must be > 0 [um] for this model, got {e / _UM:.3g} um (the fits and "
-                         "temperatures preload the bearing); give a larger --clearance-class, or model a "
-                         "preloaded pair with bearing-set")
+    e = float(r.probable.operating_clearance)  # zero or negative: a preloaded bearing, solved as one (issue 30)
     doc = {"operating_clearance_um": e / _UM,
            "operating_clearance_min_um": float(r.least.operating_clearance) / _UM,
            "operating_clearance_max_um": float(r.largest.operating_clearance) / _UM,

@@ -19,6 +19,7 @@ import types
 
 from ..errors import InputError
 from ._failures import failures
+from ._finite import finite
 from ._inputs import choice, five_loads, parse_length
 from ._request import given_text, with_notes
 from .load_distribution import inputs, plausibility, solve, takeup_um, with_takeup
@@ -40,6 +41,7 @@ def _names(value):
     return [str(s).strip() for s in value]
 
 
+@finite('bearing-set')
 def document(parsed, *, catalog=None):
     """The document of ``bearinglab bearing-set ... --json`` for a checked request.
 
@@ -87,12 +89,26 @@ def document(parsed, *, catalog=None):
             if name in parsed.given and (name, given_text(parsed, name)) != ("induced_axial_factor", "SKF"):
                 raise InputError(f"{name.replace('_', '-')}: an input of a pair of tapered roller bearings; "
                                  f"{bl[0].designation!r} is a ball bearing")
+        from ..bearing import check_model
+
+        for b in bl:
+            check_model(b, "bearing-set")
         notes = [n for b in bl for n in _catalog.provenance_notes(b)]
         arrangement = choice("arrangement", text("arrangement") or "DB", tuple(sets.ARRANGEMENTS))
         s = None if text("spacing") is None else parse_length(text("spacing"), "spacing", zero=True)
         if text("preload") is not None and text("preload_offset") is not None:
             raise InputError("preload: give --preload or --preload-offset, not both")
         fp = 0.0 if text("preload") is None else parse_quantity(text("preload"), "force", "preload")
+        classes = {(b.preload_class, b.preload) for b in bl}
+        if text("preload") is None and text("preload_offset") is None and len(classes) == 1:
+            cls, value = classes.pop()
+            if value is not None:  # issue 30: the preload class of the designation (GA, GB, GC), by SKF's table
+                fp = value
+                notes.append(f"preload: {fp:g} N of the class {cls} of {bl[0].designation} "
+                             f"({bl[0].sources.get('preload', 'the maker table')})")
+            elif cls is not None:
+                notes.append(f"preload: the class {cls} of {bl[0].designation} has no preload in the catalog; give "
+                             "--preload (the set is solved without)")
         if not fp >= 0:
             raise InputError(f"preload must be >= 0 [N] (an axial force at rest), got {fp:g} N")
         e = None if text("preload_offset") is None else parse_quantity(text("preload_offset"), "length",
@@ -150,6 +166,14 @@ def document(parsed, *, catalog=None):
                       "preload_offset_um": None if e is None else e * 1e6},
            "warnings": caught}
     del doc["balls"], doc["max_ball_load_N"]
+    if mounted is not None:  # issue 30: each bearing's radial preload where the fits took all its clearance
+        from . import _preload
+
+        preloaded, note = _preload.report(bl[0], source="each bearing's operating clearance from the fits and "
+                                                        "temperatures")
+        if note:
+            doc = {**{k: v for k, v in doc.items() if k != "warnings"}, **preloaded,
+                   "warnings": [note + " (besides the set's axial preload)", *doc["warnings"]]}
     return json.loads(tables.json_text(with_notes(tables.json_value(doc), notes)))
 
 

@@ -28,6 +28,7 @@ import warnings
 
 from ..errors import InputError
 from ._failures import run_failure
+from ._finite import check, finite
 from .fields import RequestError, RunFailure
 from .registry import CALCULATIONS
 
@@ -117,6 +118,7 @@ def _clearance_range(b, choice, given):
 
 
 
+@finite("catalog")
 def catalog_document(name, *, catalog=None, clearance=None, radial_clearance=None):
     """The document of ``bearinglab catalog show NAME --json`` (the command prints this) and the bearing.
 
@@ -144,11 +146,11 @@ def catalog_document(name, *, catalog=None, clearance=None, radial_clearance=Non
     if clearance is not None and clearance not in ("mean", "min", "max"):
         raise InputError(f"clearance must be one of ['mean', 'min', 'max'], got {clearance!r}")
     b = _catalog.get(name, catalog=catalog, clearance=clearance or "mean")
+    if getattr(b, "type", None) in ("cylindrical", "tapered", "spherical"):  # a RollerBearing (issue 32)
+        return _roller_document(b, name, catalog=catalog, clearance=clearance, radial_clearance=radial_clearance)
     if radial_clearance is not None:
         from ..units import parse_quantity
-        value = parse_quantity(radial_clearance, "length", "radial-clearance")
-        if not value > 0:
-            raise InputError(f"radial-clearance must be > 0 [um], got {value / 1e-6:g} um")
+        value = parse_quantity(radial_clearance, "length", "radial-clearance")  # <= 0: a preload (issue 30)
         est = tuple(f for f in b.estimated_fields if f not in ("radial_clearance",))
         b = b.replace(radial_clearance=value, estimated_fields=est,
                       sources={**b.sources, "radial_clearance": "given (--radial-clearance)"})
@@ -157,7 +159,12 @@ def catalog_document(name, *, catalog=None, clearance=None, radial_clearance=Non
     if extra:
         info.update({k: v for k, v in extra.items() if k != "row"})
     for key in ("seal", "seals", "tolerance_class"):
-        info[key] = getattr(b, key, None)  # a roller bearing has none
+        info[key] = getattr(b, key)
+    # issue 30: the maker's f0, the preload class of the designation and its preload, where there are
+    for key, value in (("calculation_factor_f0", b.static_load_factor), ("preload_class", b.preload_class),
+                       ("preload_N", b.preload)):
+        if value is not None:
+            info[key] = value
     info["iso5753_clearance"] = _clearance_range(b, clearance, radial_clearance)
     given = {k: getattr(b, k) for k in ("dynamic_load_rating", "static_load_rating", "fatigue_load_limit")}
     with warnings.catch_warnings(record=True) as caught:
@@ -184,6 +191,51 @@ def catalog_document(name, *, catalog=None, clearance=None, radial_clearance=Non
                 inputs={"name": name, "catalog": None if catalog is None else str(catalog),
                         "clearance": clearance, "radial_clearance": radial_clearance}, warnings=notes)
     return info, b
+
+
+def _roller_document(b, name, *, catalog, clearance, radial_clearance):
+    """``catalog show`` of a roller bearing: its fields, the catalogue's data, and the roller set the models
+    use, estimated where no source gives it (labelled in ``estimated_fields`` and ``sources``)."""
+    from .. import catalog as _catalog
+    from ..catalog import _rollers
+    if clearance is not None:
+        raise InputError(f"clearance: --clearance picks a value of a deep-groove ball bearing's ISO 5753-1 range; "
+                         f"{b.designation!r} is a {b.type} roller bearing: give --radial-clearance")
+    if radial_clearance is not None:
+        from ..units import parse_quantity
+        value = parse_quantity(radial_clearance, "length", "radial-clearance")
+        b = b.replace(radial_clearance=value, sources={**b.sources, "radial_clearance": "given (--radial-clearance)"})
+    notes = []
+    shown = b
+    if b.type != "spherical" and not b.has_internal_geometry:  # the set the models would use, labelled
+        from ..rollers.estimation import with_estimated_geometry
+        try:
+            shown = with_estimated_geometry(b)
+        except InputError as exc:
+            notes.append(f"roller set: not estimated ({exc})")
+    elif b.type == "spherical":
+        notes.append(f"{b.designation}: a spherical roller bearing: ratings, life and friction only (its load "
+                     "distribution is not modelled, so no roller set is estimated)")
+    info = _rollers.summary(shown)
+    extra = _catalog.details(name) if not _catalog._is_builtin_entry(name) else None
+    if extra:
+        info.update({k: (v or None) if isinstance(v, list) else v for k, v in extra.items() if k != "row"})
+    given = {k: getattr(b, k) for k in ("dynamic_load_rating", "static_load_rating", "fatigue_load_limit")}
+    if None not in given.values():
+        info.update({f"{k}_N": float(v) for k, v in given.items()})
+        info["rating_source"] = dict.fromkeys(given, "catalog")
+    else:
+        from .. import ratings, tables
+        try:
+            info.update(tables.ratings(ratings.bearing_ratings(shown)))
+        except InputError as exc:
+            info.update({f"{k}_N": v for k, v in given.items()})
+            info["rating_source"] = {k: "catalog" for k, v in given.items() if v is not None}
+            notes.append(f"ratings: not computed ({exc})")
+    info.update(sources=dict(shown.sources), estimated_fields=list(shown.estimated_fields),
+                inputs={"name": name, "catalog": None if catalog is None else str(catalog), "clearance": clearance,
+                        "radial_clearance": radial_clearance}, warnings=notes)
+    return info, shown
 
 
 def _catalog_document(parsed):
@@ -234,7 +286,8 @@ def _search_document(parsed):
 
     matches = []
     if values.get("width") is None and values.get("series") is None:  # named rows carry neither
-        series_names = set(_series.records())
+        from ..catalog import _rollers
+        series_names = set(_series.records()) | set(_rollers.records())  # these come through catalog.search
         for name in catalog.names():
             if name in series_names or not wanted(name):
                 continue
@@ -301,7 +354,7 @@ def run(parsed):
             raise RunFailure("name", parsed.values["name"],
                              "{name}: " + message.removeprefix("bearing: ")) from None
     if name == "catalog-search":
-        return _search_document(parsed)
+        return check(_search_document(parsed), name)
     return _native(parsed)  # every other calculation has a document function of its own
 
 
@@ -327,7 +380,9 @@ def _native(parsed):
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", RuntimeWarning)  # every result is checked finite
-            return json_value(module.document(parsed))  # NaN as null, numpy as plain numbers
+            # NaN as null, numpy as plain numbers; every number finite or an error (a calculation whose
+            # document function is not decorated is checked here all the same)
+            return json_value(finite(parsed.calculation.name)(module.document)(parsed))
     except RequestError:
         raise
     except ConvergenceError as exc:  # no physical solution is the input's fault (2); else the solver's

@@ -19,8 +19,10 @@ from .._io import json_value
 from ..errors import InputError
 from . import _rollers
 from ._failures import failures
+from ._finite import finite
 from ._inputs import (
     choice,
+    default_lubrication,
     five_loads,
     inputs_echo,
     lubricant_viscosity,
@@ -110,6 +112,7 @@ def pressure_viscosity(text):
                      "pressure-viscosity-coefficient"), _ALPHA_RANGE, "1/GPa", 1e9)
 
 
+@finite('film')
 def document(parsed, *, bearing_file=None, catalog=None):
     """The document of ``bearinglab film ... --json`` for a checked request.
 
@@ -142,6 +145,8 @@ def _document(parsed, bearing_file, catalog):
     from .. import tables
     from ..film.analysis import LOADS_AT
     from ..units import RPM
+    from . import _preload
+    from .load_distribution import clearance_source
 
     def text(name):
         return str(parsed.given[name]).strip() if name in parsed.given else None
@@ -153,6 +158,9 @@ def _document(parsed, bearing_file, catalog):
     geometry = {k: (v[k] if k in ("balls", "inner_conformity", "outer_conformity") else text(k))
                 for k in _GEOMETRY if k in parsed.given}
     b = resolve_bearing(text("bearing"), bearing_file, catalog, **geometry)
+    from ..bearing import check_model
+
+    check_model(b, "film")
     loads = five_loads(*(text(k) for k in ("fx", "fy", "fz", "mx", "my", "radial_load", "axial_load")))
     speed = text("speed")
     if speed is None:
@@ -170,7 +178,7 @@ def _document(parsed, bearing_file, catalog):
         eta, how, lub_inputs, notes = _auto_temperature(
             b, loads, w, oil["oil"], oil["viscosity"], oil["dynamic_viscosity"], oil["viscosity_index"],
             oil["viscosity_100"], text("density"), text("ambient"), text("thermal_resistance"),
-            lubrication or "oil-jet", text("skf_constants"))
+            default_lubrication(lubrication, text("oil")), text("skf_constants"))
         nu = eta / lub_inputs["density_kg_m3"]
     else:
         if any(text(k) is not None for k in ("ambient", "thermal_resistance", "skf_constants")):
@@ -191,6 +199,9 @@ def _document(parsed, bearing_file, catalog):
     r = _solve(film_model.film_analysis, b, cases, w, eta, alpha, roughness_ball=rq_ball,
                roughness_race=rq_race, loads_at=loads_at, **starve)
     notes = list(dict.fromkeys([*notes, *r.warnings]))
+    preloaded, note = _preload.report(b, source=clearance_source({}, text("radial_clearance")))
+    if note:  # issue 30: the film at the ball loads of the preloaded bearing
+        notes.insert(0, note)
     notes += [n for n in dict.fromkeys(_catalog.provenance_notes(b)) if n not in notes]
     docs = []
     for k in range(w.size):
@@ -204,6 +215,7 @@ def _document(parsed, bearing_file, catalog):
         temps = lub_inputs.get("bearing_temperature_degC")
         if isinstance(temps, list):  # temperature auto over several speeds: this case's temperature
             doc["inputs"]["bearing_temperature_degC"] = temps[k]
+        doc.update(preloaded)
         doc["warnings"] = notes
         docs.append(doc)
     return docs[0] if w.size == 1 else docs
@@ -345,15 +357,15 @@ def _roller_film_doc(r, f):
     k = int(np.nanargmin(np.where(loaded, hmin, np.nan))) if loaded.any() else None
     rollers = [{"azimuth_deg": math.degrees(float(r.azimuth[j])), "load_N": float(r.roller_load[j]),
                 "entrainment_velocity_m_s": float(f.entrainment_velocity),
-                "film_central_inner_um": json_value(float(f.central_inner[j]) * 1e6),
-                "film_min_inner_um": json_value(float(f.minimum_inner[j]) * 1e6),
-                "film_central_outer_um": json_value(float(f.central_outer[j]) * 1e6),
-                "film_min_outer_um": json_value(float(f.minimum_outer[j]) * 1e6),
-                "lambda": json_value(float(f.film_parameter[j]))} for j in range(len(r.roller_load))]
-    return {"film_min_um": None if k is None else float(hmin[k]) * 1e6,
-            "lambda_min": None if k is None else float(f.film_parameter[k]),
-            "regime": None if k is None else str(f.regime[k]), "converged": bool(r.converged),
-            "rollers": rollers}
+                "film_central_inner_um": float(f.central_inner[j]) * 1e6,
+                "film_min_inner_um": float(f.minimum_inner[j]) * 1e6,
+                "film_central_outer_um": float(f.central_outer[j]) * 1e6,
+                "film_min_outer_um": float(f.minimum_outer[j]) * 1e6,
+                "lambda": float(f.film_parameter[j])} for j in range(len(r.roller_load))]
+    return json_value({"film_min_um": None if k is None else float(hmin[k]) * 1e6,  # as a whole: nulls known by key
+                       "lambda_min": None if k is None else float(f.film_parameter[k]),
+                       "regime": None if k is None else str(f.regime[k]), "converged": bool(r.converged),
+                       "rollers": rollers})
 
 
 def _solve(model, *args, **kwargs):

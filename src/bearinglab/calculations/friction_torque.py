@@ -21,7 +21,8 @@ from ..errors import InputError
 from . import _reading as inp
 from . import _rollers
 from ._failures import failures
-from ._inputs import lubricant_viscosity, parse_viscosity
+from ._finite import finite
+from ._inputs import default_lubrication, lubricant_viscosity, parse_viscosity
 
 __all__ = ["MODELS", "FrictionResult", "compute", "document"]
 
@@ -39,6 +40,7 @@ class FrictionResult(NamedTuple):
     """The :class:`bearinglab.friction.SKFFriction`-like result of the skf model, None for the others."""
 
 
+@finite('friction')
 def compute(parsed, *, bearing_file=None, catalog=None):
     """Compute a friction request.
 
@@ -65,7 +67,7 @@ def compute(parsed, *, bearing_file=None, catalog=None):
             t(parsed, "contact_angle"), t(parsed, "bore"), t(parsed, "outside_diameter"),
             t(parsed, "mean_diameter"), t(parsed, "static_load_rating"), v(parsed, "mu"), v(parsed, "x0"),
             v(parsed, "y0"), v(parsed, "f"), v(parsed, "c"), v(parsed, "f0"), t(parsed, "viscosity"),
-            v(parsed, "palmgren_f0"), v(parsed, "lubrication", "grease"), t(parsed, "oil"),
+            v(parsed, "palmgren_f0"), default_lubrication(v(parsed, "lubrication"), t(parsed, "oil")), t(parsed, "oil"),
             t(parsed, "temperature"), v(parsed, "viscosity_index"), t(parsed, "viscosity_100"),
             t(parsed, "oil_level"), v(parsed, "drag_loss_factor"), parsed.given.get("series"), resolved)  # series as typed: "  " is no series
         doc = _with_operating_clearance(doc, parsed, b, n)
@@ -74,6 +76,7 @@ def compute(parsed, *, bearing_file=None, catalog=None):
     return FrictionResult(doc, m)
 
 
+@finite('friction')
 def document(parsed, *, bearing_file=None, catalog=None):
     """The document of ``bearinglab friction torque ... --json`` for a request.
 
@@ -102,7 +105,8 @@ def _roller_friction(parsed, bearing):
 
     SKF General Catalogue 6000 (module :mod:`bearinglab.friction.skf_roller`): the rolling and sliding moments with
     the constants of the bearing's series, the inlet shear heating and replenishment factors, and the drag moment
-    of an oil bath (``lubrication`` oil-bath with ``oil_level`` and ``drag_loss_factor``, V_M of SKF's diagram).
+    of an oil bath (``lubrication`` oil-bath with ``oil_level``; V_M from SKF's diagram of roller bearings, or
+    ``drag_loss_factor``).
     The handbook models of the friction-rig lab (one-term, two-term, Palmgren) are ball bearings': refused.
 
     Parameters
@@ -156,17 +160,17 @@ def _roller_friction(parsed, bearing):
     kw = {}
     level, vm = inp.text(parsed, "oil_level"), inp.value(parsed, "drag_loss_factor")
     if lubrication == "oil-bath":
-        if level is None or vm is None:
-            raise InputError("oil-level: --lubrication oil-bath needs --oil-level (e.g. '5 mm') and "
-                             "--drag-loss-factor (V_M of SKF's diagram at H/d_m, the roller-bearing curve)")
+        if level is None:
+            raise InputError("oil-level: --lubrication oil-bath needs --oil-level (e.g. '5 mm'); V_M follows from "
+                             "SKF's diagram at H/d_m, the roller-bearing curve (--drag-loss-factor overrides it)")
         h = inp.parse_length(level, "oil-level", zero=True)
         dm = bearing.mean_diameter
         if h > dm / 2:
             raise InputError(f"oil-level must be <= d_m/2 = {dm / 2 * 1e3:g} mm [mm] (at most up to the bearing's "
                              f"centre), got {h * 1e3:g} mm")
-        if not 0.0 <= vm <= 1.0:
+        if vm is not None and not 0.0 <= vm <= 1.0:
             raise InputError(f"drag-loss-factor must be in [0, 1] [-] (V_M of SKF's diagram), got {vm:g}")
-        kw["drag_loss_factor"] = vm
+        kw = {"oil_level": h, "drag_loss_factor": vm}
     elif level is not None or vm is not None:
         raise InputError("oil-level: --oil-level and --drag-loss-factor go with --lubrication oil-bath")
     with warnings.catch_warnings(record=True) as caught:
@@ -182,14 +186,17 @@ def _roller_friction(parsed, bearing):
              for i in range(len(moments))]
     info = {"bearing": bearing.designation, "type": bearing.type, "model": "skf", "lubrication": lubrication,
             "viscosity_cSt": float(tables.significant(nu * 1e6)[0]), "series": bearing.series}
+    if m.drag_loss_factor is not None:  # the oil bath's V_M: given, or SKF's diagram at H/d_m
+        info.update(oil_level_mm=kw["oil_level"] * 1e3, drag_loss_factor=float(m.drag_loss_factor),
+                    drag_loss_factor_source="given" if vm is not None else
+                    "SKF's diagram at H/d_m (roller bearings; bearinglab.friction.drag)")
     mounting = {k: inp.text(parsed, k) for k in MOUNTING if k in parsed.given}
     mounted = {}
     if mounting:
         _, mounted = operating(bearing, float(np.max(n)), mounting)
         notes.append("operating clearance: the skf friction model does not depend on the clearance; "
                      "operating_clearance_um is reported, the torque is the same without the mounting inputs")
-    echo = {"inputs": _echo(bearing, fr, fa, n, model="skf", lubrication=lubrication, viscosity_cSt=nu * 1e6,
-                            **({"drag_loss_factor": vm, "oil_level_mm": float(h) * 1e3} if kw else {})),
+    echo = {"inputs": _echo(bearing, fr, fa, n, model="skf", lubrication=lubrication, viscosity_cSt=nu * 1e6),
             "warnings": list(dict.fromkeys([*notes, *notes_of(bearing)]))}
     doc = {**info, **cases[0], **mounted, **echo} if len(cases) == 1 else {**info, "cases": cases, **mounted, **echo}
     return doc, m
@@ -237,6 +244,9 @@ def _torque(radial_load, axial_load, speed, model, bearing, bearing_file, catalo
         mean_diameter,
         static_load_rating,
     )
+    if b.type not in ("radial", "angular"):  # the handbook constants are for these two types only
+        raise InputError(f"model: the {model} model's handbook constants are for deep-groove and angular-contact "
+                         f"bearings; {b.designation!r} is a {b.type} bearing: give --model skf")
     fr, fa, n = _cases(radial_load, axial_load, speed)
     _check_speed(b, n)
     angle = b.contact_angle if b.type == "angular" else None
@@ -414,14 +424,23 @@ def _skf_bearing(b, series):
     never taken as 'not given'."""
     from .. import friction
 
-    if b.type != "radial":  # angular contact: SKF's constants of the type (40 deg; others refused there)
+    if b.type == "self-aligning":  # SKF's constants by self-aligning series (table 3b)
+        value = series if series is not None else b.series
+        known = list(friction.SELF_ALIGNING_CONSTANTS)
+        if value is None or value.strip() not in known:
+            raise InputError(f"series must be one of {known} (SKF's self-aligning series) for {b.designation!r}, "
+                             f"got {value!r}")
+        return dataclasses.replace(b, series=value.strip())
+    if b.type not in ("radial", "double-row-radial"):  # SKF's constants of the type (single row: 40 deg)
         if series is not None:
             raise InputError(f"series: --series names SKF's deep-groove series; {b.designation!r} is {b.type}, "
                              f"whose constants are SKF's for its type")
-        try:  # the model, not a field, is what does not apply (the web page leaves the section out)
-            friction.angular_contact_constants(b.contact_angle)
-        except InputError as exc:
-            raise InputError(f"model: {exc}") from None
+        design = friction.SKF_BEARING_TYPES[b.type][0]
+        if design not in ("thrust",):
+            try:  # the model, not a field, is what does not apply (the web page leaves the section out)
+                friction.angular_contact_constants(b.contact_angle, design=design)
+            except InputError as exc:
+                raise InputError(f"model: {exc}") from None
         return b
     known = list(friction.DEEP_GROOVE_CONSTANTS)
     for name, value in (("series", series), (f"series of {b.designation!r}", b.series)):
@@ -447,15 +466,15 @@ def _skf_torque(b, fr, fa, n, viscosity, lubrication, oil=(None,) * 4, bath=(Non
     nu = lubricant_viscosity(viscosity, *oil, required=True).viscosity
     kw = {}
     if lubrication == "oil-bath":
-        if bath[0] is None or bath[1] is None:
-            raise InputError("oil-level: --lubrication oil-bath needs --oil-level (e.g. '5 mm') and "
-                             "--drag-loss-factor (V_M of SKF's diagram at H/d_m)")
+        if bath[0] is None:
+            raise InputError("oil-level: --lubrication oil-bath needs --oil-level (e.g. '5 mm'); V_M follows from "
+                             "SKF's diagram at H/d_m (--drag-loss-factor overrides it)")
         h = inp.parse_length(bath[0], "oil-level", zero=True)
         dm = b.mean_diameter
         if h > dm / 2:
             raise InputError(f"oil-level must be <= d_m/2 = {dm / 2 * 1e3:g} mm [mm] (at most up to the bearing's "
                              f"centre), got {h * 1e3:g} mm")
-        if not 0.0 <= bath[1] <= 1.0:
+        if bath[1] is not None and not 0.0 <= bath[1] <= 1.0:
             raise InputError(f"drag-loss-factor must be in [0, 1] [-] (V_M of SKF's diagram), got {bath[1]:g}")
         kw = {"oil_level": h, "drag_loss_factor": bath[1]}
     elif bath[0] is not None or bath[1] is not None:
@@ -470,6 +489,10 @@ def _skf_torque(b, fr, fa, n, viscosity, lubrication, oil=(None,) * 4, bath=(Non
              for i in range(len(moments))]
     info = {"bearing": b.designation, "type": b.type, "model": "skf", "lubrication": lubrication,
             "viscosity_cSt": float(tables.significant(nu * 1e6)[0])}
+    if m.drag_loss_factor is not None:  # the oil bath's V_M: given, or SKF's diagram at H/d_m
+        info.update(oil_level_mm=kw["oil_level"] * 1e3, drag_loss_factor=float(m.drag_loss_factor),
+                    drag_loss_factor_source="given" if bath[1] is not None else
+                    "SKF's diagram at H/d_m (ball bearings; bearinglab.friction.drag)")
     echo = {"inputs": _echo(b, fr, fa, n, model="skf", lubrication=lubrication, viscosity_cSt=nu * 1e6),
             "warnings": notes}
     doc = {**info, **cases[0], **echo} if len(cases) == 1 else {**info, "cases": cases, **echo}
@@ -586,4 +609,24 @@ def _with_operating_clearance(doc, parsed, bearing, speeds):
     note = (f"operating clearance: the {doc['model']} friction model does not depend on the clearance; "
             f"operating_clearance_um is reported, the torque is the same without the mounting inputs")
     head = {k: v for k, v in doc.items() if k not in ("inputs", "warnings")}
-    return {**head, **mounted, "inputs": doc["inputs"], "warnings": [*doc.get("warnings", []), note]}
+    preloaded, pre_note = _preloaded(bearing, mounted["operating_clearance_um"] * 1e-6, doc["model"])
+    notes = [*doc.get("warnings", []), *([pre_note] if pre_note else []), note]
+    return {**head, **mounted, **preloaded, "inputs": doc["inputs"], "warnings": notes}
+
+
+def _preloaded(bearing, clearance, model):
+    """Issue 30: the preload of a negative operating clearance (:mod:`._preload`), which the friction
+    models leave out; without the bearing's ball set, the warning without its numbers."""
+    from ..errors import InputError as _InputError
+    from . import _preload
+
+    if not clearance <= 0:
+        return {}, None
+    what = f"{model} friction model"
+    try:
+        return _preload.report(bearing.replace(radial_clearance=clearance),
+                               source="the operating clearance from the fits and temperatures", model=what)
+    except _InputError:  # no ball set (a handbook bearing given by its envelope)
+        return {}, (f"the operating clearance from the fits and temperatures is {clearance * 1e6:.3g} um: the "
+                    f"bearing runs preloaded (its ball loads need the ball set, which is not known here); the "
+                    f"{what} takes the external loads only and leaves the preload's ball loads out")

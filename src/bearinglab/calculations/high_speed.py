@@ -23,6 +23,7 @@ from ..errors import ConvergenceError, InputError, ValidityWarning
 from . import _mounting, _rollers
 from . import _reading as inp
 from ._failures import failures
+from ._finite import finite
 
 __all__ = ["HighSpeedResult", "compute", "document", "figure"]
 
@@ -53,6 +54,7 @@ class HighSpeedResult(NamedTuple):
     """The speeds of the grid. [rad/s]"""
 
 
+@finite('high-speed')
 def compute(parsed, *, bearing_file=None, catalog=None, execution=None, check=None):
     """Solve a high-speed request.
 
@@ -75,9 +77,15 @@ def compute(parsed, *, bearing_file=None, catalog=None, execution=None, check=No
     """
     from .. import limits, parallel, tables
     from ..units import RPM
+    from . import _preload
+    from .load_distribution import clearance_source
+
     with failures(parsed, options=False):  # messages in the command line's words (_failures)
         _rollers.check_model(parsed, bearing_file=bearing_file, catalog=catalog)  # ball bearings only
         b = inp.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
+        from ..bearing import check_model
+
+        check_model(b, "high-speed")
         options = _model_options(inp.value(parsed, "solver", "newton"), inp.value(parsed, "raceway_control", "outer"),
                                  inp.value(parsed, "constants", "mass"),
                                  inp.value(parsed, "gyroscopic_sign", "physical"), inp.text(parsed, "reduced_modulus"))
@@ -91,6 +99,9 @@ def compute(parsed, *, bearing_file=None, catalog=None, execution=None, check=No
         context = execution(single) if execution is not None else contextlib.nullcontext(parallel.Execution())
         with context as ex:
             state, notes = _solve(b, loads, speeds, options, ex)
+        preloaded, note = _preload.report(b, source=clearance_source(mounted, inp.text(parsed, "radial_clearance")))
+        if note:  # issue 30: solved by the 5-DOF model with the rings held concentric (quasistatic.thrust)
+            notes.insert(0, note)
         notes += limits.high_speed_warnings(b, state)
         cols = tables.high_speed(state)
         rows = tables.rows(cols)
@@ -100,13 +111,14 @@ def compute(parsed, *, bearing_file=None, catalog=None, execution=None, check=No
                                solver=options["method"], reduced_modulus_GPa=None if reduced is None else reduced / 1e9)
         if single:  # the inputs as given, without the noise of the unit conversions
             echo.update(inp.inputs_echo(b, axial_load_N=float(loads[0]), speed_rpm=float(speeds[0]) / RPM))
-            doc = dict(rows[0], **echo, **mounted, warnings=list(notes))
+            doc = dict(rows[0], **echo, **mounted, **preloaded, warnings=list(notes))
         else:
             doc = dict(echo, **inp.inputs_echo(b, axial_load_N=loads.tolist(), speed_rpm=(speeds / RPM).tolist()),
-                       **mounted, cases=rows, warnings=list(notes))
+                       **mounted, **preloaded, cases=rows, warnings=list(notes))
     return HighSpeedResult(inp.notes_in(doc, b), state, cols, b, notes, options, speeds)
 
 
+@finite('high-speed')
 def document(parsed, *, bearing_file=None, catalog=None):
     """The document of ``bearinglab high-speed ... --json`` for a request (solved serially).
 

@@ -23,6 +23,7 @@ import warnings
 
 from ..errors import InputError
 from ._failures import failures
+from ._finite import finite
 from ._inputs import (
     FREEDOMS,
     choice,
@@ -49,6 +50,7 @@ MOUNTING = ("shaft_fit", "housing_fit", "shaft_interference", "housing_interfere
             "shaft_temperature", "housing_temperature")
 
 
+@finite('load-distribution')
 def document(parsed, *, catalog=None, bearing_file=None, speeds=False):
     """The document of ``bearinglab load-distribution ... --json`` for a checked request.
 
@@ -78,7 +80,7 @@ def document(parsed, *, catalog=None, bearing_file=None, speeds=False):
     from .. import tables
     from ..quasistatic import combined
     from ..units import parse_quantity
-    from . import _mounting, _rollers
+    from . import _mounting, _preload, _rollers
 
     v, given = parsed.values, parsed.given
 
@@ -92,6 +94,9 @@ def document(parsed, *, catalog=None, bearing_file=None, speeds=False):
         b = resolve_bearing(text("bearing"), bearing_file, catalog, v.get("balls"), *map(text, _GEOMETRY),
                             v.get("inner_conformity"), v.get("outer_conformity"), text("contact_angle"),
                             text("radial_clearance"), text("ball_material"))
+        from ..bearing import check_model
+
+        check_model(b, "load-distribution")  # the types the model covers (issue 30): a refusal in one line
         notes = _catalog.provenance_notes(b)
         loads = five_loads(*map(text, _LOADS))
         held = _held([text(n.replace("-", "_")) for _, _, n, _ in _FREEDOMS],
@@ -105,11 +110,16 @@ def document(parsed, *, catalog=None, bearing_file=None, speeds=False):
     r, caught = solve(combined.combined_analysis, b, cases, w, first_ball_angle=phi0, stiffness_at=stiffness_at,
                       prescribed_displacement=held)
     caught = plausibility(b, np.reshape(r.loads, (-1, 5)), r, [*r.warnings, *caught])
+    flat = np.reshape(r.loads, (-1, 5))
+    preloaded, note = _preload.report(b, flat[0] if bool(np.all(r.converged)) else None, float(w[0]),
+                                      source=clearance_source(mounted, text("radial_clearance")))
+    if note:
+        caught = [note, *caught]
     docs = []
     for k in range(w.size):
-        case = _case(r, k)
+        case = resolved(_case(r, k), b.require("pitch_diameter"))
         docs.append({**with_takeup(tables.load_distribution(case), takeup_um(b),
-                                   _reactions(np.reshape(r.reactions, (-1, 5))[k], held)), **mounted,
+                                   _reactions(np.reshape(r.reactions, (-1, 5))[k], held)), **mounted, **preloaded,
                      "inputs": inputs(b, loads, w[k], phi0, stiffness_at=stiffness_at, **_prescribed_echo(held)),
                      "warnings": caught})
     return json.loads(tables.json_text(with_notes(docs[0] if w.size == 1 else docs, notes)))
@@ -212,6 +222,40 @@ def with_takeup(doc, takeup, reactions=None):
             if reactions is not None:
                 out["reactions"] = reactions
     return out
+
+
+def clearance_source(mounted, radial_clearance):
+    """How a bearing's operating clearance was given, for the preload warning."""
+    if mounted:
+        return "the operating clearance from the fits and temperatures"
+    return "the given radial clearance" if radial_clearance is not None else "the bearing's clearance"
+
+
+#: Below these fractions a displacement component (tilts at the pitch radius) or a stiffness coupling
+#: (against sqrt(k_ii k_jj)) is rounding where symmetry makes it zero: far below the solver's resolution
+#: (relative residual 1e-12, so 1e-12 of the displacement times the condition) and far below any
+#: coupling the geometry makes (1e-6 and up), printed as 0 so that a document reads the same on any CPU.
+_ZERO_DISPLACEMENT, _ZERO_COUPLING, _ZERO_ANGLE = 1e-9, 1e-10, 1e-12
+
+
+def resolved(case, pitch_diameter):
+    """One case with the values below the solver's resolution (symmetry's zeros) set to 0.0."""
+    import numpy as np
+
+    u = np.asarray(case.displacement, dtype=float)
+    if np.all(np.isfinite(u)):
+        arm = np.array([1.0, 1.0, 1.0, pitch_diameter / 2.0, pitch_diameter / 2.0])
+        size = np.max(np.abs(u * arm))
+        u = np.where(np.abs(u * arm) <= _ZERO_DISPLACEMENT * size, 0.0, u)
+    k = np.asarray(case.stiffness, dtype=float)
+    if np.all(np.isfinite(k)):
+        d = np.sqrt(np.abs(np.diagonal(k)))
+        k = np.where(np.abs(k) <= _ZERO_COUPLING * d[:, None] * d[None, :], 0.0, k)
+    out = dict(vars(case), displacement=u, stiffness=k)
+    for name in ("contact_angle_inner", "contact_angle_outer"):
+        a = np.asarray(out[name], dtype=float)
+        out[name] = np.where(np.abs(a) <= _ZERO_ANGLE, 0.0, a)
+    return types.SimpleNamespace(**out)
 
 
 def _case(r, k):

@@ -17,10 +17,12 @@ from ..errors import InputError
 from . import _reading as inp
 from . import _rollers
 from ._failures import failures
+from ._finite import finite
 
 __all__ = ["document"]
 
 
+@finite(None)
 def document(parsed, *, bearing_file=None, catalog=None):
     """The document of ``bearinglab axial-angle|stand-load ... --json`` for a request.
 
@@ -40,6 +42,9 @@ def document(parsed, *, bearing_file=None, catalog=None):
     with failures(parsed, options=False):  # messages in the command line's words (_failures)
         _rollers.check_model(parsed, bearing_file=bearing_file, catalog=catalog)  # ball bearings only
         b = inp.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
+        from ..bearing import check_model
+
+        check_model(b, "axial-angle")
         out = (_axial_angle if parsed.calculation.name == "axial-angle" else _stand_load)(parsed, b)
     return inp.notes_in(out, b)
 

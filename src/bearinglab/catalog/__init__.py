@@ -485,9 +485,13 @@ def get(name, *, catalog=None, clearance="mean"):
         return builtin()[_lookup(builtin(), key)]
     from . import _rollers
 
-    roller = _rollers.lookup(key)  # the built-in roller bearings (data/roller_series.csv)
-    if roller is not None:
+    roller = _rollers.lookup(key)  # the built-in roller bearings (data/roller_series.csv), as written
+    if roller is not None and _rollers.lookup(roller) == roller and roller == _rollers.lookup(key) and \
+            key.lower().replace(" ", "").replace("-", "") == roller.lower().replace(" ", ""):  # not an alias
         return _rollers.build(roller)
+    resolved = _rollers.resolve(key)  # a roller designation with SKF's suffixes (NU 208 ECJ/C3, 22208 EK)
+    if resolved is not None:
+        return _rollers.build(*resolved)
     if key in _series.records():
         return _series.build(key, clearance=clearance)
     try:
@@ -497,7 +501,7 @@ def get(name, *, catalog=None, clearance="mean"):
     except InputError as exc:
         if "is not a designation" not in str(exc):
             raise
-    known = sorted(set(user) | set(builtin()) | set(_series.records()))
+    known = sorted(set(user) | set(builtin()) | set(_series.records()) | set(_rollers.records()))
     raise CatalogError(f"bearing: unknown name {key!r}; {_suggestions(key, known)}")
 
 
@@ -512,27 +516,52 @@ def provenance_notes(bearing):
     Returns
     -------
     list of str
-        One note naming the estimated fields and how to give measured values, and one for a user entry
-        that overrides a built-in bearing; empty when there is nothing to say.
+        One note naming the estimated fields once and how to give measured values (at most two lines of
+        80 columns after ``warning:``), one where another maker's data answers the designation, one for
+        a user entry that overrides a built-in bearing; empty when there is nothing to say.
 
     Examples
     --------
     >>> provenance_notes(get("B218"))
     []
-    >>> print(provenance_notes(get("6208"))[0][:60])
-    6208: n_balls, ball_diameter, pitch_diameter, inner_conformi
+    >>> print(provenance_notes(get("6208"))[0])
+    6208: ball set, conformities, contact angle estimated, not published (docs: 'Estimated internal geometry'); measured values: --bearing-file
     """
     notes = []
     est = [f for f in getattr(bearing, "estimated_fields", ()) if f]
-    if est:
-        notes.append(f"{bearing.designation}: {', '.join(est)} estimated, not published (bearinglab.estimation; "
-                     "its error is in the user guide, 'Estimated internal geometry'): results computed from "
-                     "them are estimates; give measured values in a user catalog (--catalog FILE) or a "
-                     "--bearing-file, or inline (--balls, --ball-diameter, ...)")
-    note = getattr(bearing, "sources", {}).get("catalog")
-    if note:
-        notes.append(f"{bearing.designation}: {note}")
+    if est and hasattr(bearing, "rollers"):  # a RollerBearing: rules and measured error of its own
+        name = bearing.designation if len(bearing.designation or "") <= 20 else "the bearing"
+        notes.append(f"{name}: {_estimated_words(est)} estimated or derived by a rule, not published (docs: "
+                     "'Roller bearings, estimated internal geometry'); measured values: a user catalog")
+    elif est:
+        # at most two lines of 80 columns after "warning: " (issue 30): a long name (a designation with the
+        # inline values that changed it) is said once, in the result's title, not here
+        name = bearing.designation if len(bearing.designation or "") <= 20 else "the bearing"
+        notes.append(f"{name}: {_estimated_words(est)} estimated, not published (docs: 'Estimated internal "
+                     "geometry'); measured values: --bearing-file")
+    sources = getattr(bearing, "sources", {})
+    for key in ("maker", "catalog"):
+        if sources.get(key):
+            notes.append(f"{bearing.designation}: {sources[key]}")
     return notes
+
+
+# groups of estimated fields named once in the note (the whole ball set, both conformities)
+_FIELD_GROUPS = ((("n_balls", "ball_diameter", "pitch_diameter"), "ball set"),
+                 (("inner_conformity", "outer_conformity"), "conformities"),
+                 (("contact_angle",), "contact angle"), (("radial_clearance",), "clearance"))
+
+
+def _estimated_words(fields):
+    """The estimated fields, a whole group by its name (``ball set``), the others by their own."""
+    left, words = list(dict.fromkeys(fields)), []
+    for group, word in _FIELD_GROUPS:
+        if all(f in left for f in group) and (len(group) > 1 or word != "clearance" or "contact_angle" not in fields):
+            words.append(word)
+            left = [f for f in left if f not in group]
+    # the clearance of an angular bearing follows from its estimated angle and conformities: named once
+    words += [f for f in left if f != "radial_clearance" or "contact angle" not in words]
+    return ", ".join(words)
 
 
 def details(name):
@@ -547,16 +576,26 @@ def details(name):
     -------
     dict or None
         ``row`` (the catalog row's name), ``chamfer_mm``, ``reference_speed_rpm``, ``limiting_speed_rpm``,
-        ``mass_kg`` (None where the maker gives none), ``maker_designation``; None for a bearing that is
-        not in the standard series.
+        ``mass_kg`` (None where the maker gives none), ``maker_designation``; a roller bearing adds its
+        widths, raceway diameters, ISO 355 series, cages and aliases (:func:`_rollers.details`); None for a
+        bearing that is not in the standard series.
 
     Examples
     --------
     >>> details("6208-2Z")["chamfer_mm"]
     1.1
     """
-    from . import _series
+    from . import _rollers, _series
 
+    roller = _rollers.lookup(name)
+    if roller is None:
+        try:
+            resolved = _rollers.resolve(name)
+        except (CatalogError, InputError):
+            resolved = None
+        roller = resolved and resolved[0]
+    if roller is not None:  # a built-in roller bearing (data/roller_series.csv)
+        return _rollers.details(roller)
     row = str(name).strip() if str(name).strip() in _series.records() else _series.row_name(name)
     return None if row is None else {"row": row, **_series.details(row)}
 
@@ -568,38 +607,58 @@ def search(*, bore=None, outside_diameter=None, width=None, type=None, series=No
     ----------
     bore, outside_diameter, width : float, optional
         d, D, B to match (within ``tolerance``). [m]
-    type : {"deep-groove", "angular"}, optional
-        Bearing type.
+    type : str, optional
+        Bearing type as listings show it: ``deep-groove`` (or ``radial``), ``angular``, ``four-point``,
+        ``double-row-angular``, ``double-row-radial``, ``self-aligning``, ``thrust``, ``cylindrical``,
+        ``tapered``, ``spherical`` (the types of the rows); None: every type.
     series : str, optional
-        Series such as ``"62"``, ``"618"``, ``"72"`` (every angle code), ``"72B"``, ``"79C"``.
+        Series such as ``"62"``, ``"618"``, ``"72"`` (every angle code), ``"72B"``, ``"79C"``; of roller
+        bearings ``"2"``, ``"22"`` (cylindrical), ``"302"``, ``"322"`` (tapered), ``"222"`` (spherical).
     tolerance : float
         Allowed difference of each dimension. [m]
 
     Returns
     -------
     list of dict
-        One per bearing: ``name``, ``type`` (``deep-groove`` or ``angular``), ``series``, ``bore_mm``,
-        ``outside_diameter_mm``, ``width_mm``, ``contact_angle_deg``, ``dynamic_load_rating_kN``,
-        ``static_load_rating_kN``, ``maker_designation``; ordered by bore, then outside diameter.
+        One per bearing: ``name``, ``type`` (``deep-groove``, ``angular``, ``thrust`` ...,
+        ``cylindrical``, ``tapered``, ``spherical``), ``series``, ``bore_mm``, ``outside_diameter_mm``, ``width_mm`` (T of a tapered
+        bearing), ``contact_angle_deg`` (a tapered bearing's derived from its e), ``dynamic_load_rating_kN``,
+        ``static_load_rating_kN``, ``maker_designation``; ordered by bore, then outside diameter, ball
+        bearings before roller bearings of one size.
 
     Examples
     --------
-    >>> [r["name"] for r in search(bore=0.040, outside_diameter=0.080)]
-    ['6208', '7208 BE', '7208 A', '7208 B', '7208 C', '7208 ACD']
+    >>> [r["name"] for r in search(bore=0.040, outside_diameter=0.080, type="angular")]
+    ['7208 BE', '7208 A', '7208 B', '7208 C', '7208 ACD', 'S 6208 C', 'S 6208 E']
+    >>> [(r["name"], r["type"]) for r in search(bore=0.040, outside_diameter=0.080, width=0.018, series="QJ2")]
+    [('QJ 208', 'four-point')]
+    >>> [(r["name"], r["type"]) for r in search(bore=0.040, outside_diameter=0.080, series="22")][:2]
+    [('2208', 'self-aligning'), ('NU 2208 ECP', 'cylindrical')]
     """
-    from . import _series
+    from . import _rollers, _series
 
+    roller_types = (None, *_rollers.TYPES)
+    ball_types = _series.types()
+    if type not in roller_types and type not in ball_types:
+        valid = [t for t in ball_types if t != "radial"] + list(_rollers.TYPES)
+        raise InputError(f"type must be one of {valid}, got {type!r}")
+    rollers = [] if type not in roller_types else [  # the built-in roller bearings (data/roller_series.csv)
+        _rollers.entry(n) for n in _rollers.search(bore=bore, outside_diameter=outside_diameter, width=width,
+                                                   type=type, series=series, tolerance=tolerance)]
+    if type in _rollers.TYPES:
+        return sorted(rollers, key=lambda r: (r["bore_mm"], r["outside_diameter_mm"]))
     out = []
     for name in _series.search(bore=bore, outside_diameter=outside_diameter, width=width, type=type,
                                series=series, tolerance=tolerance):
         r = _series.records()[name]
-        out.append({"name": name, "type": "deep-groove" if r["type"] == "radial" else "angular",
+        out.append({"name": name, "type": _series.display_type(r["type"]),
                     "series": r["series"], "bore_mm": r["bore_mm"], "outside_diameter_mm": r["outside_diameter_mm"],
                     "width_mm": r["width_mm"], "contact_angle_deg": r["contact_angle_deg"],
                     "dynamic_load_rating_kN": r["dynamic_load_rating_kN"],
                     "static_load_rating_kN": r["static_load_rating_kN"], "maker_designation": r["maker_designation"]})
     order = {n: i for i, n in enumerate(_series.records())}
-    return sorted(out, key=lambda r: (r["bore_mm"], r["outside_diameter_mm"], order[r["name"]]))
+    order.update({r["name"]: len(order) + i for i, r in enumerate(rollers)})
+    return sorted(out + rollers, key=lambda r: (r["bore_mm"], r["outside_diameter_mm"], order[r["name"]]))
 
 
 def _suggestions(name, known):
@@ -663,9 +722,9 @@ def names(*, catalog=None):
     >>> "B218" in names() and "7218B" not in names()
     True
     """
-    from . import _series
+    from . import _rollers, _series
 
     seen = {}
     for name, b in _all(catalog).items():
         seen.setdefault(id(b), name)
-    return sorted(set(seen.values()) | set(_series.records()))
+    return sorted(set(seen.values()) | set(_series.records()) | set(_rollers.records()))

@@ -6,6 +6,7 @@ COMMANDS   the ``catalog`` command group, by name (the application adds it)
 """
 
 import re
+from typing import Annotated
 
 import typer
 
@@ -33,8 +34,9 @@ _FIELD_OF_KEY = {
     "total_curvature_B": "inner_conformity", "groove_distance_A_mm": "inner_conformity",
     "gamma": "ball_diameter", "contact_angle_deg": "contact_angle", "axial_play_mm": "inner_conformity",
     "radial_clearance_um": "radial_clearance",
+    "rollers": "rollers", "roller_diameter_mm": "roller_diameter", "roller_length_mm": "roller_length",
 }
-_LENGTH = re.compile(r"^\s*([0-9]*\.?[0-9]+(?:[eE][-+]?\d+)?)\s*(mm|m|um|µm|in)?\s*$")
+_LENGTH = re.compile(r"^\s*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*(mm|m|um|µm|in)?\s*$")
 _TO_M = {"mm": 1e-3, None: 1e-3, "m": 1.0, "um": 1e-6, "µm": 1e-6, "in": 0.0254}
 
 
@@ -56,38 +58,84 @@ def _length(text, name):
     return parse_length(text, name)
 
 
+def _two_lines(word):
+    """A long type word broken after its last hyphen (``double-row-`` over ``angular``), so that the
+    list's table fits 80 columns."""
+    head, hyphen, tail = word.rpartition("-")
+    return f"{head}-\n{tail}" if hyphen and len(word) > 10 else word
+
+
+_TYPE_HELP = ("deep-groove, angular, four-point, double-row-angular, double-row-radial, self-aligning or "
+              "thrust (any type word of the catalog).")
+
+
 @catalog_app.command("list")
-def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False):
-    """List the bearings known."""
+def catalog_list(catalog: CatalogFile = None, json_out: JsonFlag = False,
+                 type: Annotated[str | None, typer.Option("--type", help=_TYPE_HELP)] = None):
+    """List the bearings known (of one type with --type)."""
     from .. import catalog as _catalog
     from .. import tables
     from ..catalog import _series
     if catalog is not None:
         check_input(catalog, "catalog")
+    known_types = _series.types()
+    if type is not None and type not in known_types:
+        raise InputError(f"type must be one of {[t for t in known_types if t != 'radial']}, got {type!r}")
     known = _catalog.aliases(catalog=catalog)
     listing = _series.listing()
     user = set(_catalog._user_entries(catalog))
     rows = []
+    from ..catalog import _rollers
     for name in _catalog.names(catalog=catalog):
-        if name in listing and name not in user and not _catalog._is_builtin_entry(name):
+        if name in _rollers.records() and name not in user:  # built-in roller bearings: the set as estimated
+            rows.append(_rollers.listing(name))
+        elif name in listing and name not in user and not _catalog._is_builtin_entry(name):
             r = _series.records()[name]
             z, dw, dm, est = listing[name]
             rows.append({"name": name, "type": r["type"], "balls": z, "ball_diameter_mm": dw, "pitch_diameter_mm": dm,
                          "contact_angle_deg": r["contact_angle_deg"], "bore_mm": r["bore_mm"],
                          "outside_diameter_mm": r["outside_diameter_mm"], "aliases": [], "estimated": est})
         else:
-            rows.append(dict(tables.catalog_entry(name, _catalog.get(name, catalog=catalog)),
-                             aliases=known.get(name, []), estimated=False))
+            b = _catalog.get(name, catalog=catalog)
+            entry = (tables.catalog_entry(name, b) if not hasattr(b, "rollers") else  # a user's roller bearing
+                     {"name": name, "type": b.type, "rollers": b.rollers,
+                      "roller_diameter_mm": b.roller_diameter and b.roller_diameter * 1e3,
+                      "pitch_diameter_mm": b.pitch_diameter and b.pitch_diameter * 1e3,
+                      "contact_angle_deg": None if b.contact_angle is None else b.contact_angle * 57.29577951308232,
+                      "bore_mm": b.bore and b.bore * 1e3, "outside_diameter_mm": b.outside_diameter and
+                      b.outside_diameter * 1e3})
+            rows.append(dict(entry, aliases=known.get(name, []), estimated=False))
+    if type is not None:  # the row's own word (radial) or its listing word (deep-groove)
+        rows = [r for r in rows if known_types[type] in (r["type"], known_types.get(r["type"], r["type"]))]
     if json_out:
         emit_json(rows)
         return
-    # the aliases beside the name, in brackets: eight columns fit 80 (--json lists them apart)
-    table("Bearings", ["name (aliases)", "type", "Z", "D [mm]", "d_m [mm]", "α0 [deg]", "bore × OD [mm]"], [
-        [" ".join([r["name"], *(f"({', '.join(r['aliases'])})" for _ in r["aliases"][:1])]), r["type"],
-         f"{r['balls']}*" if r["estimated"] else (r["balls"] or ""),
-         _fmt(r["ball_diameter_mm"]) + ("*" if r["estimated"] else ""), _fmt(r["pitch_diameter_mm"]),
-         _fmt(r["contact_angle_deg"]), f"{_fmt(r['bore_mm'])} × {_fmt(r['outside_diameter_mm'])}"] for r in rows],
-          caption="* estimated ball set; catalog show NAME (or a designation) for every field and the ratings")
+    balls = [r for r in rows if "rollers" not in r]
+    if balls:
+        # the aliases beside the name, in brackets: eight columns fit 80 (--json lists them apart)
+        table("Bearings", ["name (aliases)", "type", "Z", "D [mm]", "d_m [mm]", "α0 [deg]", "bore × OD [mm]"], [
+            [" ".join([r["name"], *(f"({', '.join(r['aliases'])})" for _ in r["aliases"][:1])]), _two_lines(r["type"]),
+             f"{r['balls']}*" if r["estimated"] else (r["balls"] or ""),
+             _fmt(r["ball_diameter_mm"]) + ("*" if r["estimated"] else ""), _fmt(r["pitch_diameter_mm"]),
+             _fmt(r["contact_angle_deg"]), f"{_fmt(r['bore_mm'])} × {_fmt(r['outside_diameter_mm'])}"] for r in balls],
+              caption="* estimated ball set; catalog show NAME (or a designation) for every field and the ratings")
+    for kind in ("cylindrical", "tapered", "spherical"):  # one table per roller type: long designations fit 80
+        these = [r for r in rows if "rollers" in r and r["type"] == kind]
+        if not these:
+            continue
+        if kind == "spherical":  # no roller set: its load distribution is not modelled
+            table("Spherical roller bearings", ["name", "d × D [mm]", "tapered bore"], [
+                [r["name"], f"{_fmt(r['bore_mm'])} × {_fmt(r['outside_diameter_mm'])}", ", ".join(r["aliases"])]
+                for r in these], caption="ratings, life and friction only; catalog show NAME for every field")
+            continue
+        angle = ["α [deg]"] if kind == "tapered" else []
+        table(f"{kind.capitalize()} roller bearings", ["name", "Z", "D_we [mm]", "D_pw [mm]", *angle, "d × D [mm]"], [
+            [r["name"], f"{r['rollers']}*" if r["estimated"] and r["rollers"] else (r["rollers"] or ""),
+             _fmt(r["roller_diameter_mm"]) + ("*" if r.get("diameter_estimated", r["estimated"]) else ""),
+             _fmt(r["pitch_diameter_mm"]) + ("*" if r.get("diameter_estimated", r["estimated"]) else ""),
+             *([_fmt(r["contact_angle_deg"])] if angle else []),
+             f"{_fmt(r['bore_mm'])} × {_fmt(r['outside_diameter_mm'])}"] for r in these],
+              caption="* estimated (the models say so); catalog show NAME for every field and its source")
 
 
 def catalog_show(given, *, catalog: CatalogFile = None, json_out: JsonFlag = False):

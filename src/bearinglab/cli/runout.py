@@ -390,6 +390,8 @@ def _check_write_worst(count, metric, directory):
     from .. import runout
     if count is not None and count < 1:
         raise InputError(f"write-worst must be >= 1 [-], got {count}")
+    if count is not None and count > _bounds.MAX_SAMPLES:  # files of samples the study cannot hold
+        raise InputError(f"write-worst must be <= {_bounds.MAX_SAMPLES} [-] (the most samples), got {count}")
     if metric not in runout.METRICS:
         raise InputError(f"worst-by must be one of {list(runout.METRICS)}, got {metric!r}")
     if directory is not None and count is None:

@@ -201,6 +201,9 @@ def film_analysis(bearing, loads, shaft_speed, dynamic_viscosity, pressure_visco
     >>> print(f"h_min = {r.minimum_film * 1e6:.3f} um, Lambda = {r.minimum_film_parameter:.2f}, {r.regime}")
     h_min = 0.887 um, Lambda = 6.27, full film
     """
+    from ..bearing import check_model
+
+    check_model(bearing, "film")
     from ..quasistatic.combined import combined_analysis
 
     if loads_at not in LOADS_AT:

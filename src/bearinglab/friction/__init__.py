@@ -12,8 +12,10 @@ SKF four-term model (:mod:`.skf`)
 skf, skf_for_bearing                   M = M_rr + M_sl + M_seal + M_drag
 series_constants, bearing_series, seal_constants, sliding_friction_coefficient   its parts and tables
 angular_contact_constants              SKF's constants of an angular-contact type (single row 40 deg, ...)
+self_aligning_constants                SKF's constants of a self-aligning series (12, 13, 22, 23, ...)
 inlet_shear_heating_factor, replenishment_factor   Phi_ish and Phi_rs
 drag_moment                            M_drag of an oil bath
+drag_loss_factor (:mod:`.drag`)        V_M of SKF's diagram at H/d_m, for ball and roller bearings
 
 SKF model of roller bearings (:mod:`.skf_roller`, issue 32)
 -----------------------------------------------------------
@@ -54,13 +56,16 @@ from .classic import (
     static_load_factors,
     two_term,
 )
+from .drag import MAX_LEVEL_RATIO, drag_loss_factor, drag_loss_table
 from .skf import (
     ANGULAR_CONTACT_CONSTANTS,
     ANGULAR_SEAL_CONSTANTS,
     DEEP_GROOVE_CONSTANTS,
     LUBRICATION_METHODS,
     SEAL_CONSTANTS,
+    SELF_ALIGNING_CONSTANTS,
     SKF_BEARING_TYPES,
+    THRUST_BALL_CONSTANTS,
     SealConstants,
     SKFConstants,
     SKFTorque,
@@ -70,6 +75,7 @@ from .skf import (
     inlet_shear_heating_factor,
     replenishment_factor,
     seal_constants,
+    self_aligning_constants,
     series_constants,
     skf,
     skf_for_bearing,
@@ -100,6 +106,7 @@ __all__ = [
     "DEEP_GROOVE_CONSTANTS",
     "HANDBOOK_FRICTION_COEFFICIENTS",
     "LUBRICATION_METHODS",
+    "MAX_LEVEL_RATIO",
     "MODELS",
     "RADIAL_LOAD_TERM",
     "RADIAL_STATIC_FACTORS",
@@ -107,9 +114,11 @@ __all__ = [
     "ROLLER_SEAL_CONSTANTS",
     "ROLLER_TYPE_CONSTANTS",
     "SEAL_CONSTANTS",
+    "SELF_ALIGNING_CONSTANTS",
     "SKF_BEARING_TYPES",
     "SPHERICAL_CONSTANTS",
     "TAPERED_CONSTANTS",
+    "THRUST_BALL_CONSTANTS",
     "LoadTermConstants",
     "RollerConstants",
     "SKFConstants",
@@ -121,6 +130,8 @@ __all__ = [
     "bearing_series",
     "classic",
     "combined_branch_governs",
+    "drag_loss_factor",
+    "drag_loss_table",
     "drag_moment",
     "equivalent_static_load",
     "handbook_friction_coefficient",
@@ -133,6 +144,7 @@ __all__ = [
     "roller_drag_moment",
     "roller_series_constants",
     "seal_constants",
+    "self_aligning_constants",
     "series_constants",
     "skf",
     "skf_for_bearing",

@@ -10,14 +10,16 @@ Parts and tables
 SKFConstants               the geometry constants R1, R2, R3, S1, S2, S3 of a bearing series
 series_constants           the constants of a series (deep groove: SKF table, by series)
 angular_contact_constants  the constants of an angular-contact type (single row 40 deg, double row, four-point)
+self_aligning_constants    the constants of a self-aligning ball bearing series (12, 13, 22, 23, 112, 130, 139)
 bearing_series             the series of a designation ("6205-2RSH" -> "62", "61811-2RS1" -> "618")
 seal_constants             K_S1, beta, K_S2 of a seal type and outside diameter
 sliding_friction_coefficient   mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL
-drag_moment                M_drag of a ball bearing in an oil bath (SKF's drag losses)
+drag_moment                M_drag of a ball bearing in an oil bath (SKF's drag losses; V_M from the oil level,
+                           :func:`bearinglab.friction.drag.drag_loss_factor`)
 replenishment_factor       Phi_rs, the kinematic replenishment/starvation reduction factor
 inlet_shear_heating_factor Phi_ish, the inlet shear heating reduction factor
-DEEP_GROOVE_CONSTANTS, ANGULAR_CONTACT_CONSTANTS, SEAL_CONSTANTS, ANGULAR_SEAL_CONSTANTS,
-LUBRICATION_METHODS, SKF_BEARING_TYPES   the tables
+DEEP_GROOVE_CONSTANTS, ANGULAR_CONTACT_CONSTANTS, SELF_ALIGNING_CONSTANTS, THRUST_BALL_CONSTANTS,
+SEAL_CONSTANTS, ANGULAR_SEAL_CONSTANTS, LUBRICATION_METHODS, SKF_BEARING_TYPES   the tables
 
 The published model is in N, mm, rpm and mm^2/s with moments in N mm; the API is SI (N, m, rad/s,
 m^2/s, N m) and :func:`skf` converts its inputs and outputs once, in plain sight.
@@ -28,13 +30,16 @@ References
    for calculating the frictional moment (rolling, sliding, seal and drag moments; inlet shear heating
    and kinematic replenishment/starvation factors; the variables G_rr, G_sl of its table for radial
    bearings; the geometry constants of deep-groove ball bearings by series; the seal constants; the
-   drag losses of an oil bath, "Drag losses in oil bath lubrication", with the drag loss factor V_M read
-   from its diagram against H/d_m).
+   drag losses of an oil bath, "Drag losses in oil bath lubrication", with the drag loss factor V_M of its
+   diagram against H/d_m, digitised in :mod:`bearinglab.friction.drag`).
 .. [2] SKF, *General Catalogue* 6000/I RU (Russian edition, 2006), section "Friction" (Трение): table 3,
    p. 92 (geometry constants of angular-contact ball bearings: single row, double row, four-point
    contact), table 4, p. 96 (seal constants, RS1 seals of angular-contact ball bearings), table 5, p. 98
    (K_Z), and the worked example of a 22208 E bearing, pp. 104-105; section "Single row angular contact
-   ball bearings", p. 410 (SKF's single-row range: series 72 B and 73 B, 40 deg contact angle).
+   ball bearings", p. 410 (SKF's single-row range: series 72 B and 73 B, 40 deg contact angle); table 2a,
+   p. 91 (G_rr, G_sl of self-aligning ball bearings), table 2b, p. 92 (of thrust ball bearings), table 3,
+   p. 92 (thrust ball bearings: R1 = 1.03e-6, S1 = 1.6e-2) and table 3b, p. 93 (self-aligning ball
+   bearings by series: R1, R2, R3, S1, S2, S3).
 """
 
 from __future__ import annotations
@@ -48,6 +53,7 @@ import numpy as np
 
 from .._validate import check_nonnegative, check_positive
 from ..errors import InputError, ValidityWarning
+from .drag import drag_loss_factor as _drag_loss_factor
 
 __all__ = [
     "ANGULAR_CONTACT_CONSTANTS",
@@ -55,7 +61,9 @@ __all__ = [
     "DEEP_GROOVE_CONSTANTS",
     "LUBRICATION_METHODS",
     "SEAL_CONSTANTS",
+    "SELF_ALIGNING_CONSTANTS",
     "SKF_BEARING_TYPES",
+    "THRUST_BALL_CONSTANTS",
     "SKFConstants",
     "SKFTorque",
     "SealConstants",
@@ -65,6 +73,7 @@ __all__ = [
     "inlet_shear_heating_factor",
     "replenishment_factor",
     "seal_constants",
+    "self_aligning_constants",
     "series_constants",
     "skf",
     "skf_for_bearing",
@@ -130,11 +139,30 @@ ANGULAR_CONTACT_CONSTANTS = {
 #: tolerance within which a bearing's contact angle is taken to be it. [rad]
 SINGLE_ROW_CONTACT_ANGLE, _ANGLE_TOLERANCE = math.radians(40.0), math.radians(1.0)
 
-# Bearing type of the SKF model -> (constants of the angular-contact table or None for deep groove by
-# series, K_Z of the catalogue's table 5, p. 98: 3.1 deep groove, 4.4 single-row angular contact, 3.1
-# double-row angular contact and four-point contact).
+# SKF General Catalogue 6000/I RU (2006), "Friction", table 3b "Geometry constants for rolling and sliding
+# frictional moments of self-aligning ball bearings", p. 93 (its rows printed under the heading of table 3a
+# in the text copy, with six columns: R1, R2, R3, S1, S2, S3), by series.
+SELF_ALIGNING_CONSTANTS = {
+    "12": SKFConstants(3.25e-7, 6.51, 4.36e-3, 9.33, 2.43e-12, 2.43e-12),
+    "13": SKFConstants(3.11e-7, 5.76, 5.76e-3, 8.03, 3.52e-12, 3.52e-12),
+    "22": SKFConstants(3.13e-7, 5.54, 5.84e-3, 6.60, 3.12e-12, 3.12e-12),
+    "23": SKFConstants(3.11e-7, 3.87, 0.01, 4.35, 5.41e-12, 5.41e-12),
+    "112": SKFConstants(3.25e-7, 6.16, 4.33e-3, 8.44, 2.48e-12, 2.48e-12),
+    "130": SKFConstants(2.39e-7, 5.81, 7.25e-3, 7.98, 1.10e-12, 1.10e-12),
+    "139": SKFConstants(2.44e-7, 7.96, 4.51e-3, 12.11, 5.63e-13, 5.63e-13),
+}
+# Same catalogue, table 3, p. 92: thrust ball bearings, R1 = 1.03e-6, S1 = 1.6e-2 (no R2, S2: the variables
+# of table 2b, p. 92, take the axial load only).
+THRUST_BALL_CONSTANTS = SKFConstants(1.03e-6, 0.0, 1.6e-2, 0.0)
+
+# Bearing type of the SKF model -> (constants of the angular-contact table, "self-aligning" or "thrust", or
+# None for deep groove by series; K_Z of the catalogue's table 5, p. 98: 3.1 deep groove (single and double
+# row), 4.4 single-row angular contact, 3.1 double-row angular contact and four-point contact, 4.8
+# self-aligning, 3.8 thrust ball bearings).
 SKF_BEARING_TYPES = {"radial": (None, 3.1), "angular": ("single row", 4.4), "double-row-angular": ("double row", 3.1),
-                 "four-point": ("four-point", 3.1)}
+                     "four-point": ("four-point", 3.1), "double-row-radial": (None, 3.1),
+                     "self-aligning": ("self-aligning", 4.8), "thrust": ("thrust", 3.8)}
+_TWO_ROWS = ("double-row-angular", "double-row-radial", "self-aligning")
 
 
 class SealConstants(NamedTuple):
@@ -166,7 +194,7 @@ _ANGULAR_SEAL_LOWER = {"RS1": 30.0}
 
 # Seal and shield suffixes of a designation, one or two sides: contact seals (SKF RS, RS1, RSH, RSL, LS;
 # LLU, DDU elsewhere) and shields or non-contact seals (Z, ZZ, RZ, VV): "6205-2RSH", "6205-Z/C3", "6205ZZ".
-_SEALED_DESIGNATION = re.compile(r"^\s*[A-Z]*\d+(?:/\d+)?[A-Z]*?[-\s]?(?P<sides>2)?"
+_SEALED_DESIGNATION = re.compile(r"^\s*[A-Z]*[0-9]+(?:/[0-9]+)?[A-Z]*?[-\s]?(?P<sides>2)?"
                                  r"(?P<kind>RS[0-9A-Z]*|RZ|ZZ|Z|LS|LLU|LLB|DDU|VV)(?=$|[/\s-])", re.IGNORECASE)
 _NON_CONTACT = ("Z", "ZZ", "RZ", "VV")
 
@@ -200,11 +228,11 @@ def bearing_series(designation):
     ('618', '62', '160', '618')
     """
     text = str(designation).strip()
-    m = re.match(r"(\d+)\s*/", text)  # 618/500: the series before the slash
+    m = re.match(r"([0-9]+)\s*/", text)  # 618/500: the series before the slash
     if m:
         head = m.group(1)
     else:
-        m = re.match(r"(\d+)", text)
+        m = re.match(r"([0-9]+)", text)
         if not m:
             raise InputError(f"series cannot be read from the designation {designation!r}; give the series")
         head = m.group(1)[:-2]  # the last two digits are the bore code
@@ -236,6 +264,30 @@ def series_constants(series):
         raise InputError(f"series must be one of {list(DEEP_GROOVE_CONSTANTS)} (deep groove; for other "
                          f"bearings give constants=SKFConstants(...)), got {series!r}")
     return DEEP_GROOVE_CONSTANTS[key]
+
+
+def self_aligning_constants(series):
+    """Geometry constants of a self-aligning ball bearing series (SKF's table 3b).
+
+    Parameters
+    ----------
+    series : str
+        A key of :data:`SELF_ALIGNING_CONSTANTS` (``"12"``, ``"13"``, ``"22"``, ``"23"``, ...).
+
+    Returns
+    -------
+    SKFConstants
+
+    Examples
+    --------
+    >>> self_aligning_constants("12").r2
+    6.51
+    """
+    key = str(series).strip()
+    if key not in SELF_ALIGNING_CONSTANTS:
+        raise InputError(f"series must be one of {list(SELF_ALIGNING_CONSTANTS)} for a self-aligning ball bearing "
+                         f"(SKF's table 3b), got {series!r}")
+    return SELF_ALIGNING_CONSTANTS[key]
 
 
 def seal_constants(seal, outside_diameter, *, bearing_type="radial"):
@@ -431,7 +483,7 @@ def replenishment_factor(kinematic_viscosity, shaft_speed, bore, outside_diamete
     return np.exp(-LUBRICATION_METHODS[lubrication] * nu * n * (d + big) * np.sqrt(_KZ[bearing_type] / (2 * (big - d))))[()]
 
 
-def drag_moment(shaft_speed, kinematic_viscosity, bore, outside_diameter, oil_level, drag_loss_factor, *,
+def drag_moment(shaft_speed, kinematic_viscosity, bore, outside_diameter, oil_level, drag_loss_factor=None, *,
                 bearing_type="radial", rows=1):
     r"""Drag moment of a ball bearing turning in an oil bath (SKF model).
 
@@ -446,8 +498,8 @@ def drag_moment(shaft_speed, kinematic_viscosity, bore, outside_diameter, oil_le
     oil_level : array_like
         H, from the lowest point of the outer ring raceway to the oil surface; 0 <= H <= d_m/2 (the
         bearing's centre line: a higher level is refused). [m]
-    drag_loss_factor : array_like
-        V_M, read from SKF's diagram of the drag loss factor against H/d_m for ball bearings. [-]
+    drag_loss_factor : array_like, optional
+        V_M; by default SKF's ball-bearing curve at H/d_m (:func:`bearinglab.friction.drag.drag_loss_factor`). [-]
     bearing_type : {"radial", "angular", "double-row-angular", "four-point"}
         Deep groove (K_Z = 3.1), single-row angular contact (K_Z = 4.4), double-row angular or
         four-point contact (K_Z = 3.1).
@@ -477,13 +529,17 @@ def drag_moment(shaft_speed, kinematic_viscosity, bore, outside_diameter, oil_le
     >>> m = drag_moment(3000 * 2 * np.pi / 60, 20e-6, 25e-3, 52e-3, 5e-3, 0.0002)
     >>> print(f"{m * 1e3:.4f} N mm")
     0.9350 N mm
+
+    With V_M of SKF's diagram at H/d_m = 5/38.5:
+
+    >>> print(f"{drag_moment(3000 * 2 * np.pi / 60, 20e-6, 25e-3, 52e-3, 5e-3) * 1e3:.4f} N mm")
+    0.7273 N mm
     """
     n = np.abs(np.asarray(shaft_speed, dtype=float)) / _RPM
     nu = check_positive("kinematic_viscosity", kinematic_viscosity, "m^2/s") / _CST
     d = check_positive("bore", bore, "m") / _MM
     big = check_positive("outside_diameter", outside_diameter, "m") / _MM
     h = check_nonnegative("oil_level", oil_level, "m") / _MM
-    vm = check_nonnegative("drag_loss_factor", drag_loss_factor, "-")
     if bearing_type not in _KZ:
         raise InputError(f"bearing_type must be one of {list(_KZ)}, got {bearing_type!r}")
     if isinstance(rows, bool) or rows not in (1, 2):
@@ -492,6 +548,9 @@ def drag_moment(shaft_speed, kinematic_viscosity, bore, outside_diameter, oil_le
     if np.any(h > 0.5 * dm):
         raise InputError(f"oil_level must be <= d_m/2 = {float(np.min(0.5 * dm)):g} mm [mm] (at most up to the "
                          f"bearing's centre), got {float(np.max(h)):g} mm")
+    if drag_loss_factor is None:  # SKF's diagram, ball-bearing curve
+        drag_loss_factor = _drag_loss_factor(h * _MM, dm * _MM, "ball")
+    vm = check_nonnegative("drag_loss_factor", drag_loss_factor, "-")
     kz = _KZ[bearing_type]
     k_ball = rows * kz * (d + big) / (big - d) * 1e-12
     t = 2.0 * np.arccos((0.6 * dm - h) / (0.6 * dm))
@@ -522,11 +581,24 @@ class SKFTorque(NamedTuple):
     """mu_sl. [-]"""
     warnings: tuple = ()
     """The warnings raised (e.g. a sealed bearing without seal data, whose M_seal is left out), as messages."""
+    drag_loss_factor: object = None
+    """V_M of an oil bath's drag moment (given, or SKF's diagram at H/d_m); None for other lubrication. [-]"""
 
 
 def _load_variables(fr, fa, n, dm, c, bearing_type, c0):
-    """G_rr and G_sl of the SKF table for radial bearings (N, mm, rpm)."""
-    if bearing_type == "radial":
+    """G_rr and G_sl of the SKF tables 2a (radial bearings) and 2b (thrust bearings) (N, mm, rpm)."""
+    if bearing_type == "thrust":
+        if np.any(fr > 0):
+            raise InputError(f"radial_load must be 0 [N] for a thrust ball bearing (SKF's variables take the axial "
+                             f"load only), got {float(np.max(fr)):g} N")
+        return c.r1 * dm**1.83 * fa**0.54, c.s1 * dm**0.05 * fa ** (4 / 3)
+    if bearing_type == "self-aligning":
+        fg_r = c.r3 * dm**3.5 * n**2
+        fg_s = c.s3 * dm**3.5 * n**2
+        g_rr = c.r1 * dm**2 * (fr + fg_r + c.r2 * fa) ** 0.54
+        g_sl = c.s1 * dm**-0.12 * ((fr + fg_s) ** (4 / 3) + c.s2 * fa ** (4 / 3))
+        return g_rr, g_sl
+    if bearing_type in ("radial", "double-row-radial"):
         if np.any(fa > 0) and c0 is None:
             raise InputError("static_load_rating (C0) is needed for a deep-groove bearing under axial load")
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -567,13 +639,15 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
         Deep-groove series for the constants (see :func:`series_constants`).
     constants : SKFConstants, optional
         The geometry constants directly, in place of SKF's tables. [-]
-    bearing_type : {"radial", "angular", "double-row-angular", "four-point"}
-        Deep groove (K_Z = 3.1), single-row angular contact (K_Z = 4.4), double-row angular contact or
-        four-point contact (K_Z = 3.1); the angular types take SKF's constants of their type
-        (:func:`angular_contact_constants`) unless ``constants`` are given.
+    bearing_type : str
+        Deep groove (``radial``, ``double-row-radial``: K_Z = 3.1, constants by series), single-row
+        angular contact (K_Z = 4.4), double-row angular contact or four-point contact (K_Z = 3.1); the
+        angular types take SKF's constants of their type (:func:`angular_contact_constants`) unless
+        ``constants`` are given; ``self-aligning`` (K_Z = 4.8, constants by series,
+        :func:`self_aligning_constants`), ``thrust`` (K_Z = 3.8, :data:`THRUST_BALL_CONSTANTS`; axial
+        load only).
     lubrication : {"grease", "oil-air", "oil-jet", "oil-bath"}
-        Sets K_rs; an oil bath adds its drag moment (:func:`drag_moment`; needs ``oil_level`` and
-        ``drag_loss_factor``).
+        Sets K_rs; an oil bath adds its drag moment (:func:`drag_moment`; needs ``oil_level``).
     static_load_rating : float, optional
         C0, needed for a deep-groove bearing under axial load. [N]
     seal : str, optional
@@ -591,7 +665,7 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
     oil_level : float, optional
         Oil bath: H from the lowest point of the outer raceway. [m]
     drag_loss_factor : float, optional
-        Oil bath: V_M of SKF's diagram at H/d_m. [-]
+        Oil bath: V_M in place of SKF's diagram at H/d_m (:func:`bearinglab.friction.drag.drag_loss_factor`). [-]
     contact_angle : float, optional
         Nominal contact angle of a single-row angular-contact bearing, for SKF's constants (40 deg). [rad]
 
@@ -612,7 +686,11 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
     :math:`F_g = R_3 d_m^4 n^2`, :math:`G_{sl} = S_1 d_m^{0.26}((F_r + F_g)^{4/3} + S_2 F_a^{4/3})`,
     :math:`F_g = S_3 d_m^4 n^2`; F_a is the external axial load (SKF's footnote to its table of G_rr,
     G_sl). Double-row angular and four-point contact bearings take the same forms with the constants of
-    their type (SKF General Catalogue 6000/I RU, 2006, table 3). The seal moment is halved for one sealed side.
+    their type (SKF General Catalogue 6000/I RU, 2006, table 3). Self-aligning (table 2a):
+    :math:`G_{rr} = R_1 d_m^2 (F_r + F_g + R_2 F_a)^{0.54}`, :math:`F_g = R_3 d_m^{3.5} n^2`,
+    :math:`G_{sl} = S_1 d_m^{-0.12}((F_r + F_g)^{4/3} + S_2 F_a^{4/3})`, :math:`F_g = S_3 d_m^{3.5} n^2`;
+    thrust ball bearings (table 2b): :math:`G_{rr} = R_1 d_m^{1.83} F_a^{0.54}`,
+    :math:`G_{sl} = S_1 d_m^{0.05} F_a^{4/3}`. The seal moment is halved for one sealed side.
 
     Examples
     --------
@@ -626,9 +704,9 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
     if lubrication not in LUBRICATION_METHODS:
         raise InputError(f"lubrication must be one of {list(LUBRICATION_METHODS)}, got {lubrication!r}")
     bath = lubrication == "oil-bath"
-    if bath and (oil_level is None or drag_loss_factor is None):
-        raise InputError("oil_level: an oil bath needs the oil level H and the drag loss factor V_M (SKF's diagram "
-                         "at H/d_m) for its drag moment")
+    if bath and oil_level is None:
+        raise InputError("oil_level: an oil bath needs the oil level H for its drag moment (V_M follows from SKF's "
+                         "diagram at H/d_m; drag_loss_factor= overrides it)")
     if not bath and (oil_level is not None or drag_loss_factor is not None):
         raise InputError(f"oil_level: the oil level and drag loss factor belong to lubrication='oil-bath', not "
                          f"{lubrication!r}")
@@ -636,7 +714,13 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
         raise InputError(f"bearing_type must be one of {list(_KZ)}, got {bearing_type!r}")
     if constants is None:
         design = SKF_BEARING_TYPES[bearing_type][0]
-        if design is not None:  # angular contact: SKF's constants are by type, not by series
+        if design == "self-aligning":
+            if series is None:
+                raise InputError("give the self-aligning bearing's series (series=, e.g. '12') or its constants")
+            constants = self_aligning_constants(series)
+        elif design == "thrust":
+            constants = THRUST_BALL_CONSTANTS
+        elif design is not None:  # angular contact: SKF's constants are by type, not by series
             if series is not None:
                 raise InputError(f"series {series!r}: SKF's series constants are for deep-groove bearings; an "
                                  f"angular-contact bearing takes the constants of its type (no series=)")
@@ -663,12 +747,21 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
           else check_nonnegative("sliding_friction_coefficient", sliding_friction_coefficient, "-"))
     m_sl = g_sl * mu
     m_seal = _seal_moment(seal, seals, seal_diameter, seal_constants_override, outside_diameter, bearing_type)
+    if bath and bearing_type == "thrust":
+        raise InputError("lubrication: the drag loss of an oil bath is SKF's formula for radial ball bearings; a "
+                         "thrust ball bearing's is not in bearinglab (give lubrication='oil-jet' or 'grease')")
     m_drag = (drag_moment(omega, nu * _CST, d * _MM, big * _MM, oil_level, drag_loss_factor,
-                          bearing_type=bearing_type) / _MM if bath else 0.0)
+                          bearing_type=bearing_type, rows=2 if bearing_type in _TWO_ROWS else 1) / _MM
+              if bath else 0.0)
+    vm = None
+    if bath:  # the V_M used: the one given, else SKF's diagram (oil_level checked by drag_moment)
+        vm = (_drag_loss_factor(oil_level, dm * _MM, "ball") if drag_loss_factor is None
+              else np.asarray(drag_loss_factor, dtype=float)[()])
     total = m_rr + m_sl + m_seal + m_drag
     shape = np.broadcast(total, mu).shape
     out = [np.broadcast_to(x * _MM, shape)[()] for x in (m_rr, m_sl, m_seal, m_drag, total)]
-    return SKFTorque(*out, np.broadcast_to(total * _MM * omega, shape)[()], np.broadcast_to(mu, shape)[()])
+    return SKFTorque(*out, np.broadcast_to(total * _MM * omega, shape)[()], np.broadcast_to(mu, shape)[()],
+                     drag_loss_factor=vm)
 
 
 def _seal_moment(seal, seals, seal_diameter, override, outside_diameter, bearing_type="radial"):
@@ -725,14 +818,19 @@ def skf_for_bearing(bearing, radial_load, axial_load, shaft_speed, kinematic_vis
     d, big = bearing.require("bore", "outside_diameter")
     kw = {"bearing_type": bearing.type, "lubrication": lubrication}
     if "constants" not in options:
-        if bearing.type == "radial":
+        if bearing.type in ("radial", "double-row-radial"):
             kw["series"] = bearing.series or bearing_series(bearing.designation)
-        else:  # single-row angular contact: SKF's constants of the type, for its 40 deg bearings
+        elif bearing.type == "self-aligning":
+            if bearing.series is None:
+                raise InputError(f"series of {bearing.designation!r}: a self-aligning ball bearing takes SKF's "
+                                 f"constants of its series ({', '.join(SELF_ALIGNING_CONSTANTS)}); give series")
+            kw["series"] = bearing.series
+        elif bearing.type != "thrust":  # angular contact: SKF's constants of the type (single row: 40 deg)
             kw["contact_angle"] = bearing.contact_angle
     if bearing.seal is not None and _tabulated_seal(bearing, big):
         kw.update(seal=bearing.seal, seals=2 if bearing.seals is None else bearing.seals,
                   seal_diameter=bearing.seal_diameter)
-    if bearing.type == "radial" and np.any(np.asarray(axial_load) > 0):  # alpha_F of deep groove needs C0
+    if bearing.type in ("radial", "double-row-radial") and np.any(np.asarray(axial_load) > 0):  # alpha_F needs C0
         if bearing.static_load_rating is not None:
             kw["static_load_rating"] = bearing.static_load_rating
         else:
@@ -752,7 +850,7 @@ def _tabulated_seal(bearing, outside_diameter):
     """Whether the bearing's seal has SKF constants for its outside diameter. A seal read from the
     designation (``6205-2RS``) without published constants is left out with the warning of
     :func:`_unmodelled_seal`; a seal given in the bearing's data must be tabulated (InputError)."""
-    from_designation = str((bearing.sources or {}).get("seal", "")).startswith("designation suffix")
+    from_designation = str((bearing.sources or {}).get("seal", "")).startswith(("designation suffix", "catalog row"))
     try:
         k = seal_constants(bearing.seal, outside_diameter,
                            bearing_type="angular" if bearing.type == "angular" else "radial")
@@ -770,14 +868,15 @@ def _unmodelled_seal(bearing, kw):
     if kw.get("seal") is not None or kw.get("seal_constants_override") is not None or bearing.seals == 0:
         return None
     m = _SEALED_DESIGNATION.match(str(bearing.designation or ""))
-    if m is None:
+    if m is None and bearing.seal is None:
         return None
-    kind = m.group("kind").upper()
+    kind = m.group("kind").upper() if m is not None else str(bearing.seal).upper()
+    by = "by its designation" if m is not None else "by its catalog row"
     if kind in _NON_CONTACT:
-        return (f"{bearing.designation!r} has shields or non-contact seals ({kind}, by its designation) but no "
+        return (f"{bearing.designation!r} has shields or non-contact seals ({kind}, {by}) but no "
                 f"seal data: M_seal = 0 is used, as SKF's model gives for shields (Z) and non-contact seals (RZ); "
                 f"give seal = \"Z\" or \"RZ\" in the bearing data to say so")
-    return (f"{bearing.designation!r} is sealed ({kind}, by its designation) but has no seal data: the seal "
+    return (f"{bearing.designation!r} is sealed ({kind}, {by}) but has no seal data: the seal "
             f"moment M_seal of its contact seals is not included, so M is too low. Give seal, seals and "
             f"seal_diameter in a bearing file (seal constants are tabulated for {', '.join(SEAL_CONSTANTS)}), "
             f"or in Python seal_constants_override=SealConstants(ks1, beta, ks2) and seal_diameter= from the "

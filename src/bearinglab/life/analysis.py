@@ -26,6 +26,7 @@ import numpy as np
 
 from .._bounds import check_steps
 from .._validate import as_float, check_nonnegative, check_positive
+from ..bearing import covers
 from ..errors import InputError
 from ..ratings import dynamic, lubrication, reference, static
 from ..ratings.bearing import _conformities, bearing_ratings
@@ -77,11 +78,12 @@ def reference_load_distribution(bearing, loads, *, on_failure="raise"):
     LoadDistribution or None
         :func:`bearinglab.quasistatic.combined.combined_analysis` at rest, with the Hertz constants at
         the free contact angle (ISO/TS 16281:2008); None when the bearing's ball set or
-        conformities are not known.
+        conformities are not known, or the load distribution does not cover its type
+        (:data:`bearinglab.bearing.MODEL_TYPES`).
     """
     from ..quasistatic import combined  # the life does not need the quasi-static package to import
 
-    if any(getattr(bearing, k) is None for k in _GEOMETRY_FIELDS):
+    if any(getattr(bearing, k) is None for k in _GEOMETRY_FIELDS) or not covers(bearing, "load-distribution"):
         return None
     return combined.combined_analysis(bearing, loads, 0.0, stiffness_at="free", on_failure=on_failure)
 
@@ -102,7 +104,8 @@ def _contact_loads(load_distribution, bearing, loads, shaft_speed):
 
     ``None`` means the combined-load model when the bearing has the geometry it needs; ``False`` none.
     """
-    if load_distribution is None and all(getattr(bearing, k) is not None for k in _GEOMETRY_FIELDS):
+    if (load_distribution is None and all(getattr(bearing, k) is not None for k in _GEOMETRY_FIELDS)
+            and covers(bearing, "load-distribution")):
         load_distribution = _combined_at_rest
     if load_distribution is None or load_distribution is False:
         return None
@@ -117,10 +120,12 @@ def _contact_loads(load_distribution, bearing, loads, shaft_speed):
 def _iso281(bearing, ratings, fr, fa, moment):
     """P and P0 of ISO 281 / ISO 76, NaN where a moment acts (not defined there)."""
     kind, alpha = bearing.type, bearing.contact_angle if bearing.contact_angle is not None else 0.0
-    if (fa > 0).any() and kind == "radial" and not np.isfinite(ratings.static_load_factor):
+    deep_groove = kind in ("radial", "double-row-radial")
+    if (fa > 0).any() and deep_groove and not np.isfinite(ratings.static_load_factor):
         raise InputError(f"the axial factor Y of a deep-groove bearing needs f0 Fa / C0 (ISO 281 table 3), "
-                         f"and f0 needs the ball set of {bearing.designation or 'this bearing'!r}")
-    f0 = ratings.static_load_factor if kind == "radial" else None
+                         f"and f0 needs the ball set of {bearing.designation or 'this bearing'!r} (or the "
+                         f"maker's f0 in its catalog entry)")
+    f0 = ratings.static_load_factor if deep_groove else None
     p = dynamic.equivalent_dynamic_load(fr, fa, ratings.static_load_rating, alpha, bearing_type=kind,
                                         static_load_factor=f0 if f0 is None or np.isfinite(f0) else 1.0)
     p0 = static.static_equivalent_load(fr, fa, alpha, bearing_type=kind)
@@ -231,12 +236,22 @@ def _rating_life(bearing, loads, shaft_speed, nu, contamination, reliability, ep
                    np.nan)
     a_iso = None if nu is None else np.where(np.isfinite(p), lubrication.life_modification_factor(
         kappa, ec, r.fatigue_load_limit, p_safe, ep_additives=ep_additives), np.nan)
+    if a_iso is not None and bearing.type == "thrust":
+        # ISO 281 gives a_ISO of thrust ball bearings by an equation of their own, which is not in bearinglab
+        warnings.warn("a_ISO of a thrust ball bearing: ISO 281 has an equation of its own for thrust ball bearings, "
+                      "which bearinglab does not implement; a_ISO and the modified lives are not given",
+                      RatingWarning, stacklevel=3)
+        a_iso = np.full(np.shape(a_iso), np.nan)
     s0 = np.where(np.isfinite(p0), static.static_safety_factor(r.static_load_rating, np.where(np.isfinite(p0), p0, 0.0)),
                   np.nan)
     l10r = np.full(np.shape(fr), np.nan)
     a_ref = np.full(np.shape(fr), np.nan)
     balls = _contact_loads(load_distribution, bearing, loads, shaft_speed)
-    if balls is None:
+    if balls is None and not covers(bearing, "load-distribution") and load_distribution is None:
+        warnings.warn(f"no load distribution: the combined-load model does not cover a {bearing.type} bearing yet, "
+                      "so the ISO/TS 16281 reference lives are not defined (the ISO 281 lives are)", RatingWarning,
+                      stacklevel=3)
+    elif balls is None:
         warnings.warn("no load distribution (the bearing's ball set and conformities are not known, or "
                       "load_distribution=False): the ISO/TS 16281 reference lives are not defined", RatingWarning,
                       stacklevel=3)
@@ -272,7 +287,7 @@ def _rating_life(bearing, loads, shaft_speed, nu, contamination, reliability, ep
     return RatingLife(
         r.dynamic_load_rating, r.static_load_rating, r.fatigue_load_limit, r.rating_source, p[()], l10[()],
         (l10 * duration)[()], a1, kappa_out, a_iso_out, lnm_out, lnm_time, l10r[()], lnmr, s0[()], (),
-        nu_out, np.broadcast_to(nu1, speed.shape)[()], float(dm), dm_source)
+        nu_out, np.broadcast_to(nu1, speed.shape)[()], float(dm), dm_source, None if nu is None else float(ec))
 
 
 def miner_life(lives, revolution_shares, *, axis=-1):

@@ -36,12 +36,13 @@ def first_contact_offset(bearing, radial_clearance):
     bearing : bearinglab.bearing.BallBearing
         Needs the ball diameter and both conformities.
     radial_clearance : array_like
-        Diametral clearance e > 0. [m]
+        Diametral clearance e. [m]
 
     Returns
     -------
     ndarray
-        A sin(alpha0(e)), A = (f_i + f_o - 1) D. [m]
+        A sin(alpha0(e)), A = (f_i + f_o - 1) D; 0 for e <= 0, where the balls touch both raceways (and
+        are compressed by -e/2) in the concentric position already. [m]
 
     Examples
     --------
@@ -52,11 +53,13 @@ def first_contact_offset(bearing, radial_clearance):
     """
     d, fi, fo = bearing.require("ball_diameter", "inner_conformity", "outer_conformity")
     e = np.asarray(radial_clearance, dtype=float)
-    if np.any(~(e > 0)):
-        raise InputError(f"radial_clearance must be > 0 [um] for a free contact angle, got "
-                         f"{float(np.min(e)) * 1e6:.3g} um (the fits and temperatures took all the clearance)")
-    alpha = geometry.free_contact_angle(e, d, fi, fo)
-    return ((fi + fo - 1.0) * d * np.sin(alpha))[()]
+    if np.any(~np.isfinite(e)):
+        raise InputError(f"radial_clearance must be finite [um], got {radial_clearance!r}")
+    out = np.zeros(e.shape)
+    play = e > 0  # none left: first contact in the concentric position (issue 30)
+    if play.any():
+        out[play] = (fi + fo - 1.0) * d * np.sin(geometry.free_contact_angle(e[play], d, fi, fo))
+    return out[()]
 
 
 def operating_interference(bearing, assembled_interference, clearance_reduction, *, arrangement_kind="DB",

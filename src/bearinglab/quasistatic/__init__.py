@@ -45,6 +45,7 @@ Combined loads (submodules, imported with the package)
 combined                       the 5-DOF inner ring under Fx, Fy, Fz, Mx, My, at rest and at speed: load
                                distribution, contact angles and pressures per ball, tangent stiffness
 sets                           preloaded bearing sets (DB, DF, DT) on one shaft: distribution and stiffness
+preload                        a single bearing with zero or negative clearance: its preload and stiffness
 rotordynamics                  speed-dependent kxx, kxy, kyx, kyy, kzz for ``ross.BearingElement``
 light_load                     light-load criteria at speed: the maker's minimum load (0.01 C), an
                                outer angle near zero, the test-stand flag against gyroscopic slip
@@ -68,7 +69,7 @@ References
 
 from __future__ import annotations
 
-from . import combined, light_load, rotordynamics, sets
+from . import combined, light_load, preload, rotordynamics, sets
 from .ball import (
     CONSTANTS,
     FRICTION_WARNING_LIMIT,
@@ -133,6 +134,7 @@ __all__ = [
     "gyroscopic_moment",
     "high_speed_analysis",
     "light_load",
+    "preload",
     "printed_constants",
     "required_friction_coefficient",
     "residual",

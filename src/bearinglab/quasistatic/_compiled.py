@@ -68,8 +68,10 @@ def available():
 
 
 def _jit(func):
-    """numba.njit with the compiled code cached next to this module (one compilation per install)."""
-    return func if numba is None else numba.njit(cache=True)(func)
+    """numba.njit with the compiled code cached next to this module (one compilation per install); a
+    division by zero gives inf or NaN as in numpy, so that the case's validity checks fail it (a light
+    thrust at speed) instead of the process raising."""
+    return func if numba is None else numba.njit(cache=True, error_model="numpy")(func)
 
 
 def _py(func):
@@ -483,9 +485,9 @@ def _starts(fa, par, pid, gid, kti, dti, kto, dto, alpha_s, v0):
 
 _starts_serial = _starts
 if numba is not None:
-    _loop = numba.njit(parallel=True, cache=True)(_loop)
-    _starts = numba.njit(parallel=True, cache=True)(_starts)
-    _starts_serial = numba.njit(cache=True)(_starts_serial)  # prange runs as range
+    _loop = numba.njit(parallel=True, cache=True, error_model="numpy")(_loop)
+    _starts = numba.njit(parallel=True, cache=True, error_model="numpy")(_starts)
+    _starts_serial = numba.njit(cache=True, error_model="numpy")(_starts_serial)  # prange runs as range
 _PARALLEL_STARTS = 2000  # static starts below which one thread is quicker than waking the others
 
 

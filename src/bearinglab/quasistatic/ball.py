@@ -435,12 +435,13 @@ def _dynamics(si, ci, so, co, g, control, inertia, mass, dm):
     other shoulder (negative angles) is the mirror image; :func:`bearinglab.quasistatic.ball_speeds`.
     """
     if control == "outer":  # tan beta = sin a_o / (cos a_o + D/d_m)
-        beta = np.arctan2(so, co + g)
+        y, x = so, co + g
         b_i, b_o = 0.0, (1.0 + g * co) / (1.0 + 2.0 * g * co + g * g)
     else:  # tan beta = sin a_i / (cos a_i - D/d_m)
-        beta = np.arctan2(si, ci - g)
+        y, x = si, ci - g
         b_i, b_o = (1.0 - g * ci) / (1.0 - 2.0 * g * ci + g * g), 0.0
-    sb, cb = np.sin(beta), np.cos(beta)
+    r = np.hypot(y, x)
+    sb, cb = y / r, x / r  # sin and cos of beta = atan2(y, x)
     c_ob, s_ob = co * cb + so * sb, so * cb - co * sb  # cos, sin(alpha_o - beta)
     c_ib, s_ib = ci * cb + si * sb, si * cb - ci * sb
     p, r = (1.0 - g * ci) * c_ob, (1.0 + g * co) * c_ib

@@ -51,15 +51,15 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .. import _solve as _solve_mod
 from .. import geometry
 from .._validate import as_float, check_integer, check_nonnegative, check_positive
 from ..errors import ConvergenceError, InputError
 from ..units import RPM
-from . import _combined_balls, _ring
+from . import _combined_balls, _combined_speed, _ring
 from ._combined_balls import (  # the balls and the bearing data, split off (issue 20); private names
-    _BALL_MAX_ITER,  # noqa: F401 (read by bench/combined.py with the ring's constants)
-    _BALL_TOL,  # noqa: F401
-    _ball_start,
+    _BALL_MAX_ITER,
+    _BALL_TOL,
     _geometry,
     _hertz_k,
     _rest_balls,
@@ -96,7 +96,7 @@ TOL = 1e-12  # relative residual |F - F(u)| / max(|F|, sum of ball loads), momen
 MAX_ITER = 100  # ring Newton iterations per case (per continuation step at speed)
 _LINE_SEARCH = 8  # step cuts (by 4) of the ring Newton line search
 _LAM_MAX = 1e4  # Levenberg-Marquardt damping beyond which a case has failed
-_CONTINUATION = (1, 4, 16)  # equal steps in omega^2 tried for a case that fails at the full speed
+_CONTINUATION = _combined_speed._CONTINUATION  # equal steps in omega^2 tried for a case that fails at full speed
 _RESOLVABLE = 1e-9  # issue 11: every returned case in equilibrium to 1e-9 relative, rounding or not
 _NOISE = 4.0  # a residual within this many rounding floors (see _measure) is converged
 _CHUNK = 2048  # cases per pass of the rest Newton (see _rest_newton)
@@ -131,7 +131,7 @@ def ball_azimuths(n_balls, first_ball_angle=0.0):
 
 
 def groove_offsets(displacement, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
-                   free_angle, *, first_ball_angle=0.0):
+                   free_angle, *, first_ball_angle=0.0, radial_clearance=None):
     r"""Inner groove-curvature centre relative to the outer one, per ball, for a ring displacement.
 
     Parameters
@@ -151,6 +151,8 @@ def groove_offsets(displacement, n_balls, ball_diameter, pitch_diameter, inner_c
         alpha0 (from the clearance: cos alpha0 = 1 - e / (2 A)). [rad]
     first_ball_angle : float, optional
         phi0. [rad]
+    radial_clearance : float, optional
+        The diametral clearance e instead of ``free_angle`` (e <= 0: a preload). [m]
 
     Returns
     -------
@@ -165,15 +167,17 @@ def groove_offsets(displacement, n_balls, ball_diameter, pitch_diameter, inner_c
         A_{z,j} = \delta_z + \tfrac{d_m}{2}(\theta_x\sin\psi_j - \theta_y\cos\psi_j),\qquad
         A_{r,j} = A\cos\alpha_0 + \delta_x\cos\psi_j + \delta_y\sin\psi_j
 
-    with A = (f_i + f_o - 1) D. A ball is loaded where sqrt(A_z^2 + A_r^2) > A; its contact angle is
-    atan2(A_z, A_r).
+    with A = (f_i + f_o - 1) D; A cos(alpha0) is A - e/2 in general, also for e <= 0. A ball is loaded
+    where sqrt(A_z^2 + A_r^2) > A; its contact angle is atan2(A_z, A_r).
     """
     u = as_float("displacement", displacement)
     if u.shape[-1:] != (5,):
         raise InputError(f"displacement must have a last axis of length 5, got shape {u.shape}")
     geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
-                    None, None, first_ball_angle, "free", "outer", "radial", tables=False)
-    return (u @ geo.ja.T)[()], (geo.gr0 + u @ geo.jr.T)[()]
+                    None, None, first_ball_angle, "free", "outer", "radial", tables=False, clearance=radial_clearance)
+    flat = u.reshape(-1, 5)
+    ga, gr = _ring.offsets(geo, flat)
+    return ga.reshape(u.shape[:-1] + (geo.z,))[()], gr.reshape(u.shape[:-1] + (geo.z,))[()]
 
 
 def axial_play_takeup(ball_diameter, inner_conformity, outer_conformity, free_angle):
@@ -218,39 +222,40 @@ def _evaluate(geo, u, w2, x=None, deriv=True):
     """Bearing reaction F(u) (the load in equilibrium with u), tangent stiffness dF/du and ball states.
 
     ``w2`` (n,) is omega^2; cases with w2 = 0 use the closed-form balls at rest, the others solve their
-    balls starting from ``x`` (n, Z, 2) or from :func:`_ball_start`.
+    balls at fixed rings starting from ``x`` ((xa, xr), each (n, Z)) or from :func:`_ball_start`.
     """
-    ga = _ring.rowwise(u, geo.ja.T)
-    gr = geo.gr0 + _ring.rowwise(u, geo.jr.T)
+    ga, gr = _ring.offsets(geo, u)
     moving = w2 > 0
     if not moving.any():
         balls = _rest_balls(geo, ga, gr)
         balls["ok"] = np.ones(ga.shape, dtype=bool)
     else:
         balls = _merge(geo, ga, gr, w2, moving, x)
-    force = _ring.rowwise(balls["pa"], geo.ja) + _ring.rowwise(balls["pr"], geo.jr)
-    stiff = None
-    if deriv:
-        h = balls["h"]
-        stiff = sum(_ring.rowwise(h[..., p, q], geo.jj[p, q]) for p in range(2) for q in range(2)).reshape(-1, 5, 5)
+    force = _ring.reaction(geo, balls["pa"], balls["pr"])
+    stiff = _ring.assemble(geo, *balls["h"]) if deriv else None
     return force, stiff, balls
 
 
+_MERGED = ("pa", "pr", "qi", "qo", "ai", "ao", "mg", "fc", "noise", "ok")
+
+
 def _merge(geo, ga, gr, w2, moving, x):
-    """Ball states of a batch with some cases at rest and some at speed."""
+    """Ball states of a batch with some cases at rest and some at speed (the fields of :data:`_MERGED`
+    and ``h``)."""
     mv = np.flatnonzero(moving)
-    x0 = _ball_start(geo, ga[mv], gr[mv], w2[mv, None]) if x is None else x[mv]
-    spd = _speed_balls(geo, ga[mv], gr[mv], w2[mv, None], x0)
+    spd = _speed_balls(geo, ga[mv], gr[mv], w2[mv, None], None if x is None else (x[0][mv], x[1][mv]))
     if mv.size == len(ga):
         return spd
     rest = _rest_balls(geo, ga, gr)
     rest["ok"] = np.ones(ga.shape, dtype=bool)
-    rest["x"], rest["dxdg"] = np.zeros(ga.shape + (2,)), np.zeros(ga.shape + (2, 2))
     out = {}
-    for key, val in rest.items():
-        merged = np.array(val, dtype=float if key != "ok" else bool, copy=True)
+    for key in _MERGED:
+        merged = np.array(rest[key], dtype=float if key != "ok" else bool, copy=True)
         merged[mv] = spd[key]
         out[key] = merged
+    out["h"] = tuple(np.array(a, copy=True) for a in rest["h"])
+    for a, b in zip(out["h"], spd["h"], strict=True):
+        a[mv] = b
     return out
 
 
@@ -272,22 +277,33 @@ def _measure(geo, loads, force, balls, free=None):
     """
     diff = loads - force if free is None else (loads - force) * free
     res = np.linalg.norm(_scaled(geo, diff), axis=-1)
-    total = np.sum(np.hypot(balls["pa"], balls["pr"]), axis=-1)
+    total = _ring.ballsum(np.hypot(balls["pa"], balls["pr"]))
     scale = np.maximum(np.linalg.norm(_scaled(geo, loads), axis=-1), total)
-    noise = _NOISE * np.sum(balls["noise"], axis=-1)
+    noise = _NOISE * _ring.ballsum(balls["noise"])
     with np.errstate(invalid="ignore", divide="ignore"):
         return res, np.where(scale > 0, res / scale, res), np.minimum(np.where(scale > 0, noise / scale, 0.0), _RESOLVABLE)
 
 
 def _start(geo, loads):
-    """Start of the ring Newton: thrust, radial load and moment each taken alone (Stribeck's 5/Z)."""
+    """Start of the ring Newton: thrust, radial load and moment each taken alone (Stribeck's 5/Z).
+
+    A preloaded bearing (e < 0, every ball compressed by delta_0 = -e/2 in the concentric position)
+    starts at the smaller of its linear response at zero load (radial stiffness 0.75 Z K_n delta_0^0.5
+    for Z >= 3) and the zero-clearance estimate, and at least at the latter less delta_0.
+    """
     c0 = np.array([math.cos(geo.a0)])
     ki, ko = (_hertz_k(t, c0)[0][0] for t in geo.tables[:2])
     kn0 = (ki ** (-2.0 / 3.0) + ko ** (-2.0 / 3.0)) ** -1.5
     fr = np.hypot(loads[:, 0], loads[:, 1])
     mm = np.hypot(loads[:, 3], loads[:, 4])
     dz = _ring.thrust_offset(np.abs(loads[:, 2]) / geo.z, geo.big_a, geo.a0, geo.gr0, kn0)
-    dr = np.where(fr > 0, geo.big_a - geo.gr0 + (5.0 * fr / geo.z / kn0) ** (2.0 / 3.0), 0.0)
+    hertz = (5.0 * fr / geo.z / kn0) ** (2.0 / 3.0)
+    pre = geo.interference
+    if pre > 0:
+        linear = fr / (0.75 * geo.z * kn0 * math.sqrt(pre))
+        dr = np.where(fr > 0, np.maximum(hertz - pre, np.minimum(linear, hertz)), 0.0)
+    else:
+        dr = np.where(fr > 0, geo.big_a - geo.gr0 + hertz, 0.0)
     tilt = _ring.thrust_offset(2.0 * mm / (geo.dm / 2.0) / geo.z, geo.big_a, geo.a0, geo.gr0, kn0) / (geo.dm / 2.0)
     u = np.zeros_like(loads)
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -297,32 +313,23 @@ def _start(geo, loads):
     return u
 
 
-def _predict(geo, x, dxdg, du):
-    """Ball centres at a trial ring position, to first order from the accepted ones (dx/dg from the ball
-    equations); a ball the prediction would lift off its outer raceway starts where it was."""
-    dg = np.stack([_ring.rowwise(du, geo.ja.T), _ring.rowwise(du, geo.jr.T)], axis=-1)
-    xp = x + np.einsum("nzij,nzj->nzi", dxdg, dg)
-    keep = (np.hypot(xp[..., 0], xp[..., 1]) > geo.ro) & np.all(np.isfinite(xp), axis=-1)
-    return np.where(keep[..., None], xp, x)
-
-
-def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=(), free=None):
-    """Damped Newton (Levenberg-Marquardt) on the ring equilibrium, all cases together.
+def _newton(geo, loads, u0, tol, max_iter, keep=(), free=None):
+    """Damped Newton (Levenberg-Marquardt) on the ring equilibrium at rest, all cases together.
 
     Each case has its own damping: it falls tenfold after a full step and rises when the line search
-    on |F - F(u)| has to cut the step. Returns u, converged, iterations, the ball centres at speed, and
-    the last accepted evaluation of every case, which is the evaluation at the returned u: relative
-    residual, rounding floor, stiffness, reaction and the ball fields named in ``keep``. ``free`` (n, 5),
-    1.0 for a freedom under a given load and 0.0 for a held one (its displacement stays at u0), or None.
+    on |F - F(u)| has to cut the step. Returns u, converged, iterations and the last accepted evaluation
+    of every case, which is the evaluation at the returned u: relative residual, rounding floor,
+    stiffness, reaction and the ball fields named in ``keep``. ``free`` (n, 5), 1.0 for a freedom under a
+    given load and 0.0 for a held one (its displacement stays at u0), or None.
     """
     n = len(loads)
     u = u0.copy()
     it = np.zeros(n, dtype=int)
     lam = np.zeros(n)
-    force, stiff, balls = _evaluate(geo, u, w2, x0)
+    rest = np.zeros(n)
+    force, stiff, balls = _evaluate(geo, u, rest)
     norm, rel, floor = _measure(geo, loads, force, balls, free)
-    done = (rel <= np.maximum(tol, floor)) & np.all(balls["ok"], axis=1)
-    x, dxdg = balls.get("x"), balls.get("dxdg")
+    done = rel <= np.maximum(tol, floor)
     final = {k: np.array(balls[k], dtype=float) for k in keep}
     for _ in range(max_iter):
         act = np.flatnonzero(~done & (it < max_iter) & (lam <= _LAM_MAX))
@@ -344,18 +351,15 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=(), free=None):
         for _ls in range(_LINE_SEARCH):
             sel = act[pending]
             trial = u[sel] + t[pending, None] * du[pending]
-            f_t, k_t, b_t = _evaluate(geo, trial, w2[sel], None if x is None else
-                                      _predict(geo, x[sel], dxdg[sel], trial - u[sel]))
+            f_t, k_t, b_t = _evaluate(geo, trial, rest[sel])
             n_t, r_t, fl_t = _measure(geo, loads[sel], f_t, b_t, None if free is None else free[sel])
             conv_t = r_t <= np.maximum(tol, fl_t)
-            good = ((n_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | conv_t) & np.all(b_t["ok"], axis=1)
+            good = (n_t < norm[sel] * (1.0 - 1e-4 * t[pending])) | conv_t
             g, kk = sel[good], (slice(None) if good.all() else good)  # a view, not a copy, when all are good
             u[g], force[g], stiff[g], norm[g], rel[g] = trial[kk], f_t[kk], k_t[kk], n_t[kk], r_t[kk]
             floor[g] = fl_t[kk]
             for key in keep:
                 final[key][g] = b_t[key][kk]
-            if x is not None:
-                x[g], dxdg[g] = b_t["x"][good], b_t["dxdg"][good]
             pending = pending[~good]
             if pending.size == 0:
                 break
@@ -366,9 +370,9 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter, keep=(), free=None):
         lam[act] = np.where(full, 0.1 * lam[act], lam[act])
         lam[act[pending]] = np.maximum(100.0 * lam[act[pending]], 1e-3)  # no decrease at all
         lam[lam < 1e-12] = 0.0
-        done = rel <= np.maximum(tol, floor)  # accepted iterates have every ball converged
+        done = rel <= np.maximum(tol, floor)
     final.update(residual=rel, floor=floor, stiffness=stiff, force=force)
-    return u, done, it, x, final
+    return u, done, it, final
 
 
 def _rest_newton(geo, loads, tol, max_iter, held=None):
@@ -381,8 +385,7 @@ def _rest_newton(geo, loads, tol, max_iter, held=None):
         if held is not None:
             free = np.isnan(held).astype(float)
             u0 = np.where(free > 0, u0, held)
-        u, ok, it, _, last = _newton(geo, loads, np.zeros(n), u0, None, tol, max_iter, keep=("qi", "ai"),
-                                     free=free)
+        u, ok, it, last = _newton(geo, loads, u0, tol, max_iter, keep=("qi", "ai"), free=free)
         return u, ok, it, last
     parts = [_rest_newton(geo, loads[lo:lo + _CHUNK], tol, max_iter, None if held is None else held[lo:lo + _CHUNK])
              for lo in range(0, n, _CHUNK)]
@@ -390,37 +393,69 @@ def _rest_newton(geo, loads, tol, max_iter, held=None):
     return (*(np.concatenate([p[j] for p in parts]) for j in range(3)), last)
 
 
-def _solve(geo, loads, w2, tol, max_iter, *, final=False, held=None):
-    """Rest solution of every case, then the cases at speed from it (with continuation in omega^2).
+def _solve(geo, loads, w2, tol, max_iter, *, final=False, held=None, compiled=False):
+    """Rest solution of every case, then the cases at speed from it (:mod:`._combined_speed`), by numpy or,
+    with ``compiled``, by the kernel (:mod:`._combined_kernel`, the same algorithm case by case).
 
-    Returns u, converged, iterations and, with ``final``, (at_rest, the rest Newton's last evaluation):
-    the outputs of the cases at rest need no evaluation of their own.
+    Returns u, converged, iterations and, with ``final``, (have, the last evaluation): ``have`` marks the
+    cases whose outputs the last evaluation holds (all converged ones), so they need no evaluation of
+    their own.
     """
+    if compiled:
+        u, ok, it, last = _solve_compiled(geo, loads, w2, tol, max_iter, held)
+        return (u, ok, it, (ok.copy(), last)) if final else (u, ok, it)
     u, ok, it, last = _rest_newton(geo, loads, tol, max_iter, held)
     free = None if held is None else np.isnan(held).astype(float)
-    extra = ((w2 == 0), last) if final else None
+    have = w2 == 0
     moving = np.flatnonzero((w2 > 0) & ok)
-    if moving.size == 0:
-        return (u, ok, it, extra) if final else (u, ok, it)
-    u_rest = u[moving].copy()
-    ok[moving] = False
-    pending = np.arange(moving.size)
-    for steps in _CONTINUATION:
-        sel = moving[pending]
-        us, xs, good = u_rest[pending].copy(), None, np.ones(pending.size, dtype=bool)
-        for k in range(1, steps + 1):
-            wk = w2[sel] * k / steps
-            ga, gr = _ring.rowwise(us, geo.ja.T), geo.gr0 + _ring.rowwise(us, geo.jr.T)
-            xs = _ball_start(geo, ga, gr, wk[:, None]) if xs is None else xs
-            us, conv, itk, xs, _ = _newton(geo, loads[sel], wk, us, xs, tol, max_iter,
-                                           free=None if free is None else free[sel])
-            it[sel] += itk
-            good &= conv
-        u[sel[good]], ok[sel[good]] = us[good], True
-        pending = pending[~good]
-        if pending.size == 0:
-            break
+    if moving.size:
+        us, oks, its, fin = _combined_speed.solve_speed(geo, loads[moving], w2[moving], u[moving], tol, max_iter,
+                                                        None if free is None else free[moving], _LAM_MAX, _NOISE,
+                                                        _RESOLVABLE)
+        u[moving], ok[moving] = us, oks
+        it[moving] += its
+        if final:
+            last = dict(last)
+            for key, val in fin.items():
+                src = last.get(_AT_REST.get(key, key))
+                merged = np.zeros((len(loads),) + val.shape[1:]) if src is None else np.array(src, copy=True)
+                merged[moving] = val
+                last[key] = merged
+            have = have.copy()
+            have[moving] = oks
+    extra = (have, last) if final else None
     return (u, ok, it, extra) if final else (u, ok, it)
+
+
+def _reactions(geo, u, w2, compiled):
+    """Ring load (n, 5), stiffness (n, 5, 5) and every ball converged (n,) at the displacements u (n, 5):
+    the kernel's evaluation (:func:`._combined_kernel.reactions`) or :func:`_evaluate`'s."""
+    if compiled:
+        from . import _combined_kernel
+
+        par, ser = _kernel_parameters(geo, TOL, MAX_ITER)
+        return _combined_kernel.reactions(geo, u, w2, par, ser)
+    force, stiff, balls = _evaluate(geo, u, w2)
+    return force, stiff, np.all(balls["ok"], axis=-1)
+
+
+def _kernel_parameters(geo, tol, max_iter):
+    from . import _combined_kernel
+
+    return _combined_kernel.parameters(geo, tol, max_iter, _LAM_MAX, _NOISE, _RESOLVABLE, _BALL_TOL, _BALL_MAX_ITER)
+
+
+def _solve_compiled(geo, loads, w2, tol, max_iter, held):
+    """:func:`_solve` by the compiled kernel: the same starts (numpy, case by case), then each case's rest
+    and speed solves in one kernel call, parallel over the cases."""
+    from . import _combined_kernel  # imports numba: only when the compiled path runs
+
+    u0, free = _start(geo, loads), None
+    if held is not None:
+        free = np.isnan(held).astype(float)
+        u0 = np.where(free > 0, u0, held)
+    par, ser = _kernel_parameters(geo, tol, max_iter)
+    return _combined_kernel.solve(geo, loads, u0, free, w2, par, ser)
 
 
 # --------------------------------------------------------------------------- results
@@ -469,13 +504,20 @@ def _at_solution(geo, loads, w, u, sel, final, free=None):
     """Relative residual, rounding floor, stiffness, reaction and ball outputs (``_BALL_OUT``) of the cases
     ``sel``: from the solver's last evaluation (``final`` of :func:`_solve`) where it has one, else evaluated."""
     have = np.zeros(sel.size, dtype=bool) if final is None else final[0][sel]
+    if have.all() and sel.size == len(loads):  # every case (the usual batch): the last evaluation as it is
+        last = final[1]
+        res = {k: (last[k] if k in last else last[_AT_REST[k]] if k in _AT_REST else np.zeros((sel.size, geo.z)))
+               for k in _BALL_OUT}
+        res.update({k: last[k] for k in ("residual", "floor", "stiffness", "force", "pi", "po") if k in last})
+        return res
     res = {k: np.empty((sel.size, geo.z)) for k in _BALL_OUT}
     res.update(residual=np.empty(sel.size), floor=np.empty(sel.size), stiffness=np.empty((sel.size, 5, 5)),
                force=np.empty((sel.size, 5)))
     if have.any():
         last, rows = final[1], sel[have]
         for k, v in res.items():
-            v[have] = last[_AT_REST.get(k, k)][rows] if k in last or k in _AT_REST else 0.0  # F_c = M_g = 0
+            src = k if k in last else _AT_REST.get(k)
+            v[have] = last[src][rows] if src is not None else 0.0  # at rest F_c = M_g = 0
     if not have.all():
         fresh = sel[~have]
         force, stiff, balls = _evaluate(geo, u[fresh], w[fresh] ** 2)
@@ -512,8 +554,9 @@ def _outputs(geo, loads, w, u, ok, it, final=None, held=None):
         qi, qo = balls["qi"], balls["qo"]
         vals = {"ball_load_inner": qi, "ball_load_outer": qo, "contact_angle_inner": balls["ai"],
                 "contact_angle_outer": balls["ao"], "centrifugal_force": balls["fc"],
-                "gyroscopic_moment": balls["mg"], "max_pressure_inner": _pressure(geo, qi, balls["ai"], "inner"),
-                "max_pressure_outer": _pressure(geo, qo, balls["ao"], "outer")}
+                "gyroscopic_moment": balls["mg"],  # the kernel computes the pressures with the rest
+                "max_pressure_inner": balls["pi"] if "pi" in balls else _pressure(geo, qi, balls["ai"], "inner"),
+                "max_pressure_outer": balls["po"] if "po" in balls else _pressure(geo, qo, balls["ao"], "outer")}
         for k, v in vals.items():
             out[k][sel] = v
         out["max_ball_load"][sel] = np.max(qi, axis=1)
@@ -538,7 +581,8 @@ def _flat_inputs(loads, shaft_speed):
 def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
                       free_angle, reduced_modulus, density, *, first_ball_angle=0.0, stiffness_at="operating",
                       raceway_control="outer", bearing_type="radial", on_failure="raise",
-                      tol=TOL, max_iter=MAX_ITER, prescribed_displacement=None):
+                      tol=TOL, max_iter=MAX_ITER, prescribed_displacement=None, radial_clearance=None,
+                      engine="auto"):
     r"""Load distribution, displacement and stiffness of a ball bearing under combined load, at rest or at speed.
 
     Parameters
@@ -555,8 +599,9 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
         d_m > D. [m]
     inner_conformity, outer_conformity : float
         f_i, f_o. [-]
-    free_angle : float
-        alpha0 in [0, 90 deg), from the diametral clearance e by cos alpha0 = 1 - e / (2 A). [rad]
+    free_angle : float or None
+        alpha0 in [0, 90 deg), from the diametral clearance e by cos alpha0 = 1 - e / (2 A); None when
+        ``radial_clearance`` is given. [rad]
     reduced_modulus : float
         E' of the ball-ring pair. [Pa]
     density : float
@@ -594,6 +639,15 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
         holds the ring square (no tilt) under F_r + F_a, as the textbook combined-load cases (Sjovall,
         Harris) assume; without it the ring tilts freely (MASTA's single-bearing convention).
         delta_z counts from the concentric position, like the result (:func:`axial_play_takeup`).
+    radial_clearance : float, optional
+        The diametral operating clearance e instead of ``free_angle``, in [-2 D, 2 A). e <= 0 is a
+        preloaded bearing: in the concentric position every ball touches both raceways at alpha = 0,
+        compressed by -e/2, and carries Q_0 = K_n (-e/2)^1.5 with no external load (see Notes). [m]
+    engine : {"auto", "numpy", "compiled"}, optional
+        Who solves: "compiled" the numba kernel (:mod:`bearinglab.quasistatic._combined_kernel`, the same
+        algorithm case by case, parallel over the cases), "numpy" the batched numpy path, "auto" (default)
+        the kernel when numba is installed. The two agree to rounding (1e-12 relative); each gives a case
+        the same bits in any batch.
 
     Returns
     -------
@@ -620,9 +674,21 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     The ring equilibrium F = F_bearing(u) is solved by damped Newton for all cases at once; its Jacobian
     is the tangent stiffness, analytic: at rest sum_j J_j^T H_j J_j with H the 2 x 2 stiffness of ball j
     in its plane, at speed the Schur complement of the ball equations (implicit function theorem). The
-    rest solution starts the speed solve, with continuation in omega^2 where the direct solve fails.
+    rest solution starts the speed solve, which updates ring and balls together (one block Newton,
+    :mod:`bearinglab.quasistatic._combined_speed`), with continuation in omega^2 where the direct solve fails.
     Zero load gives the concentric position. The returned stiffness is d(load)/d(displacement) at the
     solution.
+
+    Clearance: in the concentric position the groove-curvature centres of a ball are g_0 = A - e/2 apart
+    radially (A cos alpha0 for e > 0, the definition of alpha0). With e <= 0 (zero or negative operating
+    clearance, e.g. from an interference fit and a warm inner ring) g_0 >= A: every ball is loaded at
+    alpha = 0 with the deflection delta_0 = -e/2 before any load, the ring is held radially from all
+    sides and a zero load still gives the concentric position, now with the stiffness of the preload
+    (radial 0.75 Z K_n delta_0^0.5 for Z >= 3, axial Z Q_0 / g_0). An angular-contact bearing is the same
+    groove: its free contact angle comes from its (large, geometric) clearance, fits and temperatures
+    take the clearance down and the angle with it, and at e <= 0 its balls sit radially preloaded at
+    alpha = 0 like a deep-groove bearing's, turning to a contact angle only under thrust (with the
+    single-bearing thrust warning of ``bearing_type="angular"``).
 
     Examples
     --------
@@ -639,15 +705,27 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     check_positive("tol", tol, "-")
     max_iter = int(check_integer("max_iter", max_iter, 1))
     geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
-                    reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, bearing_type)
+                    reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, bearing_type,
+                    clearance=radial_clearance)
     if held is not None:
         _check_held(geo, held)
-    u, ok, it, final = _solve(geo, f, w**2, tol, max_iter, final=True, held=held)
+    over, bound = _beyond_bound(geo, f)
+    if over.any() and on_failure == "raise":  # issue 29: stop at the solver's bound, before any work
+        k = int(np.flatnonzero(over)[0])
+        raise ConvergenceError("combined.load_distribution", iterations=0, residual=np.inf, estimate=np.nan,
+                               reason=f"loads {f[k].tolist()} at {w[k] / RPM:g} rpm: {_bound_reason(bound)} "
+                                      f"({int(over.sum())} of {over.size} cases)")
+    compiled = _solve_mod.use_compiled(engine, auto=True)
+    solved = np.where(over[:, None], 0.0, f) if over.any() else f  # such a case is not solved, only flagged
+    u, ok, it, final = _solve(geo, solved, w**2, tol, max_iter, final=True, held=held, compiled=compiled)
+    ok &= ~over
     out = _outputs(geo, f, w, u, ok, it, final, held)
     out.setdefault("reactions", np.full((len(f), 5), np.nan))
     ok &= out["residual"] <= np.maximum(tol, out.pop("floor"))
     if not ok.all():
         failures = _failures(geo, f, w, u, ok, None if held is None else np.isnan(held).astype(float))
+        failures.update({int(k): _bound_reason(bound) for k in np.flatnonzero(over)})
+        failures = dict(sorted(failures.items()))
         if on_failure == "raise":
             k, reason = next(iter(failures.items()))
             force, _, balls = _evaluate(geo, np.nan_to_num(u[k:k + 1]), w[k:k + 1] ** 2, deriv=False)
@@ -669,6 +747,33 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
                             azimuth=geo.psi, converged=ok.reshape(shape)[()], iterations=it.reshape(shape)[()],
                             warnings=notes, **{k: shaped[k] for k in shaped if k in LoadDistribution._fields
                                                and (k != "azimuth" or z)})
+
+
+#: The solver's bound (issue 29): no ball is compressed by more than this many ball diameters.
+_MAX_DEFLECTION = 1.0
+
+
+def _load_bound(geo):
+    """The largest force (and moment over d_m/2) the balls can carry with no contact compressed by more
+    than a ball diameter: Z max_alpha max(K_i, K_o) D^1.5 [N]. Beyond it the rings would pass through the
+    balls (as a prescribed displacement beyond a ball diameter, :func:`_check_held`): a unit mistake or an
+    absurd load, never an answer."""
+    c = np.linspace(0.0, 1.0, 65)  # cos(alpha): every contact angle
+    k = max(np.max(np.exp(_combined_balls._log_k(geo, c, race)[0])) for race in (0, 1))
+    return geo.z * k * (_MAX_DEFLECTION * geo.d) ** 1.5
+
+
+def _beyond_bound(geo, loads):
+    """Cases whose force or moment (over d_m/2) exceeds :func:`_load_bound`, and the bound [N]."""
+    bound = _load_bound(geo)
+    force = np.linalg.norm(loads[:, :3], axis=-1)
+    moment = np.linalg.norm(loads[:, 3:], axis=-1) / (geo.dm / 2.0)
+    return (force > bound) | (moment > bound), bound
+
+
+def _bound_reason(bound):
+    return (f"loads beyond what the bearing can carry: a force above {bound:.4g} N (or a moment above that "
+            "times d_m/2) would compress a ball by more than its diameter, the solver's bound (a unit mistake?)")
 
 
 def _held(f, w, shape, prescribed):
@@ -766,7 +871,8 @@ def combined_analysis(bearing, loads, shaft_speed=0.0, *, reduced_modulus=None, 
     ----------
     bearing : BallBearing
         Needs n_balls, ball_diameter, pitch_diameter and both conformities; the free contact angle (or the
-        clearance that gives it; none means zero clearance, alpha0 = 0); materials give E' and the ball
+        clearance that gives it; none means zero clearance, alpha0 = 0; a zero or negative
+        ``radial_clearance`` is a preload, see :func:`load_distribution`); materials give E' and the ball
         density; ``type`` the bearing type.
     loads : array_like
         (..., 5): F_x, F_y, F_z [N], M_x, M_y [N m].
@@ -792,8 +898,19 @@ def combined_analysis(bearing, loads, shaft_speed=0.0, *, reduced_modulus=None, 
     >>> print(f"{math.degrees(r.contact_angle_inner[0]):.3f} / {math.degrees(r.contact_angle_outer[0]):.3f} deg")
     49.310 / 32.510 deg
     """
+    from ..bearing import check_model
+
+    check_model(bearing, "load-distribution")
     options.setdefault("bearing_type", bearing.type)
+    options.setdefault("radial_clearance", _preload_clearance(bearing))
     return load_distribution(loads, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
+
+
+def _preload_clearance(bearing):
+    """The bearing's diametral clearance where it is zero or negative (a preload), else None (its free
+    contact angle says it all)."""
+    e = bearing.radial_clearance
+    return float(e) if e is not None and e <= 0 else None
 
 
 class Equilibrium(NamedTuple):
@@ -806,7 +923,7 @@ class Equilibrium(NamedTuple):
 
 def equilibrium(displacement, loads, shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity,
                 outer_conformity, free_angle, reduced_modulus, density, *, first_ball_angle=0.0,
-                stiffness_at="operating", raceway_control="outer"):
+                stiffness_at="operating", raceway_control="outer", radial_clearance=None, engine="auto"):
     """Residual of the ring equilibrium and tangent stiffness at a given displacement (the balls solved).
 
     Parameters
@@ -837,6 +954,10 @@ def equilibrium(displacement, loads, shaft_speed, n_balls, ball_diameter, pitch_
         See :func:`load_distribution`.
     raceway_control : {"outer", "inner"}, optional
         See :func:`load_distribution`.
+    radial_clearance : float, optional
+        See :func:`load_distribution`. [m]
+    engine : {"auto", "numpy", "compiled"}, optional
+        See :func:`load_distribution`.
 
     Returns
     -------
@@ -849,6 +970,7 @@ def equilibrium(displacement, loads, shaft_speed, n_balls, ball_diameter, pitch_
     f, w, shape = _flat_inputs(np.broadcast_to(loads, np.broadcast_shapes(np.shape(loads), u.shape)), shaft_speed)
     uu = np.broadcast_to(u, shape + (5,)).reshape(-1, 5)
     geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
-                    reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, "radial")
-    force, stiff, _ = _evaluate(geo, uu, w**2)
+                    reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, "radial",
+                    clearance=radial_clearance)
+    force, stiff, _ = _reactions(geo, np.ascontiguousarray(uu), w**2, _solve_mod.use_compiled(engine, auto=True))
     return Equilibrium((f - force).reshape(shape + (5,)), stiff.reshape(shape + (5, 5)), force.reshape(shape + (5,)))

@@ -163,7 +163,8 @@ class SetState(NamedTuple):
 
 
 def _first_contact_offsets(geos):
-    """Axial offset A sin(alpha0) of the groove-curvature centres at which each bearing's balls first touch."""
+    """Axial offset A sin(alpha0) of the groove-curvature centres at which each bearing's balls first touch
+    (0 for a bearing with zero or negative clearance, alpha0 = 0: its balls touch in the concentric position)."""
     return np.array([g.big_a * math.sin(g.a0) for g in geos])
 
 
@@ -233,6 +234,9 @@ def _set_evaluate(geos, trans, offsets, u, w2):
     return force, stiff, parts, scale
 
 
+_STALL = 10  # line searches in a row without a decrease after which a case of the set Newton stops
+
+
 def _set_newton(geos, trans, offsets, loads, w2, tol, max_iter):
     """Damped Newton on the shaft equilibrium (all cases together)."""
     arm = max(g.dm for g in geos) / 2.0
@@ -246,8 +250,10 @@ def _set_newton(geos, trans, offsets, loads, w2, tol, max_iter):
 
     force, stiff, _, tot = _set_evaluate(geos, trans, offsets, u, w2)
     norm, rel = measure(force, tot)
+    stalled = np.zeros(len(loads), dtype=bool)
+    misses = np.zeros(len(loads), dtype=int)  # line searches in a row without a decrease
     for _ in range(max_iter):
-        act = rel > tol
+        act = (rel > tol) & ~stalled
         if not act.any():
             break
         ks = stiff * sc[None, :, None] * sc[None, None, :]
@@ -263,11 +269,33 @@ def _set_newton(geos, trans, offsets, loads, w2, tol, max_iter):
             if good.all():
                 break
             t = np.where(good, t, 0.25 * t)
+        # a line search that finds no decrease still moves by its last (tiny) step, which can bring a ball
+        # into contact from the concentric start; ten of them in a row end the case (not converged)
+        misses = np.where(good, 0, misses + 1)
+        stalled |= misses >= _STALL
         u = u + t[:, None] * du
         force, stiff, _, tot = _set_evaluate(geos, trans, offsets, u, w2)
         norm, rel = measure(force, tot)
         it += act
     return u, rel <= tol, it, rel
+
+
+def _check_bound(geos, positions, loads, on_failure):
+    """Issue 29: a load beyond what the set's balls can carry with none compressed by more than a ball
+    diameter (each bearing's :func:`~bearinglab.quasistatic.combined._load_bound`; moments at the set's
+    centre over the bearings' arms |z_k| + d_m/2) stops before any work, as the solver's bound."""
+    bounds = np.array([combined._load_bound(g) for g in geos])
+    force_bound = float(np.sum(bounds))
+    moment_bound = float(np.sum(bounds * (np.abs(positions) + np.array([g.dm for g in geos]) / 2.0)))
+    over = ((np.linalg.norm(loads[:, :3], axis=-1) > force_bound)
+            | (np.linalg.norm(loads[:, 3:], axis=-1) > moment_bound))
+    if over.any() and on_failure == "raise":
+        k = int(np.flatnonzero(over)[0])
+        raise ConvergenceError("sets.set_analysis", iterations=0, residual=np.inf, estimate=np.nan,
+                               reason=f"loads {loads[k].tolist()}: beyond what the set can carry, a force above "
+                                      f"{force_bound:.4g} N or a moment above {moment_bound:.4g} N m would compress a "
+                                      "ball by more than its diameter, the solver's bound (a unit mistake?)")
+    return over
 
 
 def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spacing=None, preload=0.0,
@@ -339,6 +367,10 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
     >>> print(f"{s.bearing_loads[0, 2]:.1f} N, {s.bearing_loads[1, 2]:.1f} N")
     2000.0 N, -2000.0 N
     """
+    from ..bearing import check_model
+
+    for b in (bearings if isinstance(bearings, (list, tuple)) else [bearings]):
+        check_model(b, "bearing-set")
     bl = [bearings] if not isinstance(bearings, (list, tuple)) else list(bearings)
     orient, _ = arrangement(arrangement_kind, 0.0, 2 if len(bl) == 1 else len(bl))
     bl = bl * len(orient) if len(bl) == 1 else bl
@@ -355,11 +387,13 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
     check_positive("tol", tol, "-")
     geos = [combined._geometry(*combined._bearing_args(b), options.get("first_ball_angle", 0.0),
                                options.get("stiffness_at", "operating"), options.get("raceway_control", "outer"),
-                               b.type) for b in bl]
+                               b.type, clearance=combined._preload_clearance(b)) for b in bl]
     trans = [_transform(o, z) for o, z in zip(orient, pos, strict=True)]
+    over = _check_bound(geos, pos, flat, on_failure)
     offsets, interference = _preload_offsets(geos, orient, preload, preload_displacement)
     w2 = np.full(len(flat), w * w)
-    u, ok, it, rel = _set_newton(geos, trans, offsets, flat, w2, tol, int(max_iter))
+    u, ok, it, rel = _set_newton(geos, trans, offsets, np.where(over[:, None], 0.0, flat), w2, tol, int(max_iter))
+    ok &= ~over  # beyond the solver's bound: flagged, not solved
     if on_failure == "raise" and not ok.all():
         k = int(np.flatnonzero(~ok)[0])
         raise ConvergenceError("sets.set_analysis", iterations=int(it[k]), residual=rel[k], estimate=u[k],
@@ -375,6 +409,10 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
         notes += [f"bearing {j}: {m}" for m in combined._notes(geo, None, np.full(len(flat), w), out, ok)]
         per.append({k: v.reshape(shape + v.shape[1:]) for k, v in out.items() if k not in ("residual", "floor")})
     notes += _unloaded_notes(per, ok)
+    if over.any():
+        notes.append(f"{int(over.sum())} case(s) not converged (NaN, converged False; first: case "
+                     f"{int(np.flatnonzero(over)[0])}): loads beyond what the set can carry (a ball compressed by "
+                     "more than its diameter), the solver's bound")
     bad = ~ok
     u[bad], stiff[bad] = np.nan, np.nan
     bearing_loads = np.stack(parts, axis=1)

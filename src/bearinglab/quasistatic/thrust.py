@@ -47,9 +47,18 @@ from .ball import (
     gyroscopic_moment,
     required_friction_coefficient,
 )
-from .contact import _hertz_coefficients
+from .contact import _hertz_coefficients, _k
 from .continuation import _newton, _static_start, _unknowns_from
-from .equations import _NOT_ROOT, _OK, _STATUS_TEXT, STATUS, _angle_sequence, _equations, _prepare
+from .equations import (
+    _NOCONV,
+    _NOT_ROOT,
+    _OK,
+    _STATUS_TEXT,
+    STATUS,
+    _angle_sequence,
+    _equations,
+    _prepare,
+)
 from .search import _ROOT_TOL, _angle_iteration
 
 __all__ = [
@@ -300,6 +309,11 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
                             shape=np.shape(w))
     n = model.fa.size
     wf = np.broadcast_to(w, shape).ravel().astype(float)
+    over = _thrust_bounds(model, wf, on_failure)
+    fa_given = model.fa
+    if over.any():  # flagged below, not solved: the solve runs at a harmless thrust instead (a ball deflection
+        # of 1e-4 D), whose results are dropped
+        model = model._replace(fa=np.where(over, 1e-6 * _upper_thrust(model), model.fa))
     if _compiled_engine(engine, method):
         from . import _compiled  # imports numba: only when the compiled path runs
 
@@ -311,6 +325,11 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
         v, status, iters, meth, out = _solve_numpy(model, wf, method, tol=tol, max_iter=int(max_iter),
                                                    speed_step=speed_step)
     meth[wf == 0] = "static"
+    if over.any():
+        status = np.where(over, _NOCONV, status)
+        for key in out:
+            out[key] = np.where(over, np.nan, out[key])
+        model = model._replace(fa=fa_given)
     ok = status == _OK
     failed = np.flatnonzero(~ok)
     if failed.size and on_failure == "raise":
@@ -336,6 +355,46 @@ def contact_angles(axial_load, shaft_speed, n_balls, ball_diameter, pitch_diamet
     fields["status"] = np.array(STATUS, dtype=object)[status]
     fields["method"] = meth
     return HighSpeedState(**{k: np.asarray(fields[k]).reshape(shape)[()] for k in HighSpeedState._fields})
+
+
+#: A thrust below this many times the rounding of the groove geometry (eps A) in ball deflection cannot be
+#: resolved; beyond a ball diameter of deflection it is the solver's bound (issue 29).
+_RESOLVABLE_DEFLECTION = 1e4
+_MAX_DEFLECTION = 1.0
+
+
+def _upper_thrust(model):
+    """Per case, Z max_alpha max(K_i, K_e) D^1.5: the thrust that would compress a ball by its diameter."""
+    c = np.linspace(0.0, 1.0, 65)
+    k = np.zeros(model.fa.size)
+    for table in (model.t_inner, model.t_outer):
+        for cj in c:
+            k = np.maximum(k, _k(table, model.gid, np.full(model.fa.size, cj))[0])
+    return model.z * k * (_MAX_DEFLECTION * model.d) ** 1.5
+
+
+def _thrust_bounds(model, w, on_failure):
+    """Issue 29: a thrust too light to resolve is an InputError; one beyond the solver's bound (a ball
+    compressed by more than its diameter) a ConvergenceError, before any work (with ``on_failure="flag"``
+    the case is flagged). Returns the cases beyond the bound."""
+    bd = (model.fi + model.fo - 1.0) * model.d
+    kn = _k(model.t_inner, model.gid, np.cos(model.a0))[0]  # the softer contact bounds the deflection
+    kn = np.minimum(kn, _k(model.t_outer, model.gid, np.cos(model.a0))[0])
+    deflection = np.cbrt(model.fa / (model.z * kn * np.sin(model.a0))) ** 2
+    light = deflection < _RESOLVABLE_DEFLECTION * np.finfo(float).eps * bd
+    if light.any():
+        k = int(np.flatnonzero(light)[0])
+        least = model.z[k] * kn[k] * np.sin(model.a0[k]) * (_RESOLVABLE_DEFLECTION * np.finfo(float).eps * bd[k]) ** 1.5
+        raise InputError(f"axial_load must be >= {least:.3g} [N] to be resolved (ball deflections of at least "
+                         f"{_RESOLVABLE_DEFLECTION:g} times the rounding of the groove geometry), got {model.fa[k]:g} N")
+    over = model.fa > _upper_thrust(model)
+    if over.any() and on_failure == "raise":
+        k = int(np.flatnonzero(over)[0])
+        raise ConvergenceError("quasistatic.contact_angles", iterations=0, residual=np.inf, estimate=np.nan,
+                               reason=f"F_a = {model.fa[k]:g} N at {w[k] / RPM:g} rpm: beyond what the bearing can "
+                                      f"carry, a thrust above {_upper_thrust(model)[k]:.4g} N would compress a ball by "
+                                      "more than its diameter, the solver's bound (a unit mistake?)")
+    return over
 
 
 def zero_displacement_thrust(shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
@@ -437,11 +496,94 @@ def zero_displacement_thrust(shaft_speed, n_balls, ball_diameter, pitch_diameter
 def _bearing_args(bearing, reduced_modulus=None):
     z, d, dm, fi, fo, a0 = bearing.require("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity",
                                            "outer_conformity", "contact_angle")
+    if _preloaded(bearing):
+        raise InputError(f"radial_clearance of {bearing.designation or 'the bearing'!r} is "
+                         f"{bearing.radial_clearance * 1e6:.4g} um: no free contact angle for spec 004's model; "
+                         "high_speed_analysis solves a preloaded bearing by the 5-DOF model")
     if not 0.0 < a0 < math.pi / 2:
         raise InputError(f"contact_angle of {bearing.designation or 'the bearing'!r} must be in (0, 90) [deg] for the "
                          f"high-speed model under thrust, got {math.degrees(a0):g}")
     ep = bearing.reduced_modulus if reduced_modulus is None else reduced_modulus
     return z, d, dm, fi, fo, a0, ep, bearing.ball_material.density
+
+
+def _preloaded(bearing):
+    """True for a bearing with a zero or negative clearance (issue 30): no free contact angle, every ball
+    touching both raceways in the concentric position."""
+    e = bearing.radial_clearance
+    return e is not None and e <= 0
+
+
+def _preloaded_analysis(bearing, axial_load, shaft_speed, reduced_modulus, options):
+    """:func:`high_speed_analysis` of a bearing with zero or negative clearance, by the 5-DOF model.
+
+    Spec 004's unknowns start from the free contact angle, which such a bearing does not have: its balls
+    sit at alpha = 0, compressed by -e/2, before any thrust. Under pure thrust the 5-DOF model with the
+    rings held concentric and square (radial and tilt displacements 0, the symmetric solution) is the same
+    ball equilibrium (eqs. 5-6 with F_c, M_g and the raceway control, tests/quasistatic/test_combined.py
+    checks it ball by ball against this model at positive clearance); the state is assembled from its
+    ball 0 through the public functions, as for the other cases. delta_a counts from the concentric
+    position, where such a bearing's balls first touch.
+    """
+    from . import combined
+
+    unsupported = {"method": "newton", "gyroscopic_sign": 1, "constants": "mass"}
+    for key, want in unsupported.items():
+        if options.get(key, want) != want:
+            raise InputError(f"{key}={options[key]!r}: a bearing with zero or negative clearance is solved by the "
+                             f"5-DOF model, which takes {key}={want!r} only")
+    control = options.get("raceway_control", "outer")
+    on_failure = options.get("on_failure", "raise")
+    friction_limit = options.get("friction_limit", FRICTION_WARNING_LIMIT)
+    fa = check_positive("axial_load", axial_load, "N")
+    w = _speed("shaft_speed", shaft_speed)
+    shape = np.broadcast_shapes(np.shape(fa), np.shape(w))
+    fa, w = (np.broadcast_to(x, shape).ravel().astype(float) for x in (fa, w))
+    loads = np.zeros((fa.size, 5))
+    loads[:, 2] = fa
+    held = [0.0, 0.0, np.nan, 0.0, 0.0]
+    kw = {"reduced_modulus": reduced_modulus, "raceway_control": control, "prescribed_displacement": held,
+          "on_failure": "flag"}
+    r = combined.combined_analysis(bearing, loads, w, **kw)
+    rest = combined.combined_analysis(bearing, loads, 0.0, **kw)
+    z, d, dm, fi, fo = bearing.require("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity",
+                                       "outer_conformity")
+    ep = bearing.reduced_modulus if reduced_modulus is None else reduced_modulus
+    ai, ae = r.contact_angle_inner[:, 0], r.contact_angle_outer[:, 0]
+    qi, qe = r.ball_load_inner[:, 0], r.ball_load_outer[:, 0]
+    from .contact import contact_stiffness
+
+    k = contact_stiffness(np.nan_to_num(ai), np.nan_to_num(ae), d, dm, fi, fo, ep)
+    beta = attitude_angle(ai, ae, d, dm, raceway_control=control)
+    speeds = ball_speeds(w, ai, ae, beta, d, dm)
+    mg = np.abs(r.gyroscopic_moment[:, 0])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        fields = {"axial_load": fa, "shaft_speed": w, "contact_angle_inner": ai, "contact_angle_outer": ae,
+                  "static_contact_angle": rest.contact_angle_inner[:, 0], "axial_displacement": r.displacement[:, 2],
+                  "ball_load_inner": qi, "ball_load_outer": qe, "deflection_inner": np.cbrt(qi / k.inner) ** 2,
+                  "deflection_outer": np.cbrt(qe / k.outer) ** 2, "centrifugal_force": r.centrifugal_force[:, 0],
+                  "gyroscopic_moment": mg, "attitude_angle": beta, "cage_speed": speeds.cage_speed,
+                  "ball_spin_speed": speeds.ball_spin_speed, "bpfo": z * speeds.cage_speed,
+                  "bpfi": z * (w - speeds.cage_speed), "max_pressure_inner": r.max_pressure_inner[:, 0],
+                  "max_pressure_outer": r.max_pressure_outer[:, 0], "axial_stiffness": r.stiffness[:, 2, 2],
+                  "friction_coefficient": required_friction_coefficient(mg, qe if control == "outer" else qi, d),
+                  "converged": r.converged, "residual": r.residual, "iterations": r.iterations,
+                  "status": np.where(r.converged, "ok", "no_convergence").astype(object),
+                  "method": np.where(w > 0, "newton", "static").astype(object)}
+    ok = r.converged
+    if not ok.all() and on_failure == "raise":
+        j = int(np.flatnonzero(~ok)[0])
+        raise ConvergenceError("quasistatic.high_speed_analysis", iterations=int(r.iterations[j]), residual=np.inf,
+                               estimate=np.nan, reason=f"preloaded bearing (5-DOF model) at F_a = {fa[j]:g} N, "
+                                                       f"{w[j] / RPM:g} rpm: {'; '.join(r.warnings)}")
+    high = ok & (fields["friction_coefficient"] > friction_limit)
+    if high.any():
+        j = int(np.flatnonzero(high)[0])
+        warnings.warn(f"{high.sum()} of {fa.size} cases need a friction coefficient above {friction_limit:g} for "
+                      f"{control}-raceway control (e.g. {fields['friction_coefficient'][j]:.3g} at F_a = {fa[j]:g} N, "
+                      f"{w[j] / RPM:g} rpm): the balls would spin or skid, the model is not valid there",
+                      ValidityWarning, stacklevel=3)
+    return HighSpeedState(**{k: np.asarray(fields[k]).reshape(shape)[()] for k in HighSpeedState._fields})
 
 
 def high_speed_analysis(bearing, axial_load, shaft_speed, *, reduced_modulus=None, **options):
@@ -451,7 +593,10 @@ def high_speed_analysis(bearing, axial_load, shaft_speed, *, reduced_modulus=Non
     ----------
     bearing : BallBearing
         Needs n_balls, ball_diameter, pitch_diameter, both conformities and the free contact angle in
-        (0, 90 deg); materials give E' and the ball density.
+        (0, 90 deg); materials give E' and the ball density. A bearing with zero or negative
+        ``radial_clearance`` (no free contact angle: a preload) is solved by the 5-DOF model of
+        :mod:`bearinglab.quasistatic.combined` with the rings held concentric and square, the same ball
+        equilibrium (``method`` "newton", ``constants`` "mass" and the physical gyroscopic sign only).
     axial_load : array_like
         F_a > 0. [N]
     shaft_speed : array_like
@@ -479,6 +624,11 @@ def high_speed_analysis(bearing, axial_load, shaft_speed, *, reduced_modulus=Non
     ...       f"mu = {s.friction_coefficient:.3f}")
     56.099 / 21.121 deg, mu = 0.086
     """
+    from ..bearing import check_model
+
+    check_model(bearing, "high-speed")
+    if _preloaded(bearing):  # issue 30: no free contact angle; the 5-DOF model solves it
+        return _preloaded_analysis(bearing, axial_load, shaft_speed, reduced_modulus, options)
     return contact_angles(axial_load, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
 
 
@@ -513,6 +663,11 @@ def sign_change_thrust(bearing, shaft_speed, *, reduced_modulus=None, **options)
     >>> print(np.round(f / 1e3, 2))
     [ 2.31 26.81]
     """
+    from ..bearing import check_model
+
+    check_model(bearing, "high-speed")
+    if _preloaded(bearing):  # balls at alpha = 0 without thrust: delta_a(0) = 0 at any speed, rising with F_a
+        return np.zeros(np.shape(_speed("shaft_speed", shaft_speed)))[()]
     return zero_displacement_thrust(shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
 
 
@@ -587,6 +742,9 @@ def sweep(bearing, axial_loads, shaft_speeds, *, execution=None, reduced_modulus
     [[40.662 27.947]
      [41.609 38.504]]
     """
+    from ..bearing import check_model
+
+    check_model(bearing, "high-speed")
     fa = np.atleast_1d(check_positive("axial_loads", axial_loads, "N"))
     w = np.atleast_1d(_speed("shaft_speeds", shaft_speeds))
     if fa.ndim != 1 or w.ndim != 1:

@@ -3,7 +3,8 @@
 Modules
 -------
 static         C0 and f0 (ISO 76), Cu (ISO 281 annex B), P0 and the static safety factor s0
-dynamic        C and f_c, X / Y / e and P, L10 and the reliability factor a1 (ISO 281)
+dynamic        C and f_c, X / Y / e and P of every ball-bearing type, Ca of thrust ball bearings, L10 and the
+               reliability factor a1 (ISO 281)
 lubrication    oil viscosity (ISO VG, ASTM D2270 viscosity index, ASTM D341), nu1 and kappa, e_C classes, a_ISO (ISO 281)
 reference      ISO/TS 16281 reference rating life from the ball loads
 roller         roller bearings: ISO 281 C (10/3), ISO 76 C0, X / Y / e, Cu, a_ISO; paired tapered bearings
@@ -38,11 +39,13 @@ from .dynamic import (
     MATERIAL_FACTOR,
     DynamicLoadFactors,
     basic_rating_life,
+    dynamic_axial_load_rating,
     dynamic_load_factors,
     dynamic_load_rating,
     equivalent_dynamic_load,
     load_rating_factor,
     reliability_factor,
+    thrust_load_rating_factor,
 )
 from .lubrication import (
     CONTAMINATION_CLASSES,
@@ -138,6 +141,7 @@ __all__ = [
     "contact_dynamic_loads",
     "contamination_factor",
     "dynamic",
+    "dynamic_axial_load_rating",
     "dynamic_load_factors",
     "dynamic_load_rating",
     "equivalent_contact_loads",
@@ -181,6 +185,7 @@ __all__ = [
     "static_load_factors",
     "static_load_rating",
     "static_safety_factor",
+    "thrust_load_rating_factor",
     "viscosity_100_from_index",
     "viscosity_index",
     "viscosity_ratio",

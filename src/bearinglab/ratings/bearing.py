@@ -46,6 +46,14 @@ def _conformities(bearing):
     return fi, fo
 
 
+# the types whose ratings bearinglab computes from the geometry, and what it cannot compute for the others
+# (ISO 281 table 2's columns of double-row deep groove and self-aligning bearings, ISO 76's f0 of
+# self-aligning (4600 MPa, spherical raceway) and thrust ball bearings, and four-point bearings, which
+# neither standard covers, are not in bearinglab): the catalog's ratings are then needed
+_DYNAMIC_FROM_GEOMETRY = ("radial", "angular", "double-row-angular", "thrust")
+_STATIC_FROM_GEOMETRY = ("radial", "angular", "double-row-angular", "double-row-radial")
+
+
 def bearing_ratings(bearing, *, fatigue_method="precise"):
     """C, C0 and Cu of a bearing: the catalog's values where given, else ISO 76 / ISO 281 from the geometry.
 
@@ -53,13 +61,21 @@ def bearing_ratings(bearing, *, fatigue_method="precise"):
     ----------
     bearing : BallBearing
         With catalog ratings, or with ``n_balls``, ``ball_diameter`` and ``pitch_diameter`` (groove
-        conformities 0.52 / 0.53 of ISO 76 when not known).
+        conformities 0.52 / 0.53 of ISO 76 when not known). Double-row types rate both rows (i = 2);
+        a thrust ball bearing's C is Ca of ISO 281 table 4 (90 deg).
     fatigue_method : {"precise", "simplified"}
         Cu by ISO 281 annex B.3 from the contact stress (needs the ball set), or C0/22.
 
     Returns
     -------
     BearingRatings
+
+    Raises
+    ------
+    InputError
+        A rating that is neither in the catalog nor computable: the ball set is unknown, or the standards'
+        tables of the bearing's type are not in bearinglab (double-row deep groove and self-aligning C;
+        self-aligning and thrust C0; four-point C and C0).
 
     Examples
     --------
@@ -75,31 +91,44 @@ def bearing_ratings(bearing, *, fatigue_method="precise"):
     z, d, dpw, alpha = _geometry(bearing)
     fi, fo = _conformities(bearing)
     has_set = None not in (z, d, dpw)
+    kind, rows = bearing.type, bearing.rows
     source = {}
+    label = bearing.designation or "this bearing"
 
-    def need(what):
+    def need(what, computable):
+        if kind not in computable:
+            raise InputError(f"{what} of {label!r} is not in its catalog entry, and bearinglab does not compute it "
+                             f"for a {kind} bearing (the standard's table for the type is not in bearinglab); give "
+                             f"{what} (catalog entry, bearing file)")
         if not has_set:
-            label = bearing.designation or "this bearing"
             raise InputError(f"{what} of {label!r} is not in its catalog entry and the ball set (n_balls, "
                              "ball_diameter, pitch_diameter) needed to compute it is not known")
 
-    f0 = float(static.static_load_factor(d, dpw, alpha, inner_conformity=fi, outer_conformity=fo)) \
-        if has_set else float("nan")
+    if bearing.static_load_factor is not None:
+        f0 = float(bearing.static_load_factor)  # the maker's printed f0
+    elif has_set and kind in _STATIC_FROM_GEOMETRY:
+        f0 = float(static.static_load_factor(d, dpw, alpha, inner_conformity=fi, outer_conformity=fo))
+    else:
+        f0 = float("nan")
     if bearing.dynamic_load_rating is not None:
         c, source["dynamic_load_rating"] = bearing.dynamic_load_rating, "catalog"
     else:
-        need("dynamic_load_rating")
-        c, source["dynamic_load_rating"] = float(dynamic.dynamic_load_rating(z, d, dpw, alpha)), "ISO 281"
+        need("dynamic_load_rating", _DYNAMIC_FROM_GEOMETRY)
+        c = float(dynamic.dynamic_axial_load_rating(z, d, dpw) if kind == "thrust"
+                  else dynamic.dynamic_load_rating(z, d, dpw, alpha, n_rows=rows))
+        source["dynamic_load_rating"] = "ISO 281"
     if bearing.static_load_rating is not None:
         c0, source["static_load_rating"] = bearing.static_load_rating, "catalog"
     else:
-        need("static_load_rating")
-        c0 = float(static.static_load_rating(z, d, dpw, alpha, inner_conformity=fi, outer_conformity=fo))
+        need("static_load_rating", _STATIC_FROM_GEOMETRY)
+        c0 = float(static.static_load_rating(z, d, dpw, alpha, n_rows=rows, inner_conformity=fi,
+                                             outer_conformity=fo))
         source["static_load_rating"] = "ISO 76"
     if bearing.fatigue_load_limit is not None:
         cu, source["fatigue_load_limit"] = bearing.fatigue_load_limit, "catalog"
-    elif fatigue_method == "precise" and has_set:
-        cu = float(static.fatigue_load_limit(z, d, dpw, alpha, inner_conformity=fi, outer_conformity=fo))
+    elif fatigue_method == "precise" and has_set and kind in _STATIC_FROM_GEOMETRY:
+        cu = float(static.fatigue_load_limit(z, d, dpw, alpha, n_rows=rows, inner_conformity=fi,
+                                             outer_conformity=fo))
         source["fatigue_load_limit"] = "ISO 281 annex B (precise)"
     else:
         cu = float(static.fatigue_load_limit_simplified(c0, dpw if dpw is not None else bearing.mean_diameter))

@@ -9,7 +9,7 @@ fatigue_load_limit_simplified   Cu = C0 / 22, times (100 mm / Dpw)^0.5 above Dpw
 
 Static equivalent load and safety
 ---------------------------------
-static_load_factors         X0, Y0 of ISO 76:2006 table 1 (single-row ball bearings)
+static_load_factors         X0, Y0 of ISO 76:2006 table 1 (single- and double-row, self-aligning; thrust P0 = Fa)
 static_equivalent_load      P0 = max(X0 Fr + Y0 Fa, Fr), ISO 76:2006 eqs. (3)-(4)
 static_safety_factor        s0 = C0 / P0, with a warning below the usual minimum
 
@@ -22,6 +22,12 @@ References
    f0) and 5.2 (table 1 of X0, Y0); ISO/TR 10657 (explanatory notes) for the derivation of f0.
 .. [2] ISO 281:2007, *Rolling bearings -- Dynamic load ratings and rating life*, annex B.3 (fatigue load
    limit Cu).
+.. [3] EPK (European Bearing Corporation), General catalogue 2011, table 13, p. 36: X0 and Y0 of radial
+   and angular contact ball bearings after ISO 76 -- single row and double row (double row radial 0.6,
+   0.5; angular contact 15-45 deg X0 = 1, Y0 = 0.92, 0.84, 0.76, 0.66, 0.58, 0.52, 0.44; self-aligning
+   X0 = 1, Y0 = 0.44 cot(alpha)). SKF General Catalogue 6000/I RU (2006) prints the same: 32 A (30 deg)
+   Y0 0.66 and 33 D (45 deg) 0.44, p. 440; four-point (35 deg) P0 = Fr + 0.58 Fa, p. 455; double row deep
+   groove P0 = 0.6 Fr + 0.5 Fa, p. 393; thrust ball bearings P0 = Fa, p. 841.
 """
 
 from __future__ import annotations
@@ -84,6 +90,10 @@ _RADIAL_X0_Y0 = (0.6, 0.5)
 _ANGULAR_ANGLES_DEG = np.array([15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 45.0])
 _ANGULAR_Y0 = np.array([0.46, 0.42, 0.38, 0.33, 0.29, 0.26, 0.22])
 _ANGULAR_X0 = 0.5
+# ISO 76:2006 table 1, double-row angular contact (and four-point, which SKF rates so) by angle: X0 = 1 and
+# twice the single-row Y0 (module reference [3]); self-aligning X0 = 1, Y0 = 0.44 cot(alpha).
+_DOUBLE_ROW_Y0 = 2.0 * _ANGULAR_Y0
+_SELF_ALIGNING_Y0 = 0.44
 
 
 def _contact_load_at_stress(stress, ball_diameter, pitch_diameter, conformity, contact_angle, race):
@@ -272,31 +282,34 @@ class StaticLoadFactors(NamedTuple):
     """Y0. [-]"""
 
 
-def _angular_degrees(contact_angle, table, instead):
-    """Contact angle in degrees, required in [15, 45] (the angular-contact rows of the ISO tables tabulated
-    here); the message says what to use ``instead`` (e.g. the maker's factors) for an angle outside."""
+def _angular_degrees(contact_angle, table, instead, *, lowest=15.0):
+    """Contact angle in degrees, required in [lowest, 45] (the angular-contact rows of the ISO tables
+    tabulated here); the message says what to use ``instead`` (e.g. the maker's factors) for an angle outside."""
     deg = np.degrees(np.asarray(contact_angle, dtype=float))
-    bad = ~((deg >= 15.0 - 1e-9) & (deg <= 45.0 + 1e-9))
+    bad = ~((deg >= lowest - 1e-9) & (deg <= 45.0 + 1e-9))
     if bad.any():
         got = float(deg[bad].flat[0])
         # ISO 281 table 3 also has rows for 5 and 10 deg: not carried over, as no published source that
         # confirms them (and the column of relative axial load they are read by) was found (issue 15)
-        why = ("angles below 15 deg are not tabulated here" if got < 15.0
+        why = (f"angles below {lowest:g} deg are not tabulated here" if got < lowest
                else "above 45 deg the bearing is a thrust bearing, not covered")
-        raise InputError(f"contact_angle must be in [15, 45] [deg] for {table} (angular contact), "
+        raise InputError(f"contact_angle must be in [{lowest:g}, 45] [deg] for {table} (angular contact), "
                          f"got {got:.6g} deg: {why}; check the bearing's nominal contact angle, or {instead}")
     return deg
 
 
 def static_load_factors(contact_angle=0.0, *, bearing_type="radial"):
-    """X0 and Y0 of ISO 76:2006 table 1 for single-row ball bearings.
+    """X0 and Y0 of ISO 76:2006 table 1 for radial ball bearings (and a thrust ball bearing's P0 = Fa).
 
     Parameters
     ----------
     contact_angle : array_like
-        Nominal contact angle; angular-contact bearings 15 to 45 deg, linear between the rows. [rad]
-    bearing_type : {"radial", "angular"}
-        Deep-groove (X0 = 0.6, Y0 = 0.5 at any angle) or angular contact.
+        Nominal contact angle; angular-contact bearings 15 to 45 deg, linear between the rows;
+        self-aligning ones below 45 deg; thrust ball bearings 90 deg. [rad]
+    bearing_type : str
+        ``radial`` and ``double-row-radial`` (X0 = 0.6, Y0 = 0.5 at any angle), ``angular``,
+        ``double-row-angular`` and ``four-point`` (by angle), ``self-aligning`` (X0 = 1,
+        Y0 = 0.44 cot(alpha)), ``thrust`` (X0 = 0, Y0 = 1: P0 = Fa).
 
     Returns
     -------
@@ -306,15 +319,30 @@ def static_load_factors(contact_angle=0.0, *, bearing_type="radial"):
     --------
     >>> print(static_load_factors(np.radians(40.0), bearing_type="angular").axial_factor)
     0.26
+    >>> print(static_load_factors(np.radians(35.0), bearing_type="four-point").axial_factor)
+    0.58
     """
-    if bearing_type == "radial":
+    if bearing_type in ("radial", "double-row-radial"):
         return StaticLoadFactors(*_RADIAL_X0_Y0)
-    if bearing_type != "angular":
-        raise InputError(f"bearing_type must be one of ['radial', 'angular'], got {bearing_type!r}")
+    if bearing_type == "self-aligning":
+        a = np.asarray(contact_angle, dtype=float)
+        if not np.all((a > 0) & (a < np.pi / 4)):
+            raise InputError(f"contact_angle must be in (0, 45) [deg] for a self-aligning ball bearing, got "
+                             f"{float(np.degrees(np.min(a))):.6g} deg")
+        return StaticLoadFactors(1.0, (_SELF_ALIGNING_Y0 / np.tan(a))[()])
+    if bearing_type == "thrust":
+        if not np.allclose(np.asarray(contact_angle, dtype=float), np.pi / 2, rtol=0.0, atol=1e-9):
+            raise InputError(f"bearing_type 'thrust': the factors here are those of thrust ball bearings of 90 deg "
+                             f"(P0 = Fa), got a contact angle of {float(np.degrees(np.min(contact_angle))):.6g} deg")
+        return StaticLoadFactors(0.0, 1.0)
+    if bearing_type not in ("angular", "double-row-angular", "four-point"):
+        raise InputError(f"bearing_type must be one of ['radial', 'angular', 'four-point', 'double-row-angular', "
+                         f"'double-row-radial', 'self-aligning', 'thrust'], got {bearing_type!r}")
     deg = _angular_degrees(contact_angle, "ISO 76 table 1",
                            "give P0 from the maker's X0 and Y0 (static_safety_factor(C0, P0))")
-    y0 = np.interp(deg, _ANGULAR_ANGLES_DEG, _ANGULAR_Y0)
-    return StaticLoadFactors(_ANGULAR_X0, y0[()])
+    if bearing_type == "angular":
+        return StaticLoadFactors(_ANGULAR_X0, np.interp(deg, _ANGULAR_ANGLES_DEG, _ANGULAR_Y0)[()])
+    return StaticLoadFactors(1.0, np.interp(deg, _ANGULAR_ANGLES_DEG, _DOUBLE_ROW_Y0)[()])
 
 
 def static_equivalent_load(radial_load, axial_load, contact_angle=0.0, *, bearing_type="radial"):
@@ -326,13 +354,14 @@ def static_equivalent_load(radial_load, axial_load, contact_angle=0.0, *, bearin
         Fr and Fa, >= 0. [N]
     contact_angle : array_like
         Nominal contact angle (angular contact bearings). [rad]
-    bearing_type : {"radial", "angular"}
-        Deep-groove or angular contact.
+    bearing_type : str
+        See :func:`static_load_factors`.
 
     Returns
     -------
     ndarray or float
-        :math:`P_0 = \max(X_0 F_r + Y_0 F_a, F_r)`, ISO 76:2006 eqs. (3) and (4). [N]
+        :math:`P_0 = \max(X_0 F_r + Y_0 F_a, F_r)`, ISO 76:2006 eqs. (3) and (4); of a thrust ball
+        bearing :math:`P_{0a} = F_a` (a radial load is refused). [N]
 
     Examples
     --------
@@ -341,7 +370,13 @@ def static_equivalent_load(radial_load, axial_load, contact_angle=0.0, *, bearin
     """
     fr = check_nonnegative("radial_load", radial_load, "N")
     fa = check_nonnegative("axial_load", axial_load, "N")
-    if bearing_type == "angular" and not np.any(fa):
+    if bearing_type == "thrust":
+        static_load_factors(contact_angle, bearing_type="thrust")
+        if np.any(fr > 0):
+            raise InputError(f"radial_load must be 0 [N] for a thrust ball bearing (P0 = Fa), got "
+                             f"{float(np.max(fr)):g} N")
+        return np.broadcast_to(fa, np.broadcast(fr, fa).shape).copy()[()]
+    if bearing_type in ("angular", "double-row-angular", "four-point", "self-aligning") and not np.any(fa):
         # Fa = 0: P0 = max(X0 Fr, Fr) = Fr (X0 <= 1 on every row), so an angle outside the tabulated rows
         # needs no row
         return np.broadcast_to(fr, np.broadcast(fr, fa).shape).copy()[()]

@@ -14,16 +14,17 @@ Solvers
 -------
 solve_dual      the fast exact method: the dual of (6.1) is the lowest point, directly above the origin,
                 of the convex hull of the points (sin theta_i, cos theta_i, dk_i); its vertices are the
-                ball triangles that contain the origin and the diametral pairs, so a0 is the smallest
-                barycentric interpolation of dk at the origin over those (one matrix product for a batch
-                of positions when the balls keep their relative azimuths, as in spec 003 section 10)
+                ball triangles that contain the origin and the diametral pairs. A walk over them (the
+                simplex method on the dual, :mod:`bearinglab.runout._compiled`) reaches the lowest in a
+                few pivots of O(n) each, all positions together: memory O(P n), time O(P n) per pivot
 solve_triples   the independent enumeration of spec 003 section 8.2 (primal triples, then the face
-                candidates of step 4)
+                candidates of step 4); O(n^3) per position, so refused above ``MAX_TRIPLES_BALLS`` balls
 solve_lp        the general LP solver (scipy.optimize.linprog, HiGHS dual simplex), one position at a
                 time: stage 1, then the face vertices from four small LPs (section 8.1)
+check_status    raise ConvergenceError for a walk that did not end
 
-Each returns ``(a0, b, d, lam, degenerate, diameter)`` with ``lam`` the dual weights (load shares)
-per ball; the callers compute slacks and contact flags.
+Each returns ``(a0, b, d, lam, degenerate, diameter)`` (the last two solvers ``(a0, b, d, diameter)``) with
+``lam`` the dual weights (load shares) per ball; the callers compute slacks and contact flags.
 """
 
 from __future__ import annotations
@@ -38,13 +39,27 @@ from .._solve import (
     RUNOUT_STRICT_WEIGHT,
     RUNOUT_TIE_TOL_UM,
 )
-from ..errors import ConvergenceError
+from ..errors import ConvergenceError, InputError
 
 __all__: list[str] = []
 
-_SAME_PATTERN_ATOL = 1e-12  # rad, relative azimuths equal in all positions -> one candidate matrix
-_CHUNK = 4096  # positions per block in the paths that need per-position candidate weights
-_BLOCK = 4096  # positions per block of the shared-candidate path (values stay in cache)
+#: A ball this far below the plane of the current triangle enters it [um, times max(1, max |dk|)]. Far
+#: above the rounding of the slacks (~1e-16 x scale) and far below the tie tolerance of section 8 (1e-9):
+#: the a0 found is within this of the optimum (the triangle's plane is feasible to it).
+WALK_TOL_UM = 1e-12
+#: Most pivots of the walk, PIVOTS_PER_BALL n + PIVOTS_EXTRA, before it is declared not converged. It takes
+#: a few (1-5 for 16 balls, 2-6 for 1000; measured on random errors); cycling is impossible in exact
+#: arithmetic, so this only bounds a loop that rounding could keep going.
+PIVOTS_PER_BALL, PIVOTS_EXTRA = 4, 64
+_SIN120 = np.sqrt(3.0) / 2.0  # sin 120 deg: the start triangle's directions
+_OK, _NOCONV = 0, 1  # statuses of a position's walk
+
+_SAME_PATTERN_ATOL = 1e-12  # rad, relative azimuths equal in all positions (a rigidly turned ball set)
+_BLOCK = 1 << 16  # balls x positions per block of the walk (its arrays stay in the CPU cache)
+#: most balls of the triple enumeration, O(n^3) per position: at 64 balls C(64, 3) = 41 664 triples and
+#: 2016 pair vertices hold about 60 MB a position; the dual walk and the LP have no such limit
+MAX_TRIPLES_BALLS = 64
+_TRIPLES_BLOCK = 1 << 22  # elements of the largest (positions x triples x balls) array of a block
 
 
 def scale(dk):
@@ -52,33 +67,8 @@ def scale(dk):
     return np.maximum(1.0, np.max(np.abs(dk), axis=-1))
 
 
-def _unit(angles):
-    # constraint normals in the (B, D) plane: u_i = (sin theta_i, cos theta_i)
-    return np.sin(angles), np.cos(angles)
-
-
-def _cross(ax, ay, bx, by):
-    return ax * by - ay * bx
-
-
 def _triples(n):
     return np.array(list(itertools.combinations(range(n), 3)), dtype=np.intp).reshape(-1, 3)
-
-
-def _barycentric(angles, idx):
-    """Barycentric coordinates of the origin in the triangles ``idx`` of the unit points at ``angles``.
-
-    angles (m, n) -> lam (m, T, 3). Three distinct points of a circle are never collinear, so the
-    triangle area in the denominator does not vanish for distinct azimuths.
-    """
-    ux, uy = _unit(angles)
-    x = ux[:, idx]
-    y = uy[:, idx]
-    w0 = _cross(x[..., 1], y[..., 1], x[..., 2], y[..., 2])
-    w1 = _cross(x[..., 2], y[..., 2], x[..., 0], y[..., 0])
-    w2 = _cross(x[..., 0], y[..., 0], x[..., 1], y[..., 1])
-    w = np.stack([w0, w1, w2], axis=-1)
-    return w / w.sum(axis=-1, keepdims=True)
 
 
 def same_pattern(angles):
@@ -93,235 +83,221 @@ def same_pattern(angles):
     return bool(np.all(np.abs(rel) < _SAME_PATTERN_ATOL))
 
 
-def _shared_candidates(pattern):
-    """Dual vertices for one azimuth pattern (n,): strict triangles and diametral pairs.
-
-    Returns idx (T, 3), lam (T, 3), strict (T,). A pair is stored as a triangle whose third weight is 0;
-    each diametral pair appears once.
-    """
-    n = pattern.size
-    idx = _triples(n)
-    lam = _barycentric(pattern[None, :], idx)[0]
-    lo = lam.min(axis=1)
-    strict = lo > RUNOUT_STRICT_WEIGHT
-    keep = strict.copy()
-    pairs = []
-    seen = set()
-    for t in np.flatnonzero((lo >= -RUNOUT_STRICT_WEIGHT) & ~strict):
-        order = np.argsort(lam[t])[::-1]
-        i, j = sorted(idx[t, order[:2]])
-        if (i, j) in seen:
-            continue
-        seen.add((i, j))
-        if abs(np.sin(pattern[j] - pattern[i])) < 1e-12 and np.cos(pattern[j] - pattern[i]) < 0:
-            pairs.append((i, j))
-        else:  # a near-degenerate triangle of an irregular set: keep it as it is
-            keep[t] = True
-    order = np.argsort(~strict[keep], kind="stable")  # strict triangles first
-    idx_s, lam_s, strict_s = idx[keep][order], lam[keep][order], strict[keep][order]
-    if pairs:
-        pi = np.array([(i, j, j) for i, j in pairs], dtype=np.intp)
-        pl = np.tile([0.5, 0.5, 0.0], (len(pairs), 1))
-        idx_s = np.concatenate([idx_s, pi])
-        lam_s = np.concatenate([lam_s, pl])
-        strict_s = np.concatenate([strict_s, np.zeros(len(pairs), bool)])
-    return idx_s, lam_s, strict_s
+def max_pivots(n):
+    """Most pivots of the walk for ``n`` balls."""
+    return PIVOTS_PER_BALL * n + PIVOTS_EXTRA
 
 
-def _point_from_triangle(dk, angles, a0, tri):
-    """(B, D) through the three balls of ``tri`` at height a0: least squares on the 3 equations."""
-    rows = np.arange(dk.shape[0])[:, None]
-    th = angles[rows, tri]
-    r = dk[rows, tri] - a0[:, None]
-    sx, cx = np.sin(th), np.cos(th)
-    # normal equations of u_i . v = r_i, i in tri
-    m11 = (sx * sx).sum(1)
-    m12 = (sx * cx).sum(1)
-    m22 = (cx * cx).sum(1)
-    y1 = (sx * r).sum(1)
-    y2 = (cx * r).sum(1)
+# ------------------------------------------------------------------------------ the walk, over positions
+# Each function below does, for every row (position), the operations of its namesake in ``_compiled`` in
+# the same order (``_bary`` and ``_plane`` are compiled from these very functions), so that the two engines
+# differ only where their libraries round sin and cos differently.
+def _bary(xi, yi, xj, yj, xk, yk, qx, qy):
+    """Barycentric coordinates of (qx, qy) in the triangle of (xi, yi), (xj, yj), (xk, yk)."""
+    wi = (xj - qx) * (yk - qy) - (yj - qy) * (xk - qx)
+    wj = (xk - qx) * (yi - qy) - (yk - qy) * (xi - qx)
+    wk = (xi - qx) * (yj - qy) - (yi - qy) * (xj - qx)
+    t = wi + wj + wk
+    return wi / t, wj / t, wk / t
+
+
+def _plane(si, ci, ri, sj, cj, rj, sk, ck, rk):
+    """(B, D) with B s + D c = r at the three balls (least squares; the equations are consistent)."""
+    m11 = si * si + sj * sj + sk * sk
+    m12 = si * ci + sj * cj + sk * ck
+    m22 = ci * ci + cj * cj + ck * ck
+    y1 = si * ri + sj * rj + sk * rk
+    y2 = ci * ri + cj * rj + ck * rk
     det = m11 * m22 - m12 * m12
-    b = (m22 * y1 - m12 * y2) / det
-    d = (m11 * y2 - m12 * y1) / det
-    return b, d
+    return (m22 * y1 - m12 * y2) / det, (m11 * y2 - m12 * y1) / det
 
 
-def _segment(dk, angles, a0, i, centre_b, centre_d, tie_break):
-    """Face of a diametral pair (i, i'): the segment u_i . v = r_i cut by the other balls.
+def _start(dk, s, c):
+    """Start triangles (rows of ``_compiled._start`` with the lowest ball): (m, 3) ball indices."""
+    m, n = dk.shape
+    rows = np.arange(m)
+    i0 = dk.argmin(axis=1)
+    x0, y0 = s[rows, i0], c[rows, i0]
+    a, b = (i0 + (n + 1) // 3) % n, (i0 + (2 * n + 1) // 3) % n
+    ok = (a != i0) & (b != i0) & (a != b) & _contains(x0, y0, s, c, rows, a, b)
+    if not ok.all():  # not equally spaced in index order: the balls nearest to +-120 deg
+        bad = np.flatnonzero(~ok)
+        xb, yb = x0[bad, None], y0[bad, None]
+        r3 = _SIN120
+        a2 = (s[bad] * (-0.5 * xb - r3 * yb) + c[bad] * (r3 * xb - 0.5 * yb)).argmax(axis=1)
+        b2 = (s[bad] * (-0.5 * xb + r3 * yb) + c[bad] * (-r3 * xb - 0.5 * yb)).argmax(axis=1)
+        a[bad], b[bad] = a2, b2
+        ok2 = (a2 != i0[bad]) & (b2 != i0[bad]) & (a2 != b2) & _contains(x0[bad], y0[bad], s, c, bad, a2, b2)
+        bad = bad[~ok2]
+        if bad.size:  # irregular sets: the most opposite ball and the farthest from the chord
+            xb, yb = x0[bad, None], y0[bad, None]
+            opp = (s[bad] * xb + c[bad] * yb).argmin(axis=1)
+            ex, ey = s[bad, opp][:, None] - xb, c[bad, opp][:, None] - yb
+            sigma = np.where(ex * (-yb) - ey * (-xb) >= 0.0, 1.0, -1.0)
+            far = (sigma * (ex * (c[bad] - yb) - ey * (s[bad] - xb))).argmax(axis=1)
+            a[bad], b[bad] = opp, far
+    return np.stack([i0, a, b], axis=1)
 
-    Returns b, d, length.
-    """
+
+def _contains(x0, y0, s, c, rows, a, b):
+    """The triangle of (x0, y0) and the balls a, b of the rows holds the centre (weights >= -1e-9)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        lam = _bary(x0, y0, s[rows, a], c[rows, a], s[rows, b], c[rows, b], 0.0, 0.0)
+    return np.minimum(lam[0], np.minimum(lam[1], lam[2])) >= -RUNOUT_STRICT_WEIGHT
+
+
+def _walk(dk, s, c, centre_b, centre_d, midpoint):
+    """``_compiled.walk`` for every row of dk, s, c (m, n) at once; returns its outputs as arrays."""
+    m, n = dk.shape
+    scale_ = np.maximum(1.0, np.abs(dk).max(axis=1))
+    thr = WALK_TOL_UM * scale_
+    basis = np.sort(_start(dk, s, c), axis=1)  # kept sorted, as the compiled walk keeps it
+    status = np.ones(m, np.int64)
+    active = np.arange(m)
+    for _ in range(max_pivots(n) + 1):
+        rows = active[:, None]
+        bs, bc, bk = s[rows, basis[active]], c[rows, basis[active]], dk[rows, basis[active]]
+        lam = _bary(bs[:, 0], bc[:, 0], bs[:, 1], bc[:, 1], bs[:, 2], bc[:, 2], 0.0, 0.0)
+        a0 = lam[0] * bk[:, 0] + lam[1] * bk[:, 1] + lam[2] * bk[:, 2]
+        b, d = _plane(*(v for q in range(3) for v in (bs[:, q], bc[:, q], bk[:, q] - a0)))
+        r = dk[active] - a0[:, None]
+        r -= b[:, None] * s[active]
+        r -= d[:, None] * c[active]
+        e = r.argmin(axis=1)
+        done = r[np.arange(active.size), e] >= -thr[active]
+        status[active[done]] = _OK
+        go = ~done
+        if not go.any():
+            break
+        e, lam = e[go], [v[go] for v in lam]
+        bs, bc = bs[go], bc[go]
+        active = active[go]
+        mu = _bary(bs[:, 0], bc[:, 0], bs[:, 1], bc[:, 1], bs[:, 2], bc[:, 2], s[active, e], c[active, e])
+        best = np.full(active.size, np.inf)
+        out = np.zeros(active.size, np.intp)
+        for slot in range(3):  # the ratio test, slot by slot as the scalar loop
+            with np.errstate(divide="ignore", invalid="ignore"):
+                ratio = np.maximum(lam[slot], 0.0) / mu[slot]
+            better = (mu[slot] > 0.0) & (ratio < best)
+            best = np.where(better, ratio, best)
+            out = np.where(better, slot, out)
+        basis[active, out] = e
+        basis[active] = np.sort(basis[active], axis=1)
+    return _finish(dk, s, c, basis, centre_b, centre_d, midpoint, scale_, status)
+
+
+def _finish(dk, s, c, basis, centre_b, centre_d, midpoint, scale_, status):
+    """The solution from the final (sorted) triangle of every row, as ``_compiled.walk`` ends (its last
+    pass computes the same values in the same order)."""
+    m, n = dk.shape
+    rows = np.arange(m)
+    bs, bc, bk = (v[rows[:, None], basis] for v in (s, c, dk))
+    li, lj, lk = _bary(bs[:, 0], bc[:, 0], bs[:, 1], bc[:, 1], bs[:, 2], bc[:, 2], 0.0, 0.0)
+    a0 = li * bk[:, 0] + lj * bk[:, 1] + lk * bk[:, 2]
+    lam = np.zeros((m, n))
+    for q, v in enumerate((li, lj, lk)):
+        lam[rows, basis[:, q]] = v
+    b, d = _plane(*(v for q in range(3) for v in (bs[:, q], bc[:, q], bk[:, q] - a0)))
+    length = np.zeros(m)
+    seg = ~(np.minimum(li, np.minimum(lj, lk)) > RUNOUT_STRICT_WEIGHT)
+    if seg.any():  # the centre on an edge: a diametral pair's line, cut by the other balls
+        w = np.stack([li, lj, lk], axis=1)[seg]
+        first = np.zeros(w.shape[0], np.intp)
+        first = np.where(w[:, 1] > w[rows[: w.shape[0]], first], 1, first)
+        first = np.where(w[:, 2] > w[rows[: w.shape[0]], first], 2, first)
+        f = basis[seg][rows[: w.shape[0]], first]
+        b[seg], d[seg], length[seg] = _segment(
+            dk[seg], s[seg], c[seg], a0[seg], f, centre_b[seg], centre_d[seg], midpoint
+        )
+    degenerate = length > RUNOUT_CONTACT_TOL_UM * scale_
+    return a0, b, d, lam, degenerate, np.where(degenerate, length, 0.0), status
+
+
+def _segment(dk, s, c, a0, f, centre_b, centre_d, midpoint):
+    """Face of the pair through ball f: the segment u_f . v = dk_f - a0 cut by the other balls; b, d, length."""
     rows = np.arange(dk.shape[0])
-    th_i = angles[rows, i]
-    r_i = dk[rows, i] - a0
-    ux, uy = np.sin(th_i), np.cos(th_i)
-    ex, ey = uy, -ux  # along the face, perpendicular to u_i
-    p0x, p0y = r_i * ux, r_i * uy
-    rel = angles - th_i[:, None]
-    a = np.sin(rel)  # u_k . e
-    bnd = (dk - a0[:, None]) - r_i[:, None] * np.cos(rel)  # r_k - u_k . p0
+    sf, cf = s[rows, f][:, None], c[rows, f][:, None]
+    rf = dk[rows, f] - a0
+    px, py = rf * sf[:, 0], rf * cf[:, 0]
+    a = s * cf - c * sf
+    bnd = (dk - a0[:, None]) - rf[:, None] * (c * cf + s * sf)
     with np.errstate(divide="ignore", invalid="ignore"):
         lim = bnd / a
-    up = a > 1e-12
-    dn = a < -1e-12
-    t_hi = np.where(up, lim, np.inf).min(axis=1)
-    t_lo = np.where(dn, lim, -np.inf).max(axis=1)
-    # rounding can cross the two ends of a zero-length face
+    t_hi = np.where(a > 1e-12, lim, np.inf).min(axis=1)
+    t_lo = np.where(a < -1e-12, lim, -np.inf).max(axis=1)
     mid = 0.5 * (t_lo + t_hi)
-    crossed = t_lo > t_hi
+    crossed = t_lo > t_hi  # rounding crossed the two ends of a face of zero length
     t_lo = np.where(crossed, mid, t_lo)
     t_hi = np.where(crossed, mid, t_hi)
-    if tie_break == "midpoint":
+    sf, cf = sf[:, 0], cf[:, 0]
+    if midpoint:
         t = mid
     else:
-        t_c = (centre_b - p0x) * ex + (centre_d - p0y) * ey
-        t = np.clip(t_c, t_lo, t_hi)
-    return p0x + t * ex, p0y + t * ey, t_hi - t_lo
+        t = np.minimum(np.maximum((centre_b - px) * cf + (centre_d - py) * (-sf), t_lo), t_hi)
+    return px + t * cf, py - t * sf, t_hi - t_lo
 
 
-def _finish(dk, angles, values, idx, lam, strict, centre_b, centre_d, tie_break):
-    """From candidate values to the solution (shared by the shared and per-position paths).
+def solve_dual(dk, angles, centre_b, centre_d, tie_break="centre", kernel=None):
+    """Exact solve of (6.1) through its dual, vectorized over positions; memory O(P n).
 
-    values: (P, T) for per-position candidates, or the pair (strict block, other block) of column
-    blocks for shared candidates (``strict`` 1-D, strict candidates first).
-    """
-    P, n = dk.shape
-    rows = np.arange(P)
-    tol = RUNOUT_TIE_TOL_UM * scale(dk)
-    if strict.ndim == 1:  # shared candidates, strict ones first
-        ns = int(strict.sum())
-        # values = (strict block, rest block), each C-contiguous (argmin on a column slice is slow)
-        v_s, v_r = values
-        t_s = v_s.argmin(axis=1) if ns else np.zeros(P, np.intp)
-        s_min = v_s[rows, t_s] if ns else np.full(P, np.inf)
-        if v_r.shape[1]:
-            t_r = v_r.argmin(axis=1) + ns
-            r_min = v_r[rows, t_r - ns]
-        else:
-            t_r, r_min = t_s, s_min
-        a0 = np.minimum(s_min, r_min)
-        t_all = np.where(s_min <= r_min, t_s, t_r)
-    else:
-        t_all = values.argmin(axis=1)
-        a0 = values[rows, t_all]
-        vs = np.where(strict, values, np.inf)
-        t_s = vs.argmin(axis=1)
-        s_min = vs[rows, t_s]
-    point = s_min <= a0 + tol
-    # the winning candidate: a strict triangle if one is optimal, otherwise a diametral pair
-    t_win = np.where(point, t_s, t_all)
-    idx_w = idx[t_win] if idx.ndim == 2 else idx[rows, t_win]
-    lam_w = lam[t_win] if lam.ndim == 2 else lam[rows, t_win]
-    b = np.empty(P)
-    d = np.empty(P)
-    length = np.zeros(P)
-    if point.any():
-        b[point], d[point] = _point_from_triangle(dk[point], angles[point], a0[point], idx_w[point])
-    seg = ~point
-    if seg.any():
-        order = np.argsort(-lam_w[seg], axis=1)
-        first = np.take_along_axis(idx_w[seg], order[:, :1], axis=1)[:, 0]
-        b[seg], d[seg], length[seg] = _segment(
-            dk[seg],
-            angles[seg],
-            a0[seg],
-            first,
-            np.broadcast_to(centre_b, (P,))[seg],
-            np.broadcast_to(centre_d, (P,))[seg],
-            tie_break,
-        )
-    weights = np.zeros((P, n))
-    for j in (2, 1, 0):  # one index per row in each assignment; a pair's third weight is 0
-        weights[rows, idx_w[:, j]] += lam_w[:, j]
-    degenerate = length > RUNOUT_CONTACT_TOL_UM * scale(dk)
-    return a0, b, d, weights, degenerate, np.where(degenerate, length, 0.0)
+    dk, angles: (P, n) in um and rad; centre_b, centre_d: (P,) tie-break centre in um. ``kernel``, if
+    given, is :func:`bearinglab.runout._compiled.solve` (the same method one position at a time, compiled),
+    which the caller imports only when the compiled engine runs (it imports numba).
+    Returns a0, b, d, lam, degenerate, diameter.
 
-
-def _weighted(dk, idx, lam):
-    """(P, T) array of lam[t, 0] dk[:, idx[t, 0]] + lam[t, 1] dk[:, idx[t, 1]] + lam[t, 2] dk[:, idx[t, 2]].
-
-    Summed in a fixed order per row (not a BLAS product, whose rounding can depend on the number of
-    rows): a position gives the same bits alone or in any batch.
-    """
-    out = np.take(dk, idx[:, 0], axis=1)
-    out *= lam[:, 0]
-    for j in (1, 2):
-        tmp = np.take(dk, idx[:, j], axis=1)
-        tmp *= lam[:, j]
-        out += tmp
-    return out
-
-
-def _pattern(angles):
-    """Azimuths relative to ball 1 shared by all positions; the exact regular pattern when equally spaced.
-
-    Snapping to 2 pi k / n makes the candidate weights independent of which position they are taken
-    from, so results do not depend on how positions are batched.
-    """
-    n = angles.shape[-1]
-    rel = np.remainder(angles[0] - angles[0, 0], 2 * np.pi)
-    regular = 2 * np.pi * np.arange(n) / n
-    if np.all(np.abs(rel - regular) < 1e-9):
-        return regular
-    return rel
-
-
-def solve_dual(dk, angles, centre_b, centre_d, tie_break="centre"):
-    """Exact solve of (6.1) by the dual (convex-hull) vertices, vectorized over positions.
-
-    dk, angles: (P, n) in um and rad; centre_b, centre_d: (P,) tie-break centre in um.
+    Raises
+    ------
+    ConvergenceError
+        A walk did not end within ``max_pivots(n)`` pivots (never seen; rounding could only
+        make a walk go round).
     """
     P, n = dk.shape
     centre_b = np.broadcast_to(np.asarray(centre_b, float), (P,))
     centre_d = np.broadcast_to(np.asarray(centre_d, float), (P,))
-    out = [np.empty(P), np.empty(P), np.empty(P), np.empty((P, n)), np.empty(P, bool), np.empty(P)]
-    if same_pattern(angles):
-        idx, lam, strict = _shared_candidates(_pattern(angles))
-        ns = int(strict.sum())
-        for s in range(0, P, _BLOCK):  # blocks of positions that stay in cache
-            sl = slice(s, s + _BLOCK)
-            values = tuple(
-                _weighted(dk[sl], idx[c], lam[c]) for c in (slice(0, ns), slice(ns, None))
-            )
-            res = _finish(
-                dk[sl], angles[sl], values, idx, lam, strict, centre_b[sl], centre_d[sl], tie_break
-            )
-            for o, r in zip(out, res):
-                o[sl] = r
-        return tuple(out)
-    # irregular azimuths that change from position to position: candidate weights per position
-    idx = _triples(n)
-    for s in range(0, P, _CHUNK):
-        sl = slice(s, s + _CHUNK)
-        lam = _barycentric(angles[sl], idx)
-        lo = lam.min(axis=2)
-        valid = lo >= -RUNOUT_STRICT_WEIGHT
-        strict = lo > RUNOUT_STRICT_WEIGHT
-        values = np.where(valid, np.einsum("ptk,ptk->pt", lam, dk[sl][:, idx]), np.inf)
-        m = values.shape[0]
-        res = _finish(
-            dk[sl],
-            angles[sl],
-            values,
-            np.broadcast_to(idx, (m,) + idx.shape),
-            lam,
-            strict,
-            centre_b[sl],
-            centre_d[sl],
-            tie_break,
+    s, c = np.sin(angles), np.cos(angles)
+    midpoint = tie_break == "midpoint"
+    if kernel is not None:
+        *res, status = kernel(dk, s, c, centre_b, centre_d, midpoint)
+    else:
+        res = [np.empty(P), np.empty(P), np.empty(P), np.empty((P, n)), np.empty(P, bool), np.empty(P)]
+        status = np.empty(P, np.int64)
+        step = max(1, _BLOCK // n)  # positions per block: the block's arrays stay in cache
+        for a in range(0, P, step):
+            sl = slice(a, a + step)
+            *block, status[sl] = _walk(dk[sl], s[sl], c[sl], centre_b[sl], centre_d[sl], midpoint)
+            for o, v in zip(res, block):
+                o[sl] = v
+    check_status(status, dk, n)
+    return tuple(res)
+
+
+def check_status(status, dk, n):
+    """Raise ConvergenceError if a walk did not end (status != 0)."""
+    bad = np.flatnonzero(np.ravel(status) != _OK)
+    if bad.size:
+        raise ConvergenceError(
+            "runout.solve_contact (dual walk)",
+            iterations=max_pivots(n),
+            residual=np.inf,
+            estimate=np.nan,
+            reason=f"{bad.size} position(s) or sample(s), first {int(bad[0])}",
         )
-        for o, r in zip(out, res):
-            o[sl] = r
-    return tuple(out)
 
 
-def solve_triples(dk, angles, centre_b, centre_d, chunk=256):
+def solve_triples(dk, angles, centre_b, centre_d):
     """Enumeration of spec 003 section 8.2: all triples, feasibility, max a0, then the face candidates.
 
-    Independent of :func:`solve_dual` (it never uses the dual); O(n^3) per position.
+    Independent of :func:`solve_dual` (it never uses the dual); O(n^3) per position, refused (InputError)
+    above :data:`MAX_TRIPLES_BALLS` balls before anything is allocated.
     """
     P, n = dk.shape
+    if n > MAX_TRIPLES_BALLS:
+        raise InputError(
+            f"method='triples' enumerates all C(n, 3) ball triples and is limited to n_balls <= "
+            f"{MAX_TRIPLES_BALLS} [-], got {n}; use method='dual' (any number of balls)"
+        )
     idx = _triples(n)
+    chunk = max(1, _TRIPLES_BLOCK // (idx.shape[0] * (n + 3)))
     pairs = np.array(list(itertools.combinations(range(n), 2)), dtype=np.intp)
     centre_b = np.broadcast_to(np.asarray(centre_b, float), (P,))
     centre_d = np.broadcast_to(np.asarray(centre_d, float), (P,))

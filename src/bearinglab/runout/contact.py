@@ -24,6 +24,7 @@ Refinement and the whole position (section 9)
 ---------------------------------------------
 contact_point_shifts    refinement shifts d tau1, d tau2, d theta2, eqs. (9.1)-(9.3)
 initial_displacement    all of it at one or many rotation angles, optionally refined
+MAX_BALL_POSITIONS      the most positions x balls of one call (memory is linear in both)
 
 The solvers of (6.1) themselves, in micrometres, are in the private module ``_solver``.
 Units: SI (m, rad); the spec states its tolerances in micrometres and the solvers scale them.
@@ -37,13 +38,15 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._solve import RUNOUT_CONTACT_TOL_UM, RUNOUT_REFINE_MAX_ITER, RUNOUT_REFINE_TOL
+from .. import _bounds
+from .._solve import RUNOUT_CONTACT_TOL_UM, RUNOUT_REFINE_MAX_ITER, RUNOUT_REFINE_TOL, use_compiled
 from .._validate import check_finite, check_integer, check_positive
 from ..errors import ConvergenceError, InputError, ValidityWarning
 from . import _solver, plausibility
 from .deviations import ManufacturingErrors, _combined, _horner, _tilt, normal_deviation
 
 __all__ = [
+    "MAX_BALL_POSITIONS",
     "ContactSolution",
     "Displacement",
     "Pose",
@@ -60,6 +63,11 @@ __all__ = [
 ]
 
 _UM = 1e-6  # m per um: the contact solver works in um, the unit of the spec's tolerances
+#: Most ball-positions (positions x balls) of one :func:`initial_displacement`: memory is linear in both,
+#: about 144 bytes a ball-position for the result and the solver's blocks (2.3 kB a position at 16 balls,
+#: bearinglab._bounds), so 16 x 10^6 (the 10^6 positions of ``_bounds.MAX_POSITIONS`` at 16 balls) hold
+#: about 2.3 GB whatever the number of balls: 16 000 positions of a 1000-ball bearing.
+MAX_BALL_POSITIONS = 16 * _bounds.MAX_POSITIONS
 _METHODS = ("dual", "triples", "lp")
 _TIE_BREAKS = ("centre", "midpoint")
 
@@ -176,6 +184,16 @@ def generalized_error(rotation_angle, geometry, errors, *, cage_ratio=None, shif
     theta = ball_angles(psi, geometry, cage_ratio=cage_ratio)
     _check_errors(errors, geometry)
     return _generalized_error(psi, theta, geometry, errors, shifts)[()]
+
+
+def _check_size(positions, n_balls):
+    """Refuse a call whose arrays would exceed :data:`MAX_BALL_POSITIONS`, before they are allocated."""
+    if positions * n_balls > MAX_BALL_POSITIONS:
+        raise InputError(
+            f"rotation_angle: {positions} positions x {n_balls} balls = {positions * n_balls} ball-positions "
+            f"is more than bearinglab's limit of {MAX_BALL_POSITIONS} (about 144 bytes each): use at most "
+            f"{MAX_BALL_POSITIONS // n_balls} positions for {n_balls} balls (fewer steps or revolutions)"
+        )
 
 
 def _check_errors(errors, geometry):
@@ -351,10 +369,28 @@ def _check_balls(angles):
         raise InputError("ball_angle: two balls have the same azimuth")
 
 
-def _solve_um(dk_um, theta, cb_um, cd_um, method, tie_break):
+def _engine(engine, method):
+    """"compiled" or "numpy": the engine that solves the contact problem (the compiled walk implements the
+    dual method; engine "auto" takes it whenever numba is installed, whatever the size of the batch, so that
+    a position gives the same bits alone or in any batch)."""
+    if engine == "compiled" and method != "dual":
+        raise InputError(f"engine='compiled' implements method='dual' only, got method={method!r}")
+    return "compiled" if use_compiled(engine, auto=method == "dual") else "numpy"
+
+
+def _kernel(engine):
+    """The compiled contact solver for engine "compiled", else None (numba is imported only then)."""
+    if engine != "compiled":
+        return None
+    from . import _compiled  # imports numba: only when the compiled path runs
+
+    return _compiled.solve
+
+
+def _solve_um(dk_um, theta, cb_um, cd_um, method, tie_break, engine="numpy"):
     """Solve (6.1) for (P, n) arrays in um; returns a0, B, D, lam, degenerate, diameter (um)."""
     if method == "dual":
-        return _solver.solve_dual(dk_um, theta, cb_um, cd_um, tie_break)
+        return _solver.solve_dual(dk_um, theta, cb_um, cd_um, tie_break, _kernel(engine))
     if tie_break != "centre":
         raise InputError(f"tie_break={tie_break!r} is only available with method='dual'")
     if method == "triples":
@@ -362,21 +398,27 @@ def _solve_um(dk_um, theta, cb_um, cd_um, method, tie_break):
     else:
         a0, b, d, diam = _solver.solve_lp(dk_um, theta, cb_um, cd_um)
     # dual weights (load shares) are a by-product of the dual method only: take them from it
-    lam = _solver.solve_dual(dk_um, theta, cb_um, cd_um)[3]
+    lam = _solver.solve_dual(dk_um, theta, cb_um, cd_um, kernel=_kernel(engine))[3]
     degenerate = diam > RUNOUT_CONTACT_TOL_UM * _solver.scale(dk_um)
     return a0, b, d, lam, degenerate, np.where(degenerate, diam, 0.0)
 
 
-def _contact_solution(dk, theta, cb, cd, method, tie_break):
-    """SI wrapper over flattened positions; returns ContactSolution with the input's leading shape."""
+def _contact_solution(dk, theta, cb, cd, method, tie_break, engine="numpy", *, dk_um=None, solved=None):
+    """SI wrapper over flattened positions; returns ContactSolution with the input's leading shape.
+
+    ``dk_um`` and ``solved`` (a0, B, D, lam, degenerate, diameter in um) are given when the compiled
+    rotation-sequence kernel has already computed them; the slacks and contacts are computed here alike.
+    """
     lead = dk.shape[:-1]
     n = dk.shape[-1]
     theta = np.broadcast_to(theta, dk.shape)
-    flat_dk = dk.reshape(-1, n) / _UM
+    flat_dk = dk.reshape(-1, n) / _UM if dk_um is None else dk_um.reshape(-1, n)
     flat_th = theta.reshape(-1, n)
     cb_um = np.broadcast_to(np.asarray(cb, float), lead).reshape(-1) / _UM
     cd_um = np.broadcast_to(np.asarray(cd, float), lead).reshape(-1) / _UM
-    a0, b, d, lam, degenerate, diam = _solve_um(flat_dk, flat_th, cb_um, cd_um, method, tie_break)
+    if solved is None:
+        solved = _solve_um(flat_dk, flat_th, cb_um, cd_um, method, tie_break, engine)
+    a0, b, d, lam, degenerate, diam = solved
     slack_um = flat_dk - a0[:, None]
     slack_um -= b[:, None] * np.sin(flat_th)
     slack_um -= d[:, None] * np.cos(flat_th)
@@ -400,7 +442,13 @@ def _contact_solution(dk, theta, cb, cd, method, tie_break):
 
 
 def solve_contact(
-    generalized_error, ball_angle, *, centre=(0.0, 0.0), method="dual", tie_break="centre"
+    generalized_error,
+    ball_angle,
+    *,
+    centre=(0.0, 0.0),
+    method="dual",
+    tie_break="centre",
+    engine="auto",
 ):
     r"""Solve the contact problem (6.1): the highest sinusoid on or below all generalized errors.
 
@@ -417,6 +465,11 @@ def solve_contact(
         enumeration of section 8.2; ``"lp"``: scipy's HiGHS LP, one position at a time (cross-check).
     tie_break : {"centre", "midpoint"}
         The normative rule (closest to c) or, for comparison only, the midpoint of the face.
+    engine : {"auto", "numpy", "compiled"}
+        ``"compiled"``: the numba kernel of the dual method (:mod:`bearinglab.runout._compiled`);
+        ``"numpy"``: the same method vectorized over positions; ``"auto"`` (default): compiled for
+        ``method="dual"`` when numba is installed. One engine gives the same bits for a position alone or
+        in any batch; the two agree to rounding.
 
     Returns
     -------
@@ -426,15 +479,19 @@ def solve_contact(
     ------
     InputError
         n < 3, all balls within a closed half-circle (the problem is unbounded), two balls at the same
-        azimuth, non-finite input, unknown method.
+        azimuth, non-finite input, unknown method or engine, ``method="triples"`` with more than 64 balls.
+    ConvergenceError
+        The dual walk did not end (never seen: it takes a few pivots).
 
     Notes
     -----
     maximise a0 subject to a0 + B sin theta^i + D cos theta^i <= Delta k^i (clearance-signed Delta k: the
     sinusoid lies *below* the points and a0 is *maximised*; spec 003 section 13.6). The dual is the
     lowest point, above the origin, of the convex hull of (sin theta^i, cos theta^i, Delta k^i); its
-    vertices are the ball triangles that contain the origin and the diametral pairs. A pair makes the
-    optimal face a segment ("degenerate"); the tie-break then takes its point closest to c.
+    vertices are the ball triangles that contain the origin and the diametral pairs. The dual method walks
+    from triangle to lower triangle (the simplex method on the dual: a few pivots of O(n) each, memory
+    O(n) per position, any number of balls). A pair makes the optimal face a segment ("degenerate"); the
+    tie-break then takes its point closest to c.
     Tolerances (1e-9 um for ties, 1e-7 um for contacts) scale with ``max(1, max |Delta k| / 1 um)``.
 
     Examples
@@ -451,6 +508,7 @@ def solve_contact(
         raise InputError(f"method must be one of {list(_METHODS)}, got {method!r}")
     if tie_break not in _TIE_BREAKS:
         raise InputError(f"tie_break must be one of {list(_TIE_BREAKS)}, got {tie_break!r}")
+    engine = _engine(engine, method)
     dk = np.atleast_1d(check_finite("generalized_error", generalized_error, "m"))
     th = check_finite("ball_angle", ball_angle, "rad")
     shape = np.broadcast_shapes(dk.shape, th.shape)
@@ -461,7 +519,7 @@ def solve_contact(
     _check_balls(flat[:1] if _solver.same_pattern(flat) else flat)
     cb = check_finite("centre", centre[0], "m")
     cd = check_finite("centre", centre[1], "m")
-    return _contact_solution(dk, th, cb, cd, method, tie_break)
+    return _contact_solution(dk, th, cb, cd, method, tie_break, engine)
 
 
 def contact_point_shifts(x, y, z, ball_angle, geometry, *, tilt_x=0.0, tilt_y=0.0):
@@ -544,13 +602,44 @@ class Displacement(NamedTuple):
     )  # largest change of (dx, dy, dz) in the last refinement pass (0 without) [m]
 
 
-def _positions(psi, theta, geometry, errors, *, refine, method, tie_break, tol, max_iter):
+def _first_approximation(psi, theta, geometry, errors, cb, cd, method, tie_break, engine, kappa):
+    """Delta k (4.1) at tau = tau0 and the solution of (6.1) at every position: (dk [m], ContactSolution).
+
+    The compiled engine computes both in one kernel (:func:`bearinglab.runout._compiled.sequences`), the
+    one the Monte Carlo runs, so that a sample's rotation sequence gives the study's bits.
+    """
+    if engine != "compiled" or any(
+        np.ndim(v) > 1 for v in (errors.ball_outer_deficit, errors.ball_inner_deficit)
+    ):
+        dk = _generalized_error(psi, theta, geometry, errors)
+        return dk, _contact_solution(dk, theta, cb, cd, method, tie_break, engine)
+    tau0 = geometry.contact_angle
+    rings = (_combined(errors.outer, tau0, 1.0), _combined(errors.inner, tau0, -1.0))
+    if any(r is not None and np.ndim(r.cos) > 1 for r in rings):  # series per position: numpy's Horner
+        dk = _generalized_error(psi, theta, geometry, errors)
+        return dk, _contact_solution(dk, theta, cb, cd, method, tie_break, engine)
+    from . import _compiled  # imports numba: only when the compiled path runs
+
+    series = [None if r is None else (r.cos / _UM, r.sin / _UM) for r in rings]
+    deficit = (errors.ball_outer_deficit + errors.ball_inner_deficit) / _UM
+    P = psi.size
+    cb_um, cd_um = (np.broadcast_to(np.asarray(v, float), (P,)) / _UM for v in (cb, cd))
+    a0, b, d, deg, diam, status, dk_um, lam = _compiled.sequences(
+        geometry.first_ball_angle, kappa, psi, *series, deficit, cb_um, cd_um, tie_break == "midpoint", True
+    )
+    _solver.check_status(status, dk_um, theta.shape[-1])
+    dk = dk_um * _UM
+    solved = (a0[0], b[0], d[0], lam, deg[0], diam[0])
+    sol = _contact_solution(dk, theta, cb, cd, method, tie_break, engine, dk_um=dk_um, solved=solved)
+    return dk, sol
+
+
+def _positions(psi, theta, geometry, errors, *, refine, method, tie_break, tol, max_iter, engine, kappa):
     """Solve sections 6-9 at all positions at once. psi (P,), theta (P, n). Returns Displacement."""
     alpha = _tilt(errors.tilt_x, psi)
     beta = _tilt(errors.tilt_y, psi)
     cb, cd = tie_break_centre(geometry, tilt_x=alpha, tilt_y=beta)
-    dk = _generalized_error(psi, theta, geometry, errors)
-    sol = _contact_solution(dk, theta, cb, cd, method, tie_break)
+    dk, sol = _first_approximation(psi, theta, geometry, errors, cb, cd, method, tie_break, engine, kappa)
     pose = pose_from_sinusoid(
         sol.constant, sol.sine, sol.cosine, geometry, tilt_x=alpha, tilt_y=beta
     )
@@ -577,6 +666,7 @@ def _positions(psi, theta, geometry, errors, *, refine, method, tie_break, tol, 
             tie_break,
             tol,
             max_iter,
+            engine,
         )
     free_play = sol.face_diameter / math.cos(geometry.contact_angle)
     return Displacement(
@@ -603,7 +693,7 @@ def _take(sol, idx):
 
 
 def _refine(
-    psi, theta, geometry, errors, alpha, beta, cb, cd, sol, first, method, tie_break, tol, max_iter
+    psi, theta, geometry, errors, alpha, beta, cb, cd, sol, first, method, tie_break, tol, max_iter, engine
 ):
     """Iterate shifts -> Delta k -> solve -> pose (section 9) for all positions together.
 
@@ -632,6 +722,7 @@ def _refine(
             cd[ia] if np.ndim(cd) else cd,
             method,
             tie_break,
+            engine,
         )
         p = pose_from_sinusoid(
             s.constant, s.sine, s.cosine, geometry, tilt_x=alpha[ia], tilt_y=beta[ia]
@@ -666,6 +757,7 @@ def initial_displacement(
     tol=RUNOUT_REFINE_TOL,
     max_iter=RUNOUT_REFINE_MAX_ITER,
     raise_on_failure=True,
+    engine="auto",
 ):
     r"""Initial (pre-deformation) displacement of the inner ring at rotation angle(s) psi (sections 4-9).
 
@@ -692,6 +784,11 @@ def initial_displacement(
     raise_on_failure : bool
         Raise :class:`~bearinglab.errors.ConvergenceError` when a position does not converge; with
         False the ``converged`` flags report it.
+    engine : {"auto", "numpy", "compiled"}
+        As for :func:`solve_contact`. The compiled engine computes the generalized errors of the first
+        approximation and the contact problem in one kernel, the one of the Monte Carlo
+        (:func:`~bearinglab.runout.monte_carlo_chunk`), so that with one engine a sample's rotation
+        sequence gives the study's bits. The engines agree to rounding.
 
     Returns
     -------
@@ -728,12 +825,15 @@ def initial_displacement(
         raise InputError(f"tie_break must be one of {list(_TIE_BREAKS)}, got {tie_break!r}")
     check_positive("tol", tol, "m")
     max_iter = int(check_integer("max_iter", max_iter, 1))
+    engine = _engine(engine, method)
     _check_errors(errors, geometry)
     shape = psi.shape
     flat = psi.reshape(-1)
+    _check_size(flat.size, geometry.n_balls)
     doubtful = plausibility.check_errors(geometry, errors, flat)  # refuses the absurd (issue 20 item 8)
     theta = ball_angles(flat, geometry, cage_ratio=cage_ratio)
     _check_balls(theta[:1])
+    kappa = geometry.cage_ratio if cage_ratio is None else float(cage_ratio)
     r = _positions(
         flat,
         theta,
@@ -744,6 +844,8 @@ def initial_displacement(
         tie_break=tie_break,
         tol=tol,
         max_iter=max_iter,
+        engine=engine,
+        kappa=kappa,
     )
     if refine and raise_on_failure and not np.all(r.converged):
         bad = np.flatnonzero(~r.converged)

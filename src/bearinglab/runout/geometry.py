@@ -281,6 +281,9 @@ def geometry_from_bearing(bearing, *, first_ball_angle=0.0, outer_bottom_radius=
     >>> geometry_from_bearing(catalog.get("B218")).n_balls
     16
     """
+    from ..bearing import check_model
+
+    check_model(bearing, "runout")
     n, dw, dm, fo, fi, tau = bearing.require(
         "n_balls",
         "ball_diameter",

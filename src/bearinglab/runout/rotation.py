@@ -22,7 +22,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._solve import RUNOUT_REFINE_MAX_ITER, RUNOUT_REFINE_TOL
+from .._solve import RUNOUT_REFINE_MAX_ITER, RUNOUT_REFINE_TOL, use_compiled
 from .._validate import check_finite, check_integer, check_open_interval
 from ..errors import InputError
 from .contact import Displacement, initial_displacement
@@ -102,20 +102,29 @@ def _diameter_of_points(px, py):
     return _farthest_pair(px[v], py[v], _antipodal_pairs(px[v], py[v]))
 
 
-def _diameter(x, y):
+def _diameter(x, y, engine="numpy"):
     """Largest distance between two points of each trajectory (its radial peak-to-peak over all
     directions), by the convex hull: memory O(N), time O(N log N). x, y: (S, N) -> (S,)."""
+    if engine == "compiled":
+        from . import _compiled  # imports numba: only when the compiled path runs
+
+        return _compiled.diameters(x, y)
     # one hull per trajectory: a loop over trajectories (each one vectorized), as qhull takes one set
     return np.array([_diameter_of_points(px, py) for px, py in zip(x, y)], dtype=float)
 
 
-def runout_metrics(x, y, z):
+def runout_metrics(x, y, z, *, engine="auto"):
     """Runout metrics of centre trajectories (spec 003 section 10).
 
     Parameters
     ----------
     x, y, z : array_like
         dx, dy, dz along the last axis (positions); leading axes are independent trajectories. [m]
+    engine : {"auto", "numpy", "compiled"}
+        Who finds the largest distance: qhull's hull and numpy's rotating calipers, or a compiled monotone
+        chain and rotating calipers (``"auto"``: compiled when numba is installed). Both take the square
+        root of the largest dx^2 + dy^2 of an antipodal pair, so they agree to the bit unless rounding
+        decides which of two nearly collinear hull points is kept.
 
     Returns
     -------
@@ -133,10 +142,11 @@ def runout_metrics(x, y, z):
     x = np.atleast_1d(check_finite("x", x, "m"))
     y = np.atleast_1d(check_finite("y", y, "m"))
     z = np.atleast_1d(check_finite("z", z, "m"))
+    engine = "compiled" if use_compiled(engine, auto=True) else "numpy"
     x, y, z = np.broadcast_arrays(x, y, z)
     lead = x.shape[:-1]
     n = x.shape[-1]
-    diam = _diameter(x.reshape(-1, n), y.reshape(-1, n)).reshape(lead)
+    diam = _diameter(x.reshape(-1, n), y.reshape(-1, n), engine).reshape(lead)
     return RunoutMetrics(
         np.ptp(x, axis=-1)[()],
         np.ptp(y, axis=-1)[()],
@@ -207,6 +217,7 @@ def rotation_sequence(
     tol=RUNOUT_REFINE_TOL,
     max_iter=RUNOUT_REFINE_MAX_ITER,
     raise_on_failure=False,
+    engine="auto",
 ):
     r"""Centre trajectory over inner-ring revolutions with cage kinematics, and its runout (section 10).
 
@@ -232,6 +243,8 @@ def rotation_sequence(
         Refinement tolerance [m] and passes [-].
     raise_on_failure : bool
         Raise when a refined position does not converge (default: flag it in ``displacement.converged``).
+    engine : {"auto", "numpy", "compiled"}
+        As for :func:`~bearinglab.runout.initial_displacement` (compiled when numba is installed).
 
     Returns
     -------
@@ -275,16 +288,17 @@ def rotation_sequence(
         tol=tol,
         max_iter=max_iter,
         raise_on_failure=raise_on_failure,
+        engine=engine,
     )
     x, y, z = disp.x, disp.y, disp.z
-    metrics = runout_metrics(x, y, z)
+    metrics = runout_metrics(x, y, z, engine=engine)
     sx, sy, sz = (synchronous_part(v, steps) for v in (x, y, z))
     return Trajectory(
         psi,
         disp,
         metrics,
-        runout_metrics(sx[:steps], sy[:steps], sz[:steps]),
-        runout_metrics(x - sx, y - sy, z - sz),
+        runout_metrics(sx[:steps], sy[:steps], sz[:steps], engine=engine),
+        runout_metrics(x - sx, y - sy, z - sz, engine=engine),
         steps,
         revs,
         kappa,

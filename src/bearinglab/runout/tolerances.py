@@ -30,12 +30,13 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .. import parallel
+from .. import _bounds, parallel
 from .._validate import check_finite, check_integer
 from ..errors import InputError
 from . import _solver
-from .contact import _UM, _generalized_error, ball_angles, pose_from_sinusoid
-from .deviations import FourierSeries, ManufacturingErrors, RacewayErrors
+from . import contact as _contact
+from .contact import _UM, _generalized_error, ball_angles, pose_from_sinusoid, tie_break_centre
+from .deviations import FourierSeries, ManufacturingErrors, RacewayErrors, _combined
 from .geometry import SpindleGeometry
 from .rotation import METRICS, runout_metrics
 
@@ -378,6 +379,7 @@ def monte_carlo_chunk(
     revolutions=2,
     max_order=15,
     cage_ratio=None,
+    engine="auto",
 ):
     r"""Per-sample runout metrics of a chunk of random bearings (spec 003 section 11).
 
@@ -399,6 +401,11 @@ def monte_carlo_chunk(
         K_max, highest waviness order. [-]
     cage_ratio : float, optional
         kappa override. [-]
+    engine : {"auto", "numpy", "compiled"}
+        ``"compiled"``: each sample's generalized errors and contact solves in one numba kernel
+        (:func:`bearinglab.runout._compiled.sequences`), samples in parallel; ``"numpy"``: the same model
+        vectorized over the samples' positions; ``"auto"`` (default): compiled when numba is installed.
+        The engines agree to rounding; each gives the same bits on every executor and chunk size.
 
     Returns
     -------
@@ -410,12 +417,14 @@ def monte_carlo_chunk(
     U(-V_DWS/2, V_DWS/2), Delta r31 = Delta r32 = -delta D/2; inner delta H2 order 1 with amplitude
     U(0, K_ia/2), orders 2..K_max with Rayleigh(c/k) amplitudes, c = w_rms / sqrt(sum k^-2); inner delta
     S2 order 1 with amplitude U(0, S_ia/2); outer delta H1 orders 2..K_max as for the inner ring; all
-    phases uniform. All positions of all samples of the chunk are solved in one batch.
+    phases uniform. All positions of all samples of the chunk are solved in one batch (numpy: in blocks
+    of samples, or of one sample's positions, of at most 2^20 ball-positions, so that memory stays
+    linear in the balls and positions and bounded per chunk).
 
-    Every operation is element by element or per position, in a fixed order (no BLAS product, whose
-    rounding depends on the number of BLAS threads; BLAS is held to one thread here all the same, as
-    on a dask worker), so a sample gives the same bits in any chunk, on any executor, and equal to
-    :func:`rotation_sequence` of its :func:`monte_carlo_errors`.
+    Every operation is element by element, per position or per sample, in a fixed order (no BLAS
+    product, whose rounding depends on the number of BLAS threads; BLAS is held to one thread here all
+    the same, as on a dask worker), so a sample gives the same bits in any chunk, on any executor, and,
+    with the same engine, equal to :func:`rotation_sequence` of its :func:`monte_carlo_errors`.
 
     Examples
     --------
@@ -431,9 +440,9 @@ def monte_carlo_chunk(
     grade = ball_grade(grade)
     rings = ring_class(rings)
     idx = np.atleast_1d(check_integer("sample_index", sample_index, 0))
-    steps = int(check_integer("steps_per_revolution", steps_per_revolution, 1))
-    revs = int(check_integer("revolutions", revolutions, 1))
-    k_max = int(check_integer("max_order", max_order, 1))
+    steps = int(check_integer("steps_per_revolution", steps_per_revolution, 1, _bounds.MAX_STEPS_PER_REV))
+    revs = int(check_integer("revolutions", revolutions, 1, _bounds.MAX_REVOLUTIONS))
+    k_max = int(check_integer("max_order", max_order, 1, _bounds.MAX_ORDER))
     kappa = (
         geometry.cage_ratio
         if cage_ratio is None
@@ -443,22 +452,62 @@ def monte_carlo_chunk(
     if idx.size == 0:
         empty = np.zeros(0)
         return MonteCarloSamples(idx, *(empty,) * 7)
+    engine = _contact._engine(engine, "dual")
     theta1, deficit, series = _draw(n, grade, rings, idx, seed, k_max)
     S = idx.size
     psi = 2.0 * np.pi * np.arange(steps * revs) / steps
     P = psi.size
-    with threadpool_limits(limits=1, user_api="blas"):
-        # the functions of rotation_sequence, with a leading axis of samples: (S, P, n)
-        theta = ball_angles(psi, geometry, cage_ratio=kappa, first_ball_angle=theta1[:, None])
-        dk = _generalized_error(psi, theta, geometry, _errors(deficit, series))
-        a0, b, d, _lam, degenerate, _diam = _solver.solve_dual(
-            dk.reshape(S * P, n) / _UM, theta.reshape(S * P, n), 0.0, 0.0
-        )
+    if engine == "compiled":
+        a0, b, d, degenerate = _compiled_chunk(geometry, kappa, psi, theta1, deficit, series)
+    else:
+        a0, b, d, degenerate = (np.empty((S, P)) for _ in range(4))
+        # blocks of samples, or of one sample's positions, of at most _NUMPY_BLOCK ball-positions
+        step = max(1, _NUMPY_BLOCK // (P * n))
+        p_step = P if P * n <= _NUMPY_BLOCK else max(1, _NUMPY_BLOCK // n)
+        with threadpool_limits(limits=1, user_api="blas"):
+            for q in range(0, S, step):
+                sl = slice(q, q + step)
+                blk = (deficit[sl], {k: FourierSeries(v.cos[sl], v.sin[sl]) for k, v in series.items()})
+                for p0 in range(0, P, p_step):
+                    ps = slice(p0, p0 + p_step)
+                    out = _numpy_chunk(geometry, kappa, psi[ps], theta1[sl], *blk)
+                    for o, v in zip((a0, b, d, degenerate), out):
+                        o[sl, ps] = v
     pose = pose_from_sinusoid(a0 * _UM, b * _UM, d * _UM, geometry)
-    m = runout_metrics(*(np.asarray(v).reshape(S, P) for v in pose))
-    return MonteCarloSamples(
-        idx, theta1, *(np.atleast_1d(v) for v in m), degenerate.reshape(S, P).mean(axis=1)
+    m = runout_metrics(*pose, engine=engine)
+    return MonteCarloSamples(idx, theta1, *(np.atleast_1d(v) for v in m), degenerate.mean(axis=1))
+
+
+_NUMPY_BLOCK = 1 << 20  # ball-positions per block of samples of the numpy engine (~8 MB per array)
+
+
+def _numpy_chunk(geometry, kappa, psi, theta1, deficit, series):
+    """a0, B, D [um] and the degenerate flags, (S, P), by the functions of rotation_sequence with a leading
+    axis of samples: (S, P, n)."""
+    S, P, n = theta1.size, psi.size, geometry.n_balls
+    theta = ball_angles(psi, geometry, cage_ratio=kappa, first_ball_angle=theta1[:, None])
+    dk = _generalized_error(psi, theta, geometry, _errors(deficit, series))
+    a0, b, d, _lam, degenerate, _diam = _solver.solve_dual(
+        dk.reshape(S * P, n) / _UM, theta.reshape(S * P, n), 0.0, 0.0
     )
+    return (v.reshape(S, P) for v in (a0, b, d, degenerate))
+
+
+def _compiled_chunk(geometry, kappa, psi, theta1, deficit, series):
+    """The same by the compiled kernel, with the inputs :func:`initial_displacement` gives it for one
+    sample's errors (the same series, deficits and tie-break centre, bit for bit)."""
+    from . import _compiled  # imports numba: only when the compiled path runs
+
+    tau0 = geometry.contact_angle
+    outer = _combined(RacewayErrors(radial=series["outer"]), tau0, 1.0)
+    inner = _combined(RacewayErrors(radial=series["inner"], axial=series["wobble"]), tau0, -1.0)
+    cb, cd = (np.asarray(v, float) / _UM for v in tie_break_centre(geometry))
+    a0, b, d, degenerate, _diam, status, _dk, _lam = _compiled.sequences(
+        theta1, kappa, psi, (outer.cos / _UM, outer.sin / _UM), (inner.cos / _UM, inner.sin / _UM),
+        (deficit + deficit) / _UM, cb, cd,
+    )
+    _solver.check_status(status, a0, geometry.n_balls)
+    return a0, b, d, degenerate
 
 
 def worst_samples(samples, metric="radial_ptp_max", count=1):
@@ -553,6 +602,7 @@ def monte_carlo(
     workers=None,
     memory_limit=None,
     processes=None,
+    engine="auto",
 ):
     """Monte Carlo runout study over a ball grade and a ring class (spec 003 section 11).
 
@@ -592,6 +642,8 @@ def monte_carlo(
         Memory limit per local worker, e.g. ``"4GiB"``.
     processes : bool, optional
         Local workers as processes (default) or threads.
+    engine : {"auto", "numpy", "compiled"}
+        As for :func:`monte_carlo_chunk` (compiled when numba is installed).
 
     Returns
     -------
@@ -612,8 +664,9 @@ def monte_carlo(
     >>> sorted(r.summary)
     ['axial_ptp', 'dz_mean', 'radial_ptp_max', 'radial_ptp_x', 'radial_ptp_y']
     """
-    total = int(check_integer("n_samples", n_samples, 2))
+    total = int(check_integer("n_samples", n_samples, 2, _bounds.MAX_SAMPLES))
     _seed(seed)
+    _contact._engine(engine, "dual")  # an unknown engine is refused before any work
     ex = parallel._execution(
         execution,
         chunk_size=chunk_size,
@@ -638,6 +691,7 @@ def monte_carlo(
             "revolutions": revolutions,
             "max_order": max_order,
             "cage_ratio": cage_ratio,
+            "engine": engine,
         },
         execution=ex,
     )
