@@ -369,3 +369,21 @@ def test_a_bad_roller_bearing_file_names_the_file_and_the_field(capsys, tmp_path
                     encoding="utf-8")
     message = one_line(capsys, "load-distribution", "--bearing-file", str(path), "--fx", "1 kN")
     assert "field 'profile'" in message and "drop must be >= 0" in message
+
+
+def test_a_speed_list_and_the_oil_bath_from_skfs_diagram(capsys):
+    from bearinglab.friction.drag import drag_loss_factor
+
+    docs = document(capsys, "life", "-b", "NU 208 ECP", "--fx", "10 kN", "-n", "1000, 2000 rpm", "--viscosity",
+                    "20 cSt")
+    assert [d["inputs"]["speed_rpm"] for d in docs] == [1000.0, 2000.0]
+    assert docs[0]["basic_rating_life_Mrev"] == docs[1]["basic_rating_life_Mrev"]
+    assert docs[0]["basic_rating_life_h"] == pytest.approx(2 * docs[1]["basic_rating_life_h"], rel=1e-12)
+    bath = document(capsys, "friction", "torque", "-b", "22208 E", "--model", "skf", "-R", "2990 N", "-A", "100 N",
+                    "-n", "3500 rpm", "--viscosity", "68 cSt", "--lubrication", "oil-bath", "--oil-level", "2.5 mm")
+    assert bath["drag_loss_factor"] == float(drag_loss_factor(2.5e-3, 60e-3, "roller"))  # the roller curve
+    assert "roller bearings" in bath["drag_loss_factor_source"] and bath["oil_level_mm"] == 2.5
+    warm = document(capsys, "temperature", "-b", "22208 E", "-R", "3 kN", "-n", "3500 rpm", "--oil", "VG68",
+                    "--lubrication", "oil-bath", "--oil-level", "2.5 mm", "--thermal-resistance", "0.5 K/W")
+    assert warm["inputs"]["drag_loss_factor"] == pytest.approx(bath["drag_loss_factor"], rel=1e-14)  # 15 digits
+    assert warm["friction_power_W"] == pytest.approx(warm["heat_dissipated_W"], rel=1e-6)
