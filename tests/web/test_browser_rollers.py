@@ -16,7 +16,7 @@ ROLLERS = ("?bearing=NU+208+ECP&fx=15+kN&speed=1500+rpm&viscosity=20+cSt&radial_
 
 def test_browser_picker_finds_a_roller_bearing(page, base_url):  # noqa: F811 -- the fixture
     page.goto(base_url + "/")
-    page.fill("#bearing", "NU 2")
+    page.fill("#bearing", "NU 208")
     page.wait_for_function("document.querySelector('#matches').innerText.includes('NU 208 ECP')")
     assert "cylindrical" in page.inner_text("#matches")
     page.click("#matches button[data-name='NU 208 ECP']")
