@@ -256,6 +256,13 @@ KINDS = {
     "specific_heat": ("[energy]/[mass]/[temperature]", "J/(kg*K)", "'1900 J/(kg*K)'"),
     "heat_flux": ("[power]/[length]**2", "W/m**2", "'16 kW/m^2'"),
     "dimensionless": ("", "", "'0.52'"),
+    # the shaft-system file (issue 33): supports, gears, temperatures, masses
+    "stiffness": ("[force]/[length]", "N/m", "'200 N/um', '2e8 N/m'"),
+    "rotational_stiffness": ("[force]*[length]", "N*m", "'1e5 N*m/rad', '100 N*m/mrad'"),
+    "power": ("[power]", "W", "'5 kW', '7.5 hp'"),
+    "temperature": ("[temperature]", "K", "'60 degC', '333 K'"),
+    "thermal_expansion": ("1/[temperature]", "1/K", "'12e-6 1/K', '12 um/(m*K)'"),
+    "moment_of_inertia": ("[mass]*[length]**2", "kg*m**2", "'0.02 kg*m^2'"),
 }
 
 _ANGLE_UNITS = ("radian", "degree", "arcminute", "arcsecond", "revolution", "turn")

@@ -67,8 +67,8 @@ def valid_values(field):
     out = []
     if field.name in SMALL:
         out.append(SMALL[field.name])
-    if field.kind == "document":
-        return [DOCUMENTS.get(field.name, "{}")]
+    if field.kind == "document":  # the registry's own example, else a shipped example file
+        return [field.example or DOCUMENTS.get(field.name, "{}")]
     if field.choices:
         return list(field.choices)
     if field.kind == "flag":

@@ -52,7 +52,8 @@ class Field:
     field off the command line (an input of the page alone, such as its picker's query). The help
     names another field of the same calculation between backquotes (as Markdown code: the API's
     descriptions are CommonMark): the command line writes it as that field's option
-    (``--temperature``), the API and the page as it stands.
+    (``--temperature``), the API and the page as it stands. ``example`` is a small valid value of a
+    ``document`` field (its text), which the registry-driven fuzz test and the API's schema show.
     """
 
     name: str
@@ -71,6 +72,7 @@ class Field:
     option: str = ""
     aliases: tuple = ()
     cli: bool = True
+    example: str = ""
 
     @property
     def cli_option(self):

@@ -17,6 +17,7 @@ film                           EHL film, Lambda and regime per ball (issue 24)  
 temperature                    steady bearing temperature, heat balance (issue 24)    cli/temperature.py
 runout | runout monte-carlo    manufacturing errors -> inner-ring runout (spec 003)   cli/runout.py
 clearance                      mounted clearance: fits, temperatures, speed (issue 23) cli/clearance.py
+shaft FILE                     bearings on an elastic shaft: loads, lives, stiffness   cli/shaft.py
 
 Each command module defines ``COMMANDS`` (command name -> function, or a Typer group). A calculation's
 command is generated from its declaration in :mod:`bearinglab.calculations.registry` (``cli/_options.py``:
@@ -78,6 +79,7 @@ from . import (
     load,
     runout,
     serve,
+    shaft,
     stand,
     sweep,
     temperature,
@@ -122,7 +124,7 @@ def _main_options(
 
 _GROUPS = {}
 for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, film, temperature, friction, runout,
-                clearance, serve):
+                clearance, shaft, serve):
     for _name, _command in _module.COMMANDS.items():
         if isinstance(_command, typer.Typer):
             app.add_typer(_command, name=_name)

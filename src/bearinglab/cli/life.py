@@ -154,5 +154,6 @@ def _print_speeds(docs):
     print_warnings(list(dict.fromkeys(w for d in docs for w in [*d.get("mounting_warnings", []), *d["warnings"]])))
 
 
+# the duty-cycle file is read by the command itself, which names it in the messages of its steps
 #: The ``life`` command, as the application adds it.
-COMMANDS = {"life": command("life", life)}
+COMMANDS = {"life": command("life", life, documents="path")}

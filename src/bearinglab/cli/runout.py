@@ -399,7 +399,8 @@ def _check_write_worst(count, metric, directory):
 
 
 # the group's callback: no option is required, so that `runout monte-carlo` runs without --errors
-runout_app.callback(invoke_without_command=True)(command("runout", runout_command, required=False))
+runout_app.callback(invoke_without_command=True)(command("runout", runout_command, required=False,
+                                                             documents="path"))  # its profiles lie next to it
 runout_app.command("monte-carlo")(command("runout-monte-carlo", monte_carlo_command))
 
 #: The ``runout`` command group (with ``monte-carlo``), as the application adds it.

@@ -139,10 +139,10 @@ def _prepare(axial_load, n_balls, ball_diameter, pitch_diameter, inner_conformit
     load = fa / (z * ep * bd**2)  # the ball load over the Hertz scale of the groove distance, [-]
     if not np.all(load >= _SMALLEST_LOAD):
         k = int(np.flatnonzero(~(load >= _SMALLEST_LOAD))[0])
-        raise InputError(f"axial_load / (n_balls E' ((f_i + f_o - 1) D)^2) must be >= {_SMALLEST_LOAD:g} [-] (below "
-                         "it the contact deflection is lost to rounding and the angles cannot move), got "
-                         f"{load[k]:.3g} with axial_load = {fa[k]:g} N, E' = {ep[k]:g} Pa, f_i = {fi[k]:g}, "
-                         f"f_o = {fo[k]:g}, D = {d[k]:g} m")
+        least = _SMALLEST_LOAD * z[k] * ep[k] * bd[k] ** 2
+        raise InputError(f"axial_load must be >= {least:.3g} [N] to be resolved (axial_load / (n_balls E' "
+                         f"((f_i + f_o - 1) D)^2) >= {_SMALLEST_LOAD:g}: below it the contact deflection is lost to "
+                         f"rounding and the angles cannot move), got {fa[k]:g} N")
     if consts is None:
         mass = rho * np.pi * d**3 / 6.0
         mass_c, inertia = mass, mass * d**2 / 10.0
