@@ -21,10 +21,10 @@ def test_browser_picker_finds_a_roller_bearing(page, base_url):  # noqa: F811 --
     assert "cylindrical" in page.inner_text("#matches")
     page.click("#matches button[data-name='NU 208 ECP']")
     assert page.input_value("#bearing") == "NU 208 ECP"
-    page.fill("#bearing", "")
-    page.fill("#search-bore", "40 mm")
+    page.fill("#search-bore", "40 mm")  # by size and part of a designation: many ball bearings share the size
     page.fill("#search-od", "80 mm")
-    page.wait_for_function("document.querySelector('#matches').innerText.includes('NU 208 ECP (cylindrical')")
+    page.fill("#bearing", "NJ")
+    page.wait_for_function("document.querySelector('#matches').innerText.includes('NJ 208 ECP (cylindrical')")
 
 
 def test_browser_roller_sections_and_their_printed_report(browser, base_url):  # noqa: F811 -- the fixture
