@@ -28,6 +28,7 @@ stand_load      speeds and a minimum-load result -> columns (rpm, N, kgf)
 frequencies     characteristic frequencies -> ``{name}_hz`` and ``{name}_order`` values
 spectral_mask   the lines of a spectral mask -> columns (Hz and orders)
 bearing_summary every known field of a bearing and its derived quantities
+roller_summary  the same of a roller bearing (bearing_summary gives it for a RollerBearing)
 catalog_entry   the catalog-list row of a bearing
 runout_metrics  runout metrics -> ``{metric}_um`` values
 load_distribution   one case of a combined-load distribution -> displacements, stiffness, per-ball rows
@@ -83,6 +84,7 @@ __all__ = [
     "rating_life",
     "ratings",
     "record",
+    "roller_summary",
     "rows",
     "runout_metrics",
     "significant",
@@ -501,6 +503,8 @@ def bearing_summary(bearing):
     dict
         Field name (with its unit) -> value; ``None`` for a field the bearing does not give.
     """
+    if hasattr(bearing, "roller_diameter"):  # a RollerBearing (issue 32)
+        return roller_summary(bearing)
     b = bearing
     out = {"designation": b.designation, "type": b.type, "balls": b.n_balls,
            "ball_diameter_mm": b.ball_diameter and b.ball_diameter * 1e3,
@@ -787,3 +791,49 @@ def film(result, case=()):
                        "lambda_min": float(pick("minimum_film_parameter")),
                        "regime": str(np.asarray(result.regime)[case]) or None,
                        "converged": bool(np.asarray(result.converged)[case]), "balls": balls})
+
+
+def roller_summary(bearing):
+    """Every known field of a roller bearing and its derived quantities, in engineering units.
+
+    Parameters
+    ----------
+    bearing : RollerBearing
+        The bearing.
+
+    Returns
+    -------
+    dict
+        Field name (with its unit) -> value, ``None`` for a field the bearing does not give: the type and
+        design, the roller set (``rollers``, ``roller_diameter_mm``, ``roller_length_mm``,
+        ``pitch_diameter_mm``, ``contact_angle_deg``, ``radial_clearance_um``), the profile (a name, or
+        [position mm, drop um] pairs), the envelope, the catalogue's ratings and factors (``e``, ``Y``, ``Y1``,
+        ``Y0``), the materials; ``gamma`` = D_we cos(alpha) / D_pw and a tapered bearing's cone and roller
+        angles where the roller set is known.
+    """
+    b = bearing
+
+    def mm(x, f=1e3):
+        return None if x is None else x * f
+
+    profile = b.profile if isinstance(b.profile, str) else [[x * 1e3, h * 1e6] for x, h in b.profile]
+    out = {"designation": b.designation, "type": b.type, "design": b.design, "rows": b.rows, "rollers": b.rollers,
+           "roller_diameter_mm": mm(b.roller_diameter), "roller_length_mm": mm(b.roller_length),
+           "pitch_diameter_mm": mm(b.pitch_diameter),
+           "contact_angle_deg": None if b.contact_angle is None else math.degrees(b.contact_angle),
+           "radial_clearance_um": mm(b.radial_clearance, 1e6), "profile": profile,
+           "crown_drop_um": mm(b.crown_drop, 1e6), "edge_radius_mm": mm(b.edge_radius),
+           "edge_length_mm": mm(b.edge_length), "bore_mm": mm(b.bore), "outside_diameter_mm": mm(b.outside_diameter),
+           "width_mm": mm(b.width), "inner_ring_width_mm": mm(b.inner_ring_width),
+           "dynamic_load_rating_N": b.dynamic_load_rating, "static_load_rating_N": b.static_load_rating,
+           "fatigue_load_limit_N": b.fatigue_load_limit, "e": b.ratio_limit, "Y": b.axial_factor,
+           "Y1": b.axial_factor_below, "Y0": b.static_axial_factor, "pressure_centre_mm": mm(b.pressure_centre),
+           "series": b.series, "full_complement": b.full_complement, "roller_material": b.roller_material.name,
+           "ring_material": b.ring_material.name, "source": b.source}
+    if None not in (b.roller_diameter, b.pitch_diameter, b.contact_angle):
+        out["gamma"] = b.roller_diameter * math.cos(b.contact_angle) / b.pitch_diameter
+        if b.type == "tapered":
+            a = b.tapered_angles
+            out["cone_angle_deg"] = math.degrees(a.cone_angle)
+            out["roller_angle_deg"] = math.degrees(a.roller_angle)
+    return out

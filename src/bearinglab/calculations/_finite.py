@@ -39,7 +39,7 @@ NULLABLE = {
              "viscosity_mm2_s", "viscosity_ratio"),
     # an unloaded ball has no film (docs/user_guide/film.md)
     "film": ("film_central_inner_um", "film_min_inner_um", "film_central_outer_um", "film_min_outer_um",
-             "lambda_inner", "lambda_outer"),
+             "lambda_inner", "lambda_outer", "lambda"),  # lambda: an unloaded roller (issue 32)
 }
 
 

@@ -10,6 +10,8 @@ Bearing         resolve_bearing (a catalog name, a bearing file or the inline ge
                 inputs_echo (the bearing as used and the quantities given, for a JSON document)
 Quantities      five_loads, parse_length, speed_size, parse_speed, parse_speeds, parse_viscosity,
                 parse_temperature, choice
+Displacements   FREEDOMS, prescribed_displacements (the held displacements and tilts -> [m, rad], NaN free),
+                held_reactions (their reactions, by JSON key), prescribed_echo (as typed, for the JSON)
 Lubricant       LubricantViscosity, lubricant_viscosity (the oil options -> the operating viscosity)
 """
 
@@ -27,10 +29,10 @@ from ..errors import InputError
 if TYPE_CHECKING:
     from ..bearing import BallBearing
 
-__all__ = ["DEFAULT_LUBRICATION", "OIL_LUBRICATION", "LubricantViscosity", "choice", "default_lubrication",
-           "five_loads", "inputs_echo", "lubricant_viscosity",
+__all__ = ["DEFAULT_LUBRICATION", "FREEDOMS", "OIL_LUBRICATION", "LubricantViscosity", "choice",
+           "default_lubrication", "five_loads", "held_reactions", "inputs_echo", "lubricant_viscosity",
            "parse_length", "parse_speed", "parse_speeds", "parse_temperature", "parse_viscosity",
-           "resolve_bearing", "speed_size"]
+           "prescribed_displacements", "prescribed_echo", "resolve_bearing", "speed_size"]
 
 def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, ball_diameter=None,
                     pitch_diameter=None, inner_groove_radius=None, outer_groove_radius=None,
@@ -396,3 +398,55 @@ def lubricant_viscosity(viscosity=None, oil=None, temperature=None, viscosity_in
     if vi is None:
         del inputs["viscosity_index"], inputs["viscosity_index_assumed"]
     return LubricantViscosity(nu, text, inputs)
+
+
+#: The freedoms of a ring under load: its load input, the JSON key of its reaction, its displacement input (as
+#: the command line spells it) and the input's quantity (ball and roller bearings alike).
+FREEDOMS = (("fx", "fx_N", "dx", "length"), ("fy", "fy_N", "dy", "length"), ("fz", "fz_N", "dz", "length"),
+            ("mx", "mx_Nmm", "tilt-x", "angle"), ("my", "my_Nmm", "tilt-y", "angle"))
+
+
+def prescribed_displacements(texts, given):
+    """The prescribed displacements [m, rad] (NaN: free) from the five inputs, or None; ``given`` tells
+    which load inputs were given (a freedom takes a load or a displacement, not both)."""
+    import numpy as np
+
+    from ..units import parse_quantity
+
+    if all(t is None for t in texts):
+        return None
+    held = np.full(5, np.nan)
+    for k, ((load, _, name, kind), text) in enumerate(zip(FREEDOMS, texts, strict=True)):
+        if text is None:
+            continue
+        if given[k]:
+            raise InputError(f"{name}: give --{load} or --{name}, not both (a freedom takes a load or a "
+                             "displacement)")
+        held[k] = parse_quantity(text, kind, name)
+        if not np.isfinite(held[k]):
+            raise InputError(f"{name} must be finite, got {text!r}")
+    return held
+
+
+def held_reactions(reactions, held):
+    """The reactions on the held freedoms, by JSON key (N, N mm); empty without held freedoms."""
+    if held is None:
+        return {}
+    import numpy as np
+
+    out = {}
+    for k, (_, key, _, _) in enumerate(FREEDOMS):
+        if not np.isnan(held[k]):
+            out[key] = float(reactions[k]) * (1e3 if key.endswith("Nmm") else 1.0)
+    return out
+
+
+def prescribed_echo(held):
+    """The prescribed displacements as typed, in engineering units (um, mrad), for the inputs echo."""
+    if held is None:
+        return {}
+    import numpy as np
+
+    keys = ("dx_um", "dy_um", "dz_um", "tilt_x_mrad", "tilt_y_mrad")
+    scale = (1e6, 1e6, 1e6, 1e3, 1e3)
+    return {"prescribed": {k: float(v * f) for k, v, f in zip(keys, held, scale, strict=True) if not np.isnan(v)}}

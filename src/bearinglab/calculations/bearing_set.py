@@ -70,7 +70,7 @@ def document(parsed, *, catalog=None):
     from .. import tables
     from ..quasistatic import combined, sets
     from ..units import parse_quantity
-    from . import _mounting
+    from . import _mounting, _rollers
     from .load_distribution import _speeds
 
     v = parsed.values
@@ -81,6 +81,14 @@ def document(parsed, *, catalog=None):
     with failures(parsed):
         names_given = _names(v["bearing"])
         bl = [_catalog.get(name, catalog=catalog) for name in names_given]
+        if any(_rollers.is_roller(b) for b in bl):  # a pair of tapered roller bearings (issue 32)
+            from . import _roller_pairs
+
+            return json.loads(tables.json_text(_roller_pairs.document(parsed, bl)))
+        for name in ("slices", "induced_axial_factor"):  # inputs of tapered pairs
+            if name in parsed.given and (name, given_text(parsed, name)) != ("induced_axial_factor", "SKF"):
+                raise InputError(f"{name.replace('_', '-')}: an input of a pair of tapered roller bearings; "
+                                 f"{bl[0].designation!r} is a ball bearing")
         from ..bearing import check_model
 
         for b in bl:
@@ -184,6 +192,12 @@ def figure(doc):
     from .load_distribution import figure as ball_loads
 
     first = doc["bearings"][0]
+    if "iso281" in doc:  # a tapered pair (issue 32): bearing A's rollers and laminae
+        if "rollers" not in first:
+            raise InputError("plot: the slice model of this pair was not computed (see the warnings): there are no "
+                             "roller loads to draw")
+        return ball_loads(first, title=f"Pair {doc['inputs']['arrangement']}: bearing A ({first['bearing']}), "
+                                       "roller loads and lamina pressures")
     return ball_loads(first, title=f"Set {doc['inputs']['arrangement']}: ball loads of bearing 0 "
                                    f"({first['bearing']})")
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from .. import catalog as _catalog
 from .._io import json_value
+from . import _rollers
 from ._failures import failures
 from ._finite import finite
 from ._inputs import inputs_echo, parse_speed, resolve_bearing
@@ -67,11 +68,15 @@ def _document(parsed, bearing_file, catalog, execution):
     from ..mounting import monte_carlo as mc
 
     values = parsed.values
-    b = resolve_bearing(_text(parsed, "bearing"), bearing_file, catalog)
+    b = _rollers.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog) or \
+        resolve_bearing(_text(parsed, "bearing"), bearing_file, catalog)
     speed = _text(parsed, "speed")
     w = 0.0 if speed is None else parse_speed(speed, "speed", bearing=b)
-    inp = mounted_inputs(b, **{k: _text(parsed, k) for k in _MOUNTING}, speed=w, require=True)
-    r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
+    if _rollers.is_roller(b):  # a cylindrical roller bearing's raceways at its roller middles (issue 32)
+        b, inp, r = _roller_clearance(parsed, b, {k: _text(parsed, k) for k in _MOUNTING}, w, speed)
+    else:
+        inp = mounted_inputs(b, **{k: _text(parsed, k) for k in _MOUNTING}, speed=w, require=True)
+        r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
     doc = _chain_document(b, inp, r, speed)
     samples = values.get("monte_carlo")
     if samples is not None:
@@ -88,8 +93,47 @@ def _document(parsed, bearing_file, catalog, execution):
             doc["warnings"].append(f"{100 * study.probability_preload:.3g} % of the Monte Carlo samples "
                                    "run with a negative clearance (preloaded)")
     notes = doc["warnings"]  # the bearing's provenance notes after the chain's, as the command line adds them
-    doc["warnings"] = notes + [n for n in dict.fromkeys(_catalog.provenance_notes(b)) if n not in notes]
+    provenance = _rollers.provenance_of(b) if _rollers.is_roller(b) else _catalog.provenance_notes(b)
+    doc["warnings"] = notes + [n for n in dict.fromkeys(provenance) if n not in notes]
     return doc
+
+
+def _roller_clearance(parsed, bearing, mounting, speed, speed_text):
+    """The mounted-clearance chain of a cylindrical roller bearing (its raceways at the roller middles).
+
+    Parameters
+    ----------
+    parsed : Parsed
+        A request of ``clearance``.
+    bearing : RollerBearing
+        From :func:`._rollers.bearing_of`.
+    mounting : dict
+        The mounting fields (name -> text as given).
+    speed : float
+        Inner-ring speed. [rad/s]
+    speed_text : str or None
+        As typed, for the echo.
+
+    Returns
+    -------
+    tuple
+        ``(bearing, inputs, range)``: the bearing with its roller set (estimated where missing), the
+        :class:`~bearinglab.calculations._mounting.MountedInputs` and the chain's range.
+    """
+    from ..errors import InputError
+    from ..mounting import chain
+    from ._rollers import geometry_of, mounted_inputs, spherical
+
+    if bearing.type == "tapered":
+        raise InputError(f"bearing: {bearing.designation!r} is a tapered roller bearing, whose play is set by "
+                         "adjusting it against the other bearing of its pair (bearing-set, --preload-offset): its "
+                         "mounted radial clearance is not modelled")
+    spherical(bearing, "the mounted clearance")
+    b = geometry_of(bearing)
+    given = {k: v for k, v in mounting.items() if v is not None and k != "radial_clearance"}
+    inp = mounted_inputs(b, given, speed, radial_clearance=mounting.get("radial_clearance"))
+    r = chain.operating_range(inp.unmounted, inp.inner, inp.outer, inp.mounting, inp.conditions)
+    return b, inp, r
 
 
 def _chain_document(b, inp, r, speed_text):

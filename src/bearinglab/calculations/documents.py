@@ -300,9 +300,29 @@ def _search_document(parsed):
     for row in catalog.search(**size, tolerance=_SEARCH_TOLERANCE):  # every row when no size
         if wanted(row["name"]):
             matches.append(dict(row, aliases=aliases.get(row["name"], [])))
+    matches += _roller_matches(values, wanted, within, {m["name"] for m in matches})
     limit = values.get("limit", 50)
     return {"bearings": bearings, "inputs": echo, "warnings": [], "query": values.get("query", ""),
             "count": len(matches), "truncated": len(matches) > limit, "matches": matches[:limit]}
+
+
+def _roller_matches(values, wanted, within, found):
+    """The built-in roller bearings (``data/roller_series.csv``, issue 32) the picker's query and sizes match,
+    those not ``found`` already; none where a ball bearing's type or series is asked for."""
+    from ..catalog import _rollers
+
+    if values.get("type") is not None or values.get("series") is not None:
+        return []
+    out = []
+    for name, row in _rollers.records().items():
+        sizes = {k: float(row[k]) if row.get(k) else None for k in ("bore_mm", "outside_diameter_mm", "width_mm")}
+        if name in found or not wanted(name) or not all(within(sizes[f"{k}_mm"], k) for k in
+                                                        ("bore", "outside_diameter", "width")):
+            continue
+        out.append({"name": name, "type": row["type"], "series": row.get("series"), **sizes,
+                    "dynamic_load_rating_kN": float(row["dynamic_load_rating_kN"]) if row.get("dynamic_load_rating_kN")
+                    else None, "aliases": []})
+    return out
 
 
 def run(parsed):

@@ -17,6 +17,7 @@ from __future__ import annotations
 from .. import catalog as _catalog
 from .._io import json_value
 from ..errors import InputError
+from . import _rollers
 from ._failures import failures
 from ._finite import finite
 from ._inputs import (
@@ -150,6 +151,9 @@ def _document(parsed, bearing_file, catalog):
     def text(name):
         return str(parsed.given[name]).strip() if name in parsed.given else None
 
+    roller = _rollers.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
+    if roller is not None:  # the line-contact film of every roller (issue 32)
+        return _roller_film(parsed, roller)
     v = parsed.values
     geometry = {k: (v[k] if k in ("balls", "inner_conformity", "outer_conformity") else text(k))
                 for k in _GEOMETRY if k in parsed.given}
@@ -239,6 +243,129 @@ def _auto_temperature(b, loads, w, oil, viscosity, dynamic_viscosity, viscosity_
     text = (f"{how} at the steady temperature {', '.join(f'{x - 273.15:.1f}' for x in t)} degC (thermal balance): "
             f"nu = {', '.join(f'{x * 1e6:.4g}' for x in nu)} cSt")
     return nu * rho, text, inputs, [*notes, *r.warnings]
+
+
+def _roller_film(parsed, bearing):
+    """The document of ``film`` for a roller bearing: the line-contact film of every roller.
+
+    The roller loads are the slice model's at rest (ISO/TS 16281: no centrifugal roller loads), the film of
+    each roller that of a line contact of its mean load per length at both raceways (Pan and Hamrock's
+    formula, :func:`bearinglab.film.roller_films`), Lambda with the roughness of the rollers (``roughness_ball``)
+    and the raceways.
+
+    Parameters
+    ----------
+    parsed : Parsed
+        A request of ``film``.
+    bearing : RollerBearing
+        From :func:`._rollers.bearing_of`.
+
+    Returns
+    -------
+    dict or list of dict
+        One document per speed: ``film_min_um``, ``lambda_min``, ``regime``, ``converged`` and ``rollers`` (per
+        roller ``azimuth_deg``, ``load_N``, ``entrainment_velocity_m_s``, ``film_central_inner_um``,
+        ``film_min_inner_um``, ``film_central_outer_um``, ``film_min_outer_um``, ``lambda``), ``inputs`` and
+        ``warnings``.
+    """
+    import warnings
+
+    import numpy as np
+
+    from .. import film as film_model
+    from ..film import ehl
+    from ..rollers import analysis
+    from ..units import RPM
+    from ._mounting import NAMES as MOUNTING
+    from ._reading import text as _text
+    from ._rollers import geometry_of, notes_of, operating, slices_of, spherical
+
+    spherical(bearing, "the film")
+    b = geometry_of(bearing)
+    loads = five_loads(*(_text(parsed, k) for k in ("fx", "fy", "fz", "mx", "my", "radial_load", "axial_load")))
+    speed = _text(parsed, "speed")
+    if speed is None:
+        raise InputError("speed: give the inner-ring speed, e.g. --speed '6000 rpm' (no film forms at rest)")
+    w = parse_speeds(speed, pitch_diameter=b.pitch_diameter, zero=False)
+    rq_roller, rq_race = roughness(_text(parsed, "roughness"), _text(parsed, "roughness_ball"),
+                                             _text(parsed, "roughness_race"))
+    alpha = pressure_viscosity(_text(parsed, "pressure_viscosity_coefficient"))
+    oil = {k: (parsed.values.get(k) if k == "viscosity_index" else _text(parsed, k))
+           for k in ("viscosity", "dynamic_viscosity", "oil", "viscosity_index", "viscosity_100")}
+    temperature = _text(parsed, "temperature")
+    notes = []
+    if temperature is not None and temperature.lower() == "auto":
+        eta, how, lub_inputs, notes = _auto_temperature(
+            b, loads, w, oil["oil"], oil["viscosity"], oil["dynamic_viscosity"], oil["viscosity_index"],
+            oil["viscosity_100"], _text(parsed, "density"), _text(parsed, "ambient"),
+            _text(parsed, "thermal_resistance"), _text(parsed, "lubrication") or "oil-jet",
+            _text(parsed, "skf_constants"))
+    else:
+        if any(_text(parsed, k) is not None for k in ("ambient", "thermal_resistance", "skf_constants")):
+            raise InputError("temperature: --ambient, --thermal-resistance and --skf-constants go with "
+                             "--temperature auto (the thermal balance)")
+        eta, _, how, lub_inputs, notes = lubricant(oil["viscosity"], oil["dynamic_viscosity"], oil["oil"],
+                                                             temperature, oil["viscosity_index"],
+                                                             oil["viscosity_100"], _text(parsed, "density"))
+        if _text(parsed, "lubrication") is not None:
+            notes.append("lubrication: the starvation check (SKF's replenishment factor) is made for ball bearings; "
+                         "the rollers' films are those of a fully flooded contact")
+    if alpha is None:
+        alpha = ehl.pressure_viscosity_coefficient(eta)
+        notes.append("pressure-viscosity coefficient: not given, so Wooster's estimate for mineral oils is used "
+                     f"({float(np.min(alpha)) * 1e9:.3g} 1/GPa); give the oil's own value")
+    b, mounted = operating(b, float(np.max(w)), {k: _text(parsed, k) for k in MOUNTING if k in parsed.given})
+    n_slices = slices_of(parsed)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        r = analysis.roller_analysis(b, loads, n_slices=n_slices)
+    notes += [*r.warnings, *(str(c.message) for c in caught)]
+    notes.append("roller loads: those of the slice model at rest (ISO/TS 16281: no centrifugal roller loads); each "
+                 "roller's film is that of its mean load per length (a tilted roller's loaded end runs thinner)")
+    eta_k = np.broadcast_to(np.asarray(eta, dtype=float), w.shape)
+    alpha_k = np.broadcast_to(np.asarray(alpha, dtype=float), w.shape)
+    docs = []
+    for k in range(w.size):
+        f = film_model.roller_films(r.roller_load, float(w[k]), b.roller_diameter, b.roller_length, b.pitch_diameter,
+                                    float(eta_k[k]), float(alpha_k[k]), b.reduced_modulus, contact_angle=b.contact_angle,
+                                    roughness_roller=rq_roller, roughness_race=rq_race)
+        doc = _roller_film_doc(r, f)
+        doc["inputs"] = inputs_echo(b, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
+                                    my_Nmm=loads[4] * 1e3, speed_rpm=float(w[k]) / RPM, loads_at="rest",
+                                    **lub_inputs, lubricant=how, pressure_viscosity_coefficient_per_GPa=
+                                    float(alpha_k[k]) * 1e9, roughness_ball_um=rq_roller * 1e6,
+                                    roughness_race_um=rq_race * 1e6, slices=n_slices)
+        temps = lub_inputs.get("bearing_temperature_degC")
+        if isinstance(temps, list):
+            doc["inputs"]["bearing_temperature_degC"] = temps[k]
+        doc.update(mounted)
+        doc["warnings"] = list(dict.fromkeys([*notes, *notes_of(b)]))
+        docs.append(doc)
+    return docs[0] if w.size == 1 else docs
+
+
+def _roller_film_doc(r, f):
+    """One speed's film of the rollers, JSON-ready (null where a roller carries no load)."""
+    import math
+
+    import numpy as np
+
+    from .._io import json_value
+
+    hmin = np.fmin(f.minimum_inner, f.minimum_outer)
+    loaded = np.isfinite(hmin)
+    k = int(np.nanargmin(np.where(loaded, hmin, np.nan))) if loaded.any() else None
+    rollers = [{"azimuth_deg": math.degrees(float(r.azimuth[j])), "load_N": float(r.roller_load[j]),
+                "entrainment_velocity_m_s": float(f.entrainment_velocity),
+                "film_central_inner_um": float(f.central_inner[j]) * 1e6,
+                "film_min_inner_um": float(f.minimum_inner[j]) * 1e6,
+                "film_central_outer_um": float(f.central_outer[j]) * 1e6,
+                "film_min_outer_um": float(f.minimum_outer[j]) * 1e6,
+                "lambda": float(f.film_parameter[j])} for j in range(len(r.roller_load))]
+    return json_value({"film_min_um": None if k is None else float(hmin[k]) * 1e6,  # as a whole: nulls known by key
+                       "lambda_min": None if k is None else float(f.film_parameter[k]),
+                       "regime": None if k is None else str(f.regime[k]), "converged": bool(r.converged),
+                       "rollers": rollers})
 
 
 def _solve(model, *args, **kwargs):

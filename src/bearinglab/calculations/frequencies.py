@@ -16,6 +16,7 @@ import re
 
 from ..errors import InputError
 from . import _reading as inp
+from . import _rollers
 from ._failures import failures
 from ._finite import finite
 
@@ -54,6 +55,9 @@ def document(parsed, *, bearing_file=None, catalog=None):
         ``mask`` with the ``mask`` flag, and ``warnings`` (the bearing's provenance notes).
     """
     with failures(parsed, options=False):  # messages in the command line's words (_failures)
+        roller = _rollers.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
+        if roller is not None:  # the defect frequencies of the rollers (issue 32)
+            return _roller_frequencies(parsed, roller)
         b = inp.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
         hertz = inp.value(parsed, "hertz", "exact")
         harmonics, sidebands = inp.value(parsed, "harmonics", 3), inp.value(parsed, "sidebands", 1)
@@ -139,3 +143,74 @@ def _mask(b, w_in, w_out, angle, harmonics, sidebands, band_fraction):
     m = kinematics.spectral_mask(w_in, d, dm, z, angle, outer_speed=w_out, harmonics=harmonics,
                                  sidebands=sidebands, band=band_fraction)
     return tables.rows(tables.spectral_mask(m, w_in))
+
+
+# the roller bearings (issue 32)
+def _roller_frequencies(parsed, bearing):
+    """The document of ``frequencies`` for a roller bearing: the defect frequencies of its rollers.
+
+    Pure rolling at the roller middles (:mod:`bearinglab.kinematics`, the formulas of ball bearings with the
+    roller diameter D_we, the pitch diameter D_pw, the rollers Z and the contact angle; of a tapered bearing its
+    cup angle, the usual approximation: the cone's raceway runs at alpha - 2 phi). The keys of the ball
+    bearing's document; the operating angle under an axial stand load is the test-stand method of ball
+    bearings, refused.
+
+    Parameters
+    ----------
+    parsed : Parsed
+        A request of ``frequencies``.
+    bearing : RollerBearing
+        From :func:`._rollers.bearing_of`.
+
+    Returns
+    -------
+    dict
+    """
+    from .. import kinematics, tables
+    from ..units import format_dms
+    from ._inputs import inputs_echo
+    from ._rollers import geometry_of, notes_of, spherical
+
+    spherical(bearing, "its defect frequencies")
+    if inp.text(parsed, "axial_load") is not None:
+        raise InputError("axial-load: the operating contact angle under a stand load is the test-stand method of ball "
+                         f"bearings; {bearing.designation!r} is a {bearing.type} roller bearing, whose frequencies are "
+                         "at its nominal angle")
+    b = geometry_of(bearing)
+    harmonics, sidebands = inp.value(parsed, "harmonics", 3), inp.value(parsed, "sidebands", 1)
+    w_in, w_out, _, band = _read(b, inp.text(parsed, "speed"), inp.text(parsed, "outer_speed", "0 rpm"), None,
+                                 "exact", harmonics, sidebands, inp.text(parsed, "band", "2 %"))
+    z, d, dm, a0 = b.rollers, b.roller_diameter, b.pitch_diameter, b.contact_angle
+    out = inputs_echo(b, speed_rpm=w_in / _HZ * 60.0, outer_speed_rpm=w_out / _HZ * 60.0)
+    shift = kinematics.frequency_shift(w_in, d, dm, z, a0, a0, outer_speed=w_out)
+    out.update(contact_angle_deg=math.degrees(a0), contact_angle_dms=format_dms(a0),
+               nominal_contact_angle_deg=math.degrees(a0), shaft_hz=w_in / _HZ, outer_hz=w_out / _HZ)
+    out.update(tables.frequencies(shift.operating, w_in))
+    out["nominal"] = dict(contact_angle_deg=math.degrees(a0), shaft_hz=w_in / _HZ,
+                          **tables.frequencies(shift.nominal, w_in))
+    out["shift_hz"] = {n: float(getattr(shift.shift, n)) / _HZ for n in kinematics.FAMILIES[1:]}
+    out["shift_percent"] = {n: float(getattr(shift.shift_percent, n)) for n in kinematics.FAMILIES[1:]}
+    if inp.value(parsed, "mask", False):
+        view = _BallView(b)
+        out["mask"] = {"harmonics": harmonics, "sidebands": sidebands, "band_percent": band * 100.0,
+                       "lines": _mask(view, w_in, w_out, a0, harmonics, sidebands, band)}
+    notes = []
+    if b.estimated_fields:
+        from ..rollers.analysis import provenance
+
+        notes += provenance(b)
+    if b.type == "tapered":
+        notes.append("tapered roller bearing: the frequencies of pure rolling at the roller middles with the cup angle "
+                     "(the usual approximation; the cone's raceway runs at alpha - 2 phi)")
+    out["warnings"] = list(dict.fromkeys([*notes, *notes_of(b)]))
+    return out
+
+
+class _BallView:
+    """A roller bearing as the spectral mask reads a ball bearing (Z, D, d_m)."""
+
+    def __init__(self, b):
+        self._values = {"n_balls": b.rollers, "ball_diameter": b.roller_diameter, "pitch_diameter": b.pitch_diameter}
+
+    def require(self, *names):
+        return tuple(self._values[n] for n in names)

@@ -19,6 +19,7 @@ from typing import NamedTuple
 
 from ..errors import InputError
 from . import _reading as inp
+from . import _rollers
 from ._failures import failures
 from ._finite import finite
 from ._inputs import default_lubrication, lubricant_viscosity, parse_viscosity
@@ -57,6 +58,9 @@ def compute(parsed, *, bearing_file=None, catalog=None):
     t, v = inp.text, inp.value
     resolved = []
     with failures(parsed, options=False):  # messages in the command line's words (_failures)
+        roller = _rollers.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
+        if roller is not None:  # SKF's model of roller bearings (issue 32)
+            return FrictionResult(*_roller_friction(parsed, roller))
         doc, m, b, n = _torque(
             t(parsed, "radial_load", "0 N"), t(parsed, "axial_load", "0 N"), t(parsed, "speed", "0 rpm"),
             v(parsed, "model", "one-term"), t(parsed, "bearing"), bearing_file, catalog, v(parsed, "type"),
@@ -90,6 +94,112 @@ def document(parsed, *, bearing_file=None, catalog=None):
         ``inputs`` and ``warnings``.
     """
     return compute(parsed, bearing_file=bearing_file, catalog=catalog).document
+
+
+_HANDBOOK = ("type", "bore", "outside_diameter", "mean_diameter", "static_load_rating", "mu", "x0", "y0", "f", "c",
+             "f0", "palmgren_f0")
+
+
+def _roller_friction(parsed, bearing):
+    """The document of ``friction torque`` for a roller bearing: SKF's four-term model of its type.
+
+    SKF General Catalogue 6000 (module :mod:`bearinglab.friction.skf_roller`): the rolling and sliding moments with
+    the constants of the bearing's series, the inlet shear heating and replenishment factors, and the drag moment
+    of an oil bath (``lubrication`` oil-bath with ``oil_level``; V_M from SKF's diagram of roller bearings, or
+    ``drag_loss_factor``).
+    The handbook models of the friction-rig lab (one-term, two-term, Palmgren) are ball bearings': refused.
+
+    Parameters
+    ----------
+    parsed : Parsed
+        A request of ``friction``.
+    bearing : RollerBearing
+        From :func:`._rollers.bearing_of`.
+
+    Returns
+    -------
+    tuple
+        ``(document, SKFTorque)``: the keys of the ball bearing's ``skf`` document.
+    """
+    import warnings
+
+    import numpy as np
+
+    from .. import friction as friction_model
+    from .. import tables
+    from ..units import RPM
+    from ._mounting import NAMES as MOUNTING
+    from ._rollers import notes_of, operating
+
+    model = inp.value(parsed, "model", "one-term")
+    if model != "skf":
+        raise InputError(f"model: the {model} model is of ball bearings (the friction-rig lab's handbook constants); "
+                         f"{bearing.designation!r} is a {bearing.type} roller bearing: give --model skf (SKF's "
+                         "constants of roller bearings)")
+    given = [k for k in _HANDBOOK if k in parsed.given]
+    if given:
+        raise InputError(f"{given[0].replace('_', '-')}: an input of the handbook models of ball bearings; the skf "
+                         "model reads a roller bearing's envelope and series from the bearing")
+    series = parsed.given.get("series")
+    if series is not None:
+        try:
+            friction_model.roller_series_constants(bearing.type, str(series).strip())
+        except InputError as exc:
+            raise InputError(f"series: {exc}".replace("series: series", "series")) from None
+        bearing = bearing.replace(series=str(series).strip())
+    fr, fa, n = _cases(inp.text(parsed, "radial_load", "0 N"), inp.text(parsed, "axial_load", "0 N"),
+                       inp.text(parsed, "speed", "0 rpm"))
+    _check_speed(bearing, n)
+    lubrication = inp.value(parsed, "lubrication", "grease")
+    oil = (inp.text(parsed, "oil"), inp.text(parsed, "temperature"), inp.value(parsed, "viscosity_index"),
+           inp.text(parsed, "viscosity_100"))
+    if inp.text(parsed, "viscosity") is None and oil[0] is None:
+        raise InputError("viscosity: the skf model needs --viscosity (e.g. '30 cSt'; of the base oil for grease), "
+                         "or --oil VG68 with --temperature")
+    nu = lubricant_viscosity(inp.text(parsed, "viscosity"), *oil, required=True).viscosity
+    kw = {}
+    level, vm = inp.text(parsed, "oil_level"), inp.value(parsed, "drag_loss_factor")
+    if lubrication == "oil-bath":
+        if level is None:
+            raise InputError("oil-level: --lubrication oil-bath needs --oil-level (e.g. '5 mm'); V_M follows from "
+                             "SKF's diagram at H/d_m, the roller-bearing curve (--drag-loss-factor overrides it)")
+        h = inp.parse_length(level, "oil-level", zero=True)
+        dm = bearing.mean_diameter
+        if h > dm / 2:
+            raise InputError(f"oil-level must be <= d_m/2 = {dm / 2 * 1e3:g} mm [mm] (at most up to the bearing's "
+                             f"centre), got {h * 1e3:g} mm")
+        if vm is not None and not 0.0 <= vm <= 1.0:
+            raise InputError(f"drag-loss-factor must be in [0, 1] [-] (V_M of SKF's diagram), got {vm:g}")
+        kw = {"oil_level": h, "drag_loss_factor": vm}
+    elif level is not None or vm is not None:
+        raise InputError("oil-level: --oil-level and --drag-loss-factor go with --lubrication oil-bath")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        m = friction_model.skf_roller_for_bearing(bearing, fr, fa, n, nu, lubrication=lubrication, **kw)
+    notes = list(dict.fromkeys([*m.warnings, *(str(c.message) for c in caught)]))
+    if bearing.type == "cylindrical" and bearing.design in ("N", "NU") and np.any(fa > 0):
+        notes.append(f"axial load: an {bearing.design} carries none (no ribs on both rings); SKF's sliding moment "
+                     "takes it as if on the flanges")
+    moments = tables.rows(tables.skf_torque(m))
+    rpm = tables.significant(n / RPM)
+    cases = [{"radial_load_N": float(fr[i]), "axial_load_N": float(fa[i]), "speed_rpm": float(rpm[i]), **moments[i]}
+             for i in range(len(moments))]
+    info = {"bearing": bearing.designation, "type": bearing.type, "model": "skf", "lubrication": lubrication,
+            "viscosity_cSt": float(tables.significant(nu * 1e6)[0]), "series": bearing.series}
+    if m.drag_loss_factor is not None:  # the oil bath's V_M: given, or SKF's diagram at H/d_m
+        info.update(oil_level_mm=kw["oil_level"] * 1e3, drag_loss_factor=float(m.drag_loss_factor),
+                    drag_loss_factor_source="given" if vm is not None else
+                    "SKF's diagram at H/d_m (roller bearings; bearinglab.friction.drag)")
+    mounting = {k: inp.text(parsed, k) for k in MOUNTING if k in parsed.given}
+    mounted = {}
+    if mounting:
+        _, mounted = operating(bearing, float(np.max(n)), mounting)
+        notes.append("operating clearance: the skf friction model does not depend on the clearance; "
+                     "operating_clearance_um is reported, the torque is the same without the mounting inputs")
+    echo = {"inputs": _echo(bearing, fr, fa, n, model="skf", lubrication=lubrication, viscosity_cSt=nu * 1e6),
+            "warnings": list(dict.fromkeys([*notes, *notes_of(bearing)]))}
+    doc = {**info, **cases[0], **mounted, **echo} if len(cases) == 1 else {**info, "cases": cases, **mounted, **echo}
+    return doc, m
 
 
 def _torque(radial_load, axial_load, speed, model, bearing, bearing_file, catalog, bearing_type, contact_angle,

@@ -20,7 +20,7 @@ import warnings
 from typing import NamedTuple
 
 from ..errors import ConvergenceError, InputError, ValidityWarning
-from . import _mounting
+from . import _mounting, _rollers
 from . import _reading as inp
 from ._failures import failures
 from ._finite import finite
@@ -81,6 +81,7 @@ def compute(parsed, *, bearing_file=None, catalog=None, execution=None, check=No
     from .load_distribution import clearance_source
 
     with failures(parsed, options=False):  # messages in the command line's words (_failures)
+        _rollers.check_model(parsed, bearing_file=bearing_file, catalog=catalog)  # ball bearings only
         b = inp.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
         from ..bearing import check_model
 

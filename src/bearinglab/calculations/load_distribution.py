@@ -25,19 +25,23 @@ from ..errors import InputError
 from ._failures import failures
 from ._finite import finite
 from ._inputs import (
+    FREEDOMS,
     choice,
     five_loads,
     inputs_echo,
     parse_speeds,
     resolve_bearing,
 )
+from ._inputs import held_reactions as _reactions
+from ._inputs import prescribed_displacements as _held
+from ._inputs import prescribed_echo as _prescribed_echo
 from ._request import given_text, with_notes
 
 __all__ = ["document", "figure"]
 
-#: The freedoms, their load fields, the JSON keys of their reactions and their displacement inputs.
-_FREEDOMS = (("fx", "fx_N", "dx", "length"), ("fy", "fy_N", "dy", "length"), ("fz", "fz_N", "dz", "length"),
-             ("mx", "mx_Nmm", "tilt-x", "angle"), ("my", "my_Nmm", "tilt-y", "angle"))
+#: The freedoms, their load fields, the JSON keys of their reactions and their displacement inputs
+#: (:data:`._inputs.FREEDOMS`, which the roller bearings' document reads too)
+_FREEDOMS = FREEDOMS
 _LOADS = ("fx", "fy", "fz", "mx", "my", "radial_load", "axial_load")
 _GEOMETRY = ("ball_diameter", "pitch_diameter", "inner_groove_radius", "outer_groove_radius")
 MOUNTING = ("shaft_fit", "housing_fit", "shaft_interference", "housing_interference", "shaft_bore",
@@ -76,7 +80,7 @@ def document(parsed, *, catalog=None, bearing_file=None, speeds=False):
     from .. import tables
     from ..quasistatic import combined
     from ..units import parse_quantity
-    from . import _mounting, _preload
+    from . import _mounting, _preload, _rollers
 
     v, given = parsed.values, parsed.given
 
@@ -84,6 +88,9 @@ def document(parsed, *, catalog=None, bearing_file=None, speeds=False):
         return given_text(parsed, name)
 
     with failures(parsed):
+        roller = _rollers.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
+        if roller is not None:  # the slice model of a roller bearing (issue 32)
+            return json.loads(tables.json_text(_rollers.load_document(parsed, roller, speeds=speeds)))
         b = resolve_bearing(text("bearing"), bearing_file, catalog, v.get("balls"), *map(text, _GEOMETRY),
                             v.get("inner_conformity"), v.get("outer_conformity"), text("contact_angle"),
                             text("radial_clearance"), text("ball_material"))
@@ -135,6 +142,11 @@ def figure(doc, title=None):
     import numpy as np
 
     from ..plots import load_distribution as load_plots
+
+    if "rollers" in doc:  # a roller bearing: its roller loads and lamina pressures (issue 32)
+        from . import _rollers
+
+        return _rollers.figure(doc, title)
 
     def column(key, scale=1.0):
         return np.array([np.nan if ball[key] is None else ball[key] * scale for ball in doc["balls"]])
@@ -188,52 +200,6 @@ def plausibility(b, loads, r, notes):
                                                    pick("ball_load_outer"), pick("contact_angle_inner"),
                                                    pick("contact_angle_outer"))]
     return list(dict.fromkeys(notes))
-
-
-def _held(texts, given):
-    """The prescribed displacements [m, rad] (NaN: free) from the five inputs, or None; ``given`` tells
-    which load inputs were given (a freedom takes a load or a displacement, not both)."""
-    import numpy as np
-
-    from ..units import parse_quantity
-
-    if all(t is None for t in texts):
-        return None
-    held = np.full(5, np.nan)
-    for k, ((load, _, name, kind), text) in enumerate(zip(_FREEDOMS, texts, strict=True)):
-        if text is None:
-            continue
-        if given[k]:
-            raise InputError(f"{name}: give --{load} or --{name}, not both (a freedom takes a load or a "
-                             "displacement)")
-        held[k] = parse_quantity(text, kind, name)
-        if not np.isfinite(held[k]):
-            raise InputError(f"{name} must be finite, got {text!r}")
-    return held
-
-
-def _reactions(reactions, held):
-    """The reactions on the held freedoms, by JSON key (N, N mm); empty without held freedoms."""
-    if held is None:
-        return {}
-    import numpy as np
-
-    out = {}
-    for k, (_, key, _, _) in enumerate(_FREEDOMS):
-        if not np.isnan(held[k]):
-            out[key] = float(reactions[k]) * (1e3 if key.endswith("Nmm") else 1.0)
-    return out
-
-
-def _prescribed_echo(held):
-    """The prescribed displacements as typed, in engineering units (um, mrad), for the inputs echo."""
-    if held is None:
-        return {}
-    import numpy as np
-
-    keys = ("dx_um", "dy_um", "dz_um", "tilt_x_mrad", "tilt_y_mrad")
-    scale = (1e6, 1e6, 1e6, 1e3, 1e3)
-    return {"prescribed": {k: float(v * f) for k, v, f in zip(keys, held, scale, strict=True) if not np.isnan(v)}}
 
 
 def takeup_um(b):

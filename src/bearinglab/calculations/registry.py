@@ -105,6 +105,7 @@ GROUPS = {
     "friction": "Handbook constants", "film": "Lubricant film", "heat": "Heat balance",
     "mounting": "Mounting: fits and seats", "mounting temperatures": "Mounting: temperatures (default 20 degC)",
     "monte carlo": "Monte Carlo", "rotation": "Rotation",
+    "rollers": "Roller bearings: roller set, profile, slices (override the catalog's)",
 }
 #: The bearing types a catalog search takes (the ``type`` words of the rows, deep-groove for ``radial``).
 CATALOG_TYPES = ("deep-groove", "angular", "four-point", "double-row-angular", "double-row-radial", "self-aligning",
@@ -129,8 +130,8 @@ GEOMETRY = (
        minimum=0.5, exclusive=True, maximum=1.0, group=_GEO),
     _f("outer_conformity", "number", "f_o = r_o / D.", label="Outer conformity r/D", unit="-",
        minimum=0.5, exclusive=True, maximum=1.0, group=_GEO),
-    _f("contact_angle", "angle", "Nominal (free) angle, e.g. '12 deg'.", label="Free contact angle",
-       unit="deg", minimum=0, maximum=90, group=_GEO),
+    _f("contact_angle", "angle", "Nominal (free) angle, e.g. '12 deg' (a tapered roller bearing: its cup "
+       "angle, at most 45 deg).", label="Free contact angle", unit="deg", minimum=0, maximum=90, group=_GEO),
     _f("radial_clearance", "length", "Diametral clearance, e.g. '9 um'; zero or negative is a preload.",
        label="Radial clearance", unit="um", group=_GEO),
     _f("ball_material", "choice", "Ball material.", label="Ball material",
@@ -232,6 +233,33 @@ _DISPLACEMENTS = (
     _f("tilt_y", "angle", "Hold theta_y, e.g. '0 mrad' (instead of `my`); `tilt_x`/`tilt_y` '0 mrad' "
        "hold the ring square.", label="theta_y", unit="mrad", group=_D),
 )
+_R = "rollers"
+#: the roller set and profile of a roller bearing (issue 32): they override the catalog's or the bearing file's
+#: (pitch diameter, contact angle and clearance are the `GEOMETRY` fields, shared with ball bearings)
+ROLLER_SET = (
+    _f("rollers", "int", "Rollers per row Z of a roller bearing.", label="Rollers", minimum=3,
+       maximum=WEB_MAX_BALLS, group=_R),
+    _f("roller_diameter", "length", "Roller diameter D_we (of a tapered roller: at its middle), e.g. '11 mm'.",
+       label="Roller diameter", unit="mm", minimum=0, exclusive=True, maximum=1000, group=_R),
+    _f("roller_length", "length", "Effective roller length L_we, e.g. '9.6 mm' (at most the ring width).",
+       label="Roller length", unit="mm", minimum=0, exclusive=True, maximum=1000, group=_R),
+)
+ROLLER_PROFILE = (
+    _f("profile", "choice", "Roller profile: logarithmic (ISO/TS 16281's, the default) | crowned (with "
+       "`crown_drop`) | flat.", label="Roller profile", choices=("logarithmic", "crowned", "flat"), group=_R),
+    _f("crown_drop", "length", "Drop of the crowned profile at the roller ends, e.g. '5 um'.",
+       label="Crown drop", unit="um", minimum=0, maximum=1000, group=_R),
+)
+SLICES = _f("slices", "int", "Slices per roller of the ISO/TS 16281 model (default 30).", label="Slices",
+            minimum=1, maximum=200, group=_R)
+#: every roller input of a calculation with the slice model
+ROLLERS = (*ROLLER_SET, *ROLLER_PROFILE, SLICES)
+_MISALIGNMENT = (
+    _f("tilt_x", "angle", "Roller bearings: hold the inner ring tilted by theta_x against the outer ring "
+       "(misalignment) in the ISO/TS 16281 life, e.g. '1 mrad' (instead of `mx`).", label="theta_x",
+       unit="mrad", group=_R),
+    _f("tilt_y", "angle", "As `tilt_x`, about y.", label="theta_y", unit="mrad", group=_R),
+)
 _CONTAMINATION = ("extreme", "high", "normal", "slight", "typical", "severe", "very-severe")
 _HERTZ = _f("hertz", "choice", "Hertz coefficients: exact | table (the bearing's tabulated 2K/(pi mu)).",
             label="Hertz coefficients", default="exact", choices=("exact", "table"), group="model")
@@ -270,12 +298,12 @@ _CALCS = (
             group="temperature auto"),
          _f("skf_constants", "text", "With `temperature` auto: SKF constants R1,R2,R3,S1,S2,S3 "
             "(angular contact).", label="SKF constants", group="temperature auto"),
-         BEARING, *GEOMETRY, *MOUNTING),
+         BEARING, *GEOMETRY, *ROLLERS, *_MISALIGNMENT, *MOUNTING),
         combine="broadcast"),
     Calculation(
         "load-distribution", ("load-distribution",), "Load distribution and stiffness",
         "5-DOF load distribution of one bearing under F_x, F_y, F_z, M_x, M_y; stiffness matrix.",
-        (*LOADS, *_DISPLACEMENTS, *_SOLVE, BEARING, *GEOMETRY, *MOUNTING)),
+        (*LOADS, *_DISPLACEMENTS, *_SOLVE, BEARING, *GEOMETRY, *ROLLERS, *MOUNTING)),
     Calculation(
         "bearing-set", ("bearing-set",), "Bearing set",
         "Preloaded DB/DF/DT sets on one shaft under F_x, F_y, F_z, M_x, M_y.",
@@ -285,13 +313,17 @@ _CALCS = (
          _f("arrangement", "choice", "DB (back-to-back) | DF (face-to-face) | DT (tandem).",
             label="Arrangement", default="DB", choices=("DB", "DF", "DT"), group="set"),
          _f("spacing", "length", "Distance between bearing centres, e.g. '100 mm'; default: side by "
-            "side, one ring width B (needs the bearings' width).", label="Spacing", unit="mm", minimum=0, group="set"),
+            "side, one ring width B (needs the bearings' width); a tapered pair: the distance between its pressure "
+            "centres (the effective spread), needed.", label="Spacing", unit="mm", minimum=0, group="set"),
          _f("preload", "force", "Axial preload force at rest, e.g. '500 N'.", label="Preload",
             unit="N", minimum=0, group="set"),
          _f("preload_offset", "length", "Axial interference from first contact (zero preload) instead, "
             "e.g. '5 um'; negative is axial play.",
             label="Preload offset", unit="um", group="set"),
-         *LOADS, *_SOLVE, *_SET_MOUNTING)),
+         _f("induced_axial_factor", "choice", "Tapered pairs, ISO 281's method: the induced axial load f F_r / Y "
+            "with SKF's f = 0.5 (General Catalogue 6000, p. 208; the default) | NSK's f = 0.6 (CAT. No. E1102e "
+            "eq. (5.27)).", label="Induced axial load factor", default="SKF", choices=("SKF", "NSK"), group="set"),
+         *LOADS, *_SOLVE, *_SET_MOUNTING, SLICES)),
     Calculation(
         "friction", ("friction", "torque"), "Friction torque",
         "Friction torque: one-term, two-term (handbook), Palmgren, SKF.",
@@ -384,7 +416,7 @@ _CALCS = (
          _f("axial_load", "force", "Axial stand load, e.g. '2 kgf': the frequencies at the operating "
             "contact angle (the test-stand method).", label="Axial load F_a", unit="N", minimum=0,
             exclusive=True, group=_L, aliases=("-F",)),
-         _HERTZ, _ELASTIC, BEARING, *GEOMETRY,
+         _HERTZ, _ELASTIC, BEARING, *GEOMETRY, *ROLLER_SET,
          _f("harmonics", "int", "Harmonics 1..N in the spectral mask.", label="Harmonics",
             default=3, minimum=1, maximum=WEB_MAX_HARMONICS, group="mask"),
          _f("sidebands", "int", "Sideband orders ±1..S around BPFI and BSF.", label="Sidebands",
@@ -497,7 +529,7 @@ _CALCS = (
             choices=("grease", "oil-air", "oil-jet", "oil-bath"), group="film"),
          _f("skf_constants", "text", "With `temperature` auto: SKF constants R1,R2,R3,S1,S2,S3 "
             "(angular contact).", label="SKF constants", group="temperature auto"),
-         BEARING, *GEOMETRY),
+         BEARING, *GEOMETRY, *ROLLERS),
         combine="broadcast"),
     Calculation(
         "temperature", ("temperature",), "Operating temperature",

@@ -46,6 +46,15 @@ def _check_cage_ratio(cage_ratio):
                          f"(1 - gamma)/2 is about 0.4), got {cage_ratio!r}")
 
 
+def _ball_bearing(bearing):
+    """The bearing, refused in one line where it is a roller bearing (the runout model rolls balls)."""
+    from . import _rollers
+
+    if _rollers.is_roller(bearing):
+        raise _rollers.refuse(bearing, "runout")
+    return bearing
+
+
 def _geometry(geometry_file, bearing, catalog_file, first_ball_angle):
     """The geometry given by --geometry or --bearing (None when neither is given)."""
     from .. import catalog as _catalog
@@ -60,14 +69,14 @@ def _geometry(geometry_file, bearing, catalog_file, first_ball_angle):
     )
     g = None
     if bearing:
-        g = runout.geometry_from_bearing(_catalog.get(bearing, catalog=catalog_file))
+        g = runout.geometry_from_bearing(_ball_bearing(_catalog.get(bearing, catalog=catalog_file)))
     elif geometry_file:
         try:
             g = runout.files.load_geometry_file(geometry_file)
         except CatalogError as exc:
             if "no [geometry] table" not in str(exc):
                 raise
-            g = runout.geometry_from_bearing(_catalog.load_bearing_file(geometry_file))
+            g = runout.geometry_from_bearing(_ball_bearing(_catalog.load_bearing_file(geometry_file)))
     if g is not None and theta1 is not None:
         g = g._replace(first_ball_angle=theta1)
     return g, theta1

@@ -15,6 +15,7 @@ import math
 
 from ..errors import InputError
 from . import _reading as inp
+from . import _rollers
 from ._failures import failures
 from ._finite import finite
 
@@ -39,6 +40,7 @@ def document(parsed, *, bearing_file=None, catalog=None):
         ``warnings``.
     """
     with failures(parsed, options=False):  # messages in the command line's words (_failures)
+        _rollers.check_model(parsed, bearing_file=bearing_file, catalog=catalog)  # ball bearings only
         b = inp.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog)
         from ..bearing import check_model
 

@@ -24,6 +24,7 @@ from __future__ import annotations
 from .. import catalog as _catalog
 from .._io import json_value
 from ..errors import InputError
+from . import _rollers
 from ._failures import failures
 from ._finite import finite
 from ._inputs import (
@@ -188,6 +189,11 @@ def skf_options(b, lubrication, constants, oil_level=None):
         out["oil_level"] = h
     elif oil_level is not None:
         raise InputError("oil-level: --oil-level goes with --lubrication oil-bath")
+    if hasattr(b, "roller_diameter"):  # a roller bearing: SKF's constants of its series (issue 32)
+        if constants is not None:
+            raise InputError("skf-constants: R1,R2,R3,S1,S2,S3 are the constants of ball bearings; a roller bearing "
+                             "takes SKF's constants of its series")
+        return out
     if constants is not None:
         try:
             values = [float(x) for x in constants.split(",")]
@@ -307,7 +313,8 @@ def _document(parsed, bearing_file, catalog):
         return str(parsed.given[name]).strip() if name in parsed.given else default
 
     v = parsed.values
-    b = resolve_bearing(text("bearing"), bearing_file, catalog)
+    b = _rollers.bearing_of(parsed, bearing_file=bearing_file, catalog=catalog) or \
+        resolve_bearing(text("bearing"), bearing_file, catalog)
     speed = text("speed")
     if speed is None:
         raise InputError("speed: give the inner-ring speed, e.g. --speed '6000 rpm'")
@@ -324,6 +331,10 @@ def _document(parsed, bearing_file, catalog):
     r = thermal.thermal_balance(b, fr, fa, w, heat.pop("ambient"), nu40, nu100, **heat, **skf)
     notes = list(dict.fromkeys([*notes, *r.warnings]))
     extra = {}
+    if v.get("reference_speed") and _rollers.is_roller(b):
+        raise InputError("reference-speed: ISO 15312's thermal reference speed is computed for ball bearings here "
+                         f"(its reference load and oil bath of a ball set); {b.designation!r} is a {b.type} roller "
+                         "bearing")
     if v.get("reference_speed"):  # ISO 15312 (bearinglab.thermal.thermal_reference_speed); one per bearing
         ref = thermal.thermal_reference_speed(b, **{k: x for k, x in skf.items() if k == "constants"})
         extra = json_value({"thermal_reference_speed_rpm": float(ref.speed / RPM),
@@ -331,16 +342,22 @@ def _document(parsed, bearing_file, catalog):
         notes = list(dict.fromkeys([*notes, *ref.warnings]))
     from . import _preload
 
-    preloaded, note = _preload.report(b, source="the bearing's clearance", model="SKF friction model of the balance")
-    if note:  # issue 30: a bearing file with a zero or negative clearance
+    if not _rollers.is_roller(b):  # issue 30: a bearing file with a zero or negative clearance
+        preloaded, note = _preload.report(b, source="the bearing's clearance",
+                                          model="SKF friction model of the balance")
+    else:  # a roller bearing's clearance does not enter SKF's moment (issue 32)
+        preloaded, note = {}, None
+    if note:
         notes.insert(0, note)
-    notes += [n for n in dict.fromkeys(_catalog.provenance_notes(b)) if n not in notes]
+    provenance = _rollers.notes_of(b) if _rollers.is_roller(b) else _catalog.provenance_notes(b)
+    notes += [n for n in dict.fromkeys(provenance) if n not in notes]
     bath = {}
-    if "oil_level" in skf:  # the oil bath: its level and SKF's V_M at H/d_m (ball-bearing curve)
+    if "oil_level" in skf:  # the oil bath: its level and SKF's V_M at H/d_m (its curve: ball or roller bearings)
         from ..friction.drag import drag_loss_factor
 
         bath = {"oil_level_mm": skf["oil_level"] * 1e3,
-                "drag_loss_factor": float(drag_loss_factor(skf["oil_level"], b.mean_diameter, "ball"))}
+                "drag_loss_factor": float(drag_loss_factor(skf["oil_level"], b.mean_diameter,
+                                                           "roller" if _rollers.is_roller(b) else "ball"))}
     docs = [_doc(r, k, w.size) | extra | preloaded | {"inputs": inputs_echo(b, radial_load_N=fr, axial_load_N=fa,
                                                          speed_rpm=float(w[k]) / RPM,
                                                          lubrication=lubrication, **bath, **oil_inputs,

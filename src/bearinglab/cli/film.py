@@ -26,7 +26,8 @@ __all__ = ["COMMANDS"]
 
 
 def film(given, *, bearing_file: BearingFile = None, catalog: CatalogFile = None, json_out: JsonFlag = False):
-    """EHL film (Hamrock-Dowson) at every ball's contacts: h_c, h_min, film parameter Lambda and regime."""
+    """EHL film (Hamrock-Dowson) at every ball's contacts, or the line-contact film of every roller: h_c, h_min,
+    film parameter Lambda and regime."""
     from ..calculations import film as calculation
     from ..calculations import parse
 
@@ -49,12 +50,19 @@ def _f(x, spec):
 
 def _print(doc):
     rpm = doc["inputs"]["speed_rpm"]
-    table(f"Film of {doc['inputs']['bearing']} at {rpm:g} rpm",
-          ["ball", "Q_i [N]", "Q_o [N]", "h_min,i [µm]", "h_min,o [µm]", "Λ_i", "Λ_o"],
-          [[str(j), _f(r["load_inner_N"], ".1f"), _f(r["load_outer_N"], ".1f"), _f(r["film_min_inner_um"], ".4f"),
-            _f(r["film_min_outer_um"], ".4f"), _f(r["lambda_inner"], ".2f"), _f(r["lambda_outer"], ".2f")]
-           for j, r in enumerate(doc["balls"])],
-          caption=f"{doc['inputs']['lubricant']}; --json for h_c, angles and velocities")
+    if "rollers" in doc:  # a roller bearing (issue 32): one line contact per roller, both raceways
+        table(f"Film of {doc['inputs']['bearing']} at {rpm:g} rpm",
+              ["roller", "ψ [deg]", "Q [N]", "h_min,i [µm]", "h_min,o [µm]", "Λ"],
+              [[str(j), _f(r["azimuth_deg"], ".2f"), _f(r["load_N"], ".1f"), _f(r["film_min_inner_um"], ".4f"),
+                _f(r["film_min_outer_um"], ".4f"), _f(r["lambda"], ".2f")] for j, r in enumerate(doc["rollers"])],
+              caption=f"{doc['inputs']['lubricant']}; --json for h_c and the velocity")
+    else:
+        table(f"Film of {doc['inputs']['bearing']} at {rpm:g} rpm",
+              ["ball", "Q_i [N]", "Q_o [N]", "h_min,i [µm]", "h_min,o [µm]", "Λ_i", "Λ_o"],
+              [[str(j), _f(r["load_inner_N"], ".1f"), _f(r["load_outer_N"], ".1f"), _f(r["film_min_inner_um"], ".4f"),
+                _f(r["film_min_outer_um"], ".4f"), _f(r["lambda_inner"], ".2f"), _f(r["lambda_outer"], ".2f")]
+               for j, r in enumerate(doc["balls"])],
+              caption=f"{doc['inputs']['lubricant']}; --json for h_c, angles and velocities")
     table("Smallest film", ["quantity", "value"],
           [["h_min [µm]", _f(doc["film_min_um"], ".4f")], ["Λ_min", _f(doc["lambda_min"], ".3f")],
            ["regime", doc["regime"] or "—"]])

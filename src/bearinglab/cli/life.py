@@ -103,6 +103,8 @@ _LABELS = {
     "operating_clearance_max_um": "operating clearance, largest [um]",
     "unmounted_clearance_um": "unmounted clearance, min, max [um]",
     "mounting": "mounting",
+    "max_pressure_MPa": "max lamina pressure (slices) [MPa]",
+    "slices": "slices per roller",
 }
 
 

@@ -34,7 +34,8 @@ from ._options import command
 
 __all__ = ["COMMANDS"]
 
-PlotFile = FileOption("--plot", "Polar plot of the ball loads into this PNG/PDF/SVG file.")
+PlotFile = FileOption("--plot", "Polar plot of the ball loads (a roller bearing: the roller loads and the lamina "
+                                "pressures) into this PNG/PDF/SVG file.")
 
 
 def load_distribution(
@@ -87,9 +88,31 @@ def _sig(x, decimals=2):
 
 
 def _print_case(title, doc, *, balls=True, body="ring", origin="concentric", extra=()):
+    if "rollers" in doc:  # a roller bearing (issue 32)
+        _print_rollers(title, doc)
+        if doc.get("operating_clearance_um") is not None:
+            extra = [*extra, ["operating clearance (probable) [µm]", _f(doc["operating_clearance_um"], ".4f")]]
+        _print_ring(title, doc, body, origin, extra)
+        return
     if balls:
         _print_balls(title, doc)
     _print_ring(title, doc, body, origin, extra)
+
+
+def _print_rollers(title, doc):
+    """The table per roller of a roller bearing: azimuth, roller load, the highest lamina pressure and where
+    along the roller it is (from the roller's middle, towards +z)."""
+    positions = doc["slice_positions_mm"]
+
+    def peak(r):
+        p = [x if x is not None else -1.0 for x in r["slice_pressures_MPa"]]
+        top = max(range(len(p)), key=p.__getitem__)
+        return "—" if not r["load_N"] else _f(positions[top], ".2f")
+
+    table(f"{title}: roller loads ({doc['slices']} slices per roller)",
+          ["roller", "ψ [deg]", "Q [N]", "p_max [MPa]", "at s [mm]"],
+          [[str(j), _f(r["azimuth_deg"], ".2f"), _sig(r["load_N"]), _f(r["max_pressure_MPa"], ".0f"), peak(r)]
+           for j, r in enumerate(doc["rollers"])])
 
 
 def _print_balls(title, doc):
@@ -114,7 +137,13 @@ def _print_ring(title, doc, body="ring", origin="concentric", extra=()):
         for key, value in doc["reactions"].items():
             shown = 0.0 if abs(value) < 1e-6 else value  # below a micronewton: rounding of a symmetric case
             rows.append([f"reaction {names[key]} (held)", _sig(shown)])
-    rows.append(["max ball load [N]", _sig(doc["max_ball_load_N"])])
+    if "max_roller_load_N" in doc:  # a roller bearing
+        rows += [["max roller load [N]", _sig(doc["max_roller_load_N"])],
+                 ["max lamina pressure [MPa]", _f(doc["max_pressure_MPa"], ".0f")]]
+        if doc.get("rib_load_N"):
+            rows.append(["axial load on the ribs [N]", _sig(doc["rib_load_N"])])
+    else:
+        rows.append(["max ball load [N]", _sig(doc["max_ball_load_N"])])
     k = doc["stiffness_matrix"]
     if k is not None and k[0][0] is not None:
         rows += [["k_xx, k_yy, k_zz [N/µm]", ", ".join(_sig(k[i][i] * 1e-6) for i in range(3))],
@@ -146,6 +175,10 @@ def bearing_set(given, *, catalog: CatalogFile = None, plot: PlotFile = None, js
     if json_out:
         emit_json(doc)
         return
+    if "iso281" in doc:  # a pair of tapered roller bearings (issue 32)
+        _print_pair(doc)
+        _print_written(plot)
+        return
     members = doc["bearings"]
     for k, m in enumerate(members):
         _print_case(f"Bearing {k} ({m['bearing']}, orientation {m['orientation']:+d}, z = {m['position_mm']:g} mm)", m)
@@ -160,6 +193,37 @@ def bearing_set(given, *, catalog: CatalogFile = None, plot: PlotFile = None, js
                 balls=False, body="shaft", origin=origin, extra=[spacing_row])  # the balls: each bearing's table
     print_warnings(doc["warnings"])
     _print_written(plot)
+
+
+def _print_pair(doc):
+    """A pair of tapered roller bearings: each bearing's rollers, the shaft, and ISO 281's method."""
+    inputs = doc["inputs"]
+    kind = {"DB": "back to back", "DF": "face to face"}[inputs["arrangement"]]
+    for k, m in enumerate(doc["bearings"]):
+        if "rollers" in m:
+            title = (f"Bearing {'AB'[k]} ({m['bearing']}, pressure centre z = {m['pressure_centre_mm']:g} mm, "
+                     f"F_r = {m['radial_load_N']:.1f} N, F_a = {m['axial_load_N']:.1f} N)")
+            _print_rollers(title, m)
+    if doc["stiffness_matrix"] is not None:
+        play = doc["axial_play_um"]
+        extra = [["effective spread (pressure centres) [mm]", f"{doc['effective_spread_mm']:g}"],
+                 ["roller middles apart [mm]", _f(doc["roller_distance_mm"], ".4f")],
+                 ["end play (< 0: interference) [µm]", _f(play, ".4f")],
+                 ["operating preload [N]", _sig(doc["operating_preload_N"])]]
+        ring = {**doc, "max_roller_load_N": max(m["max_roller_load_N"] for m in doc["bearings"]),
+                "max_pressure_MPa": max(m["max_pressure_MPa"] for m in doc["bearings"])}
+        _print_ring(f"Pair {inputs['arrangement']} ({kind})", ring, "shaft", "the middle of the pressure centres",
+                    extra)
+    iso = doc["iso281"]
+    rows = []
+    for k, m in enumerate(iso["bearings"]):
+        rows.append([f"{'AB'[k]} {m['bearing']}", _sig(m["radial_load_N"]), _sig(m["induced_axial_load_N"]),
+                     _sig(m["axial_load_N"]), _sig(m["equivalent_dynamic_load_N"]), _f(m["basic_rating_life_Mrev"], ".6g"),
+                     _f(m["basic_rating_life_h"], ".6g")])
+    table(f"ISO 281's method (induced axial load {iso['induced_axial_factor']:g} F_r/Y)",
+          ["bearing", "F_r [N]", "f F_r/Y [N]", "F_a [N]", "P [N]", "L10 [10^6 rev]", "L10h [h]"], rows,
+          caption=iso["source"])
+    print_warnings(doc["warnings"])
 
 
 #: The commands of this module, as the application adds them.

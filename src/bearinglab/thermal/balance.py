@@ -83,8 +83,8 @@ def thermal_balance(bearing, radial_load, axial_load, shaft_speed, ambient, visc
 
     Parameters
     ----------
-    bearing : BallBearing
-        For the SKF model (bore, outside diameter, series or constants; seals) and, without
+    bearing : BallBearing or RollerBearing
+        For the SKF model (a roller bearing: :func:`bearinglab.friction.skf_roller_for_bearing`) (bore, outside diameter, series or constants; seals) and, without
         ``conductance``, its width for ISO 15312's reference surface.
     radial_load, axial_load : array_like
         F_r, F_a >= 0. [N]
@@ -138,8 +138,11 @@ def thermal_balance(bearing, radial_load, axial_load, shaft_speed, ambient, visc
     >>> print(f"{r.temperature - 273.15:.2f} degC, {r.friction_power:.3f} W = {r.heat_dissipated:.3f} W")
     39.54 degC, 19.538 W = 19.538 W
     """
-    from ..friction import skf_for_bearing
+    from ..friction import skf_for_bearing, skf_roller_for_bearing
     from ..ratings import lubrication as lub
+
+    # a roller bearing: SKF's model of its type and series (issue 32)
+    model = skf_roller_for_bearing if hasattr(bearing, "roller_diameter") else skf_for_bearing
 
     fr = check_nonnegative("radial_load", radial_load, "N")
     fa = check_nonnegative("axial_load", axial_load, "N")
@@ -171,8 +174,7 @@ def thermal_balance(bearing, radial_load, axial_load, shaft_speed, ambient, visc
     def moment(t, sel):
         with warnings.catch_warnings(record=True) as rec:
             warnings.simplefilter("always")
-            m = skf_for_bearing(bearing, fr[sel], fa[sel], w[sel], nu_of(t), lubrication=lubrication,
-                                **friction_options)
+            m = model(bearing, fr[sel], fa[sel], w[sel], nu_of(t), lubrication=lubrication, **friction_options)
         caught.extend(str(c.message) for c in rec)
         return m
 

@@ -41,6 +41,7 @@ from typing import NamedTuple
 
 from ..calculations import CALCULATIONS
 from ..calculations.registry import GEOMETRY, MOUNTING
+from . import _rollers
 from . import shaft as _shaft  # the shaft-system section: its editor, request and tables (issue 33)
 
 __all__ = [
@@ -69,6 +70,10 @@ __all__ = [
     "to_csv",
     "value_rows",
 ]
+
+
+#: the roller inputs of the form (issue 32): the roller set, profile and slices of a roller bearing
+_ROLLER_FIELDS = ("rollers", "roller_diameter", "roller_length", "profile", "crown_drop", "slices")
 
 
 def _pick(calc, name, **change):
@@ -126,6 +131,7 @@ FIELDS = {
         _pick("temperature", "skf_constants", group="heat"),
         _pick("runout", "errors", group="runout", required=False),
         _pick("runout", "angle", group="runout"),
+        *(_pick("load-distribution", name, group="rollers") for name in _ROLLER_FIELDS),
     )
 }
 _GROUPS = (("loads", "Loads and speed"), ("lubricant", "Lubricant, cleanliness, reliability"),
@@ -134,7 +140,8 @@ _GROUPS = (("loads", "Loads and speed"), ("lubricant", "Lubricant, cleanliness, 
            ("mounting", "Mounting: fits, ring temperatures, Monte Carlo of the tolerances"),
            ("film", "Lubricant film: roughness, oil density and pressure-viscosity coefficient"),
            ("heat", "Heat balance: ambient, dissipation, oil flow"),
-           ("runout", "Runout: paste an error set (TOML or JSON, as examples/runout/README.md)"))
+           ("runout", "Runout: paste an error set (TOML or JSON, as examples/runout/README.md)"),
+           ("rollers", "Roller bearings: roller set, profile, slices (override the catalog bearing's)"))
 _EXAMPLES = {"radial_load": "10 kN", "fx": "1 kN", "fy": "0 N", "axial_load": "5 kN",
              "mx": "0 N*mm", "my": "0 N*mm", "speed": "6000 rpm", "viscosity": "20 cSt",
              "oil": "VG68", "temperature": "70 degC", "contamination_factor": "0.5",
@@ -155,7 +162,8 @@ _EXAMPLES = {"radial_load": "10 kN", "fx": "1 kN", "fy": "0 N", "axial_load": "5
              "pressure_viscosity_coefficient": "23 1/GPa", "ambient": "20 degC",
              "thermal_resistance": "0.5 K/W", "oil_flow": "0.5 l/min",
              "oil_inlet_temperature": "40 degC", "max_temperature": "150 degC",
-             "skf_constants": "R1,R2,R3,S1,S2,S3"}
+             "skf_constants": "R1,R2,R3,S1,S2,S3", "rollers": "14", "roller_diameter": "11 mm",
+             "roller_length": "9.6 mm", "crown_drop": "5 um", "slices": "30"}
 
 
 class Section(NamedTuple):
@@ -298,6 +306,11 @@ def _left_out(section, values, lists=None):
         named = " and ".join(FIELDS[name].title for name in single)
         return (f"Left out: {section.title.lower()} takes one value of {named}, not a list or range; the "
                 f"sections with a table of cases take the list.")
+    roller = _rollers.roller_of(values)
+    if roller is not None:
+        reason = _rollers.left_out(section, values, roller)
+        if reason:
+            return reason
     any_load = any(has.get(k) for k in _LOADS)
     if section.key == "high-speed" and not (has.get("axial_load") and has.get("speed")):
         return "Left out: the high-speed model solves a thrust at speed; give an axial load and a speed."
@@ -380,7 +393,7 @@ def _query(section, values):
     if section.key in ("friction", "temperature") and "radial_load" not in out and (
             _given(values, "fx") or _given(values, "fy")):
         out["radial_load"] = _resultant(values)  # the friction models take F_r = |(F_x, F_y)|
-    return out
+    return _rollers.query(section, values, out)
 
 
 _DATA_SECTIONS = ("clearance", "film", "temperature")
@@ -512,6 +525,7 @@ async def render_context(values, server):
             errors.setdefault(name, detail)
             r["message"] = detail
     for r in results:
+        r["roller_tables"], r["skip_rows"] = _rollers.tables(r["document"], number)
         if r["document"] is not None:
             q = urllib.parse.urlencode(r["query"])
             path = r["section"].calculation
@@ -528,7 +542,7 @@ async def render_context(values, server):
         "folded": {g: (g == "geometry" and not values.get("bearing")) or any(
             _given(values, f.name) for f in FIELDS.values()
             if f.group == g and f.name not in ("seed", "distribution", "loads_at"))
-            for g in ("geometry", "mounting", "film", "heat")},
+            for g in ("geometry", "mounting", "film", "heat", "rollers")},
     }
 
 
@@ -585,7 +599,7 @@ def _is_number(value):
 
 #: Keys of a document that are not result rows: the echo of the bearing and the inputs, and the
 #: nested tables shown by :func:`chain_rows` and :func:`percentile_rows`.
-_NOT_ROWS = ("warnings", "geometry", "bearing", "inputs", "chain", "monte_carlo")
+_NOT_ROWS = ("warnings", "geometry", "bearing", "inputs", "chain", "monte_carlo", "slice_positions_mm")
 
 
 def _nested(document):
