@@ -44,8 +44,10 @@ _N_CHEB = 16  # Chebyshev nodes in cos(alpha) of the Hertz interpolants (analyti
 _BALL_TOL = 1e-14  # ball Newton: |step| / D
 _BALL_MAX_ITER = 40
 _EPS = np.finfo(float).eps
-#: Bearing types (see :data:`bearinglab.quasistatic.combined.BEARING_TYPES`).
-BEARING_TYPES = ("radial", "angular")
+#: Bearing types (see :data:`bearinglab.quasistatic.combined.BEARING_TYPES`): the single rows built here, and
+#: the other types, whose elements :mod:`bearinglab.quasistatic._types` builds on them.
+BEARING_TYPES = ("radial", "angular", "four-point", "double-row-angular", "double-row-radial", "self-aligning",
+                 "thrust")
 #: Where the Hertz constants are evaluated (see :data:`bearinglab.quasistatic.combined.STIFFNESS_AT`).
 STIFFNESS_AT = ("operating", "free")
 
@@ -160,6 +162,12 @@ class _Geometry(NamedTuple):
     stiffness_at: str
     series: np.ndarray | None = None  # (4, N) ln K and its derivative of both contacts (_series)
     clearance: float = math.nan  # e, the diametral operating clearance [m] (negative: a preload)
+    elements: object = None  # the other types' elements (bearinglab.quasistatic._types.Elements); None: one row
+
+    @property
+    def trust(self):
+        """The ring Newton's step bound: no groove centre moves by more than half of it in a step. [m]"""
+        return self.big_a if self.elements is None else self.elements.trust
 
     @property
     def interference(self):

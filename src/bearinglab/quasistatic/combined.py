@@ -56,15 +56,15 @@ from .. import geometry
 from .._validate import as_float, check_integer, check_nonnegative, check_positive
 from ..errors import ConvergenceError, InputError
 from ..units import RPM
-from . import _combined_balls, _combined_speed, _ring
+from . import _combined_balls, _combined_speed, _ring, _types
 from ._combined_balls import (  # the balls and the bearing data, split off (issue 20); private names
     _BALL_MAX_ITER,
     _BALL_TOL,
-    _geometry,
     _hertz_k,
     _rest_balls,
     _speed_balls,
 )
+from ._types import geometry as _geometry  # every type's data (a single row: _combined_balls._geometry)
 from ._combined_notes import notes as _notes
 from .light_load import LightLoad, light_load, light_load_warnings
 
@@ -224,15 +224,15 @@ def _evaluate(geo, u, w2, x=None, deriv=True):
     ``w2`` (n,) is omega^2; cases with w2 = 0 use the closed-form balls at rest, the others solve their
     balls at fixed rings starting from ``x`` ((xa, xr), each (n, Z)) or from :func:`_ball_start`.
     """
-    ga, gr = _ring.offsets(geo, u)
+    ga, gr = _types.offsets(geo, u)
     moving = w2 > 0
     if not moving.any():
-        balls = _rest_balls(geo, ga, gr)
+        balls = _types.rest_balls(geo, ga, gr)
         balls["ok"] = np.ones(ga.shape, dtype=bool)
     else:
         balls = _merge(geo, ga, gr, w2, moving, x)
-    force = _ring.reaction(geo, balls["pa"], balls["pr"])
-    stiff = _ring.assemble(geo, *balls["h"]) if deriv else None
+    force = _types.reaction(geo, balls["pa"], balls["pr"])
+    stiff = _types.assemble(geo, *balls["h"]) if deriv else None
     return force, stiff, balls
 
 
@@ -277,6 +277,8 @@ def _measure(geo, loads, force, balls, free=None):
     """
     diff = loads - force if free is None else (loads - force) * free
     res = np.linalg.norm(_scaled(geo, diff), axis=-1)
+    if "b_res" in balls:  # a four-point ball's own residual counts: a ball not in equilibrium is no answer
+        res = np.hypot(res, _ring.ballsum(balls["b_res"]))
     total = _ring.ballsum(np.hypot(balls["pa"], balls["pr"]))
     scale = np.maximum(np.linalg.norm(_scaled(geo, loads), axis=-1), total)
     noise = _NOISE * _ring.ballsum(balls["noise"])
@@ -291,6 +293,8 @@ def _start(geo, loads):
     starts at the smaller of its linear response at zero load (radial stiffness 0.75 Z K_n delta_0^0.5
     for Z >= 3) and the zero-clearance estimate, and at least at the latter less delta_0.
     """
+    if geo.elements is not None:
+        return _types.start(geo, loads)
     c0 = np.array([math.cos(geo.a0)])
     ki, ko = (_hertz_k(t, c0)[0][0] for t in geo.tables[:2])
     kn0 = (ki ** (-2.0 / 3.0) + ko ** (-2.0 / 3.0)) ** -1.5
@@ -345,7 +349,7 @@ def _newton(geo, loads, u0, tol, max_iter, keep=(), free=None):
         # axial |dz| + d_m/2 |tilt|, radial |(dx, dy)|)
         move = np.maximum(np.abs(du[:, 2]) + geo.dm / 2.0 * np.hypot(du[:, 3], du[:, 4]), np.hypot(du[:, 0], du[:, 1]))
         with np.errstate(divide="ignore"):
-            t = np.minimum(1.0, 0.5 * geo.big_a / move)
+            t = np.minimum(1.0, 0.5 * geo.trust / move)
         full = t == 1.0
         pending = np.arange(act.size)
         for _ls in range(_LINE_SEARCH):
@@ -385,7 +389,8 @@ def _rest_newton(geo, loads, tol, max_iter, held=None):
         if held is not None:
             free = np.isnan(held).astype(float)
             u0 = np.where(free > 0, u0, held)
-        u, ok, it, last = _newton(geo, loads, u0, tol, max_iter, keep=("qi", "ai"), free=free)
+        keep = ("qi", "ai") if geo.kind != "four-point" else ("qi", "ai", "qo", "ao")  # four contacts a ball
+        u, ok, it, last = _newton(geo, loads, u0, tol, max_iter, keep=keep, free=free)
         return u, ok, it, last
     parts = [_rest_newton(geo, loads[lo:lo + _CHUNK], tol, max_iter, None if held is None else held[lo:lo + _CHUNK])
              for lo in range(0, n, _CHUNK)]
@@ -401,7 +406,7 @@ def _solve(geo, loads, w2, tol, max_iter, *, final=False, held=None, compiled=Fa
     cases whose outputs the last evaluation holds (all converged ones), so they need no evaluation of
     their own.
     """
-    if compiled:
+    if compiled and geo.elements is None:  # the kernel solves a single row; the other types are numpy's
         u, ok, it, last = _solve_compiled(geo, loads, w2, tol, max_iter, held)
         return (u, ok, it, (ok.copy(), last)) if final else (u, ok, it)
     u, ok, it, last = _rest_newton(geo, loads, tol, max_iter, held)
@@ -430,7 +435,7 @@ def _solve(geo, loads, w2, tol, max_iter, *, final=False, held=None, compiled=Fa
 def _reactions(geo, u, w2, compiled):
     """Ring load (n, 5), stiffness (n, 5, 5) and every ball converged (n,) at the displacements u (n, 5):
     the kernel's evaluation (:func:`._combined_kernel.reactions`) or :func:`_evaluate`'s."""
-    if compiled:
+    if compiled and geo.elements is None:
         from . import _combined_kernel
 
         par, ser = _kernel_parameters(geo, TOL, MAX_ITER)
@@ -487,11 +492,16 @@ class LoadDistribution(NamedTuple):
     #: (..., 5) load needed to hold each prescribed freedom at its displacement [N, N m]; NaN on a freedom
     #: under a given load (all NaN without ``prescribed_displacement``)
     reactions: np.ndarray = None
+    #: (Z',) the row of each ball-axis entry of the other types (:mod:`._types`: a double-row bearing's row, a
+    #: four-point bearing's diagonal; the ball fields then hold Z' = 2 Z entries, row after row); None for a
+    #: single row
+    row: np.ndarray = None
 
 
 def _pressure(geo, q, alpha, race):
     """p_max = 3 Q / (2 pi a b) with a b = (a* b*) (3 Q / (E' Sigma rho))^(2/3)."""
-    angle = np.full_like(alpha, geo.a0) if geo.stiffness_at == "free" else alpha
+    sphere = race == "outer" and geo.kind == "self-aligning"  # curvature 1/R_o at any angle (_types._tables)
+    angle = np.full_like(alpha, geo.a0) if geo.stiffness_at == "free" or sphere else alpha
     conf = geo.fi if race == "inner" else geo.fo
     curv = geometry.raceway_curvature(geo.d, geo.dm, conf, angle, race=race)
     coef = geo.tables[2 if race == "inner" else 3]
@@ -582,7 +592,7 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
                       free_angle, reduced_modulus, density, *, first_ball_angle=0.0, stiffness_at="operating",
                       raceway_control="outer", bearing_type="radial", on_failure="raise",
                       tol=TOL, max_iter=MAX_ITER, prescribed_displacement=None, radial_clearance=None,
-                      engine="auto"):
+                      engine="auto", row_distance=None):
     r"""Load distribution, displacement and stiffness of a ball bearing under combined load, at rest or at speed.
 
     Parameters
@@ -706,7 +716,10 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     max_iter = int(check_integer("max_iter", max_iter, 1))
     geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
                     reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, bearing_type,
-                    clearance=radial_clearance)
+                    clearance=radial_clearance, row_distance=row_distance)
+    if geo.elements is not None:  # what the type cannot carry, and the freedoms it does not resist (held)
+        _types.check_loads(geo, f, w, held)
+        held = _types.held(geo, f, held)
     if held is not None:
         _check_held(geo, held)
     over, bound = _beyond_bound(geo, f)
@@ -745,8 +758,8 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     shaped = {k: v.reshape(shape + v.shape[1:])[()] for k, v in out.items()}
     return LoadDistribution(loads=f.reshape(shape + (5,)), shaft_speed=w.reshape(shape)[()],
                             azimuth=geo.psi, converged=ok.reshape(shape)[()], iterations=it.reshape(shape)[()],
-                            warnings=notes, **{k: shaped[k] for k in shaped if k in LoadDistribution._fields
-                                               and (k != "azimuth" or z)})
+                            warnings=notes, row=None if geo.elements is None else geo.elements.row,
+                            **{k: shaped[k] for k in shaped if k in LoadDistribution._fields and (k != "azimuth" or z)})
 
 
 #: The solver's bound (issue 29): no ball is compressed by more than this many ball diameters.
@@ -902,7 +915,11 @@ def combined_analysis(bearing, loads, shaft_speed=0.0, *, reduced_modulus=None, 
 
     check_model(bearing, "load-distribution")
     options.setdefault("bearing_type", bearing.type)
-    options.setdefault("radial_clearance", _preload_clearance(bearing))
+    if bearing.type in _types.MODELLED:  # their clearance and row distance (missing fields named)
+        for key, value in _types.bearing_options(bearing).items():
+            options.setdefault(key, value)
+    else:
+        options.setdefault("radial_clearance", _preload_clearance(bearing))
     return load_distribution(loads, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
 
 
