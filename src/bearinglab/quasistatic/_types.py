@@ -443,7 +443,7 @@ def _four_point_newton(geo, xa, xr, ia, ir, oa, orr):
         if act.size == 0:
             break
         sub_i = ([v[act] for v in iaf], [v[act] for v in irf])
-        b0, b1, bx, inner, outer = _four_point_state(geo, xa[act], xr[act], *sub_i, oa, orr)
+        b0, b1, bx = _four_point_state(geo, xa[act], xr[act], *sub_i, oa, orr)[:3]
         norm = np.hypot(b0, b1)
         det = bx[0] * bx[3] - bx[1] * bx[2]
         s0 = -(bx[3] * b0 - bx[1] * b1) / det

@@ -64,8 +64,8 @@ from ._combined_balls import (  # the balls and the bearing data, split off (iss
     _rest_balls,
     _speed_balls,
 )
-from ._types import geometry as _geometry  # every type's data (a single row: _combined_balls._geometry)
 from ._combined_notes import notes as _notes
+from ._types import geometry as _geometry
 from .light_load import LightLoad, light_load, light_load_warnings
 
 __all__ = [
