@@ -53,7 +53,7 @@ import numpy as np
 
 from .. import _solve as _solve_mod
 from .. import geometry
-from .._validate import as_float, check_integer, check_nonnegative, check_positive
+from .._validate import as_float, check_integer, check_positive
 from ..errors import ConvergenceError, InputError
 from ..units import RPM
 from . import _combined_balls, _combined_speed, _ring, _types
@@ -63,6 +63,15 @@ from ._combined_balls import (  # the balls and the bearing data, split off (iss
     _hertz_k,
     _rest_balls,
     _speed_balls,
+)
+from ._combined_inputs import (  # split off (no module over 1000 lines); private names
+    _MAX_DEFLECTION,  # noqa: F401
+    _beyond_bound,
+    _bound_reason,
+    _check_held,
+    _flat_inputs,
+    _held,
+    _load_bound,  # noqa: F401  (sets, tests)
 )
 from ._combined_notes import notes as _notes
 from ._types import geometry as _geometry
@@ -573,20 +582,6 @@ def _outputs(geo, loads, w, u, ok, it, final=None, held=None):
     return out
 
 
-def _flat_inputs(loads, shaft_speed):
-    f = as_float("loads", loads)
-    if f.shape[-1:] != (5,):
-        raise InputError(f"loads must have a last axis of length 5 (F_x, F_y, F_z, M_x, M_y), got shape {f.shape}")
-    if not np.all(np.isfinite(f)):
-        raise InputError("loads must be finite [N, N m]")
-    w = check_nonnegative("shaft_speed", shaft_speed, "rad/s")
-    if not np.all(np.isfinite(w)):
-        raise InputError("shaft_speed must be finite [rad/s]")
-    shape = np.broadcast_shapes(f.shape[:-1], w.shape)
-    return (np.ascontiguousarray(np.broadcast_to(f, shape + (5,)).reshape(-1, 5)),
-            np.broadcast_to(w, shape).ravel().astype(float), shape)
-
-
 # --------------------------------------------------------------------------- public solvers
 def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
                       free_angle, reduced_modulus, density, *, first_ball_angle=0.0, stiffness_at="operating",
@@ -760,76 +755,6 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
                             azimuth=geo.psi, converged=ok.reshape(shape)[()], iterations=it.reshape(shape)[()],
                             warnings=notes, row=None if geo.elements is None else geo.elements.row,
                             **{k: shaped[k] for k in shaped if k in LoadDistribution._fields and (k != "azimuth" or z)})
-
-
-#: The solver's bound (issue 29): no ball is compressed by more than this many ball diameters.
-_MAX_DEFLECTION = 1.0
-
-
-def _load_bound(geo):
-    """The largest force (and moment over d_m/2) the balls can carry with no contact compressed by more
-    than a ball diameter: Z max_alpha max(K_i, K_o) D^1.5 [N]. Beyond it the rings would pass through the
-    balls (as a prescribed displacement beyond a ball diameter, :func:`_check_held`): a unit mistake or an
-    absurd load, never an answer."""
-    c = np.linspace(0.0, 1.0, 65)  # cos(alpha): every contact angle
-    k = max(np.max(np.exp(_combined_balls._log_k(geo, c, race)[0])) for race in (0, 1))
-    return geo.z * k * (_MAX_DEFLECTION * geo.d) ** 1.5
-
-
-def _beyond_bound(geo, loads):
-    """Cases whose force or moment (over d_m/2) exceeds :func:`_load_bound`, and the bound [N]."""
-    bound = _load_bound(geo)
-    force = np.linalg.norm(loads[:, :3], axis=-1)
-    moment = np.linalg.norm(loads[:, 3:], axis=-1) / (geo.dm / 2.0)
-    return (force > bound) | (moment > bound), bound
-
-
-def _bound_reason(bound):
-    return (f"loads beyond what the bearing can carry: a force above {bound:.4g} N (or a moment above that "
-            "times d_m/2) would compress a ball by more than its diameter, the solver's bound (a unit mistake?)")
-
-
-def _held(f, w, shape, prescribed):
-    """Loads, speeds and prescribed displacements broadcast to one flat batch (held None if none)."""
-    if prescribed is None:
-        return f, w, None, shape
-    p = np.asarray(as_float("prescribed_displacement", prescribed), dtype=float)
-    if p.shape[-1:] != (5,):
-        raise InputError("prescribed_displacement must have a last axis of length 5 (delta_x, delta_y, delta_z, "
-                         f"theta_x, theta_y; NaN for a freedom under load), got shape {p.shape}")
-    if np.any(np.isinf(p)):
-        raise InputError("prescribed_displacement must be finite or NaN (a freedom under load) [m, rad]")
-    full = np.broadcast_shapes(shape, p.shape[:-1])
-    f = np.broadcast_to(f.reshape(shape + (5,)), full + (5,)).reshape(-1, 5)
-    w = np.broadcast_to(w.reshape(shape), full).ravel()
-    held = np.ascontiguousarray(np.broadcast_to(p, full + (5,)).reshape(-1, 5))
-    both = ~np.isnan(held) & (f != 0)
-    if both.any():
-        k, j = np.argwhere(both)[0]
-        name = ("F_x", "F_y", "F_z", "M_x", "M_y")[j]
-        raise InputError(f"loads: {name} = {f[k, j]:g} [N, N m] is given on a freedom whose displacement is "
-                         "prescribed; give each freedom either a load or a displacement (its reaction is "
-                         "computed)")
-    if np.all(np.isnan(held)):
-        return np.ascontiguousarray(f), np.ascontiguousarray(w), None, full
-    return np.ascontiguousarray(f), np.ascontiguousarray(w), held, full
-
-
-def _check_held(geo, held):
-    """A prescribed displacement may move a groove-curvature centre by at most one ball diameter (tilts
-    at the pitch radius d_m/2): beyond that the rings would pass through the balls, which no load can
-    do; such an input is a unit mistake (InputError naming the freedom and the limit)."""
-    names = ("delta_x", "delta_y", "delta_z", "theta_x", "theta_y")
-    arm = np.array([1.0, 1.0, 1.0, geo.dm / 2.0, geo.dm / 2.0])
-    with np.errstate(invalid="ignore"):
-        bad = np.abs(held) * arm > geo.d
-    if bad.any():
-        k, j = np.argwhere(bad)[0]
-        unit, scale = ("mm", 1e3) if j < 3 else ("mrad", 1e3)
-        raise InputError(f"prescribed_displacement: {names[j]} = {held[k, j] * scale:.6g} {unit} moves the rings by "
-                         f"more than one ball diameter (D = {geo.d * 1e3:.6g} mm"
-                         + (f"; a tilt at most {geo.d / arm[j] * 1e3:.6g} mrad at the pitch radius)" if j >= 3
-                            else ")"))
 
 
 def _failures(geo, loads, w, u, ok, free=None):
