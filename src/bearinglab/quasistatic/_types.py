@@ -408,7 +408,9 @@ def _four_point_balls(geo, ga, gr):
             "ao": both(lambda k: np.arctan2(outer[k]["na"], outer[k]["nr"])),
             "mg": np.zeros_like(qi), "fc": np.zeros_like(qi),
             "noise": both(lambda k: inner[k]["noise"] + outer[k]["noise"]),
-            "b_res": np.concatenate([np.hypot(b0, b1), np.zeros_like(b0)], axis=1)}
+            "b_res": np.concatenate([np.hypot(b0, b1), np.zeros_like(b0)], axis=1),
+            "ok": np.tile(np.hypot(b0, b1) <= np.maximum(1e-9 * np.maximum(np.max(qi, axis=1, keepdims=True), 0.0),
+                                                          1e3 * (inner[0]["noise"] + inner[1]["noise"])), (1, 2))}
 
 
 def _four_point_start(geo, ga, gr, oa, orr):
@@ -599,9 +601,9 @@ def bearing_options(bearing):
                              "entry, file or --radial-clearance; 0 for none, negative for a preload): the model of a "
                              f"{kind} bearing needs it apart from its nominal angle")
         out["radial_clearance"] = float(bearing.radial_clearance)
-    elif kind == "double-row-radial":
+    elif kind == "double-row-radial":  # a deep-groove row: its free angle says it all, but for a preload
         e = bearing.radial_clearance
-        out["radial_clearance"] = float(e) if e is not None else None
+        out["radial_clearance"] = float(e) if e is not None and e <= 0 else None
     elif kind == "thrust":
         bearing.require("contact_angle")
     if kind in ("double-row-angular", "double-row-radial"):

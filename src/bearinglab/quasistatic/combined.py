@@ -237,7 +237,7 @@ def _evaluate(geo, u, w2, x=None, deriv=True):
     moving = w2 > 0
     if not moving.any():
         balls = _types.rest_balls(geo, ga, gr)
-        balls["ok"] = np.ones(ga.shape, dtype=bool)
+        balls.setdefault("ok", np.ones(ga.shape, dtype=bool))
     else:
         balls = _merge(geo, ga, gr, w2, moving, x)
     force = _types.reaction(geo, balls["pa"], balls["pr"])
@@ -443,7 +443,10 @@ def _solve(geo, loads, w2, tol, max_iter, *, final=False, held=None, compiled=Fa
 
 def _reactions(geo, u, w2, compiled):
     """Ring load (n, 5), stiffness (n, 5, 5) and every ball converged (n,) at the displacements u (n, 5):
-    the kernel's evaluation (:func:`._combined_kernel.reactions`) or :func:`_evaluate`'s."""
+    the kernel's evaluation (:func:`._combined_kernel.reactions`) or :func:`_evaluate`'s. The types without
+    the speed terms (four-point, thrust: :data:`._types.AT_SPEED`) are evaluated at rest at any speed."""
+    if geo.elements is not None and geo.kind not in _types.AT_SPEED:
+        w2 = np.zeros_like(w2)
     if compiled and geo.elements is None:
         from . import _combined_kernel
 
@@ -846,6 +849,22 @@ def combined_analysis(bearing, loads, shaft_speed=0.0, *, reduced_modulus=None, 
     else:
         options.setdefault("radial_clearance", _preload_clearance(bearing))
     return load_distribution(loads, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
+
+
+def _bearing_geometry(bearing, first_ball_angle=0.0, stiffness_at="operating", raceway_control="outer", *,
+                      reduced_modulus=None, tables=True):
+    """The checked geometry of a :class:`~bearinglab.bearing.BallBearing` of any type, as
+    :func:`combined_analysis` solves it (its operating clearance included)."""
+    z, d, dm, fi, fo, a0, ep, rho = _bearing_args(bearing, reduced_modulus)
+    if bearing.type in _types.MODELLED:
+        opts = _types.bearing_options(bearing)
+        e = opts.get("radial_clearance")
+        return _geometry(z, d, dm, fi, fo, None if bearing.type == "double-row-radial" and e is not None else a0, ep,
+                         rho, first_ball_angle, stiffness_at, raceway_control, bearing.type, tables=tables, clearance=e,
+                         row_distance=opts.get("row_distance"))
+    e = _preload_clearance(bearing)
+    return _geometry(z, d, dm, fi, fo, None if e is not None else a0, ep, rho, first_ball_angle, stiffness_at,
+                     raceway_control, bearing.type, tables=tables, clearance=e)
 
 
 def _preload_clearance(bearing):
