@@ -521,8 +521,9 @@ class BallBearing:
                 changes["radial_clearance"] = None
             if "radial_clearance" in changes and "contact_angle" not in changes:
                 changes["contact_angle"] = None
-        elif self.type == "self-aligning" and not {"outer_conformity", "contact_angle"} & set(changes) and \
-                {"ball_diameter", "pitch_diameter"} & set(changes) and self.sources.get("outer_conformity") == _SPHERE_SOURCE:
+        elif self.type == "self-aligning" and "outer_conformity" not in changes and \
+                {"ball_diameter", "pitch_diameter", "contact_angle"} & set(changes) and \
+                self.sources.get("outer_conformity") == _SPHERE_SOURCE:
             changes["outer_conformity"] = None  # the sphere follows the new ball set
         return dataclasses.replace(self, **changes)
 
@@ -594,7 +595,18 @@ class BallBearing:
         return float(geometry.free_contact_angle_052(*self.require("radial_clearance", "ball_diameter")))
 
     def axial_play(self):
-        """Total axial play 2 B D sin(alpha0). [m]"""
+        """Total axial play 2 B D sin(alpha0) (a double-row deep-groove bearing's too). Of the types whose angle
+        is built into the rings (:data:`ANGLE_BUILT_IN`), 2 (sqrt(A^2 - g_r^2) - A sin alpha0) with
+        g_r = A cos alpha0 - e/2 from their clearance e (0 when it is zero or negative: the balls touch
+        concentric); a thrust ball bearing has none (InputError). [m]"""
+        if self.type == "thrust":
+            raise InputError("axial_play: a single-direction thrust ball bearing has no axial play (its washers are "
+                             "apart until they are loaded)")
+        if self.type in ANGLE_BUILT_IN:
+            a, e = self.require("contact_angle", "radial_clearance")
+            big_a = self.groove_distance
+            g_r = big_a * math.cos(a) - 0.5 * e
+            return 2.0 * max(math.sqrt(max(big_a * big_a - g_r * g_r, 0.0)) - big_a * math.sin(a), 0.0)
         return float(geometry.axial_play(self.require("contact_angle"), *self.require("ball_diameter", "inner_conformity", "outer_conformity")))
 
     def curvature(self, race, contact_angle=None):

@@ -867,6 +867,16 @@ def _bearing_geometry(bearing, first_ball_angle=0.0, stiffness_at="operating", r
                      raceway_control, bearing.type, tables=tables, clearance=e)
 
 
+def _takeup(bearing):
+    """Half the axial play of a BallBearing of any type, the part of delta_z a thrust F_z > 0 spends before
+    a ball carries: A sin(alpha0) (:func:`axial_play_takeup`) of a single row, the first contact of the
+    other types' elements (:func:`._types.first_contact`; 0 for a thrust bearing). [m]"""
+    if bearing.type in _types.MODELLED:
+        return _types.first_contact(_bearing_geometry(bearing, tables=False))
+    _, d, _, fi, fo, a0, _, _ = _bearing_args(bearing)
+    return float(axial_play_takeup(d, fi, fo, a0))
+
+
 def _preload_clearance(bearing):
     """The bearing's diametral clearance where it is zero or negative (a preload), else None (its free
     contact angle says it all)."""
