@@ -3,7 +3,7 @@ r"""The shaft system one case at a time in plain Python: the fair per-case basel
 Not part of the library. The same algorithm as :func:`bearinglab.shaft.statics._newton`, for one case,
 as an engineer would write it without numpy: the condensed shaft (K_c, computed once, as the batched
 path does, outside the timing), each bearing's reaction and 5 x 5 tangent stiffness at rest ball by ball
-(the plain-Python ball loop of bench/_kernels_combined.py, the same Hertz interpolants), the tangent of
+(the 5-DOF kernel's own per-case reaction run by CPython, as bench/combined.py's baseline), the tangent of
 the condensed system, a Gaussian elimination, Levenberg-Marquardt damping, the trust region of half the
 groove-centre distance per step, the line search of 8 cuts by 4, the same convergence test (relative
 residual and the rounding floor of K_c u_B), then the shaft's other nodes and the supports' loads.
@@ -13,22 +13,25 @@ from __future__ import annotations
 
 import math
 
-import _kernels_combined
 import numpy as np
 
-from bearinglab.quasistatic import combined
+from bearinglab.quasistatic import _combined_kernel, combined
 
 __all__ = ["case_solver"]
 
 
 def _ball_evaluate():
-    """The plain-Python ``evaluate`` of bench/_kernels_combined.py (ring reaction, tangent, ball-load sum at
-    rest), taken from the fair scalar baseline of the 5-DOF model so that both baselines are one code."""
-    for cell in _kernels_combined._PY_REST.__closure__:
-        fn = cell.cell_contents
-        if getattr(fn, "__name__", "") == "evaluate":
-            return fn
-    raise RuntimeError("bench/_kernels_combined.py has no plain-Python evaluate")
+    """The plain-Python ring reaction and tangent stiffness of the 5-DOF model's kernel
+    (``quasistatic._combined_kernel.react_case`` run by CPython), taken from the fair scalar baseline of the
+    5-DOF model (bench/combined.py) so that both baselines are one code."""
+    _solve, react, _work = _combined_kernel.plain()
+
+    def evaluate(u, w2, par, cs, sn, ser):
+        force, k, o = [0.0] * 5, [0.0] * 25, [0.0] * 30
+        react(u, w2, par, cs, sn, ser, force, k, o)
+        return force, k, None
+
+    return evaluate
 
 
 def _gauss(a, b):
@@ -76,9 +79,9 @@ def case_solver(asm):
     bearings = []
     for j, r in enumerate(rows):
         geo = combined._geometry(*combined._bearing_args(r.bearing), 0.0, "operating", "outer", r.bearing.type)
-        ci, dci, co, dco = ([float(x) for x in t] for t in _kernels_combined._tables(geo))
-        bearings.append({"args": (list(np.cos(geo.psi)), list(np.sin(geo.psi)), geo.dm / 2.0, geo.big_a, geo.gr0,
-                                  ci, dci, co, dco),
+        par, ser = combined._kernel_parameters(geo, combined.TOL, combined.MAX_ITER)
+        bearings.append({"args": (0.0, par.tolist(), [float(x) for x in geo.cos_psi], [float(x) for x in geo.sin_psi],
+                                  ser.tolist()),
                          "t": r.transform.tolist(), "o": r.offset, "slot": int(asm.slot[j]),
                          "h": asm.housing_index[j].tolist(), "trust": float(asm.trust[j])})
     ell = asm.length_scale

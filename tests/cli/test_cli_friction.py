@@ -559,3 +559,19 @@ def test_skf_sealed_bearing_without_seal_data_says_m_seal_is_left_out(capsys):
     assert code == 0, err
     # one case is a narrow quantity/value table: its caption wraps at the table's width
     assert "rolling, sliding, seal and drag moments" in " ".join(out.split()) and "warning:" not in out
+
+
+def test_oil_bath_takes_v_m_from_skfs_diagram_and_the_option_overrides_it(capsys):
+    # issue 30: --oil-level alone; V_M of SKF's diagram at H/d_m is used and reported; --drag-loss-factor overrides
+    from bearinglab.friction.drag import drag_loss_factor
+
+    base = ["friction", "torque", "--model", "skf", "-b", "6205", "-R", "1 kN", "-n", "3000 rpm",
+            "--viscosity", "20 cSt", "--lubrication", "oil-bath", "--oil-level", "5 mm", "--json"]
+    assert main(base) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["drag_loss_factor"] == pytest.approx(float(drag_loss_factor(5e-3, 38.5e-3, "ball")), rel=1e-12)
+    assert doc["drag_loss_factor_source"].startswith("SKF's diagram")
+    assert main([*base, "--drag-loss-factor", "0.0002"]) == 0
+    given = json.loads(capsys.readouterr().out)
+    assert given["drag_loss_factor"] == 0.0002 and given["drag_loss_factor_source"] == "given"
+    assert given["drag_moment_Nmm"] != doc["drag_moment_Nmm"]

@@ -15,7 +15,9 @@ from bearinglab.units import RPM
 
 KEYS = ["dynamic_load_rating_N", "static_load_rating_N", "fatigue_load_limit_N", "rating_source",
         "equivalent_dynamic_load_N", "basic_rating_life_Mrev", "basic_rating_life_h", "reliability_factor",
-        "viscosity_mm2_s", "rated_viscosity_mm2_s", "rated_viscosity_diameter_mm", "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev", "modified_rating_life_h",
+        "viscosity_mm2_s", "rated_viscosity_mm2_s", "rated_viscosity_diameter_mm", "viscosity_ratio",
+        "contamination_factor",  # issue 30: the e_C used, whenever a_ISO is computed
+        "life_modification_factor", "modified_rating_life_Mrev", "modified_rating_life_h",
         "reference_rating_life_Mrev", "modified_reference_rating_life_Mrev", "static_safety_factor", "inputs", "warnings"]
 
 #: the MASTA deep-groove bearing of tests/data/masta_iso16281.csv (E = 210 GPa, nu = 0.3, C = 23.4 kN)
@@ -193,10 +195,17 @@ def test_duty_cycle_time_share_is_checked(capsys, tmp_path, time):
     assert code == 2 and "duty-cycle step 1 time must be a share in [0, 1]" in _one_line_error(err)
 
 
-def test_speed_list_is_refused_not_cut_to_its_first_value(capsys):
-    code, _, err = run(capsys, "life", "-b", "B218", "--fz", "2 kN", "--speed", "3000, 6000 rpm",
-                       "--viscosity", "20 cSt")
-    assert code == 2 and "give one speed, got 2 values" in _one_line_error(err)
+def test_speed_list_gives_one_document_per_speed_never_its_first_value(capsys):
+    # issue 30: life takes a speed list like film (before: refused); each document is that speed's alone
+    code, out, err = run(capsys, "life", "-b", "B218", "--fz", "2 kN", "--speed", "3000, 6000 rpm",
+                         "--viscosity", "20 cSt", "--json")
+    assert code == 0, err
+    docs = json.loads(out)
+    assert [d["inputs"]["speed_rpm"] for d in docs] == [3000.0, 6000.0]
+    for d, rpm in zip(docs, (3000, 6000)):
+        code, out, err = run(capsys, "life", "-b", "B218", "--fz", "2 kN", "--speed", f"{rpm} rpm",
+                             "--viscosity", "20 cSt", "--json")
+        assert json.loads(out) == d
 
 
 def test_negative_thrust_on_one_angular_bearing_gives_every_life_with_a_warning(capsys):
@@ -340,7 +349,8 @@ def test_the_test_stand_bearing_gets_a_life_under_a_radial_load(capsys):
 
 
 # ----------------------------------------------------------------------------- issue 20: no lubricant, oil by grade
-LUBRICATED = ("viscosity_mm2_s", "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev",
+LUBRICATED = ("viscosity_mm2_s", "viscosity_ratio", "contamination_factor", "life_modification_factor",
+              "modified_rating_life_Mrev",
               "modified_rating_life_h", "modified_reference_rating_life_Mrev")
 
 

@@ -57,7 +57,7 @@ CASES = [
     (TEMPERATURE + ["--oil", "VG32", "--oil-flow", "1 l/min", "--oil-inlet-temperature", "3000 degC"],
      "oil-inlet-temperature must be <= 400"),
     (TEMPERATURE + ["--oil", "VG32", "--thermal-resistance", "-1 K/W"], "thermal-resistance must be in"),
-    (TEMPERATURE + ["--oil", "VG32", "--lubrication", "oil-bath"], "oil-bath is not covered by `temperature`"),
+    (TEMPERATURE + ["--oil", "VG32", "--lubrication", "oil-bath"], "oil-level: --lubrication oil-bath needs the oil level"),
     # friction torque: viscosity, oil grade and temperature, the oil bath's level
     (TORQUE + ["--viscosity", "-2 cSt"], "viscosity must be > 0"),
     (TORQUE + ["--viscosity", "1e9 cSt"], "viscosity must be in [0.1, 1e+07] [cSt]"),

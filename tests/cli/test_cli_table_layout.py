@@ -73,3 +73,16 @@ def test_tables_print_no_negative_zero(monkeypatch):
     out = buf.getvalue()
     assert "z = 0 mm" in out and "0.0000, 3.5" in out and "at 0 rpm" in out
     assert not re.search(r"-0(?:\.0*)?(?:\s|,|$)", out), out
+
+
+def test_no_python_list_or_dict_in_a_table(capsys):
+    # issue 30: the mounted clearance's range and the mounting echo printed as words, never as Python repr
+    from bearinglab.cli import _common, main
+
+    assert _common.cell_text([6.0, 20.000000000000004]) == "6, 20"
+    assert _common.cell_text({"shaft_fit": "j5", "tolerance_class": "Normal"}) == "shaft fit: j5; tolerance class: Normal"
+    assert main(["life", "-b", "6208", "-R", "2 kN", "-n", "3000 rpm", "--viscosity", "20 cSt",
+                 "--shaft-fit", "j5", "--housing-fit", "H7"]) == 0
+    out = capsys.readouterr().out
+    assert "unmounted clearance" in out and "shaft fit: j5" in out
+    assert not any(c in out for c in ("['", "{'", "[6.0", "']"))

@@ -72,7 +72,10 @@ def test_table_fits_80_columns(monkeypatch):
     (["--oil-flow", "1 l/min", "--density", "-870 kg/m^3"], "density must be in"),
     (["--oil-flow", "1 l/min", "--oil-heat-capacity", "-1 J/(kg*K)"], "oil-heat-capacity must be in"),
     (["--oil-inlet-temperature", "40 degC"], "oil-flow: --oil-inlet-temperature"),
-    (["--lubrication", "oil-bath"], "lubrication: oil-bath is not covered"),
+    # issue 30: an oil bath is taken with its oil level (V_M from SKF's diagram); without it, refused
+    (["--lubrication", "oil-bath"], "oil-level: --lubrication oil-bath needs the oil level"),
+    (["--lubrication", "oil-bath", "--oil-level", "30 mm"], "oil-level must be <= d_m/2"),
+    (["--oil-level", "5 mm"], "oil-level: --oil-level goes with --lubrication oil-bath"),
     (["--max-temperature", "10 degC"], "max-temperature must be above the ambient"),
     (["--viscosity-index", "900"], "viscosity-index must be in"),
 ])
@@ -122,3 +125,24 @@ def test_reference_speed_option_adds_iso_15312_thermal_reference_speed(capsys):
     code = main([*BASE, "--reference-speed"])
     out = capsys.readouterr().out
     assert code == 0 and "Thermal reference speed (ISO 15312, SKF model): 35400 rpm" in out
+
+
+def test_oil_bath_adds_the_drag_of_skfs_diagram(capsys):
+    # issue 30: --lubrication oil-bath --oil-level: the balance with SKF's drag moment, V_M of its diagram at
+    # H/d_m; the same as the library's balance with that oil level, and warmer than without the bath's drag
+    from bearinglab.friction.drag import drag_loss_factor
+
+    doc = _json(capsys, *BASE, "--thermal-resistance", "1 K/W", "--lubrication", "oil-bath", "--oil-level", "6 mm")
+    b = catalog.get("6205-2RS")
+    assert doc["inputs"]["oil_level_mm"] == pytest.approx(6.0)
+    assert doc["inputs"]["drag_loss_factor"] == pytest.approx(float(drag_loss_factor(6e-3, b.mean_diameter, "ball")),
+                                                             rel=1e-12)
+    nu100 = lubrication.viscosity_100_from_index(32e-6, 95.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = thermal.thermal_balance(b, 1000.0, 0.0, 6000 * RPM, 293.15, 32e-6, nu100, conductance=1.0,
+                                    lubrication="oil-bath", oil_level=6e-3)
+        jet = thermal.thermal_balance(b, 1000.0, 0.0, 6000 * RPM, 293.15, 32e-6, nu100, conductance=1.0,
+                                      lubrication="oil-jet")
+    assert doc["bearing_temperature_degC"] == pytest.approx(r.temperature - 273.15, rel=1e-12)
+    assert r.temperature > jet.temperature  # the same K_rs (3e-8): the difference is the bath's drag

@@ -66,7 +66,7 @@ def test_for_a_bearing_and_the_oil_bath():
                                  axial_factor=1.6, lubrication="oil-bath", width=18e-3, drag_loss_factor=1e-4)
     assert via.total_moment == direct.total_moment
     assert via.drag_moment == pytest.approx(10 * 1e-4 * 0.7 * 6 * 120 / 40 * 1e-12 * 18 * 60**4 * 3000**2 * 1e-3)
-    with pytest.raises(InputError, match="^drag_loss_factor: an oil bath needs V_M"):
+    with pytest.raises(InputError, match="^oil_level: an oil bath needs the oil level H"):  # V_M now follows from H
         friction.skf_roller(5000.0, 0.0, N, 20e-6, 40e-3, 80e-3, series="2", lubrication="oil-bath")
     m = friction.skf_roller_for_bearing(catalog.get("22208 E"), np.array([1e3, 2e3]), 0.0, N, 20e-6)
     assert m.total_moment.shape == (2,) and np.all(np.diff(m.total_moment) > 0)

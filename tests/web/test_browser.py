@@ -1,8 +1,9 @@
 """The web calculator in a real browser: the distribution's headless Chromium, driven by Playwright.
 
 The app runs under uvicorn in a background thread on 127.0.0.1 and a free port. Screenshots go to
-``test-artifacts/``. Without a browser the tests skip locally and fail under CI (``CI`` set): CI must
-never pass by skipping them (``.ci/run`` installs Chromium).
+``test-artifacts/``. They need Debian's ``chromium`` and ``poppler-utils`` (``pdftotext`` reads the printed
+report back): without either the tests skip locally and fail under CI (``CI`` set): CI must never pass by
+skipping them (``.ci/run`` installs both).
 """
 
 import os
@@ -73,6 +74,8 @@ def browser():
     executable = _chromium()
     if executable is None:
         _no_browser("no chromium on PATH (apt-get install chromium)")
+    if shutil.which("pdftotext") is None:
+        _no_browser("no pdftotext on PATH for the printed report (apt-get install poppler-utils)")
     with sync_playwright() as p:
         try:
             b = p.chromium.launch(executable_path=executable, args=BROWSER_ARGS)
@@ -303,3 +306,45 @@ def test_browser_shows_bad_clearance_film_and_temperature_inputs_next_to_their_f
     for key in ("clearance", "film", "temperature"):
         assert page.locator(f"#section-{key}.failed").count() == 1, key
     assert "Traceback" not in page.content()
+
+
+# ----------------------------------------------------------------------------- issue 30: the page's second pass
+@pytest.mark.parametrize("path, ready", [("/docs", ".swagger-ui .info .title"), ("/redoc", "h1")])
+def test_browser_docs_and_redoc_load_with_no_network(page, base_url, path, ready):
+    # every request leaves for the app itself or is refused (and recorded): the pages must render all the same
+    outside = []
+
+    def route(r):
+        if r.request.url.startswith(base_url):
+            r.continue_()
+        else:
+            outside.append(r.request.url)
+            r.abort()
+
+    page.route("**/*", route)
+    page.goto(base_url + path)
+    page.wait_for_selector(ready, timeout=60_000)
+    assert "bearinglab" in page.inner_text(ready)
+    assert outside == []
+    import httpx
+
+    served = httpx.get(base_url + path, timeout=30).text  # the page as served references this server only
+    assert not re.search(r"https?://", served), re.findall(r"https?://\S+", served)
+    # once rendered, nothing it loads is outside (a plain link for the reader to follow may be)
+    assert not re.search(r'(?:src="https?://|<link[^>]*href="https?://)', page.content())
+
+
+def test_browser_page_reads_as_a_users_page(browser, base_url):
+    # no internal references, placeholders that read as examples, labels that do not break mid-word in print
+    context = browser.new_context(viewport={"width": 1280, "height": 900})
+    page = context.new_page()
+    page.goto(base_url + "/" + FULL)
+    text = page.inner_text("body")
+    assert not re.search(r"\b(?:spec \d{3}|issue \d+)\b", text, re.IGNORECASE), re.findall(r".{40}(?:spec|issue) \d+.{20}", text)
+    holders = page.eval_on_selector_all("input[placeholder]", "els => els.map(e => e.placeholder)")
+    assert holders and all(h.startswith("e.g. ") for h in holders if h), holders
+    page.emulate_media(media="print")
+    styles = page.eval_on_selector_all(".values th, .rows th, .field label", """els => els.map(e => {
+        const s = getComputedStyle(e); return [s.overflowWrap, s.wordBreak]; })""")
+    assert styles and all(wrap == "normal" and brk == "normal" for wrap, brk in styles), set(map(tuple, styles))
+    context.close()

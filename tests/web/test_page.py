@@ -318,7 +318,9 @@ def test_skf_friction_in_an_oil_bath_and_a_set_by_its_preload_offset_from_the_pa
     part = _section(html, "friction")
     assert "<th>drag moment</th>" in part and api["drag_moment_Nmm"] > 0
     assert f'>{page.number(api["drag_moment_Nmm"])}</td><td class="unit">N·mm<' in part
-    assert "Left out: the thermal balance takes no oil bath" in _section(html, "temperature")
+    # issue 30: the thermal balance takes the oil bath with its level (before: left out)
+    temperature = _section(html, "temperature")
+    assert "Left out" not in temperature and 'class="num"' in temperature
     assert 'class="error"' not in html
     query = {"bearing": "7218B", "arrangement": "DB", "preload_offset": "5 um", "radial_load": "1 kN"}
     part = _section(client.get("/", params=query).text, "bearing-set")
@@ -360,3 +362,15 @@ def test_temperature_auto_runs_the_film_and_leaves_out_what_does_not_take_it_yet
     assert 'id="error-temperature"' not in html
     life = _section(html, "life")  # a life in 'auto' comes with issue 24 item 5; until then one line
     assert "Left out" in life or 'class="num"' in life
+
+
+def test_an_oil_grade_switches_the_default_lubrication_to_oil_and_a_bath_needs_its_level(client):
+    # issue 30: one default lubrication for every calculation: grease, an oil jet where an oil grade is given
+    base = {"bearing": "6209", "radial_load": "3 kN", "speed": "3000 rpm", "model": "skf"}
+    assert client.get("/api/friction", params={**base, "viscosity": "20 cSt"}).json()["lubrication"] == "grease"
+    oil = {**base, "oil": "VG68", "temperature": "70 degC"}
+    assert client.get("/api/friction", params=oil).json()["lubrication"] == "oil-jet"
+    heat = {k: v for k, v in base.items() if k != "model"} | {"oil": "VG68"}
+    assert client.get("/api/temperature", params=heat).json()["inputs"]["lubrication"] == "oil-jet"
+    html = client.get("/", params={**oil, "lubrication": "oil-bath"}).text
+    assert "Left out: an oil bath needs its oil level" in _section(html, "temperature")

@@ -27,7 +27,8 @@ from ..errors import InputError
 if TYPE_CHECKING:
     from ..bearing import BallBearing
 
-__all__ = ["LubricantViscosity", "choice", "five_loads", "inputs_echo", "lubricant_viscosity",
+__all__ = ["DEFAULT_LUBRICATION", "OIL_LUBRICATION", "LubricantViscosity", "choice", "default_lubrication",
+           "five_loads", "inputs_echo", "lubricant_viscosity",
            "parse_length", "parse_speed", "parse_speeds", "parse_temperature", "parse_viscosity",
            "resolve_bearing", "speed_size"]
 
@@ -220,6 +221,37 @@ def parse_speeds(text, name="speed", *, pitch_diameter=None, zero=True, what="th
     if pitch_diameter is not None:
         limits.check_speed(w, pitch_diameter, name)
     return w
+
+
+#: The lubrication method of SKF's friction model when none is given, the same for every command (issue 30):
+#: grease, the common case of ball bearings (the model takes the base oil's viscosity), unless the lubricant is
+#: given as an oil grade (``oil``), which says the bearing runs in oil: then an oil jet (circulating oil, SKF's
+#: K_rs 3e-8). An oil bath is never assumed: its drag needs the oil level.
+DEFAULT_LUBRICATION, OIL_LUBRICATION = "grease", "oil-jet"
+
+
+def default_lubrication(lubrication, oil):
+    """The lubrication method given, else :data:`DEFAULT_LUBRICATION` (``OIL_LUBRICATION`` with an oil grade).
+
+    Parameters
+    ----------
+    lubrication : str or None
+        The method given.
+    oil : str or None
+        The oil grade given (``"VG68"``).
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> default_lubrication(None, None), default_lubrication(None, "VG68"), default_lubrication("oil-air", "VG68")
+    ('grease', 'oil-jet', 'oil-air')
+    """
+    if lubrication is not None:
+        return lubrication
+    return OIL_LUBRICATION if oil is not None and str(oil).strip() else DEFAULT_LUBRICATION
 
 
 #: Kinematic viscosities accepted from the command line [m^2/s]: 0.1 to 1e7 cSt, the dynamic range the film

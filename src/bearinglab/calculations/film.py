@@ -20,6 +20,7 @@ from ..errors import InputError
 from ._failures import failures
 from ._inputs import (
     choice,
+    default_lubrication,
     five_loads,
     inputs_echo,
     lubricant_viscosity,
@@ -171,7 +172,7 @@ def _document(parsed, bearing_file, catalog):
         eta, how, lub_inputs, notes = _auto_temperature(
             b, loads, w, oil["oil"], oil["viscosity"], oil["dynamic_viscosity"], oil["viscosity_index"],
             oil["viscosity_100"], text("density"), text("ambient"), text("thermal_resistance"),
-            lubrication or "oil-jet", text("skf_constants"))
+            default_lubrication(lubrication, text("oil")), text("skf_constants"))
         nu = eta / lub_inputs["density_kg_m3"]
     else:
         if any(text(k) is not None for k in ("ambient", "thermal_resistance", "skf_constants")):

@@ -20,7 +20,7 @@ from typing import NamedTuple
 from ..errors import InputError
 from . import _reading as inp
 from ._failures import failures
-from ._inputs import lubricant_viscosity, parse_viscosity
+from ._inputs import default_lubrication, lubricant_viscosity, parse_viscosity
 
 __all__ = ["MODELS", "FrictionResult", "compute", "document"]
 
@@ -61,7 +61,7 @@ def compute(parsed, *, bearing_file=None, catalog=None):
             t(parsed, "contact_angle"), t(parsed, "bore"), t(parsed, "outside_diameter"),
             t(parsed, "mean_diameter"), t(parsed, "static_load_rating"), v(parsed, "mu"), v(parsed, "x0"),
             v(parsed, "y0"), v(parsed, "f"), v(parsed, "c"), v(parsed, "f0"), t(parsed, "viscosity"),
-            v(parsed, "palmgren_f0"), v(parsed, "lubrication", "grease"), t(parsed, "oil"),
+            v(parsed, "palmgren_f0"), default_lubrication(v(parsed, "lubrication"), t(parsed, "oil")), t(parsed, "oil"),
             t(parsed, "temperature"), v(parsed, "viscosity_index"), t(parsed, "viscosity_100"),
             t(parsed, "oil_level"), v(parsed, "drag_loss_factor"), parsed.given.get("series"), resolved)  # series as typed: "  " is no series
         doc = _with_operating_clearance(doc, parsed, b, n)
@@ -353,15 +353,15 @@ def _skf_torque(b, fr, fa, n, viscosity, lubrication, oil=(None,) * 4, bath=(Non
     nu = lubricant_viscosity(viscosity, *oil, required=True).viscosity
     kw = {}
     if lubrication == "oil-bath":
-        if bath[0] is None or bath[1] is None:
-            raise InputError("oil-level: --lubrication oil-bath needs --oil-level (e.g. '5 mm') and "
-                             "--drag-loss-factor (V_M of SKF's diagram at H/d_m)")
+        if bath[0] is None:
+            raise InputError("oil-level: --lubrication oil-bath needs --oil-level (e.g. '5 mm'); V_M follows from "
+                             "SKF's diagram at H/d_m (--drag-loss-factor overrides it)")
         h = inp.parse_length(bath[0], "oil-level", zero=True)
         dm = b.mean_diameter
         if h > dm / 2:
             raise InputError(f"oil-level must be <= d_m/2 = {dm / 2 * 1e3:g} mm [mm] (at most up to the bearing's "
                              f"centre), got {h * 1e3:g} mm")
-        if not 0.0 <= bath[1] <= 1.0:
+        if bath[1] is not None and not 0.0 <= bath[1] <= 1.0:
             raise InputError(f"drag-loss-factor must be in [0, 1] [-] (V_M of SKF's diagram), got {bath[1]:g}")
         kw = {"oil_level": h, "drag_loss_factor": bath[1]}
     elif bath[0] is not None or bath[1] is not None:
@@ -376,6 +376,10 @@ def _skf_torque(b, fr, fa, n, viscosity, lubrication, oil=(None,) * 4, bath=(Non
              for i in range(len(moments))]
     info = {"bearing": b.designation, "type": b.type, "model": "skf", "lubrication": lubrication,
             "viscosity_cSt": float(tables.significant(nu * 1e6)[0])}
+    if m.drag_loss_factor is not None:  # the oil bath's V_M: given, or SKF's diagram at H/d_m
+        info.update(oil_level_mm=kw["oil_level"] * 1e3, drag_loss_factor=float(m.drag_loss_factor),
+                    drag_loss_factor_source="given" if bath[1] is not None else
+                    "SKF's diagram at H/d_m (ball bearings; bearinglab.friction.drag)")
     echo = {"inputs": _echo(b, fr, fa, n, model="skf", lubrication=lubrication, viscosity_cSt=nu * 1e6),
             "warnings": notes}
     doc = {**info, **cases[0], **echo} if len(cases) == 1 else {**info, "cases": cases, **echo}

@@ -29,11 +29,14 @@ import warnings
 from ..errors import InputError
 from ._failures import failures
 from ._inputs import (
+    default_lubrication,
     five_loads,
     inputs_echo,
     lubricant_viscosity,
     parse_speed,
+    parse_speeds,
     resolve_bearing,
+    speed_size,
 )
 from ._request import given_text, with_notes
 
@@ -125,23 +128,31 @@ def document(parsed, *, catalog=None, bearing_file=None, duty_cycle_source=POSTE
             steps = _duty_cycle(str(parsed.given["duty_cycle"]), duty_cycle_source, b)
         elif "speed" not in parsed.given:
             raise InputError("speed: missing; give the inner-ring speed, e.g. '3000 rpm' (or --duty-cycle)")
-        else:
-            n = parse_speed(text("speed"), bearing=b, zero=False)
-            b, mounted = _mounting.operating_bearing(b, n, mounting)  # issue 23: the operating clearance
+        else:  # one speed, or a list like film's: one document per speed (issue 30)
+            speeds = parse_speeds(text("speed"), pitch_diameter=speed_size(b), zero=False)
             loads = five_loads(*map(text, _LOADS))
-            if auto:
-                lube, temperature, notes_auto = _auto_viscosity(b, loads, n, text, v, thermal)
-                options["kinematic_viscosity"] = lube.viscosity
-                assumed = [*_assumed(lube, no_cleanliness), *notes_auto]
+            runs = []
+            for n in map(float, speeds):
+                b_n, mounted = _mounting.operating_bearing(b, n, mounting)  # issue 23: the operating clearance
+                run = {"bearing": b_n, "speed": n, "mounted": mounted, "lube": lube, "assumed": assumed,
+                       "options": dict(options)}
+                if auto:
+                    run["lube"], run["temperature"], notes_auto = _auto_viscosity(b_n, loads, n, text, v, thermal)
+                    run["options"]["kinematic_viscosity"] = run["lube"].viscosity
+                    run["assumed"] = [*_assumed(run["lube"], no_cleanliness), *notes_auto]
+                runs.append(run)
     if "duty_cycle" in parsed.given:
-        doc = _life_of_duty_cycle(b, *steps, options, lube, assumed)
-    else:
-        doc = _life(b, loads, n, options, lube, assumed, mounted, text("radial_clearance"))
+        return json.loads(tables.json_text(with_notes(_life_of_duty_cycle(b, *steps, options, lube, assumed), notes)))
+    docs = []
+    for run in runs:
+        doc = _life(run["bearing"], loads, run["speed"], run["options"], run["lube"], run["assumed"], run["mounted"],
+                    text("radial_clearance"))
         if auto:  # the steady temperature, after the viscosity it gives
             items = list(doc.items())
             at = list(doc).index("viscosity_mm2_s") + 1
-            doc = dict([*items[:at], ("bearing_temperature_degC", temperature), *items[at:]])
-    return json.loads(tables.json_text(with_notes(doc, notes)))
+            doc = dict([*items[:at], ("bearing_temperature_degC", run["temperature"]), *items[at:]])
+        docs.append(json.loads(tables.json_text(with_notes(doc, notes))))
+    return docs[0] if len(docs) == 1 else docs
 
 
 _THERMAL = ("ambient", "thermal_resistance", "lubrication", "skf_constants")
@@ -157,7 +168,8 @@ def _auto_viscosity(b, loads, n, text, values, thermal):
     r, how, inputs, notes = steady_temperature(b, loads, n, text("oil"), text("viscosity"),
                                                values.get("viscosity_index"), text("viscosity_100"),
                                                thermal["ambient"], thermal["thermal_resistance"],
-                                               thermal["lubrication"] or "oil-jet", thermal["skf_constants"])
+                                               default_lubrication(thermal["lubrication"], text("oil")),
+                                               thermal["skf_constants"])
     t, nu = float(r.temperature) - 273.15, float(r.kinematic_viscosity)
     inputs = {k: x for k, x in inputs.items() if k not in ("bearing_temperature_degC", "max_temperature_degC")}
     description = f"{how} at the steady temperature {t:.1f} degC (thermal balance): nu = {nu * 1e6:.4g} cSt"
@@ -178,7 +190,8 @@ def _life(b, loads, n, options, lube, assumed, mounted, clearance_text=None):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the analysis returns its warnings
         r = rating_life(b, loads, n, **options, load_distribution=dist)
-    doc = {**tables.rows(tables.rating_life(r))[0], "rating_source": r.rating_source,
+    doc = {**tables.rows(tables.rating_life(r))[0], "contamination_factor": r.contamination_factor,
+           "rating_source": r.rating_source,
            "inputs": _echo(b, options, lube, fx_N=loads[0], fy_N=loads[1], fz_N=loads[2], mx_Nmm=loads[3] * 1e3,
                            my_Nmm=loads[4] * 1e3, speed_rpm=n / RPM),
            "warnings": assumed + _diameter_note(r) + _notes(b, loads, r.warnings, dist) + _unbounded(r)}
@@ -186,7 +199,7 @@ def _life(b, loads, n, options, lube, assumed, mounted, clearance_text=None):
                                       n, source=clearance_source(mounted, clearance_text))
     if note:  # the preload's ball loads are in L10r (the load distribution); ISO 281's L10 takes F_r, F_a only
         doc["warnings"] = [note + "; L10r counts the preload's ball loads, L10 of ISO 281 does not", *doc["warnings"]]
-    return {**{k: doc[k] for k in _KEYS}, **mounted, **preloaded}
+    return {**{k: doc[k] for k in _KEYS}, **mounted, **preloaded}  # e_C null without a_ISO (no lubricant)
 
 
 def _cleanliness(factor, name):
@@ -357,7 +370,7 @@ def _assumed(lube, no_cleanliness):
 _KEYS = ("dynamic_load_rating_N", "static_load_rating_N", "fatigue_load_limit_N", "rating_source",
          "equivalent_dynamic_load_N", "basic_rating_life_Mrev", "basic_rating_life_h", "reliability_factor",
          "viscosity_mm2_s", "rated_viscosity_mm2_s", "rated_viscosity_diameter_mm", "viscosity_ratio",
-         "life_modification_factor", "modified_rating_life_Mrev", "modified_rating_life_h",
+         "contamination_factor", "life_modification_factor", "modified_rating_life_Mrev", "modified_rating_life_h",
          "reference_rating_life_Mrev", "modified_reference_rating_life_Mrev", "static_safety_factor", "inputs",
          "warnings")
 
@@ -380,6 +393,7 @@ def _life_of_duty_cycle(b, loads, speeds, times, options, lube, assumed=()):
         return None if life is None else life * factor
 
     doc = {**tables.ratings(d.steps), "reliability_factor": d.steps.reliability_factor,
+           **({} if d.steps.contamination_factor is None else {"contamination_factor": d.steps.contamination_factor}),
            "basic_rating_life_Mrev": d.basic_rating_life * 1e-6, "basic_rating_life_h": d.basic_rating_life * hours,
            "modified_rating_life_Mrev": scaled(d.modified_rating_life, 1e-6),
            "modified_rating_life_h": scaled(d.modified_rating_life, hours),

@@ -237,8 +237,9 @@ _CALCS = (
     Calculation(
         "life", ("life",), "Rating life",
         "ISO 281 basic and modified rating lives, ISO/TS 16281 reference life.",
-        (*LOADS, _f("speed", "speed", "Inner-ring speed, e.g. '3000 rpm'.", label="Shaft speed",
-                    unit="rpm", minimum=0, group=_L, aliases=("-n",)),
+        (*LOADS, _f("speed", "speed", "Inner-ring speed, e.g. '3000 rpm' (a list '1000, 3000 rpm' for "
+                    "several cases).", label="Shaft speed", unit="rpm", minimum=0, many=True, group=_L,
+                    aliases=("-n",)),
          *OIL,
          _f("contamination_factor", "number", "e_C of ISO 281 table 13, in [0, 1] (default 1).",
             label="Contamination factor e_C", unit="-", minimum=0, maximum=1, group=_O),
@@ -255,12 +256,14 @@ _CALCS = (
          _f("thermal_resistance", "thermal_resistance", "With `temperature` auto: bearing to ambient, "
             "e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).", label="Thermal resistance",
             unit="K/W", minimum=0, exclusive=True, group="temperature auto"),
-         _f("lubrication", "choice", "With `temperature` auto: the SKF model's oil-jet (default) | "
-            "oil-air | grease.", label="Lubrication method", choices=("oil-jet", "oil-air", "grease"),
+         _f("lubrication", "choice", "With `temperature` auto: the SKF model's lubrication method "
+            "(default grease; oil-jet when an oil grade is given, as temperature auto needs).",
+            label="Lubrication method", choices=("oil-jet", "oil-air", "grease"),
             group="temperature auto"),
          _f("skf_constants", "text", "With `temperature` auto: SKF constants R1,R2,R3,S1,S2,S3 "
             "(angular contact).", label="SKF constants", group="temperature auto"),
-         BEARING, *GEOMETRY, *MOUNTING)),
+         BEARING, *GEOMETRY, *MOUNTING),
+        combine="broadcast"),
     Calculation(
         "load-distribution", ("load-distribution",), "Load distribution and stiffness",
         "5-DOF load distribution of one bearing under F_x, F_y, F_z, M_x, M_y; stiffness matrix.",
@@ -323,14 +326,14 @@ _CALCS = (
          _f("palmgren_f0", "number", "Palmgren's f0 (about 0.7-2 for deep-groove bearings) for `model` "
             "palmgren.", label="Palmgren f0", unit="-", minimum=0, group="friction"),
          _f("lubrication", "choice", "For `model` skf: grease | oil-air | oil-jet | oil-bath (with "
-            "`oil_level`, `drag_loss_factor`).", label="Lubrication method", default="grease",
-            choices=("grease", "oil-air", "oil-jet", "oil-bath"), group="friction"),
+            "`oil_level`). Default grease; oil-jet when an oil grade (`oil`) is given.",
+            label="Lubrication method", choices=("grease", "oil-air", "oil-jet", "oil-bath"), group="friction"),
          *(f for f in OIL if f.name != "viscosity"),
          _f("oil_level", "length", "For `model` skf, `lubrication` oil-bath: H from the lowest point of "
             "the outer raceway, e.g. '5 mm' (at most to the bearing's centre).", label="Oil level H",
             unit="mm", minimum=0, group="friction"),
-         _f("drag_loss_factor", "number", "For `lubrication` oil-bath: V_M read from SKF's drag loss "
-            "diagram at H/d_m.", label="Drag loss factor V_M", unit="-", minimum=0, group="friction"),
+         _f("drag_loss_factor", "number", "For `lubrication` oil-bath: V_M in place of SKF's drag "
+            "loss diagram at H/d_m (default: the diagram, digitised).", label="Drag loss factor V_M", unit="-", minimum=0, group="friction"),
          _f("series", "text", "For `model` skf: the deep-groove series of SKF's constants, e.g. 62 "
             "(default: the bearing's series, else read from its designation).",
             label="SKF series", group="friction"),
@@ -338,7 +341,7 @@ _CALCS = (
         combine="broadcast", module="friction_torque"),
     Calculation(
         "high-speed", ("high-speed",), "Contact angles at speed",
-        "High-speed quasi-static model under thrust (spec 004).",
+        "High-speed quasi-static model under thrust (Jones/Harris).",
         (_f("axial_load", "force", "Thrust: '20 kN', or a list/range '2.5kN:45kN:2.5kN'.",
             label="Axial load F_a", unit="N", required=True, minimum=0, exclusive=True, many=True,
             group=_L, aliases=("-A", "-F")),
@@ -385,7 +388,7 @@ _CALCS = (
             group="mask"))),
     Calculation(
         "axial-angle", ("axial-angle",), "Contact angle at rest",
-        "Operating contact angle under axial load (test-stand method, spec 000).",
+        "Operating contact angle under axial load (test-stand method).",
         (_f("axial_load", "force", "Axial load: '2 kgf', '19.6 N', or a list/range '1kgf:5kgf:1kgf'.",
             label="Axial load F_a", unit="N", required=True, minimum=0, exclusive=True, many=True,
             group=_L, aliases=("-F",)),
@@ -401,7 +404,7 @@ _CALCS = (
         combine="grid", module="stand"),
     Calculation(
         "stand-load", ("stand-load",), "Test-stand load",
-        "Minimum axial load on a test stand (spec 000 section 3).",
+        "Minimum axial load on a test stand.",
         (_f("speed", "speed", "Inner-ring speed: '3000 rpm', or a list '1000,3000,10000rpm'.",
             label="Shaft speed", unit="rpm", required=True, many=True, group=_L, aliases=("-n",)),
          BEARING, *GEOMETRY),
@@ -481,8 +484,8 @@ _CALCS = (
             "e.g. '0.5 K/W' (default: ISO 15312's reference heat flow).",
             label="Thermal resistance", unit="K/W", minimum=1e-4, maximum=1e4, group="temperature auto"),
          _f("lubrication", "choice", "grease | oil-air | oil-jet | oil-bath: a starvation-risk check "
-            "(SKF's replenishment factor); with `temperature` auto also the SKF model's (default "
-            "oil-jet).", label="Lubrication method",
+            "(SKF's replenishment factor); with `temperature` auto also the SKF model's (default grease; "
+            "oil-jet when an oil grade is given).", label="Lubrication method",
             choices=("grease", "oil-air", "oil-jet", "oil-bath"), group="film"),
          _f("skf_constants", "text", "With `temperature` auto: SKF constants R1,R2,R3,S1,S2,S3 "
             "(angular contact).", label="SKF constants", group="temperature auto"),
@@ -499,9 +502,13 @@ _CALCS = (
          _f("speed", "speed", "Inner-ring speed, e.g. '6000 rpm' (a list for several cases).",
             label="Shaft speed", unit="rpm", many=True, group=_L, aliases=("-n",)),
          *(f for f in OIL if f.name in ("oil", "viscosity_index", "viscosity_100")),
-         _f("lubrication", "choice", "SKF model: oil-jet | oil-air | grease (oil bath: refused, its "
-            "drag loss needs SKF's V_M chart).", label="Lubrication method", default="oil-jet",
+         _f("lubrication", "choice", "SKF model: oil-jet | oil-air | grease | oil-bath (with "
+            "`oil_level`; its drag loss from SKF's V_M diagram). Default grease, oil-jet when an oil "
+            "grade is given (this command's oil is a grade: oil-jet).", label="Lubrication method",
             choices=("oil-jet", "oil-air", "grease", "oil-bath"), group="heat"),
+         _f("oil_level", "length", "For `lubrication` oil-bath: H from the lowest point of the outer "
+            "raceway, e.g. '5 mm' (at most to the bearing's centre).", label="Oil level H", unit="mm",
+            minimum=0, group="heat"),
          _f("skf_constants", "text", "SKF geometry constants R1,R2,R3,S1,S2,S3 in place of SKF's tables "
             "(angular contact other than 40 deg needs them), e.g. '5e-7,1.9,1.9e-12,0.013,0.7,1.9e-12'.",
             label="SKF constants", group="heat"),
@@ -576,7 +583,7 @@ _CALCS = (
         "shaft", ("shaft",), "Shaft system",
         "Several bearings on an elastic shaft (Timoshenko elements) with gears, pulleys, housings and speed: "
         "support loads, bearing lives and the system life, deflection, stiffness at a point, natural "
-        "frequencies (issue 33).",
+        "frequencies.",
         (_f("model", "document", "The shaft system as a TOML or JSON document (sections, supports, loads, "
             "gears, pulleys, cases; the format of the user guide's shaft-systems page), posted as text; never a "
             "file path.", label="Shaft system", required=True, option="FILE", group="shaft"),

@@ -27,6 +27,7 @@ from ..errors import InputError
 from ._failures import failures
 from ._inputs import (
     HOTTEST_OIL_DEGC,
+    default_lubrication,
     inputs_echo,
     lubricant_viscosity,
     parse_speeds,
@@ -41,7 +42,7 @@ __all__ = ["document", "heat_options", "oil_reference_viscosities", "skf_options
 DEFAULT_DENSITY = 870.0
 DEFAULT_HEAT_CAPACITY = 1950.0
 _ZERO_C = 273.15
-_LUBRICATIONS = ("oil-jet", "oil-air", "grease")
+_LUBRICATIONS = ("oil-jet", "oil-air", "grease", "oil-bath")
 _HOTTEST = HOTTEST_OIL_DEGC  # the sanity bound on the balance's temperatures (issue 24)
 
 
@@ -144,32 +145,48 @@ max_temperature : str or None
             "oil_inlet_temperature": t_in, "maximum_temperature": t_max}, notes, inputs
 
 
-def skf_options(b, lubrication, constants):
-    """The SKF model's options for the bearing: its lubrication method and, for angular contact, the
-    constants given (else SKF's single-row ones, for 40 deg bearings only: others refused in one line).
+def skf_options(b, lubrication, constants, oil_level=None):
+    """The SKF model's options for the bearing: its lubrication method (an oil bath with its oil level)
+    and, for angular contact, the constants given (else SKF's single-row ones, for 40 deg bearings only:
+    others refused in one line).
 
     Parameters
     ----------
     b : BallBearing
         The bearing.
     lubrication : str
-        oil-jet, oil-air or grease.
+        oil-jet, oil-air, grease or oil-bath.
     constants : str or None
         R1,R2,R3,S1,S2,S3 as typed.
+    oil_level : str or None
+        The oil bath's level H as typed ('5 mm'); needed with oil-bath, refused otherwise. Its drag loss
+        factor V_M is SKF's diagram at H/d_m (:func:`bearinglab.friction.drag.drag_loss_factor`).
 
     Returns
     -------
     dict
-        ``lubrication`` and, where given, ``constants`` (:class:`bearinglab.friction.SKFConstants`).
+        ``lubrication``, ``oil_level`` [m] of an oil bath and, where given, ``constants``
+        (:class:`bearinglab.friction.SKFConstants`).
     """
     from .. import friction
 
-    if lubrication == "oil-bath":
-        raise InputError("lubrication: oil-bath is not covered by `temperature` yet (SKF's drag loss needs V_M "
-                         "from the catalogue's chart); use oil-jet, oil-air or grease")
     if lubrication not in _LUBRICATIONS:
         raise InputError(f"lubrication must be one of {list(_LUBRICATIONS)}, got {lubrication!r}")
     out = {"lubrication": lubrication}
+    if lubrication == "oil-bath":
+        if oil_level is None:
+            raise InputError("oil-level: --lubrication oil-bath needs the oil level, e.g. --oil-level '5 mm' (H from "
+                             "the lowest point of the outer raceway; V_M follows from SKF's diagram at H/d_m)")
+        from . import _reading
+
+        h = _reading.parse_length(oil_level, "oil-level", zero=True)
+        dm = b.mean_diameter
+        if h > dm / 2:
+            raise InputError(f"oil-level must be <= d_m/2 = {dm / 2 * 1e3:g} mm [mm] (at most up to the bearing's "
+                             f"centre), got {h * 1e3:g} mm")
+        out["oil_level"] = h
+    elif oil_level is not None:
+        raise InputError("oil-level: --oil-level goes with --lubrication oil-bath")
     if constants is not None:
         try:
             values = [float(x) for x in constants.split(",")]
@@ -223,6 +240,10 @@ def steady_temperature(b, loads, w, oil, viscosity, viscosity_index, viscosity_1
     if loads[3] or loads[4]:
         raise InputError("temperature: 'auto' takes the SKF friction model, which has no tilting moment; give "
                          "no --mx/--my")
+    if lubrication == "oil-bath":
+        raise InputError("lubrication: temperature 'auto' with an oil bath needs the bath's oil level, which this "
+                         "command does not take; compute it with `bearinglab temperature --lubrication oil-bath "
+                         "--oil-level ...` and give that temperature")
     nu40, nu100, how, oil_inputs = oil_reference_viscosities(oil, viscosity_index, viscosity_100)
     heat, notes, heat_inputs = heat_options(b, ambient or "20 degC", thermal_resistance, None, None, None,
                                             None, "150 degC")
@@ -296,8 +317,8 @@ def _document(parsed, bearing_file, catalog):
                                             text("oil_flow"), text("oil_inlet_temperature"),
                                             text("oil_heat_capacity"), text("density"),
                                             text("max_temperature", "150 degC"))
-    lubrication = v.get("lubrication", "oil-jet")
-    skf = skf_options(b, lubrication, text("skf_constants"))
+    lubrication = default_lubrication(v.get("lubrication"), text("oil"))  # the oil is required: oil-jet
+    skf = skf_options(b, lubrication, text("skf_constants"), text("oil_level"))
     r = thermal.thermal_balance(b, fr, fa, w, heat.pop("ambient"), nu40, nu100, **heat, **skf)
     notes = list(dict.fromkeys([*notes, *r.warnings]))
     extra = {}
@@ -312,9 +333,15 @@ def _document(parsed, bearing_file, catalog):
     if note:  # issue 30: a bearing file with a zero or negative clearance
         notes.insert(0, note)
     notes += [n for n in dict.fromkeys(_catalog.provenance_notes(b)) if n not in notes]
+    bath = {}
+    if "oil_level" in skf:  # the oil bath: its level and SKF's V_M at H/d_m (ball-bearing curve)
+        from ..friction.drag import drag_loss_factor
+
+        bath = {"oil_level_mm": skf["oil_level"] * 1e3,
+                "drag_loss_factor": float(drag_loss_factor(skf["oil_level"], b.mean_diameter, "ball"))}
     docs = [_doc(r, k, w.size) | extra | preloaded | {"inputs": inputs_echo(b, radial_load_N=fr, axial_load_N=fa,
                                                          speed_rpm=float(w[k]) / RPM,
-                                                         lubrication=lubrication, **oil_inputs,
+                                                         lubrication=lubrication, **bath, **oil_inputs,
                                                          lubricant=how, **heat_inputs),
                                  "warnings": notes} for k in range(w.size)]
     return docs[0] if w.size == 1 else docs

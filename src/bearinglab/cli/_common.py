@@ -217,6 +217,18 @@ def _header_lines(header, width, level):
     return "\n".join(part for part in (name, unit) if part)
 
 
+def cell_text(value):
+    """A table cell as text: a list in words ('6, 20'), a mapping as 'name: value' pairs, a float with six
+    significant digits; never a Python list or dict (issue 30). Text and formatted numbers are kept."""
+    if isinstance(value, dict):
+        return "; ".join(f"{str(k).replace('_', ' ')}: {cell_text(v)}" for k, v in value.items())
+    if isinstance(value, (list, tuple)):
+        return ", ".join(cell_text(v) for v in value)
+    if isinstance(value, float):
+        return f"{value:.6g}"
+    return "—" if value is None else str(value)
+
+
 def table(title, columns, rows, *, caption=None):
     """Print a rich table; ``columns`` are header strings, ``rows`` lists of already formatted cells.
 
@@ -228,7 +240,7 @@ def table(title, columns, rows, *, caption=None):
     tables that fit 80 columns, so that stacking is for narrower terminals only.
     """
     title, caption = plain_zero(title), caption and plain_zero(caption)
-    plain = [[plain_zero(str(c)) for c in row] for row in rows]
+    plain = [[plain_zero(cell_text(c)) for c in row] for row in rows]
     cells = [[escape(c) for c in row] for row in plain]
     numeric = [all(_NUMBER_CELL.match(row[i].strip()) for row in cells if i < len(row))
                for i in range(len(columns))]

@@ -25,10 +25,13 @@ from ._common import (
     BearingFile,
     CatalogFile,
     JsonFlag,
+    cell_text,
     check_input,
     emit_json,
     print_document,
+    print_warnings,
     run_calculation,
+    table,
 )
 from ._options import command
 
@@ -62,6 +65,9 @@ def life(given, *, bearing_file: BearingFile = None, catalog: CatalogFile = None
     if json_out:
         emit_json(doc)
         return
+    if isinstance(doc, list):  # a speed list: one row per speed
+        _print_speeds(doc)
+        return
     lubricated = bool({"viscosity_cSt", "oil"} & set(doc["inputs"]))
     if duty_cycle is not None:
         _print(f"Duty cycle of {doc['inputs']['bearing']}: {len(doc['steps'])} steps, mean speed "
@@ -91,11 +97,18 @@ _LABELS = {
     "modified_reference_rating_life_Mrev": "modified ref. life L_nmr [10^6 rev]",
     "static_safety_factor": "static safety factor s0 [-]",
     "mean_speed_rpm": "mean speed [rpm]",
+    "contamination_factor": "contamination factor e_C [-]",
+    "operating_clearance_um": "operating clearance, probable [um]",
+    "operating_clearance_min_um": "operating clearance, least [um]",
+    "operating_clearance_max_um": "operating clearance, largest [um]",
+    "unmounted_clearance_um": "unmounted clearance, min, max [um]",
+    "mounting": "mounting",
 }
 
 
 # the results that need the lubricant: shown as "needs viscosity" without one
-_LUBRICATED = ("viscosity_mm2_s", "viscosity_ratio", "life_modification_factor", "modified_rating_life_Mrev",
+_LUBRICATED = ("viscosity_mm2_s", "viscosity_ratio", "contamination_factor", "life_modification_factor",
+               "modified_rating_life_Mrev",
                "modified_rating_life_h", "modified_reference_rating_life_Mrev")
 
 
@@ -107,11 +120,34 @@ def _print(title, doc, lubricated):
         if v is None and k in _LUBRICATED and not lubricated:
             text = _NEEDS_VISCOSITY
         else:
-            text = "— (see the warnings)" if v is None else (f"{v:.6g}" if isinstance(v, float) else str(v))
+            text = "— (see the warnings)" if v is None else cell_text(v)
         return text + (f"  ({src[k[:-2]]})" if k[:-2] in src else "")
 
-    print_document(title, doc, label=lambda k: _LABELS.get(k, k), cell=cell, skip=("rating_source", "steps"),
+    # the mounting's own notes join the warnings, after the table (never a Python list in a cell)
+    doc = {**doc, "warnings": [*doc.get("mounting_warnings", []), *doc.get("warnings", [])]}
+    print_document(title, doc, label=lambda k: _LABELS.get(k, k), cell=cell,
+                   skip=("rating_source", "steps", "mounting_warnings"),
                    caption="--json for one JSON document (keys in the units shown)")
+
+
+def _print_speeds(docs):
+    """A speed list: the ratings and P once, the lives of each speed in a row (issue 30)."""
+    first = docs[0]
+
+    def f(d, key, spec=".4g"):
+        v = d.get(key)
+        return (_NEEDS_VISCOSITY if key in _LUBRICATED and "viscosity_mm2_s" not in d else "—") if v is None \
+            else format(v, spec)
+
+    rows = [[f(d["inputs"], "speed_rpm", "g"), f(d, "basic_rating_life_h", ".6g"), f(d, "viscosity_ratio"),
+             f(d, "contamination_factor", ".3g"), f(d, "life_modification_factor"),
+             f(d, "modified_rating_life_h", ".6g"), f(d, "reference_rating_life_Mrev", ".5g")] for d in docs]
+    table(f"Rating life of {first['inputs']['bearing']}: C {first['dynamic_load_rating_N']:g} N, "
+          f"C0 {first['static_load_rating_N']:g} N, Cu {first['fatigue_load_limit_N']:g} N, "
+          f"P {cell_text(first['equivalent_dynamic_load_N'])} N",
+          ["n [rpm]", "L10h [h]", "κ", "e_C", "a_ISO", "L_nmh [h]", "L10r [10^6 rev]"], rows,
+          caption="--json for one JSON document per speed")
+    print_warnings(list(dict.fromkeys(w for d in docs for w in [*d.get("mounting_warnings", []), *d["warnings"]])))
 
 
 #: The ``life`` command, as the application adds it.

@@ -15,6 +15,7 @@ angular_contact_constants              SKF's constants of an angular-contact typ
 self_aligning_constants                SKF's constants of a self-aligning series (12, 13, 22, 23, ...)
 inlet_shear_heating_factor, replenishment_factor   Phi_ish and Phi_rs
 drag_moment                            M_drag of an oil bath
+drag_loss_factor (:mod:`.drag`)        V_M of SKF's diagram at H/d_m, for ball and roller bearings
 
 SKF model of roller bearings (:mod:`.skf_roller`, issue 32)
 -----------------------------------------------------------
@@ -55,6 +56,7 @@ from .classic import (
     static_load_factors,
     two_term,
 )
+from .drag import MAX_LEVEL_RATIO, drag_loss_factor, drag_loss_table
 from .skf import (
     ANGULAR_CONTACT_CONSTANTS,
     ANGULAR_SEAL_CONSTANTS,
@@ -104,6 +106,7 @@ __all__ = [
     "DEEP_GROOVE_CONSTANTS",
     "HANDBOOK_FRICTION_COEFFICIENTS",
     "LUBRICATION_METHODS",
+    "MAX_LEVEL_RATIO",
     "MODELS",
     "RADIAL_LOAD_TERM",
     "RADIAL_STATIC_FACTORS",
@@ -127,6 +130,8 @@ __all__ = [
     "bearing_series",
     "classic",
     "combined_branch_governs",
+    "drag_loss_factor",
+    "drag_loss_table",
     "drag_moment",
     "equivalent_static_load",
     "handbook_friction_coefficient",

@@ -14,7 +14,8 @@ self_aligning_constants    the constants of a self-aligning ball bearing series 
 bearing_series             the series of a designation ("6205-2RSH" -> "62", "61811-2RS1" -> "618")
 seal_constants             K_S1, beta, K_S2 of a seal type and outside diameter
 sliding_friction_coefficient   mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL
-drag_moment                M_drag of a ball bearing in an oil bath (SKF's drag losses)
+drag_moment                M_drag of a ball bearing in an oil bath (SKF's drag losses; V_M from the oil level,
+                           :func:`bearinglab.friction.drag.drag_loss_factor`)
 replenishment_factor       Phi_rs, the kinematic replenishment/starvation reduction factor
 inlet_shear_heating_factor Phi_ish, the inlet shear heating reduction factor
 DEEP_GROOVE_CONSTANTS, ANGULAR_CONTACT_CONSTANTS, SELF_ALIGNING_CONSTANTS, THRUST_BALL_CONSTANTS,
@@ -29,8 +30,8 @@ References
    for calculating the frictional moment (rolling, sliding, seal and drag moments; inlet shear heating
    and kinematic replenishment/starvation factors; the variables G_rr, G_sl of its table for radial
    bearings; the geometry constants of deep-groove ball bearings by series; the seal constants; the
-   drag losses of an oil bath, "Drag losses in oil bath lubrication", with the drag loss factor V_M read
-   from its diagram against H/d_m).
+   drag losses of an oil bath, "Drag losses in oil bath lubrication", with the drag loss factor V_M of its
+   diagram against H/d_m, digitised in :mod:`bearinglab.friction.drag`).
 .. [2] SKF, *General Catalogue* 6000/I RU (Russian edition, 2006), section "Friction" (Трение): table 3,
    p. 92 (geometry constants of angular-contact ball bearings: single row, double row, four-point
    contact), table 4, p. 96 (seal constants, RS1 seals of angular-contact ball bearings), table 5, p. 98
@@ -52,6 +53,7 @@ import numpy as np
 
 from .._validate import check_nonnegative, check_positive
 from ..errors import InputError, ValidityWarning
+from .drag import drag_loss_factor as _drag_loss_factor
 
 __all__ = [
     "ANGULAR_CONTACT_CONSTANTS",
@@ -481,7 +483,7 @@ def replenishment_factor(kinematic_viscosity, shaft_speed, bore, outside_diamete
     return np.exp(-LUBRICATION_METHODS[lubrication] * nu * n * (d + big) * np.sqrt(_KZ[bearing_type] / (2 * (big - d))))[()]
 
 
-def drag_moment(shaft_speed, kinematic_viscosity, bore, outside_diameter, oil_level, drag_loss_factor, *,
+def drag_moment(shaft_speed, kinematic_viscosity, bore, outside_diameter, oil_level, drag_loss_factor=None, *,
                 bearing_type="radial", rows=1):
     r"""Drag moment of a ball bearing turning in an oil bath (SKF model).
 
@@ -496,8 +498,8 @@ def drag_moment(shaft_speed, kinematic_viscosity, bore, outside_diameter, oil_le
     oil_level : array_like
         H, from the lowest point of the outer ring raceway to the oil surface; 0 <= H <= d_m/2 (the
         bearing's centre line: a higher level is refused). [m]
-    drag_loss_factor : array_like
-        V_M, read from SKF's diagram of the drag loss factor against H/d_m for ball bearings. [-]
+    drag_loss_factor : array_like, optional
+        V_M; by default SKF's ball-bearing curve at H/d_m (:func:`bearinglab.friction.drag.drag_loss_factor`). [-]
     bearing_type : {"radial", "angular", "double-row-angular", "four-point"}
         Deep groove (K_Z = 3.1), single-row angular contact (K_Z = 4.4), double-row angular or
         four-point contact (K_Z = 3.1).
@@ -527,13 +529,17 @@ def drag_moment(shaft_speed, kinematic_viscosity, bore, outside_diameter, oil_le
     >>> m = drag_moment(3000 * 2 * np.pi / 60, 20e-6, 25e-3, 52e-3, 5e-3, 0.0002)
     >>> print(f"{m * 1e3:.4f} N mm")
     0.9350 N mm
+
+    With V_M of SKF's diagram at H/d_m = 5/38.5:
+
+    >>> print(f"{drag_moment(3000 * 2 * np.pi / 60, 20e-6, 25e-3, 52e-3, 5e-3) * 1e3:.4f} N mm")
+    0.7273 N mm
     """
     n = np.abs(np.asarray(shaft_speed, dtype=float)) / _RPM
     nu = check_positive("kinematic_viscosity", kinematic_viscosity, "m^2/s") / _CST
     d = check_positive("bore", bore, "m") / _MM
     big = check_positive("outside_diameter", outside_diameter, "m") / _MM
     h = check_nonnegative("oil_level", oil_level, "m") / _MM
-    vm = check_nonnegative("drag_loss_factor", drag_loss_factor, "-")
     if bearing_type not in _KZ:
         raise InputError(f"bearing_type must be one of {list(_KZ)}, got {bearing_type!r}")
     if isinstance(rows, bool) or rows not in (1, 2):
@@ -542,6 +548,9 @@ def drag_moment(shaft_speed, kinematic_viscosity, bore, outside_diameter, oil_le
     if np.any(h > 0.5 * dm):
         raise InputError(f"oil_level must be <= d_m/2 = {float(np.min(0.5 * dm)):g} mm [mm] (at most up to the "
                          f"bearing's centre), got {float(np.max(h)):g} mm")
+    if drag_loss_factor is None:  # SKF's diagram, ball-bearing curve
+        drag_loss_factor = _drag_loss_factor(h * _MM, dm * _MM, "ball")
+    vm = check_nonnegative("drag_loss_factor", drag_loss_factor, "-")
     kz = _KZ[bearing_type]
     k_ball = rows * kz * (d + big) / (big - d) * 1e-12
     t = 2.0 * np.arccos((0.6 * dm - h) / (0.6 * dm))
@@ -572,6 +581,8 @@ class SKFTorque(NamedTuple):
     """mu_sl. [-]"""
     warnings: tuple = ()
     """The warnings raised (e.g. a sealed bearing without seal data, whose M_seal is left out), as messages."""
+    drag_loss_factor: object = None
+    """V_M of an oil bath's drag moment (given, or SKF's diagram at H/d_m); None for other lubrication. [-]"""
 
 
 def _load_variables(fr, fa, n, dm, c, bearing_type, c0):
@@ -636,8 +647,7 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
         :func:`self_aligning_constants`), ``thrust`` (K_Z = 3.8, :data:`THRUST_BALL_CONSTANTS`; axial
         load only).
     lubrication : {"grease", "oil-air", "oil-jet", "oil-bath"}
-        Sets K_rs; an oil bath adds its drag moment (:func:`drag_moment`; needs ``oil_level`` and
-        ``drag_loss_factor``).
+        Sets K_rs; an oil bath adds its drag moment (:func:`drag_moment`; needs ``oil_level``).
     static_load_rating : float, optional
         C0, needed for a deep-groove bearing under axial load. [N]
     seal : str, optional
@@ -655,7 +665,7 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
     oil_level : float, optional
         Oil bath: H from the lowest point of the outer raceway. [m]
     drag_loss_factor : float, optional
-        Oil bath: V_M of SKF's diagram at H/d_m. [-]
+        Oil bath: V_M in place of SKF's diagram at H/d_m (:func:`bearinglab.friction.drag.drag_loss_factor`). [-]
     contact_angle : float, optional
         Nominal contact angle of a single-row angular-contact bearing, for SKF's constants (40 deg). [rad]
 
@@ -694,9 +704,9 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
     if lubrication not in LUBRICATION_METHODS:
         raise InputError(f"lubrication must be one of {list(LUBRICATION_METHODS)}, got {lubrication!r}")
     bath = lubrication == "oil-bath"
-    if bath and (oil_level is None or drag_loss_factor is None):
-        raise InputError("oil_level: an oil bath needs the oil level H and the drag loss factor V_M (SKF's diagram "
-                         "at H/d_m) for its drag moment")
+    if bath and oil_level is None:
+        raise InputError("oil_level: an oil bath needs the oil level H for its drag moment (V_M follows from SKF's "
+                         "diagram at H/d_m; drag_loss_factor= overrides it)")
     if not bath and (oil_level is not None or drag_loss_factor is not None):
         raise InputError(f"oil_level: the oil level and drag loss factor belong to lubrication='oil-bath', not "
                          f"{lubrication!r}")
@@ -743,10 +753,15 @@ def skf(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside
     m_drag = (drag_moment(omega, nu * _CST, d * _MM, big * _MM, oil_level, drag_loss_factor,
                           bearing_type=bearing_type, rows=2 if bearing_type in _TWO_ROWS else 1) / _MM
               if bath else 0.0)
+    vm = None
+    if bath:  # the V_M used: the one given, else SKF's diagram (oil_level checked by drag_moment)
+        vm = (_drag_loss_factor(oil_level, dm * _MM, "ball") if drag_loss_factor is None
+              else np.asarray(drag_loss_factor, dtype=float)[()])
     total = m_rr + m_sl + m_seal + m_drag
     shape = np.broadcast(total, mu).shape
     out = [np.broadcast_to(x * _MM, shape)[()] for x in (m_rr, m_sl, m_seal, m_drag, total)]
-    return SKFTorque(*out, np.broadcast_to(total * _MM * omega, shape)[()], np.broadcast_to(mu, shape)[()])
+    return SKFTorque(*out, np.broadcast_to(total * _MM * omega, shape)[()], np.broadcast_to(mu, shape)[()],
+                     drag_loss_factor=vm)
 
 
 def _seal_moment(seal, seals, seal_diameter, override, outside_diameter, bearing_type="radial"):

@@ -9,7 +9,8 @@ Parts and tables
 ----------------
 RollerConstants              R1-R4, S1-S4 of a series (the forms of SKF's table 2a use what they need)
 roller_series_constants      the constants of a series of a type
-roller_drag_moment           M_drag = 10 V_M K_roll B d_m^4 n^2 of an oil bath
+roller_drag_moment           M_drag = 10 V_M K_roll B d_m^4 n^2 of an oil bath (V_M from the oil level:
+                             :func:`bearinglab.friction.drag.drag_loss_factor`, roller-bearing curve)
 CYLINDRICAL_CONSTANTS, TAPERED_CONSTANTS, SPHERICAL_CONSTANTS, ROLLER_TYPE_CONSTANTS,
 ROLLER_EHL_COEFFICIENTS, ROLLER_SEAL_CONSTANTS   the tables
 
@@ -39,6 +40,7 @@ import numpy as np
 from .._validate import check_nonnegative, check_positive
 from ..errors import InputError, ValidityWarning
 from . import skf
+from .drag import drag_loss_factor as _drag_loss_factor
 
 __all__ = [
     "CYLINDRICAL_CONSTANTS",
@@ -178,8 +180,8 @@ def _load_variables(fr, fa, dm, c, bearing_type, axial_factor):
     return np.minimum(g_rr_e, g_rr_l), np.minimum(g_sl_e, g_sl_l)
 
 
-def roller_drag_moment(shaft_speed, bore, outside_diameter, width, drag_loss_factor, *, bearing_type="cylindrical",
-                       full_complement=False):
+def roller_drag_moment(shaft_speed, bore, outside_diameter, width, drag_loss_factor=None, *, bearing_type="cylindrical",
+                       full_complement=False, oil_level=None):
     r"""Drag moment of a roller bearing in an oil bath (SKF General Catalogue 6000).
 
     Parameters
@@ -190,12 +192,15 @@ def roller_drag_moment(shaft_speed, bore, outside_diameter, width, drag_loss_fac
         d, D; d_m = (d + D)/2. [m]
     width : array_like
         B, the width of the inner ring. [m]
-    drag_loss_factor : array_like
-        V_M, read from SKF's diagram 2 (the roller-bearing curve) at H/d_m. [-]
+    drag_loss_factor : array_like, optional
+        V_M in place of SKF's diagram 2 (the roller-bearing curve) at H/d_m. [-]
     bearing_type : {"cylindrical", "tapered", "spherical"}
         Sets K_Z and K_L (:data:`ROLLER_TYPE_CONSTANTS`).
     full_complement : bool
         A cylindrical roller bearing without cage.
+    oil_level : array_like, optional
+        H from the lowest point of the outer ring raceway, for V_M of SKF's diagram
+        (:func:`bearinglab.friction.drag.drag_loss_factor`); needed unless ``drag_loss_factor`` is given. [m]
 
     Returns
     -------
@@ -213,14 +218,23 @@ def roller_drag_moment(shaft_speed, bore, outside_diameter, width, drag_loss_fac
 
     >>> print(f"{roller_drag_moment(3500 * 2 * np.pi / 60, 40e-3, 80e-3, 23e-3, 0.3e-4, bearing_type='spherical') * 1e3:.2f} N mm")
     14.46 N mm
+
+    The same with V_M of the digitised diagram at its oil level H = 2.5 mm:
+
+    >>> print(f"{roller_drag_moment(3500 * 2 * np.pi / 60, 40e-3, 80e-3, 23e-3, bearing_type='spherical', oil_level=2.5e-3) * 1e3:.2f} N mm")
+    14.90 N mm
     """
     kz, kl = _type_constants(bearing_type, full_complement)
     n = np.abs(np.asarray(shaft_speed, dtype=float)) / _RPM
     d = check_positive("bore", bore, "m") / _MM
     big = check_positive("outside_diameter", outside_diameter, "m") / _MM
     b = check_positive("width", width, "m") / _MM
-    vm = check_nonnegative("drag_loss_factor", drag_loss_factor, "-")
     dm = 0.5 * (d + big)
+    if drag_loss_factor is None:
+        if oil_level is None:
+            raise InputError("oil_level: the drag moment needs the oil level H (V_M of SKF's diagram) or drag_loss_factor")
+        drag_loss_factor = _drag_loss_factor(oil_level, dm * _MM, "roller")
+    vm = check_nonnegative("drag_loss_factor", drag_loss_factor, "-")
     k_roll = kl * kz * (d + big) / (big - d) * 1e-12
     return (10.0 * vm * k_roll * b * dm**4 * n**2 * _MM)[()]
 
@@ -235,7 +249,7 @@ def _type_constants(bearing_type, full_complement):
 def skf_roller(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, outside_diameter, *,
                bearing_type="cylindrical", series=None, constants=None, axial_factor=None, full_complement=False,
                lubrication="grease", width=None, drag_loss_factor=None, ehl_coefficient=None,
-               sliding_friction_coefficient=None, seal=None, seals=2, seal_diameter=None):
+               sliding_friction_coefficient=None, seal=None, seals=2, seal_diameter=None, oil_level=None):
     r"""Frictional moment of a cylindrical, tapered or spherical roller bearing by the SKF model.
 
     Parameters
@@ -259,11 +273,11 @@ def skf_roller(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, 
     full_complement : bool
         A cylindrical roller bearing without cage (its constants and K_Z, K_L).
     lubrication : {"grease", "oil-air", "oil-jet", "oil-bath"}
-        Sets K_rs; an oil bath adds the drag moment (needs ``width`` and ``drag_loss_factor``).
+        Sets K_rs; an oil bath adds the drag moment (needs ``width`` and ``oil_level``).
     width : float, optional
         B of the inner ring, for the drag moment. [m]
     drag_loss_factor : float, optional
-        V_M of SKF's diagram at H/d_m (roller-bearing curve). [-]
+        V_M in place of SKF's diagram at H/d_m (roller-bearing curve, :func:`bearinglab.friction.drag.drag_loss_factor`). [-]
     ehl_coefficient : float, optional
         mu_EHL; by default SKF's value of the type (:data:`ROLLER_EHL_COEFFICIENTS`). [-]
     sliding_friction_coefficient : array_like, optional
@@ -274,6 +288,8 @@ def skf_roller(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, 
         Sealed sides, 0, 1 or 2. [-]
     seal_diameter : float, optional
         The seal counterface d_s (E of a cylindrical bearing, d2 of a spherical one). [m]
+    oil_level : float, optional
+        Oil bath: H from the lowest point of the outer ring raceway, for V_M of SKF's diagram. [m]
 
     Returns
     -------
@@ -303,9 +319,12 @@ def skf_roller(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, 
         raise InputError(f"lubrication must be one of {list(skf.LUBRICATION_METHODS)}, got {lubrication!r}")
     kz, _ = _type_constants(bearing_type, full_complement)
     bath = lubrication == "oil-bath"
-    if bath and (width is None or drag_loss_factor is None):
-        raise InputError("drag_loss_factor: an oil bath needs V_M (SKF's diagram at H/d_m) and the inner-ring width B "
-                         "for the drag moment of a roller bearing")
+    if bath and (width is None or (drag_loss_factor is None and oil_level is None)):
+        raise InputError("oil_level: an oil bath needs the oil level H (V_M follows from SKF's diagram at H/d_m; "
+                         "drag_loss_factor= overrides it) and the inner-ring width B for the drag moment of a roller bearing")
+    if not bath and (oil_level is not None or drag_loss_factor is not None):
+        raise InputError(f"oil_level: the oil level and drag loss factor belong to lubrication='oil-bath', not "
+                         f"{lubrication!r}")
     if constants is None:
         if series is None:
             raise InputError("give the bearing series (series=) or its constants (constants=)")
@@ -334,12 +353,17 @@ def skf_roller(radial_load, axial_load, shaft_speed, kinematic_viscosity, bore, 
           else check_nonnegative("sliding_friction_coefficient", sliding_friction_coefficient, "-"))
     m_sl = g_sl * mu
     m_seal = _seal(seal, seals, seal_diameter, big)
-    m_drag = (roller_drag_moment(omega, d * _MM, big * _MM, width, drag_loss_factor, bearing_type=bearing_type,
+    vm = None
+    if bath:  # the V_M used: the one given, else SKF's diagram at H/d_m (roller-bearing curve)
+        vm = (_drag_loss_factor(oil_level, dm * _MM, "roller") if drag_loss_factor is None
+              else np.asarray(drag_loss_factor, dtype=float)[()])
+    m_drag = (roller_drag_moment(omega, d * _MM, big * _MM, width, vm, bearing_type=bearing_type,
                                  full_complement=full_complement) / _MM if bath else 0.0)
     total = m_rr + m_sl + m_seal + m_drag
     shape = np.broadcast(total, mu).shape
     out = [np.broadcast_to(x * _MM, shape)[()] for x in (m_rr, m_sl, m_seal, m_drag, total)]
-    return skf.SKFTorque(*out, np.broadcast_to(total * _MM * omega, shape)[()], np.broadcast_to(mu, shape)[()])
+    return skf.SKFTorque(*out, np.broadcast_to(total * _MM * omega, shape)[()], np.broadcast_to(mu, shape)[()],
+                         drag_loss_factor=vm)
 
 
 def _seal(seal, seals, seal_diameter, big):
@@ -379,7 +403,7 @@ def skf_roller_for_bearing(bearing, radial_load, axial_load, shaft_speed, kinema
     lubrication : {"grease", "oil-air", "oil-jet", "oil-bath"}
         See :func:`skf_roller`.
     **options : optional
-        Passed to :func:`skf_roller` (``drag_loss_factor``, ``constants``, ...).
+        Passed to :func:`skf_roller` (``oil_level``, ``drag_loss_factor``, ``constants``, ...).
 
     Returns
     -------

@@ -62,6 +62,9 @@ class RatingLife(NamedTuple):
     the pitch diameter (:attr:`rated_viscosity_diameter_source` says which). [m]"""
     rated_viscosity_diameter_source: str = ""
     """``"mean diameter (d + D)/2"`` or ``"pitch diameter"``."""
+    contamination_factor: float | None = None
+    """e_C used for a_ISO (the factor given, or the value of the cleanliness class at the pitch diameter); None
+    without a lubricant. [-]"""
 
 
 def _viscosity(kinematic_viscosity, lubricant):

@@ -319,7 +319,7 @@ def _rating_life(bearing, loads, shaft_speed, nu, contamination, reliability, ep
     return RatingLife(
         r.dynamic_load_rating, r.static_load_rating, r.fatigue_load_limit, r.rating_source, p[()], l10[()],
         (l10 * duration)[()], a1, kappa_out, a_iso_out, lnm_out, lnm_time, l10r[()], lnmr, s0[()], (),
-        nu_out, np.broadcast_to(nu1, speed.shape)[()], float(dm), dm_source)
+        nu_out, np.broadcast_to(nu1, speed.shape)[()], float(dm), dm_source, None if nu is None else float(ec))
 
 
 def miner_life(lives, revolution_shares, *, axis=-1):

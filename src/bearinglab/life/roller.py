@@ -204,7 +204,7 @@ def roller_rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None,
     return RatingLife(
         r.dynamic_load_rating, r.static_load_rating, r.fatigue_load_limit, r.rating_source, p[()], l10[()],
         (l10 * duration)[()], a1, kappa_out, a_iso_out, lnm_out, lnm_time, l10r[()], lnmr, s0[()], messages,
-        nu_out, np.broadcast_to(nu1, speed.shape)[()], float(dm), dm_source)
+        nu_out, np.broadcast_to(nu1, speed.shape)[()], float(dm), dm_source, None if nu is None else float(ec))
 
 
 def _slices(bearing, loads, given, n_slices, radial_clearance):

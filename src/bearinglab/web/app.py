@@ -6,7 +6,8 @@ GET  /                         the calculator page; with the form's fields in th
 GET  /api/<endpoint>           one calculation, query parameters (shareable links)
 POST /api/<endpoint>           one calculation, a JSON body of the same parameters
 GET  /csv/<endpoint>           the same calculation's document as CSV (the page's download link)
-GET  /docs, /openapi.json      every endpoint and field, with units, ranges and the limits
+GET  /docs, /redoc, /openapi.json   every endpoint and field, with units, ranges and the limits; Swagger UI
+                               and ReDoc load their scripts from the package (fastapi-offline), no network
 GET  /static/...               the style sheet and the page's script
 
 Limits: a request holds at most ``case_limit`` cases, runs at most ``time_budget`` seconds (then its
@@ -30,10 +31,11 @@ import asyncio
 import contextlib
 from pathlib import Path
 
-from fastapi import FastAPI, Request
+from fastapi import Request
 from fastapi.responses import HTMLResponse, Response
 from fastapi.staticfiles import StaticFiles
 from fastapi.templating import Jinja2Templates
+from fastapi_offline import FastAPIOffline
 
 from .. import __version__, calculations, tables
 from ..calculations import BODY_LIMIT, CALCULATIONS, CASE_LIMIT, TIME_BUDGET, RequestError
@@ -134,6 +136,42 @@ class _Server:
         return 500, api.error_body(f"internal error: {value}", None, "failed")
 
 
+#: The content security policy of /docs and /redoc: this server only (inline scripts and styles are the pages'
+#: own; ReDoc's search runs in a worker made from a blob; images may be data: URIs).
+_DOCS_CSP = ("default-src 'self'; script-src 'self' 'unsafe-inline'; style-src 'self' 'unsafe-inline'; "
+             "img-src 'self' data:; font-src 'self' data:; worker-src 'self' blob:; connect-src 'self'")
+
+
+_DOCS_STATIC = "/static-offline-docs"  # Swagger UI's and ReDoc's files, mounted from fastapi-offline
+
+
+def _docs_pages(app):
+    """/docs (Swagger UI) and /redoc (ReDoc) with their files from the fastapi-offline package, and a content
+    security policy: ReDoc's side menu shows its maker's logo from a CDN (hard-coded in its script); the
+    browser loads from this server only, so the logo is not fetched (ReDoc then leaves it out). Swagger UI's
+    validator badge, which calls an outside server, is off."""
+    from fastapi.openapi.docs import get_redoc_html, get_swagger_ui_html
+
+    favicon = f"{_DOCS_STATIC}/favicon.png"
+
+    @app.get("/docs", include_in_schema=False)
+    async def swagger_ui():
+        page = get_swagger_ui_html(openapi_url=app.openapi_url, title="bearinglab - Swagger UI",
+                                   swagger_js_url=f"{_DOCS_STATIC}/swagger-ui-bundle.js",
+                                   swagger_css_url=f"{_DOCS_STATIC}/swagger-ui.css", swagger_favicon_url=favicon,
+                                   swagger_ui_parameters={"validatorUrl": None})
+        page.headers["Content-Security-Policy"] = _DOCS_CSP
+        return page
+
+    @app.get("/redoc", include_in_schema=False)
+    async def redoc():
+        page = get_redoc_html(openapi_url=app.openapi_url, title="bearinglab - ReDoc",
+                              redoc_js_url=f"{_DOCS_STATIC}/redoc.standalone.js", redoc_favicon_url=favicon,
+                              with_google_fonts=False)
+        page.headers["Content-Security-Policy"] = _DOCS_CSP
+        return page
+
+
 def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_budget=TIME_BUDGET,
                memory_bound_mb=MEMORY_BOUND_MB):
     """The web calculator as a FastAPI application.
@@ -164,8 +202,11 @@ def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_
         server.light.close()
         server.heavy.close()
 
-    app = FastAPI(title="bearinglab", version=__version__, description=_description(case_limit, time_budget),
-                  lifespan=lifespan, redoc_url=None)
+    # /docs and /redoc serve Swagger UI's and ReDoc's files from the fastapi-offline package (FastAPI's own
+    # pages load them from a CDN, blank offline); Swagger UI's validator badge calls an outside server: off
+    app = FastAPIOffline(title="bearinglab", version=__version__, description=_description(case_limit, time_budget),
+                         lifespan=lifespan, docs_url=None, redoc_url=None, static_url=_DOCS_STATIC)
+    _docs_pages(app)
     app.state.server = server
     app.mount("/static", StaticFiles(directory=_HERE / "static"), name="static")
     templates = Jinja2Templates(directory=_HERE / "templates")

@@ -179,13 +179,13 @@ SECTIONS = (
     Section("bearing-set", "Bearing set", "bearing-set", "Two bearings of the catalog bearing."),
     Section("life", "Rating life", "life", ""),
     Section("stand-load", "Test-stand load", "stand-load",
-            "Minimum axial load on a test stand at this speed (spec 000 section 3)."),
+            "Minimum axial load on a test stand at this speed (the stand's test method)."),
     Section("runout", "Runout", "runout", "Inner-ring displacement from the error set."),
     Section("friction", "Friction torque", "friction",
             "F_r = |(F_x, F_y)| where F_x, F_y are given; the moments do not enter these models."),
     Section("clearance", "Mounted clearance", "clearance",
             "Diametral clearance from the unmounted class range through the fits, the ring "
-            "temperatures and the speed (issue 23); least / probable / largest."),
+            "temperatures and the speed; least / probable / largest."),
     Section("film", "Lubricant film", "film",
             "EHL film per contact (Hamrock-Dowson), at the ball loads of the load distribution."),
     Section("temperature", "Operating temperature", "temperature",
@@ -337,9 +337,8 @@ def _left_out(section, values, lists=None):
                     "temperature); a fixed viscosity is not enough.")
         if not has.get("bearing"):
             return "Left out: the thermal balance needs a catalog bearing (its SKF friction data)."
-        if values.get("lubrication") == "oil-bath":
-            return ("Left out: the thermal balance takes no oil bath yet (its drag loss needs SKF's "
-                    "V_M chart at each temperature's oil level); choose oil-jet, oil-air or grease.")
+        if values.get("lubrication") == "oil-bath" and not has.get("oil_level"):
+            return "Left out: an oil bath needs its oil level H (its drag loss follows from SKF's V_M diagram)."
     if section not in SECTIONS:
         return f"Left out: {section.note}"
     if section.key == "friction":
