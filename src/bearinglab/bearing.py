@@ -177,7 +177,9 @@ def check_model(bearing, model):
     ------
     InputError
         Naming the model, the bearing, its type and what the model does not cover; ISO 281 lives
-        (``bearinglab life``) cover every type.
+        (``bearinglab life``) cover every type. For a type the model covers but whose fields it lacks
+        (the catalog has no ball set of the four-point, double-row, self-aligning and thrust types), every
+        missing field in one line.
 
     Examples
     --------
@@ -186,12 +188,38 @@ def check_model(bearing, model):
     ...
     bearinglab.errors.InputError: high-speed: 'QJ 208' is a four-point bearing, and the model does not cover the four contacts of each ball (two on each ring) yet; its ISO 281 life is given by `bearinglab life`
     """
-    if covers(bearing, model):
-        return
     label = getattr(bearing, "designation", "") or "this bearing"
+    if covers(bearing, model):
+        missing = _missing_fields(bearing) if model in _BALL_BY_BALL else ()
+        if missing:
+            raise InputError(f"{model}: {label!r} lacks {', '.join(missing)}, which the model of a {bearing.type} "
+                             "bearing needs (no public source gives the ball set of this type, so the catalog leaves "
+                             "it unknown): give them in a bearing file or user catalog, or inline (--balls, "
+                             "--ball-diameter, --pitch-diameter, --inner-conformity, ...)")
+        return
     raise InputError(f"{model}: {label!r} is a {bearing.type} bearing, and the model does not cover "
                      f"{_NOT_COVERED.get(bearing.type, 'this type')} yet; its ISO 281 life is given by "
                      "`bearinglab life`")
+
+
+# the models that solve the new types ball by ball, and the fields each type needs for it
+_BALL_BY_BALL = ("load-distribution", "bearing-set", "film")
+_NEEDS = ("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity", "contact_angle")
+
+
+def _missing_fields(bearing):
+    """The fields the 5-DOF model of a four-point, double-row, self-aligning or thrust bearing needs and
+    ``bearing`` lacks (a single row: none listed here; its model names a missing field itself)."""
+    kind = getattr(bearing, "type", "angular")
+    if kind in ("radial", "angular"):
+        return ()
+    out = [k for k in _NEEDS if getattr(bearing, k, None) is None
+           and not (kind == "self-aligning" and k == "outer_conformity" and bearing.contact_angle is not None)]
+    if kind in ("four-point", "double-row-angular", "self-aligning") and bearing.radial_clearance is None:
+        out.append("radial_clearance")
+    if kind in ("double-row-angular", "double-row-radial") and bearing.row_distance is None:
+        out.append("row_distance")
+    return tuple(out)
 
 
 def _clearance_range(e, ball_diameter):
