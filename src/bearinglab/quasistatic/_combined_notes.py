@@ -53,10 +53,12 @@ def _rows_outer_angle(geo, ai, ao, sel):
     these types does not compute from the geometry: see ``bearinglab life``)."""
     from .light_load import OUTER_ANGLE_FRACTION
 
-    sign = geo.elements.sign
+    # as light_load: |alpha_o| < 0.1 alpha0 while |alpha_i| > alpha0, each row on its own side (a deep-groove
+    # row on either)
+    sign = geo.elements.sign if geo.kind != "double-row-radial" else np.sign(ai)
     with np.errstate(invalid="ignore"):
-        lost = np.any((sign * ao < OUTER_ANGLE_FRACTION * geo.a0) & (sign * ai > 0), axis=1) if geo.a0 > 0 else \
-            np.zeros(len(ao), dtype=bool)
+        lost = np.any((np.abs(ao) < OUTER_ANGLE_FRACTION * geo.a0) & (sign * ai > geo.a0), axis=1) \
+            if geo.a0 > 0 else np.zeros(len(ao), dtype=bool)
     if not lost.any():
         return []
     k = int(np.flatnonzero(lost)[0])

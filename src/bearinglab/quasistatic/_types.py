@@ -35,6 +35,8 @@ held            the freedoms the type does not resist (a self-aligning ring's ti
 check_loads     the loads the type cannot carry (refused in one line)
 first_contact   delta_z at which the bearing first carries a thrust F_z > 0 (half its axial play)
 bearing_options the model's options from a BallBearing (clearance, row distance), missing fields named
+misalignment_limit, misalignment_note   a self-aligning ring's tilt at which a contact reaches the outer
+                ring's side, and the warning beyond it
 
 References
 ----------
@@ -65,7 +67,8 @@ from . import _combined_balls, _ring
 from ._combined_balls import _hertz_k, _log_k, _rest_balls
 
 __all__ = ["AT_SPEED", "MODELLED", "Elements", "assemble", "bearing_options", "check_loads", "elements",
-           "first_contact", "geometry", "held", "offsets", "reaction", "rest_balls", "start", "steps"]
+           "first_contact", "geometry", "held", "misalignment_limit", "misalignment_note", "offsets", "reaction",
+           "rest_balls", "start", "steps"]
 
 #: The types of this module (``BallBearing.type`` words).
 MODELLED = ("four-point", "double-row-angular", "double-row-radial", "self-aligning", "thrust")
@@ -585,6 +588,32 @@ def first_contact(geo):
     if geo.kind == "thrust":
         return 0.0
     return max(math.sqrt(max(geo.big_a ** 2 - el.radial_offset ** 2, 0.0)) - el.axial_offset, 0.0)
+
+
+def misalignment_limit(bearing):
+    """The tilt of a self-aligning bearing's inner ring at which a ball's contact reaches the side of the
+    outer ring: its row's contact on the sphere (radius R_o = f_o D, at alpha0 from the centre plane) moves
+    to alpha0 + theta, so theta_max = arcsin(B / (2 R_o)) - alpha0 (B the outer ring's width, chamfers
+    left out: an upper bound of what the maker permits); None without the width. [rad]"""
+    if bearing.type != "self-aligning" or bearing.width is None or bearing.outer_conformity is None:
+        return None
+    big_r = bearing.outer_conformity * bearing.require("ball_diameter")
+    return math.asin(min(0.5 * bearing.width / big_r, 1.0)) - bearing.require("contact_angle")
+
+
+def misalignment_note(bearing, tilt):
+    """The warning of a self-aligning bearing tilted beyond :func:`misalignment_limit` (``tilt`` (..., 2):
+    theta_x, theta_y [rad]), or None."""
+    limit = misalignment_limit(bearing)
+    if limit is None:
+        return None
+    angle = np.hypot(np.asarray(tilt)[..., 0], np.asarray(tilt)[..., 1])
+    over = angle > limit
+    if not np.any(over):
+        return None
+    return (f"misalignment: the inner ring is tilted by up to {math.degrees(float(np.nanmax(angle))):.3g} deg, beyond "
+            f"the {math.degrees(limit):.3g} deg at which a ball's contact reaches the side of the outer ring (its "
+            "sphere ends at the ring's width); the balls would run off the raceway")
 
 
 def bearing_options(bearing):

@@ -843,12 +843,14 @@ def combined_analysis(bearing, loads, shaft_speed=0.0, *, reduced_modulus=None, 
 
     check_model(bearing, "load-distribution")
     options.setdefault("bearing_type", bearing.type)
-    if bearing.type in _types.MODELLED:  # their clearance and row distance (missing fields named)
-        for key, value in _types.bearing_options(bearing).items():
-            options.setdefault(key, value)
-    else:
+    if bearing.type not in _types.MODELLED:
         options.setdefault("radial_clearance", _preload_clearance(bearing))
-    return load_distribution(loads, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
+        return load_distribution(loads, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
+    for key, value in _types.bearing_options(bearing).items():  # their clearance and row distance
+        options.setdefault(key, value)
+    r = load_distribution(loads, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
+    note = _types.misalignment_note(bearing, np.asarray(r.displacement)[..., 3:])
+    return r if note is None else r._replace(warnings=(*r.warnings, note))
 
 
 def _bearing_geometry(bearing, first_ball_angle=0.0, stiffness_at="operating", raceway_control="outer", *,
