@@ -62,8 +62,8 @@ def _rows_outer_angle(geo, ai, ao, sel):
     if not lost.any():
         return []
     k = int(np.flatnonzero(lost)[0])
-    return [f"light load: the outer contact angle of a row is driven to zero in {int(lost.sum())} case(s) (below "
-            f"{OUTER_ANGLE_FRACTION:g} x the free angle), e.g. case {sel[k]}: the load is too small for the speed"]
+    return [(f"light load: the outer contact angle of a row is driven to zero in {int(lost.sum())} case(s) (below "
+             f"{OUTER_ANGLE_FRACTION:g} x the free angle), e.g. case {sel[k]}: the load is too small for the speed")]
 
 
 def _angular_notes(loads, out, ok):
