@@ -410,6 +410,8 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
         out["displacement"] = np.where(ok[:, None], ub, np.nan)
         notes += [f"bearing {j}: {m}" for m in combined._notes(geo, None, np.full(len(flat), w), out, ok)]
         per.append({k: v.reshape(shape + v.shape[1:]) for k, v in out.items() if k not in ("residual", "floor")})
+        if geo.elements is not None:  # the other types: a ball per row, each entry's azimuth and row
+            per[-1].update(azimuth=geo.psi, row=geo.elements.row)
     notes += _unloaded_notes(per, ok)
     if over.any():
         notes.append(f"{int(over.sum())} case(s) not converged (NaN, converged False; first: case "
