@@ -41,16 +41,16 @@ misalignment_limit, misalignment_note   a self-aligning ring's tilt at which a c
 References
 ----------
 .. [1] T. A. Harris and M. N. Kotzalas, *Essential Concepts of Bearing Technology*, 5th ed., CRC Press,
-   2006, ch. 2 (double-row, self-aligning, four-point and thrust ball bearings; groove curvature centres,
-   clearance and end play) and *Advanced Concepts of Bearing Technology*, ch. 1 (the five-degree-of-
-   freedom distribution of internal loading).
+   2006, ch. 2 (ball-bearing macrogeometry: groove-curvature centres, clearance, contact angle and end
+   play) and *Advanced Concepts of Bearing Technology*, ch. 1 (the five-degree-of-freedom distribution of
+   internal loading).
 .. [2] A. B. Jones, "A general theory for elastically constrained ball and radial roller bearings under
    arbitrary load and speed conditions," J. Basic Eng., vol. 82, no. 2, pp. 309-320, 1960,
    doi:10.1115/1.3662587 (each ball's equilibrium between its contacts).
 .. [3] ISO/TS 16281:2008 (the pitch radius as the arm of tilts and moments; the sphere r_e = D_w (1 +
    1/gamma) / 2 of a self-aligning bearing's outer raceway).
 .. [4] J. I. Amasorrain, X. Sagartzazu and J. Damian, "Load distribution in a four contact-point slewing
-   bearing," Mechanism and Machine Theory, vol. 38, pp. 479-496, 2003, doi:10.1016/S0094-114X(03)00003-X
+   bearing," Mechanism and Machine Theory, vol. 38, pp. 479-496, 2003
    (the four contacts of a ball between two pairs of groove-curvature centres offset by the angle).
 """
 
