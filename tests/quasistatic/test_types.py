@@ -437,3 +437,33 @@ def test_bearing_set_takes_the_new_types():
     assert bool(r.converged)
     # the thrust bearing takes no radial load
     assert r.bearing_loads[1, 0] == pytest.approx(0.0, abs=1e-9) and r.bearing_loads[1, 2] > 0
+
+
+def test_a_shaft_on_two_self_aligning_bearings_is_simply_supported():
+    """Two self-aligning bearings take no moment: the shaft is a beam on two pins, and statics alone gives
+    the support loads (the bearings through bearing_reactions, at rest and at speed)."""
+    from bearinglab import shaft
+
+    secs = (shaft.Section(0.05, 0.04), shaft.Section(0.20, 0.045), shaft.Section(0.05, 0.04))
+    sup = (shaft.BearingSupport("A", 0.025, SA, axial=True), shaft.BearingSupport("B", 0.275, SA.replace(designation="B")))
+    for speed in (0.0, 3000 * RPM):
+        system = shaft.ShaftSystem(shaft.Shaft(secs), sup, loads=(shaft.PointLoad(0.10, fx=3000.0, fz=800.0),),
+                                   speed=speed)
+        r = shaft.solve(system)
+        loads = r.support_loads[0]
+        assert loads[0, 0] == pytest.approx(3000.0 * 0.175 / 0.25, rel=1e-9)
+        assert loads[1, 0] == pytest.approx(3000.0 * 0.075 / 0.25, rel=1e-9)
+        assert loads[0, 2] == pytest.approx(800.0, rel=1e-9) and np.all(np.abs(loads[:, 3:5]) < 1e-9)
+
+
+def test_a_thrust_bearing_on_a_shaft_takes_the_thrust_only():
+    from bearinglab import catalog, shaft
+
+    secs = (shaft.Section(0.05, 0.04), shaft.Section(0.20, 0.045), shaft.Section(0.05, 0.04))
+    deep = catalog.get("6208")
+    sup = (shaft.BearingSupport("A", 0.02, deep), shaft.BearingSupport("T", 0.04, THRUST, axial=True),
+           shaft.BearingSupport("B", 0.275, deep))
+    r = shaft.solve(shaft.ShaftSystem(shaft.Shaft(secs), sup, loads=(shaft.PointLoad(0.15, fx=2000.0, fz=1500.0),)))
+    loads = r.support_loads[0]
+    assert loads[1, 2] == pytest.approx(1500.0, rel=1e-9) and abs(loads[1, 0]) < 1e-9
+    assert loads[0, 0] + loads[2, 0] == pytest.approx(2000.0, rel=1e-9)
