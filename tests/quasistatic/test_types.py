@@ -363,8 +363,9 @@ def test_mirror_symmetry(kind, loads):
        loads=LOADS)
 def test_load_displacement_load(kind, loads):
     """The displacement a load gives, fed to bearing_reactions, gives the load back; the stiffness is the
-    derivative of that load (central differences)."""
-    b = KINDS[kind]
+    derivative of that load (central differences; with clearance, so that no ball sits exactly at first
+    contact, where Q ~ delta^1.5 leaves the differences an error of order sqrt(h))."""
+    b = KINDS[kind] if kind != "four-point" else FOUR.replace(radial_clearance=20e-6)
     f = np.array(loads)
     if kind == "self-aligning":
         f[3:] = 0.0

@@ -439,17 +439,29 @@ def _four_point_start(geo, ga, gr, oa, orr):
 
 
 def _four_point_newton(geo, xa, xr, ia, ir, oa, orr):
-    """Newton on the ball centres with step halving on |b| (converged balls drop out of the work)."""
+    """Newton on the ball centres with step halving on |b|, each ball until its residual is below 1e-14 of its
+    largest contact load or four times its rounding floor (converged balls drop out of the work; the state
+    of an accepted trial is the next iteration's)."""
     shape = xa.shape
     xa, xr = xa.ravel().copy(), xr.ravel().copy()
     iaf, irf = [v.ravel() for v in ia], [v.ravel() for v in ir]
+
+    def state(sel, ea, er):
+        b0, b1, bx, inner, outer = _four_point_state(geo, ea, er, [v[sel] for v in iaf], [v[sel] for v in irf], oa, orr)
+        qmax = np.maximum(np.maximum(inner[0]["q"], inner[1]["q"]), np.maximum(outer[0]["q"], outer[1]["q"]))
+        floor = 4.0 * (inner[0]["noise"] + inner[1]["noise"] + outer[0]["noise"] + outer[1]["noise"])
+        norm = np.hypot(b0, b1)
+        return {"b0": b0, "b1": b1, "bx": bx, "norm": norm, "done": norm <= np.maximum(1e-14 * qmax, floor)}
+
     act = np.arange(xa.size)
+    cur = state(act, xa, xr)
     for _ in range(_BALL_MAX_ITER):
+        keep = ~cur["done"]
+        act = act[keep]
         if act.size == 0:
             break
-        sub_i = ([v[act] for v in iaf], [v[act] for v in irf])
-        b0, b1, bx = _four_point_state(geo, xa[act], xr[act], *sub_i, oa, orr)[:3]
-        norm = np.hypot(b0, b1)
+        cur = {k: (v[keep] if not isinstance(v, tuple) else tuple(x[keep] for x in v)) for k, v in cur.items()}
+        b0, b1, bx = cur["b0"], cur["b1"], cur["bx"]
         det = bx[0] * bx[3] - bx[1] * bx[2]
         s0 = -(bx[3] * b0 - bx[1] * b1) / det
         s1 = -(-bx[2] * b0 + bx[0] * b1) / det
@@ -458,26 +470,28 @@ def _four_point_newton(geo, xa, xr, ia, ir, oa, orr):
         # a ball far from its contacts (a start that penetrates one contact only) is moved by at most D/4
         big = np.hypot(s0, s1) / (0.25 * geo.d)
         t = np.where(big > 1.0, 1.0 / np.where(big > 1.0, big, 1.0), 1.0)
-        pending = np.flatnonzero(norm > 0)
-        accepted = np.zeros(act.size, dtype=bool)
-        accepted[norm == 0] = True
-        for _h in range(_HALVINGS):
+        pending = np.arange(act.size)
+        stalled = np.zeros(act.size, dtype=bool)
+        for h in range(_HALVINGS + 1):
             if pending.size == 0:
                 break
-            ea = xa[act[pending]] + t[pending] * s0[pending]
-            er = xr[act[pending]] + t[pending] * s1[pending]
-            tb0, tb1 = _four_point_state(geo, ea, er, [v[pending] for v in sub_i[0]], [v[pending] for v in sub_i[1]],
-                                         oa, orr)[:2]
-            good = np.hypot(tb0, tb1) < norm[pending]
+            sel = act[pending]
+            ea, er = xa[sel] + t[pending] * s0[pending], xr[sel] + t[pending] * s1[pending]
+            trial = state(sel, ea, er)
+            good = (trial["norm"] < cur["norm"][pending]) | trial["done"]
             g = pending[good]
             xa[act[g]], xr[act[g]] = ea[good], er[good]
-            accepted[g] = True
+            for k, v in trial.items():
+                if isinstance(v, tuple):
+                    for a, b in zip(cur[k], v, strict=True):
+                        a[g] = b[good]
+                else:
+                    cur[k][g] = v[good]
             pending = pending[~good]
             t[pending] *= 0.5
-        step = t * np.hypot(s0, s1)
-        # done: no contact at all, a step below the tolerance, or no decrease possible (at the rounding floor)
-        done = (norm == 0) | (accepted & (step <= _BALL_TOL * geo.d)) | ~accepted
-        act = act[~done]
+            if h == _HALVINGS:
+                stalled[pending] = True  # no decrease: at its rounding floor (or the ring's residual shows it)
+        cur["done"] = cur["done"] | stalled | bad
     return xa.reshape(shape), xr.reshape(shape)
 
 
