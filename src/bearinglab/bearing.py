@@ -176,8 +176,8 @@ def check_model(bearing, model):
     Raises
     ------
     InputError
-        Naming the model, the bearing, its type and what the model does not cover; ISO 281 lives
-        (``bearinglab life``) cover every type. For a type the model covers but whose fields it lacks
+        Naming the model, the bearing, its type and what the model does not cover; the load distribution
+        and the lives (``bearinglab load-distribution``, ``bearinglab life``) cover every type. For a type the model covers but whose fields it lacks
         (the catalog has no ball set of the four-point, double-row, self-aligning and thrust types), every
         missing field in one line.
 
@@ -186,7 +186,7 @@ def check_model(bearing, model):
     >>> check_model(BallBearing(designation="QJ 208", type="four-point"), "high-speed")
     Traceback (most recent call last):
     ...
-    bearinglab.errors.InputError: high-speed: 'QJ 208' is a four-point bearing, and the model does not cover the four contacts of each ball (two on each ring) yet; its ISO 281 life is given by `bearinglab life`
+    bearinglab.errors.InputError: high-speed: 'QJ 208' is a four-point bearing, and the model does not cover the four contacts of each ball (two on each ring) yet; `bearinglab load-distribution` solves its balls and `bearinglab life` gives its lives
     """
     label = getattr(bearing, "designation", "") or "this bearing"
     if covers(bearing, model):
@@ -198,8 +198,8 @@ def check_model(bearing, model):
                              "--ball-diameter, --pitch-diameter, --inner-conformity, ...)")
         return
     raise InputError(f"{model}: {label!r} is a {bearing.type} bearing, and the model does not cover "
-                     f"{_NOT_COVERED.get(bearing.type, 'this type')} yet; its ISO 281 life is given by "
-                     "`bearinglab life`")
+                     f"{_NOT_COVERED.get(bearing.type, 'this type')} yet; `bearinglab load-distribution` solves its "
+                     "balls and `bearinglab life` gives its lives")
 
 
 # the models that solve the new types ball by ball, and the fields each type needs for it

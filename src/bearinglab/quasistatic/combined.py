@@ -30,7 +30,10 @@ measured from the concentric position: with a diametral clearance, a pure thrust
 axial play, A sin(alpha0), and that part is included in delta_z (MASTA's convention). The tilt arm and
 the moment arm are the pitch radius d_m/2 (ISO/TS 16281). Loads and displacements are ordered
 (x, y, z, theta_x, theta_y); the stiffness matrix is d(load)/d(displacement) in N/m, N/rad, N m/m and
-N m/rad. Unloaded balls carry zero load.
+N m/rad. Unloaded balls carry zero load. Four-point, double-row, self-aligning and thrust ball bearings are
+sets of elements, one inner and one outer contact of a ball each, with their own groove-centre offsets and
+Jacobian rows (:mod:`bearinglab.quasistatic._types`; docs/theory/load_distribution.md, "The other
+ball-bearing types").
 
 References
 ----------
@@ -629,7 +632,13 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
         through F_z = 0: a radial load alone puts every ball at alpha = 0, a negative thrust puts them on
         the low shoulder) and the warning says the real bearing cannot be trusted to carry them, which is
         what MESYS and MASTA show (a full-groove solution with a shoulder warning; their contact-ellipse
-        check against the shoulder height needs shoulder data this model does not have).
+        check against the shoulder height needs shoulder data this model does not have). The other types,
+        "four-point", "double-row-angular", "double-row-radial", "self-aligning" and "thrust"
+        (:mod:`bearinglab.quasistatic._types`), take ``free_angle`` as their nominal angle built into the
+        rings (a double-row deep-groove bearing: its free angle) and ``radial_clearance`` apart (None: 0);
+        their ball fields hold a ball per row (``row``). A self-aligning bearing carries no moment and a
+        thrust bearing no radial load (those freedoms are held, their loads must be 0); four-point and
+        thrust bearings are solved at rest only.
     on_failure : {"raise", "flag"}, optional
         Raise :class:`~bearinglab.errors.ConvergenceError` if any case fails (default), or return NaN
         and ``converged`` False for it.
@@ -655,7 +664,9 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
         Who solves: "compiled" the numba kernel (:mod:`bearinglab.quasistatic._combined_kernel`, the same
         algorithm case by case, parallel over the cases), "numpy" the batched numpy path, "auto" (default)
         the kernel when numba is installed. The two agree to rounding (1e-12 relative); each gives a case
-        the same bits in any batch.
+        the same bits in any batch. The other types are solved by the numpy path whatever the engine.
+    row_distance : float, optional
+        Axial distance between the ball centres of the two rows of a double-row bearing (needed there). [m]
 
     Returns
     -------
