@@ -6,7 +6,7 @@ STAMP  := $(VENV)/.installed
 TSTAMP := $(VENV)/.installed-test
 DSTAMP := $(VENV)/.installed-docs
 
-.PHONY: demo test lint docs bench mutants clean
+.PHONY: demo test lint docs bench mutants fuzz clean
 
 $(PY):
 	@command -v $(PYTHON) >/dev/null 2>&1 || { echo "$(PYTHON) not found; set PYTHON=python3" >&2; exit 1; }
@@ -50,6 +50,16 @@ $(BSTAMP): $(PY) pyproject.toml
 bench: $(BSTAMP)
 	$(PY) bench/run_all.py
 
+# the whole pool of the fuzz generated from the registry (every field of every calculation, through the
+# command line and the web API) and the probe of the public functions' numbers (issue 29); `make test`
+# runs a sample of both. The counts go to fuzz-report.txt (TESTING.md keeps them).
+fuzz: $(TSTAMP)
+	rm -f fuzz-report.txt
+	BEARINGLAB_FUZZ=full BEARINGLAB_FUZZ_REPORT=$(CURDIR)/fuzz-report.txt $(PY) -m pytest -q -n 2 \
+		tests/calculations/test_fuzz_registry.py tests/test_api_domains.py -k full
+	@grep "^fuzz " fuzz-report.txt
+	@awk '/^api /{n++; c+=$$3; f+=$$5} END {print "api probe: " n " functions, " c " calls, " f " failures"}' fuzz-report.txt
+
 MSTAMP := $(VENV)/.installed-mutation
 $(MSTAMP): $(TSTAMP)
 	$(PY) -m pip install --quiet -e ".[test,mutation]"
@@ -65,4 +75,4 @@ mutants: $(MSTAMP)
 	@echo "surviving mutants: $(VENV)/bin/mutmut results; one of them: $(VENV)/bin/mutmut show NAME"
 
 clean:
-	rm -rf $(VENV) mutants mutants-results.txt out build *.egg-info src/*.egg-info docs/_build docs/auto_examples docs/sg_execution_times.rst
+	rm -rf $(VENV) mutants mutants-results.txt fuzz-report.txt out build *.egg-info src/*.egg-info docs/_build docs/auto_examples docs/sg_execution_times.rst

@@ -366,6 +366,10 @@ def test_lists_and_ranges_of_one_number_each():
 def test_any_float_written_with_repr_reads_back(x, unit):
     # a number printed by Python (repr: the shortest round-trip form) is one literal of the grammar
     name, scale = unit
+    if x != 0 and x * scale == 0:  # read as 0 in SI though it is not: an underflow, refused (issue 29)
+        with pytest.raises(InputError, match="underflows in SI units"):
+            units.parse_quantity(f"{x!r} {name}", "force", "x")
+        return
     got = units.parse_quantity(f"{x!r} {name}", "force", "x")
     assert got == pytest.approx(x * scale, rel=1e-15)
 

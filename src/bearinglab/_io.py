@@ -504,23 +504,30 @@ def write_text(path, text):
     return Path(path)
 
 
+#: While set to a list, :func:`json_value` appends to it the path (``chain.least.operating_clearance``), the
+#: value and the dict holding it of every non-finite number it writes as None: the calculations check that each such null is one their
+#: document promises (an unbounded life, an unloaded contact), not an overflow (issue 29).
+NULLED = contextvars.ContextVar("bearinglab_json_nulled", default=None)
+
+
 def json_value(obj):
     """``obj`` with numpy arrays and scalars as Python lists and numbers, NaN and inf as ``None``.
 
     Dictionaries keep their order (keys become strings); tuples become lists.
     """
-    import numpy as np
+    import numpy as np  # here, not at import: the command line's --help loads no numpy
 
-    return _json_value(obj, np)
+    nulled = NULLED.get()
+    return _json_plain(obj, np) if nulled is None else _json_recorded(obj, "", nulled, np)
 
 
-def _json_value(obj, np):
+def _json_plain(obj, np):
     if isinstance(obj, dict):
-        return {str(k): _json_value(v, np) for k, v in obj.items()}
+        return {str(k): _json_plain(v, np) for k, v in obj.items()}
     if isinstance(obj, (list, tuple)):
-        return [_json_value(v, np) for v in obj]
+        return [_json_plain(v, np) for v in obj]
     if isinstance(obj, np.ndarray):
-        return _json_value(obj.tolist(), np)
+        return _json_plain(obj.tolist(), np)
     if isinstance(obj, (np.bool_, bool)):
         return bool(obj)
     if isinstance(obj, np.integer):
@@ -529,6 +536,22 @@ def _json_value(obj, np):
         v = float(obj)
         return v if math.isfinite(v) else None
     return obj
+
+
+def _json_recorded(obj, path, nulled, np, parent=None):
+    """:func:`_json_plain`, noting ``(path, value, the dict that holds it)`` of each non-finite number in
+    ``nulled``."""
+    if isinstance(obj, dict):
+        return {str(k): _json_recorded(v, f"{path}.{k}" if path else str(k), nulled, np, obj)
+                for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_json_recorded(v, f"{path}[{i}]", nulled, np, parent) for i, v in enumerate(obj)]
+    if isinstance(obj, np.ndarray):
+        return _json_recorded(obj.tolist(), path, nulled, np, parent)
+    if isinstance(obj, (np.floating, float)) and not isinstance(obj, bool) and not math.isfinite(float(obj)):
+        nulled.append((path, float(obj), parent))
+        return None
+    return _json_plain(obj, np)
 
 
 def json_text(obj):

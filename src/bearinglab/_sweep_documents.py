@@ -15,6 +15,9 @@ Rows (:func:`flatten_document`)
   gives one column per number, named by its indices from 0: ``stiffness_matrix.2.2``,
   ``interference_inner_probable_um.1``.
 - A list of text (``warnings``) is one text cell, its items joined by ``" | "``.
+- A list of tables that :data:`NAMED_LISTS` gives for the calculation (the supports of a shaft, the
+  bearings of a support) spreads each table's scalars under its ``name``, or its index from 0 where the
+  tables have no distinct names: ``supports.front.force_x_N``, ``supports.front.bearings.1.static_safety_factor``.
 - Other lists are left out: tables (the balls, the iteration table, the bearings of a set) and longer
   series (a trajectory). The single command with the case's inputs prints them.
 - An empty list is left out (no warnings: no cell).
@@ -31,7 +34,9 @@ value, a list ``a, b, c UNIT``); a range is computed in its own unit, ``start + 
 significant digits (``0.1:0.5:0.1 kN`` gives ``0.3 kN``, not ``0.30000000000000004 kN``), and its three
 numbers take one unit. Whole numbers and plain numbers take ranges and comma lists too; a text with a
 unit (a temperature) takes a range; choices, flags and other texts take TOML lists; a document (a runout
-error set, a duty cycle) is a TOML table or its text.
+error set, a duty cycle) is a TOML table or its text. A parameter that is no field but a dotted path
+addresses a value inside a document field (:mod:`bearinglab._document_paths`: ``supports.front.position``
+of a shaft system); each case's document is the given one with that value replaced.
 
 Functions
 ---------
@@ -61,13 +66,18 @@ import numpy as np
 
 from .errors import ConvergenceError, InputError
 
-__all__ = ["MAX_LIST_NUMBERS", "TEXT_SEPARATOR", "document_function", "evaluate", "flatten_document",
+__all__ = ["MAX_LIST_NUMBERS", "NAMED_LISTS", "TEXT_SEPARATOR", "document_function", "evaluate", "flatten_document",
            "input_column", "merge", "parameter_count", "parameter_values"]
 
 #: The longest list of numbers a row spreads into columns (a 5 x 5 stiffness matrix is 25).
 MAX_LIST_NUMBERS = 100
 #: How the items of a list of text (``warnings``) are joined into one cell.
 TEXT_SEPARATOR = " | "
+#: The lists of tables of a calculation's document that a row spreads by the tables' names (or their
+#: index where they have no distinct names; at most MAX_LIST_NUMBERS tables), by their path (``*``: any
+#: one step): ``supports.front.force_x_N``. Their tables are few, and named by the user; other lists of
+#: tables (balls, rows along a shaft) are left out.
+NAMED_LISTS = {"shaft": ("supports", "supports.*.bearings", "spectrum.bearings")}
 
 # The calculations whose documents read checked (SI) values: the web's catalog search, which has no
 # command of its own. Every other document is computed from the values as the command line types them.
@@ -82,13 +92,15 @@ _TRUE, _FALSE = ("true", "yes", "on", "1"), ("false", "no", "off", "0")
 _LOCK = threading.Lock()
 
 
-def flatten_document(doc):
+def flatten_document(doc, named=()):
     """One document as one row: its scalars, keyed by their path (the rules in the module docstring).
 
     Parameters
     ----------
     doc : dict
         A JSON document (:func:`bearinglab.calculations.run`).
+    named : tuple of str, optional
+        The paths of the lists of tables spread by their names (:data:`NAMED_LISTS`).
 
     Returns
     -------
@@ -110,7 +122,13 @@ def flatten_document(doc):
         elif isinstance(node, (list, tuple)):
             if not node:
                 return
-            if all(isinstance(x, str) for x in node):
+            if _spread(key, named) and len(node) <= MAX_LIST_NUMBERS and all(isinstance(x, dict) for x in node):
+                names = [x.get("name") for x in node]
+                if not all(isinstance(n, str) and n for n in names) or len(set(names)) != len(names):
+                    names = [str(i) for i in range(len(node))]
+                for name, table in zip(names, node):
+                    walk({k: v for k, v in table.items() if k != "name"}, f"{key}.{name}")
+            elif all(isinstance(x, str) for x in node):
                 row[key] = TEXT_SEPARATOR.join(node)
             elif _numbers(node) is not None:
                 for index, x in _numbers(node):
@@ -120,6 +138,13 @@ def flatten_document(doc):
 
     walk(doc, "")
     return row
+
+
+def _spread(key, named):
+    """Whether the list at ``key`` is one of the ``named`` paths (``*`` standing for any one step)."""
+    steps = key.split(".")
+    return any(len(p) == len(steps) and all(a in ("*", b) for a, b in zip(p, steps))
+               for p in (n.split(".") for n in named))
 
 
 def _is_number(x):
@@ -480,14 +505,19 @@ def evaluate(calculation, given, bearing_table=None, **cases):
         ``n`` (cases), ``columns`` (name -> (kinds of values, some value missing, array)), ``computed``,
         ``converged`` and ``failure`` (per case); :func:`merge` joins the chunks.
     """
+    from . import _document_paths
+    from .calculations import CALCULATIONS
+
     n = len(next(iter(cases.values())))
     rows, computed = [], np.zeros(n, dtype=bool)
     converged, failure = np.zeros(n, dtype=bool), np.full(n, "", dtype=object)
+    named, parsed = NAMED_LISTS.get(calculation, ()), {}
     with _LOCK, _bearing_file(bearing_table) as path:
         for i in range(n):
             request = dict(given, **{k: v[i] for k, v in cases.items()})
-            try:
-                row = flatten_document(_document(calculation, request, path))
+            try:  # the values addressed inside a document, written into it
+                request = _document_paths.with_values(CALCULATIONS[calculation], request, parsed)
+                row = flatten_document(_document(calculation, request, path), named)
             except (InputError, ConvergenceError, OverflowError) as exc:  # the case's, not the sweep's
                 rows.append(None)
                 failure[i] = _message(exc)

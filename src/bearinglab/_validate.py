@@ -1,7 +1,9 @@
 """Input checks used at the public boundary of every model.
 
 Each check converts to a float array, raises :class:`~bearinglab.errors.InputError` naming the
-parameter, the rule with its unit and the first offending value, and returns the array.
+parameter, the rule with its unit and the first offending value, and returns the array. A count that
+sizes a loop or an array (:func:`check_integer`) is a whole number below 2^63, and below ``maximum``
+where one is given: no ``OverflowError`` from numpy, no loop that does not end (issue 29).
 """
 
 from __future__ import annotations
@@ -74,9 +76,26 @@ def check_greater(name, value, other_name, other, unit):
     return value
 
 
-def check_integer(name, value, minimum):
+def check_positive_finite(name, value, unit):
+    """Require ``0 < value < inf`` (a size, a load or a modulus that scales a result): the message of
+    :func:`check_positive`, then of :func:`check_finite`."""
+    return check_finite(name, check_positive(name, value, unit), unit)
+
+
+_LARGEST_INTEGER = 2.0**63  # an int64 holds less; a count beyond it sizes no array and ends no loop
+
+
+def check_integer(name, value, minimum, maximum=None):
+    """Require a whole number ``>= minimum`` (and ``<= maximum`` where given, else below 2^63)."""
+    if isinstance(value, (bool, np.bool_)):
+        raise InputError(f"{name} must be an integer >= {minimum} [-], got {value!r}")
     arr = as_float(name, value)
     bad = ~((arr == np.round(arr)) & (arr >= minimum))
     if bad.any():
         _fail(name, f"an integer >= {minimum}", "-", arr, bad)
+    top = _LARGEST_INTEGER if maximum is None else maximum
+    big = ~(arr <= top) if maximum is not None else ~(arr < top)
+    if big.any():
+        _fail(name, f"an integer in [{minimum}, {maximum}]" if maximum is not None else "an integer below 2^63",
+              "-", arr, big)
     return arr.astype(int)

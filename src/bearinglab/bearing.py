@@ -138,7 +138,14 @@ def max_balls(ball_diameter, pitch_diameter):
     >>> max_balls(7.938e-3, 38.5e-3)
     15
     """
-    return math.floor(math.pi / math.asin(min(ball_diameter / pitch_diameter, 1.0)) + 1e-9)
+    from ._validate import check_positive_finite
+
+    d = float(check_positive_finite("ball_diameter", ball_diameter, "m"))
+    dm = float(check_positive_finite("pitch_diameter", pitch_diameter, "m"))
+    ratio = min(d / dm, 1.0)
+    if not ratio >= 1e-6:  # a million balls: no bearing; and D / d_m -> 0 would divide by zero
+        raise InputError(f"ball_diameter must be >= 1e-6 x pitch_diameter [m], got D = {d!r} with d_m = {dm!r}")
+    return math.floor(math.pi / math.asin(ratio) + 1e-9)
 
 
 def covers(bearing, model):

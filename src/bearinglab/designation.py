@@ -102,13 +102,13 @@ _KINDS = [(SEALS, "seal"), (CLEARANCES, "clearance"), (TOLERANCES, "tolerance"),
           (AXIAL_CLEARANCES, "axial clearance"), (ARRANGEMENTS, "arrangement")]
 _KIND = {t: kind for table, kind in reversed(_KINDS) for t in table}
 _VOCABULARY = sorted(_KIND, key=len, reverse=True)
-_BASE = re.compile(r"^\s*(?P<base>QJ\s?\d{3}|S\s?(?:\d{3}/\d+|\d{3,6})|\d{2,3}/\d+|\d{3,6})")
+_BASE = re.compile(r"^\s*(?P<base>QJ\s?[0-9]{3}|S\s?(?:[0-9]{3}/[0-9]+|[0-9]{3,6})|[0-9]{2,3}/[0-9]+|[0-9]{3,6})")
 #: GMN's spindle bearings (series S): the codes C (15 deg) and E (25 deg) after the size
 _GMN_ANGLES = {"C": 15.0, "E": 25.0}
-_NSK_THIN = re.compile(r"^(6[89])(\d\d)$")      # NSK/NTN 6805, 6905 -> ISO 61805, 61905
-_NSK_SPINDLE = re.compile(r"^719(\d\d)$")      # SKF 71914 -> NSK 7914
-_DOUBLE_ROW_ANGULAR = re.compile(r"^3[23]\d\d$")  # 32 A, 33 A: the code A is the contact angle (30 deg)
-_DOUBLE_ROW_RADIAL = re.compile(r"^4[23]\d\d$")   # 42 A, 43 A: the code A is a design (no filling slots)
+_NSK_THIN = re.compile(r"^(6[89])([0-9][0-9])$")      # NSK/NTN 6805, 6905 -> ISO 61805, 61905
+_NSK_SPINDLE = re.compile(r"^719([0-9][0-9])$")      # SKF 71914 -> NSK 7914
+_DOUBLE_ROW_ANGULAR = re.compile(r"^3[23][0-9][0-9]$")  # 32 A, 33 A: the code A is the contact angle (30 deg)
+_DOUBLE_ROW_RADIAL = re.compile(r"^4[23][0-9][0-9]$")   # 42 A, 43 A: the code A is a design (no filling slots)
 
 
 class Designation(NamedTuple):
@@ -156,10 +156,29 @@ def _valid():
             f"{', '.join(AXIAL_CLEARANCES)}; sets {', '.join(ARRANGEMENTS)}")
 
 
+# the suffix part: chunks of letters and digits, each after at most one separator ('-', '/' or spaces)
+_PART = re.compile(r"\s*[-/]\s*|\s+|[A-Z0-9]+|.", re.ASCII | re.IGNORECASE)
+
+
+def _check_separators(rest, text):
+    """Refuse a suffix part that is not chunks after single separators: ``6208-`` (a separator with no
+    suffix), ``6208////``, ``6208.2RS`` (a dot is no separator): the message names the part."""
+    parts = [m.group() for m in _PART.finditer(rest.rstrip())]
+    for k, part in enumerate(parts):
+        if part[0].isalnum() and part.isascii():
+            continue
+        if part.strip() in ("-", "/", "") and k + 1 < len(parts) and parts[k + 1][0].isalnum():
+            continue
+        shown = part if part.strip() else "a space"
+        where = "at the end" if k + 1 == len(parts) else f"before {parts[k + 1]!r}"
+        raise InputError(f"bearing: cannot read {text!r} as a designation: {shown.strip() or shown!r} {where} is "
+                         "not understood (suffixes follow the size, each after at most one '-', '/' or space)")
+
+
 def _tokens(rest, text):
     """Split the suffix part into known tokens, longest match first; refuse an unknown one."""
     out = []
-    for chunk in filter(None, re.split(r"[-/\s.]+", rest)):
+    for chunk in filter(None, re.split(r"[-/\s]+", rest)):
         while chunk:
             token = next((t for t in _VOCABULARY if chunk.startswith(t)), None)
             if token is None:
@@ -233,6 +252,7 @@ def parse(text):
         raise InputError(f"bearing: {raw!r} is not a designation (it starts with no size such as 6208 or "
                          "7205)")
     base, rest = m.group("base").replace(" ", ""), upper[m.end():]
+    _check_separators(raw[m.end():] if len(raw) == len(upper) else rest, raw)
     alternatives = ()
     if _NSK_THIN.match(base):
         alternatives, base = (base,), "61" + base[1:]
@@ -311,9 +331,9 @@ ROLLER_SUFFIXES = {
 _ROLLER_CLEARANCES = ("C2", "C3", "C4", "C5", "CN")
 _ROLLER_TOLERANCES = ("P6", "P5")
 _ROLLER_BASES = (
-    ("cylindrical", re.compile(r"^\s*(?P<prefix>NUP|NU|NJ|N)[\s-]*(?P<base>\d{1,2}/\d{3,4}|\d{3,4})(?!\d)(?!/\d)")),
-    ("tapered", re.compile(r"^\s*(?P<base>3[0-3]\d/\d{2,3}|3[0-3]\d{3})(?!\d)(?!/\d)")),
-    ("spherical", re.compile(r"^\s*(?P<base>2[1-4]\d/\d{3,4}|2[1-4]\d{3})(?!\d)(?!/\d)")),
+    ("cylindrical", re.compile(r"^\s*(?P<prefix>NUP|NU|NJ|N)[\s-]*(?P<base>[0-9]{1,2}/[0-9]{3,4}|[0-9]{3,4})(?![0-9])(?!/[0-9])")),
+    ("tapered", re.compile(r"^\s*(?P<base>3[0-3][0-9]/[0-9]{2,3}|3[0-3][0-9]{3})(?![0-9])(?!/[0-9])")),
+    ("spherical", re.compile(r"^\s*(?P<base>2[1-4][0-9]/[0-9]{3,4}|2[1-4][0-9]{3})(?![0-9])(?!/[0-9])")),
 )
 
 

@@ -43,6 +43,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from . import _bounds
 from ._validate import as_float, check_finite, check_greater, check_integer, check_positive
 from .errors import InputError
 
@@ -499,8 +500,8 @@ def spectral_mask(
     bpfi shaft -1 4.4152
     bpfi shaft 1 6.4152
     """
-    n_harm = int(check_integer("harmonics", harmonics, 1))
-    n_side = int(check_integer("sidebands", sidebands, 0))
+    n_harm = int(check_integer("harmonics", harmonics, 1, _bounds.MAX_HARMONICS))
+    n_side = int(check_integer("sidebands", sidebands, 0, _bounds.MAX_SIDEBANDS))
     width = np.asarray(as_float("band", band))
     if width.ndim or not 0.0 < float(width) < 2.0:
         raise InputError(f"band must be a number in (0, 2) [-] (0.02 = a 2 % band), got {band!r}")

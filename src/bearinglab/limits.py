@@ -28,7 +28,7 @@ import math
 
 import numpy as np
 
-from ._validate import as_float
+from ._validate import as_float, check_nonnegative, check_positive_finite
 
 __all__ = [
     "DEFLECTION_FRACTION",
@@ -96,6 +96,7 @@ def check_speed(speed, pitch_diameter, name="speed"):
     from .errors import InputError
 
     w = np.ravel(as_float(name, speed))
+    pitch_diameter = float(check_positive_finite("pitch_diameter", pitch_diameter, "m"))
     rpm = np.abs(w) * 60.0 / (2.0 * math.pi)
     limit = MAX_SPEED_FACTOR / (pitch_diameter * 1e3)
     bad = rpm > limit
@@ -244,6 +245,8 @@ def truncation_warnings(contact_angle, semi_major_axis, groove_radius, shoulder_
 def _truncation_messages(contact_angle, semi_major_axis, groove_radius, shoulder_height, where, assumed, what):
     alpha = np.ravel(as_float("contact_angle", contact_angle))
     a = np.ravel(as_float("semi_major_axis", semi_major_axis))
+    groove_radius = float(check_positive_finite("groove_radius", groove_radius, "m"))
+    shoulder_height = float(check_nonnegative("shoulder_height", shoulder_height, "m"))
     edge = math.acos(max(-1.0, 1.0 - shoulder_height / groove_radius))
     reach = np.abs(alpha) + a / groove_radius
     bad = reach > edge

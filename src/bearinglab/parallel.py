@@ -124,7 +124,7 @@ class Execution:
         _validate_executor(self.executor)
         for name in ("workers", "chunk_size"):
             v = getattr(self, name)
-            if v is not None and (isinstance(v, bool) or int(v) != v or v < 1):
+            if v is not None and (not _whole(v) or v < 1):
                 raise InputError(f"{name.replace('_', '-')} must be an integer >= 1 [-], got {v!r}")
         _check_workers(self.workers, self.executor, self.processes)
         # checked and kept in bytes before any cluster starts: a typo is one line, not a nanny's traceback
@@ -249,6 +249,15 @@ def _execution(execution, **legacy):
     return execution
 
 
+def _whole(value):
+    """Whether ``value`` is a whole number (an int, or a float with no fraction; not a bool, NaN or inf)."""
+    if isinstance(value, (bool, np.bool_)):
+        return False
+    if isinstance(value, (int, np.integer)):
+        return True
+    return isinstance(value, (float, np.floating)) and math.isfinite(value) and float(value).is_integer()
+
+
 def chunk_bounds(n_cases, chunk_size):
     """Split ``n_cases`` into consecutive chunks of at most ``chunk_size``.
 
@@ -269,12 +278,13 @@ def chunk_bounds(n_cases, chunk_size):
     >>> chunk_bounds(10, 4)
     [(0, 4), (4, 8), (8, 10)]
     """
-    n_cases = int(n_cases)
-    if isinstance(chunk_size, bool) or int(chunk_size) != chunk_size or chunk_size < 1:
+    if not _whole(chunk_size) or chunk_size < 1:
         raise InputError(f"chunk_size must be an integer >= 1 [-], got {chunk_size!r}")
-    if n_cases < 0:
-        raise InputError(f"n_cases must be >= 0 [-], got {n_cases!r}")
-    chunk_size = int(chunk_size)
+    if not _whole(n_cases) or n_cases < 0:
+        raise InputError(f"n_cases must be an integer >= 0 [-], got {n_cases!r}")
+    if n_cases > _bounds.MAX_SWEEP_CASES:  # a list of chunks, and a loop over them, of bounded length
+        raise InputError(f"n_cases must be <= {_bounds.MAX_SWEEP_CASES} [-] (bearinglab's size limit), got {n_cases}")
+    n_cases, chunk_size = int(n_cases), int(chunk_size)
     return [(i, min(i + chunk_size, n_cases)) for i in range(0, n_cases, chunk_size)]
 
 
@@ -674,9 +684,15 @@ def run_seeded(func: Callable[..., Mapping[str, np.ndarray]], n_samples, seed, *
     >>> bool(np.array_equal(a, b))
     True
     """
-    if isinstance(n_samples, bool) or int(n_samples) != n_samples or n_samples < 1:
+    if not _whole(n_samples) or n_samples < 1:
         raise InputError(f"n_samples must be an integer >= 1 [-], got {n_samples!r}")
-    if isinstance(block_size, bool) or int(block_size) != block_size or block_size < 1:
+    if n_samples > _bounds.MAX_SAMPLES:  # the seeds of the blocks are spawned before any work
+        raise InputError(f"n_samples must be <= {_bounds.MAX_SAMPLES} [-] (bearinglab's size limit), got {n_samples}")
+    if not isinstance(seed, np.random.SeedSequence) and (not _whole(seed) or seed < 0):
+        raise InputError(f"seed must be an integer >= 0 [-] or a numpy.random.SeedSequence, got {seed!r}")
+    if not isinstance(seed, np.random.SeedSequence):
+        seed = int(seed)  # 7.0 is 7: SeedSequence takes ints only
+    if not _whole(block_size) or block_size < 1:
         raise InputError(f"block_size must be an integer >= 1 [-], got {block_size!r}")
     n_samples, block_size = int(n_samples), int(block_size)
     ex = _execution(execution, chunk_size=chunk_size, executor=executor, workers=workers,

@@ -51,6 +51,7 @@ import numpy as np
 
 from . import (
     _bounds,
+    _document_paths,
     _sweep_documents,
     catalog,
     geometry,
@@ -319,9 +320,7 @@ def _values(path, name, value, kind):
         parts = [_values(path, name, v, kind) for v in value]
         return np.concatenate(parts)
     try:
-        if kind == "dimensionless" and isinstance(value, (int, float)) and not isinstance(value, bool):
-            return np.array([float(value)])
-        if isinstance(value, (int, float)) and not isinstance(value, bool):
+        if isinstance(value, (int, float)) and not isinstance(value, bool):  # finite, by the grammar's rules
             return np.array([parse_quantity(value, kind, name)])
         return np.atleast_1d(parse_values(str(value), kind, name))
     except InputError as exc:
@@ -423,6 +422,11 @@ def _load_document_sweep(path, doc, calc):
     constants = doc.get("constants", {})
     if not isinstance(constants, dict):
         _fail(path, "constants", "must be a table of field = value")
+    # a document given as a file name (relative to the sweep file) is the file's text
+    params = {k: _document_files(path, "parameters", k, v, fields) for k, v in params.items()}
+    constants = {k: _document_files(path, "constants", k, v, fields) for k, v in constants.items()}
+    # a name that is no field may address a value inside a document field (supports.front.position)
+    fields = dict(fields, **_addresses(path, calc, params, constants))
     given, bearing, table = {}, None, None
     if "bearing" in doc:
         b = doc["bearing"]
@@ -487,6 +491,66 @@ def _load_document_sweep(path, doc, calc):
                        geometry=False)
     return SweepSpec(model, bearing, values, output, executor, workers, chunk, given,
                      DocumentSweep(calc, columns, table))
+
+
+def _names_file(value):
+    """Whether a document field's value names a file: one line, ending in .toml or .json, no ``=``."""
+    return (isinstance(value, str) and "\n" not in value.strip() and "=" not in value
+            and value.strip().lower().endswith((".toml", ".json")))
+
+
+def _document_files(path, where, key, value, fields):
+    """The value of a [parameters] or [constants] entry, a document field's file names read as their text
+    (relative to the sweep file; recorded as inputs of the run, as every file a command reads)."""
+    field = fields.get(key)
+    if field is None or field.kind != "document":
+        return value
+    items = value if isinstance(value, list) else [value]
+    texts = []
+    for item in items:
+        if not _names_file(item):
+            texts.append(item)
+            continue
+        source = path.parent / item.strip()
+        try:
+            texts.append(_bounds.read_input_bytes(source).decode("utf-8-sig"))
+        except FileNotFoundError:
+            _fail(path, f"{where}.{key}", f"{item.strip()}: no such file (a path relative to the sweep file)")
+        except (OSError, InputError, UnicodeDecodeError) as exc:
+            _fail(path, f"{where}.{key}", f"{item.strip()}: cannot read it as a text file ({exc})")
+    return texts if isinstance(value, list) else texts[0]
+
+
+def _addresses(path, calc, params, constants):
+    """The fields of the entries that address a value inside a document (:mod:`bearinglab._document_paths`),
+    each checked against every document the file gives and read like the value it replaces."""
+    names = {f.name for f in calc.fields}
+    out = {}
+    for where, entries in (("parameters", params), ("constants", constants)):
+        for key, value in entries.items():
+            if key in names:
+                continue
+            try:
+                found = _document_paths.address(calc, key)
+            except InputError as exc:
+                _fail(path, f"{where}.{key}", str(exc))
+            if found is None:  # an unknown parameter: said below, with the fields
+                continue
+            field, steps = found
+            given = params.get(field, constants.get(field))
+            if given is None:
+                _fail(path, f"{where}.{key}", f"addresses the document {field!r}, which the file does not give; "
+                                              f"give {field} in [constants] (its text, a table or a file name)")
+            current = None
+            for k, text in enumerate(given if isinstance(given, list) else [given]):
+                try:
+                    document = text if isinstance(text, dict) else _document_paths.parse_text(text, field)
+                    table, last = _document_paths.locate(document, steps, key)
+                except InputError as exc:
+                    _fail(path, f"{where}.{key}", str(exc) + (f" (document {k})" if isinstance(given, list) else ""))
+                current = table.get(last) if current is None else current
+            out[key] = _document_paths.field_of(key, current, value)
+    return out
 
 
 def _check_grid(parameters):

@@ -267,7 +267,8 @@ def rows(table):
     if not names:
         return []
     n = len(table[names[0]])
-    return [{k: json_value(np.asarray(table[k])[i]) for k in names} for i in range(n)]
+    # converted as a whole, so that a null is known by its key (bearinglab._io.NULLED)
+    return json_value([{k: np.asarray(table[k])[i] for k in names} for i in range(n)])
 
 
 #: A document's key ends with its unit (``contact_angle_inner_deg``, ``film_min_um``): suffix -> the
@@ -684,13 +685,14 @@ def load_distribution(result):
         bearing's row, a four-point bearing's diagonal, 0 carrying F_z > 0).
     """
     u = np.asarray(result.displacement, dtype=float)
-    out = {f"displacement_{a}_um": json_value(u[i] * 1e6) for i, a in enumerate("xyz")}
-    out.update(tilt_x_mrad=json_value(u[3] * 1e3), tilt_y_mrad=json_value(u[4] * 1e3),
-               stiffness_matrix=json_value(np.asarray(result.stiffness, dtype=float)),
-               max_ball_load_N=json_value(np.max(np.asarray(result.ball_load_inner, dtype=float))))
+    out = {f"displacement_{a}_um": u[i] * 1e6 for i, a in enumerate("xyz")}
+    out.update(tilt_x_mrad=u[3] * 1e3, tilt_y_mrad=u[4] * 1e3,
+               stiffness_matrix=np.asarray(result.stiffness, dtype=float),
+               max_ball_load_N=np.max(np.asarray(result.ball_load_inner, dtype=float)))
     for name in ("converged", "residual", "iterations"):
         if hasattr(result, name):
-            out[name] = json_value(getattr(result, name))
+            out[name] = getattr(result, name)
+    out = json_value(out)  # as a whole: a null is known by its key (bearinglab._io.NULLED)
     out["balls"] = rows(ball_columns(result))
     row = getattr(result, "row", None)  # the other ball types: each entry's row (a four-point bearing's diagonal)
     if row is not None:
@@ -786,9 +788,8 @@ def film(result, case=()):
                 "lambda_inner": (pick("film_parameter_inner"), 1.0),
                 "lambda_outer": (pick("film_parameter_outer"), 1.0)}
     z = per_ball["load_inner_N"][0].shape[-1]
-    balls = [{k: json_value(float(np.broadcast_to(v, (z,))[j]) * f) for k, (v, f) in per_ball.items()}
-             for j in range(z)]
-    return {"film_min_um": json_value(float(pick("minimum_film")) * 1e6),
-            "lambda_min": json_value(float(pick("minimum_film_parameter"))),
-            "regime": str(np.asarray(result.regime)[case]) or None,
-            "converged": bool(np.asarray(result.converged)[case]), "balls": balls}
+    balls = [{k: float(np.broadcast_to(v, (z,))[j]) * f for k, (v, f) in per_ball.items()} for j in range(z)]
+    return json_value({"film_min_um": float(pick("minimum_film")) * 1e6,  # as a whole: nulls known by key
+                       "lambda_min": float(pick("minimum_film_parameter")),
+                       "regime": str(np.asarray(result.regime)[case]) or None,
+                       "converged": bool(np.asarray(result.converged)[case]), "balls": balls})

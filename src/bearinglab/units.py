@@ -21,6 +21,13 @@ Parsing (pint is imported on first use, so ``import bearinglab`` stays light)
 -----------------------------------------------------------------------------
 parse_quantity          ``"2 kgf"`` -> 19.6133 (N), checking the dimension
 parse_values            ``"2.5kN:45kN:2.5kN"`` or ``"0,3000,6000rpm"`` -> array in SI
+parse_temperature       ``"70 degC"``, ``"343.15 K"``, ``"158 degF"`` -> 343.15 (K)
+MAX_QUANTITY_TEXT       the longest text of one quantity [characters]
+
+One grammar at every boundary (issue 29): one number of ASCII digits (an optional sign, a decimal point,
+an exponent; no digit grouping), then one unit of the expected kind, with no plain factor (an angle, a
+percentage or a ratio that cancels, multiplying another kind). Nothing is evaluated: pint reads the unit
+only. Underflow and overflow are errors.
 """
 
 from __future__ import annotations
@@ -38,6 +45,7 @@ __all__ = [
     "DEG",
     "KGF",
     "KINDS",
+    "MAX_QUANTITY_TEXT",
     "MM",
     "RPM",
     "STANDARD_GRAVITY",
@@ -46,6 +54,7 @@ __all__ = [
     "from_kgf",
     "from_rpm",
     "parse_quantity",
+    "parse_temperature",
     "parse_values",
     "to_dms",
     "to_kgf",
@@ -160,7 +169,12 @@ def to_dms(angle, *, pi=math.pi, truncate=False):
     >>> to_dms(math.radians(-0.5))
     (0, -30, -0.0)
     """
-    deg = float(angle) * 180.0 / pi
+    angle, pi = _finite_number("angle", angle, "rad"), _finite_number("pi", pi, "-")
+    if not pi > 0:
+        raise InputError(f"pi must be > 0 [-], got {pi!r}")
+    deg = angle * 180.0 / pi
+    if not math.isfinite(deg):
+        raise InputError(f"angle must be finite in degrees [rad], got {angle!r}")
     sign = -1 if deg < 0 else 1
     deg = abs(deg)
     d = int(deg)
@@ -173,6 +187,17 @@ def to_dms(angle, *, pi=math.pi, truncate=False):
         if m == 60:
             m, d = 0, d + 1
     return sign * d, sign * m, sign * s
+
+
+def _finite_number(name, value, unit):
+    """``value`` as a finite float, or an InputError naming ``name``."""
+    try:
+        x = float(value)
+    except (TypeError, ValueError, OverflowError):
+        raise InputError(f"{name} must be a finite number [{unit}], got {value!r}") from None
+    if not math.isfinite(x):
+        raise InputError(f"{name} must be finite [{unit}], got {value!r}")
+    return x
 
 
 def format_dms(angle, *, digits=2):
@@ -197,8 +222,11 @@ def format_dms(angle, *, digits=2):
     >>> format_dms(math.radians(-0.5)), format_dms(math.radians(14.99999), digits=0)
     ('-0°30\\'00.00"', '15°00\\'00"')
     """
-    sign = "-" if float(angle) < 0 else ""
-    d, m, s = to_dms(abs(float(angle)))
+    angle = _finite_number("angle", angle, "rad")
+    if isinstance(digits, bool) or not isinstance(digits, (int, np.integer)) or not 0 <= digits <= 15:
+        raise InputError(f"digits must be an integer in [0, 15] [-] (the decimals of the seconds), got {digits!r}")
+    sign = "-" if angle < 0 else ""
+    d, m, s = to_dms(abs(angle))
     s = round(s, digits)
     if s >= 60.0:  # rounding to fewer digits can reach 60: carry
         s, m = s - 60.0, m + 1
@@ -228,14 +256,28 @@ KINDS = {
     "specific_heat": ("[energy]/[mass]/[temperature]", "J/(kg*K)", "'1900 J/(kg*K)'"),
     "heat_flux": ("[power]/[length]**2", "W/m**2", "'16 kW/m^2'"),
     "dimensionless": ("", "", "'0.52'"),
+    # the shaft-system file (issue 33): supports, gears, temperatures, masses
+    "stiffness": ("[force]/[length]", "N/m", "'200 N/um', '2e8 N/m'"),
+    "rotational_stiffness": ("[force]*[length]", "N*m", "'1e5 N*m/rad', '100 N*m/mrad'"),
+    "power": ("[power]", "W", "'5 kW', '7.5 hp'"),
+    "temperature": ("[temperature]", "K", "'60 degC', '333 K'"),
+    "thermal_expansion": ("1/[temperature]", "1/K", "'12e-6 1/K', '12 um/(m*K)'"),
+    "moment_of_inertia": ("[mass]*[length]**2", "kg*m**2", "'0.02 kg*m^2'"),
 }
 
 _ANGLE_UNITS = ("radian", "degree", "arcminute", "arcsecond", "revolution", "turn")
+# the dimensionless units a ratio may be written in (a field of kind "dimensionless": '2 %')
+_RATIO_UNITS = ("percent", "permille", "ppm")
+#: The longest text of one quantity [characters]: '228.0419 GPa' has 12, 'J/(kg*K)' units 8. A longer text
+#: is no quantity a user typed, and is refused before any pattern or pint looks at it.
+MAX_QUANTITY_TEXT = 100
+_SMALLEST = 5e-324  # the smallest positive float: a number below it is read as 0 (an underflow)
 # an angle written in degrees, minutes and seconds: 14°28'03.38", 14° 28′ 3.38″, 12 deg 30 arcmin
-_DMS = re.compile(r"^\s*([-+]?)\s*(\d+(?:\.\d*)?)\s*(?:°|deg\b)\s*(?:(\d+(?:\.\d*)?)\s*(?:′|'|arcmin\b)\s*)?"
-                  r"(?:(\d+(?:\.\d*)?)\s*(?:″|\"|''|arcsec\b)\s*)?$")
+_DMS = re.compile(r"^\s*([-+]?)\s*([0-9]+(?:\.[0-9]*)?)\s*(?:°|deg\b)\s*(?:([0-9]+(?:\.[0-9]*)?)\s*(?:′|'|arcmin\b)\s*)?"
+                  r"(?:([0-9]+(?:\.[0-9]*)?)\s*(?:″|\"|''|arcsec\b)\s*)?$", re.ASCII)
 # a number that is not an exponent (m^3, m**3) nor part of a name
-_STANDALONE_NUMBER = re.compile(r"(?<![\w.^*])(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+_STANDALONE_NUMBER = re.compile(r"(?<![\w.^*])(?<![\^*][-+])(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?",
+                                re.ASCII)
 _registry = None
 
 
@@ -261,10 +303,14 @@ _SPELLINGS = (
     (re.compile(r"(?<![\w/])([kmM]?)N(mm|m)(?![\w/^*])"), r"\1N*\2"),
     (re.compile(r"(?<![\w/.^*])1\s*/\s*(?=[A-Za-z])"), " /"),  # "50 1/s" is 50 per second, one number
 )
+# exponents as superscripts: mm²/s, kg/m³, s⁻¹
+_SUPERSCRIPT = re.compile("(⁻?)([¹²³⁴⁵⁶⁷⁸⁹])")
+_SUPERSCRIPT_DIGITS = "¹²³⁴⁵⁶⁷⁸⁹"
 
 
 def _normalise(text: str) -> str:
-    t = text.strip().replace("µ", "u").replace("μ", "u").replace("·", "*")
+    t = text.strip().replace("µ", "u").replace("μ", "u").replace("·", "*").replace("π", " pi ")
+    t = _SUPERSCRIPT.sub(lambda m: "^" + "-" * bool(m.group(1)) + str(_SUPERSCRIPT_DIGITS.index(m.group(2)) + 1), t)
     t = re.sub(r"°\s*([CF])\b", r" deg\1", t).replace("°", " deg ")  # 70 °C is degC, not deg * coulomb
     t = t.replace("′", " arcmin ").replace("″", " arcsec ").replace("−", "-")
     # a rotation frequency in Hz means revolutions per second, not radians per second
@@ -275,7 +321,7 @@ def _normalise(text: str) -> str:
 
 
 # "2,5 kN": one comma between two digits, no unit before it -- a decimal comma or a list of two?
-_AMBIGUOUS_COMMA = re.compile(r"^\s*([-+]?\d+),(\d+)\s*([^,;:]*)$")
+_AMBIGUOUS_COMMA = re.compile(r"^\s*([-+]?[0-9]+),([0-9]+)\s*([^,;:]*)$", re.ASCII)
 
 
 def _reject_decimal_comma(text, name):
@@ -287,6 +333,39 @@ def _reject_decimal_comma(text, name):
             f"{name}: {text!r} is ambiguous: write '{whole}.{frac}{u}' for one value (a decimal point, "
             f"not a comma) or '{whole}{u}, {frac}{u}' for a list of two values"
         )
+
+
+def _shown(text):
+    """``text`` for a message: its repr, cut after 40 characters."""
+    return repr(text) if len(text) <= 40 else repr(text[:40]) + f"... ({len(text)} characters)"
+
+
+def _check_text(text, name, what="a quantity"):
+    """The checks of a quantity's text before any pattern reads it: its length, its digits (ASCII only:
+    ``'٥ kN'`` is no number here, though Python's ``float`` reads it) and no digit grouping."""
+    if len(text) > MAX_QUANTITY_TEXT:
+        raise InputError(f"{name}: {_shown(text)} is too long for {what} (at most {MAX_QUANTITY_TEXT} "
+                         "characters: one number and one unit)")
+    foreign = next((c for c in text if c.isnumeric() and not c.isascii() and c not in _SUPERSCRIPT_DIGITS), None)
+    if foreign is not None:
+        raise InputError(f"{name}: cannot read {text!r} as {what}: {foreign!r} is not an ASCII digit; write "
+                         "the number with the digits 0-9")
+    grouped = re.search(r"[0-9]_[0-9]", text)
+    if grouped:
+        raise InputError(f"{name}: cannot read {text!r} as {what}: digits are not grouped; write the number "
+                         f"without '_' (e.g. 1000, 1e6)")
+
+
+def _literal(number, text, name):
+    """The float of a number literal of the grammar; an overflow or an underflow is an error."""
+    magnitude = float(number)
+    if not math.isfinite(magnitude):  # 1e309
+        raise InputError(f"{name}: {text!r} is not a finite quantity")
+    mantissa = re.split(r"[eE]", number)[0]
+    if magnitude == 0.0 and re.search(r"[1-9]", mantissa):  # 1e-400: not 0, but read as 0
+        raise InputError(f"{name}: {text!r} underflows: {number} is below the smallest number computed with "
+                         f"({_SMALLEST:.3g}); write 0 or a larger value")
+    return magnitude
 
 
 def parse_quantity(value, kind, name, *, default_unit=None):
@@ -313,16 +392,21 @@ def parse_quantity(value, kind, name, *, default_unit=None):
     ------
     InputError
         The text does not parse, has no unit where one is needed, has the wrong dimension, or is not
-        finite in SI units.
+        finite in SI units, or underflows.
 
     Notes
     -----
-    The text is ONE number (``-5``, ``2.5``, ``.5``, ``1e-3``; one sign at most) followed by a unit
-    expression: unit names joined by ``*``, ``/`` or a space, each with an optional integer exponent
-    (``mm^2/s``, ``kg/m**3``, ``N*m``, ``N·m``, ``1/min``). pint converts the unit only; the text is
-    never evaluated as an expression, so ``1.2.3 N``, ``--5 N``, a bare ``N``, ``kN*kN/kN``,
-    ``2 pi kN`` (a constant) and ``10**308*10 N`` are refused, as is a value that overflows in SI
-    (``1e308 kN``). Angles may also be written in degrees, minutes and seconds (``14°28'03.38"``).
+    The text is ONE number (``-5``, ``2.5``, ``.5``, ``1e-3``; ASCII digits, one sign at most, no digit
+    grouping) followed by ONE unit of the expected kind: unit names joined by ``*``, ``/`` or a space,
+    each with an optional one-digit exponent (``mm^2/s``, ``kg/m**3``, ``N*m``, ``N·m``, ``1/min``,
+    ``mm²/s``). pint converts the unit only; the text is never evaluated as an expression, so
+    ``1.2.3 N``, ``--5 N``, a bare ``N``, ``kN*kN/kN``, ``2 pi kN`` (a constant), ``9**9**9 K`` and
+    ``10**308*10 N`` are refused, as are non-ASCII digits (``٥ kN``), ``1_000 N``, a value that overflows
+    (``1e308 kN``) or underflows, a number that is not 0 read as 0 (``1e-400 N``), in SI. A unit holds no
+    plain factor: an angle, a percentage or a ratio of two units of one dimension multiplies no other
+    kind (``2 turn kgf``, ``2 kgf %``, ``10000 % rpm``, ``2 kgf h/s`` are refused); an angle is the
+    unit of an angle and the numerator of a speed, a percentage (``%``, ``permille``, ``ppm``) the unit
+    of a plain number. Angles may also be written in degrees, minutes and seconds (``14°28'03.38"``).
 
     Examples
     --------
@@ -342,6 +426,8 @@ def parse_quantity(value, kind, name, *, default_unit=None):
     if isinstance(value, bool):
         raise InputError(f"{name}: expected a quantity, got {value!r}")
     if isinstance(value, (int, float, np.integer, np.floating)):
+        if isinstance(value, (int, np.integer)) and not isinstance(value, bool) and abs(int(value)) > 2**1023:
+            raise InputError(f"{name}: {value!r} is not a finite quantity")
         if not np.isfinite(value):
             raise InputError(f"{name}: {value!r} is not a finite quantity")
         if kind == "dimensionless":
@@ -353,60 +439,68 @@ def parse_quantity(value, kind, name, *, default_unit=None):
         text = value
     else:
         raise InputError(f"{name}: expected a quantity such as {examples}, got {value!r}")
+    _check_text(text, name)
     _reject_decimal_comma(text, name)
     dms = _DMS.match(text) if kind == "angle" else None
     if dms and (dms.group(3) or dms.group(4)):  # 14°28'03.38": pint would multiply the three parts
         deg = float(dms.group(2)) + float(dms.group(3) or 0.0) / 60.0 + float(dms.group(4) or 0.0) / 3600.0
-        return math.radians(-deg if dms.group(1) == "-" else deg)
+        return _finite(math.radians(-deg if dms.group(1) == "-" else deg), text, name, deg)
     if len(_STANDALONE_NUMBER.findall(_normalise(text))) > 1:  # pint reads "1 000 N" as 1 * 0 N and "2 3 kgf" as 6 kgf
         raise InputError(f"{name}: {text!r} holds more than one number; write one number and its unit, e.g. {examples}")
-    q = _quantity(text, name, examples)
+    q = _quantity(text, name, examples, kind)
     if q.dimensionless and not q.unit_items() and kind != "dimensionless":
         if default_unit is None:
             raise InputError(f"{name}: {text!r} has no unit; write it with one, e.g. {examples}")
-        q = ureg.Quantity(q.magnitude, default_unit)
+        q = _quantity(f"{q.magnitude!r} {default_unit}", name, examples, kind)
+    magnitude = q.magnitude
     if kind in ("angle", "dimensionless"):
-        is_angle = any(a in u for u, _exp in q.unit_items() for a in _ANGLE_UNITS)
+        is_angle = any(_root(u) in _ANGLE_UNITS for u, _exp in q.unit_items())
         if not q.dimensionless:
             raise InputError(
                 f"{name}: {text!r} is a {_describe(q)}, expected {'an angle' if kind == 'angle' else 'a plain number'} (e.g. {examples})"
             )
         if kind == "angle" and not is_angle:
             raise InputError(f"{name}: {text!r} is not an angle; write e.g. {examples}")
-        return _finite(q.to("radian" if kind == "angle" else "").magnitude, text, name)
+        return _finite(q.to("radian" if kind == "angle" else "").magnitude, text, name, magnitude)
     if not q.check(dim):
         raise InputError(f"{name}: {text!r} is a {_describe(q)}, expected a {kind.replace('_', ' ')} (e.g. {examples})")
     if kind == "speed" and not any(a in u for u, _exp in q.unit_items() for a in _ANGLE_UNITS):
         # a rotational speed written as a plain reciprocal time ("50 1/s", "50 /s") counts revolutions,
         # as n in DIN/ISO drawings and as Hz does here; reading it as rad/s would slip a factor of 2 pi
         q = q * ureg.revolution
-    return _finite(q.to(si).magnitude, text, name)
+    return _finite(q.to(si).magnitude, text, name, magnitude)
 
 
-def _finite(x, text, name):
-    """``x`` as a float, refused when the conversion to SI overflowed (``1e308 kN``)."""
+def _finite(x, text, name, magnitude=None):
+    """``x`` as a float, refused when the conversion to SI overflowed (``1e308 kN``) or underflowed to 0
+    (``1e-320 um``: a number that is not 0 read as 0)."""
     x = float(x)
     if not math.isfinite(x):
         raise InputError(f"{name}: {text!r} is not a finite quantity (it overflows in SI units)")
+    if magnitude and x == 0.0:
+        raise InputError(f"{name}: {text!r} underflows in SI units (below {_SMALLEST:.3g}); write 0 or a "
+                         "larger value")
     return x
 
 
-# The grammar of a quantity (issue 20): ONE numeric literal, then a unit expression of unit names joined
-# by '*', '/' or spaces, each with an optional integer exponent ('^2', '**-1'). pint converts only the
-# unit; it never evaluates the text, which it would read as an expression: '1.2.3 N' as 1.2 * 0.3 N,
-# '--5 N' as +5 N, 'N' as 1 N, '10**308*10 N' as an overflow, 'pi kN' as 3141.6 N.
-_NUMBER_TEXT = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
-_UNIT_NAME = r"(?:[^\W\d]\w*|%)"
-_UNIT_TERM = rf"{_UNIT_NAME}(?:\s*(?:\^|\*\*)\s*[-+]?\d+)?"
+# The grammar of a quantity (issue 20, issue 29): ONE numeric literal of ASCII digits, then a unit
+# expression of unit names joined by '*', '/' or spaces, each with an optional one-digit exponent ('^2',
+# '**-1'). pint converts only the unit; it never evaluates the text, which it would read as an expression:
+# '1.2.3 N' as 1.2 * 0.3 N, '--5 N' as +5 N, 'N' as 1 N, '10**308*10 N' as an overflow, 'pi kN' as
+# 3141.6 N, '9**9**9 K' as minutes of big-integer arithmetic.
+_NUMBER_TEXT = r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?"
+_UNIT_NAME = r"(?:[A-Za-z]\w*|%)"
+_UNIT_TERM = rf"{_UNIT_NAME}(?:\s*(?:\^|\*\*)\s*[-+]?[1-9](?![0-9]))?"
 _UNIT_PRODUCT = rf"{_UNIT_TERM}(?:(?:\s*[*/]\s*|\s+){_UNIT_TERM})*"
 # one level of brackets, as engineers write a denominator: J/(kg*K), W/(m^2*K)
-_UNIT_FACTOR = rf"(?:{_UNIT_TERM}|\(\s*{_UNIT_PRODUCT}\s*\)(?:\s*(?:\^|\*\*)\s*[-+]?\d+)?)"
+_UNIT_FACTOR = rf"(?:{_UNIT_TERM}|\(\s*{_UNIT_PRODUCT}\s*\)(?:\s*(?:\^|\*\*)\s*[-+]?[1-9](?![0-9]))?)"
 _UNIT_EXPR = rf"(?:/\s*)?{_UNIT_FACTOR}(?:(?:\s*[*/]\s*|\s+){_UNIT_FACTOR})*"
-_QUANTITY = re.compile(rf"^\s*({_NUMBER_TEXT})\s*({_UNIT_EXPR})?\s*$")
-_NOT_FINITE = re.compile(r"^\s*[-+]?(?:nan|inf|infinity)(?![\w.])", re.IGNORECASE)
-_UNIT_ONLY = re.compile(rf"^\s*{_UNIT_EXPR}\s*$")
+_QUANTITY = re.compile(rf"^\s*({_NUMBER_TEXT})\s*({_UNIT_EXPR})?\s*$", re.ASCII)
+_NOT_FINITE = re.compile(r"^\s*[-+]?(?:nan|inf|infinity)(?![\w.])", re.IGNORECASE | re.ASCII)
+_UNIT_ONLY = re.compile(rf"^\s*{_UNIT_EXPR}\s*$", re.ASCII)
 # dimensionless names that are units, not numbers in disguise (the constants pi, ln10, ... are refused)
-_DIMENSIONLESS_UNITS = (*_ANGLE_UNITS, "percent", "permille", "ppm", "dimensionless")
+_DIMENSIONLESS_UNITS = (*_ANGLE_UNITS, *_RATIO_UNITS, "dimensionless")
+_MAX_UNIT_NAMES = 8  # 'J/(kg*K)' has 3, 'W/(m^2*K)' 3: more is no unit a user typed
 _constants = None
 
 
@@ -430,8 +524,15 @@ def _constant_names():
     return _constants
 
 
-def _quantity(text, name, examples):
-    """``text`` -> a pint Quantity by the grammar above, or an InputError naming ``name``."""
+def _root(unit_name):
+    """The unit's name without its prefix: 'kilorevolution' -> 'revolution', 'microradian' -> 'radian'."""
+    parsed = _ureg().parse_unit_name(unit_name)
+    return parsed[0][1] if parsed else unit_name
+
+
+def _quantity(text, name, examples, kind=None):
+    """``text`` -> a pint Quantity by the grammar above, or an InputError naming ``name``. With ``kind``,
+    the unit may hold no plain factor (:func:`_plain_factor`)."""
     ureg = _ureg()
     t = _normalise(text)
     m = _QUANTITY.match(t)
@@ -442,30 +543,74 @@ def _quantity(text, name, examples):
                else "write one number and one unit, without operators or constants")
         raise InputError(f"{name}: cannot read {text!r} as a quantity: {why} (e.g. {examples})")
     number, unit = m.group(1), (m.group(2) or "").strip()
-    magnitude = float(number)
-    if not math.isfinite(magnitude):  # 1e309
-        raise InputError(f"{name}: {text!r} is not a finite quantity")
+    magnitude = _literal(number, text, name)
     if not unit:
         return ureg.Quantity(magnitude)
-    words = re.findall(_UNIT_NAME, unit)
+    words = re.findall(_UNIT_NAME, unit, re.ASCII)
     repeated = next((w for w in words if words.count(w) > 1), None)
     if repeated:  # 'kN*kN/kN': an expression, not a unit
         raise InputError(f"{name}: cannot read {text!r} as a quantity: {repeated!r} appears twice in the unit")
+    if len(words) > _MAX_UNIT_NAMES:
+        raise InputError(f"{name}: cannot read {text!r} as a quantity: more than {_MAX_UNIT_NAMES} unit names")
     try:
         q = ureg.Quantity(magnitude, "1" + unit if unit.startswith("/") else unit)
         items = list(q.unit_items())
     except Exception as exc:  # pint raises several unrelated exception types
         raise InputError(f"{name}: cannot read {text!r} as a quantity (e.g. {examples})") from exc
     for unit_name, _exp in items:
-        root = ureg.parse_unit_name(unit_name)
-        root = root[0][1] if root else unit_name
+        root = _root(unit_name)
         constant = root in _constant_names()
         if not constant and ureg.get_dimensionality(unit_name) == ureg.get_dimensionality(""):
             constant = not any(a in unit_name for a in _DIMENSIONLESS_UNITS)
         if constant:  # '2 pi kN' is a product with a number in disguise
             raise InputError(f"{name}: cannot read {text!r} as a quantity: {unit_name!r} is a constant, not a "
                              f"unit; write one number and its unit (e.g. {examples})")
+    if kind is not None:
+        _plain_factor(items, kind, text, name, examples)
     return q
+
+
+def _plain_factor(items, kind, text, name, examples):
+    """Refuse a unit that holds a plain factor: a dimensionless unit (an angle, a percentage) or units
+    whose dimensions cancel (``h/s``, ``km/m``) multiplying a unit of the kind. ``2 kgf %`` would be
+    0.196 N, ``2 turn kgf`` 123 N and ``2 kgf h/s`` 70 608 N: numbers silently read as other numbers.
+    The one dimensionless unit a kind is written in is allowed: the angle of an angle or of a speed
+    (``rad/s``, ``rpm``), the percentage of a plain number."""
+    import itertools
+
+    ureg = _ureg()
+    dims = {u: dict(ureg.get_dimensionality(u)) for u, _exp in items}
+    rest = list(items)
+    allowed = _ANGLE_UNITS if kind in ("angle", "speed") else _RATIO_UNITS if kind == "dimensionless" else ()
+    own = next((i for i, (u, exp) in enumerate(rest) if not dims[u] and exp == 1 and _root(u) in allowed), None)
+    if own is not None:
+        del rest[own]
+    if kind == "dimensionless" and any(not dims[u] and _root(u) in _ANGLE_UNITS for u, _exp in rest):
+        raise InputError(f"{name}: {text!r} is an angle, expected a plain number (e.g. {examples})")
+    # the whole unit dimensionless ('2 %' for a force) is the dimension check's to word, unless a
+    # dimensionless unit is what the kind takes
+    whole = own is not None or kind == "dimensionless"
+    for size in range(1, len(rest) + whole):
+        for subset in itertools.combinations(rest, size):
+            total = {}
+            for u, exp in subset:
+                for d, e in dims[u].items():
+                    total[d] = total.get(d, 0) + e * exp
+            if not any(total.values()):
+                shown = _unit_text(subset)
+                raise InputError(f"{name}: cannot read {text!r} as a quantity: {shown!r} is a plain factor (an "
+                                 f"angle, a ratio or a percentage), not part of a {kind.replace('_', ' ')} unit; "
+                                 f"write one number and one unit (e.g. {examples})")
+
+
+def _unit_text(items):
+    """Unit items as a unit expression: (('hour', 1), ('second', -1)) -> 'hour/second'."""
+    def term(u, exp):
+        return u if abs(exp) == 1 else f"{u}^{abs(exp):g}"
+
+    top = "*".join(term(u, e) for u, e in items if e > 0) or "1"
+    bottom = [term(u, e) for u, e in items if e < 0]
+    return top + "".join("/" + b for b in bottom)
 
 
 def _describe(q):
@@ -475,14 +620,89 @@ def _describe(q):
     return f"quantity in {q.units:~P}"  # the unit it was read in, not pint's dimension symbols
 
 
-_NUMBER_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*)$")
+_NUMBER_UNIT = re.compile(rf"^\s*({_NUMBER_TEXT})\s*(.*)$", re.ASCII | re.DOTALL)
 
 
 def _split_unit(item: str):
     m = _NUMBER_UNIT.match(item)
     if not m:
         return None, None
-    return float(m.group(1)), m.group(2).strip()
+    return m.group(1), m.group(2).strip()
+
+
+# ----------------------------------------------------------------------------- temperatures
+_ZERO_CELSIUS = 273.15  # K at 0 degC
+_TEMPERATURE_UNITS = {"degC": "C", "°C": "C", "C": "C", "K": "K", "degF": "F", "°F": "F", "F": "F"}
+_TEMPERATURE = re.compile(rf"^\s*({_NUMBER_TEXT})\s*(degC|°C|° C|C|K|degF|°F|° F|F)?\s*$", re.ASCII)
+
+
+def parse_temperature(value, name, *, default_unit=None):
+    """Parse a temperature written by a user: one number and ``degC``, ``°C``, ``degF``, ``°F`` or ``K``.
+
+    Parameters
+    ----------
+    value : str or float
+        ``"70 degC"``, ``"343.15 K"``, ``"158 degF"``; a bare number only with ``default_unit``.
+    name : str
+        The parameter's name, used in error messages.
+    default_unit : {"degC", "degF", "K"}, optional
+        The unit of a bare number.
+
+    Returns
+    -------
+    float
+        The absolute temperature. [K] (Not checked against absolute zero: the caller's range says.)
+
+    Raises
+    ------
+    InputError
+        Not one number with one of those units (by the grammar of :func:`parse_quantity`: ASCII
+        digits, no expression, no digit grouping, nothing evaluated), or not finite.
+
+    Notes
+    -----
+    pint reads ``'5,5 degC'`` as 55 degC, ``'1 000 K'`` as 0 K and ``'1.2.3 degC'`` as 0.36 degC, and
+    evaluates ``'9**9**9 K'`` for minutes: none of them reaches pint here. The word ``auto`` (a
+    temperature from the thermal balance) is the caller's to read, where it is offered.
+
+    Examples
+    --------
+    >>> parse_temperature("70 degC", "temperature")
+    343.15
+    >>> round(parse_temperature("158 degF", "temperature"), 2)
+    343.15
+    >>> parse_temperature("60", "inner-ring-temperature", default_unit="degC")
+    333.15
+    """
+    examples = "'70 degC', '343.15 K', '158 degF'"
+    if isinstance(value, bool) or not isinstance(value, (str, int, float, np.integer, np.floating)):
+        raise InputError(f"{name}: expected a temperature such as {examples}, got {value!r}")
+    if not isinstance(value, str):
+        if not np.isfinite(value) or abs(float(value)) > 1e300:
+            raise InputError(f"{name}: {value!r} is not a finite temperature")
+        value = f"{float(value)!r}"
+    text = value
+    _check_text(text, name, "a temperature")
+    comma = _AMBIGUOUS_COMMA.match(text)
+    if comma:  # '5,5 degC': pint reads 55 degC; one temperature has a decimal point
+        unit = f" {comma.group(3).strip()}" if comma.group(3).strip() else ""
+        raise InputError(f"{name}: {text!r} has a comma: write one temperature with a decimal point, e.g. "
+                         f"'{comma.group(1)}.{comma.group(2)}{unit}'")
+    m = _TEMPERATURE.match(text)
+    if not m:
+        raise InputError(f"{name}: cannot read {text!r} as a temperature: write one number and degC, degF or "
+                         f"K (e.g. {examples})")
+    number, unit = m.group(1), m.group(2)
+    v = _literal(number, text, name)
+    if unit is None:
+        if default_unit is None:
+            raise InputError(f"{name}: {text!r} has no unit; write it with degC, degF or K (e.g. {examples})")
+        unit = default_unit
+    scale = _TEMPERATURE_UNITS[unit.replace(" ", "")]
+    kelvin = {"C": v + _ZERO_CELSIUS, "K": v, "F": (v - 32.0) / 1.8 + _ZERO_CELSIUS}[scale]
+    if not math.isfinite(kelvin):
+        raise InputError(f"{name}: {text!r} is not a finite temperature")
+    return kelvin
 
 
 def parse_values(text, kind, name, *, limit=None):
@@ -507,9 +727,10 @@ def parse_values(text, kind, name, *, limit=None):
 
     Notes
     -----
-    A unit written only on the last item applies to all items without one. A range includes its end
-    point when the steps land on it; it may hold at most :data:`bearinglab._bounds.MAX_RANGE_VALUES` values
-    (counted before it is built). Items are separated by commas or
+    Each item is one quantity by the grammar of :func:`parse_quantity`. A unit written only on the last
+    item applies to all items without one. A range includes its end point when the steps land on it; it
+    may hold at most :data:`bearinglab._bounds.MAX_RANGE_VALUES` values (counted before it is built,
+    without overflow: ``0 kN:1e300 kN:1e-300 kN`` is refused). Items are separated by commas or
     semicolons. One comma between two digits (``"2,5 kN"``) could be a decimal comma or a list of two
     values; it is rejected with both spellings in the message, never guessed.
 
@@ -529,16 +750,16 @@ def parse_values(text, kind, name, *, limit=None):
         raise InputError(f"{name}: no values in {text!r}")
     if len(items) > limit:  # counted before each item is parsed
         raise InputError(f"{name}: {len(items)} values, more than the limit of {limit}")
+    if sep == ":" and len(items) != 3:
+        raise InputError(f"{name}: a range is start:stop:step, got {text!r}")
     parsed = [_split_unit(s) for s in items]
     last_unit = parsed[-1][1] or None
     values = []
     for item, (num, unit) in zip(items, parsed):
         if num is not None and not unit and last_unit:
-            item = f"{num} {last_unit}"
+            item = f"{_literal(num, item, name)} {last_unit}"
         values.append(parse_quantity(item, kind, name))
     if sep == ":":
-        if len(values) != 3:
-            raise InputError(f"{name}: a range is start:stop:step, got {text!r}")
         start, stop, step = values
         if not step > 0 or stop < start:
             raise InputError(f"{name}: range {text!r} needs step > 0 and stop >= start")

@@ -26,7 +26,7 @@ COMMANDED = [n for n in CALCULATIONS if CALCULATIONS[n].command]
 
 #: calculations registered before their command: the command line generated from the registry adds them
 #: (issue 33 item 5); remove a name here when its command exists
-NOT_YET_COMMANDS = {"shaft"}
+NOT_YET_COMMANDS: set = set()
 _WITH_COMMAND = [n for n in CALCULATIONS if CALCULATIONS[n].command and n not in NOT_YET_COMMANDS]
 
 
@@ -205,3 +205,68 @@ def test_a_clash_between_a_field_and_an_own_option_is_refused():
 
     with pytest.raises(ValueError, match="speed"):
         _options.command("life", run_)
+
+
+# ----------------------------------------------------------------------------- a document given as a file
+def _sum_document(parsed):
+    """The sum of the numbers of the document's ``values`` (the text the field holds, never a path)."""
+    import tomllib
+
+    text = parsed.values.get("numbers", parsed.given.get("numbers"))
+    assert isinstance(text, str)
+    return {"sum": float(sum(tomllib.loads(text)["values"])), "warnings": []}
+
+
+DOCUMENT_DEMO = Calculation(
+    "demo-sum", ("demo-sum",), "Sum (demo)", "The sum of a document's numbers.",
+    (Field("numbers", "document", "the numbers, as `values = [...]`.", required=True, option="FILE",
+           group="demo"),),
+    module="demo_calculations.demo_sum")
+
+
+@pytest.fixture
+def document_demo(monkeypatch):
+    module = types.ModuleType("demo_calculations.demo_sum")
+    module.document = _sum_document
+    monkeypatch.setitem(sys.modules, "demo_calculations", types.ModuleType("demo_calculations"))
+    monkeypatch.setitem(sys.modules, "demo_calculations.demo_sum", module)
+    monkeypatch.setitem(CALCULATIONS, DOCUMENT_DEMO.name, DOCUMENT_DEMO)
+    monkeypatch.setattr(_options, "_BUILT", set(_options._BUILT))
+    monkeypatch.setattr(cli.app, "registered_commands", list(cli.app.registered_commands))
+    monkeypatch.setattr(cli, "_CLICK", {})
+    _options.register(cli.app)
+    return DOCUMENT_DEMO
+
+
+def test_a_document_field_is_a_file_whose_text_the_command_reads(document_demo, capsys, tmp_path):
+    # issue 33 item 5: any document field given as a positional FILE, not a case of one command
+    path = tmp_path / "n.toml"
+    path.write_text("values = [1.5, 2.25, 3]\n", encoding="utf-8")
+    assert cli.main(["demo-sum", str(path), "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["sum"] == 6.75
+    # the web posts the text: the same document
+    assert run(parse("demo-sum", {"numbers": path.read_text(encoding="utf-8")}))["sum"] == 6.75
+    assert cli.main(["demo-sum", "--help"]) == 0
+    out = " ".join(capsys.readouterr().out.split())
+    assert "demo-sum [OPTIONS] {FILE}" in out and "TOML file of the numbers" in out
+    for argv, message in (([str(tmp_path / "none.toml")], f"numbers: {tmp_path / 'none.toml'}: no such file"),
+                          ([str(tmp_path)], f"numbers: {str(tmp_path)!r} is a directory; give a file name"),
+                          (["/dev/zero"], "numbers: '/dev/zero' is not a regular file")):
+        assert cli.main(["demo-sum", *argv]) == 2
+        err = capsys.readouterr().err.strip()
+        assert err.startswith(f"bearinglab: error: {message}") and len(err.splitlines()) == 1, err
+
+
+def test_a_document_file_is_an_input_of_the_run(document_demo, tmp_path):
+    # the file the command read is one of the run's inputs: no output of the same run may replace it
+    from bearinglab import _io
+    from bearinglab.cli._common import read_document
+    from bearinglab.errors import InputError
+
+    path = tmp_path / "n.toml"
+    path.write_text("values = [1]\n", encoding="utf-8")
+    with _io.run_files():
+        assert read_document(path, "numbers") == "values = [1]\n"
+        with pytest.raises(InputError, match="input"):
+            _io.write_text(path, "replaced")
+    assert path.read_text(encoding="utf-8") == "values = [1]\n"

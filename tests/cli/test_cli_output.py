@@ -50,6 +50,7 @@ INVOCATIONS = {
     "friction template": ("-b 18", 0),
     "runout": (f"--errors {RUNOUT} --angle 90", 0),
     "runout monte-carlo": ("--geometry examples/runout/monte_carlo_reference.toml --samples 50 --seed 1", 0),
+    "shaft": ("examples/shaft/spindle.toml --stiffness-at 0mm --modes 2", 0),
 }
 # more of what the commands print: the one-term friction table, the iteration table of axial-angle,
 # a single case of high-speed and of the SKF model, a rotation sequence of runout

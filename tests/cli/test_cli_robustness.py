@@ -139,7 +139,7 @@ def test_sweep_json_carries_warnings(capsys):
 # ----------------------------------------------------------------------------- item 16: messages, exit codes
 @pytest.mark.parametrize("extra, message", [
     (["--x0", "-1"], "x0 must be in (0, 1.36136) [rad]"),
-    (["--x0", "nan"], "x0 must be in"),
+    (["--x0", "nan"], "Invalid value for '--x0': 'nan' is not a number"),  # issue 29: a word is no number
     (["--rows", "0"], "rows must be an integer >= 1"),
 ])
 def test_axial_angle_impossible_start_is_input_error(capsys, extra, message):

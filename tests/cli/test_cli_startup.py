@@ -14,7 +14,7 @@ from bearinglab.cli import _click_command, main
 
 HEAVY = ("numpy", "scipy", "matplotlib", "pint", "dask", "pydantic")
 COMMANDS = ("catalog", "axial-angle", "stand-load", "frequencies", "sweep", "high-speed", "load-distribution",
-            "bearing-set", "life", "film", "temperature", "friction", "runout", "clearance", "serve")
+            "bearing-set", "life", "film", "temperature", "friction", "runout", "clearance", "shaft", "serve")
 SUBCOMMANDS = {"catalog": ("list", "search", "show"), "friction": ("torque", "lab", "template"),
                "runout": ("monte-carlo",)}
 

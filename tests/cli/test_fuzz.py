@@ -90,7 +90,7 @@ INPUT_AS_OUTPUT = "<an input>"
 # the words of an option's name that make it a file or directory the command reads or writes
 INPUT_WORDS = ("file", "catalog", "errors", "geometry")
 OUTPUT_WORDS = ("csv", "plot", "out", "dir")
-NOT_FINITE = re.compile(r"(?<![\w.])(nan|inf|-inf|infinity)(?![\w])", re.IGNORECASE)
+NOT_FINITE = re.compile(r"(?<![\w.'\"])(nan|inf|-inf|infinity)(?![\w])", re.IGNORECASE)  # not an echoed word ("series": "nan")
 
 
 def _kind(param):

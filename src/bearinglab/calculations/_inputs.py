@@ -301,17 +301,15 @@ def five_loads(fx=None, fy=None, fz=None, mx=None, my=None, radial_load=None, ax
 
 
 _ZERO_C = 273.15  # K at 0 degC
-_TEMPERATURE = re.compile(r"^\s*([-+]?\d+(?:\.\d*)?(?:[eE][-+]?\d+)?)\s*(°C|degC|C|K|°F|degF|F)\s*$")
 
 
 def parse_temperature(text, name="temperature"):
-    """A temperature '70 degC', '343 K' or '158 degF' [K], above absolute zero."""
-    m = _TEMPERATURE.match(text or "")
-    if not m:
-        raise InputError(f"{name} must be a number with degC, K or degF (e.g. '70 degC'), got {text!r}")
-    v, unit = float(m.group(1)), m.group(2).lstrip("°").removeprefix("deg")
-    t = {"C": v + _ZERO_C, "K": v, "F": (v - 32.0) / 1.8 + _ZERO_C}[unit]
-    if not (t > 0 and math.isfinite(t)):
+    """A temperature '70 degC', '343 K' or '158 degF' [K], above absolute zero: one number and its unit by
+    the grammar of every quantity (:func:`bearinglab.units.parse_temperature`)."""
+    from ..units import parse_temperature as read
+
+    t = read("" if text is None else text, name)
+    if not t > 0:
         raise InputError(f"{name} must be above absolute zero (0 K = -273.15 degC), got {text!r}")
     return t
 
@@ -371,7 +369,7 @@ def lubricant_viscosity(viscosity=None, oil=None, temperature=None, viscosity_in
     if viscosity_index is not None and viscosity_100 is not None:
         raise InputError("viscosity-index: give --viscosity-index or --viscosity-100, not both (the index fixes "
                          "the viscosity at 100 degC)")
-    m = re.fullmatch(r"(?:ISO\s*)?VG\s*(\d+)", oil.strip(), flags=re.IGNORECASE)
+    m = re.fullmatch(r"(?:ISO\s*)?VG\s*([0-9]+)", oil.strip(), flags=re.IGNORECASE)
     grades = lubrication.ISO_VG_GRADES
     if not m or int(m.group(1)) not in grades:
         raise InputError(f"oil must be an ISO VG grade (VG{grades[0]} ... VG{grades[-1]}), got {oil!r}")

@@ -27,21 +27,13 @@ _UM, _MM = 1e-6, 1e-3
 
 
 def parse_temperature(text, name):
-    """A temperature option [K]: '60 degC', '60 °C', '333 K', '140 degF'; a bare number is in degC."""
-    from ..units import _ureg
+    """A temperature option [K]: '60 degC', '60 °C', '333 K', '140 degF'; a bare number is in degC. One
+    number and one unit by the grammar of every quantity (:func:`bearinglab.units.parse_temperature`):
+    pint never evaluates it ('5,5 degC', '1 000 K', '9**9**9 K' are refused)."""
+    from ..units import parse_temperature as read
 
-    text = str(text).strip()
-    try:
-        value = float(text)
-    except ValueError:
-        value = None
-    ureg = _ureg()
-    try:
-        q = ureg.Quantity(value, "degC") if value is not None else ureg.Quantity(text)
-        kelvin = float(q.to("kelvin").magnitude)
-    except Exception as exc:  # pint raises several unrelated types
-        raise InputError(f"{name}: cannot read {text!r} as a temperature (e.g. '60 degC', '333 K')") from exc
-    if not math.isfinite(kelvin) or kelvin < 0:
+    kelvin = read(str(text).strip(), name, default_unit="degC")
+    if kelvin < 0:
         raise InputError(f"{name} must be >= -273.15 [degC] (absolute zero), got {kelvin - 273.15:g} degC")
     return kelvin
 

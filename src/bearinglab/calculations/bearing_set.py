@@ -19,6 +19,7 @@ import types
 
 from ..errors import InputError
 from ._failures import failures
+from ._finite import finite
 from ._inputs import choice, five_loads, parse_length
 from ._request import given_text, with_notes
 from .load_distribution import inputs, plausibility, solve, takeup_um, with_takeup
@@ -40,6 +41,7 @@ def _names(value):
     return [str(s).strip() for s in value]
 
 
+@finite('bearing-set')
 def document(parsed, *, catalog=None):
     """The document of ``bearinglab bearing-set ... --json`` for a checked request.
 

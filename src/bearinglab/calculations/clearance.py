@@ -16,6 +16,7 @@ from __future__ import annotations
 from .. import catalog as _catalog
 from .._io import json_value
 from ._failures import failures
+from ._finite import finite
 from ._inputs import inputs_echo, parse_speed, resolve_bearing
 from ._mounting import mounted_inputs
 
@@ -29,6 +30,7 @@ _MOUNTING = ("shaft_fit", "housing_fit", "shaft_interference", "housing_interfer
              "housing_temperature")
 
 
+@finite('clearance')
 def document(parsed, *, bearing_file=None, catalog=None, execution=None):
     """The document of ``bearinglab clearance ... --json`` for a checked request.
 

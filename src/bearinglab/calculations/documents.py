@@ -28,6 +28,7 @@ import warnings
 
 from ..errors import InputError
 from ._failures import run_failure
+from ._finite import check, finite
 from .fields import RequestError, RunFailure
 from .registry import CALCULATIONS
 
@@ -117,6 +118,7 @@ def _clearance_range(b, choice, given):
 
 
 
+@finite("catalog")
 def catalog_document(name, *, catalog=None, clearance=None, radial_clearance=None):
     """The document of ``bearinglab catalog show NAME --json`` (the command prints this) and the bearing.
 
@@ -332,7 +334,7 @@ def run(parsed):
             raise RunFailure("name", parsed.values["name"],
                              "{name}: " + message.removeprefix("bearing: ")) from None
     if name == "catalog-search":
-        return _search_document(parsed)
+        return check(_search_document(parsed), name)
     return _native(parsed)  # every other calculation has a document function of its own
 
 
@@ -358,7 +360,9 @@ def _native(parsed):
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", RuntimeWarning)  # every result is checked finite
-            return json_value(module.document(parsed))  # NaN as null, numpy as plain numbers
+            # NaN as null, numpy as plain numbers; every number finite or an error (a calculation whose
+            # document function is not decorated is checked here all the same)
+            return json_value(finite(parsed.calculation.name)(module.document)(parsed))
     except RequestError:
         raise
     except ConvergenceError as exc:  # no physical solution is the input's fault (2); else the solver's

@@ -52,7 +52,8 @@ class Field:
     field off the command line (an input of the page alone, such as its picker's query). The help
     names another field of the same calculation between backquotes (as Markdown code: the API's
     descriptions are CommonMark): the command line writes it as that field's option
-    (``--temperature``), the API and the page as it stands.
+    (``--temperature``), the API and the page as it stands. ``example`` is a small valid value of a
+    ``document`` field (its text), which the registry-driven fuzz test and the API's schema show.
     """
 
     name: str
@@ -71,6 +72,7 @@ class Field:
     option: str = ""
     aliases: tuple = ()
     cli: bool = True
+    example: str = ""
 
     @property
     def cli_option(self):
@@ -135,8 +137,13 @@ class RunFailure(RequestError):
 
 
 _OTHER = re.compile(r"\{field:([a-z0-9_]+)\}")
-_MALFORMED = re.compile(r"\d*\.\d*\.\d")
+_MALFORMED = re.compile(r"[0-9]*\.[0-9]*\.[0-9]")
 _RANGE = re.compile(r"^([^:]+):([^:]+):([^:]+)$")
+# a number as a field of kind "number" or "int" takes it: ASCII digits, one sign, no grouping, no words
+# (Python's float() and int() read '٥', '1_000', 'nan' and 'infinity')
+_NUMBER = re.compile(r"^\s*[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?\s*$", re.ASCII)
+_INTEGER = re.compile(r"^\s*[-+]?[0-9]+\s*$", re.ASCII)
+_LONGEST_NUMBER = 40  # characters of a number field's text: more is no number a user typed
 
 
 def count_values(field, text):
@@ -152,25 +159,49 @@ def count_values(field, text):
     Returns
     -------
     int
-    """
-    from ..units import parse_values
 
-    m = _RANGE.match(str(text).strip())
+    Raises
+    ------
+    RequestError
+        A range whose ends do not read, whose step is not > 0, or whose count is not finite
+        (``0 kN:1e300 kN:1e-300 kN``: computed without overflow, never as ``floor(inf)``).
+    """
+    from ..units import _NUMBER_TEXT, parse_values
+
+    text = str(text).strip()
+    m = _RANGE.match(text)
     if not m:
         sep = ";" if ";" in text else ","
-        return len([s for s in str(text).split(sep) if s.strip()])
-    unit = re.sub(r"^\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", "", m.group(3)).strip()
+        return len([s for s in text.split(sep) if s.strip()])
+    unit = re.sub(rf"^\s*{_NUMBER_TEXT}", "", m.group(3), flags=re.ASCII).strip()
     ends = []
     for part in m.groups():
         part = part.strip()
-        if unit and re.fullmatch(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", part):
+        if unit and re.fullmatch(_NUMBER_TEXT, part, flags=re.ASCII):
             part = f"{part} {unit}"
-        ends.append(float(parse_values(part, field.kind, field.name)[0]))
+        try:
+            ends.append(float(parse_values(part, field.kind, field.name)[0]))
+        except RequestError:
+            raise
+        except InputError as exc:
+            raise _named(field, text, str(exc)) from None
     start, stop, step = ends
     if not (step > 0 and stop >= start):
         raise RequestError(field.name, text, "start:stop:step with step > 0 and stop >= start",
                            f"{{name}}: range {text!r} needs step > 0 and stop >= start")
-    return math.floor((stop - start) / step * (1 + 1e-12) + 1e-9) + 1
+    n = (stop - start) / step
+    if not math.isfinite(n):  # 1e303 / 1e-297: the count overflows a float
+        raise RequestError(field.name, text, "a range of finitely many values",
+                           f"{{name}}: range {text!r} holds too many values to count (its span over its "
+                           f"step overflows); give a larger step or a shorter range")
+    return math.floor(n * (1 + 1e-12) + 1e-9) + 1
+
+
+def _named(field, value, message):
+    """An InputError's message (which opens with the field's name) as a RequestError of ``field``."""
+    if message.startswith(field.name):
+        message = "{name}" + message[len(field.name):]
+    return RequestError(field.name, value, field.valid(), message)
 
 
 def _bounded(field, shown, text):
@@ -233,15 +264,9 @@ def parse_field(field, value, *, limit=None):
                                f"{{name}} must be {field.valid()}, got {value!r}")
         return text
     if kind in ("int", "number"):
-        if isinstance(value, bool):
-            raise RequestError(field.name, value, field.valid(), f"{{name}}: expected a number, got {value!r}")
-        try:
-            number = int(str(value).strip()) if kind == "int" else float(str(value).strip())
-        except ValueError:
-            what = "a whole number" if kind == "int" else "a plain number"
-            raise RequestError(field.name, value, field.valid(),
-                               f"{{name}}: expected {what}, got {value!r}") from None
-        _bounded(field, float(number), value)
+        number = _number(field, value)
+        shown = float(number) if abs(number) < 1e300 else math.copysign(math.inf, number)
+        _bounded(field, shown, value)
         return number
     # a quantity
     text = value if isinstance(value, str) else (f"{value} {field.unit}" if field.unit else str(value))
@@ -263,9 +288,37 @@ def parse_field(field, value, *, limit=None):
     except RequestError:
         raise
     except InputError as exc:  # the units' message opens with the field's name: leave it open
-        message = str(exc)
-        if message.startswith(field.name):
-            message = "{name}" + message[len(field.name):]
-        raise RequestError(field.name, value, field.valid(), message) from None
+        raise _named(field, value, str(exc)) from None
     _bounded(field, si / scale if field.unit != "degC" else si - 273.15, text)
     return si
+
+
+def _number(field, value):
+    """The int or float of a field of kind ``int`` or ``number``: a JSON number, or text of plain ASCII
+    digits (an optional sign; for a number a decimal point and an exponent), finite, not read as 0 where
+    it is not 0 (an underflow)."""
+    what = "a whole number" if field.kind == "int" else "a plain number"
+
+    def refuse():
+        return RequestError(field.name, value, field.valid(), f"{{name}}: expected {what}, got {value!r}")
+
+    if isinstance(value, bool):
+        raise RequestError(field.name, value, field.valid(), f"{{name}}: expected a number, got {value!r}")
+    if isinstance(value, int) or isinstance(value, float) and field.kind == "number":
+        number = value
+    else:
+        text = str(value)
+        pattern = _INTEGER if field.kind == "int" else _NUMBER
+        if len(text) > _LONGEST_NUMBER or not pattern.match(text):
+            raise refuse()
+        number = int(text) if field.kind == "int" else float(text)
+    if field.kind == "number" and not isinstance(number, float):  # a JSON integer: a float, as the text
+        number = float(number) if abs(number) < 1e308 else math.copysign(math.inf, number)
+    if isinstance(number, float):
+        if not math.isfinite(number):
+            raise RequestError(field.name, value, field.valid(),
+                               f"{{name}} must be {field.valid()}, got {value!r} (not a finite number)")
+        if number == 0.0 and isinstance(value, str) and re.search(r"[1-9]", re.split("[eE]", value)[0]):
+            raise RequestError(field.name, value, field.valid(),  # '1e-400': not 0, but read as 0
+                               f"{{name}}: {value!r} underflows (below 5e-324); write 0 or a larger value")
+    return number

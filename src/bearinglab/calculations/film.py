@@ -18,6 +18,7 @@ from .. import catalog as _catalog
 from .._io import json_value
 from ..errors import InputError
 from ._failures import failures
+from ._finite import finite
 from ._inputs import (
     choice,
     default_lubrication,
@@ -110,6 +111,7 @@ def pressure_viscosity(text):
                      "pressure-viscosity-coefficient"), _ALPHA_RANGE, "1/GPa", 1e9)
 
 
+@finite('film')
 def document(parsed, *, bearing_file=None, catalog=None):
     """The document of ``bearinglab film ... --json`` for a checked request.
 

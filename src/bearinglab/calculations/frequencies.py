@@ -17,11 +17,12 @@ import re
 from ..errors import InputError
 from . import _reading as inp
 from ._failures import failures
+from ._finite import finite
 
 __all__ = ["document"]
 
 _HZ = 2.0 * math.pi  # rad/s per Hz (rev/s)
-_PERCENT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(%|percent)?\s*$")
+_PERCENT = re.compile(r"^\s*([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*(%|percent)?\s*$")
 
 
 def _band(text):
@@ -35,6 +36,7 @@ def _band(text):
     return value / 100.0
 
 
+@finite('frequencies')
 def document(parsed, *, bearing_file=None, catalog=None):
     """The document of ``bearinglab frequencies ... --json`` for a request.
 

@@ -20,6 +20,7 @@ from typing import NamedTuple
 from ..errors import InputError
 from . import _reading as inp
 from ._failures import failures
+from ._finite import finite
 from ._inputs import default_lubrication, lubricant_viscosity, parse_viscosity
 
 __all__ = ["MODELS", "FrictionResult", "compute", "document"]
@@ -38,6 +39,7 @@ class FrictionResult(NamedTuple):
     """The :class:`bearinglab.friction.SKFFriction`-like result of the skf model, None for the others."""
 
 
+@finite('friction')
 def compute(parsed, *, bearing_file=None, catalog=None):
     """Compute a friction request.
 
@@ -70,6 +72,7 @@ def compute(parsed, *, bearing_file=None, catalog=None):
     return FrictionResult(doc, m)
 
 
+@finite('friction')
 def document(parsed, *, bearing_file=None, catalog=None):
     """The document of ``bearinglab friction torque ... --json`` for a request.
 

@@ -23,6 +23,7 @@ from ..errors import ConvergenceError, InputError, ValidityWarning
 from . import _mounting
 from . import _reading as inp
 from ._failures import failures
+from ._finite import finite
 
 __all__ = ["HighSpeedResult", "compute", "document", "figure"]
 
@@ -53,6 +54,7 @@ class HighSpeedResult(NamedTuple):
     """The speeds of the grid. [rad/s]"""
 
 
+@finite('high-speed')
 def compute(parsed, *, bearing_file=None, catalog=None, execution=None, check=None):
     """Solve a high-speed request.
 
@@ -115,6 +117,7 @@ def compute(parsed, *, bearing_file=None, catalog=None, execution=None, check=No
     return HighSpeedResult(inp.notes_in(doc, b), state, cols, b, notes, options, speeds)
 
 
+@finite('high-speed')
 def document(parsed, *, bearing_file=None, catalog=None):
     """The document of ``bearinglab high-speed ... --json`` for a request (solved serially).
 

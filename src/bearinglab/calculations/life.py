@@ -28,6 +28,7 @@ import warnings
 
 from ..errors import InputError
 from ._failures import failures
+from ._finite import finite
 from ._inputs import (
     default_lubrication,
     five_loads,
@@ -64,6 +65,7 @@ _MOUNTING = ("shaft_fit", "housing_fit", "shaft_interference", "housing_interfer
 POSTED = "the posted document"
 
 
+@finite('life')
 def document(parsed, *, catalog=None, bearing_file=None, duty_cycle_source=POSTED):
     """The document of ``bearinglab life ... --json`` for a checked request.
 

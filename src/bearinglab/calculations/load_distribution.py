@@ -23,6 +23,7 @@ import warnings
 
 from ..errors import InputError
 from ._failures import failures
+from ._finite import finite
 from ._inputs import (
     choice,
     five_loads,
@@ -45,6 +46,7 @@ MOUNTING = ("shaft_fit", "housing_fit", "shaft_interference", "housing_interfere
             "shaft_temperature", "housing_temperature")
 
 
+@finite('load-distribution')
 def document(parsed, *, catalog=None, bearing_file=None, speeds=False):
     """The document of ``bearinglab load-distribution ... --json`` for a checked request.
 

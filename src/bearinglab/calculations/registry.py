@@ -43,6 +43,12 @@ BODY_LIMIT = 1 << 20
 #: The largest posted document, e.g. a runout error set [characters]; it travels in the body.
 DOCUMENT_LIMIT = 500_000
 
+#: A small valid shaft system (two simple supports, one load): the ``example`` of the shaft's document field
+_SHAFT_EXAMPLE = ('[material]\nmaterial = "steel"\n\n[[sections]]\nlength = "200 mm"\ndiameter = "30 mm"\n\n'
+                  '[[supports]]\nname = "A"\nposition = "20 mm"\nrigid = true\naxial = true\n\n'
+                  '[[supports]]\nname = "B"\nposition = "180 mm"\nrigid = true\n\n'
+                  '[[loads]]\nposition = "100 mm"\nfy = "1 kN"\n')
+
 # The web's own size limits: lower than the command line's (bearinglab._bounds), because one request
 # shares a small server with others and answers within TIME_BUDGET; each is <= its _bounds limit
 # (tests/calculations/test_fields.py checks it).
@@ -250,7 +256,9 @@ _CALCS = (
          # a document: the page and the API take its text; the command line a file holding it
          _f("duty_cycle", "document", "[[step]] loads, speed and time share: the combined life, instead "
             "of the loads and speed (the tables hold fx, fy, fz, mx, my, speed and time; the shares sum "
-            "to 1).", label="Duty cycle", group=_L),
+            "to 1).", label="Duty cycle", group=_L,
+            example='[[step]]\nfx = "1 kN"\nspeed = "1000 rpm"\ntime = 0.7\n\n[[step]]\nfx = "2 kN"\n'
+                    'speed = "3000 rpm"\ntime = 0.3\n'),
          _f("ambient", "text", "With `temperature` auto: the ambient (default 20 degC).",
             label="Ambient temperature", unit="degC", group="temperature auto"),
          _f("thermal_resistance", "thermal_resistance", "With `temperature` auto: bearing to ambient, "
@@ -584,9 +592,10 @@ _CALCS = (
         "Several bearings on an elastic shaft (Timoshenko elements) with gears, pulleys, housings and speed: "
         "support loads, bearing lives and the system life, deflection, stiffness at a point, natural "
         "frequencies.",
-        (_f("model", "document", "The shaft system as a TOML or JSON document (sections, supports, loads, "
-            "gears, pulleys, cases; the format of the user guide's shaft-systems page), posted as text; never a "
-            "file path.", label="Shaft system", required=True, option="FILE", group="shaft"),
+        # a document: the page and the API take its text, the command line the file (FILE) holding it
+        (_f("model", "document", "the shaft system: its sections, supports, loads, gears, pulleys and load "
+            "cases, as tables (JSON takes the same tables; the format of the user guide's shaft-systems page).",
+            label="Shaft system", required=True, option="FILE", group="shaft", example=_SHAFT_EXAMPLE),
          _f("speed", "speed", "Shaft speed instead of the file's, e.g. '3000 rpm' (its sign: the sense of "
             "rotation).", label="Shaft speed", unit="rpm", group=_L),
          _f("stiffness_at", "length", "The direct stiffness at this position, e.g. '0 mm' (a spindle's nose).",

@@ -27,6 +27,7 @@ from .._bounds import check_count
 from .._io import json_value
 from ..errors import CatalogError, ConvergenceError, InputError
 from ._failures import failures
+from ._finite import finite
 from .fields import RequestError
 
 __all__ = ["check_sequence", "check_study", "compute", "compute_monte_carlo", "document",
@@ -200,6 +201,7 @@ class Runout(NamedTuple):
     lines: list
 
 
+@finite('runout')
 def document(parsed, **files):
     """The document of ``bearinglab runout ... --json`` for a checked request.
 
@@ -226,6 +228,7 @@ def document(parsed, **files):
     return json_value(compute(parsed, **files).document)
 
 
+@finite('runout')
 def compute(parsed, *, errors_file=None, geometry_file=None, catalog=None):
     """:func:`document` with the model's results, for the command line's figures and CSV.
 
@@ -342,6 +345,7 @@ def _validity(what, *args, **kwargs):
 
 
 
+@finite('runout-monte-carlo')
 def monte_carlo_document(parsed, **options):
     """The document of ``bearinglab runout monte-carlo ... --json`` for a checked request.
 
@@ -366,6 +370,7 @@ def monte_carlo_document(parsed, **options):
     return json_value(compute_monte_carlo(parsed, **options)[0])
 
 
+@finite('runout-monte-carlo')
 def compute_monte_carlo(parsed, *, geometry_file=None, catalog=None, execution=None):
     """:func:`monte_carlo_document` with the study, for the command line's files.
 

@@ -16,10 +16,12 @@ import math
 from ..errors import InputError
 from . import _reading as inp
 from ._failures import failures
+from ._finite import finite
 
 __all__ = ["document"]
 
 
+@finite(None)
 def document(parsed, *, bearing_file=None, catalog=None):
     """The document of ``bearinglab axial-angle|stand-load ... --json`` for a request.
 

@@ -25,6 +25,7 @@ from .. import catalog as _catalog
 from .._io import json_value
 from ..errors import InputError
 from ._failures import failures
+from ._finite import finite
 from ._inputs import (
     HOTTEST_OIL_DEGC,
     default_lubrication,
@@ -272,6 +273,7 @@ def radial_axial(radial_load, axial_load):
     return fr, fa
 
 
+@finite('temperature')
 def document(parsed, *, bearing_file=None, catalog=None):
     """The document of ``bearinglab temperature ... --json`` for a checked request.
 
@@ -324,8 +326,8 @@ def _document(parsed, bearing_file, catalog):
     extra = {}
     if v.get("reference_speed"):  # ISO 15312 (bearinglab.thermal.thermal_reference_speed); one per bearing
         ref = thermal.thermal_reference_speed(b, **{k: x for k, x in skf.items() if k == "constants"})
-        extra = {"thermal_reference_speed_rpm": json_value(float(ref.speed / RPM)),
-                 "reference_heat_flow_W": json_value(float(ref.reference_heat_flow))}
+        extra = json_value({"thermal_reference_speed_rpm": float(ref.speed / RPM),
+                            "reference_heat_flow_W": float(ref.reference_heat_flow)})
         notes = list(dict.fromkeys([*notes, *ref.warnings]))
     from . import _preload
 
@@ -353,10 +355,10 @@ def _doc(r, k, n):
     from ..tables import json_value
 
     def pick(name, scale=1.0, shift=0.0):
-        return json_value(float(np.atleast_1d(getattr(r, name))[k]) * scale + shift)
+        return float(np.atleast_1d(getattr(r, name))[k]) * scale + shift
 
-    return {"bearing_temperature_degC": pick("temperature", shift=-_ZERO_C),
-            "viscosity_mm2_s": pick("kinematic_viscosity", 1e6), "friction_power_W": pick("friction_power"),
-            "heat_dissipated_W": pick("heat_dissipated"), "friction_moment_Nmm": pick("friction_moment", 1e3),
-            "kappa": pick("viscosity_ratio"), "iterations": int(np.atleast_1d(r.iterations)[k]),
-            "steady": bool(np.atleast_1d(r.steady)[k])}
+    return json_value({"bearing_temperature_degC": pick("temperature", shift=-_ZERO_C),  # nulls known by key
+                       "viscosity_mm2_s": pick("kinematic_viscosity", 1e6), "friction_power_W": pick("friction_power"),
+                       "heat_dissipated_W": pick("heat_dissipated"), "friction_moment_Nmm": pick("friction_moment", 1e3),
+                       "kappa": pick("viscosity_ratio"), "iterations": int(np.atleast_1d(r.iterations)[k]),
+                       "steady": bool(np.atleast_1d(r.steady)[k])})

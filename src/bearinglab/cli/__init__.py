@@ -17,6 +17,7 @@ film                           EHL film, Lambda and regime per ball (issue 24)  
 temperature                    steady bearing temperature, heat balance (issue 24)    cli/temperature.py
 runout | runout monte-carlo    manufacturing errors -> inner-ring runout (spec 003)   cli/runout.py
 clearance                      mounted clearance: fits, temperatures, speed (issue 23) cli/clearance.py
+shaft FILE                     bearings on an elastic shaft: loads, lives, stiffness   cli/shaft.py
 
 Each command module defines ``COMMANDS`` (command name -> function, or a Typer group). A calculation's
 command is generated from its declaration in :mod:`bearinglab.calculations.registry` (``cli/_options.py``:
@@ -78,6 +79,7 @@ from . import (
     load,
     runout,
     serve,
+    shaft,
     stand,
     sweep,
     temperature,
@@ -122,7 +124,7 @@ def _main_options(
 
 _GROUPS = {}
 for _module in (catalog, stand, frequencies, sweep, high_speed, load, life, film, temperature, friction, runout,
-                clearance, serve):
+                clearance, shaft, serve):
     for _name, _command in _module.COMMANDS.items():
         if isinstance(_command, typer.Typer):
             app.add_typer(_command, name=_name)
@@ -182,8 +184,46 @@ def _tidy(root, encoding=None):
         for param in [*command.params, help_option]:
             if getattr(param, "is_flag", False):
                 param.metavar = ""
+            _strict_number(param)
         stack.extend(getattr(command, "commands", {}).values())
     return root
+
+
+# a whole number or a number option as click reads it, but only plain ASCII digits (issue 29): Python's int()
+# and float() read '٥' as 5, '1_000' as 1000 and float() 'nan', 'inf' and '1e-400' (as 0.0)
+_STRICT_TEXT = {"IntParamType": re.compile(r"^\s*[-+]?[0-9]+\s*$", re.ASCII),
+                "FloatParamType": re.compile(r"^\s*[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?\s*$",
+                                             re.ASCII)}
+_STRICT_TYPES = {}
+
+
+def _strict_number(param):
+    """Give an integer or float option a type that reads plain ASCII digits only (and no overflow or
+    underflow), refusing the rest as click refuses a word: one line, exit 2."""
+    base = type(getattr(param, "type", None))
+    kind = next((k.__name__ for k in base.__mro__ if k.__name__ in _STRICT_TEXT), None)
+    if kind is None or getattr(base, "_strict", False):
+        return
+    if base not in _STRICT_TYPES:
+        pattern = _STRICT_TEXT[kind]
+
+        def convert(self, value, param, ctx):
+            if isinstance(value, str):
+                if len(value) > 40 or not pattern.match(value):
+                    what = "a whole number" if kind == "IntParamType" else "a number"
+                    self.fail(f"{value!r} is not {what} (plain digits 0-9)", param, ctx)
+                if kind == "FloatParamType":
+                    import math
+
+                    x = float(value)
+                    if not math.isfinite(x) or (x == 0.0 and re.search(r"[1-9]", re.split("[eE]", value)[0])):
+                        self.fail(f"{value!r} overflows or underflows a number", param, ctx)
+            return base.convert(self, value, param, ctx)
+
+        _STRICT_TYPES[base] = type(base.__name__, (base,), {"convert": convert, "_strict": True})
+    strict = _STRICT_TYPES[base].__new__(_STRICT_TYPES[base])
+    strict.__dict__.update(param.type.__dict__)
+    param.type = strict
 
 
 def _spell_help(command, encoding):

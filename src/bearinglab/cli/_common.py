@@ -12,7 +12,8 @@ Inputs echoed    inputs_echo (the bearing as used, the overrides, the quantities
 Input checks     choice, check_directory, check_output (directory and suffix of an output file, and
                  check_not_input: not an input file of the command),
                  check_output_directory (its parent exists),
-                 check_input (an input file exists), parse_speeds (one rule for every speed option),
+                 check_input (an input file exists), read_document (a document field's file -> its
+                 text, recorded as an input of the run), parse_speeds (one rule for every speed option),
                  parse_speed (one speed), speed_size (the d_m of the speed guard), parse_length (a
                  length > 0, the message in mm or um), parse_viscosity, parse_temperature,
                  lubricant_viscosity (the oil options -> the operating viscosity and how it was obtained)
@@ -449,6 +450,43 @@ def check_input(path, what):
     return path
 
 
+def read_document(path, what):
+    """The text of the file that holds a ``document`` field (a shaft system, a duty cycle): checked by
+    :func:`check_input`, read by :func:`bearinglab._bounds.read_input_bytes` (so that the run records it
+    as an input, which no output may replace), and decoded as UTF-8 (a byte-order mark is dropped).
+
+    Parameters
+    ----------
+    path : str or Path
+        The file the command line names.
+    what : str
+        The field as the messages name it (``model``, ``duty-cycle``).
+
+    Returns
+    -------
+    str
+
+    Raises
+    ------
+    InputError
+        One line naming ``what`` and the file: missing, not a regular file, too large, unreadable, or
+        not UTF-8 text.
+    """
+    from .._bounds import read_input_bytes
+
+    path = check_input(path, what)
+    try:
+        data = read_input_bytes(path)
+    except InputError as exc:
+        raise InputError(f"{what}: {exc}") from None
+    except OSError as exc:
+        raise InputError(f"{what}: {path}: {exc.strerror or exc}") from None
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        raise InputError(f"{what}: {path}: not a UTF-8 text file") from None
+
+
 @contextlib.contextmanager
 def execution(description, executor=None, workers=None, chunk_size=None, *, memory_limit=None,
               progress=True):
@@ -485,12 +523,17 @@ def request_message(exc):
 def run_calculation(name, given, document, **options):
     """Compute calculation ``name`` from the options as typed (field name -> value; None: not given)
     with its ``document`` function, the one the web runs (:mod:`bearinglab.calculations`); a refused
-    input is an InputError in the command line's words (:func:`request_message`)."""
+    input is an InputError in the command line's words (:func:`request_message`), a solve that did not
+    converge stays a RunFailure of kind ``convergence`` (exit 3)."""
     from ..calculations import parse
+    from ..calculations._finite import finite
     from ..calculations.fields import RequestError
 
     given = {k: v for k, v in given.items() if v is not None}
     try:  # typer has read the options; the calculation checks them by the command line's own rules
-        return document(parse(name, given, check=False), **options)
+        # every number finite or an error, whether or not the document function is decorated itself
+        return finite(name)(document)(parse(name, given, check=False), **options)
     except RequestError as exc:
+        if getattr(exc, "kind", "input") == "convergence":
+            raise  # a solve that did not converge: the command line words it and exits with 3
         raise InputError(request_message(exc)) from None

@@ -9,6 +9,13 @@ it reads and writes, ``--json``, the executor) is declared by hand, as the keywo
 command's ``run`` function, which receives the fields as typed. The values are not parsed here: typer
 reads whole numbers and numbers, the rest stays text for the calculation to read by its own rules.
 
+A ``document`` field (a shaft system, a duty cycle: text in the calculation, posted so on the web) is a
+file on the command line (a positional ``FILE`` where its ``option`` is spelled without dashes): the
+command reads it (:func:`bearinglab.cli._common.read_document`: a regular file of bounded size, UTF-8,
+recorded as an input of the run, so that no output replaces it) and hands its text to the field, for
+every command, the generic one included. A command whose ``run`` needs the file itself (runout reads
+the profiles next to its error file) asks for the path (``command(..., documents="path")``).
+
 Commands
 --------
 command       calculation name and its ``run(given, **options)`` -> the function typer registers
@@ -84,8 +91,8 @@ def option_of(field, calc, required=True):
     else:
         kind, default = kind | None, None
     help_text = help_of(field, calc)
-    if not field.cli_option.startswith("-"):
-        return kind, typer.Argument(default, help=help_text)
+    if not field.cli_option.startswith("-"):  # a positional argument, shown as its spelling (FILE)
+        return kind, typer.Argument(default, help=help_text, metavar=field.cli_option)
     return kind, typer.Option(default, field.cli_option, *field.aliases, help=help_text,
                               rich_help_panel=_panel(field))
 
@@ -96,7 +103,7 @@ def _info(parameter):
                  if isinstance(m, typer.models.ParameterInfo)), parameter.default)
 
 
-def command(name, run, *, help=None, required=True):
+def command(name, run, *, help=None, required=True, documents="text"):
     """The command of calculation ``name``: a function whose parameters typer reads as the options.
 
     Parameters
@@ -114,6 +121,10 @@ def command(name, run, *, help=None, required=True):
     required : bool
         False: no option is required (the callback of a group, ``runout``, runs before its subcommand
         without them; ``run`` checks what it needs).
+    documents : {"text", "path"}
+        What ``run`` receives for a ``document`` field given on the command line: the text of the file
+        (read by :func:`bearinglab.cli._common.read_document`, the message naming the field and the
+        file), or the file's path, for a command that reads the file itself.
 
     Returns
     -------
@@ -140,10 +151,16 @@ def command(name, run, *, help=None, required=True):
         params.insert(at, p.replace(kind=keyword))
         panels.insert(at, panel)
     names = [f.name for f in fields]
+    files = {f.name: _spelled(f) for f in fields if f.kind == "document"} if documents == "text" else {}
 
     def generated(**values):
         given = {k: values.pop(k) for k in names}
-        return run({k: v for k, v in given.items() if v is not None}, **values)
+        given = {k: v for k, v in given.items() if v is not None}
+        if files:  # a document is a file here: its text is the field's value
+            from ._common import read_document
+
+            given.update({k: read_document(v, files[k]) for k, v in given.items() if k in files})
+        return run(given, **values)
 
     generated.__signature__ = inspect.Signature(params)
     generated.__doc__ = help or run.__doc__ or calc.summary
@@ -153,6 +170,13 @@ def command(name, run, *, help=None, required=True):
     generated.run = run
     _BUILT.add(name)
     return generated
+
+
+def _spelled(field):
+    """How a message names ``field``: its option without dashes (``duty-cycle``), or, for a positional
+    argument (``FILE``), the field's name (``model``), as the web names it."""
+    option = field.cli_option
+    return option[2:] if option.startswith("--") else field.name
 
 
 def generic_run(name):

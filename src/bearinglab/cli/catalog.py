@@ -36,7 +36,7 @@ _FIELD_OF_KEY = {
     "radial_clearance_um": "radial_clearance",
     "rollers": "rollers", "roller_diameter_mm": "roller_diameter", "roller_length_mm": "roller_length",
 }
-_LENGTH = re.compile(r"^\s*([0-9]*\.?[0-9]+(?:[eE][-+]?\d+)?)\s*(mm|m|um|µm|in)?\s*$")
+_LENGTH = re.compile(r"^\s*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*(mm|m|um|µm|in)?\s*$")
 _TO_M = {"mm": 1e-3, None: 1e-3, "m": 1.0, "um": 1e-6, "µm": 1e-6, "in": 0.0254}
 
 

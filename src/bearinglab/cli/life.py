@@ -125,6 +125,8 @@ def _print(title, doc, lubricated):
 
     # the mounting's own notes join the warnings, after the table (never a Python list in a cell)
     doc = {**doc, "warnings": [*doc.get("mounting_warnings", []), *doc.get("warnings", [])]}
+    if isinstance(doc.get("mounting"), dict):  # the mounting echo in one cell, in words ('shaft fit: j5; ...')
+        doc["mounting"] = cell_text(doc["mounting"])
     print_document(title, doc, label=lambda k: _LABELS.get(k, k), cell=cell,
                    skip=("rating_source", "steps", "mounting_warnings"),
                    caption="--json for one JSON document (keys in the units shown)")
@@ -150,5 +152,6 @@ def _print_speeds(docs):
     print_warnings(list(dict.fromkeys(w for d in docs for w in [*d.get("mounting_warnings", []), *d["warnings"]])))
 
 
+# the duty-cycle file is read by the command itself, which names it in the messages of its steps
 #: The ``life`` command, as the application adds it.
-COMMANDS = {"life": command("life", life)}
+COMMANDS = {"life": command("life", life, documents="path")}

@@ -390,6 +390,8 @@ def _check_write_worst(count, metric, directory):
     from .. import runout
     if count is not None and count < 1:
         raise InputError(f"write-worst must be >= 1 [-], got {count}")
+    if count is not None and count > _bounds.MAX_SAMPLES:  # files of samples the study cannot hold
+        raise InputError(f"write-worst must be <= {_bounds.MAX_SAMPLES} [-] (the most samples), got {count}")
     if metric not in runout.METRICS:
         raise InputError(f"worst-by must be one of {list(runout.METRICS)}, got {metric!r}")
     if directory is not None and count is None:
@@ -397,7 +399,8 @@ def _check_write_worst(count, metric, directory):
 
 
 # the group's callback: no option is required, so that `runout monte-carlo` runs without --errors
-runout_app.callback(invoke_without_command=True)(command("runout", runout_command, required=False))
+runout_app.callback(invoke_without_command=True)(command("runout", runout_command, required=False,
+                                                             documents="path"))  # its profiles lie next to it
 runout_app.command("monte-carlo")(command("runout-monte-carlo", monte_carlo_command))
 
 #: The ``runout`` command group (with ``monte-carlo``), as the application adds it.

@@ -222,7 +222,8 @@ def hamrock_dowson(load, entrainment_velocity, rx, ellipticity, dynamic_viscosit
     Parameters
     ----------
     load : array_like
-        Contact load Q > 0 (an unloaded contact, Q = 0, gives NaN: the fit has no limit there). [N]
+        Contact load Q > 0: an unloaded contact (Q = 0) has no film by this fit, whose W^-0.067 has no limit
+        there, and is refused (:func:`bearinglab.film.distribution_films` leaves it out, NaN). [N]
     entrainment_velocity : array_like
         Mean rolling velocity u >= 0. [m/s]
     rx : array_like
@@ -260,6 +261,7 @@ def hamrock_dowson(load, entrainment_velocity, rx, ellipticity, dynamic_viscosit
     """
     groups = dimensionless_groups(load, entrainment_velocity, rx, dynamic_viscosity, pressure_viscosity_coefficient,
                                   reduced_modulus)
+    check_positive("load", load, "N")  # Q = 0: no film by the fit (it returned NaN; issue 29)
     k = check_positive("ellipticity", ellipticity, "-")
     if np.any(k < 1.0):
         raise InputError(f"ellipticity must be >= 1 [-] (a/b with a across rolling), got {float(np.min(k))!r}")
@@ -269,7 +271,7 @@ def hamrock_dowson(load, entrainment_velocity, rx, ellipticity, dynamic_viscosit
     u, g, w = groups
     rx = np.asarray(rx, dtype=float)
     with np.errstate(divide="ignore", invalid="ignore"):
-        w_c = np.where(w > 0, w, np.nan) ** -0.067  # Q = 0: no film formula, NaN
+        w_c = np.where(w > 0, w, np.nan) ** -0.067  # W underflowed to 0 (Q ~ 1e-300 N): no film formula, NaN
         w_m = np.where(w > 0, w, np.nan) ** -0.073
     hc = 2.69 * u**0.67 * g**0.53 * w_c * (1.0 - 0.61 * np.exp(-0.73 * k)) * rx
     hm = 3.63 * u**0.68 * g**0.49 * w_m * (1.0 - np.exp(-0.68 * k)) * rx

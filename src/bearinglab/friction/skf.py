@@ -194,7 +194,7 @@ _ANGULAR_SEAL_LOWER = {"RS1": 30.0}
 
 # Seal and shield suffixes of a designation, one or two sides: contact seals (SKF RS, RS1, RSH, RSL, LS;
 # LLU, DDU elsewhere) and shields or non-contact seals (Z, ZZ, RZ, VV): "6205-2RSH", "6205-Z/C3", "6205ZZ".
-_SEALED_DESIGNATION = re.compile(r"^\s*[A-Z]*\d+(?:/\d+)?[A-Z]*?[-\s]?(?P<sides>2)?"
+_SEALED_DESIGNATION = re.compile(r"^\s*[A-Z]*[0-9]+(?:/[0-9]+)?[A-Z]*?[-\s]?(?P<sides>2)?"
                                  r"(?P<kind>RS[0-9A-Z]*|RZ|ZZ|Z|LS|LLU|LLB|DDU|VV)(?=$|[/\s-])", re.IGNORECASE)
 _NON_CONTACT = ("Z", "ZZ", "RZ", "VV")
 
@@ -228,11 +228,11 @@ def bearing_series(designation):
     ('618', '62', '160', '618')
     """
     text = str(designation).strip()
-    m = re.match(r"(\d+)\s*/", text)  # 618/500: the series before the slash
+    m = re.match(r"([0-9]+)\s*/", text)  # 618/500: the series before the slash
     if m:
         head = m.group(1)
     else:
-        m = re.match(r"(\d+)", text)
+        m = re.match(r"([0-9]+)", text)
         if not m:
             raise InputError(f"series cannot be read from the designation {designation!r}; give the series")
         head = m.group(1)[:-2]  # the last two digits are the bore code

@@ -58,6 +58,11 @@ def draw_field(rng, n, lower, upper, distribution="uniform"):
     """
     if distribution not in DISTRIBUTIONS:
         raise InputError(f"distribution must be one of {list(DISTRIBUTIONS)}, got {distribution!r}")
+    from .. import _bounds
+    from .._validate import check_finite, check_integer
+
+    n = int(check_integer("n", n, 0, _bounds.MAX_SAMPLES))
+    lower, upper = check_finite("lower", lower, "m"), check_finite("upper", upper, "m")
     u = rng.random(n)
     if distribution == "normal":
         lo = special.ndtr(-_SIGMAS)

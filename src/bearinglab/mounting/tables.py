@@ -125,7 +125,7 @@ def standard_tolerance(grade, size):
     return (t[f"IT{grade}"][k] * _UM)[()]
 
 
-_FIELD = re.compile(r"^(js|JS|[a-zA-Z])(\d+)$")
+_FIELD = re.compile(r"^(js|JS|[a-zA-Z])([0-9]+)$")
 
 
 def field_limits(field, size):

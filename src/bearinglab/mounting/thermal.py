@@ -45,7 +45,8 @@ def expansion(diameter, temperature, thermal_expansion, *, reference=REFERENCE_T
     >>> print(f"{expansion(0.1, 293.15 + 50, 12.5e-6) * 1e6:.1f} um")
     62.5 um
     """
-    return (np.asarray(thermal_expansion) * (np.asarray(temperature) - reference) * np.asarray(diameter))[()]
+    return (np.asarray(thermal_expansion, dtype=float) * (np.asarray(temperature, dtype=float) - reference)
+            * np.asarray(diameter, dtype=float))[()]
 
 
 def clearance_loss(inner_raceway, outer_raceway, ball_diameter, inner_temperature, outer_temperature,

@@ -32,8 +32,8 @@ from typing import NamedTuple
 import numpy as np
 from numpy.polynomial import chebyshev as _cheb
 
-from .. import geometry, hertz
-from .._validate import as_float, check_integer, check_positive
+from .. import _bounds, geometry, hertz
+from .._validate import as_float, check_integer, check_positive_finite
 from ..errors import InputError
 from . import _ring
 from .ball import RACEWAY_CONTROLS, _dynamics
@@ -213,10 +213,13 @@ def _geometry(n_balls, d, dm, fi, fo, a0, ep, density, phi0, stiffness_at, contr
     ``clearance``: the diametral operating clearance e [m] instead of the free angle ``a0`` (which may then be
     None); e <= 0 is a preloaded bearing.
     """
-    z = int(check_integer("n_balls", n_balls, 1))
-    d = float(check_positive("ball_diameter", d, "m"))
+    z = int(check_integer("n_balls", n_balls, 1, _bounds.MAX_BALLS))
+    d = float(check_positive_finite("ball_diameter", d, "m"))
     dm = float(geometry.pitch_ratio(d, dm, 0.0) and dm)  # checks d_m > D
     big_a = float(geometry.total_curvature(fi, fo)) * d
+    if not big_a < dm:  # the groove centres are a ring's width apart, not a bearing's size (f = 1e300)
+        raise InputError(f"inner_conformity + outer_conformity - 1 must be < pitch_diameter / ball_diameter = "
+                         f"{dm / d:g} [-] (the groove-centre distance A below d_m), got {big_a / d:g}")
     a0, gr0, e = _free_angle_and_offset(big_a, d, a0, clearance)
     if stiffness_at not in STIFFNESS_AT:
         raise InputError(f"stiffness_at must be one of {list(STIFFNESS_AT)}, got {stiffness_at!r}")
@@ -229,8 +232,8 @@ def _geometry(n_balls, d, dm, fi, fo, a0, ep, density, phi0, stiffness_at, contr
     mass = inertia = ep_f = np.nan
     tab = None
     if tables:
-        ep_f = float(check_positive("reduced_modulus", ep, "Pa"))
-        rho = float(check_positive("density", density, "kg/m^3"))
+        ep_f = float(check_positive_finite("reduced_modulus", ep, "Pa"))
+        rho = float(check_positive_finite("density", density, "kg/m^3"))
         mass = rho * math.pi * d**3 / 6.0
         inertia = mass * d**2 / 10.0
         tab = _tables(d, dm, float(fi), float(fo), ep_f, a0, stiffness_at)

@@ -38,8 +38,13 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .. import geometry
-from .._validate import as_float, check_integer, check_open_interval, check_positive
+from .. import _bounds, geometry
+from .._validate import (
+    as_float,
+    check_integer,
+    check_open_interval,
+    check_positive_finite,
+)
 from ..errors import InputError
 from ..units import MM, RPM
 from .ball import CONSTANTS, _angle, _control, _kinematics, _speed
@@ -99,19 +104,29 @@ def _constants(constants):
     return cc, cg
 
 
+# Numerical floors of the solve, not physical limits: a dimensionless ball load F_a / (Z E' B_d^2) below
+# 1e-20 gives a deflection (~ load^(2/3) B_d, ~1e-13 of it) that the angle cannot resolve in double precision
+# (the first approximation returns alpha0 exactly and the Newton step divides by zero); a free angle below
+# 1e-100 rad has a sine whose square underflows.
+_SMALLEST_LOAD = 1e-20
+_SMALLEST_ANGLE = 1e-100
+
+
 def _prepare(axial_load, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
              reduced_modulus, density, raceway_control, gyroscopic_sign, constants, shape=None):
     """Check inputs and broadcast them to flat per-case arrays."""
-    fa = check_positive("axial_load", axial_load, "N")
-    z = check_integer("n_balls", n_balls, 1)
-    d = check_positive("ball_diameter", ball_diameter, "m")
-    dm = check_positive("pitch_diameter", pitch_diameter, "m")
+    fa = check_positive_finite("axial_load", axial_load, "N")
+    z = check_integer("n_balls", n_balls, 1, _bounds.MAX_BALLS)
+    d = check_positive_finite("ball_diameter", ball_diameter, "m")
+    dm = check_positive_finite("pitch_diameter", pitch_diameter, "m")
     geometry.pitch_ratio(d, dm, 0.0)  # d_m > D
     fi = check_open_interval("inner_conformity", inner_conformity, 0.5, np.inf, "-")
     fo = check_open_interval("outer_conformity", outer_conformity, 0.5, np.inf, "-")
     a0 = _angle("free_angle", free_angle)
-    ep = check_positive("reduced_modulus", reduced_modulus, "Pa")
-    rho = check_positive("density", density, "kg/m^3")
+    if np.any(np.asarray(a0) < _SMALLEST_ANGLE):  # sin^2 alpha0 of the first approximation underflows
+        raise InputError(f"free_angle must be >= {_SMALLEST_ANGLE:g} [rad], got {float(np.min(a0))!r}")
+    ep = check_positive_finite("reduced_modulus", reduced_modulus, "Pa")
+    rho = check_positive_finite("density", density, "kg/m^3")
     lam_i, lam_e = _control(raceway_control)
     if gyroscopic_sign not in (1, -1):
         raise InputError(f"gyroscopic_sign must be +1 (physical) or -1 (reversed), "
@@ -121,6 +136,13 @@ def _prepare(axial_load, n_balls, ball_diameter, pitch_diameter, inner_conformit
     out_shape = arrays[0].shape
     fa, z, d, dm, fi, fo, a0, ep, rho = (np.ascontiguousarray(a, dtype=float).ravel() for a in arrays[:9])
     bd = (fi + fo - 1.0) * d
+    load = fa / (z * ep * bd**2)  # the ball load over the Hertz scale of the groove distance, [-]
+    if not np.all(load >= _SMALLEST_LOAD):
+        k = int(np.flatnonzero(~(load >= _SMALLEST_LOAD))[0])
+        least = _SMALLEST_LOAD * z[k] * ep[k] * bd[k] ** 2
+        raise InputError(f"axial_load must be >= {least:.3g} [N] to be resolved (axial_load / (n_balls E' "
+                         f"((f_i + f_o - 1) D)^2) >= {_SMALLEST_LOAD:g}: below it the contact deflection is lost to "
+                         f"rounding and the angles cannot move), got {fa[k]:g} N")
     if consts is None:
         mass = rho * np.pi * d**3 / 6.0
         mass_c, inertia = mass, mass * d**2 / 10.0

@@ -405,7 +405,7 @@ def diameter(px, py):
         for a in range(h):
             for b in range(a + 1, h):
                 best = max(best, _d2(px, py, hull[a], hull[b]))
-        return math.sqrt(best)
+        return math.sqrt(max(best, _extreme_pairs(px, py)))
     j = 1
     for i in range(h):
         i2 = i + 1 if i + 1 < h else 0
@@ -421,7 +421,37 @@ def diameter(px, py):
         for k in (j - 1, j, j + 1):
             c = hull[k % h]
             best = max(best, max(_d2(px, py, a, c), _d2(px, py, b, c)))
-    return math.sqrt(best)
+    return math.sqrt(max(best, _extreme_pairs(px, py)))
+
+
+@_jit
+def _extreme_pairs(px, py):
+    """The largest dx^2 + dy^2 among the points extreme along x, y, x + y and x - y: the diameter of a
+    (nearly) collinear set, whose hull the rounding of the orientation test may leave with points out of
+    order (the numpy path falls back to the same extremes where qhull finds the set flat)."""
+    ext = np.zeros(8, dtype=np.int64)
+    for q in range(1, px.size):
+        if px[q] < px[ext[0]]:
+            ext[0] = q
+        if px[q] > px[ext[1]]:
+            ext[1] = q
+        if py[q] < py[ext[2]]:
+            ext[2] = q
+        if py[q] > py[ext[3]]:
+            ext[3] = q
+        if px[q] + py[q] < px[ext[4]] + py[ext[4]]:
+            ext[4] = q
+        if px[q] + py[q] > px[ext[5]] + py[ext[5]]:
+            ext[5] = q
+        if px[q] - py[q] < px[ext[6]] - py[ext[6]]:
+            ext[6] = q
+        if px[q] - py[q] > px[ext[7]] - py[ext[7]]:
+            ext[7] = q
+    best = 0.0
+    for a in range(8):
+        for b in range(a + 1, 8):
+            best = max(best, _d2(px, py, ext[a], ext[b]))
+    return best
 
 
 def _diameters(x, y, out):

@@ -144,7 +144,12 @@ def exact_reduction(
             du = np.zeros(2)
             du[j] = hj
             jac[..., :, j] = (residual(u + du)[0] - residual(u - du)[0]) / (2 * hj)
-        step = np.linalg.solve(jac, res[..., None])[..., 0]
+        try:
+            step = np.linalg.solve(jac, res[..., None])[..., 0]
+        except np.linalg.LinAlgError:  # no ball fits: the ring displaced by more than the gaps (x = 1 m)
+            raise ConvergenceError("runout.exact_reduction", iterations=it, residual=res[..., 0], estimate=u,
+                                   reason="no ball fits between the rings at this displacement (the Jacobian "
+                                          "of the ball centre is singular)", physical=True) from None
         u = u - step
         if np.all(np.abs(step) < xtol):
             _, f1, f2 = residual(u)

@@ -30,7 +30,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .. import parallel
+from .. import _bounds, parallel
 from .._validate import check_finite, check_integer
 from ..errors import InputError
 from . import _solver
@@ -440,9 +440,9 @@ def monte_carlo_chunk(
     grade = ball_grade(grade)
     rings = ring_class(rings)
     idx = np.atleast_1d(check_integer("sample_index", sample_index, 0))
-    steps = int(check_integer("steps_per_revolution", steps_per_revolution, 1))
-    revs = int(check_integer("revolutions", revolutions, 1))
-    k_max = int(check_integer("max_order", max_order, 1))
+    steps = int(check_integer("steps_per_revolution", steps_per_revolution, 1, _bounds.MAX_STEPS_PER_REV))
+    revs = int(check_integer("revolutions", revolutions, 1, _bounds.MAX_REVOLUTIONS))
+    k_max = int(check_integer("max_order", max_order, 1, _bounds.MAX_ORDER))
     kappa = (
         geometry.cage_ratio
         if cage_ratio is None
@@ -664,7 +664,7 @@ def monte_carlo(
     >>> sorted(r.summary)
     ['axial_ptp', 'dz_mean', 'radial_ptp_max', 'radial_ptp_x', 'radial_ptp_y']
     """
-    total = int(check_integer("n_samples", n_samples, 2))
+    total = int(check_integer("n_samples", n_samples, 2, _bounds.MAX_SAMPLES))
     _seed(seed)
     _contact._engine(engine, "dual")  # an unknown engine is refused before any work
     ex = parallel._execution(

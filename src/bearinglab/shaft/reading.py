@@ -80,15 +80,6 @@ from . import model
 
 __all__ = ["KEYS", "ShaftDocument", "from_dict", "from_text", "load"]
 
-# Quantities this format needs that bearinglab.units does not name yet (issue 33); setdefault keeps the
-# definitions of units.KINDS once it has them.
-KINDS.setdefault("stiffness", ("[force]/[length]", "N/m", "'200 N/um', '2e8 N/m'"))
-KINDS.setdefault("rotational_stiffness", ("[force]*[length]", "N*m", "'1e5 N*m/rad', '100 N*m/mrad'"))
-KINDS.setdefault("power", ("[power]", "W", "'5 kW', '7.5 hp'"))
-KINDS.setdefault("temperature", ("[temperature]", "K", "'60 degC', '333 K'"))
-KINDS.setdefault("thermal_expansion", ("1/[temperature]", "1/K", "'12e-6 1/K', '12 um/(m*K)'"))
-KINDS.setdefault("moment_of_inertia", ("[mass]*[length]**2", "kg*m**2", "'0.02 kg*m^2'"))
-
 #: the keys of each table of the file
 KEYS = {
     "": ("speed", "gravity", "elements", "shaft_temperature", "housing_temperature", "housing_material",

@@ -58,7 +58,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import _solve, geometry, hertz
-from .._validate import check_integer, check_open_interval, check_positive
+from .._validate import check_integer, check_open_interval, check_positive, check_positive_finite
 from ..bearing import STEEL
 from ..errors import ConvergenceError, InputError
 from ..units import CM, KGF, MM, RPM
@@ -85,6 +85,9 @@ __all__ = [
 
 # (cm^2/kgf)^(2/3) -> (m^2/N)^(2/3): the unit of the approach coefficients c_v, c_n
 _C_PAPER_UNIT = CM ** (4.0 / 3.0) / KGF ** (2.0 / 3.0)
+# halvings of a Newton step that left (alpha0, 90 deg): 2000 take any finite step below any tolerance
+# (2^-1075 x 1e308 is 0), so the loop ends whatever the step
+_MAX_HALVINGS = 2000
 #: The source's elastic constant 0.592e-4 (cm^2/kgf)^(2/3) in SI, (m^2/N)^(2/3); steel, E = 2.078e5 MPa,
 #: nu = 0.3 (spec 000 section 5.3). It equals 2.7838e-4 (mm^2/N)^(2/3). Used only on request
 #: (``elastic_constant="paper"``); the default is :func:`bearinglab.hertz.elastic_constant` of the materials.
@@ -492,7 +495,8 @@ def engine_for(n_cases):
     >>> engine_for(1)
     'numpy'
     """
-    return "compiled" if _compiled_engine("auto", int(n_cases)) else "numpy"
+    n_cases = int(check_integer("n_cases", n_cases, 0))
+    return "compiled" if _compiled_engine("auto", n_cases) else "numpy"
 
 
 def _gap_start(thrust_ratio, cos_a0, sin_a0, n, *, rtol=_solve.AXIAL_ANGLE_START_RTOL,
@@ -658,8 +662,8 @@ def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, re
     ConvergenceError
         If the tolerance is not met within ``max_iter`` rows (and ``max_rows`` is None).
     """
-    fa = float(check_positive("axial_load", axial_load, "N"))
-    cs = float(check_positive("force_characteristic", force_characteristic, "N"))
+    fa = float(check_positive_finite("axial_load", axial_load, "N"))
+    cs = float(check_positive_finite("force_characteristic", force_characteristic, "N"))
     a0 = float(_angle("free_angle", free_angle))
     if x0 is None:  # eq. (3) can overshoot 90 deg at absurd loads: start half-way there at most
         x = min(float(first_approximation(fa / cs, a0)), 0.5 * (math.pi / 2 - a0))
@@ -670,6 +674,9 @@ def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, re
                              f"free angle and 90 deg), got {x0!r}")
     if max_rows is not None and not (isinstance(max_rows, int) and max_rows >= 1):
         raise InputError(f"max_rows must be an integer >= 1 [-], got {max_rows!r}")
+    if reproduce_print and fa < 0.001 * KGF:  # the paper's F cut to three kgf decimals would be 0
+        raise InputError(f"axial_load must be >= 0.001 kgf = {0.001 * KGF:g} [N] to reproduce the paper's rounding "
+                         f"(F cut to three kgf decimals), got {fa:g} N")
     rows = []
     limit = max_iter if max_rows is None else max_rows
     settled = False  # the previous step was below xtol: this row is the converged one
@@ -685,8 +692,13 @@ def iteration_table(axial_load, force_characteristic, free_angle, *, x0=None, re
         rows.append(IterationRow(k, x, alpha, float(axial_displacement_ratio(alpha, a0)), thrust, error))
         if max_rows is None and (settled or abs(error) < ftol_percent):
             return rows
+        if not step_thrust > 0:  # legacy: a thrust below 0.001 kgf at this angle is cut to 0
+            raise ConvergenceError("stand.iteration_table", iterations=k, residual=error / 100, estimate=alpha,
+                                   reason="the paper's rounding cut the thrust at this angle to 0 kgf")
         dx = float(_newton_step(fa, step_thrust, alpha, a0))
-        while not a0 < a0 + x + dx < math.pi / 2 and abs(dx) > xtol:  # keep the iterate in (alpha0, 90 deg)
+        for _halving in range(_MAX_HALVINGS):  # keep the iterate in (alpha0, 90 deg); a bounded loop
+            if a0 < a0 + x + dx < math.pi / 2 or not abs(dx) > xtol:
+                break
             dx *= 0.5
         settled = abs(dx) < xtol
         x += dx

@@ -9,6 +9,7 @@ Modules
 -------
 api    endpoint -> command; query parameters -> the command's options; errors as JSON
 page   the form fields, the sections of results, the figures
+shaft  the shaft-system section: its editor's tables, request and results
 app    the FastAPI application
 
 Functions

@@ -39,7 +39,7 @@ from fastapi_offline import FastAPIOffline
 
 from .. import __version__, calculations, tables
 from ..calculations import BODY_LIMIT, CALCULATIONS, CASE_LIMIT, TIME_BUDGET, RequestError
-from . import api, page
+from . import api, page, shaft
 from .workers import HEAVY_NICENESS, MEMORY_BOUND_MB, Pool, Stopped
 
 __all__ = ["create_app"]
@@ -220,6 +220,7 @@ def create_app(*, light_workers=2, heavy_workers=2, case_limit=CASE_LIMIT, time_
     templates.env.globals["chain_rows"] = page.chain_rows
     templates.env.globals["chain_columns"] = page.CHAIN_COLUMNS
     templates.env.globals["percentile_rows"] = page.percentile_rows
+    templates.env.globals["shaft"] = shaft  # the shaft section's editor and tables (templates/shaft_*.html)
 
     app.add_middleware(_BoundedBody)
 

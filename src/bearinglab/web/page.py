@@ -42,6 +42,7 @@ from typing import NamedTuple
 
 from ..calculations import CALCULATIONS
 from ..calculations.registry import GEOMETRY, MOUNTING
+from . import shaft as _shaft  # the shaft-system section: its editor, request and tables (issue 33)
 
 __all__ = [
     "CHAIN",
@@ -191,6 +192,9 @@ SECTIONS = (
     Section("temperature", "Operating temperature", "temperature",
             "Thermal balance: SKF friction power = heat dissipated. F_r = |(F_x, F_y)| where F_x, "
             "F_y are given; the moments do not enter."),
+    Section("shaft", "Shaft system", "shaft",
+            "Several bearings on one elastic shaft (Timoshenko elements), from the Shaft system tables: the "
+            "load on each support, its displacement and tilt, the bearings' lives and the system's (ISO 281)."),
 )
 #: Calculations of :data:`~bearinglab.calculations.CALCULATIONS` with no section of their own, and why
 #: (one line on the page). A calculation that is in neither SECTIONS nor here (a newly registered one)
@@ -287,6 +291,8 @@ def lists_note(lists):
 
 def _left_out(section, values, lists=None):
     """Why a section does not apply to the input (one line), or '' when it does."""
+    if section.key == "shaft":  # its own fields, none of the form's (web/shaft.py)
+        return _shaft.left_out(values)
     has = {k: _given(values, k) for k in values}
     single = _single_only(section, lists or {})
     if single:
@@ -342,6 +348,8 @@ def _left_out(section, values, lists=None):
     if section not in SECTIONS:
         return f"Left out: {section.note}"
     if section.key == "friction":
+        if not (has.get("bearing") or has.get("speed") or any_load or any(has.get(f.name) for f in GEOMETRY)):
+            return "Left out: no bearing, load or speed given (a shaft system or an error set alone)."
         model = values.get("model") or "one-term"
         oil = has.get("oil") and has.get("temperature") and model == "skf"  # SKF's takes a grade too
         if model in ("palmgren", "skf") and not (has.get("viscosity") or oil):
@@ -353,6 +361,8 @@ def _left_out(section, values, lists=None):
 
 def _query(section, values):
     """The form values that are fields of the section's calculation (empty ones left out)."""
+    if section.key == "shaft":  # the page's shaft, shaft_stiffness_at ... as the calculation's fields
+        return _shaft.query(values)
     calc = CALCULATIONS[section.calculation]
     names = {f.name for f in calc.fields}
     out = {k: v for k, v in values.items() if k in names and _given(values, k)}
@@ -432,7 +442,10 @@ async def _section(section, values, server, lists=None):
     result = {"section": section, "document": doc if status == 200 else None, "left_out": "",
               "message": "" if status == 200 else doc["detail"], "figure": "", "query": query,
               "parameter": None if status == 200 else doc.get("parameter"), "error": doc}
-    if status == 200 and section.key in ("high-speed", "load-distribution"):
+    if section.key == "shaft" and status != 200:  # its fields by the page's names, not the form's model
+        result["parameter"] = {v: k for k, v in _shaft.FORM.items()}.get(result["parameter"], result["parameter"])
+        result["message"] = result["message"].replace("model: ", "Shaft system: ", 1)
+    if status == 200 and section.key in ("high-speed", "load-distribution", "shaft"):
         result["figure"] = await _figure(section, query, server, lists or {})
     return result
 
@@ -464,7 +477,7 @@ def _inputs(values):
             if field.kind == "document":  # the pasted document is summarised, not printed whole
                 text = f"pasted, {len(text.strip().splitlines())} lines"
             out.append((field.title, text))
-    return out
+    return out + _shaft.inputs(values)
 
 
 async def render_context(values, server):
@@ -484,7 +497,7 @@ async def render_context(values, server):
         ``errors`` (field -> message in the page's words), ``inputs``, ``date``, ``links``,
         ``lists_note`` (the cases of a list or range, and how the sections show them; '' without one).
     """
-    values = {k: v for k, v in values.items() if k in FIELDS or k == "bearing"}
+    values = {k: v for k, v in values.items() if k in FIELDS or k == "bearing" or k in _shaft.FORM}
     submitted = any(_given(values, k) for k in values)
     lists = _lists(values) if submitted else {}
     results = []
@@ -508,6 +521,7 @@ async def render_context(values, server):
         "fields": FIELDS, "groups": _GROUPS, "examples": _EXAMPLES, "values": values,
         "submitted": submitted, "results": results, "errors": errors, "inputs": _inputs(values),
         "lists_note": lists_note(lists),
+        "shaft_editor": _shaft.editor(values.get("shaft") or ""),
         "date": datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC"),
         "geometry_open": not values.get("bearing") or any(
             _given(values, f.name) for f in GEOMETRY),
