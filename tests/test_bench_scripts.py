@@ -188,3 +188,11 @@ def test_combined_main_prints_both_result_lines(load_bench, capsys):
 def test_film_and_thermal_scripts_agree_with_their_baselines(load_bench, capsys, name, kwargs):
     assert load_bench(name).main(**kwargs) == 0  # 0: the per-case baseline agreed case by case
     assert [x.split()[1] for x in capsys.readouterr().out.splitlines() if x.startswith("RESULT ")] == [name]
+
+
+@pytest.mark.parametrize(("kind", "rpm"), [("four-point", 0.0), ("self-aligning", 12000.0), ("thrust", 0.0)])
+def test_ball_types_batch_and_case_by_case_agree_bit_for_bit(load_bench, kind, rpm):
+    """bench/ball_types.py (issue 30): every case converges and the batch gives each case the bits it has alone."""
+    bench = load_bench("ball_types")
+    m = bench.measure(kind, rpm * math.pi / 30, n=12, n_base=4, repeat=1)
+    assert m["same"] and m["failed"] == 0

@@ -18,6 +18,7 @@ TYPES             the bearing types: radial (deep groove), angular, four-point, 
                   double-row-radial, self-aligning, thrust
 ROWS              the ball rows of each type
 MODEL_TYPES       the types each model that solves the contacts ball by ball takes
+ANGLE_BUILT_IN    the types whose nominal angle is built into the rings (given apart from the clearance)
 check_model       refuse, in one line, a bearing whose type a model does not cover yet
 covers            whether a model covers a bearing's type
 
@@ -37,7 +38,7 @@ from . import geometry, hertz
 from .errors import InputError
 
 __all__ = [
-    "ANGLE_CLEARANCE_TOLERANCE", "CLEARANCE_TOLERANCE", "MATERIALS", "MODEL_TYPES", "ROWS", "SILICON_NITRIDE", "STEEL",
+    "ANGLE_BUILT_IN", "ANGLE_CLEARANCE_TOLERANCE", "CLEARANCE_TOLERANCE", "MATERIALS", "MODEL_TYPES", "ROWS", "SILICON_NITRIDE", "STEEL",
     "TYPES", "BallBearing", "Material", "check_model", "covers", "max_balls",
 ]
 
@@ -89,12 +90,12 @@ ROWS = {"radial": 1, "angular": 1, "four-point": 1, "double-row-angular": 2, "do
 #: The types each model that solves the balls' contacts takes (the 5-DOF load distribution and what is
 #: built on it); the others are refused by :func:`check_model` in one line, never answered wrongly.
 MODEL_TYPES = {
-    "load-distribution": ("radial", "angular"),
-    "bearing-set": ("radial", "angular"),
+    "load-distribution": TYPES,
+    "bearing-set": TYPES,
     "high-speed": ("radial", "angular"),
     "axial-angle": ("radial", "angular"),
     "runout": ("radial", "angular"),
-    "film": ("radial", "angular"),
+    "film": TYPES,
 }
 # what each type has that the models of MODEL_TYPES do not cover yet
 _NOT_COVERED = {
@@ -104,6 +105,11 @@ _NOT_COVERED = {
     "self-aligning": "the spherical outer raceway (no tilting stiffness) and the second row",
     "thrust": "the axial contacts of a thrust bearing (90 deg)",
 }
+#: The types whose contact angle is built into the rings (the nominal angle of the groove design: the
+#: offset of the groove-curvature centres, or the spherical outer raceway), so that the angle and the
+#: clearance are given apart and neither follows from the other (the 5-DOF model's geometry,
+#: :mod:`bearinglab.quasistatic._types`); a single-row bearing's angle follows from its clearance.
+ANGLE_BUILT_IN = ("four-point", "double-row-angular", "self-aligning", "thrust")
 #: A contact angle given with a clearance may differ from the one the clearance implies by this much
 #: (rounding of the printed values) [rad] ...
 ANGLE_CLEARANCE_TOLERANCE = math.radians(0.05)
@@ -158,7 +164,7 @@ def covers(bearing, model):
 
     Examples
     --------
-    >>> covers(BallBearing(type="thrust"), "load-distribution"), covers(BallBearing(), "bearing-set")
+    >>> covers(BallBearing(type="thrust"), "high-speed"), covers(BallBearing(type="thrust"), "load-distribution")
     (False, True)
     """
     return getattr(bearing, "type", "angular") in MODEL_TYPES[model]
@@ -177,22 +183,50 @@ def check_model(bearing, model):
     Raises
     ------
     InputError
-        Naming the model, the bearing, its type and what the model does not cover; ISO 281 lives
-        (``bearinglab life``) cover every type.
+        Naming the model, the bearing, its type and what the model does not cover; the load distribution
+        and the lives (``bearinglab load-distribution``, ``bearinglab life``) cover every type. For a type the model covers but whose fields it lacks
+        (the catalog has no ball set of the four-point, double-row, self-aligning and thrust types), every
+        missing field in one line.
 
     Examples
     --------
-    >>> check_model(BallBearing(designation="QJ 208", type="four-point"), "load-distribution")
+    >>> check_model(BallBearing(designation="QJ 208", type="four-point"), "high-speed")
     Traceback (most recent call last):
     ...
-    bearinglab.errors.InputError: load-distribution: 'QJ 208' is a four-point bearing, and the model does not cover the four contacts of each ball (two on each ring) yet; its ISO 281 life is given by `bearinglab life`
+    bearinglab.errors.InputError: high-speed: 'QJ 208' is a four-point bearing, and the model does not cover the four contacts of each ball (two on each ring) yet; `bearinglab load-distribution` solves its balls and `bearinglab life` gives its lives
     """
-    if covers(bearing, model):
-        return
     label = getattr(bearing, "designation", "") or "this bearing"
+    if covers(bearing, model):
+        missing = _missing_fields(bearing) if model in _BALL_BY_BALL else ()
+        if missing:
+            raise InputError(f"{model}: {label!r} lacks {', '.join(missing)}, which the model of a {bearing.type} "
+                             "bearing needs (no public source gives the ball set of this type, so the catalog leaves "
+                             "it unknown): give them in a bearing file or user catalog, or inline (--balls, "
+                             "--ball-diameter, --pitch-diameter, --inner-conformity, ...)")
+        return
     raise InputError(f"{model}: {label!r} is a {bearing.type} bearing, and the model does not cover "
-                     f"{_NOT_COVERED.get(bearing.type, 'this type')} yet; its ISO 281 life is given by "
-                     "`bearinglab life`")
+                     f"{_NOT_COVERED.get(bearing.type, 'this type')} yet; `bearinglab load-distribution` solves its "
+                     "balls and `bearinglab life` gives its lives")
+
+
+# the models that solve the new types ball by ball, and the fields each type needs for it
+_BALL_BY_BALL = ("load-distribution", "bearing-set", "film")
+_NEEDS = ("n_balls", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity", "contact_angle")
+
+
+def _missing_fields(bearing):
+    """The fields the 5-DOF model of a four-point, double-row, self-aligning or thrust bearing needs and
+    ``bearing`` lacks (a single row: none listed here; its model names a missing field itself)."""
+    kind = getattr(bearing, "type", "angular")
+    if kind in ("radial", "angular"):
+        return ()
+    out = [k for k in _NEEDS if getattr(bearing, k, None) is None
+           and not (kind == "self-aligning" and k == "outer_conformity" and bearing.contact_angle is not None)]
+    if kind in ("four-point", "double-row-angular", "self-aligning") and bearing.radial_clearance is None:
+        out.append("radial_clearance")
+    if kind in ("double-row-angular", "double-row-radial") and bearing.row_distance is None:
+        out.append("row_distance")
+    return tuple(out)
 
 
 def _clearance_range(e, ball_diameter):
@@ -210,6 +244,9 @@ def _positive(name, value, unit, *, optional=True):
     if not (isinstance(value, (int, float, np.floating, np.integer)) and value > 0 and math.isfinite(value)):
         raise InputError(f"{name} must be > 0 [{unit}], got {value!r}")
 
+
+_SPHERE_SOURCE = ("derived: the spherical outer raceway about the bearing centre, R_o = d_m / (2 cos alpha0) + D/2 "
+                  "(ISO/TS 16281's r_e of self-aligning ball bearings)")
 
 # What a user who lacks a field usually needs to know (catalogs rarely print the groove radii). The range is
 # the usual design range of ball-bearing conformities (Harris & Kotzalas, Rolling Bearing Analysis, ch. 2).
@@ -292,6 +329,18 @@ class BallBearing:
         published ball set; :mod:`bearinglab.estimation`).
     sources : dict
         Field -> where its value comes from (catalog entries).
+    row_distance : float
+        Axial distance between the ball centres of the two rows of a double-row bearing (32 A, 42);
+        a self-aligning bearing's follows from its angle, d_m tan(alpha0). [m]
+
+    Notes
+    -----
+    The types of :data:`ANGLE_BUILT_IN` (four-point, double-row angular, self-aligning, thrust) have their
+    nominal contact angle built into the rings: ``contact_angle`` is that angle (the catalog's, at zero
+    clearance) and ``radial_clearance`` their diametral clearance, given apart. A self-aligning bearing's
+    outer raceway is a sphere about the bearing centre, radius R_o = d_m / (2 cos alpha0) + D/2 (ISO/TS
+    16281's r_e of self-aligning bearings): ``outer_conformity`` R_o / D follows from the angle, or the
+    angle from it; given both, they must agree.
 
     Examples
     --------
@@ -332,6 +381,7 @@ class BallBearing:
     preload: float | None = None
     estimated_fields: tuple = field(default=(), compare=False)
     sources: dict = field(default_factory=dict, compare=False)
+    row_distance: float | None = None
 
     def __post_init__(self):
         if self.n_balls is not None and (
@@ -342,7 +392,7 @@ class BallBearing:
                            ("outside_diameter", "m"), ("width", "m"), ("static_load_rating", "N"),
                            ("dynamic_load_rating", "N"), ("fatigue_load_limit", "N"), ("seal_diameter", "m"),
                            ("inner_shoulder_height", "m"), ("outer_shoulder_height", "m"),
-                           ("static_load_factor", "-")):
+                           ("static_load_factor", "-"), ("row_distance", "m")):
             _positive(name, getattr(self, name), unit)
         for name in ("inner_conformity", "outer_conformity"):
             f = getattr(self, name)
@@ -384,6 +434,10 @@ class BallBearing:
             _clearance_range(self.radial_clearance, self.ball_diameter)
         self._check_fit()
         self._check_shoulders()
+        if self.type in ANGLE_BUILT_IN:  # the angle is the rings' own; the clearance is given apart
+            if self.type == "self-aligning":
+                self._sphere()
+            return
         has_f = self.inner_conformity is not None and self.outer_conformity is not None and self.ball_diameter is not None
         if self.contact_angle is not None and self.radial_clearance is not None and has_f:
             self._check_angle_matches_clearance()
@@ -402,6 +456,36 @@ class BallBearing:
             e = float(geometry.radial_clearance(self.contact_angle, self.ball_diameter,
                                                 self.inner_conformity, self.outer_conformity))
             object.__setattr__(self, "radial_clearance", e)
+
+    def _sphere(self):
+        """A self-aligning bearing's spherical outer raceway about the bearing centre: R_o = d_m / (2 cos
+        alpha0) + D/2 (the ball on the line through the sphere's centre at alpha0, zero clearance). The
+        conformity follows from the angle or the angle from the conformity; both given must agree to the
+        printed precision, and the row distance (if given) must be d_m tan(alpha0)."""
+        d, dm, a, fo = self.ball_diameter, self.pitch_diameter, self.contact_angle, self.outer_conformity
+        if d is None or dm is None:
+            return
+        if fo is None and a is not None:
+            object.__setattr__(self, "outer_conformity", 0.5 + dm / (2.0 * d * math.cos(a)))
+            object.__setattr__(self, "sources", {**self.sources, "outer_conformity": _SPHERE_SOURCE})
+        elif fo is not None:
+            c = dm / (2.0 * d * (fo - 0.5))
+            if not c < 1.0:
+                raise InputError(f"outer_conformity of a self-aligning bearing (its sphere R_o / D) must be > "
+                                 f"{0.5 + dm / (2.0 * d):.6g} [-] (R_o > d_m/2 + D/2), got {fo!r}")
+            implied = math.acos(c)
+            if a is None:
+                object.__setattr__(self, "contact_angle", implied)
+            elif abs(implied - a) > ANGLE_CLEARANCE_TOLERANCE:
+                raise InputError(f"contact_angle and outer_conformity of a self-aligning bearing disagree: its sphere "
+                                 f"R_o = {fo * d * 1e3:.6g} mm gives {math.degrees(implied):.4g} deg with d_m = "
+                                 f"{dm * 1e3:.6g} mm, not {math.degrees(a):.4g} deg; give one of them")
+        a = self.contact_angle
+        if self.row_distance is not None and a is not None:
+            rows = dm * math.tan(a)
+            if abs(self.row_distance - rows) > max(CLEARANCE_TOLERANCE * rows, 1e-5):
+                raise InputError(f"row_distance of a self-aligning bearing is d_m tan(alpha0) = {rows * 1e3:.6g} mm "
+                                 f"(both rows on lines through the sphere's centre), got {self.row_distance * 1e3:.6g} mm")
 
     def _check_fit(self):
         """The balls fit on the pitch circle, and the ball set fits between bore and outside diameter."""
@@ -465,11 +549,17 @@ class BallBearing:
                    outer_conformity=outer_groove_radius / ball_diameter, **kw)
 
     def replace(self, **changes):
-        """A copy with some fields changed (validated again)."""
-        if "contact_angle" in changes and "radial_clearance" not in changes:
-            changes["radial_clearance"] = None
-        if "radial_clearance" in changes and "contact_angle" not in changes:
-            changes["contact_angle"] = None
+        """A copy with some fields changed (validated again); a single-row bearing's angle and clearance
+        follow each other (the one not given is derived again), those of :data:`ANGLE_BUILT_IN` do not."""
+        if changes.get("type", self.type) not in ANGLE_BUILT_IN:
+            if "contact_angle" in changes and "radial_clearance" not in changes:
+                changes["radial_clearance"] = None
+            if "radial_clearance" in changes and "contact_angle" not in changes:
+                changes["contact_angle"] = None
+        elif self.type == "self-aligning" and "outer_conformity" not in changes and \
+                {"ball_diameter", "pitch_diameter", "contact_angle"} & set(changes) and \
+                self.sources.get("outer_conformity") == _SPHERE_SOURCE:
+            changes["outer_conformity"] = None  # the sphere follows the new ball set
         return dataclasses.replace(self, **changes)
 
     def require(self, *names):
@@ -540,7 +630,18 @@ class BallBearing:
         return float(geometry.free_contact_angle_052(*self.require("radial_clearance", "ball_diameter")))
 
     def axial_play(self):
-        """Total axial play 2 B D sin(alpha0). [m]"""
+        """Total axial play 2 B D sin(alpha0) (a double-row deep-groove bearing's too). Of the types whose angle
+        is built into the rings (:data:`ANGLE_BUILT_IN`), 2 (sqrt(A^2 - g_r^2) - A sin alpha0) with
+        g_r = A cos alpha0 - e/2 from their clearance e (0 when it is zero or negative: the balls touch
+        concentric); a thrust ball bearing has none (InputError). [m]"""
+        if self.type == "thrust":
+            raise InputError("axial_play: a single-direction thrust ball bearing has no axial play (its washers are "
+                             "apart until they are loaded)")
+        if self.type in ANGLE_BUILT_IN:
+            a, e = self.require("contact_angle", "radial_clearance")
+            big_a = self.groove_distance
+            g_r = big_a * math.cos(a) - 0.5 * e
+            return 2.0 * max(math.sqrt(max(big_a * big_a - g_r * g_r, 0.0)) - big_a * math.sin(a), 0.0)
         return float(geometry.axial_play(self.require("contact_angle"), *self.require("ball_diameter", "inner_conformity", "outer_conformity")))
 
     def curvature(self, race, contact_angle=None):

@@ -307,7 +307,9 @@ def _contact_checks(bearing, ball_loads, what="case(s)"):
             continue
         q, alpha = q[loaded], alpha[loaded]
         f = bearing.inner_conformity if race == "inner" else bearing.outer_conformity
-        curv = geometry.raceway_curvature(d, dm, f, alpha, race=race)
+        sphere = race == "outer" and bearing.type == "self-aligning"  # curvature 1/R_o at any angle
+        curv = geometry.raceway_curvature(d, dm, f, np.full_like(alpha, bearing.contact_angle) if sphere else alpha,
+                                          race=race)
         contacts[race] = (alpha, f, hertz.point_contact(q, curv.curvature_sum, curv.curvature_difference,
                                                         bearing.reduced_modulus))
         pressure += _pressure_messages(contacts[race][2].p_max, f"{race} contact", what)
@@ -315,6 +317,10 @@ def _contact_checks(bearing, ball_loads, what="case(s)"):
     for race, (_alpha, _f, pc) in contacts.items():
         shape += _deflection_messages(pc.delta, d, f"{race} contact", what)
     for race, (alpha, f, pc) in contacts.items():
+        if race == "outer" and bearing.type == "self-aligning":
+            continue  # a sphere across the ring's width: no shoulder
+        if bearing.type == "thrust":  # a thrust washer's groove bottom is at 90 deg
+            alpha = 0.5 * math.pi - np.abs(alpha)
         h, assumed = _shoulder(bearing, race)
         shape += _truncation_messages(alpha, pc.a, f * d, h, f"{race} contact", assumed, what)
     return pressure, shape

@@ -53,13 +53,9 @@ class Reactions(NamedTuple):
 def _prepared(bearing, first_ball_angle, stiffness_at, raceway_control):
     """A ball bearing's checked geometry (its operating clearance included), kept for the next call: a
     system solver asks for the same bearings in every iteration."""
-    from .quasistatic import _combined_balls
     from .quasistatic import combined as cb
 
-    z, d, dm, fi, fo, a0, ep, rho = cb._bearing_args(bearing)
-    e = cb._preload_clearance(bearing)
-    return _combined_balls._geometry(z, d, dm, fi, fo, None if e is not None else a0, ep, rho, first_ball_angle,
-                                     stiffness_at, raceway_control, bearing.type, clearance=e)
+    return cb._bearing_geometry(bearing, first_ball_angle, stiffness_at, raceway_control)
 
 
 def _ball_reactions(bearing, u, w, options, compiled):
@@ -79,7 +75,11 @@ def bearing_reactions(bearings, displacement, shaft_speed=0.0, **options):
     bearings : BallBearing, RollerBearing or a sequence of them
         One bearing, or the ``n_bearings`` bearings of a system. A roller bearing is the slice model at rest
         (:func:`bearinglab.rollers.reactions.roller_reactions`: a cylindrical one carries no axial load, a
-        tapered one carries F_z > 0).
+        tapered one carries F_z > 0). Every ball-bearing type (``BallBearing.type``) is the 5-DOF model of
+        :mod:`bearinglab.quasistatic.combined`: a self-aligning bearing carries no moment (zero tilt
+        stiffness), a thrust ball bearing no radial load (zero radial stiffness; its delta_z counts from
+        first contact), and four-point and thrust bearings, whose model has no speed terms, are evaluated
+        at rest at any speed.
     displacement : array_like
         (..., n_bearings, 5), or (..., 5) for one bearing: delta_x, delta_y, delta_z [m], theta_x,
         theta_y [rad] of each inner ring relative to its outer ring.

@@ -522,7 +522,8 @@ def bearing_summary(bearing):
         out["groove_distance_A_mm"] = b.groove_distance * 1e3
         if b.contact_angle is not None and b.pitch_diameter is not None:
             out["gamma"] = b.gamma
-            if b.contact_angle > 0:
+            if b.contact_angle > 0 and b.type != "thrust" and (b.radial_clearance is not None or b.type in (
+                    "radial", "angular", "double-row-radial")):  # the others need their clearance
                 out["axial_play_mm"] = b.axial_play() * 1e3
     if b.hertz_table:
         out["hertz_table"] = dict(b.hertz_table)
@@ -683,7 +684,8 @@ def load_distribution(result):
         ``displacement_x_um``, ``displacement_y_um``, ``displacement_z_um``, ``tilt_x_mrad``,
         ``tilt_y_mrad``, ``stiffness_matrix`` (5 x 5 in SI: N/m, N/rad, N m/m, N m/rad), ``max_ball_load_N``,
         ``converged``, ``residual``, ``iterations`` (those the result has) and ``balls`` (one dict per ball,
-        :func:`ball_columns`).
+        :func:`ball_columns`; the other ball types one per ball and row, its ``row`` first: a double-row
+        bearing's row, a four-point bearing's diagonal, 0 carrying F_z > 0).
     """
     u = np.asarray(result.displacement, dtype=float)
     out = {f"displacement_{a}_um": u[i] * 1e6 for i, a in enumerate("xyz")}
@@ -695,6 +697,9 @@ def load_distribution(result):
             out[name] = getattr(result, name)
     out = json_value(out)  # as a whole: a null is known by its key (bearinglab._io.NULLED)
     out["balls"] = rows(ball_columns(result))
+    row = getattr(result, "row", None)  # the other ball types: each entry's row (a four-point bearing's diagonal)
+    if row is not None:
+        out["balls"] = [{"row": int(k), **ball} for k, ball in zip(np.ravel(row), out["balls"], strict=True)]
     return out
 
 

@@ -392,7 +392,7 @@ def test_non_convergence_raises_or_is_flagged():
     ({"stiffness_at": "nominal"}, "stiffness_at must be one of"),
     ({"raceway_control": "cage"}, "raceway_control must be one of"),
     ({"on_failure": "ignore"}, "on_failure must be one of"),
-    ({"bearing_type": "thrust"}, "bearing_type must be one of"),
+    ({"bearing_type": "tapered"}, "bearing_type must be one of"),
     ({"loads": [np.nan, 0, 0, 0, 0]}, "loads must be finite"),
 ])
 def test_invalid_inputs_name_the_parameter(kwargs, match):

@@ -134,7 +134,8 @@ def test_thrust_axial_rating_by_hand():
 def test_ratings_of_types_bearinglab_does_not_compute_are_refused_in_one_line():
     from bearinglab.bearing import BallBearing
 
-    b = BallBearing(12, 10e-3, 60e-3, 0.52, 0.53, contact_angle=math.radians(10), type="self-aligning",
+    # a self-aligning bearing's outer raceway is the sphere its angle gives (outer_conformity derived)
+    b = BallBearing(12, 10e-3, 60e-3, 0.52, None, contact_angle=math.radians(10), type="self-aligning",
                     designation="X")
     with pytest.raises(InputError, match=r"dynamic_load_rating of 'X' is not in its catalog entry, and bearinglab does "
                                          r"not compute it for a self-aligning bearing"):

@@ -75,17 +75,27 @@ def resolve_bearing(bearing=None, bearing_file=None, catalog=None, balls=None, b
             changes[f"{race}_conformity"] = r / d
         elif conf is not None:
             changes[f"{race}_conformity"] = conf
-    if contact_angle is not None and radial_clearance is not None:
+    from ..bearing import ANGLE_BUILT_IN
+
+    built_in = base.type in ANGLE_BUILT_IN  # four-point, double-row angular, ...: angle and clearance apart
+    if contact_angle is not None and radial_clearance is not None and not built_in:
         raise InputError("contact-angle: give --contact-angle or --radial-clearance, not both")
     if contact_angle is not None:
         changes["contact_angle"] = parse_quantity(contact_angle, "angle", "contact-angle")
-        changes["radial_clearance"] = None
-    elif radial_clearance is not None:  # zero or negative: a preloaded bearing (issue 30), bounded by the bearing
+        if not built_in:
+            changes["radial_clearance"] = None
+    if radial_clearance is not None and (built_in or contact_angle is None):
+        # zero or negative: a preloaded bearing (issue 30), bounded by the bearing
         changes["radial_clearance"] = parse_quantity(radial_clearance, "length", "radial-clearance")
-        changes["contact_angle"] = None
-    elif {"inner_conformity", "outer_conformity", "ball_diameter"} & set(changes):
+        if not built_in:
+            changes["contact_angle"] = None
+    elif {"inner_conformity", "outer_conformity", "ball_diameter"} & set(changes) and not built_in:
         # a new ball or new grooves keep the angle and re-derive the clearance
         changes["radial_clearance"] = None
+    if base.type == "self-aligning" and "outer_conformity" not in changes and str(
+            base.sources.get("outer_conformity", "")).startswith("derived") and \
+            {"ball_diameter", "pitch_diameter", "contact_angle"} & set(changes):
+        changes["outer_conformity"] = None  # the sphere follows the new ball set or angle (BallBearing)
     if ball_material is not None:
         key = ball_material.lower().replace("-", "_")
         if key not in MATERIALS:

@@ -145,7 +145,7 @@ def document(parsed, *, catalog=None):
     members = []
     for k, part in enumerate(st.bearings):
         bk = bl[k % len(bl)]
-        ns = types.SimpleNamespace(**part, azimuth=combined.ball_azimuths(bk.n_balls, phi0))
+        ns = types.SimpleNamespace(**{"azimuth": combined.ball_azimuths(bk.n_balls, phi0), **part})
         carried = st.bearing_loads[k]
         if bool(np.all(st.converged)):
             caught += [f"bearing {k}: {m}" for m in plausibility(bk, carried, ns, [])]

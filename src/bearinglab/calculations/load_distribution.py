@@ -204,11 +204,11 @@ def plausibility(b, loads, r, notes):
 
 def takeup_um(b):
     """Half the axial play, A sin(alpha0) [um]: the part of delta_z a thrust spends before any ball carries
-    (displacements are counted from the concentric position, MASTA's convention; issue 20 item 11)."""
+    (displacements are counted from the concentric position, MASTA's convention; issue 20 item 11); the
+    other ball types' own (issue 30: ``combined._takeup``)."""
     from ..quasistatic import combined
 
-    _, d, _, fi, fo, a0, _, _ = combined._bearing_args(b)
-    return combined.axial_play_takeup(d, fi, fo, a0) * 1e6
+    return combined._takeup(b) * 1e6
 
 
 def with_takeup(doc, takeup, reactions=None):
@@ -262,5 +262,5 @@ def _case(r, k):
     """Case k of a batched LoadDistribution (cases on the first axis), as an object with one case's fields."""
     import numpy as np
 
-    fields = {f: np.asarray(getattr(r, f))[k] for f in r._fields if f not in ("warnings", "azimuth")}
-    return types.SimpleNamespace(**fields, azimuth=r.azimuth, warnings=r.warnings)
+    fields = {f: np.asarray(getattr(r, f))[k] for f in r._fields if f not in ("warnings", "azimuth", "row")}
+    return types.SimpleNamespace(**fields, azimuth=r.azimuth, warnings=r.warnings, row=getattr(r, "row", None))

@@ -36,6 +36,21 @@ File format (quantities are strings with units)::
     inner_shoulder_height = "6.7 mm"          # optional: shoulder heights above the groove bottom, for
     outer_shoulder_height = "6.7 mm"          # the truncation check (bearinglab.limits)
 
+The other types (``type`` four-point, double-row-angular, double-row-radial, self-aligning, thrust) take the
+same fields (``balls``: per row); their ``contact_angle`` is the nominal angle built into the rings, given
+with their ``radial_clearance`` (not instead of it), and a double-row bearing needs ``row_distance``, the
+axial distance between the ball centres of its rows (``row_distance = "22 mm"``)::
+
+    [bearings."QJ 208 (measured)"]
+    type = "four-point"
+    balls = 13
+    ball_diameter = "12.7 mm"
+    pitch_diameter = "60 mm"
+    inner_conformity = 0.52
+    outer_conformity = 0.53
+    contact_angle = "35 deg"
+    radial_clearance = "40 um"
+
 Materials: ``ball_material`` / ``ring_material`` name a built-in material (steel, silicon_nitride) or a
 ``[materials."NAME"]`` table of the same file (``elastic_modulus``, ``poisson_ratio``, ``density``);
 or ``elastic_modulus`` and ``poisson_ratio`` in the entry set both parts at once (steel's density).
@@ -72,7 +87,7 @@ __all__ = [
 ENV_VAR = "BEARINGLAB_CATALOG"
 
 _LENGTHS = ("ball_diameter", "pitch_diameter", "bore", "outside_diameter", "width", "radial_clearance",
-            "seal_diameter", "inner_shoulder_height", "outer_shoulder_height")
+            "seal_diameter", "inner_shoulder_height", "outer_shoulder_height", "row_distance")
 _FORCES = ("static_load_rating", "dynamic_load_rating", "fatigue_load_limit")
 _KNOWN = {
     "balls", "ball_diameter", "pitch_diameter", "inner_groove_radius", "outer_groove_radius",
@@ -80,7 +95,7 @@ _KNOWN = {
     "outside_diameter", "width", "type", "static_load_rating", "ball_material", "ring_material",
     "source", "aliases", "hertz_table", "designation", "dynamic_load_rating", "fatigue_load_limit",
     "series", "seal", "seals", "seal_diameter", "elastic_modulus", "poisson_ratio", "inner_shoulder_height",
-    "outer_shoulder_height", "estimated",
+    "outer_shoulder_height", "estimated", "row_distance",
 }
 # a file key of the `estimated` list -> the BallBearing field it sets
 _ESTIMABLE = {"balls": "n_balls", "ball_diameter": "ball_diameter", "pitch_diameter": "pitch_diameter",
@@ -88,7 +103,7 @@ _ESTIMABLE = {"balls": "n_balls", "ball_diameter": "ball_diameter", "pitch_diame
               "inner_conformity": "inner_conformity", "outer_conformity": "outer_conformity",
               "contact_angle": "contact_angle", "radial_clearance": "radial_clearance",
               "static_load_rating": "static_load_rating", "dynamic_load_rating": "dynamic_load_rating",
-              "fatigue_load_limit": "fatigue_load_limit"}
+              "fatigue_load_limit": "fatigue_load_limit", "row_distance": "row_distance"}
 _MATERIAL_KEYS = {"elastic_modulus": "pressure", "poisson_ratio": "dimensionless", "density": "density"}
 
 

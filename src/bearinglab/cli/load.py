@@ -116,12 +116,16 @@ def _print_rollers(title, doc):
 
 
 def _print_balls(title, doc):
-    table(f"{title}: ball loads", ["ball", "ψ [deg]", "Q_i [N]", "Q_o [N]", "α_i [deg]", "α_o [deg]",
-                                   "p_i [MPa]", "p_o [MPa]"],
-          [[str(j), _f(r["azimuth_deg"], ".2f"), _sig(r["load_inner_N"]), _sig(r["load_outer_N"]),
+    balls = doc["balls"]
+    rows = bool(balls) and "row" in balls[0]  # the other ball types: a ball per row (a four-point bearing's diagonal)
+    per_row = len(balls) // len({r["row"] for r in balls}) if rows else len(balls)
+    table(f"{title}: ball loads", [*(["row"] if rows else []), "ball", "ψ [deg]", "Q_i [N]", "Q_o [N]", "α_i [deg]",
+                                   "α_o [deg]", "p_i [MPa]", "p_o [MPa]"],
+          [[*([str(r["row"])] if rows else []), str(j % per_row),
+            _f(r["azimuth_deg"], ".2f"), _sig(r["load_inner_N"]), _sig(r["load_outer_N"]),
             _f(r["contact_angle_inner_deg"], ".3f"), _f(r["contact_angle_outer_deg"], ".3f"),
             _f(r["max_pressure_inner_MPa"], ".0f"), _f(r["max_pressure_outer_MPa"], ".0f")]
-           for j, r in enumerate(doc["balls"])])
+           for j, r in enumerate(balls)])
 
 
 def _print_ring(title, doc, body="ring", origin="concentric", extra=()):

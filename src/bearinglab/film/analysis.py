@@ -164,7 +164,8 @@ def film_analysis(bearing, loads, shaft_speed, dynamic_viscosity, pressure_visco
     roughness_ball, roughness_race : float, optional
         RMS roughness R_q of the balls and of the raceways (0.1 um each by default). [m]
     loads_at : {"speed", "rest"}, optional
-        Solve the ball loads at the operating speed (quasi-static; default) or at rest.
+        Solve the ball loads at the operating speed (quasi-static; default) or at rest. Four-point and
+        thrust ball bearings, whose model has no speed terms, are solved at rest (a note says so).
     raceway_control : {"outer", "inner"}, optional
         Ball attitude for the entrainment velocities and the quasi-static solve.
     inlet_heating : tuple of float, optional
@@ -208,9 +209,13 @@ def film_analysis(bearing, loads, shaft_speed, dynamic_viscosity, pressure_visco
 
     if loads_at not in LOADS_AT:
         raise InputError(f"loads_at must be one of {list(LOADS_AT)}, got {loads_at!r}")
+    notes = []
+    if loads_at == "speed" and bearing.type in ("four-point", "thrust"):  # their model has no speed terms
+        loads_at = "rest"
+        notes.append(f"ball loads at rest: the {bearing.type} model has no speed terms (centrifugal force, gyroscopic "
+                     "moment); the films are those of the rest loads at the operating speed")
     w = check_positive("shaft_speed", shaft_speed, "rad/s")
     eta = check_positive("dynamic_viscosity", dynamic_viscosity, "Pa s")
-    notes = []
     if pressure_viscosity_coefficient is None:
         alpha = ehl.pressure_viscosity_coefficient(eta)
         notes.append("pressure-viscosity coefficient: not given, so Wooster's estimate for mineral oils is used "
@@ -303,8 +308,9 @@ def distribution_films(distribution, bearing, shaft_speed, dynamic_viscosity, pr
     ui0, uo0 = np.where(good, ui, 0.0), np.where(good, uo, 0.0)
     ki, hci, hmi = _contact(qi0, ui0, ai0, d, dm, bearing.inner_conformity, "inner", eta_b, alpha_b, ep,
                             inlet_heating, None)
-    ko, hco, hmo = _contact(qo0, uo0, ao0, d, dm, bearing.outer_conformity, "outer", eta_b, alpha_b, ep,
-                            inlet_heating, None)
+    sphere = bearing.type == "self-aligning"  # the outer raceway is a sphere: 1/R_o at any contact angle
+    ko, hco, hmo = _contact(qo0, uo0, np.full_like(ao0, bearing.contact_angle) if sphere else ao0, d, dm,
+                            bearing.outer_conformity, "outer", eta_b, alpha_b, ep, inlet_heating, None)
     lam_i = ehl.film_parameter(hmi, rb, rr)
     lam_o = ehl.film_parameter(hmo, rb, rr)
     both = np.concatenate([hmi, hmo], axis=-1)

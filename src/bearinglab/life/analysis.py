@@ -79,13 +79,30 @@ def reference_load_distribution(bearing, loads, *, on_failure="raise"):
         :func:`bearinglab.quasistatic.combined.combined_analysis` at rest, with the Hertz constants at
         the free contact angle (ISO/TS 16281:2008); None when the bearing's ball set or
         conformities are not known, or the load distribution does not cover its type
-        (:data:`bearinglab.bearing.MODEL_TYPES`).
+        (:data:`bearinglab.bearing.MODEL_TYPES`), or a field its type's model needs is missing (a
+        four-point bearing's clearance, a double-row bearing's row distance: :func:`_missing`).
     """
     from ..quasistatic import combined  # the life does not need the quasi-static package to import
 
-    if any(getattr(bearing, k) is None for k in _GEOMETRY_FIELDS) or not covers(bearing, "load-distribution"):
+    if _missing(bearing) is not None:
         return None
     return combined.combined_analysis(bearing, loads, 0.0, stiffness_at="free", on_failure=on_failure)
+
+
+def _missing(bearing):
+    """Why the combined-load model cannot solve ``bearing`` (a missing field, one line), or None."""
+    if any(getattr(bearing, k) is None for k in _GEOMETRY_FIELDS):
+        return "the bearing's ball set and conformities are not known"
+    if not covers(bearing, "load-distribution"):
+        return f"the combined-load model does not cover a {bearing.type} bearing yet"
+    if bearing.type not in ("radial", "angular"):
+        from ..quasistatic import _types
+
+        try:
+            _types.bearing_options(bearing)
+        except InputError as exc:
+            return str(exc).split(";")[0]
+    return None
 
 
 def _combined_at_rest(bearing, loads, shaft_speed):
@@ -96,7 +113,26 @@ def _combined_at_rest(bearing, loads, shaft_speed):
 def _nominal_angle(bearing):
     """alpha0 of ISO/TS 16281's contact ratings: 0 for a deep-groove bearing (its angle from the clearance is
     not a nominal angle; MASTA's reference lives with clearance imply 0), else the bearing's angle."""
-    return 0.0 if bearing.type == "radial" else (bearing.contact_angle or 0.0)
+    return 0.0 if bearing.type in ("radial", "double-row-radial") else (bearing.contact_angle or 0.0)
+
+
+def _reference_life(bearing, r, qi, qo, rows, rotating):
+    """L10r of the ball loads (..., Z) of one row, or of the rows of the other types (``rows``: the row of
+    each entry, :class:`~bearinglab.quasistatic.combined.LoadDistribution`'s ``row``): each row (a
+    four-point bearing's diagonal: its two raceways with the bearing's C, i = 1) by ISO/TS 16281 with the
+    bearing's i in Q_c, the rows in series (:func:`bearinglab.ratings.reference.rows_rating_life`)."""
+    fi, fo = _conformities(bearing)
+    d, dm = bearing.require("ball_diameter"), bearing.require("pitch_diameter")
+    kw = {"rotating": rotating, "thrust": bearing.type == "thrust",
+          "n_rows": 1 if bearing.type == "four-point" else bearing.rows}
+    with np.errstate(divide="ignore"):
+        if rows is None or np.max(rows) == 0:
+            return reference.reference_rating_life(qi, r.dynamic_load_rating, d, dm, fi, fo, _nominal_angle(bearing),
+                                                   outer_contact_loads=qo, **kw)
+        lives = [reference.reference_rating_life(qi[..., rows == k], r.dynamic_load_rating, d, dm, fi, fo,
+                                                 _nominal_angle(bearing), outer_contact_loads=qo[..., rows == k], **kw)
+                 for k in range(int(np.max(rows)) + 1)]
+    return reference.rows_rating_life(np.stack(lives, axis=-1))
 
 
 def _contact_loads(load_distribution, bearing, loads, shaft_speed):
@@ -104,17 +140,18 @@ def _contact_loads(load_distribution, bearing, loads, shaft_speed):
 
     ``None`` means the combined-load model when the bearing has the geometry it needs; ``False`` none.
     """
-    if (load_distribution is None and all(getattr(bearing, k) is not None for k in _GEOMETRY_FIELDS)
-            and covers(bearing, "load-distribution")):
+    if load_distribution is None and _missing(bearing) is None:
         load_distribution = _combined_at_rest
     if load_distribution is None or load_distribution is False:
         return None
     result = load_distribution(bearing, loads, shaft_speed) if callable(load_distribution) else load_distribution
+    rows = getattr(result, "row", None)  # the rows of the other types' entries (None: one row)
     for inner, outer in (("ball_load_inner", "ball_load_outer"), ("contact_loads", "contact_loads")):
         if hasattr(result, inner):
-            return np.asarray(getattr(result, inner), dtype=float), np.asarray(getattr(result, outer), dtype=float)
+            return (np.asarray(getattr(result, inner), dtype=float), np.asarray(getattr(result, outer), dtype=float),
+                    rows)
     q = np.asarray(result, dtype=float)
-    return q, q
+    return q, q, None
 
 
 def _iso281(bearing, ratings, fr, fa, moment):
@@ -247,31 +284,26 @@ def _rating_life(bearing, loads, shaft_speed, nu, contamination, reliability, ep
     l10r = np.full(np.shape(fr), np.nan)
     a_ref = np.full(np.shape(fr), np.nan)
     balls = _contact_loads(load_distribution, bearing, loads, shaft_speed)
-    if balls is None and not covers(bearing, "load-distribution") and load_distribution is None:
-        warnings.warn(f"no load distribution: the combined-load model does not cover a {bearing.type} bearing yet, "
-                      "so the ISO/TS 16281 reference lives are not defined (the ISO 281 lives are)", RatingWarning,
-                      stacklevel=3)
+    missing = _missing(bearing) if load_distribution is None else None
+    if balls is None and missing is not None and (bearing.type not in ("radial", "angular")
+                                                   or not covers(bearing, "load-distribution")):
+        warnings.warn(f"no load distribution: {missing}, so the ISO/TS 16281 reference lives are not defined (the "
+                      "ISO 281 lives are)", RatingWarning, stacklevel=3)
     elif balls is None:
         warnings.warn("no load distribution (the bearing's ball set and conformities are not known, or "
                       "load_distribution=False): the ISO/TS 16281 reference lives are not defined", RatingWarning,
                       stacklevel=3)
     else:
-        fi, fo = _conformities(bearing)
         failed = ~np.asarray(np.all(np.isfinite(balls[0]), axis=-1) & np.all(np.isfinite(balls[1]), axis=-1))
         if failed.any():  # a flagged case of the load distribution (NaN ball loads): no reference life
             warnings.warn(f"{int(failed.sum())} of {failed.size} load cases have no ball loads (the load "
                           "distribution found no equilibrium; its warnings say why): their ISO/TS 16281 "
                           "reference lives are not defined", RatingWarning, stacklevel=3)
-        qi, qo = (np.where(failed[..., None], 0.0, q) for q in balls)
-        with np.errstate(divide="ignore"):
-            l10r = reference.reference_rating_life(qi, r.dynamic_load_rating, bearing.require("ball_diameter"),
-                                                   bearing.require("pitch_diameter"), fi, fo,
-                                                   _nominal_angle(bearing), rotating=rotating,
-                                                   outer_contact_loads=qo)
-        l10r = np.where(failed, np.nan, l10r)
+        qi, qo = (np.where(failed[..., None], 0.0, q) for q in balls[:2])
+        l10r = np.where(failed, np.nan, _reference_life(bearing, r, qi, qo, balls[2], rotating))
         with np.errstate(divide="ignore"):
             p_ref = r.dynamic_load_rating * (l10r / 1e6) ** (-1.0 / 3.0)
-        if nu is not None:
+        if nu is not None and bearing.type != "thrust":  # a_ISO of thrust bearings: not implemented (above)
             a_ref = np.where(p_ref > 0, lubrication.life_modification_factor(
                 kappa, ec, r.fatigue_load_limit, np.where(p_ref > 0, p_ref, 1.0), ep_additives=ep_additives),
                 np.inf)

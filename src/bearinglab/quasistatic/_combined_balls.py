@@ -44,8 +44,10 @@ _N_CHEB = 16  # Chebyshev nodes in cos(alpha) of the Hertz interpolants (analyti
 _BALL_TOL = 1e-14  # ball Newton: |step| / D
 _BALL_MAX_ITER = 40
 _EPS = np.finfo(float).eps
-#: Bearing types (see :data:`bearinglab.quasistatic.combined.BEARING_TYPES`).
-BEARING_TYPES = ("radial", "angular")
+#: Bearing types (see :data:`bearinglab.quasistatic.combined.BEARING_TYPES`): the single rows built here, and
+#: the other types, whose elements :mod:`bearinglab.quasistatic._types` builds on them.
+BEARING_TYPES = ("radial", "angular", "four-point", "double-row-angular", "double-row-radial", "self-aligning",
+                 "thrust")
 #: Where the Hertz constants are evaluated (see :data:`bearinglab.quasistatic.combined.STIFFNESS_AT`).
 STIFFNESS_AT = ("operating", "free")
 
@@ -160,6 +162,12 @@ class _Geometry(NamedTuple):
     stiffness_at: str
     series: np.ndarray | None = None  # (4, N) ln K and its derivative of both contacts (_series)
     clearance: float = math.nan  # e, the diametral operating clearance [m] (negative: a preload)
+    elements: object = None  # the other types' elements (bearinglab.quasistatic._types.Elements); None: one row
+
+    @property
+    def trust(self):
+        """The ring Newton's step bound: no groove centre moves by more than half of it in a step. [m]"""
+        return self.big_a if self.elements is None else self.elements.trust
 
     @property
     def interference(self):
@@ -372,7 +380,31 @@ def _ball_start(geo, ga, gr, w2):
     total = rho - geo.big_a
     fc = w2 * geo.mass * geo.dm / 2.0 * 0.25  # cage at about half the shaft speed
     do = geo.ro + np.maximum(total * wo / (wi + wo), np.cbrt(fc) ** 2 * wo)  # (F_c / K_o)^(2/3)
+    if geo.kind == "self-aligning":
+        return _sphere_start(geo, ga, gr, rho, na * do, nr * do, np.cbrt(fc) ** 2, wi, wo)
     return na * do, nr * do
+
+
+def _sphere_start(geo, ga, gr, rho, xa, xr, fc23, wi, wo):
+    """A self-aligning bearing's unloaded ball (rho < A) at speed: F_c presses it on the outer sphere, and it
+    slides on it towards the centre plane until the flank of its inner groove holds it, so it starts where
+    it touches both, each contact compressed as by F_c: on the circle of radius r_o + (F_c/K_o)^(2/3) about
+    the sphere's centre and that of radius r_i + (F_c/K_i)^(2/3) about the inner groove centre, at their
+    intersection nearer the centre plane. On the line between the groove centres it would lie on the sphere
+    alone, whose large radius leaves it almost no stiffness across that line."""
+    r1 = geo.ro + fc23 * wo  # |x|, the sphere's centre the origin
+    r2 = geo.ri + fc23 * wi  # |g - x|
+    along = (rho * rho + r1 * r1 - r2 * r2) / (2.0 * rho)
+    with np.errstate(invalid="ignore"):
+        across = np.sqrt(r1 * r1 - along * along)
+    ua, ur = ga / rho, gr / rho
+    # the two intersections along +-(ur, -ua); the one whose axial coordinate is nearer zero
+    pa, pr = along * ua + across * ur, along * ur - across * ua
+    qa, qr = along * ua - across * ur, along * ur + across * ua
+    near = np.abs(pa) <= np.abs(qa)
+    sa, sr = np.where(near, pa, qa), np.where(near, pr, qr)
+    use = (rho < geo.big_a) & np.isfinite(across) & (fc23 > 0)
+    return np.where(use, sa, xa), np.where(use, sr, xr)
 
 
 def _speed_balls(geo, ga, gr, w2, x0=None):

@@ -28,10 +28,13 @@ def notes(geo, loads, w, out, ok):
         thrust = np.abs(np.sum(qi * np.sin(ai), axis=1))
         radial = np.abs(np.sum(qi * np.cos(ai) * np.exp(1j * geo.psi), axis=1))  # |sum Q cos(a) e^(i psi)|
         loaded = np.where(qi > 0, 1.0, np.nan)
-        msgs += light_load_warnings(thrust, ai * loaded, out["contact_angle_outer"][sel] * loaded, w[sel], geo.z,
-                                    geo.d, geo.dm, geo.a0, density=geo.mass / (math.pi * geo.d**3 / 6.0),
-                                    case_index=sel, radial_load=radial, bearing_type=geo.kind,
-                                    inner_conformity=geo.fi, outer_conformity=geo.fo)
+        if geo.elements is None:
+            msgs += light_load_warnings(thrust, ai * loaded, out["contact_angle_outer"][sel] * loaded, w[sel], geo.z,
+                                        geo.d, geo.dm, geo.a0, density=geo.mass / (math.pi * geo.d**3 / 6.0),
+                                        case_index=sel, radial_load=radial, bearing_type=geo.kind,
+                                        inner_conformity=geo.fi, outer_conformity=geo.fo)
+        else:  # the other types at speed (two rows): the outer angle of each row against its own free angle
+            msgs += _rows_outer_angle(geo, ai * loaded, out["contact_angle_outer"][sel] * loaded, sel)
         mu = 2.0 * np.abs(out["gyroscopic_moment"][sel]) / (geo.d * out["ball_load_outer"][sel])
         mu = np.where(qi > 0, mu, 0.0)
         if geo.control == "outer" and np.any(mu > FRICTION_WARNING_LIMIT):
@@ -41,6 +44,26 @@ def notes(geo, loads, w, out, ok):
     if geo.kind == "angular":
         msgs += _angular_notes(loads, out, ok)
     return tuple(msgs)
+
+
+def _rows_outer_angle(geo, ai, ao, sel):
+    """The light-load criterion of a row at speed (:func:`.light_load.light_load`: the outer contact angle
+    driven below a fraction of the free angle) for the rows of a double-row or self-aligning bearing, each
+    row's angles taken on its own side (the minimum load 0.01 C needs the bearing's C, which the model of
+    these types does not compute from the geometry: see ``bearinglab life``)."""
+    from .light_load import OUTER_ANGLE_FRACTION
+
+    # as light_load: |alpha_o| < 0.1 alpha0 while |alpha_i| > alpha0, each row on its own side (a deep-groove
+    # row on either)
+    sign = geo.elements.sign if geo.kind != "double-row-radial" else np.sign(ai)
+    with np.errstate(invalid="ignore"):
+        lost = np.any((np.abs(ao) < OUTER_ANGLE_FRACTION * geo.a0) & (sign * ai > geo.a0), axis=1) \
+            if geo.a0 > 0 else np.zeros(len(ao), dtype=bool)
+    if not lost.any():
+        return []
+    k = int(np.flatnonzero(lost)[0])
+    return [(f"light load: the outer contact angle of a row is driven to zero in {int(lost.sum())} case(s) (below "
+             f"{OUTER_ANGLE_FRACTION:g} x the free angle), e.g. case {sel[k]}: the load is too small for the speed")]
 
 
 def _angular_notes(loads, out, ok):

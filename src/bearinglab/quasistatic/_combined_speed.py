@@ -36,7 +36,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import _ring
+from . import _ring, _types
 from ._combined_balls import _ball_state, _schur, _speed_balls
 
 __all__ = ["solve_speed"]
@@ -50,10 +50,10 @@ def _measure(geo, loads, w2, u, xa, xr, free, tol, noise_factor, resolvable):
     convergence (``merit`` the norm of the ring residual and every ball residual, ``rel`` the relative
     ring residual, ``floor`` its rounding floor, ``conv`` converged, ``valid`` every ball on its outer
     raceway and finite)."""
-    ga, gr = _ring.offsets(geo, u)
+    ga, gr = _types.offsets(geo, u)
     st = _ball_state(geo, xa, xr, ga, gr, w2[:, None])
     dxb, dxdg, h, relaxed = _schur(st)
-    force = _ring.reaction(geo, st["pa"], st["pr"])
+    force = _types.reaction(geo, st["pa"], st["pr"])
     scale_v = np.array([1.0, 1.0, 1.0, 2.0 / geo.dm, 2.0 / geo.dm])
     diff = loads - force if free is None else (loads - force) * free
     ring = np.sqrt(np.add.reduce((diff * scale_v) ** 2, axis=-1))
@@ -68,7 +68,7 @@ def _measure(geo, loads, w2, u, xa, xr, free, tol, noise_factor, resolvable):
     balls_ok = np.all(np.sqrt(bsq) <= np.maximum(tol * fs, noise_factor * st["noise_b"]), axis=-1)
     valid = np.all(st["do"] > 0, axis=-1) & np.isfinite(merit)
     return {"dxb0": dxb[0], "dxb1": dxb[1], "dxdg0": dxdg[0], "dxdg1": dxdg[1], "dxdg2": dxdg[2],
-            "dxdg3": dxdg[3], "stiffness": _ring.assemble(geo, *h), "relaxed": _ring.reaction(geo, *relaxed),
+            "dxdg3": dxdg[3], "stiffness": _types.assemble(geo, *h), "relaxed": _types.reaction(geo, *relaxed),
             "force": force, "merit": merit, "rel": rel, "floor": floor,
             "conv": (rel <= np.maximum(tol, floor)) & balls_ok & valid, "valid": valid, "xa": xa, "xr": xr,
             "ga": ga, "gr": gr, "qi": st["qi"], "qo": st["qo"], "mg": st["mg"], "fc": st["fc"]}
@@ -131,14 +131,17 @@ def _step(geo, loads, cur, lam, free):
     else:
         du = _ring.lm_step(_ring.hold(cur["stiffness"], free), rhs * free, lam, geo.dm)
     c, s, arm = geo.cos_psi, geo.sin_psi, geo.dm / 2.0
-    dga = du[:, 2:3] + arm * (du[:, 3:4] * s - du[:, 4:5] * c)
-    dgr = du[:, 0:1] * c + du[:, 1:2] * s
+    if geo.elements is None:
+        dga = du[:, 2:3] + arm * (du[:, 3:4] * s - du[:, 4:5] * c)
+        dgr = du[:, 0:1] * c + du[:, 1:2] * s
+    else:  # the other types' elements (rows at their axial positions)
+        dga, dgr = _types.steps(geo, du)
     dxa = cur["dxb0"] + (cur["dxdg0"] * dga + cur["dxdg1"] * dgr)
     dxr = cur["dxb1"] + (cur["dxdg2"] * dga + cur["dxdg3"] * dgr)
     move = np.maximum(np.abs(du[:, 2]) + arm * np.hypot(du[:, 3], du[:, 4]), np.hypot(du[:, 0], du[:, 1]))
     move = np.maximum(move, np.max(np.hypot(dxa, dxr), axis=-1))
     with np.errstate(divide="ignore", invalid="ignore"):
-        t = np.minimum(1.0, 0.5 * geo.big_a / move)
+        t = np.minimum(1.0, 0.5 * geo.trust / move)
     t = np.where(np.isfinite(t), t, 0.0)
     return du, dxa, dxr, t
 
@@ -165,7 +168,7 @@ def solve_speed(geo, loads, w2, u_rest, tol, max_iter, free, lam_max, noise_fact
         for k in range(1, steps + 1):
             wk = w2[sel] * k / steps
             if x is None:  # the balls in equilibrium at the rest position of the rings
-                ga, gr = _ring.offsets(geo, us)
+                ga, gr = _types.offsets(geo, us)
                 x = _speed_balls(geo, ga, gr, wk[:, None])["x"]
             us, conv, itk, last = _newton(geo, loads[sel], wk, us, x, tol, max_iter,
                                           None if free is None else free[sel], lam_max, noise_factor, resolvable)

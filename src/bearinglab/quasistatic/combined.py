@@ -30,7 +30,10 @@ measured from the concentric position: with a diametral clearance, a pure thrust
 axial play, A sin(alpha0), and that part is included in delta_z (MASTA's convention). The tilt arm and
 the moment arm are the pitch radius d_m/2 (ISO/TS 16281). Loads and displacements are ordered
 (x, y, z, theta_x, theta_y); the stiffness matrix is d(load)/d(displacement) in N/m, N/rad, N m/m and
-N m/rad. Unloaded balls carry zero load.
+N m/rad. Unloaded balls carry zero load. Four-point, double-row, self-aligning and thrust ball bearings are
+sets of elements, one inner and one outer contact of a ball each, with their own groove-centre offsets and
+Jacobian rows (:mod:`bearinglab.quasistatic._types`; docs/theory/load_distribution.md, "The other
+ball-bearing types").
 
 References
 ----------
@@ -53,19 +56,28 @@ import numpy as np
 
 from .. import _solve as _solve_mod
 from .. import geometry
-from .._validate import as_float, check_integer, check_nonnegative, check_positive
+from .._validate import as_float, check_integer, check_positive
 from ..errors import ConvergenceError, InputError
 from ..units import RPM
-from . import _combined_balls, _combined_speed, _ring
+from . import _combined_balls, _combined_speed, _ring, _types
 from ._combined_balls import (  # the balls and the bearing data, split off (issue 20); private names
     _BALL_MAX_ITER,
     _BALL_TOL,
-    _geometry,
     _hertz_k,
     _rest_balls,
     _speed_balls,
 )
+from ._combined_inputs import (  # split off (no module over 1000 lines); private names
+    _MAX_DEFLECTION,  # noqa: F401
+    _beyond_bound,
+    _bound_reason,
+    _check_held,
+    _flat_inputs,
+    _held,
+    _load_bound,  # noqa: F401  (sets, tests)
+)
 from ._combined_notes import notes as _notes
+from ._types import geometry as _geometry
 from .light_load import LightLoad, light_load, light_load_warnings
 
 __all__ = [
@@ -224,15 +236,15 @@ def _evaluate(geo, u, w2, x=None, deriv=True):
     ``w2`` (n,) is omega^2; cases with w2 = 0 use the closed-form balls at rest, the others solve their
     balls at fixed rings starting from ``x`` ((xa, xr), each (n, Z)) or from :func:`_ball_start`.
     """
-    ga, gr = _ring.offsets(geo, u)
+    ga, gr = _types.offsets(geo, u)
     moving = w2 > 0
     if not moving.any():
-        balls = _rest_balls(geo, ga, gr)
-        balls["ok"] = np.ones(ga.shape, dtype=bool)
+        balls = _types.rest_balls(geo, ga, gr)
+        balls.setdefault("ok", np.ones(ga.shape, dtype=bool))
     else:
         balls = _merge(geo, ga, gr, w2, moving, x)
-    force = _ring.reaction(geo, balls["pa"], balls["pr"])
-    stiff = _ring.assemble(geo, *balls["h"]) if deriv else None
+    force = _types.reaction(geo, balls["pa"], balls["pr"])
+    stiff = _types.assemble(geo, *balls["h"]) if deriv else None
     return force, stiff, balls
 
 
@@ -277,6 +289,8 @@ def _measure(geo, loads, force, balls, free=None):
     """
     diff = loads - force if free is None else (loads - force) * free
     res = np.linalg.norm(_scaled(geo, diff), axis=-1)
+    if "b_res" in balls:  # a four-point ball's own residual counts: a ball not in equilibrium is no answer
+        res = np.hypot(res, _ring.ballsum(balls["b_res"]))
     total = _ring.ballsum(np.hypot(balls["pa"], balls["pr"]))
     scale = np.maximum(np.linalg.norm(_scaled(geo, loads), axis=-1), total)
     noise = _NOISE * _ring.ballsum(balls["noise"])
@@ -291,6 +305,8 @@ def _start(geo, loads):
     starts at the smaller of its linear response at zero load (radial stiffness 0.75 Z K_n delta_0^0.5
     for Z >= 3) and the zero-clearance estimate, and at least at the latter less delta_0.
     """
+    if geo.elements is not None:
+        return _types.start(geo, loads)
     c0 = np.array([math.cos(geo.a0)])
     ki, ko = (_hertz_k(t, c0)[0][0] for t in geo.tables[:2])
     kn0 = (ki ** (-2.0 / 3.0) + ko ** (-2.0 / 3.0)) ** -1.5
@@ -345,7 +361,7 @@ def _newton(geo, loads, u0, tol, max_iter, keep=(), free=None):
         # axial |dz| + d_m/2 |tilt|, radial |(dx, dy)|)
         move = np.maximum(np.abs(du[:, 2]) + geo.dm / 2.0 * np.hypot(du[:, 3], du[:, 4]), np.hypot(du[:, 0], du[:, 1]))
         with np.errstate(divide="ignore"):
-            t = np.minimum(1.0, 0.5 * geo.big_a / move)
+            t = np.minimum(1.0, 0.5 * geo.trust / move)
         full = t == 1.0
         pending = np.arange(act.size)
         for _ls in range(_LINE_SEARCH):
@@ -385,7 +401,8 @@ def _rest_newton(geo, loads, tol, max_iter, held=None):
         if held is not None:
             free = np.isnan(held).astype(float)
             u0 = np.where(free > 0, u0, held)
-        u, ok, it, last = _newton(geo, loads, u0, tol, max_iter, keep=("qi", "ai"), free=free)
+        keep = ("qi", "ai") if geo.kind != "four-point" else ("qi", "ai", "qo", "ao")  # four contacts a ball
+        u, ok, it, last = _newton(geo, loads, u0, tol, max_iter, keep=keep, free=free)
         return u, ok, it, last
     parts = [_rest_newton(geo, loads[lo:lo + _CHUNK], tol, max_iter, None if held is None else held[lo:lo + _CHUNK])
              for lo in range(0, n, _CHUNK)]
@@ -401,7 +418,7 @@ def _solve(geo, loads, w2, tol, max_iter, *, final=False, held=None, compiled=Fa
     cases whose outputs the last evaluation holds (all converged ones), so they need no evaluation of
     their own.
     """
-    if compiled:
+    if compiled and geo.elements is None:  # the kernel solves a single row; the other types are numpy's
         u, ok, it, last = _solve_compiled(geo, loads, w2, tol, max_iter, held)
         return (u, ok, it, (ok.copy(), last)) if final else (u, ok, it)
     u, ok, it, last = _rest_newton(geo, loads, tol, max_iter, held)
@@ -429,8 +446,11 @@ def _solve(geo, loads, w2, tol, max_iter, *, final=False, held=None, compiled=Fa
 
 def _reactions(geo, u, w2, compiled):
     """Ring load (n, 5), stiffness (n, 5, 5) and every ball converged (n,) at the displacements u (n, 5):
-    the kernel's evaluation (:func:`._combined_kernel.reactions`) or :func:`_evaluate`'s."""
-    if compiled:
+    the kernel's evaluation (:func:`._combined_kernel.reactions`) or :func:`_evaluate`'s. The types without
+    the speed terms (four-point, thrust: :data:`._types.AT_SPEED`) are evaluated at rest at any speed."""
+    if geo.elements is not None and geo.kind not in _types.AT_SPEED:
+        w2 = np.zeros_like(w2)
+    if compiled and geo.elements is None:
         from . import _combined_kernel
 
         par, ser = _kernel_parameters(geo, TOL, MAX_ITER)
@@ -487,11 +507,16 @@ class LoadDistribution(NamedTuple):
     #: (..., 5) load needed to hold each prescribed freedom at its displacement [N, N m]; NaN on a freedom
     #: under a given load (all NaN without ``prescribed_displacement``)
     reactions: np.ndarray = None
+    #: (Z',) the row of each ball-axis entry of the other types (:mod:`._types`: a double-row bearing's row, a
+    #: four-point bearing's diagonal; the ball fields then hold Z' = 2 Z entries, row after row); None for a
+    #: single row
+    row: np.ndarray = None
 
 
 def _pressure(geo, q, alpha, race):
     """p_max = 3 Q / (2 pi a b) with a b = (a* b*) (3 Q / (E' Sigma rho))^(2/3)."""
-    angle = np.full_like(alpha, geo.a0) if geo.stiffness_at == "free" else alpha
+    sphere = race == "outer" and geo.kind == "self-aligning"  # curvature 1/R_o at any angle (_types._tables)
+    angle = np.full_like(alpha, geo.a0) if geo.stiffness_at == "free" or sphere else alpha
     conf = geo.fi if race == "inner" else geo.fo
     curv = geometry.raceway_curvature(geo.d, geo.dm, conf, angle, race=race)
     coef = geo.tables[2 if race == "inner" else 3]
@@ -563,26 +588,12 @@ def _outputs(geo, loads, w, u, ok, it, final=None, held=None):
     return out
 
 
-def _flat_inputs(loads, shaft_speed):
-    f = as_float("loads", loads)
-    if f.shape[-1:] != (5,):
-        raise InputError(f"loads must have a last axis of length 5 (F_x, F_y, F_z, M_x, M_y), got shape {f.shape}")
-    if not np.all(np.isfinite(f)):
-        raise InputError("loads must be finite [N, N m]")
-    w = check_nonnegative("shaft_speed", shaft_speed, "rad/s")
-    if not np.all(np.isfinite(w)):
-        raise InputError("shaft_speed must be finite [rad/s]")
-    shape = np.broadcast_shapes(f.shape[:-1], w.shape)
-    return (np.ascontiguousarray(np.broadcast_to(f, shape + (5,)).reshape(-1, 5)),
-            np.broadcast_to(w, shape).ravel().astype(float), shape)
-
-
 # --------------------------------------------------------------------------- public solvers
 def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,
                       free_angle, reduced_modulus, density, *, first_ball_angle=0.0, stiffness_at="operating",
                       raceway_control="outer", bearing_type="radial", on_failure="raise",
                       tol=TOL, max_iter=MAX_ITER, prescribed_displacement=None, radial_clearance=None,
-                      engine="auto"):
+                      engine="auto", row_distance=None):
     r"""Load distribution, displacement and stiffness of a ball bearing under combined load, at rest or at speed.
 
     Parameters
@@ -621,7 +632,13 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
         through F_z = 0: a radial load alone puts every ball at alpha = 0, a negative thrust puts them on
         the low shoulder) and the warning says the real bearing cannot be trusted to carry them, which is
         what MESYS and MASTA show (a full-groove solution with a shoulder warning; their contact-ellipse
-        check against the shoulder height needs shoulder data this model does not have).
+        check against the shoulder height needs shoulder data this model does not have). The other types,
+        "four-point", "double-row-angular", "double-row-radial", "self-aligning" and "thrust"
+        (:mod:`bearinglab.quasistatic._types`), take ``free_angle`` as their nominal angle built into the
+        rings (a double-row deep-groove bearing: its free angle) and ``radial_clearance`` apart (None: 0);
+        their ball fields hold a ball per row (``row``). A self-aligning bearing carries no moment and a
+        thrust bearing no radial load (those freedoms are held, their loads must be 0); four-point and
+        thrust bearings are solved at rest only.
     on_failure : {"raise", "flag"}, optional
         Raise :class:`~bearinglab.errors.ConvergenceError` if any case fails (default), or return NaN
         and ``converged`` False for it.
@@ -647,7 +664,9 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
         Who solves: "compiled" the numba kernel (:mod:`bearinglab.quasistatic._combined_kernel`, the same
         algorithm case by case, parallel over the cases), "numpy" the batched numpy path, "auto" (default)
         the kernel when numba is installed. The two agree to rounding (1e-12 relative); each gives a case
-        the same bits in any batch.
+        the same bits in any batch. The other types are solved by the numpy path whatever the engine.
+    row_distance : float, optional
+        Axial distance between the ball centres of the two rows of a double-row bearing (needed there). [m]
 
     Returns
     -------
@@ -706,7 +725,10 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     max_iter = int(check_integer("max_iter", max_iter, 1))
     geo = _geometry(n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity, free_angle,
                     reduced_modulus, density, first_ball_angle, stiffness_at, raceway_control, bearing_type,
-                    clearance=radial_clearance)
+                    clearance=radial_clearance, row_distance=row_distance)
+    if geo.elements is not None:  # what the type cannot carry, and the freedoms it does not resist (held)
+        _types.check_loads(geo, f, w, held)
+        held = _types.held(geo, f, held)
     if held is not None:
         _check_held(geo, held)
     over, bound = _beyond_bound(geo, f)
@@ -745,78 +767,8 @@ def load_distribution(loads, shaft_speed, n_balls, ball_diameter, pitch_diameter
     shaped = {k: v.reshape(shape + v.shape[1:])[()] for k, v in out.items()}
     return LoadDistribution(loads=f.reshape(shape + (5,)), shaft_speed=w.reshape(shape)[()],
                             azimuth=geo.psi, converged=ok.reshape(shape)[()], iterations=it.reshape(shape)[()],
-                            warnings=notes, **{k: shaped[k] for k in shaped if k in LoadDistribution._fields
-                                               and (k != "azimuth" or z)})
-
-
-#: The solver's bound (issue 29): no ball is compressed by more than this many ball diameters.
-_MAX_DEFLECTION = 1.0
-
-
-def _load_bound(geo):
-    """The largest force (and moment over d_m/2) the balls can carry with no contact compressed by more
-    than a ball diameter: Z max_alpha max(K_i, K_o) D^1.5 [N]. Beyond it the rings would pass through the
-    balls (as a prescribed displacement beyond a ball diameter, :func:`_check_held`): a unit mistake or an
-    absurd load, never an answer."""
-    c = np.linspace(0.0, 1.0, 65)  # cos(alpha): every contact angle
-    k = max(np.max(np.exp(_combined_balls._log_k(geo, c, race)[0])) for race in (0, 1))
-    return geo.z * k * (_MAX_DEFLECTION * geo.d) ** 1.5
-
-
-def _beyond_bound(geo, loads):
-    """Cases whose force or moment (over d_m/2) exceeds :func:`_load_bound`, and the bound [N]."""
-    bound = _load_bound(geo)
-    force = np.linalg.norm(loads[:, :3], axis=-1)
-    moment = np.linalg.norm(loads[:, 3:], axis=-1) / (geo.dm / 2.0)
-    return (force > bound) | (moment > bound), bound
-
-
-def _bound_reason(bound):
-    return (f"loads beyond what the bearing can carry: a force above {bound:.4g} N (or a moment above that "
-            "times d_m/2) would compress a ball by more than its diameter, the solver's bound (a unit mistake?)")
-
-
-def _held(f, w, shape, prescribed):
-    """Loads, speeds and prescribed displacements broadcast to one flat batch (held None if none)."""
-    if prescribed is None:
-        return f, w, None, shape
-    p = np.asarray(as_float("prescribed_displacement", prescribed), dtype=float)
-    if p.shape[-1:] != (5,):
-        raise InputError("prescribed_displacement must have a last axis of length 5 (delta_x, delta_y, delta_z, "
-                         f"theta_x, theta_y; NaN for a freedom under load), got shape {p.shape}")
-    if np.any(np.isinf(p)):
-        raise InputError("prescribed_displacement must be finite or NaN (a freedom under load) [m, rad]")
-    full = np.broadcast_shapes(shape, p.shape[:-1])
-    f = np.broadcast_to(f.reshape(shape + (5,)), full + (5,)).reshape(-1, 5)
-    w = np.broadcast_to(w.reshape(shape), full).ravel()
-    held = np.ascontiguousarray(np.broadcast_to(p, full + (5,)).reshape(-1, 5))
-    both = ~np.isnan(held) & (f != 0)
-    if both.any():
-        k, j = np.argwhere(both)[0]
-        name = ("F_x", "F_y", "F_z", "M_x", "M_y")[j]
-        raise InputError(f"loads: {name} = {f[k, j]:g} [N, N m] is given on a freedom whose displacement is "
-                         "prescribed; give each freedom either a load or a displacement (its reaction is "
-                         "computed)")
-    if np.all(np.isnan(held)):
-        return np.ascontiguousarray(f), np.ascontiguousarray(w), None, full
-    return np.ascontiguousarray(f), np.ascontiguousarray(w), held, full
-
-
-def _check_held(geo, held):
-    """A prescribed displacement may move a groove-curvature centre by at most one ball diameter (tilts
-    at the pitch radius d_m/2): beyond that the rings would pass through the balls, which no load can
-    do; such an input is a unit mistake (InputError naming the freedom and the limit)."""
-    names = ("delta_x", "delta_y", "delta_z", "theta_x", "theta_y")
-    arm = np.array([1.0, 1.0, 1.0, geo.dm / 2.0, geo.dm / 2.0])
-    with np.errstate(invalid="ignore"):
-        bad = np.abs(held) * arm > geo.d
-    if bad.any():
-        k, j = np.argwhere(bad)[0]
-        unit, scale = ("mm", 1e3) if j < 3 else ("mrad", 1e3)
-        raise InputError(f"prescribed_displacement: {names[j]} = {held[k, j] * scale:.6g} {unit} moves the rings by "
-                         f"more than one ball diameter (D = {geo.d * 1e3:.6g} mm"
-                         + (f"; a tilt at most {geo.d / arm[j] * 1e3:.6g} mrad at the pitch radius)" if j >= 3
-                            else ")"))
+                            warnings=notes, row=None if geo.elements is None else geo.elements.row,
+                            **{k: shaped[k] for k in shaped if k in LoadDistribution._fields and (k != "azimuth" or z)})
 
 
 def _failures(geo, loads, w, u, ok, free=None):
@@ -902,8 +854,40 @@ def combined_analysis(bearing, loads, shaft_speed=0.0, *, reduced_modulus=None, 
 
     check_model(bearing, "load-distribution")
     options.setdefault("bearing_type", bearing.type)
-    options.setdefault("radial_clearance", _preload_clearance(bearing))
-    return load_distribution(loads, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
+    if bearing.type not in _types.MODELLED:
+        options.setdefault("radial_clearance", _preload_clearance(bearing))
+        return load_distribution(loads, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
+    for key, value in _types.bearing_options(bearing).items():  # their clearance and row distance
+        options.setdefault(key, value)
+    r = load_distribution(loads, shaft_speed, *_bearing_args(bearing, reduced_modulus), **options)
+    note = _types.misalignment_note(bearing, np.asarray(r.displacement)[..., 3:])
+    return r if note is None else r._replace(warnings=(*r.warnings, note))
+
+
+def _bearing_geometry(bearing, first_ball_angle=0.0, stiffness_at="operating", raceway_control="outer", *,
+                      reduced_modulus=None, tables=True):
+    """The checked geometry of a :class:`~bearinglab.bearing.BallBearing` of any type, as
+    :func:`combined_analysis` solves it (its operating clearance included)."""
+    z, d, dm, fi, fo, a0, ep, rho = _bearing_args(bearing, reduced_modulus)
+    if bearing.type in _types.MODELLED:
+        opts = _types.bearing_options(bearing)
+        e = opts.get("radial_clearance")
+        return _geometry(z, d, dm, fi, fo, None if bearing.type == "double-row-radial" and e is not None else a0, ep,
+                         rho, first_ball_angle, stiffness_at, raceway_control, bearing.type, tables=tables, clearance=e,
+                         row_distance=opts.get("row_distance"))
+    e = _preload_clearance(bearing)
+    return _geometry(z, d, dm, fi, fo, None if e is not None else a0, ep, rho, first_ball_angle, stiffness_at,
+                     raceway_control, bearing.type, tables=tables, clearance=e)
+
+
+def _takeup(bearing):
+    """Half the axial play of a BallBearing of any type, the part of delta_z a thrust F_z > 0 spends before
+    a ball carries: A sin(alpha0) (:func:`axial_play_takeup`) of a single row, the first contact of the
+    other types' elements (:func:`._types.first_contact`; 0 for a thrust bearing). [m]"""
+    if bearing.type in _types.MODELLED:
+        return _types.first_contact(_bearing_geometry(bearing, tables=False))
+    _, d, _, fi, fo, a0, _, _ = _bearing_args(bearing)
+    return float(axial_play_takeup(d, fi, fo, a0))
 
 
 def _preload_clearance(bearing):

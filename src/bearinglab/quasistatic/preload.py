@@ -39,7 +39,8 @@ class Preload(NamedTuple):
     """The preload of a bearing with zero or negative clearance, at rest and without external load (SI)."""
 
     clearance: float  # e, the diametral operating clearance [m]
-    interference: float  # delta_0 = max(-e/2, 0), the compression of every ball [m]
+    interference: float  # delta_0 = max(-e/2, 0), the compression of every ball (the other types: along
+    #                       its contact line, |g_0| - A) [m]
     ball_load: float  # Q_0 [N]
     ball_load_sum: float  # Z Q_0, the sum of the ball loads (they cancel on the ring) [N]
     stiffness: np.ndarray  # (5, 5) at zero external load [N/m, N/rad, N m/m, N m/rad]
@@ -72,17 +73,15 @@ def preload(bearing, *, first_ball_angle=0.0, stiffness_at="operating"):
     if e is None:
         raise InputError(f"radial_clearance of {bearing.designation or 'the bearing'!r} is not known; the preload "
                          "comes from a zero or negative operating clearance")
-    geo = _geometry(bearing, first_ball_angle, stiffness_at)
+    geo = combined._bearing_geometry(bearing, first_ball_angle, stiffness_at)
     _force, stiff, balls = combined._evaluate(geo, np.zeros((1, 5)), np.zeros(1))
     q = float(np.max(balls["qi"][0]))
-    return Preload(float(e), geo.interference, q, float(np.sum(balls["qi"][0])), stiff[0])
-
-
-def _geometry(bearing, first_ball_angle, stiffness_at):
-    z, d, dm, fi, fo, a0, ep, rho = combined._bearing_args(bearing)
-    e = combined._preload_clearance(bearing)
-    return combined._geometry(z, d, dm, fi, fo, None if e is not None else a0, ep, rho, first_ball_angle,
-                              stiffness_at, "outer", bearing.type, clearance=e)
+    if geo.elements is None:
+        interference = geo.interference
+    else:  # the other types: each contact pair compressed along its line at the built-in angle
+        el = geo.elements
+        interference = max(float(np.max(np.hypot(el.ga0, el.gr0))) - geo.big_a, 0.0) if geo.kind != "thrust" else 0.0
+    return Preload(float(e), interference, q, float(np.sum(balls["qi"][0])), stiff[0])
 
 
 def stiffness_gain(bearing, loads, shaft_speed=0.0, **options):

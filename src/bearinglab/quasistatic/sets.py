@@ -41,7 +41,7 @@ import numpy as np
 
 from .._validate import as_float, check_nonnegative, check_positive
 from ..errors import ConvergenceError, InputError
-from . import combined
+from . import _types, combined
 
 __all__ = ["ARRANGEMENTS", "SetState", "arrangement", "default_spacing", "set_analysis"]
 
@@ -165,7 +165,7 @@ class SetState(NamedTuple):
 def _first_contact_offsets(geos):
     """Axial offset A sin(alpha0) of the groove-curvature centres at which each bearing's balls first touch
     (0 for a bearing with zero or negative clearance, alpha0 = 0: its balls touch in the concentric position)."""
-    return np.array([g.big_a * math.sin(g.a0) for g in geos])
+    return np.array([g.big_a * math.sin(g.a0) if g.elements is None else _types.first_contact(g) for g in geos])
 
 
 def _preload_offsets(geos, orient, preload, preload_displacement):
@@ -385,9 +385,11 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
     flat = f.reshape(-1, 5)
     w = float(check_nonnegative("shaft_speed", shaft_speed, "rad/s"))
     check_positive("tol", tol, "-")
-    geos = [combined._geometry(*combined._bearing_args(b), options.get("first_ball_angle", 0.0),
-                               options.get("stiffness_at", "operating"), options.get("raceway_control", "outer"),
-                               b.type, clearance=combined._preload_clearance(b)) for b in bl]
+    geos = [combined._bearing_geometry(b, options.get("first_ball_angle", 0.0), options.get("stiffness_at", "operating"),
+                                       options.get("raceway_control", "outer")) for b in bl]
+    for b, g in zip(bl, geos, strict=True):  # the loads a type cannot carry alone are its mates' in a set
+        if g.elements is not None and g.kind not in _types.AT_SPEED and w > 0:
+            _types.check_loads(g, np.zeros((1, 5)), np.array([w]), None)
     trans = [_transform(o, z) for o, z in zip(orient, pos, strict=True)]
     over = _check_bound(geos, pos, flat, on_failure)
     offsets, interference = _preload_offsets(geos, orient, preload, preload_displacement)
@@ -408,6 +410,8 @@ def set_analysis(bearings, loads, shaft_speed=0.0, *, arrangement_kind="DB", spa
         out["displacement"] = np.where(ok[:, None], ub, np.nan)
         notes += [f"bearing {j}: {m}" for m in combined._notes(geo, None, np.full(len(flat), w), out, ok)]
         per.append({k: v.reshape(shape + v.shape[1:]) for k, v in out.items() if k not in ("residual", "floor")})
+        if geo.elements is not None:  # the other types: a ball per row, each entry's azimuth and row
+            per[-1].update(azimuth=geo.psi, row=geo.elements.row)
     notes += _unloaded_notes(per, ok)
     if over.any():
         notes.append(f"{int(over.sum())} case(s) not converged (NaN, converged False; first: case "

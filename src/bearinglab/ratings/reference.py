@@ -5,6 +5,7 @@ Functions
 contact_dynamic_loads      Qci, Qce: the ball loads of the basic dynamic load rating of each ring
 equivalent_contact_loads   Qei, Qee: cubic (rotating ring) and 10/3-power (stationary ring) means
 reference_rating_life      L10r = [(Qci/Qei)^(-10/3) + (Qce/Qee)^(-10/3)]^(-9/10) million revolutions
+rows_rating_life           the bearing's L10r from its rows' (or a four-point bearing's diagonals'), raceway by raceway
 
 The per-ball contact loads come from a load-distribution model (the rigid-ring model of the combined
 loads, with clearance and tilt); arrays hold the balls on their last axis, so a batch of load cases
@@ -15,7 +16,9 @@ References
 .. [1] ISO/TS 16281:2008, *Rolling bearings -- Methods for calculating the modified reference rating
    life for universally loaded bearings*, clause 7 (ball bearings): eqs. for Qci and Qce from C,
    the equivalent ball loads and the reference life; its worked cases as computed by MASTA are
-   quoted in the repository github.com/minzhun/ISO16281 (Test_BallBearing.py).
+   quoted in the repository github.com/minzhun/ISO16281 (Test_BallBearing.py), whose BallBearing.py
+   also holds the TS's Qci and Qce of thrust ball bearings (eqs. (19)-(24): C_a / (Z sin alpha) and no
+   constants 0.407, 0.389, 1.044) and the r_e = D_w (1 + 1/gamma) / 2 of self-aligning ones.
 """
 
 from __future__ import annotations
@@ -33,6 +36,7 @@ __all__ = [
     "contact_dynamic_loads",
     "equivalent_contact_loads",
     "reference_rating_life",
+    "rows_rating_life",
 ]
 
 
@@ -55,7 +59,7 @@ class EquivalentContactLoads(NamedTuple):
 
 
 def contact_dynamic_loads(dynamic_load_rating, n_balls, ball_diameter, pitch_diameter, inner_conformity,
-                          outer_conformity, contact_angle=0.0, *, n_rows=1):
+                          outer_conformity, contact_angle=0.0, *, n_rows=1, thrust=False):
     r"""Basic dynamic ball loads Qci and Qce of the inner and outer raceway of a radial ball bearing.
 
     Parameters
@@ -74,6 +78,9 @@ def contact_dynamic_loads(dynamic_load_rating, n_balls, ball_diameter, pitch_dia
         Nominal contact angle alpha. [rad]
     n_rows : int
         Rows i. [-]
+    thrust : bool
+        A thrust ball bearing: ``dynamic_load_rating`` is C_a and the rings are the shaft washer (inner)
+        and the housing washer (outer).
 
     Returns
     -------
@@ -95,6 +102,16 @@ def contact_dynamic_loads(dynamic_load_rating, n_balls, ball_diameter, pitch_dia
     The nominal contact angle is used, as in the standard and in MASTA (whose reference lives of
     axially loaded deep-groove bearings, running at 13 to 15 deg, are reproduced this way).
 
+    Thrust ball bearings (module reference [1], eqs. (19)-(24) as there):
+
+    .. math::
+        Q_{ci} = \frac{C_a}{Z\sin\alpha}\left[1 + \left(\left(\frac{1-\gamma}{1+\gamma}\right)^{1.72}
+                 \rho^{0.41}\right)^{10/3}\right]^{0.3},\qquad
+        Q_{ce} = \frac{C_a}{Z\sin\alpha}\left[1 + \left(\left(\frac{1-\gamma}{1+\gamma}\right)^{1.72}
+                 \rho^{0.41}\right)^{-10/3}\right]^{0.3},
+
+    so that Z equal ball loads F_a/Z give L10r = (C_a/F_a)^3, ISO 281's L10 of a thrust bearing, exactly.
+
     Examples
     --------
     >>> q = contact_dynamic_loads(23400.0, 7, 11.5e-3, 43.5e-3, 0.52, 0.53)
@@ -111,6 +128,11 @@ def contact_dynamic_loads(dynamic_load_rating, n_balls, ball_diameter, pitch_dia
         raise InputError("inner_conformity and outer_conformity must be > 0.5 [-]")
     gamma = dw * np.cos(contact_angle) / dpw
     rho = (fi / fe) * (2.0 * fe - 1.0) / (2.0 * fi - 1.0)  # r_i/r_e (2 r_e - Dw)/(2 r_i - Dw)
+    if thrust:
+        base = c / (z * np.sin(contact_angle))
+        ratio = ((1.0 - gamma) / (1.0 + gamma)) ** 1.72 * rho**0.41
+        return ContactDynamicLoads((base * (1.0 + ratio ** (10.0 / 3.0)) ** 0.3)[()],
+                                   (base * (1.0 + ratio ** (-10.0 / 3.0)) ** 0.3)[()])
     ratio = 1.044 * ((1.0 - gamma) / (1.0 + gamma)) ** 1.72 * rho**0.41
     base = c / (z * (n_rows * np.cos(contact_angle)) ** 0.7)
     q_ci = base / 0.407 * (1.0 + ratio ** (10.0 / 3.0)) ** 0.3
@@ -158,7 +180,7 @@ def equivalent_contact_loads(contact_loads, *, rotating="inner"):
 
 def reference_rating_life(contact_loads, dynamic_load_rating, ball_diameter, pitch_diameter,
                           inner_conformity, outer_conformity, contact_angle=0.0, *, n_rows=1,
-                          rotating="inner", outer_contact_loads=None):
+                          rotating="inner", outer_contact_loads=None, thrust=False):
     r"""Basic reference rating life L10r of ISO/TS 16281 from the ball loads.
 
     Parameters
@@ -182,6 +204,8 @@ def reference_rating_life(contact_loads, dynamic_load_rating, ball_diameter, pit
     outer_contact_loads : array_like, optional
         Ball loads on the outer raceway where they differ from the inner ones (at speed, by the
         centrifugal force); by default ``contact_loads``. [N]
+    thrust : bool
+        A thrust ball bearing (:func:`contact_dynamic_loads`).
 
     Returns
     -------
@@ -196,7 +220,7 @@ def reference_rating_life(contact_loads, dynamic_load_rating, ball_diameter, pit
     """
     q = check_nonnegative("contact_loads", contact_loads, "N")
     qc = contact_dynamic_loads(dynamic_load_rating, q.shape[-1], ball_diameter, pitch_diameter,
-                               inner_conformity, outer_conformity, contact_angle, n_rows=n_rows)
+                               inner_conformity, outer_conformity, contact_angle, n_rows=n_rows, thrust=thrust)
     qe = equivalent_contact_loads(q, rotating=rotating)
     if outer_contact_loads is not None:
         qo = check_nonnegative("outer_contact_loads", outer_contact_loads, "N")
@@ -207,3 +231,34 @@ def reference_rating_life(contact_loads, dynamic_load_rating, ball_diameter, pit
     with np.errstate(divide="ignore"):
         s = (qe.inner / qc.inner) ** (10.0 / 3.0) + (qe.outer / qc.outer) ** (10.0 / 3.0)
         return (1e6 * s ** -0.9)[()]
+
+
+def rows_rating_life(lives):
+    r"""The reference rating life of a bearing from those of its rows, raceway by raceway.
+
+    Parameters
+    ----------
+    lives : array_like
+        L10r of each row, rows on the last axis (each from :func:`reference_rating_life` with the
+        bearing's rows i in its Q_c; a four-point bearing's two diagonals, each with i = 1; inf for an
+        unloaded row). [revolutions]
+
+    Returns
+    -------
+    ndarray or float
+        :math:`L_{10r} = \left(\sum_k L_{10r,k}^{-10/9}\right)^{-9/10}`: every raceway of every row in
+        series, the Weibull slope 10/9 of ball raceways by which :func:`reference_rating_life` already
+        combines the two raceways of one row. With i equally loaded rows this is i^(-0.9) L_row, and with
+        Q_c of a row carrying i^(-0.7) of the bearing's C it reproduces ISO 281's C = i^0.7 C_row. [revolutions]
+
+    Examples
+    --------
+    >>> print(f"{rows_rating_life([2e9, 2e9]) / 1e6:.1f}")
+    1071.8
+    """
+    life = np.asarray(lives, dtype=float)
+    least = np.min(life, axis=-1, keepdims=True)  # in units of the shortest row: one loaded row gives its life
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = np.where(np.isinf(life), np.inf, life / least)
+        out = least[..., 0] * np.sum(ratio ** (-10.0 / 9.0), axis=-1) ** -0.9
+    return np.where(np.isinf(least[..., 0]), np.inf, out)[()]

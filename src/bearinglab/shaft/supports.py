@@ -97,6 +97,8 @@ def first_contact_offset(bearing):
     """
     from ..quasistatic import combined
 
+    if bearing.type in ("four-point", "double-row-angular", "double-row-radial", "self-aligning", "thrust"):
+        return float(combined._takeup(bearing))  # their own first contact (issue 30)
     if bearing.contact_angle is None or bearing.contact_angle == 0:
         return 0.0
     d, fi, fo = bearing.require("ball_diameter", "inner_conformity", "outer_conformity")
