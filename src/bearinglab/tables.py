@@ -289,7 +289,7 @@ UNIT_SUFFIXES = (
     ("_kN", "kN"),
     ("_N", "N"),
     ("_deg", "°"),
-    ("_dms", "° ′ ″"),
+    ("_dms", ""),  # the value is a text that carries its own degrees, minutes and seconds
     ("_mrad", "mrad"),
     ("_rad", "rad"),
     ("_rpm", "rpm"),

@@ -15,6 +15,7 @@ COMMANDS = {
     "load-distribution": ["load-distribution", "--fx", "2 kN"],
     "life": ["life", "--fx", "2 kN", "--speed", "3000 rpm", "--viscosity", "20 cSt"],
     "high-speed": ["high-speed", "-F", "1 kN", "-n", "6000 rpm"],
+    "film": ["film", "--fx", "2 kN", "--speed", "3000 rpm", "--viscosity", "20 cSt"],
 }
 
 
@@ -37,6 +38,25 @@ def test_a_6208_on_k5_h7_with_a_warm_inner_ring_is_solved_preloaded(capsys, comm
     assert p["ball_load_N"] > 0 and p["ball_load_sum_N"] == pytest.approx(9 * p["ball_load_N"], rel=1e-12)
     assert p["stiffness_at_zero_load"]["k_xx_N_per_um"] > 0
     assert any(f"is negative, {e:.3g} um" in w and "preloaded" in w for w in doc["warnings"])
+
+
+def test_the_film_runs_at_the_ball_loads_of_the_mounted_bearing(capsys):
+    """One clearance per bearing: the film's ball loads under fits and ring temperatures are those of
+    the load distribution at the same speed, not those of the unmounted clearance."""
+    case = ["-b", "6208", "--fx", "3 kN", "--speed", "3000 rpm", "--json"]
+
+    def loads(*args):
+        code, out, err = run(capsys, *args)
+        assert code == 0, err
+        doc = json.loads(out)
+        return doc.get("operating_clearance_um"), sorted(b["load_inner_N"] for b in doc["balls"])
+
+    clearance, spread = loads("load-distribution", *case, *WARM_K5)
+    film_clearance, film = loads("film", *case, *WARM_K5, "--viscosity", "20 cSt")
+    assert clearance < 0 and film_clearance == pytest.approx(clearance, rel=1e-12)
+    assert film == pytest.approx(spread, rel=1e-9)
+    _, unmounted = loads("film", *case, "--viscosity", "20 cSt")
+    assert max(unmounted) > max(film) * 1.02  # with its unmounted clearance fewer balls carry the load
 
 
 def test_a_c3_bearing_with_a_warm_inner_ring_fed_into_load_distribution(capsys):

@@ -145,7 +145,7 @@ def _document(parsed, bearing_file, catalog):
     from .. import tables
     from ..film.analysis import LOADS_AT
     from ..units import RPM
-    from . import _preload
+    from . import _mounting, _preload
     from .load_distribution import clearance_source
 
     def text(name):
@@ -166,6 +166,8 @@ def _document(parsed, bearing_file, catalog):
     if speed is None:
         raise InputError("speed: give the inner-ring speed, e.g. --speed '6000 rpm' (no film forms at rest)")
     w = parse_speeds(speed, pitch_diameter=b.require("pitch_diameter"), zero=False)
+    # the fits, temperatures and speed set the clearance the ball loads run with, as in the load distribution
+    b, mounted = _mounting.operating_bearing(b, float(np.max(w)), {k: text(k) for k in _mounting.NAMES})
     loads_at = v.get("loads_at", "speed")
     choice("loads-at", loads_at, LOADS_AT)
     rq_ball, rq_race = roughness(text("roughness"), text("roughness_ball"), text("roughness_race"))
@@ -199,7 +201,7 @@ def _document(parsed, bearing_file, catalog):
     r = _solve(film_model.film_analysis, b, cases, w, eta, alpha, roughness_ball=rq_ball,
                roughness_race=rq_race, loads_at=loads_at, **starve)
     notes = list(dict.fromkeys([*notes, *r.warnings]))
-    preloaded, note = _preload.report(b, source=clearance_source({}, text("radial_clearance")))
+    preloaded, note = _preload.report(b, source=clearance_source(mounted, text("radial_clearance")))
     if note:  # issue 30: the film at the ball loads of the preloaded bearing
         notes.insert(0, note)
     notes += [n for n in dict.fromkeys(_catalog.provenance_notes(b)) if n not in notes]
@@ -215,6 +217,7 @@ def _document(parsed, bearing_file, catalog):
         temps = lub_inputs.get("bearing_temperature_degC")
         if isinstance(temps, list):  # temperature auto over several speeds: this case's temperature
             doc["inputs"]["bearing_temperature_degC"] = temps[k]
+        doc.update(mounted)
         doc.update(preloaded)
         doc["warnings"] = notes
         docs.append(doc)

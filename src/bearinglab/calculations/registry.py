@@ -529,7 +529,7 @@ _CALCS = (
             choices=("grease", "oil-air", "oil-jet", "oil-bath"), group="film"),
          _f("skf_constants", "text", "With `temperature` auto: SKF constants R1,R2,R3,S1,S2,S3 "
             "(angular contact).", label="SKF constants", group="temperature auto"),
-         BEARING, *GEOMETRY, *ROLLERS),
+         BEARING, *GEOMETRY, *ROLLERS, *MOUNTING),  # the film at the ball loads of the mounted bearing
         combine="broadcast"),
     Calculation(
         "temperature", ("temperature",), "Operating temperature",

@@ -369,6 +369,10 @@ def main(argv=None) -> int:
             # numpy's floating-point warnings are no message for a user: every result is checked finite
             warnings.simplefilter("ignore", RuntimeWarning)
             words = sys.argv[1:] if argv is None else list(argv)
+            for word in words:  # no file name or value holds one; os.stat would raise a bare ValueError
+                if "\x00" in str(word):
+                    raise InputError(f"argument {word!r}: a NUL character (\\x00) is no part of an option, "
+                                     "a value or a file name")
             if not words or {"-h", "--help"} & set(words):
                 _rich_help_without_markdown()
             rv = _click_command(_command_named(words)).main(args=words, prog_name="bearinglab",

@@ -155,7 +155,7 @@ def thermal_balance(bearing, radial_load, axial_load, shaft_speed, ambient, visc
         d, big, width = bearing.require("bore", "outside_diameter", "width")
         conductance = reference_conductance(d, big, width)
         notes.append(f"heat dissipation: no thermal resistance given, so ISO 15312's reference heat flow "
-                     f"({float(conductance):.4g} W/K, its reference housing) is used; give the housing's own")
+                     f"({float(conductance):.4g} W/K, its reference housing) is used; give the housing's own thermal resistance")
     g = check_nonnegative("conductance", conductance, "W/K")
     go = check_nonnegative("oil_flow_conductance", oil_flow_conductance, "W/K")
     tin = ta if oil_inlet_temperature is None else check_positive("oil_inlet_temperature", oil_inlet_temperature, "K")
