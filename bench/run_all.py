@@ -30,7 +30,8 @@ def run(script):
     for line in proc.stdout.splitlines():
         m = PATTERN.match(line.strip())
         if m:
-            fields = dict(kv.split("=", 1) for kv in m.group(2).split())
+            # key=value tokens; a free-text remark after them (web_load's heavy statuses) is not a field
+            fields = dict(kv.split("=", 1) for kv in m.group(2).split() if "=" in kv)
             results.append((m.group(1), fields))
     return proc.returncode, results
 

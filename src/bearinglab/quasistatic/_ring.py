@@ -54,15 +54,19 @@ def offsets(geo, u):
 
 def _sum(h, weights):
     """sum_j h[n, j] w[k, j] -> (n, k), the balls added one after the other (elementwise over the cases, so
-    in one order whatever the batch; numpy's reduction along a short axis costs a call per row)."""
+    in one order whatever the batch; numpy's reduction along a short axis costs a call per row).
+
+    The sums run along (k, n) rows, the cases contiguous: a (n, 1) x (k,) product with k of 3 to 28 strides
+    through memory and cost 1.3-4 times more (the same products added in the same order: the same bits)."""
     z = h.shape[-1]
-    cols = weights.T  # (Z, k)
-    acc = h[:, 0:1] * cols[0]
+    ht = np.ascontiguousarray(np.transpose(h))  # (Z, n)
+    cols = weights.T[:, :, None]  # (Z, k, 1)
+    acc = cols[0] * ht[0]
     tmp = np.empty_like(acc)
     for j in range(1, z):
-        np.multiply(h[:, j:j + 1], cols[j], out=tmp)
+        np.multiply(cols[j], ht[j], out=tmp)
         acc += tmp
-    return acc
+    return np.transpose(acc)
 
 
 def rowwise(a, b):

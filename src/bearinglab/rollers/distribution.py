@@ -243,7 +243,9 @@ class _Kernel(NamedTuple):
     base_abs: float  # max_k |-g0 - 2 P(s_k)|
     gt_cols: np.ndarray  # (5, 2Z) [g.T, t.T]: the approaches at the middles and their slopes in one product
     force_rows: np.ndarray  # (2Z, 5) [g; t]: the reaction from the roller loads and moments in one product
-    stiff_rows: np.ndarray  # (3Z, 25) [gg; gt; tt]: the stiffness from K_0, K_1, K_2 in one product
+    stiff_blocks: tuple  # per K_0, K_1, K_2: (columns of the m entries it reaches, its (Z, those) weights)
+    stiff_upper: np.ndarray  # (m,) the flat 5 x 5 index of the stiffness's distinct non-zero entries
+    stiff_lower: np.ndarray  # (m,) the flat index of each one's mirror image below the diagonal
 
 
 def _one_blas_thread(n):
@@ -273,11 +275,22 @@ def _kernel(rs):
     size = max(abs(rs.normal_gap), 2.0 * float(np.max(rs.drop)), np.finfo(float).tiny)
     resolution = _NOISE * rs.rollers * len(s) * rs.slice_constant * (_EPS * size) ** (10.0 / 9.0)
     base = -rs.normal_gap - 2.0 * rs.drop
+    # gg, gt and tt are symmetric to the bit (g_i g_j = g_j g_i; g_i t_j + t_i g_j is the same sum both ways), so
+    # the products compute the entries on and above the diagonal that are not zero for every roller and mirror
+    # them, each of K_0, K_1, K_2 only into the entries it reaches (a cylindrical bearing: 3, 4 and 3 of 25):
+    # a third of the work of the full (n, 3Z) x (3Z, 25) product, the solve's costliest step
+    rows = np.concatenate([gg, gt, tt])
+    upper = np.array([5 * i + j for i in range(5) for j in range(i, 5) if np.any(rows[:, 5 * i + j] != 0.0)])
+    lower = (upper % 5) * 5 + upper // 5
+    blocks = []
+    for block in (gg, gt, tt):
+        reach = np.flatnonzero(np.any(block[:, upper] != 0.0, axis=0))
+        blocks.append((reach, np.ascontiguousarray(block[:, upper[reach]])))
     return _Kernel(g, t, gg, gt, tt, s, s * s, base, rs.slice_constant,
                    rs.pitch_diameter, np.array([1.0, 1.0, 1.0, 2.0 / rs.pitch_diameter, 2.0 / rs.pitch_diameter]),
                    resolution, float(np.max(np.abs(s))), float(np.max(base)), float(np.max(np.abs(base))),
                    np.ascontiguousarray(np.concatenate([g.T, t.T], axis=1)), np.concatenate([g, t]),
-                   np.concatenate([gg, gt, tt]))
+                   tuple(blocks), upper, lower)
 
 
 def _evaluate(kn, u, deriv=True, slices=False):
@@ -317,8 +330,14 @@ def _evaluate(kn, u, deriv=True, slices=False):
     force = _ring.rowwise(np.concatenate([roller, moment], axis=1), kn.force_rows)
     stiff = None
     if deriv:
-        stiff = _ring.rowwise(np.concatenate([k0, k1.reshape(n, z), k2.reshape(n, z)], axis=1),
-                              kn.stiff_rows).reshape(-1, 5, 5)
+        entries = np.zeros((n, len(kn.stiff_upper)))
+        for (reach, weights), kk in zip(kn.stiff_blocks, (k0, k1.reshape(n, z), k2.reshape(n, z)), strict=True):
+            if reach.size:  # K_0's, then K_1's, then K_2's share of each entry: one order for every case
+                entries[:, reach] += _ring.rowwise(kk, weights)
+        stiff = np.zeros((n, 25))
+        stiff[:, kn.stiff_upper] = entries
+        stiff[:, kn.stiff_lower] = entries
+        stiff = stiff.reshape(-1, 5, 5)
     # the rounding of an approach is eps times the size of the terms it is the difference of (bounded per roller)
     noise = np.sum(k0 * (np.abs(gu) + np.abs(tu) * kn.s_max + kn.base_abs), axis=1) * _EPS
     return force, stiff, None if q_all is None else q_all.reshape(n, z, -1), roller, noise

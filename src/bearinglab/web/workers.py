@@ -66,6 +66,14 @@ def _serve(conn, memory_bound_mb=MEMORY_BOUND_MB, niceness=0):
             os.nice(niceness)
         except OSError:  # not allowed here (a container's policy): the worker runs at the server's priority
             pass
+        # Linux's idle class on top: a waking light worker or the server preempts a heavy worker at once
+        # (niceness alone leaves the light request a scheduler slice of wake-up latency, the p99's tail);
+        # the threads the worker starts later (numba, BLAS) inherit it
+        if hasattr(os, "sched_setscheduler") and hasattr(os, "SCHED_IDLE"):
+            try:
+                os.sched_setscheduler(0, os.SCHED_IDLE, os.sched_param(0))
+            except OSError:
+                pass
 
     from .. import calculations, tables
     from ..errors import ConvergenceError, InputError
