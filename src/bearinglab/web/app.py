@@ -58,9 +58,9 @@ _TOO_BIG = {
 
 
 def _json(status, document):
-    """The document as the command line prints it (:func:`bearinglab.tables.json_text`); a text is
-    the document already written so by a worker."""
-    text = document if isinstance(document, str) else tables.json_text(document)
+    """The document as the command line prints it (:func:`bearinglab.tables.json_text`); a text (or its
+    UTF-8 bytes) is the document already written so by a worker."""
+    text = document if isinstance(document, str | bytes) else tables.json_text(document)
     return Response(text, status_code=status, media_type="application/json")
 
 

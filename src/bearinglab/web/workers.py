@@ -94,8 +94,8 @@ def _serve(conn, memory_bound_mb=MEMORY_BOUND_MB, niceness=0):
             parsed = checked[0] if checked else calculations.parse(name, given, limit=limit)
             if what == "figure":
                 value = calculations.figure_svg(parsed)
-            elif what == "json":  # the text the server sends: no large document in the server
-                value = tables.json_text(calculations.run(parsed))
+            elif what == "json":  # the bytes the server sends: no large document, no encoding in the server
+                value = tables.json_text(calculations.run(parsed)).encode()
             else:
                 value = calculations.run(parsed)
             answer = ("ok", value)
