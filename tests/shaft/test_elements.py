@@ -91,3 +91,16 @@ def test_a_thin_disk_has_half_its_polar_inertia_about_a_diameter():
     d = elements.disk_element(3.0, 0.02)
     assert d.mass[3, 3] == d.mass[4, 4] == 0.01 and d.gyroscopic[3, 4] == 0.02 == -d.gyroscopic[4, 3]
     assert math.isclose(elements.disk_element(3.0, 0.02, 0.5).mass[3, 3], 0.5)
+
+
+def test_a_rigid_disk_adds_no_stiffness_on_its_six_freedoms():
+    # a gear or a pulley adds mass and gyroscopic inertia, never stiffness (found by mutation testing: no test
+    # looked at the disk's stiffness block)
+    d = elements.disk_element(3.0, 0.02)
+    assert d.stiffness.shape == (6, 6) and not np.any(d.stiffness)
+    assert d.mass.shape == d.gyroscopic.shape == (6, 6)
+
+
+def test_a_disk_without_a_polar_inertia_is_a_point_mass():
+    d = elements.disk_element(3.0)
+    assert np.array_equal(np.diag(d.mass), [3.0, 3.0, 3.0, 0.0, 0.0, 0.0]) and not np.any(d.gyroscopic)
