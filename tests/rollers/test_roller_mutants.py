@@ -147,3 +147,52 @@ def test_roller_angles_that_do_not_converge_say_so(monkeypatch):
 def test_the_hand_worded_messages(call, message):
     with pytest.raises(InputError, match=message):
         call()
+
+
+def _iso_drop(x, length, d, kind):
+    """ISO/TS 16281:2008 eqs. (42)-(44), written from the printed formulas (math, one point)."""
+    if kind == "tapered":
+        return 0.00045 * d * math.log(1.0 / (1.0 - (2.0 * x / length) ** 2))
+    if length <= 2.5 * d:
+        return 0.00035 * d * math.log(1.0 / (1.0 - (2.0 * x / length) ** 2))
+    start = (length - 2.5 * d) / 2.0  # the end zones begin here; the drop is 0 between them
+    if abs(x) <= start:
+        return 0.0
+    r = (2.0 * abs(x) - length + 2.5 * d) / (2.5 * d)
+    return 0.0005 * d * math.log(1.0 / (1.0 - r * r))
+
+
+@pytest.mark.parametrize(("length", "d", "kind"), [
+    (10e-3, 10e-3, "cylindrical"),  # short: L <= 2.5 D
+    (25e-3, 10e-3, "cylindrical"),  # the limit L = 2.5 D takes the short form
+    (40e-3, 10e-3, "cylindrical"),  # long: flat middle, logarithmic end zones
+    (18e-3, 9e-3, "tapered"),
+])
+def test_the_logarithmic_profile_is_iso_ts_16281s(length, d, kind):
+    xs = [s * 0.5 * length for s in (-0.999, -0.9, -0.62, -0.3, 0.0, 0.1, 0.45, 0.8, 0.97, 0.9999)]
+    got = geometry.logarithmic_drop(np.array(xs), length, d, tapered=kind == "tapered")
+    want = [_iso_drop(x, length, d, kind) for x in xs]
+    assert got == pytest.approx(want, rel=1e-12, abs=1e-18)
+
+
+def test_a_position_at_or_beyond_the_end_of_the_roller_is_refused():
+    # the profile is infinite at |x| = L_we/2: slices lie inside it, and anything else is an input error
+    for x in (5e-3, -5e-3, 7e-3):
+        with pytest.raises(InputError, match=r"^position must be inside the effective roller length, \|x\| < 5 mm "
+                                             r"\[mm\], got -?[57] mm$"):
+            geometry.logarithmic_drop(x, 10e-3, 10e-3)
+    assert np.isfinite(geometry.logarithmic_drop(4.999e-3, 10e-3, 10e-3))
+    with pytest.raises(InputError, match=r"got 6 mm$"):
+        geometry.crowned_drop(np.array([0.0, 6e-3]), 10e-3, 5e-6)
+    with pytest.raises(InputError, match=r"^position must be a number"):
+        geometry.crowned_drop("middle", 10e-3, 5e-6)
+    with pytest.raises(InputError, match=r"^roller_length must be > 0 \[m\]"):
+        geometry.crowned_drop(0.0, 0.0, 5e-6)
+
+
+def test_a_roller_is_cut_into_one_slice_or_more():
+    assert geometry.slice_positions(10e-3, 1) == pytest.approx([0.0])
+    with pytest.raises(InputError, match="^n_slices"):
+        geometry.slice_positions(10e-3, 0)
+    with pytest.raises(InputError, match="^n_slices"):
+        contact.slice_stiffness(10e-3, 0)

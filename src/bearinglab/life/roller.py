@@ -242,8 +242,8 @@ def _slices(bearing, loads, given, n_slices, radial_clearance):
         if not ok.all():
             warnings.warn(f"{int((~ok).sum())} of {ok.size} load cases give a single tapered bearing less thrust than "
                           "F_r tan(alpha), which no equilibrium of the bearing alone holds: their ISO/TS 16281 "
-                          "reference lives are not defined (solve the pair, bearinglab.rollers.pairs)", RatingWarning,
-                          stacklevel=3)
+                          "reference lives are not defined (solve the pair: bearing-set with DB or DF, "
+                          "bearinglab.rollers.pairs)", RatingWarning, stacklevel=3)
     q = np.full((len(flat), bearing.rollers, n_slices or _default_slices()), np.nan)
     if ok.any():
         r = reference_slice_loads(bearing, flat[ok], n_slices=n_slices, radial_clearance=radial_clearance,

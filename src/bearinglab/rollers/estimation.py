@@ -107,7 +107,7 @@ def estimate_roller_set(bore, outside_diameter, static_load_rating, *, width=Non
                          "estimate the roller set [mm, kN]")
     if bearing_type == "tapered":
         if contact_angle is not None:
-            alpha, how = float(contact_angle), "alpha as given"
+            alpha, how = float(contact_angle), "alpha the bearing's own (a catalog row's from its e = 1.5 tan alpha)"
         elif ratio_limit is not None:
             alpha, how = math.atan(float(ratio_limit) / 1.5), "alpha = atan(e / 1.5)"
         elif axial_factor is not None:
