@@ -104,3 +104,35 @@ def test_a_rigid_disk_adds_no_stiffness_on_its_six_freedoms():
 def test_a_disk_without_a_polar_inertia_is_a_point_mass():
     d = elements.disk_element(3.0)
     assert np.array_equal(np.diag(d.mass), [3.0, 3.0, 3.0, 0.0, 0.0, 0.0]) and not np.any(d.gyroscopic)
+
+
+def test_a_solid_section_by_default():
+    # the bore defaults to 0: A = pi d^2/4, I = pi d^4/64, J = 2 I (found by mutation testing)
+    p = elements.section_properties(0.05)
+    assert p.area == pytest.approx(math.pi * 0.05**2 / 4, rel=1e-15)
+    assert p.second_moment == pytest.approx(math.pi * 0.05**4 / 64, rel=1e-15)
+    assert p.polar_moment == pytest.approx(math.pi * 0.05**4 / 32, rel=1e-15)
+
+
+def test_without_shear_the_element_is_euler_bernoullis():
+    # shear=False: the classical cubic beam, E I / L^3 [[12, 6L, -12, 6L], [6L, 4L^2, -6L, 2L^2], ...] in the
+    # x-z plane (u_x, theta_y at both nodes), written from the textbook matrix
+    L, d, e = 0.12, 0.04, 2.1e11
+    ei = e * math.pi * d**4 / 64
+    want = ei / L**3 * np.array([[12, 6 * L, -12, 6 * L], [6 * L, 4 * L * L, -6 * L, 2 * L * L],
+                                 [-12, -6 * L, 12, -6 * L], [6 * L, 2 * L * L, -6 * L, 4 * L * L]])
+    got = elements.shaft_element(L, d, 0.0, e, 0.3, 7850.0, shear=False).stiffness
+    xz = np.ix_((0, 4, 6, 10), (0, 4, 6, 10))
+    assert got[xz] == pytest.approx(want, rel=1e-13)
+    # with shear the same short shaft is softer in bending
+    sheared = elements.shaft_element(L, d, 0.0, e, 0.3, 7850.0).stiffness
+    assert sheared[0, 0] < got[0, 0]
+
+
+def test_without_rotary_inertia_there_is_no_gyroscopic_coupling():
+    full = elements.shaft_element(0.1, 0.04, 0.0, 2.1e11, 0.3, 7850.0)
+    bare = elements.shaft_element(0.1, 0.04, 0.0, 2.1e11, 0.3, 7850.0, rotary_inertia=False)
+    assert not np.any(bare.gyroscopic) and np.any(full.gyroscopic)
+    # the translational mass is the same, the rotary one gone: the slope terms are smaller
+    assert bare.mass[0, 0] < full.mass[0, 0] or bare.mass[4, 4] < full.mass[4, 4]
+    assert bare.mass[2, 2] == full.mass[2, 2]  # the axial bar's mass does not depend on it
