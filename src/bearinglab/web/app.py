@@ -33,7 +33,7 @@ import contextlib
 from pathlib import Path
 
 from fastapi import Request
-from fastapi.responses import HTMLResponse, Response
+from fastapi.responses import HTMLResponse, Response, StreamingResponse
 from fastapi.staticfiles import StaticFiles
 from fastapi.templating import Jinja2Templates
 from fastapi_offline import FastAPIOffline
@@ -57,10 +57,26 @@ _TOO_BIG = {
 }
 
 
+#: An answer above this size goes out in pieces of this size: the event loop sends a piece, then serves
+#: the other requests while the socket drains, instead of copying a whole 20 MB map into its buffer at once
+#: (a light request that met that copy waited 20-40 ms; bench/web_load.py) [bytes]
+_PIECE = 1 << 18
+
+
+async def _pieces(body):
+    view = memoryview(body)
+    for start in range(0, len(view), _PIECE):
+        yield view[start:start + _PIECE]
+        await asyncio.sleep(0)
+
+
 def _json(status, document):
     """The document as the command line prints it (:func:`bearinglab.tables.json_text`); a text (or its
     UTF-8 bytes) is the document already written so by a worker."""
     text = document if isinstance(document, str | bytes) else tables.json_text(document)
+    if isinstance(text, bytes) and len(text) > _PIECE:
+        return StreamingResponse(_pieces(text), status_code=status, media_type="application/json",
+                                 headers={"content-length": str(len(text))})
     return Response(text, status_code=status, media_type="application/json")
 
 
