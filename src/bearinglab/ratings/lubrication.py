@@ -454,6 +454,39 @@ def contamination_factor(cleanliness, pitch_diameter, *, bound="mid"):
     return np.where(dpw < _CLASS_PITCH, small, large)[()]
 
 
+def a_iso_inputs(viscosity_ratio, contamination_factor, fatigue_load_limit, equivalent_dynamic_load, *,
+                 ep_additives=False, say_ep=False):
+    """The checked inputs of ISO 281:2007's a_ISO (ball and roller bearings alike): kappa clamped to [0.1, 4]
+    (a warning below 0.1, where clause 9.3 does not apply), e_C, C_u, P and the cap of a_ISO (50; 3 where the
+    EP-additive rule of clause 9.3.3 sets kappa = 1, for kappa < 1 and e_C >= 0.2; ``say_ep`` warns where it
+    does). The warnings point at the caller of the public function that calls this one.
+
+    Returns
+    -------
+    kappa, e_C, C_u, P, cap : ndarray
+        [-, -, N, N, -]
+    """
+    kappa = check_positive("viscosity_ratio", viscosity_ratio, "-")
+    ec = check_nonnegative("contamination_factor", contamination_factor, "-")
+    if (ec > 1).any():
+        raise InputError(f"contamination_factor must be in [0, 1] [-], got {float(ec[ec > 1].flat[0])!r}")
+    cu = check_nonnegative("fatigue_load_limit", fatigue_load_limit, "N")
+    p = check_positive("equivalent_dynamic_load", equivalent_dynamic_load, "N")
+    low = kappa < 0.1
+    if low.any():
+        warnings.warn(f"viscosity ratio kappa = {float(kappa[low].min()):.3g} is below 0.1, outside ISO "
+                      "281:2007 clause 9.3; a_ISO is evaluated at kappa = 0.1", RatingWarning, stacklevel=3)
+    cap = np.full(np.broadcast(kappa, ec).shape, AISO_CAP)
+    if ep_additives:
+        ep = (kappa < 1.0) & (ec >= 0.2)
+        if say_ep and ep.any():
+            warnings.warn("EP-additive rule of ISO 281:2007 clause 9.3.3 applied: kappa = 1 used where "
+                          "kappa < 1 and e_C >= 0.2, with a_ISO limited to 3", RatingWarning, stacklevel=3)
+        kappa = np.where(ep, 1.0, kappa)
+        cap = np.where(ep, 3.0, cap)
+    return np.clip(kappa, 0.1, 4.0), ec, cu, p, cap
+
+
 def life_modification_factor(viscosity_ratio, contamination_factor, fatigue_load_limit,
                              equivalent_dynamic_load, *, ep_additives=False):
     r"""Life modification factor a_ISO of ball bearings, ISO 281:2007 eq. (B.4) and clause 9.3.
@@ -491,25 +524,8 @@ def life_modification_factor(viscosity_ratio, contamination_factor, fatigue_load
     >>> print(f"{life_modification_factor(1.0, 0.5, 300.0, 3000.0):.4f}")
     1.1437
     """
-    kappa = check_positive("viscosity_ratio", viscosity_ratio, "-")
-    ec = check_nonnegative("contamination_factor", contamination_factor, "-")
-    if (ec > 1).any():
-        raise InputError(f"contamination_factor must be in [0, 1] [-], got {float(ec[ec > 1].flat[0])!r}")
-    cu = check_nonnegative("fatigue_load_limit", fatigue_load_limit, "N")
-    p = check_positive("equivalent_dynamic_load", equivalent_dynamic_load, "N")
-    low = kappa < 0.1
-    if low.any():
-        warnings.warn(f"viscosity ratio kappa = {float(kappa[low].min()):.3g} is below 0.1, outside ISO "
-                      "281:2007 clause 9.3; a_ISO is evaluated at kappa = 0.1", RatingWarning, stacklevel=2)
-    cap = np.full(np.broadcast(kappa, ec).shape, AISO_CAP)
-    if ep_additives:
-        ep = (kappa < 1.0) & (ec >= 0.2)
-        if ep.any():
-            warnings.warn("EP-additive rule of ISO 281:2007 clause 9.3.3 applied: kappa = 1 used where "
-                          "kappa < 1 and e_C >= 0.2, with a_ISO limited to 3", RatingWarning, stacklevel=2)
-        kappa = np.where(ep, 1.0, kappa)
-        cap = np.where(ep, 3.0, cap)
-    k = np.clip(kappa, 0.1, 4.0)
+    k, ec, cu, p, cap = a_iso_inputs(viscosity_ratio, contamination_factor, fatigue_load_limit,
+                                     equivalent_dynamic_load, ep_additives=ep_additives, say_ep=True)
     c = np.where(k < 0.4, _AISO_BALL[0][2], _AISO_BALL[1][2])
     pw = np.select([k < 0.4, k < 1.0], [_AISO_BALL[0][3], _AISO_BALL[1][3]], _AISO_BALL[2][3])
     inner = 1.0 - (2.5671 - c / k**pw) ** 0.83 * np.cbrt(ec * cu / p)

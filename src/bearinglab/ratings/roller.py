@@ -49,6 +49,7 @@ import numpy as np
 
 from .._validate import as_float, check_nonnegative, check_positive
 from ..errors import InputError
+from .lubrication import a_iso_inputs
 from .static import RatingWarning
 
 __all__ = [
@@ -84,7 +85,6 @@ _FC = np.array([52.1, 60.8, 66.5, 70.7, 74.1, 76.9, 79.2, 81.2, 82.8, 84.2, 86.4
                 88.2, 87.5, 86.4, 85.2, 83.8])
 _C0_RADIAL, _C0_THRUST = 44.0, 220.0  # ISO 76:2006 eqs. for roller bearings, at 4000 MPa [N, mm]
 _CU_RATIO, _CU_PITCH, _CU_EXPONENT = 8.2, 0.1, 0.3  # ISO 281:2007 annex B: Cu = C0/8.2, (100 mm / D_pw)^0.3 above
-_AISO_CAP = 50.0
 # ISO 281:2007 annex B, a_ISO of radial roller bearings: a = 0.1 [1 - (1.5859 - c / kappa^p) (e_C Cu / P)^0.4]^-9.185
 # with (c, p) per kappa range (0.1-0.4, 0.4-1, 1-4). Checked: a_ISO is continuous at kappa = 0.4 (1.3993 / 0.4^0.054381
 # = 1.2348 / 0.4^0.19087 to 6e-5) and at kappa = 1, as the ball-bearing constants of ratings.lubrication are.
@@ -471,20 +471,9 @@ def roller_life_modification_factor(viscosity_ratio, contamination_factor, fatig
     >>> print(f"{roller_life_modification_factor(1.0, 0.5, 6700.0, 10000.0):.4f}")
     1.0605
     """
-    kappa = check_positive("viscosity_ratio", viscosity_ratio, "-")
-    ec = check_nonnegative("contamination_factor", contamination_factor, "-")
-    if (ec > 1).any():
-        raise InputError(f"contamination_factor must be in [0, 1] [-], got {float(ec[ec > 1].flat[0])!r}")
-    cu = check_nonnegative("fatigue_load_limit", fatigue_load_limit, "N")
-    p = check_positive("equivalent_dynamic_load", equivalent_dynamic_load, "N")
-    if (kappa < 0.1).any():
-        warnings.warn(f"viscosity ratio kappa = {float(kappa[kappa < 0.1].min()):.3g} is below 0.1, outside ISO "
-                      "281:2007 clause 9.3; a_ISO is evaluated at kappa = 0.1", RatingWarning, stacklevel=2)
-    cap = np.full(np.broadcast(kappa, ec).shape, _AISO_CAP)
-    if ep_additives:
-        ep = (kappa < 1.0) & (ec >= 0.2)
-        kappa, cap = np.where(ep, 1.0, kappa), np.where(ep, 3.0, cap)
-    k = np.clip(kappa, 0.1, 4.0)
+    # the checks, the warning below kappa = 0.1, the cap and the EP rule are those of the ball bearings' a_ISO
+    k, ec, cu, p, cap = a_iso_inputs(viscosity_ratio, contamination_factor, fatigue_load_limit,
+                                     equivalent_dynamic_load, ep_additives=ep_additives)
     c = np.where(k < 0.4, _AISO_ROLLER[0][0], _AISO_ROLLER[1][0])
     pw = np.select([k < 0.4, k < 1.0], [_AISO_ROLLER[0][1], _AISO_ROLLER[1][1]], _AISO_ROLLER[2][1])
     inner = 1.0 - (1.5859 - c / k**pw) * (ec * cu / p) ** 0.4
