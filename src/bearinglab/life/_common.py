@@ -7,6 +7,7 @@ _contamination   e_C from a factor or a cleanliness class
 
 from __future__ import annotations
 
+import warnings
 from typing import NamedTuple
 
 import numpy as np
@@ -14,6 +15,7 @@ import numpy as np
 from .._validate import check_nonnegative, check_positive
 from ..errors import InputError
 from ..ratings import lubrication
+from ..ratings.static import RatingWarning
 
 __all__ = ["RatingLife"]
 
@@ -90,3 +92,14 @@ def _contamination(contamination, pitch):
         raise InputError(f"contamination must be a factor e_C in [0, 1] [-] or a class name, got "
                          f"{float(ec[ec > 1].flat[0])!r}")
     return ec
+
+
+def _untilted(p, p0, moment):
+    """P and P0 with NaN for the load cases that carry a tilting moment, where ISO 281 and ISO 76 do not define
+    them (one warning for them all, pointing at the caller of the public life function)."""
+    tilted = moment > 0
+    if tilted.any():
+        warnings.warn(f"{int(tilted.sum())} of {tilted.size} load cases carry a tilting moment: ISO 281's "
+                      "equivalent load P (and ISO 76's P0) is not defined there, and neither are the ISO 281 "
+                      "lives and s0; the ISO/TS 16281 reference life covers them", RatingWarning, stacklevel=4)
+    return np.where(tilted, np.nan, p), np.where(tilted, np.nan, p0)

@@ -31,7 +31,7 @@ from ..errors import InputError
 from ..ratings import dynamic, lubrication, reference, static
 from ..ratings.bearing import _conformities, bearing_ratings
 from ..ratings.static import RatingWarning
-from ._common import RatingLife, _contamination, _viscosity
+from ._common import RatingLife, _contamination, _untilted, _viscosity
 
 RatingLife.__module__ = __name__  # documented and reached here, as before the roller analysis shared it
 
@@ -166,12 +166,7 @@ def _iso281(bearing, ratings, fr, fa, moment):
     p = dynamic.equivalent_dynamic_load(fr, fa, ratings.static_load_rating, alpha, bearing_type=kind,
                                         static_load_factor=f0 if f0 is None or np.isfinite(f0) else 1.0)
     p0 = static.static_equivalent_load(fr, fa, alpha, bearing_type=kind)
-    tilted = moment > 0
-    if tilted.any():
-        warnings.warn(f"{int(tilted.sum())} of {tilted.size} load cases carry a tilting moment: ISO 281's "
-                      "equivalent load P (and ISO 76's P0) is not defined there, and neither are the ISO 281 "
-                      "lives and s0; the ISO/TS 16281 reference life covers them", RatingWarning, stacklevel=3)
-    return np.where(tilted, np.nan, p), np.where(tilted, np.nan, p0)
+    return _untilted(p, p0, moment)
 
 
 def rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None, contamination=1.0, reliability=0.9,

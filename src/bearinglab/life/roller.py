@@ -25,7 +25,7 @@ from ..errors import InputError
 from ..ratings import dynamic, lubrication, roller, roller_reference, static
 from ..ratings.bearing import bearing_ratings
 from ..ratings.static import RatingWarning
-from ._common import RatingLife, _contamination, _viscosity
+from ._common import RatingLife, _contamination, _untilted, _viscosity
 
 __all__ = ["reference_slice_loads", "roller_rating_life"]
 
@@ -85,12 +85,7 @@ def _equivalent_loads(bearing, fr, fa, moment):
         p = roller.roller_equivalent_load(fr, fa, alpha, **kw)
     p0 = roller.roller_static_equivalent_load(fr, fa, alpha, rows=bearing.rows,
                                               static_axial_factor=bearing.static_axial_factor)
-    tilted = moment > 0
-    if tilted.any():
-        warnings.warn(f"{int(tilted.sum())} of {tilted.size} load cases carry a tilting moment: ISO 281's equivalent "
-                      "load P (and ISO 76's P0) is not defined there, and neither are the ISO 281 lives and s0; the "
-                      "ISO/TS 16281 reference life covers them", RatingWarning, stacklevel=3)
-    return np.where(tilted, np.nan, p), np.where(tilted, np.nan, p0)
+    return _untilted(p, p0, moment)
 
 
 def roller_rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None, contamination=1.0, reliability=0.9,
