@@ -374,6 +374,10 @@ def test_load_displacement_load(kind, loads):
     assume(_loaded(f, 1000.0))  # the central differences need contacts well away from first touch
     r = combined.combined_analysis(b, f, on_failure="flag")
     assert r.converged
+    q = r.ball_load_inner
+    # a ball just touching (here a tilted thrust bearing's ball at 0.14 N of 645 N, found by random exploration)
+    # has an approach of the order of the difference step: no central difference converges there
+    assume(not np.any((q > 0) & (q < 1e-3 * np.max(q))))
     back = bearing_reactions(b, r.displacement)
     scale = np.array([1, 1, 1, 2 / DM, 2 / DM])
     assert np.linalg.norm((back.force - f) * scale) <= 1e-9 * max(np.sum(r.ball_load_inner), 1.0)
