@@ -103,3 +103,21 @@ def _untilted(p, p0, moment):
                       "equivalent load P (and ISO 76's P0) is not defined there, and neither are the ISO 281 "
                       "lives and s0; the ISO/TS 16281 reference life covers them", RatingWarning, stacklevel=4)
     return np.where(tilted, np.nan, p), np.where(tilted, np.nan, p0)
+
+
+def _result(r, n, fr, p, l10, l10r, s0, a1, nu, nu1, kappa, ec, a_iso, a_ref, dm, dm_source, messages):
+    """The :class:`RatingLife` of ball and roller bearings alike: the lives in revolutions and in time at the
+    speed n [rad/s], and without a lubricant (``nu`` None) None, not NaN, for what needs kappa."""
+    speed = np.broadcast_to(n, np.broadcast(n, fr).shape)
+    duration = 2 * np.pi / speed
+    if nu is None:
+        kappa_out = a_iso_out = lnm_out = lnm_time = lnmr = nu_out = None
+    else:
+        lnm = a1 * a_iso * l10
+        kappa_out, a_iso_out, lnm_out = np.broadcast_to(kappa, speed.shape)[()], a_iso[()], lnm[()]
+        lnm_time, lnmr = (lnm * duration)[()], (a1 * a_ref * l10r)[()]
+        nu_out = np.broadcast_to(nu, speed.shape)[()]
+    return RatingLife(
+        r.dynamic_load_rating, r.static_load_rating, r.fatigue_load_limit, r.rating_source, p[()], l10[()],
+        (l10 * duration)[()], a1, kappa_out, a_iso_out, lnm_out, lnm_time, l10r[()], lnmr, s0[()], messages,
+        nu_out, np.broadcast_to(nu1, speed.shape)[()], float(dm), dm_source, None if nu is None else float(ec))

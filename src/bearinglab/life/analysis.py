@@ -31,7 +31,7 @@ from ..errors import InputError
 from ..ratings import dynamic, lubrication, reference, static
 from ..ratings.bearing import _conformities, bearing_ratings
 from ..ratings.static import RatingWarning
-from ._common import RatingLife, _contamination, _untilted, _viscosity
+from ._common import RatingLife, _contamination, _result, _untilted, _viscosity
 
 RatingLife.__module__ = __name__  # documented and reached here, as before the roller analysis shared it
 
@@ -302,19 +302,7 @@ def _rating_life(bearing, loads, shaft_speed, nu, contamination, reliability, ep
             a_ref = np.where(p_ref > 0, lubrication.life_modification_factor(
                 kappa, ec, r.fatigue_load_limit, np.where(p_ref > 0, p_ref, 1.0), ep_additives=ep_additives),
                 np.inf)
-    speed = np.broadcast_to(n, np.broadcast(n, fr).shape)
-    duration = 2 * np.pi / speed
-    if nu is None:  # no lubricant: what needs kappa is not computed (None, not NaN)
-        kappa_out = a_iso_out = lnm_out = lnm_time = lnmr = nu_out = None
-    else:
-        lnm = a1 * a_iso * l10
-        kappa_out, a_iso_out, lnm_out = np.broadcast_to(kappa, speed.shape)[()], a_iso[()], lnm[()]
-        lnm_time, lnmr = (lnm * duration)[()], (a1 * a_ref * l10r)[()]
-        nu_out = np.broadcast_to(nu, speed.shape)[()]
-    return RatingLife(
-        r.dynamic_load_rating, r.static_load_rating, r.fatigue_load_limit, r.rating_source, p[()], l10[()],
-        (l10 * duration)[()], a1, kappa_out, a_iso_out, lnm_out, lnm_time, l10r[()], lnmr, s0[()], (),
-        nu_out, np.broadcast_to(nu1, speed.shape)[()], float(dm), dm_source, None if nu is None else float(ec))
+    return _result(r, n, fr, p, l10, l10r, s0, a1, nu, nu1, kappa, ec, a_iso, a_ref, dm, dm_source, ())
 
 
 def miner_life(lives, revolution_shares, *, axis=-1):

@@ -25,7 +25,7 @@ from ..errors import InputError
 from ..ratings import dynamic, lubrication, roller, roller_reference, static
 from ..ratings.bearing import bearing_ratings
 from ..ratings.static import RatingWarning
-from ._common import RatingLife, _contamination, _untilted, _viscosity
+from ._common import _contamination, _result, _untilted, _viscosity
 
 __all__ = ["reference_slice_loads", "roller_rating_life"]
 
@@ -187,19 +187,7 @@ def roller_rating_life(bearing, loads, shaft_speed, *, kinematic_viscosity=None,
     messages = tuple(dict.fromkeys(str(w.message) for w in caught))
     for w in caught:
         warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
-    speed = np.broadcast_to(n, np.broadcast(n, fr).shape)
-    duration = 2 * np.pi / speed
-    if nu is None:
-        kappa_out = a_iso_out = lnm_out = lnm_time = lnmr = nu_out = None
-    else:
-        lnm = a1 * a_iso * l10
-        kappa_out, a_iso_out, lnm_out = np.broadcast_to(kappa, speed.shape)[()], a_iso[()], lnm[()]
-        lnm_time, lnmr = (lnm * duration)[()], (a1 * a_ref * l10r)[()]
-        nu_out = np.broadcast_to(nu, speed.shape)[()]
-    return RatingLife(
-        r.dynamic_load_rating, r.static_load_rating, r.fatigue_load_limit, r.rating_source, p[()], l10[()],
-        (l10 * duration)[()], a1, kappa_out, a_iso_out, lnm_out, lnm_time, l10r[()], lnmr, s0[()], messages,
-        nu_out, np.broadcast_to(nu1, speed.shape)[()], float(dm), dm_source, None if nu is None else float(ec))
+    return _result(r, n, fr, p, l10, l10r, s0, a1, nu, nu1, kappa, ec, a_iso, a_ref, dm, dm_source, messages)
 
 
 def _slices(bearing, loads, given, n_slices, radial_clearance):
