@@ -5,7 +5,6 @@ combined-load model and re-imported there.
 
 Geometry
 --------
-_azimuths        psi_j = phi0 + 2 pi j / Z (unchecked; :func:`~bearinglab.quasistatic.combined.ball_azimuths`)
 _arms            rows d(axial, radial groove offset)/d(displacement) of every ball
 _geometry        one bearing's checked data and what every evaluation needs (:class:`_Geometry`)
 
@@ -53,11 +52,6 @@ STIFFNESS_AT = ("operating", "free")
 
 
 # --------------------------------------------------------------------------- geometry
-def _azimuths(z, phi0):
-    """psi_j = phi0 + 2 pi j / Z for checked Z and phi0."""
-    return phi0 + 2.0 * np.pi * np.arange(z) / z
-
-
 def _arms(psi, arm):
     """Rows d(axial, radial offset)/d(displacement) of every ball, each (Z, 5)."""
     c, s = np.cos(psi), np.sin(psi)
@@ -227,7 +221,7 @@ def _geometry(n_balls, d, dm, fi, fo, a0, ep, density, phi0, stiffness_at, contr
         raise InputError(f"raceway_control must be one of {list(RACEWAY_CONTROLS)}, got {control!r}")
     if kind not in BEARING_TYPES:
         raise InputError(f"bearing_type must be one of {list(BEARING_TYPES)}, got {kind!r}")
-    psi = _azimuths(z, float(as_float("first_ball_angle", phi0)))
+    psi = _ring.azimuths(z, float(as_float("first_ball_angle", phi0)))
     ja, jr = _arms(psi, dm / 2.0)
     mass = inertia = ep_f = np.nan
     tab = None

@@ -2,6 +2,7 @@ r"""Numerical kernels of the ring Newton of :mod:`bearinglab.quasistatic.combine
 
 Ball set
 --------
+azimuths          psi_j = phi0 + 2 pi j / Z of the balls or rollers (checked Z and phi0)
 offsets           groove-centre offsets (axial, radial) of every ball for ring displacements
 ballsum           a sum over the balls, case by case
 reaction          the ring load of the ball reactions, sum_j J_j^T p_j
@@ -40,6 +41,11 @@ __all__ = ["assemble", "ballsum", "hold", "lm_step", "offsets", "reaction", "sol
 
 _PIVOT = 1e-10  # a pivot below this fraction of the largest diagonal entry goes to LAPACK (partial pivoting)
 _START_ITER = 5  # Newton steps of the thrust offset (a start only; see thrust_offset)
+
+
+def azimuths(z, phi0):
+    """psi_j = phi0 + 2 pi j / Z for checked Z and phi0: the balls' and the rollers' alike [rad]."""
+    return phi0 + 2.0 * np.pi * np.arange(z) / z
 
 
 def offsets(geo, u):

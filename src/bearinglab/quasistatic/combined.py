@@ -139,7 +139,7 @@ def ball_azimuths(n_balls, first_ball_angle=0.0):
     """
     z = int(check_integer("n_balls", n_balls, 1))
     phi0 = float(as_float("first_ball_angle", first_ball_angle))
-    return _combined_balls._azimuths(z, phi0)
+    return _ring.azimuths(z, phi0)
 
 
 def groove_offsets(displacement, n_balls, ball_diameter, pitch_diameter, inner_conformity, outer_conformity,

@@ -141,8 +141,7 @@ def roller_azimuths(rollers, first_roller_angle=0.0):
     [  0.  90. 180. 270.]
     """
     z = int(check_integer("rollers", rollers, 1))
-    phi0 = float(as_float("first_roller_angle", first_roller_angle))
-    return phi0 + 2.0 * np.pi * np.arange(z) / z
+    return _ring.azimuths(z, float(as_float("first_roller_angle", first_roller_angle)))
 
 
 def roller_set(rollers, roller_diameter, roller_length, pitch_diameter, *, contact_angle=0.0, normal_gap=0.0,
