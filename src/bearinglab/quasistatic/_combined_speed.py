@@ -113,9 +113,7 @@ def _newton(geo, loads, w2, u0, x0, tol, max_iter, free, lam_max, noise_factor, 
                     break
                 t[pending] *= 0.25
                 full[pending] = False
-            lam[act] = np.where(full, 0.1 * lam[act], lam[act])
-            lam[act[pending]] = np.maximum(100.0 * lam[act[pending]], 1e-3)  # no decrease at all
-            lam[lam < 1e-12] = 0.0
+            _ring.damp(lam, act, full, pending)
     return u, cur["conv"].copy(), it, cur
 
 

@@ -12,6 +12,7 @@ Linear algebra
 --------------
 solve5            batched 5 x 5 linear systems by Gaussian elimination on contiguous columns
 lm_step           the Levenberg-Marquardt step of the ring Newton in scaled variables
+damp              its damping after a line search: lower after a full step, higher after none
 hold              its stiffness with prescribed freedoms held (no equation, no step)
 
 Start
@@ -226,6 +227,15 @@ def thrust_offset(per_ball, big_a, free_angle, radial_offset, kn0):
         dh = k23 * (s * c13 * c13 + (rho - big_a) * (2.0 / 3.0) * g * g / rho**3 / c13)
         z = np.maximum(z - h / dh, 0.5 * (z + z0))  # never back past first contact
     return np.where(per_ball > 0, z, 0.0)
+
+
+def damp(lam, act, full, pending):
+    """Update in place the damping ``lam`` of the active cases ``act`` after their line search: a full step
+    lowers it tenfold, a shortened one keeps it, none at all raises it a hundredfold (at least to 1e-3); below
+    1e-12 it is 0 (the undamped Newton step). ``full`` is per active case, ``pending`` indexes ``act``."""
+    lam[act] = np.where(full, 0.1 * lam[act], lam[act])
+    lam[act[pending]] = np.maximum(100.0 * lam[act[pending]], 1e-3)  # no decrease at all
+    lam[lam < 1e-12] = 0.0
 
 
 def hold(stiff, free):

@@ -383,9 +383,7 @@ def _newton(geo, loads, u0, tol, max_iter, keep=(), free=None):
             full[pending] = False
         # a step the line search had to shorten keeps its damping: raising it there starves the soft
         # directions of a ring near a mechanism and the Newton crawls (issue 11, ANGULAR under -230, 83, 1/64 N)
-        lam[act] = np.where(full, 0.1 * lam[act], lam[act])
-        lam[act[pending]] = np.maximum(100.0 * lam[act[pending]], 1e-3)  # no decrease at all
-        lam[lam < 1e-12] = 0.0
+        _ring.damp(lam, act, full, pending)
         done = rel <= np.maximum(tol, floor)
     final.update(residual=rel, floor=floor, stiffness=stiff, force=force)
     return u, done, it, final

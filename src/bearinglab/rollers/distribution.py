@@ -437,9 +437,7 @@ def _newton(evaluate, arm, loads, u0, free, tol, max_iter, limit, span, resoluti
                 break
             t[pending] *= 0.25
             full[pending] = False
-        lam[act] = np.where(full, 0.1 * lam[act], lam[act])
-        lam[act[pending]] = np.maximum(100.0 * lam[act[pending]], 1e-3)
-        lam[lam < 1e-12] = 0.0
+        _ring.damp(lam, act, full, pending)
         done = rel <= np.maximum(tol, floor)
     return u, done, it, rel
 
