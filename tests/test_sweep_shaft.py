@@ -4,6 +4,7 @@ that addresses a value inside the document (``supports.B.position``); each row i
 
 import json
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -13,30 +14,7 @@ from bearinglab.calculations import CALCULATIONS
 from bearinglab.cli import main
 from bearinglab.errors import CatalogError, InputError
 
-SHAFT = """\
-speed = "3000 rpm"
-
-[[sections]]
-length = "300 mm"
-diameter = "30 mm"
-
-[[supports]]
-name = "A"
-position = "20 mm"
-bearing = "6206"
-axial = true
-
-[[supports]]
-name = "B"
-position = "280 mm"
-bearing = "6206"
-
-[[loads]]
-name = "F"
-position = "150 mm"
-fy = "-2 kN"
-fz = "300 N"
-"""
+SHAFT = (Path(__file__).parent / "data" / "two_bearing_shaft.toml").read_text(encoding="utf-8")  # as test_cli's
 SPAN = """\
 model = "shaft"
 [constants]

@@ -15,30 +15,7 @@ ROOT = Path(__file__).resolve().parents[2]
 SPINDLE = ROOT / "examples" / "shaft" / "spindle.toml"
 
 # two deep-groove bearings 260 mm apart, a load in the middle, a thrust on the locating bearing A
-TWO = """\
-speed = "3000 rpm"
-
-[[sections]]
-length = "300 mm"
-diameter = "30 mm"
-
-[[supports]]
-name = "A"
-position = "20 mm"
-bearing = "6206"
-axial = true
-
-[[supports]]
-name = "B"
-position = "280 mm"
-bearing = "6206"
-
-[[loads]]
-name = "F"
-position = "150 mm"
-fy = "-2 kN"
-fz = "300 N"
-"""
+TWO = (ROOT / "tests" / "data" / "two_bearing_shaft.toml").read_text(encoding="utf-8")
 
 
 def _run(capsys, *args):
